@@ -1,0 +1,35 @@
+# Thin wrapper over CMake. `make run` and `make test` do all the set-up
+# (scripts/install-deps.sh installs missing Debian packages first).
+BUILD      ?= build
+BUILD_SAN  ?= build-sanitize
+JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_ARGS ?=
+MECHD_ARGS ?=
+
+.PHONY: all deps configure run test test-sanitize bench clean
+
+all: configure
+	cmake --build $(BUILD) -j $(JOBS)
+
+deps:
+	./scripts/install-deps.sh
+
+configure: deps
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo $(CMAKE_ARGS)
+
+run: all
+	./$(BUILD)/mechd $(MECHD_ARGS)
+
+test: all
+	cd $(BUILD) && ctest --no-tests=error --output-on-failure -j $(JOBS)
+
+test-sanitize: deps
+	@test -f $(BUILD_SAN)/CMakeCache.txt || cmake -S . -B $(BUILD_SAN) -DCMAKE_BUILD_TYPE=Debug -DMECHD_SANITIZE=ON $(CMAKE_ARGS)
+	cmake --build $(BUILD_SAN) -j $(JOBS)
+	cd $(BUILD_SAN) && ctest --no-tests=error --output-on-failure -j $(JOBS)
+
+bench: all
+	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b"; done; true
+
+clean:
+	rm -rf $(BUILD) $(BUILD_SAN)

@@ -1,0 +1,276 @@
+/* api.c — api_handle(): routing, media-type check, JSON parse, schema
+ * validation, the endpoint call, cost accounting and encoding. Everything an
+ * HTTP request to /v1 can meet passes through here, with or without a socket. */
+#include "api.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <string.h>
+#include <strings.h>
+
+#include <jansson.h>
+
+#include "catalog.h"
+#include "respond.h"
+#include "routes.h"
+#include "schema.h"
+
+/* Parsed route schemas, index-aligned with api_routes; read-only after init. */
+static json_t **route_schemas;
+static int init_status = -1;
+static char init_error[300] = "api_init not run";
+static pthread_once_t init_once = PTHREAD_ONCE_INIT;
+
+static int init_routes(void)
+{
+    route_schemas = calloc(api_route_count, sizeof *route_schemas);
+    if (!route_schemas) { snprintf(init_error, sizeof init_error, "out of memory"); return -1; }
+    for (size_t i = 0; i < api_route_count; i++) {
+        const struct api_route *r = api_routes[i];
+        json_error_t jerr;
+        char msg[200];
+        json_t *s = json_loads(r->schema, JSON_DECODE_INT_AS_REAL, &jerr);
+        if (!s) {
+            snprintf(init_error, sizeof init_error, "%s: schema is not JSON (line %d: %s)",
+                     r->path, jerr.line, jerr.text);
+            return -1;
+        }
+        route_schemas[i] = s;
+        if (api_schema_check(s, msg, sizeof msg)) {
+            snprintf(init_error, sizeof init_error, "%s: schema: %s", r->path, msg);
+            return -1;
+        }
+        /* The catalog's example must be a request the schema accepts. */
+        json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, &jerr);
+        size_t nerr = ex ? api_schema_validate(s, ex, "", NULL) : 1;
+        json_decref(ex);
+        if (nerr) {
+            snprintf(init_error, sizeof init_error, "%s: example does not match its schema",
+                     r->path);
+            return -1;
+        }
+    }
+    if (api_catalog_init(init_error, sizeof init_error)) return -1;
+    return 0;
+}
+
+static void init_once_fn(void)
+{
+    init_status = init_routes();
+}
+
+int api_init(void)
+{
+    pthread_once(&init_once, init_once_fn);
+    return init_status;
+}
+
+const char *api_init_error(void)
+{
+    return init_status == 0 ? NULL : init_error;
+}
+
+const json_t *api_route_schema(size_t i)
+{
+    return i < api_route_count && route_schemas ? route_schemas[i] : NULL;
+}
+
+/* ---- helpers ---------------------------------------------------------------- */
+
+static int is_get(const char *m)
+{
+    return !strcmp(m, "GET") || !strcmp(m, "HEAD");
+}
+
+/* Media type equals application/json, ignoring case, parameters and spaces. */
+static int is_json_media_type(const char *ct)
+{
+    if (!ct) return 0;
+    while (*ct == ' ' || *ct == '\t') ct++;
+    static const char want[] = "application/json";
+    if (strncasecmp(ct, want, sizeof want - 1)) return 0;
+    const char *rest = ct + sizeof want - 1;
+    while (*rest == ' ' || *rest == '\t') rest++;
+    return *rest == '\0' || *rest == ';';
+}
+
+static long route_index(const char *path)
+{
+    for (size_t i = 0; i < api_route_count; i++)
+        if (!strcmp(api_routes[i]->path, path)) return (long)i;
+    return -1;
+}
+
+int api_is_inline(const char *method, const char *path)
+{
+    return !(method && path && !strcmp(method, "POST") && route_index(path) >= 0);
+}
+
+static void problem_with(struct api_response *resp, enum api_problem kind, const char *detail,
+                         json_t *errors, json_t *extra)
+{
+    json_t *p = api_problem_object(kind, detail);
+    if (p && errors) json_object_set(p, "errors", errors);
+    if (p && extra) json_object_update(p, extra);
+    api_respond_json(resp, api_problem_status(kind), "application/problem+json", p);
+    json_decref(p);
+    if (kind == API_PROBLEM_CANCELLED || kind == API_PROBLEM_QUEUE_FULL) resp->retry_after = 1;
+}
+
+/* GET /problems/<slug>: what a problem type means (its type URI resolves here). */
+static void serve_problem_doc(const char *slug, struct api_response *resp)
+{
+    enum api_problem k = api_problem_by_slug(slug);
+    if (k == API_PROBLEM_NONE) {
+        api_response_problem(resp, API_PROBLEM_NOT_FOUND, "no such problem type");
+        return;
+    }
+    json_t *doc = json_pack("{s:s,s:s,s:i,s:s}", "type", api_problem_type(k), "title",
+                            api_problem_title(k), "status", api_problem_status(k),
+                            "description", api_problem_description(k));
+    api_respond_json(resp, 200, "application/json", doc);
+    json_decref(doc);
+}
+
+static void method_not_allowed(struct api_response *resp, const char *allowed)
+{
+    char d[120];
+    snprintf(d, sizeof d, "this path takes %s", allowed);
+    api_response_problem(resp, API_PROBLEM_METHOD_NOT_ALLOWED, d);
+}
+
+/* ---- operations ---------------------------------------------------------------- */
+
+static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
+{
+    const struct api_route *r = api_routes[ri];
+    if (!is_json_media_type(req->content_type)) {
+        char d[200];
+        snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
+                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
+                 req->content_type ? "'" : "");
+        api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
+        return;
+    }
+    json_error_t jerr;
+    json_t *body = json_loadb(req->body ? req->body : "", req->body ? req->body_len : 0,
+                              JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
+    if (!body) {
+        char d[300];
+        snprintf(d, sizeof d, "line %d, column %d: %s", jerr.line, jerr.column, jerr.text);
+        api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
+        return;
+    }
+    json_t *errors = json_array();
+    size_t nerr = api_schema_validate(route_schemas[ri], body, "", errors);
+    if (nerr) {
+        char d[120];
+        snprintf(d, sizeof d, "%zu error%s in the request", nerr, nerr == 1 ? "" : "s");
+        problem_with(resp, API_PROBLEM_VALIDATION, d, errors, NULL);
+        json_decref(errors);
+        json_decref(body);
+        return;
+    }
+    json_decref(errors);
+
+    struct api_call call;
+    memset(&call, 0, sizeof call);
+    call.req = req;
+    call.budget.max_steps = req->max_steps > 0 ? req->max_steps : 1;
+    call.budget.deadline = isfinite(req->deadline) ? req->deadline : 0;
+    call.budget.cancel = req->cancel;
+    int want_cost = !json_is_false(json_object_get(body, "cost"));
+
+    double cpu0 = mech_cpu_seconds();
+    json_t *result = r->fn(&call, body);
+    double cpu = mech_cpu_seconds() - cpu0;
+    json_decref(body);
+
+    if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
+        call.problem = API_PROBLEM_NUMERIC;
+        snprintf(call.detail, sizeof call.detail,
+                 "the result is not finite for this input (overflow or a singularity)");
+    }
+    if (!result || call.problem != API_PROBLEM_NONE) {
+        enum api_problem k = call.problem != API_PROBLEM_NONE ? call.problem : API_PROBLEM_INTERNAL;
+        char d[300];
+        if (call.errors && json_array_size(call.errors)) {
+            size_t n = json_array_size(call.errors);
+            snprintf(d, sizeof d, "%s", n == 1 ? json_string_value(json_object_get(
+                                                     json_array_get(call.errors, 0), "detail"))
+                                               : "several fields are invalid");
+        } else {
+            snprintf(d, sizeof d, "%s", call.detail[0] ? call.detail : "internal error");
+        }
+        if (k == API_PROBLEM_INTERNAL) {
+            problem_with(resp, k, "internal error", NULL, NULL);
+            snprintf(resp->note, sizeof resp->note, "%.40s: %.150s", r->path,
+                     call.detail[0] ? call.detail : "handler returned no result");
+        } else {
+            problem_with(resp, k, d, call.errors, call.extra);
+        }
+        json_decref(result);
+        json_decref(call.errors);
+        json_decref(call.extra);
+        return;
+    }
+    json_decref(call.errors);
+    json_decref(call.extra);
+
+    if (r->reports_cost) {
+        if (want_cost) {
+            json_t *cost = json_object_get(result, "cost");
+            if (!json_is_object(cost)) {
+                cost = json_object();
+                json_object_set_new(result, "cost", cost);
+            }
+            if (cost) json_object_set_new(cost, "cpu_seconds", json_real(cpu));
+        } else {
+            json_object_del(result, "cost");
+        }
+    }
+    api_respond_json(resp, 200, "application/json", result);
+    json_decref(result);
+}
+
+void api_handle(const struct api_request *req, struct api_response *resp)
+{
+    memset(resp, 0, sizeof *resp);
+    if (api_init() != 0) {
+        api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
+        snprintf(resp->note, sizeof resp->note, "api_init failed: %.150s", init_error);
+        return;
+    }
+    const char *m = req->method ? req->method : "";
+    const char *path = req->path ? req->path : "";
+
+    if (!strcmp(path, "/v1") || !strcmp(path, "/v1/")) {
+        if (!is_get(m)) { method_not_allowed(resp, "GET"); return; }
+        api_respond_text(resp, 200, "application/json", api_catalog_text());
+        return;
+    }
+    if (!strcmp(path, "/v1/openapi.json")) {
+        if (!is_get(m)) { method_not_allowed(resp, "GET"); return; }
+        api_respond_text(resp, 200, "application/json", api_openapi_text());
+        return;
+    }
+    if (!strncmp(path, "/problems/", 10)) {
+        if (!is_get(m)) { method_not_allowed(resp, "GET"); return; }
+        serve_problem_doc(path + 10, resp);
+        return;
+    }
+    long ri = route_index(path);
+    if (ri < 0) {
+        char d[200];
+        snprintf(d, sizeof d, "no operation at %.120s; GET /v1 lists them all", path);
+        api_response_problem(resp, API_PROBLEM_NOT_FOUND, d);
+        return;
+    }
+    if (strcmp(m, api_routes[ri]->method)) {
+        method_not_allowed(resp, api_routes[ri]->method);
+        return;
+    }
+    run_operation((size_t)ri, req, resp);
+}

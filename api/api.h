@@ -1,0 +1,76 @@
+/* api.h — the network-free entry point of mechd's API layer.
+ *
+ * api_handle() turns one HTTP-shaped request into one HTTP-shaped response:
+ * routing, content-type check, JSON parse, schema validation, the endpoint's
+ * core calls, encoding and problem+json errors. The server (server/) and the
+ * in-process tests (tests/api/) both call it. Thread-safe: any number of
+ * threads may call api_handle() at once.
+ */
+#ifndef API_API_H
+#define API_API_H
+
+#include <stddef.h>
+
+/* Kinds of problem+json answer. Append-only; pinned by tests/api/test_problem.c. */
+enum api_problem {
+    API_PROBLEM_NONE = 0,
+    API_PROBLEM_MALFORMED_JSON,     /* 400 */
+    API_PROBLEM_NOT_FOUND,          /* 404 */
+    API_PROBLEM_METHOD_NOT_ALLOWED, /* 405 */
+    API_PROBLEM_BODY_TOO_LARGE,     /* 413 */
+    API_PROBLEM_UNSUPPORTED_MEDIA,  /* 415 */
+    API_PROBLEM_VALIDATION,         /* 422, with errors[] */
+    API_PROBLEM_DOMAIN,             /* 422, physically impossible input, with errors[] */
+    API_PROBLEM_BUDGET,             /* 422, steps/samples/deadline exhausted, with progress */
+    API_PROBLEM_NUMERIC,            /* 422, the numerics failed (non-finite, step underflow) */
+    API_PROBLEM_QUEUE_FULL,         /* 503 + Retry-After */
+    API_PROBLEM_INTERNAL,           /* 500, generic detail */
+    API_PROBLEM_CANCELLED,          /* 503, server shutting down */
+    API_PROBLEM_COUNT
+};
+
+struct api_request {
+    const char *method;        /* "GET", "POST", ... */
+    const char *path;          /* "/v1/rigid/inertia" (no query string) */
+    const char *content_type;  /* Content-Type header or NULL */
+    const char *body;          /* may be NULL when body_len == 0; need not be NUL-terminated */
+    size_t body_len;
+    long max_steps;            /* step budget for integrations (> 0) */
+    double deadline;           /* absolute, mech_clock_seconds(); computations stop after it */
+    const volatile int *cancel;/* may be NULL; nonzero cancels running work */
+};
+
+struct api_response {
+    int status;               /* HTTP status */
+    const char *content_type; /* static string */
+    char *body;               /* malloc'd, NUL-terminated; owned by the response */
+    size_t body_len;
+    int retry_after;          /* seconds for Retry-After, 0 for none */
+    char note[200];           /* for the server log only, never sent: why a 500 happened */
+};
+
+/* One-time set-up (parses the route schemas). Called by api_handle() on first
+ * use through pthread_once, so calling it is optional. Returns 0 on success. */
+int api_init(void);
+
+/* Handle one request. Never fails: on any failure the response is a
+ * problem+json. resp is overwritten; free it with api_response_free(). */
+void api_handle(const struct api_request *req, struct api_response *resp);
+
+/* Fill resp with a problem+json of the given kind and detail (may be NULL).
+ * Used by the server for 413, 415, 503. */
+void api_response_problem(struct api_response *resp, enum api_problem kind, const char *detail);
+
+/* Free the body of a response (safe on a zeroed or already-freed response). */
+void api_response_free(struct api_response *resp);
+
+/* HTTP status for a problem kind; its stable type URI ("/problems/<slug>") and title. */
+int api_problem_status(enum api_problem kind);
+const char *api_problem_type(enum api_problem kind);
+const char *api_problem_title(enum api_problem kind);
+
+/* Whether a request is cheap enough to run on the I/O thread (GET of the
+ * catalog, health, static text) or must go to a compute worker (POST). */
+int api_is_inline(const char *method, const char *path);
+
+#endif

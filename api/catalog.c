@@ -1,0 +1,149 @@
+/* catalog.c — builds GET /v1 (every operation with its summary, description,
+ * input JSON Schema and a working example) and GET /v1/openapi.json
+ * (OpenAPI 3.1) from the route table, once, at api_init(). */
+#include "catalog.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "api.h"
+#include "routes.h"
+
+#ifndef MECHD_VERSION
+#define MECHD_VERSION "0"
+#endif
+
+static char *catalog_text;
+static char *openapi_text;
+
+static const char service_description[] =
+    "mechd answers physics questions from a university mechanics course (rotations, "
+    "non-inertial frames, rigid bodies, special relativity) as JSON over HTTP. SI units "
+    "unless a field says otherwise; 4-vectors are [ct, x, y, z] with metric (-,+,+,+); "
+    "rotations are passive. Errors are application/problem+json (RFC 9457).";
+
+/* Server-level resources that are not operations of the route table. */
+static const struct {
+    const char *path, *summary, *content_type;
+} resources[] = {
+    {"/v1", "This catalog: every operation with its schema and an example.", "application/json"},
+    {"/v1/openapi.json", "OpenAPI 3.1 description of the API.", "application/json"},
+    {"/healthz", "Liveness: {\"status\":\"ok\"}.", "application/json"},
+    {"/metrics", "Prometheus text-format metrics.", "text/plain"},
+    {"/problems/{slug}", "What a problem type URI means.", "application/json"},
+    {"/", "The classroom front end.", "text/html"},
+};
+
+static char *example_curl(const struct api_route *r)
+{
+    /* A command that works when pasted into a shell against `make run`. */
+    size_t n = strlen(r->example) + strlen(r->path) + 128;
+    char *s = malloc(n);
+    if (s)
+        snprintf(s, n, "curl -s http://127.0.0.1:8080%s --json '%s'", r->path, r->example);
+    return s;
+}
+
+static json_t *build_catalog(void)
+{
+    json_t *ops = json_array();
+    for (size_t i = 0; i < api_route_count; i++) {
+        const struct api_route *r = api_routes[i];
+        json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, NULL);
+        char *curl = example_curl(r);
+        json_t *op = json_pack("{s:s,s:s,s:s,s:s,s:O,s:o,s:s}", "method", r->method, "path",
+                               r->path, "summary", r->summary, "description", r->description,
+                               "schema", api_route_schema(i), "example", ex, "curl",
+                               curl ? curl : "");
+        free(curl);
+        if (!op) { json_decref(ops); return NULL; }
+        json_array_append_new(ops, op);
+    }
+    json_t *res = json_array();
+    for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++)
+        json_array_append_new(res, json_pack("{s:s,s:s,s:s}", "method", "GET", "path",
+                                             resources[i].path, "summary", resources[i].summary));
+    return json_pack("{s:s,s:s,s:s,s:o,s:o}", "name", "mechd", "version", MECHD_VERSION,
+                     "description", service_description, "operations", ops, "resources", res);
+}
+
+static json_t *problem_response(const char *description)
+{
+    return json_pack("{s:s,s:{s:{s:{s:s}}}}", "description", description, "content",
+                     "application/problem+json", "schema", "$ref",
+                     "#/components/schemas/Problem");
+}
+
+static json_t *build_openapi(void)
+{
+    json_t *paths = json_object();
+    for (size_t i = 0; i < api_route_count; i++) {
+        const struct api_route *r = api_routes[i];
+        char opid[128];
+        snprintf(opid, sizeof opid, "%s", r->path + (strncmp(r->path, "/v1/", 4) ? 0 : 4));
+        for (char *p = opid; *p; p++)
+            if (*p == '/') *p = '_';
+        json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, NULL);
+        json_t *responses = json_pack(
+            "{s:{s:s,s:{s:{s:{s:s}}}},s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "200", "description",
+            "The result.", "content", "application/json", "schema", "type", "object", "400",
+            problem_response("Malformed JSON."), "413", problem_response("Body too large."),
+            "415", problem_response("Not application/json."), "422",
+            problem_response("Validation, domain or compute-budget error."), "500",
+            problem_response("Internal error."), "503",
+            problem_response("Queue full or shutting down; see Retry-After."), "405",
+            problem_response("Wrong method."));
+        json_t *op = json_pack("{s:s,s:s,s:s,s:{s:b,s:{s:{s:O,s:o}}},s:o}", "operationId", opid,
+                               "summary", r->summary, "description", r->description,
+                               "requestBody", "required", 1, "content", "application/json",
+                               "schema", api_route_schema(i), "example", ex, "responses",
+                               responses);
+        if (!op) { json_decref(paths); return NULL; }
+        char method[16];
+        snprintf(method, sizeof method, "%s", r->method);
+        for (char *p = method; *p; p++) *p = (char)(*p - 'A' + 'a');
+        json_object_set_new(paths, r->path, json_pack("{s:o}", method, op));
+    }
+    for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++) {
+        json_t *get = json_pack("{s:s,s:{s:{s:s,s:{s:{}}}}}", "summary", resources[i].summary,
+                                "responses", "200", "description", resources[i].summary,
+                                "content", resources[i].content_type);
+        json_object_set_new(paths, resources[i].path, json_pack("{s:o}", "get", get));
+    }
+    json_t *problem_schema = json_pack(
+        "{s:s,s:[s,s,s,s],s:{s:{s:s},s:{s:s},s:{s:s},s:{s:s},s:{s:s,s:{s:s,s:{s:{s:s},s:{s:s}}}}}}",
+        "type", "object", "required", "type", "title", "status", "detail", "properties", "type",
+        "type", "string", "title", "type", "string", "status", "type", "integer", "detail",
+        "type", "string", "errors", "type", "array", "items", "type", "object", "properties",
+        "pointer", "type", "string", "detail", "type", "string");
+    return json_pack("{s:s,s:{s:s,s:s,s:s},s:o,s:{s:{s:o}}}", "openapi", "3.1.0", "info",
+                     "title", "mechd", "version", MECHD_VERSION, "description",
+                     service_description, "paths", paths, "components", "schemas", "Problem",
+                     problem_schema);
+}
+
+int api_catalog_init(char *err, size_t n)
+{
+    json_t *c = build_catalog();
+    json_t *o = build_openapi();
+    catalog_text = c ? json_dumps(c, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) : NULL;
+    openapi_text = o ? json_dumps(o, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) : NULL;
+    json_decref(c);
+    json_decref(o);
+    if (!catalog_text || !openapi_text) {
+        snprintf(err, n, "could not build the catalog / OpenAPI document");
+        return -1;
+    }
+    return 0;
+}
+
+const char *api_catalog_text(void)
+{
+    return catalog_text ? catalog_text : "{}";
+}
+
+const char *api_openapi_text(void)
+{
+    return openapi_text ? openapi_text : "{}";
+}

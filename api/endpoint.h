@@ -1,0 +1,75 @@
+/* endpoint.h — what an endpoint file (api/ep_<domain>.c) sees of the API layer.
+ *
+ * An endpoint exports one `const struct api_route` per operation. Its
+ * request-body JSON Schema (a documented subset, see schema.h) is enforced
+ * before its handler runs, so a handler may assume the types, required keys,
+ * ranges and array sizes its schema states; it checks only what a schema
+ * cannot say (e.g. |beta| < 1) and reports it with api_call_invalid() /
+ * api_call_domain() naming the JSON pointer.
+ */
+#ifndef API_ENDPOINT_H
+#define API_ENDPOINT_H
+
+#include <jansson.h>
+
+#include "api.h"
+#include "mech/budget.h"
+#include "mech/status.h"
+#include "mech/vec.h"
+
+struct api_call {
+    const struct api_request *req;
+    struct mech_budget budget;   /* from the request: max_steps, deadline, cancel */
+    json_t *errors;              /* [{pointer, detail}] collected so far (owned) */
+    enum api_problem problem;    /* set when the call failed */
+    char detail[256];            /* problem detail */
+    json_t *extra;               /* extra members for the problem (e.g. progress), owned */
+    int nonfinite;               /* set when a non-finite number was encoded */
+};
+
+/* Handler: returns a new reference to the result object, or NULL after
+ * recording why (validation/domain errors or a failure). Must not leak on
+ * either path. */
+typedef json_t *(*api_op_fn)(struct api_call *call, const json_t *body);
+
+struct api_route {
+    const char *method;      /* "POST" */
+    const char *path;        /* "/v1/rigid/inertia" */
+    const char *summary;     /* one line */
+    const char *description; /* a paragraph: conventions, units, precision */
+    const char *schema;      /* JSON Schema of the request body, as JSON text */
+    const char *example;     /* an example request body (JSON text) that succeeds */
+    api_op_fn fn;
+    int reports_cost;        /* 1: the framework adds cost.cpu_seconds (and honours "cost": false) */
+};
+
+/* Record a validation error at a JSON pointer ("/bodies/0/mass"); 422. */
+void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* Record a physics-domain error at a JSON pointer (beta >= 1, r <= 2GM/c^2); 422. */
+void api_call_domain(struct api_call *c, const char *pointer, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* Map a failed core call to a problem and return NULL. EINVAL/EDOMAIN with a
+ * param become errors at pointer_prefix + "/" + param (pointer_prefix may be
+ * ""); EBUDGET/EDEADLINE become compute-budget-exceeded with the progress;
+ * ECANCELLED -> 503; ENUMERIC -> numerical failure; others -> 500. */
+json_t *api_call_fail_core(struct api_call *c, enum mech_status st,
+                           const struct mech_error *e, const char *pointer_prefix);
+
+/* Encoders: new references. A non-finite value encodes as null and sets
+ * c->nonfinite, which turns the whole answer into a numerical-failure problem. */
+json_t *api_real(struct api_call *c, double x);
+json_t *api_vec3(struct api_call *c, struct mech_vec3 v);
+json_t *api_mat3(struct api_call *c, struct mech_mat3 m);       /* [[row0],[row1],[row2]] */
+json_t *api_reals(struct api_call *c, const double *x, size_t n);
+
+/* Readers for schema-validated input (numbers are JSON reals after parsing;
+ * integers are accepted where numbers are). */
+double api_number(const json_t *obj, const char *key, double def);   /* def if absent */
+struct mech_vec3 api_vec3_of(const json_t *array3);                  /* a [x,y,z] array */
+struct mech_vec3 api_vec3_member(const json_t *obj, const char *key, struct mech_vec3 def);
+const char *api_string(const json_t *obj, const char *key, const char *def);
+
+#endif

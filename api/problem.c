@@ -1,0 +1,102 @@
+/* problem.c — the one table that pins each problem kind to its HTTP status,
+ * type URI and title (RFC 9457 problem+json), and the builder of problem
+ * responses. Append-only: tests/api/test_problem.c pins every row. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <jansson.h>
+
+#include "api.h"
+#include "respond.h"
+
+struct problem_row {
+    int status;
+    const char *type;
+    const char *title;
+    const char *description;
+};
+
+static const struct problem_row problems[API_PROBLEM_COUNT] = {
+    [API_PROBLEM_NONE] = {200, "about:blank", "OK", "No problem."},
+    [API_PROBLEM_MALFORMED_JSON] = {400, "/problems/malformed-json", "Malformed JSON",
+        "The request body is not valid JSON; the detail names the line and column."},
+    [API_PROBLEM_NOT_FOUND] = {404, "/problems/not-found", "Not found",
+        "No operation or resource has this path. GET /v1 lists every operation."},
+    [API_PROBLEM_METHOD_NOT_ALLOWED] = {405, "/problems/method-not-allowed", "Method not allowed",
+        "The path exists but not with this HTTP method; the detail says which method it takes."},
+    [API_PROBLEM_BODY_TOO_LARGE] = {413, "/problems/body-too-large", "Request body too large",
+        "The body is larger than the server's --max-body limit."},
+    [API_PROBLEM_UNSUPPORTED_MEDIA] = {415, "/problems/unsupported-media-type",
+        "Unsupported media type", "Request bodies must be sent as Content-Type: application/json."},
+    [API_PROBLEM_VALIDATION] = {422, "/problems/validation-error", "Invalid request",
+        "The request does not match the operation's schema; errors[] names each offending "
+        "field by JSON pointer."},
+    [API_PROBLEM_DOMAIN] = {422, "/problems/domain-error", "Outside the physical domain",
+        "The request is well-formed but physically impossible (for example |beta| >= 1 or a "
+        "non-positive mass); errors[] names the field."},
+    [API_PROBLEM_BUDGET] = {422, "/problems/compute-budget-exceeded", "Compute budget exceeded",
+        "The computation needed more steps, samples or time than the server allows; progress "
+        "tells how far it got."},
+    [API_PROBLEM_NUMERIC] = {422, "/problems/numerical-failure", "Numerical failure",
+        "The numerics could not produce a finite, trustworthy answer for this input (for "
+        "example a trajectory that runs into a singularity)."},
+    [API_PROBLEM_QUEUE_FULL] = {503, "/problems/queue-full", "Server busy",
+        "Every worker is busy and the queue is full; retry after Retry-After seconds."},
+    [API_PROBLEM_INTERNAL] = {500, "/problems/internal-error", "Internal error",
+        "A bug in mechd. The server log line with the same request id has the details."},
+    [API_PROBLEM_CANCELLED] = {503, "/problems/cancelled", "Cancelled",
+        "The server is shutting down and cancelled the computation; retry elsewhere or later."},
+};
+
+int api_problem_status(enum api_problem kind)
+{
+    if ((int)kind < 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
+    return problems[kind].status;
+}
+
+const char *api_problem_type(enum api_problem kind)
+{
+    if ((int)kind < 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
+    return problems[kind].type;
+}
+
+const char *api_problem_title(enum api_problem kind)
+{
+    if ((int)kind < 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
+    return problems[kind].title;
+}
+
+const char *api_problem_description(enum api_problem kind)
+{
+    if ((int)kind < 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
+    return problems[kind].description;
+}
+
+enum api_problem api_problem_by_slug(const char *slug)
+{
+    for (int k = 1; k < API_PROBLEM_COUNT; k++)
+        if (!strcmp(problems[k].type + strlen("/problems/"), slug)) return (enum api_problem)k;
+    return API_PROBLEM_NONE;
+}
+
+json_t *api_problem_object(enum api_problem kind, const char *detail)
+{
+    if ((int)kind <= 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
+    json_t *p = json_object();
+    if (!p) return NULL;
+    json_object_set_new(p, "type", json_string(problems[kind].type));
+    json_object_set_new(p, "title", json_string(problems[kind].title));
+    json_object_set_new(p, "status", json_integer(problems[kind].status));
+    json_object_set_new(p, "detail", json_string(detail && *detail ? detail
+                                                 : problems[kind].description));
+    return p;
+}
+
+void api_response_problem(struct api_response *resp, enum api_problem kind, const char *detail)
+{
+    json_t *p = api_problem_object(kind, detail);
+    api_respond_json(resp, api_problem_status(kind), "application/problem+json", p);
+    json_decref(p);
+    if (kind == API_PROBLEM_QUEUE_FULL || kind == API_PROBLEM_CANCELLED) resp->retry_after = 1;
+}

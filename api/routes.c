@@ -1,0 +1,15 @@
+/* routes.c — the route table: every operation mechd serves. The catalog
+ * (GET /v1), the OpenAPI document and the README's endpoint table all come
+ * from these entries. Add a route here and nowhere else. */
+#include "routes.h"
+
+extern const struct api_route api_route_rigid_inertia;
+extern const struct api_route api_route_relativity_boost;
+extern const struct api_route api_route_trajectory;
+
+const struct api_route *const api_routes[] = {
+    &api_route_rigid_inertia,
+    &api_route_relativity_boost,
+    &api_route_trajectory,
+};
+const size_t api_route_count = sizeof api_routes / sizeof api_routes[0];

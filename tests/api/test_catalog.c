@@ -1,0 +1,116 @@
+/* test_catalog.c — GET /v1 and GET /v1/openapi.json are generated from the
+ * route table and stay true to it: every operation is listed with its schema
+ * and an example; every example succeeds when POSTed; answers are
+ * byte-identical when repeated (apart from cost); every problem type URI
+ * resolves to its description. */
+#include <gsl/gsl_errno.h>
+#include <string.h>
+
+#include "api.h"
+#include "mech/budget.h"
+#include "routes.h"
+#include "testlib.h"
+
+static json_t *get_json(const char *method, const char *path, const char *body, int *status)
+{
+    struct api_request req = {method, path, "application/json", body, body ? strlen(body) : 0,
+                              10000000, mech_clock_seconds() + 120, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    *status = resp.status;
+    json_t *j = resp.body ? json_loads(resp.body, 0, NULL) : NULL;
+    api_response_free(&resp);
+    return j;
+}
+
+static char *post_text(const char *path, const char *body)
+{
+    struct api_request req = {"POST", path, "application/json; charset=utf-8", body, strlen(body),
+                              10000000, mech_clock_seconds() + 120, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    if (resp.status != 200) {
+        fprintf(stderr, "%s example -> %d: %.500s\n", path, resp.status, resp.body);
+        api_response_free(&resp);
+        return NULL;
+    }
+    /* Drop the measured cost so the rest can be compared byte for byte. */
+    json_t *j = json_loads(resp.body, JSON_DECODE_INT_AS_REAL, NULL);
+    api_response_free(&resp);
+    json_object_del(j, "cost");
+    char *s = json_dumps(j, JSON_COMPACT | JSON_REAL_PRECISION(17));
+    json_decref(j);
+    return s;
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    CHECK(api_init() == 0);
+    int st;
+    json_t *cat = get_json("GET", "/v1", NULL, &st);
+    CHECK_EQ_INT(st, 200);
+    json_t *ops = json_object_get(cat, "operations");
+    CHECK_EQ_INT(json_array_size(ops), api_route_count);
+    CHECK(api_route_count >= 3);
+    const char *want[] = {"/v1/rigid/inertia", "/v1/relativity/boost", "/v1/trajectory"};
+    for (int w = 0; w < 3; w++) {
+        int found = 0;
+        size_t i;
+        json_t *op;
+        json_array_foreach(ops, i, op) {
+            if (strcmp(json_string_value(json_object_get(op, "path")), want[w])) continue;
+            found = 1;
+            CHECK(json_is_object(json_object_get(op, "schema")));
+            CHECK(json_is_object(json_object_get(op, "example")));
+            CHECK(strlen(json_string_value(json_object_get(op, "summary"))) > 10);
+            CHECK(strstr(json_string_value(json_object_get(op, "curl")), want[w]) != NULL);
+        }
+        CHECK(found);
+    }
+
+    /* Every example succeeds, and twice gives the same bytes. */
+    for (size_t i = 0; i < api_route_count; i++) {
+        char *a = post_text(api_routes[i]->path, api_routes[i]->example);
+        char *b = post_text(api_routes[i]->path, api_routes[i]->example);
+        CHECK(a && b && !strcmp(a, b));
+        free(a);
+        free(b);
+        /* The wrong method on an operation's path is a 405. */
+        json_t *j = get_json("GET", api_routes[i]->path, NULL, &st);
+        CHECK_EQ_INT(st, 405);
+        json_decref(j);
+    }
+
+    /* OpenAPI 3.1 lists the same operations with the same schemas. */
+    json_t *oa = get_json("GET", "/v1/openapi.json", NULL, &st);
+    CHECK_EQ_INT(st, 200);
+    CHECK(!strcmp(json_string_value(json_object_get(oa, "openapi")), "3.1.0"));
+    for (size_t i = 0; i < api_route_count; i++) {
+        json_t *p = json_object_get(json_object_get(oa, "paths"), api_routes[i]->path);
+        json_t *schema = json_object_get(json_object_get(json_object_get(json_object_get(
+            json_object_get(json_object_get(p, "post"), "requestBody"), "content"),
+            "application/json"), "schema"), "type");
+        CHECK(schema && !strcmp(json_string_value(schema), "object"));
+        CHECK(json_object_get(json_object_get(json_object_get(p, "post"), "responses"), "422"));
+    }
+    json_decref(oa);
+    json_decref(cat);
+
+    /* Every problem type URI resolves (RFC 9457 §3.1.1: type is a dereferenceable URI). */
+    for (int k = 1; k < API_PROBLEM_COUNT; k++) {
+        json_t *d = get_json("GET", api_problem_type((enum api_problem)k), NULL, &st);
+        CHECK_EQ_INT(st, 200);
+        CHECK_EQ_INT(json_integer_value(json_object_get(d, "status")),
+                     api_problem_status((enum api_problem)k));
+        json_decref(d);
+    }
+    json_t *d = get_json("GET", "/problems/nope", NULL, &st);
+    CHECK_EQ_INT(st, 404);
+    json_decref(d);
+
+    CHECK(api_is_inline("GET", "/v1"));
+    CHECK(!api_is_inline("POST", "/v1/trajectory"));
+    CHECK(api_is_inline("POST", "/v1/nothing"));
+    TEST_MAIN_END();
+}
