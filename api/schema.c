@@ -217,16 +217,40 @@ static void validate_number(struct vctx *v, const json_t *s, const json_t *inst,
         add_error(v, ptr, "must be < %.17g, got %.17g", json_number_value(k), x);
 }
 
+/* A branch is ruled out by a discriminator when one of its properties is a
+ * `const` and the instance holds that key with another value (e.g. a body
+ * with "shape": "box" is not a sphere, whatever else is wrong with it). */
+static int discriminator_mismatch(const json_t *branch, const json_t *inst)
+{
+    const json_t *props = json_object_get(branch, "properties");
+    if (!json_is_object(inst) || !props) return 0;
+    const char *k;
+    json_t *ps;
+    json_object_foreach((json_t *)props, k, ps) {
+        const json_t *c = json_object_get(ps, "const");
+        const json_t *v = json_object_get(inst, k);
+        if (c && v && !json_same(c, v)) return 1;
+    }
+    return 0;
+}
+
 static void validate_oneof(struct vctx *v, const json_t *branches, const json_t *inst,
                            const char *ptr)
 {
     size_t i, best = 0, best_count = (size_t)-1, passes = 0;
+    int best_mismatch = 1;
     json_t *b;
     json_array_foreach(branches, i, b) {
         struct vctx t = {NULL, 0};
         validate(&t, b, inst, ptr);
         if (t.count == 0) passes++;
-        if (t.count < best_count) { best_count = t.count; best = i; }
+        int mismatch = discriminator_mismatch(b, inst);
+        /* Prefer branches the discriminator allows, then fewest errors. */
+        if (mismatch < best_mismatch || (mismatch == best_mismatch && t.count < best_count)) {
+            best_mismatch = mismatch;
+            best_count = t.count;
+            best = i;
+        }
     }
     if (passes == 1) return;
     if (passes > 1) {

@@ -72,6 +72,15 @@ int main(void)
     EXPECT(one, "{\"gamma\":2,\"dir\":1}", 0, "");
     EXPECT(one, "{\"gamma\":0.5,\"dir\":1}", 1, "/gamma");
     EXPECT(one, "{\"beta\":\"x\"}", 1, "/beta");
+    /* A const discriminator picks the branch whose errors are reported, even
+     * when another branch has fewer errors. */
+    const char *shapes =
+        "{\"oneOf\":[{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"shape\",\"r\",\"m\",\"p\"],"
+        "\"properties\":{\"shape\":{\"const\":\"sphere\"},\"r\":{\"type\":\"number\"},\"m\":{},\"p\":{}}},"
+        "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"shape\"],"
+        "\"properties\":{\"shape\":{\"const\":\"point\"},\"m\":{},\"p\":{}}}]}";
+    EXPECT(shapes, "{\"shape\":\"sphere\",\"m\":1,\"p\":1}", 1, "/r");
+    EXPECT(shapes, "{\"shape\":\"point\",\"r\":1}", 1, "/r");
     const char *both = "{\"oneOf\":[{\"type\":\"number\"},{\"minimum\":0}]}";
     EXPECT(both, "3", 1, "");
 
