@@ -53,6 +53,9 @@ struct api_response {
  * use through pthread_once, so calling it is optional. Returns 0 on success. */
 int api_init(void);
 
+/* Why api_init() failed (a route schema or example is broken), or NULL. */
+const char *api_init_error(void);
+
 /* Handle one request. Never fails: on any failure the response is a
  * problem+json. resp is overwritten; free it with api_response_free(). */
 void api_handle(const struct api_request *req, struct api_response *resp);

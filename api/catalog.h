@@ -17,7 +17,4 @@ const char *api_openapi_text(void);
 /* Parsed schema of route i (borrowed; NULL before init). */
 const json_t *api_route_schema(size_t i);
 
-/* Why api_init failed, or NULL when it succeeded. */
-const char *api_init_error(void);
-
 #endif

@@ -1,0 +1,35 @@
+/* config.h — mechd's settings: command line, MECHD_* environment, defaults.
+ *
+ * Precedence: command line, then environment, then the built-in default.
+ * Every option is validated; an invalid value is reported on stderr and the
+ * program exits with status 2 (see srv_config_load()).
+ */
+#ifndef SERVER_CONFIG_H
+#define SERVER_CONFIG_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+struct srv_config {
+    char bind[64];    /* numeric IPv4 or IPv6 address to listen on */
+    int port;         /* 0..65535; 0 picks a free port */
+    int workers;      /* compute threads, 1..1024 */
+    int queue;        /* jobs waiting for a worker, 1..1000000 */
+    size_t max_body;  /* request body limit in bytes, 1..1 GiB */
+    long deadline_ms; /* wall-clock budget per request, 1..86400000 ms */
+    long max_steps;   /* step budget per integration, 1..1e12 */
+};
+
+enum srv_config_result {
+    SRV_CONFIG_RUN = 0,   /* cfg is filled: start the server */
+    SRV_CONFIG_EXIT = 1,  /* --help or --version was printed to out: exit 0 */
+    SRV_CONFIG_ERROR = 2, /* a message was printed to err: exit 2 */
+};
+
+/* Fill cfg from argv (argv[0] is the program name) and the MECHD_* variables.
+ * --help and --version print to `out`; errors print one line each to `err`.
+ * Not thread-safe (reads the environment); call once from main. */
+enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **argv, FILE *out,
+                                       FILE *err);
+
+#endif

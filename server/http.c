@@ -1,0 +1,455 @@
+/* http.c — libmicrohttpd front end (see http.h).
+ *
+ * DESIGN. Per-request state (struct srv_req) is allocated on the first access
+ * callback and freed in MHD_OPTION_NOTIFY_COMPLETED. A request body is
+ * buffered up to --max-body: a Content-Length over the limit is answered 413
+ * on the first callback, before any byte of the body is read; a chunked body
+ * is counted and discarded once it passes the limit, then answered 413.
+ * Server routes and inline GETs are answered on the I/O thread. Everything
+ * else reserves a queue slot, suspends the connection and is submitted to the
+ * pool; the worker runs api_handle() (which cannot fail) and resumes the
+ * connection, and the next access callback sends the stored response. A full
+ * queue answers 503 + Retry-After at once. (STYLE.md §9; libmicrohttpd's
+ * src/examples/suspend_resume_epoll.c.)
+ */
+#include "http.h"
+
+#include <arpa/inet.h>
+#include <errno.h>
+#include <microhttpd.h>
+#include <netinet/in.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "api.h"
+#include "log.h"
+#include "mech/budget.h"
+
+#define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
+#define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
+#define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
+
+struct srv_http {
+    struct MHD_Daemon *daemon;
+    const struct srv_config *cfg;
+    struct srv_pool *pool;
+    volatile int cancel; /* every request's budget points here */
+    int listen_fd;       /* from MHD_quiesce_daemon, closed after stop; -1 if none */
+    atomic_ulong next_id;
+    atomic_int inflight; /* requests between first callback and completion */
+};
+
+enum req_state {
+    REQ_RECEIVING = 0, /* headers and body arriving */
+    REQ_QUEUED,        /* suspended, owned by the pool */
+    REQ_DONE,          /* aresp filled by a worker (or cancel), connection resumed */
+    REQ_ANSWERED,      /* response queued to MHD */
+};
+
+struct srv_req {
+    struct srv_job job; /* first member: the pool hands it back to run/cancel */
+    struct MHD_Connection *conn;
+    unsigned long id;
+    double t0;
+    char *method, *path, *content_type; /* owned copies */
+    char *body;
+    size_t body_len, body_cap, body_seen;
+    int too_large;
+    int oom;
+    enum req_state state;
+    int status; /* HTTP status sent, 0 if none */
+    struct api_request areq;
+    struct api_response aresp;
+};
+
+static const char index_html[] =
+    "<!DOCTYPE html>\n"
+    "<html lang=\"en\"><head><meta charset=\"utf-8\"><title>mechd</title></head>\n"
+    "<body>\n"
+    "<h1>mechd</h1>\n"
+    "<p>mechd is a physics computation server for a university mechanics course: it answers\n"
+    "JSON over HTTP with inertia tensors, Lorentz boosts and integrated trajectories, and says\n"
+    "how accurate each answer is.</p>\n"
+    "<ul>\n"
+    "<li><a href=\"/v1\">/v1</a> &mdash; the catalog of operations, with schemas and "
+    "examples</li>\n"
+    "<li><a href=\"/v1/openapi.json\">/v1/openapi.json</a> &mdash; the OpenAPI document</li>\n"
+    "<li><a href=\"/healthz\">/healthz</a> and <a href=\"/metrics\">/metrics</a></li>\n"
+    "</ul>\n"
+    "<p>Example: <code>curl -s localhost:8080/v1</code></p>\n"
+    "</body></html>\n";
+
+/* ---- per-request state ----------------------------------------------------- */
+
+static char *dup_str(const char *s)
+{
+    if (!s) return NULL;
+    size_t n = strlen(s) + 1;
+    char *d = malloc(n);
+    if (d) memcpy(d, s, n);
+    return d;
+}
+
+static void req_free(struct srv_req *r)
+{
+    if (!r) return;
+    api_response_free(&r->aresp);
+    free(r->method);
+    free(r->path);
+    free(r->content_type);
+    free(r->body);
+    free(r);
+}
+
+/* Worker side: cannot fail; the outcome is stored in the request. After
+ * MHD_resume_connection the I/O thread may free r: touch nothing after it. */
+static void req_run(struct srv_job *job)
+{
+    struct srv_req *r = (struct srv_req *)job;
+    api_handle(&r->areq, &r->aresp);
+    r->state = REQ_DONE;
+    MHD_resume_connection(r->conn);
+}
+
+static void req_cancel(struct srv_job *job)
+{
+    struct srv_req *r = (struct srv_req *)job;
+    api_response_problem(&r->aresp, API_PROBLEM_CANCELLED,
+                         "the server is shutting down; the request was not run");
+    r->state = REQ_DONE;
+    MHD_resume_connection(r->conn);
+}
+
+/* ---- answering --------------------------------------------------------------- */
+
+/* Send resp (its body is handed to MHD, which frees it) with Content-Type,
+ * Retry-After and X-Request-Id. resp is left empty. */
+static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
+{
+    struct MHD_Response *mr;
+    int status = resp->status >= 100 && resp->status <= 599 ? resp->status : 500;
+    if (resp->body) {
+        mr = MHD_create_response_from_buffer(resp->body_len, resp->body, MHD_RESPMEM_MUST_FREE);
+        if (mr) resp->body = NULL; /* MHD owns it now */
+    } else {
+        mr = MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
+    }
+    r->state = REQ_ANSWERED;
+    if (!mr) {
+        api_response_free(resp);
+        return MHD_NO; /* out of memory: MHD closes the connection */
+    }
+    char buf[32];
+    if (resp->content_type)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CONTENT_TYPE, resp->content_type);
+    if (resp->retry_after > 0) {
+        snprintf(buf, sizeof buf, "%d", resp->retry_after);
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_RETRY_AFTER, buf);
+    }
+    snprintf(buf, sizeof buf, "%lu", r->id);
+    MHD_add_response_header(mr, "X-Request-Id", buf);
+    if (status == MHD_HTTP_METHOD_NOT_ALLOWED && r->path &&
+        (strcmp(r->path, "/healthz") == 0 || strcmp(r->path, "/metrics") == 0 ||
+         strcmp(r->path, "/") == 0))
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_ALLOW, "GET, HEAD");
+    enum MHD_Result ret = MHD_queue_response(r->conn, (unsigned)status, mr);
+    MHD_destroy_response(mr);
+    api_response_free(resp);
+    if (ret == MHD_YES) r->status = status;
+    return ret;
+}
+
+static enum MHD_Result answer_problem(struct srv_req *r, enum api_problem kind, const char *detail)
+{
+    api_response_free(&r->aresp);
+    api_response_problem(&r->aresp, kind, detail);
+    return answer(r, &r->aresp);
+}
+
+/* A server-owned body (copied: answer() hands bodies to MHD with free()). */
+static enum MHD_Result answer_text(struct srv_req *r, int status, const char *content_type,
+                                   char *owned_body, size_t len)
+{
+    if (!owned_body) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    api_response_free(&r->aresp);
+    r->aresp.status = status;
+    r->aresp.content_type = content_type;
+    r->aresp.body = owned_body;
+    r->aresp.body_len = len;
+    r->aresp.retry_after = 0;
+    return answer(r, &r->aresp);
+}
+
+static int is_get(const char *m)
+{
+    return strcmp(m, MHD_HTTP_METHOD_GET) == 0 || strcmp(m, MHD_HTTP_METHOD_HEAD) == 0;
+}
+
+/* /healthz, /metrics, /: returns 1 and answers if path is a server route. */
+static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *ret)
+{
+    const char *p = r->path;
+    int health = strcmp(p, "/healthz") == 0, metrics = strcmp(p, "/metrics") == 0,
+        index = strcmp(p, "/") == 0;
+    if (!health && !metrics && !index) return 0;
+    if (!is_get(r->method)) {
+        char detail[96];
+        snprintf(detail, sizeof detail, "%s accepts GET and HEAD only", p);
+        *ret = answer_problem(r, API_PROBLEM_METHOD_NOT_ALLOWED, detail);
+    } else if (health) {
+        static const char ok[] = "{\"status\":\"ok\"}";
+        *ret = answer_text(r, 200, "application/json", dup_str(ok), sizeof ok - 1);
+    } else if (metrics) {
+        int queued = 0, busy = 0;
+        unsigned long len = 0;
+        srv_pool_stats(h->pool, &queued, &busy);
+        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, &len);
+        *ret = answer_text(r, 200, "text/plain; version=0.0.4; charset=utf-8", text, len);
+    } else {
+        *ret = answer_text(r, 200, "text/html; charset=utf-8", dup_str(index_html),
+                           sizeof index_html - 1);
+    }
+    return 1;
+}
+
+/* The whole request has arrived: route it. */
+static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
+{
+    char detail[160];
+    if (r->oom) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    if (r->too_large) {
+        snprintf(detail, sizeof detail, "the request body exceeds the limit of %zu bytes",
+                 h->cfg->max_body);
+        return answer_problem(r, API_PROBLEM_BODY_TOO_LARGE, detail);
+    }
+    enum MHD_Result ret;
+    if (server_route(h, r, &ret)) return ret;
+
+    r->areq.method = r->method;
+    r->areq.path = r->path;
+    r->areq.content_type = r->content_type;
+    r->areq.body = r->body;
+    r->areq.body_len = r->body_len;
+    r->areq.max_steps = h->cfg->max_steps;
+    r->areq.cancel = &h->cancel;
+    r->areq.deadline = mech_clock_seconds() + (double)h->cfg->deadline_ms / 1000.0;
+
+    if (strcmp(r->method, MHD_HTTP_METHOD_GET) == 0 && api_is_inline(r->method, r->path)) {
+        api_handle(&r->areq, &r->aresp);
+        return answer(r, &r->aresp);
+    }
+    switch (srv_pool_reserve(h->pool)) {
+    case SRV_POOL_FULL:
+        snprintf(detail, sizeof detail,
+                 "all %d compute workers are busy and %d requests are waiting; retry later",
+                 h->cfg->workers, h->cfg->queue);
+        api_response_free(&r->aresp);
+        api_response_problem(&r->aresp, API_PROBLEM_QUEUE_FULL, detail);
+        r->aresp.retry_after = 1;
+        return answer(r, &r->aresp);
+    case SRV_POOL_STOPPED:
+        return answer_problem(r, API_PROBLEM_CANCELLED, "the server is shutting down");
+    case SRV_POOL_OK:
+        break;
+    }
+    r->state = REQ_QUEUED;
+    MHD_suspend_connection(r->conn);
+    /* Cannot fail; may run req_cancel (and resume) at once if the pool stopped. */
+    srv_pool_submit(h->pool, &r->job);
+    return MHD_YES;
+}
+
+/* Take a chunk of body: buffer it while under the limit, else count and drop it. */
+static void take_body(struct srv_http *h, struct srv_req *r, const char *data, size_t n)
+{
+    size_t limit = h->cfg->max_body;
+    r->body_seen = r->body_seen + n < r->body_seen ? (size_t)-1 : r->body_seen + n;
+    if (r->too_large || r->oom) return;
+    if (r->body_seen > limit) {
+        r->too_large = 1;
+        free(r->body);
+        r->body = NULL;
+        r->body_len = r->body_cap = 0;
+        return;
+    }
+    if (r->body_len + n > r->body_cap) {
+        size_t cap = r->body_cap ? r->body_cap : SRV_BODY_CHUNK;
+        while (cap < r->body_len + n)
+            cap *= 2;
+        if (cap > limit) cap = limit;
+        char *b = realloc(r->body, cap);
+        if (!b) {
+            r->oom = 1;
+            free(r->body);
+            r->body = NULL;
+            r->body_len = r->body_cap = 0;
+            return;
+        }
+        r->body = b;
+        r->body_cap = cap;
+    }
+    memcpy(r->body + r->body_len, data, n);
+    r->body_len += n;
+}
+
+/* ---- libmicrohttpd callbacks ------------------------------------------------ */
+
+static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *url,
+                                  const char *method, const char *version, const char *upload_data,
+                                  size_t *upload_data_size, void **con_cls)
+{
+    struct srv_http *h = cls;
+    struct srv_req *r = *con_cls;
+    (void)version;
+
+    if (!r) { /* first call: headers only */
+        r = calloc(1, sizeof *r);
+        if (!r) return MHD_NO;
+        r->conn = conn;
+        r->id = atomic_fetch_add(&h->next_id, 1) + 1;
+        r->t0 = mech_clock_seconds();
+        r->job.run = req_run;
+        r->job.cancel = req_cancel;
+        r->method = dup_str(method ? method : "");
+        r->path = dup_str(url ? url : "");
+        const char *ct =
+            MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_TYPE);
+        r->content_type = dup_str(ct);
+        *con_cls = r;
+        atomic_fetch_add(&h->inflight, 1);
+        if (!r->method || !r->path || (ct && !r->content_type)) {
+            r->oom = 1;
+            return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+        }
+        const char *cl =
+            MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_LENGTH);
+        if (cl) {
+            errno = 0;
+            char *end = NULL;
+            unsigned long long n = strtoull(cl, &end, 10);
+            if (errno == ERANGE || n > (unsigned long long)h->cfg->max_body) {
+                r->too_large = 1; /* answered now: the body is never read */
+                return dispatch(h, r);
+            }
+        }
+        return MHD_YES;
+    }
+
+    if (*upload_data_size) {
+        if (r->state == REQ_RECEIVING) take_body(h, r, upload_data, *upload_data_size);
+        *upload_data_size = 0;
+        return MHD_YES;
+    }
+
+    switch (r->state) {
+    case REQ_RECEIVING:
+        return dispatch(h, r);
+    case REQ_DONE:
+        return answer(r, &r->aresp);
+    case REQ_QUEUED:   /* not expected while suspended */
+    case REQ_ANSWERED: /* response already queued */
+        break;
+    }
+    return MHD_YES;
+}
+
+static void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
+                         enum MHD_RequestTerminationCode toe)
+{
+    struct srv_http *h = cls;
+    struct srv_req *r = *con_cls;
+    (void)conn;
+    (void)toe;
+    if (!r) return;
+    *con_cls = NULL;
+    double us = (mech_clock_seconds() - r->t0) * 1e6;
+    srv_log_request(r->id, r->method, r->path, r->status, (long)(us + 0.5));
+    req_free(r);
+    atomic_fetch_sub(&h->inflight, 1);
+}
+
+/* ---- lifecycle ------------------------------------------------------------------ */
+
+struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool)
+{
+    struct srv_http *h = calloc(1, sizeof *h);
+    if (!h) return NULL;
+    h->cfg = cfg;
+    h->pool = pool;
+    h->listen_fd = -1;
+    atomic_init(&h->next_id, 0);
+    atomic_init(&h->inflight, 0);
+
+    struct sockaddr_in sin;
+    struct sockaddr_in6 sin6;
+    struct sockaddr *sa;
+    unsigned int flags = MHD_USE_EPOLL | MHD_USE_INTERNAL_POLLING_THREAD |
+                         MHD_ALLOW_SUSPEND_RESUME | MHD_USE_ERROR_LOG;
+    memset(&sin, 0, sizeof sin);
+    memset(&sin6, 0, sizeof sin6);
+    if (inet_pton(AF_INET, cfg->bind, &sin.sin_addr) == 1) {
+        sin.sin_family = AF_INET;
+        sin.sin_port = htons((uint16_t)cfg->port);
+        sa = (struct sockaddr *)&sin;
+    } else if (inet_pton(AF_INET6, cfg->bind, &sin6.sin6_addr) == 1) {
+        sin6.sin6_family = AF_INET6;
+        sin6.sin6_port = htons((uint16_t)cfg->port);
+        sa = (struct sockaddr *)&sin6;
+        flags |= MHD_USE_IPv6;
+    } else {
+        srv_log_note("cannot parse bind address '%s'", cfg->bind);
+        free(h);
+        return NULL;
+    }
+
+    h->daemon = MHD_start_daemon(
+        flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, sa,
+        MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
+        SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_END);
+    if (!h->daemon) {
+        srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
+                     errno ? strerror(errno) : "libmicrohttpd failed to start");
+        free(h);
+        return NULL;
+    }
+    int port = cfg->port;
+    const union MHD_DaemonInfo *info = MHD_get_daemon_info(h->daemon, MHD_DAEMON_INFO_BIND_PORT);
+    if (info && info->port) port = info->port;
+    int v6 = sa->sa_family == AF_INET6;
+    printf("mechd listening on http://%s%s%s:%d\n", v6 ? "[" : "", cfg->bind, v6 ? "]" : "", port);
+    fflush(stdout);
+    return h;
+}
+
+void srv_http_quiesce(struct srv_http *h)
+{
+    if (!h) return;
+    if (h->listen_fd < 0) {
+        MHD_socket fd = MHD_quiesce_daemon(h->daemon);
+        h->listen_fd = fd == MHD_INVALID_SOCKET ? -1 : (int)fd;
+    }
+    __atomic_store_n(&h->cancel, 1, __ATOMIC_SEQ_CST);
+}
+
+void srv_http_drain(struct srv_http *h, double seconds)
+{
+    if (!h) return;
+    double end = mech_clock_seconds() + seconds;
+    while (atomic_load(&h->inflight) > 0 && mech_clock_seconds() < end) {
+        struct timespec ts = {0, 10 * 1000 * 1000};
+        nanosleep(&ts, NULL);
+    }
+}
+
+void srv_http_stop(struct srv_http *h)
+{
+    if (!h) return;
+    MHD_stop_daemon(h->daemon);
+    if (h->listen_fd >= 0) close(h->listen_fd);
+    free(h);
+}

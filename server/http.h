@@ -1,0 +1,34 @@
+/* http.h — mechd's HTTP front: libmicrohttpd (epoll, one internal polling
+ * thread) that reads requests, enforces the body limit, answers the
+ * server-owned routes (/healthz, /metrics, /) and cheap GETs inline, and hands
+ * everything else to the worker pool with suspend/resume.
+ *
+ * Shutdown order (main.c): srv_http_quiesce, srv_pool_stop, srv_http_drain,
+ * srv_http_stop, srv_pool_free. Not thread-safe: call from main only.
+ */
+#ifndef SERVER_HTTP_H
+#define SERVER_HTTP_H
+
+#include "config.h"
+#include "workers.h"
+
+struct srv_http;
+
+/* Start listening on cfg->bind:cfg->port and print exactly one line
+ * "mechd listening on http://ADDR:PORT" to stdout (then fflush). cfg and pool
+ * are borrowed and must outlive the server. Returns NULL (after logging why on
+ * stderr) if the daemon cannot start. */
+struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool);
+
+/* Stop accepting connections and raise the cancel flag every request's
+ * budget points to, so running computations stop at their next check. */
+void srv_http_quiesce(struct srv_http *h);
+
+/* Wait until no request is in flight (every answer sent) or `seconds` pass. */
+void srv_http_drain(struct srv_http *h, double seconds);
+
+/* Stop the daemon (closing remaining connections) and free h. All suspended
+ * connections must have been resumed (srv_pool_stop does that). h may be NULL. */
+void srv_http_stop(struct srv_http *h);
+
+#endif

@@ -1,0 +1,50 @@
+/* workers.h — a fixed pool of compute threads behind a bounded job queue.
+ *
+ * The I/O thread reserves a slot (srv_pool_reserve), suspends its connection,
+ * then submits (srv_pool_submit), which cannot fail. A worker pops the job and
+ * calls job->run; on shutdown, queued jobs get job->cancel instead. Neither
+ * callback can fail: results and errors live in the enclosing request
+ * (STYLE.md §9). After run/cancel returns the pool never touches the job
+ * again, so the callback may hand the job's memory back to its owner.
+ * All functions are thread-safe except srv_pool_create/srv_pool_free.
+ */
+#ifndef SERVER_WORKERS_H
+#define SERVER_WORKERS_H
+
+struct srv_job {
+    struct srv_job *next;                /* queue link, owned by the pool */
+    void (*run)(struct srv_job *job);    /* on a worker thread */
+    void (*cancel)(struct srv_job *job); /* instead of run, when the pool stops */
+};
+
+struct srv_pool;
+
+enum srv_pool_result {
+    SRV_POOL_OK = 0,
+    SRV_POOL_FULL,    /* queue capacity reached: answer 503 + Retry-After */
+    SRV_POOL_STOPPED, /* shutting down: answer 503 cancelled */
+};
+
+/* Start `workers` threads (>= 1) with a queue of `capacity` (>= 1) waiting jobs.
+ * Returns NULL if a thread or allocation fails (nothing is left running). */
+struct srv_pool *srv_pool_create(int workers, int capacity);
+
+/* Reserve one queue slot. On SRV_POOL_OK the caller must call srv_pool_submit
+ * exactly once. */
+enum srv_pool_result srv_pool_reserve(struct srv_pool *p);
+
+/* Queue a job into a reserved slot. Cannot fail: if the pool has stopped in
+ * between, job->cancel runs at once on the calling thread. */
+void srv_pool_submit(struct srv_pool *p, struct srv_job *job);
+
+/* Current number of waiting jobs and of workers running a job. */
+void srv_pool_stats(struct srv_pool *p, int *queued, int *busy);
+
+/* Stop accepting jobs, call cancel on every queued job (on the calling
+ * thread), wait for running jobs to finish and join the threads. Idempotent. */
+void srv_pool_stop(struct srv_pool *p);
+
+/* Stop (if not done) and free the pool. p may be NULL. */
+void srv_pool_free(struct srv_pool *p);
+
+#endif

@@ -1,0 +1,98 @@
+"""test_docs.py — the README stays true to the code.
+
+Starts `mechd --port 0`, then checks that:
+  * the README's endpoint table lists exactly the operations of GET /v1;
+  * every ```sh block holding a curl command to 127.0.0.1:8080, run against
+    this server, prints what the ```json block right after it shows (numbers
+    to 1e-12 relative; the measured "cost" is ignored).
+Python 3 standard library only; argv[1] is the mechd binary.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import urllib.request
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+README = os.path.join(HERE, "..", "..", "README.md")
+passed = failed = 0
+
+
+def check(cond, what):
+    global passed, failed
+    if cond:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL:", what, file=sys.stderr)
+
+
+def close(a, b, path=""):
+    """Deep comparison: numbers within 1e-12 relative, the cost block ignored."""
+    if isinstance(b, dict):
+        if not isinstance(a, dict):
+            return [path]
+        bad = []
+        for k in set(a) | set(b):
+            if k == "cost":
+                continue
+            if k not in a or k not in b:
+                bad.append(path + "/" + k)
+            else:
+                bad += close(a[k], b[k], path + "/" + k)
+        return bad
+    if isinstance(b, list):
+        if not isinstance(a, list) or len(a) != len(b):
+            return [path]
+        return [p for i, (x, y) in enumerate(zip(a, b)) for p in close(x, y, "%s/%d" % (path, i))]
+    if isinstance(b, (int, float)) and not isinstance(b, bool):
+        ok = isinstance(a, (int, float)) and abs(a - b) <= 1e-12 * abs(b) + 1e-300
+        return [] if ok else [path + " (%r vs %r)" % (a, b)]
+    return [] if a == b else [path]
+
+
+def main():
+    binary = sys.argv[1]
+    text = open(README, encoding="utf-8").read()
+    proc = subprocess.Popen([binary, "--port", "0"], stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, text=True)
+    try:
+        line = proc.stdout.readline()
+        m = re.search(r"http://[^:]+:(\d+)", line)
+        if not m:
+            check(False, "server printed no port: %r" % line)
+            return
+        port = int(m.group(1))
+        base = "http://127.0.0.1:%d" % port
+        catalog = json.load(urllib.request.urlopen(base + "/v1", timeout=10))
+        ops = {(o["method"], o["path"]) for o in catalog["operations"]}
+        table = set(re.findall(r"^\|\s*`?(POST|GET)`?\s*\|\s*`(/v1/[^`]+)`", text, re.M))
+        table_ops = {t for t in table if t[0] == "POST"}
+        check(table_ops == ops, "README endpoint table %s != catalog %s" % (sorted(table_ops), sorted(ops)))
+
+        blocks = re.findall(r"```sh\n(curl [^\n]*127\.0\.0\.1:8080[^`]*?)```\s*```json\n(.*?)```", text, re.S)
+        check(len(blocks) >= 3, "README has %d curl examples with output, want >= 3" % len(blocks))
+        for cmd, shown in blocks:
+            cmd = cmd.strip().replace("127.0.0.1:8080", "127.0.0.1:%d" % port)
+            out = subprocess.run(["sh", "-c", cmd], capture_output=True, text=True, timeout=60)
+            try:
+                got = json.loads(out.stdout)
+                want = json.loads(shown)
+            except ValueError as e:
+                check(False, "example output is not JSON (%s): %s" % (e, cmd[:100]))
+                continue
+            bad = close(got, want)
+            check(not bad, "README example differs at %s: %s" % (bad[:5], cmd[:100]))
+    finally:
+        proc.terminate()
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+    print("%d passed, %d failed" % (passed, failed))
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
