@@ -2,6 +2,8 @@
 
 Starts `mechd --port 0`, then checks that:
   * the README's endpoint table lists exactly the operations of GET /v1;
+  * every script in clients/curl/ answers 200 with the physics its comment
+    promises (checked against closed forms here);
   * every ```sh block holding a curl command to 127.0.0.1:8080, run against
     this server, prints what the ```json block right after it shows (numbers
     to 1e-12 relative; the measured "cost" is ignored).
@@ -52,6 +54,43 @@ def close(a, b, path=""):
     return [] if a == b else [path]
 
 
+def run_client(base, name):
+    env = dict(os.environ, MECHD_URL=base)
+    out = subprocess.run(["sh", os.path.join(HERE, "..", "..", "clients", "curl", name)],
+                         capture_output=True, text=True, timeout=60, env=env)
+    try:
+        return json.loads(out.stdout)
+    except ValueError:
+        check(False, "%s printed no JSON: %r" % (name, out.stdout[:200]))
+        return {}
+
+
+def rel(a, b):
+    return abs(a - b) / abs(b)
+
+
+def check_clients(base):
+    import math
+    r = run_client(base, "inertia.sh")
+    m = r.get("principal", {}).get("moments", [0, 0, 0])
+    check(rel(m[0], 1 / 6) < 1e-13 and rel(m[1], 11 / 12) < 1e-13 and rel(m[2], 11 / 12) < 1e-13,
+          "inertia.sh moments %r, want 1/6, 11/12, 11/12" % (m,))
+    r = run_client(base, "boost.sh")
+    beta = 0.9999
+    gamma = 1 / math.sqrt((1 - beta) * (1 + beta))
+    ct = r.get("vectors", [[0]])[0][0]
+    check(rel(ct, gamma * 599.584916) < 1e-14, "boost.sh ct %r, want %r" % (ct, gamma * 599.584916))
+    check(abs(ct / 299792458 - 141.4e-6) < 0.1e-6, "boost.sh lifetime %r s, want 141.4 us" % (ct / 299792458))
+    r = run_client(base, "trajectory.sh")
+    h, g, lam, om = 100.0, 9.80665, math.radians(32), 7.2921159e-5
+    x_east = om * math.cos(lam) * math.sqrt(8 * h ** 3 / g) / 3
+    stopped = r.get("stopped") or {}
+    check(rel(stopped.get("position", [0])[0], x_east) < 2e-3,
+          "trajectory.sh lands %r m east, want %r within 0.2%%" % (stopped.get("position"), x_east))
+    check(rel(stopped.get("t", 0), math.sqrt(2 * h / g)) < 1e-6,
+          "trajectory.sh lands at t = %r, want sqrt(2h/g)" % stopped.get("t"))
+
+
 def main():
     binary = sys.argv[1]
     text = open(README, encoding="utf-8").read()
@@ -84,6 +123,7 @@ def main():
                 continue
             bad = close(got, want)
             check(not bad, "README example differs at %s: %s" % (bad[:5], cmd[:100]))
+        check_clients(base)
     finally:
         proc.terminate()
         try:
