@@ -31,6 +31,14 @@ static int init_routes(void)
         const struct api_route *r = api_routes[i];
         json_error_t jerr;
         char msg[200];
+        if (!strcmp(r->method, "GET")) {
+            /* A read-only resource: no body, so no schema or example. */
+            if (r->schema || r->example) {
+                snprintf(init_error, sizeof init_error, "%s: a GET route takes no body", r->path);
+                return -1;
+            }
+            continue;
+        }
         json_t *s = json_loads(r->schema, JSON_DECODE_INT_AS_REAL, &jerr);
         if (!s) {
             snprintf(init_error, sizeof init_error, "%s: schema is not JSON (line %d: %s)",
@@ -105,7 +113,28 @@ static long route_index(const char *path)
 
 int api_is_inline(const char *method, const char *path)
 {
+    /* Only POST operations compute; GET routes return precomputed or cheap
+     * descriptions and answer on the I/O thread. */
     return !(method && path && !strcmp(method, "POST") && route_index(path) >= 0);
+}
+
+/* A GET route: call the handler without a body; it cannot fail on input. */
+static void run_resource(size_t ri, const struct api_request *req, struct api_response *resp)
+{
+    struct api_call call;
+    memset(&call, 0, sizeof call);
+    call.req = req;
+    json_t *result = api_routes[ri]->fn(&call, NULL);
+    if (!result || call.problem != API_PROBLEM_NONE || call.nonfinite) {
+        api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
+        snprintf(resp->note, sizeof resp->note, "%.40s: resource handler failed",
+                 api_routes[ri]->path);
+    } else {
+        api_respond_json(resp, 200, "application/json", result);
+    }
+    json_decref(result);
+    json_decref(call.errors);
+    json_decref(call.extra);
 }
 
 static void problem_with(struct api_response *resp, enum api_problem kind, const char *detail,
@@ -268,9 +297,11 @@ void api_handle(const struct api_request *req, struct api_response *resp)
         api_response_problem(resp, API_PROBLEM_NOT_FOUND, d);
         return;
     }
-    if (strcmp(m, api_routes[ri]->method)) {
-        method_not_allowed(resp, api_routes[ri]->method);
+    const char *want = api_routes[ri]->method;
+    if (!strcmp(want, "GET") ? !is_get(m) : strcmp(m, want) != 0) {
+        method_not_allowed(resp, want);
         return;
     }
-    run_operation((size_t)ri, req, resp);
+    if (!strcmp(want, "GET")) run_resource((size_t)ri, req, resp);
+    else run_operation((size_t)ri, req, resp);
 }

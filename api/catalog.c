@@ -48,8 +48,14 @@ static char *example_curl(const struct api_route *r)
 static json_t *build_catalog(void)
 {
     json_t *ops = json_array();
+    json_t *res = json_array();
     for (size_t i = 0; i < api_route_count; i++) {
         const struct api_route *r = api_routes[i];
+        if (!strcmp(r->method, "GET")) {
+            json_array_append_new(res, json_pack("{s:s,s:s,s:s}", "method", "GET", "path",
+                                                 r->path, "summary", r->summary));
+            continue;
+        }
         json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, NULL);
         char *curl = example_curl(r);
         json_t *op = json_pack("{s:s,s:s,s:s,s:s,s:O,s:o,s:s}", "method", r->method, "path",
@@ -57,10 +63,9 @@ static json_t *build_catalog(void)
                                "schema", api_route_schema(i), "example", ex, "curl",
                                curl ? curl : "");
         free(curl);
-        if (!op) { json_decref(ops); return NULL; }
+        if (!op) { json_decref(ops); json_decref(res); return NULL; }
         json_array_append_new(ops, op);
     }
-    json_t *res = json_array();
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++)
         json_array_append_new(res, json_pack("{s:s,s:s,s:s}", "method", "GET", "path",
                                              resources[i].path, "summary", resources[i].summary));
@@ -80,6 +85,14 @@ static json_t *build_openapi(void)
     json_t *paths = json_object();
     for (size_t i = 0; i < api_route_count; i++) {
         const struct api_route *r = api_routes[i];
+        if (!strcmp(r->method, "GET")) {
+            json_t *get = json_pack("{s:s,s:s,s:{s:{s:s,s:{s:{s:{s:s}}}}}}", "summary", r->summary,
+                                    "description", r->description, "responses", "200",
+                                    "description", r->summary, "content", "application/json",
+                                    "schema", "type", "object");
+            json_object_set_new(paths, r->path, json_pack("{s:o}", "get", get));
+            continue;
+        }
         char opid[128];
         snprintf(opid, sizeof opid, "%s", r->path + (strncmp(r->path, "/v1/", 4) ? 0 : 4));
         for (char *p = opid; *p; p++)

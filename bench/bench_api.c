@@ -48,10 +48,14 @@ static void handle(const struct api_route *r)
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
-    double seconds = argc > 1 ? atof(argv[1]) : 0.5;
+    /* argv[1]: seconds per case, or `make bench`'s output directory (ignored). */
+    char *end = NULL;
+    double seconds = argc > 1 ? strtod(argv[1], &end) : 0.5;
+    if (argc > 1 && (end == argv[1] || *end || !(seconds > 0))) seconds = 0.5;
     if (api_init()) return 1;
     printf("%-24s %14s %14s %10s\n", "operation (example)", "api_handle µs", "baseline µs", "ratio");
     for (size_t i = 0; i < api_route_count; i++) {
+        if (!api_routes[i]->example) continue; /* GET resources */
         double b = per_call(seconds, baseline, api_routes[i]);
         double h = per_call(seconds, handle, api_routes[i]);
         printf("%-24s %14.2f %14.2f %10.1f\n", api_routes[i]->path, h * 1e6, b * 1e6, h / b);

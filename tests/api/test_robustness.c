@@ -102,6 +102,7 @@ int main(void)
     gsl_set_error_handler_off();
     CHECK(api_init() == 0);
     for (size_t r = 0; r < api_route_count; r++) {
+        if (!api_routes[r]->example) continue; /* GET resources take no body */
         const char *path = api_routes[r]->path;
         json_t *ex = json_loads(api_routes[r]->example, JSON_DECODE_INT_AS_REAL, NULL);
         CHECK(ex != NULL);
