@@ -6,9 +6,12 @@
  * Sub-steps: a value at time tau inside an accepted step [t_a, t_b] is one
  * step of the same method from (t_a, y_a) of length tau - t_a. Its error is
  * the method's local error O(h^(p+1)), as good as the step itself (a cubic
- * Hermite interpolant would cap rk8pd at O(h^4)). For tau = t_b it reproduces
- * the accepted step bit for bit (same stepper, same h), so an event's bracket
- * [t_a, t_b] is consistent with the sign test that found it.
+ * Hermite interpolant would cap rk8pd at O(h^4)). For the one-step methods
+ * tau = t_b reproduces the accepted step bit for bit (same stepper, same h);
+ * radau15 (corrector re-converged, no compensation term) and msbdf (bsimp
+ * under the same tolerance) agree with it to round-off / the tolerance. The
+ * event's bracket uses g at the accepted ends, so Brent's method only needs
+ * G continuous inside, which the sub-step solution is.
  *
  * Event: Brent's method (R. P. Brent, Algorithms for Minimization without
  * Derivatives, 1973, ch. 4, procedure "zero") on G(tau) = g(tau, y(tau)) with

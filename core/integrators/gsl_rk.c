@@ -188,8 +188,9 @@ const struct mech_integrator mech_integrator_rk8pd = {
     .flags = MECH_INTEGRATOR_ADAPTIVE | MECH_INTEGRATOR_EXPLICIT,
     .doc = "Adaptive explicit Runge-Kutta-Prince-Dormand 8(7), 13 stages, error control "
            "atol + rtol |y| per component (GSL gsl_odeiv2_step_rk8pd). The reference method for "
-           "tight tolerances. Reference: P. J. Prince, J. R. Dormand, J. Comp. Appl. Math. 7 "
-           "(1981) 67-75.",
+           "tight tolerances.",
+    .reference = "P. J. Prince, J. R. Dormand, J. Comp. Appl. Math. 7 (1981) 67-75 (GSL "
+                 "ode-initval2/rk8pd.c).",
     .alloc = rk8pd_alloc,
     .reset = gsl_rk_reset,
     .free = gsl_rk_free,
@@ -202,8 +203,9 @@ const struct mech_integrator mech_integrator_rkck = {
     .order = 5,
     .flags = MECH_INTEGRATOR_ADAPTIVE | MECH_INTEGRATOR_EXPLICIT,
     .doc = "Adaptive explicit Runge-Kutta Cash-Karp 5(4), 6 stages (GSL "
-           "gsl_odeiv2_step_rkck). Reference: J. R. Cash, A. H. Karp, ACM Trans. Math. Softw. "
-           "16 (1990) 201-222.",
+           "gsl_odeiv2_step_rkck).",
+    .reference = "J. R. Cash, A. H. Karp, ACM Trans. Math. Softw. 16 (1990) 201-222 (GSL "
+                 "ode-initval2/rkck.c).",
     .alloc = rkck_alloc,
     .reset = gsl_rk_reset,
     .free = gsl_rk_free,
@@ -216,8 +218,8 @@ const struct mech_integrator mech_integrator_rkf45 = {
     .order = 5,
     .flags = MECH_INTEGRATOR_ADAPTIVE | MECH_INTEGRATOR_EXPLICIT,
     .doc = "Adaptive explicit Runge-Kutta-Fehlberg 4(5), 6 stages (GSL gsl_odeiv2_step_rkf45); "
-           "a general-purpose method for moderate tolerances. Reference: E. Fehlberg, NASA "
-           "Technical Report R-315 (1969).",
+           "a general-purpose method for moderate tolerances.",
+    .reference = "E. Fehlberg, NASA Technical Report R-315 (1969) (GSL ode-initval2/rkf45.c).",
     .alloc = rkf45_alloc,
     .reset = gsl_rk_reset,
     .free = gsl_rk_free,

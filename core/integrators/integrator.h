@@ -35,9 +35,16 @@
  * - Workspaces are per call (alloc/free), never shared between threads;
  *   descriptors are immutable and thread-safe.
  *
+ * - Shared kernels: the Störmer–Verlet stage (with its implicit half kick
+ *   for velocity-dependent forces) lives in verlet_kernel.h/.c and is used
+ *   by verlet.c and yoshida.c; methods never copy each other's code.
+ * - step() is a pure function of (t, h, y) as far as results go: a
+ *   workspace may cache values (verlet_kernel's force memo, keyed bitwise on
+ *   (t, q)), never carry guesses that change the answer (gauss_legendre.c
+ *   restarts its stage iteration from f(t, y) at every call).
+ *
  * Internal to libmech (not under core/include/): the public driver is
- * mech/ode.h. Later methods (Yoshida compositions, converged Gauss–Legendre,
- * Boris) plug into the same descriptor; see MECH_INTEGRATOR_* flags.
+ * mech/ode.h. Every method fills `reference`; see MECH_INTEGRATOR_* flags.
  */
 #ifndef MECH_INTEGRATORS_INTEGRATOR_H
 #define MECH_INTEGRATORS_INTEGRATOR_H
@@ -47,7 +54,10 @@
 #include "mech/ode.h"
 #include "mech/status.h"
 
-/* Descriptor flags. */
+/* Descriptor flags. The catalog's "implicit" is !MECH_INTEGRATOR_EXPLICIT
+ * (registry.c): a method that solves implicit equations for SOME systems
+ * (verlet and yoshida* with velocity-dependent forces; gauss* always) is not
+ * flagged EXPLICIT. */
 #define MECH_INTEGRATOR_ADAPTIVE 0x1u     /* has evolve(); takes rtol/atol */
 #define MECH_INTEGRATOR_FIXED_STEP 0x2u   /* advanced with step() and a user dt */
 #define MECH_INTEGRATOR_SYMPLECTIC 0x4u   /* symplectic for velocity-free forces */
@@ -59,7 +69,8 @@ struct mech_integrator {
     const char *name;  /* stable API name: "rk8pd", "verlet", ... */
     int order;         /* global order of accuracy */
     unsigned flags;    /* MECH_INTEGRATOR_* */
-    const char *doc;   /* one paragraph with the citation, shown in catalogs */
+    const char *doc;   /* one paragraph: what it is, when to use it, shown in catalogs */
+    const char *reference; /* the citation: paper or book, equation/section */
 
     /* Allocate a workspace for a system of dimension dim with the given
      * options (rtol/atol for adaptive methods, dt for fixed-step ones; the
@@ -101,6 +112,15 @@ extern const struct mech_integrator mech_integrator_rkck;  /* gsl_rk.c */
 extern const struct mech_integrator mech_integrator_rkf45; /* gsl_rk.c */
 extern const struct mech_integrator mech_integrator_rk4;   /* rk4.c */
 extern const struct mech_integrator mech_integrator_verlet;/* verlet.c */
+extern const struct mech_integrator mech_integrator_euler;            /* euler.c */
+extern const struct mech_integrator mech_integrator_symplectic_euler; /* symplectic_euler.c */
+extern const struct mech_integrator mech_integrator_yoshida4;         /* yoshida.c */
+extern const struct mech_integrator mech_integrator_yoshida6;         /* yoshida.c */
+extern const struct mech_integrator mech_integrator_gauss4;           /* gauss_legendre.c */
+extern const struct mech_integrator mech_integrator_gauss6;           /* gauss_legendre.c */
+extern const struct mech_integrator mech_integrator_boris;            /* boris.c */
+extern const struct mech_integrator mech_integrator_radau15;          /* radau15.c */
+extern const struct mech_integrator mech_integrator_msbdf;            /* gsl_msbdf.c */
 
 /* Evaluate the first-order right-hand side, counting one evaluation and
  * checking the result is finite (MECH_ENUMERIC otherwise). */

@@ -7,8 +7,22 @@
 #include "integrators/integrator.h"
 
 const struct mech_integrator *const mech_integrator_table[] = {
-    &mech_integrator_rk8pd, &mech_integrator_rkck,   &mech_integrator_rkf45,
-    &mech_integrator_rk4,   &mech_integrator_verlet,
+    /* adaptive */
+    &mech_integrator_rk8pd,
+    &mech_integrator_rkck,
+    &mech_integrator_rkf45,
+    &mech_integrator_radau15,
+    &mech_integrator_msbdf,
+    /* fixed step */
+    &mech_integrator_euler,
+    &mech_integrator_symplectic_euler,
+    &mech_integrator_rk4,
+    &mech_integrator_verlet,
+    &mech_integrator_yoshida4,
+    &mech_integrator_yoshida6,
+    &mech_integrator_gauss4,
+    &mech_integrator_gauss6,
+    &mech_integrator_boris,
 };
 const size_t mech_integrator_count = sizeof mech_integrator_table / sizeof mech_integrator_table[0];
 
@@ -29,8 +43,16 @@ const struct mech_integrator *mech_ode_method_at(size_t i)
 
 struct mech_ode_method_info mech_ode_method_describe(const struct mech_integrator *m)
 {
-    struct mech_ode_method_info info = {m->name, m->order,
-                                        (m->flags & MECH_INTEGRATOR_ADAPTIVE) != 0,
-                                        (m->flags & MECH_INTEGRATOR_SYMPLECTIC) != 0, m->doc};
+    struct mech_ode_method_info info = {
+        .name = m->name,
+        .order = m->order,
+        .adaptive = (m->flags & MECH_INTEGRATOR_ADAPTIVE) != 0,
+        .symplectic = (m->flags & MECH_INTEGRATOR_SYMPLECTIC) != 0,
+        .implicit = (m->flags & MECH_INTEGRATOR_EXPLICIT) == 0,
+        .symmetric = (m->flags & MECH_INTEGRATOR_SYMMETRIC) != 0,
+        .second_order = (m->flags & MECH_INTEGRATOR_SECOND_ORDER) != 0,
+        .doc = m->doc,
+        .reference = m->reference ? m->reference : "",
+    };
     return info;
 }

@@ -71,8 +71,9 @@ const struct mech_integrator mech_integrator_rk4 = {
     .order = 4,
     .flags = MECH_INTEGRATOR_FIXED_STEP | MECH_INTEGRATOR_EXPLICIT,
     .doc = "Classical fourth-order Runge-Kutta, fixed step dt, 4 right-hand-side evaluations "
-           "per step, global error O(dt^4); not symplectic (energy drifts secularly). "
-           "Reference: Abramowitz & Stegun, Handbook of Mathematical Functions, eq. 25.5.10.",
+           "per step, global error O(dt^4); not symplectic (energy drifts secularly).",
+    .reference = "M. Abramowitz, I. A. Stegun, Handbook of Mathematical Functions (1964), "
+                 "eq. 25.5.10; W. Kutta, Z. Math. Phys. 46 (1901) 435-453.",
     .alloc = rk4_alloc,
     .reset = rk4_reset,
     .free = rk4_free,

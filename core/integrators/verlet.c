@@ -26,135 +26,43 @@
  * h/2 |da/dv| < 1 (h w << 1, h b / (2m) < 1); otherwise the step fails with
  * MECH_ENUMERIC naming dt.
  */
-#include <float.h>
-#include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "integrators/integrator.h"
+#include "integrators/verlet_kernel.h"
 
-enum { VERLET_MAX_ITER = 60 };
-
-struct verlet_ws {
-    size_t nq;
-    double *a0, *a1, *vh, *vtry, *q1; /* nq each */
-    int memo_valid;                   /* memo of a(t_m, q_m) for velocity-free forces */
-    double t_m;
-    double *q_m, *a_m;
-};
-
+/* The stage itself (and its implicit half kick) lives in verlet_kernel.c,
+ * shared with the Yoshida compositions. */
 static enum mech_status verlet_alloc(void **ws, size_t dim, const struct mech_ode_options *opt,
                                      struct mech_error *err)
 {
     (void)opt;
-    if (dim == 0 || dim % 2 != 0)
-        return mech_error_set(err, MECH_EINVAL, NULL,
-                              "verlet needs a state (q, v) of even dimension, got %zu", dim);
-    size_t nq = dim / 2;
-    struct verlet_ws *w = malloc(sizeof *w);
-    double *block = malloc(7 * nq * sizeof *block);
-    if (!w || !block) {
-        free(w);
-        free(block);
-        return mech_error_set(err, MECH_ENOMEM, NULL, "verlet: out of memory");
+    struct mech_verlet_kernel *k = malloc(sizeof *k);
+    if (!k) return mech_error_set(err, MECH_ENOMEM, NULL, "verlet: out of memory");
+    enum mech_status st = mech_verlet_kernel_init(k, dim, "verlet", err);
+    if (st != MECH_OK) {
+        free(k);
+        return st;
     }
-    w->nq = nq;
-    w->a0 = block;
-    w->a1 = block + nq;
-    w->vh = block + 2 * nq;
-    w->vtry = block + 3 * nq;
-    w->q1 = block + 4 * nq;
-    w->q_m = block + 5 * nq;
-    w->a_m = block + 6 * nq;
-    w->memo_valid = 0;
-    w->t_m = 0.0;
-    *ws = w;
+    *ws = k;
     return MECH_OK;
 }
 
-static void verlet_reset(void *ws)
-{
-    struct verlet_ws *w = ws;
-    if (w) w->memo_valid = 0;
-}
+static void verlet_reset(void *ws) { mech_verlet_kernel_reset(ws); }
 
 static void verlet_free(void *ws)
 {
-    struct verlet_ws *w = ws;
-    if (!w) return;
-    free(w->a0);
-    free(w);
-}
-
-/* a0 = a(t, q) for velocity-free forces, from the memo when (t, q) matches it exactly. */
-static enum mech_status accel_memo(struct verlet_ws *w, const struct mech_ode_system *sys,
-                                   double t, const double *q, const double *v,
-                                   struct mech_ode_stats *stats, struct mech_error *err)
-{
-    const size_t nq = w->nq;
-    if (w->memo_valid && w->t_m == t && memcmp(w->q_m, q, nq * sizeof *q) == 0) {
-        memcpy(w->a0, w->a_m, nq * sizeof *q);
-        return MECH_OK;
-    }
-    return mech_ode_accel(sys, t, q, v, w->a0, stats, err);
+    if (!ws) return;
+    mech_verlet_kernel_release(ws);
+    free(ws);
 }
 
 static enum mech_status verlet_step(void *ws, const struct mech_ode_system *sys, double t,
                                     double h, double *y, struct mech_ode_stats *stats,
                                     struct mech_error *err)
 {
-    struct verlet_ws *w = ws;
-    const size_t nq = w->nq;
-    double *q = y, *v = y + nq;
-    enum mech_status st;
-    const int vfree = (sys->flags & MECH_ODE_VELOCITY_FREE) != 0;
-
-    if (vfree) {
-        if ((st = accel_memo(w, sys, t, q, v, stats, err)) != MECH_OK) return st;
-        for (size_t i = 0; i < nq; i++) w->vh[i] = v[i] + 0.5 * h * w->a0[i];
-    } else {
-        /* Implicit half kick v+ = v + h/2 a(t, q, v+), explicit predictor. */
-        if ((st = mech_ode_accel(sys, t, q, v, w->a0, stats, err)) != MECH_OK) return st;
-        for (size_t i = 0; i < nq; i++) w->vh[i] = v[i] + 0.5 * h * w->a0[i];
-        int converged = 0;
-        double prev_diff = INFINITY;
-        for (int it = 0; it < VERLET_MAX_ITER && !converged; it++) {
-            if ((st = mech_ode_accel(sys, t, q, w->vh, w->a0, stats, err)) != MECH_OK) return st;
-            double diff = 0.0, scale = 0.0;
-            for (size_t i = 0; i < nq; i++) {
-                w->vtry[i] = v[i] + 0.5 * h * w->a0[i];
-                diff = fmax(diff, fabs(w->vtry[i] - w->vh[i]));
-                scale = fmax(scale, fabs(w->vtry[i]));
-            }
-            memcpy(w->vh, w->vtry, nq * sizeof *v);
-            /* Converged to round-off, or stalled at the round-off floor. */
-            if (diff <= 4.0 * DBL_EPSILON * scale || diff == 0.0 ||
-                (diff >= prev_diff && diff <= 1e-13 * scale))
-                converged = 1;
-            prev_diff = diff;
-        }
-        if (!converged)
-            return mech_error_set(err, MECH_ENUMERIC, "integrator/dt",
-                                  "verlet: the implicit velocity half step does not converge at "
-                                  "t = %.6g s with dt = %.6g s (velocity-dependent forces too "
-                                  "strong for this step: reduce dt)",
-                                  t, h);
-    }
-    /* Drift. */
-    for (size_t i = 0; i < nq; i++) w->q1[i] = q[i] + h * w->vh[i];
-    /* Second half kick, explicit in v+. */
-    if ((st = mech_ode_accel(sys, t + h, w->q1, w->vh, w->a1, stats, err)) != MECH_OK) return st;
-    for (size_t i = 0; i < nq; i++) {
-        q[i] = w->q1[i];
-        v[i] = w->vh[i] + 0.5 * h * w->a1[i];
-    }
-    if (vfree) {
-        w->memo_valid = 1;
-        w->t_m = t + h;
-        memcpy(w->q_m, w->q1, nq * sizeof *q);
-        memcpy(w->a_m, w->a1, nq * sizeof *q);
-    }
-    return MECH_OK;
+    struct mech_verlet_kernel *k = ws;
+    return mech_verlet_kernel_stage(k, sys, t, h, t + h, y, y + k->nq, "verlet", stats, err);
 }
 
 const struct mech_integrator mech_integrator_verlet = {
@@ -166,9 +74,10 @@ const struct mech_integrator mech_integrator_verlet = {
            "velocity-independent forces it is explicit, symplectic and time-symmetric (one "
            "force evaluation per step; energy error bounded over long runs). With Coriolis or "
            "drag the first half kick is implicit (iterated to round-off): still second order "
-           "and symmetric, but not exactly symplectic in (position, velocity) variables. "
-           "References: L. Verlet, Phys. Rev. 159 (1967) 98; E. Hairer, C. Lubich, G. Wanner, "
-           "Acta Numerica 12 (2003) 399-450.",
+           "and symmetric, but not exactly symplectic in (position, velocity) variables.",
+    .reference = "L. Verlet, Phys. Rev. 159 (1967) 98-103; W. C. Swope, H. C. Andersen, "
+                 "P. H. Berens, K. R. Wilson, J. Chem. Phys. 76 (1982) 637-649; E. Hairer, "
+                 "C. Lubich, G. Wanner, Acta Numerica 12 (2003) 399-450.",
     .alloc = verlet_alloc,
     .reset = verlet_reset,
     .free = verlet_free,

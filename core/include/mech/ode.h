@@ -2,16 +2,21 @@
  * t_end with any registered method, write evenly spaced samples, stop at an
  * event located by root-finding, honour a compute budget.
  *
- * Methods ("rk8pd", "rkck", "rkf45" adaptive through GSL gsl_odeiv2;
- * "rk4", "verlet" fixed-step, written on libmech's own stepper interface,
- * core/integrators/integrator.h) are looked up by name with
- * mech_ode_method_find(). GSL's fixed-step driver is never used.
+ * Methods (registry: core/integrators/registry.c) are looked up by name
+ * with mech_ode_method_find(): adaptive ones take rtol/atol ("rk8pd",
+ * "rkck", "rkf45" and the stiff "msbdf" through GSL gsl_odeiv2; "radau15",
+ * IAS15-class, written here), fixed-step ones take dt (written on libmech's
+ * own stepper interface, core/integrators/integrator.h). GSL's fixed-step
+ * driver is never used.
  *
- * Off-grid values (samples, the event) are computed by a SUB-STEP: one step
- * of the same method from the start of the accepted step that contains the
- * time, of the exact length needed. Its error is the method's local error, so
- * samples are as accurate as the steps, and the main step sequence does not
- * depend on the number of samples.
+ * Off-grid values (samples, the event) are computed by a SUB-STEP from the
+ * start of the accepted step that contains the time, of the exact length
+ * needed: one step of the same method (its local error, so samples are as
+ * accurate as the steps), except where a method documents otherwise —
+ * radau15 iterates that step's corrector to round-off from the accepted
+ * step's polynomial; msbdf, whose BDF restarted from one point would be
+ * order 1, integrates the sub-interval with bsimp under the same tolerance.
+ * The main step sequence never depends on the number of samples.
  *
  * Thread-safety: all functions are reentrant; nothing global is written.
  */
@@ -33,6 +38,14 @@ typedef enum mech_status (*mech_ode_rhs_fn)(double t, const double *y, double *d
 typedef enum mech_status (*mech_ode_accel_fn)(double t, const double *q, const double *v,
                                               double *a, void *params);
 
+/* Optional Lorentz-type split of the second-order form, for Boris-type
+ * methods: a(t, q, v) = e(t, q) + v x w(t, q) exactly, with e and w
+ * independent of v, one 3-vector each per particle (nq = dim/2 must be a
+ * multiple of 3). Coriolis, -2 W x v = v x (2 W), is of this form; linear
+ * drag is not (a system with drag leaves `lorentz` NULL). */
+typedef enum mech_status (*mech_ode_lorentz_fn)(double t, const double *q, double *e, double *w,
+                                                void *params);
+
 /* mech_ode_system.flags */
 #define MECH_ODE_VELOCITY_FREE 0x1u /* accel does not depend on v (lets Verlet be explicit) */
 
@@ -42,6 +55,7 @@ struct mech_ode_system {
     mech_ode_accel_fn accel; /* optional second-order form; must agree with rhs */
     unsigned flags;          /* MECH_ODE_* */
     void *params;            /* passed to rhs/accel, borrowed */
+    mech_ode_lorentz_fn lorentz; /* optional Lorentz-type split (Boris); NULL if none */
 };
 
 struct mech_ode_options {
@@ -75,9 +89,13 @@ struct mech_integrator;
 struct mech_ode_method_info {
     const char *name;
     int order;
-    int adaptive;   /* 1: rtol/atol, 0: fixed dt */
-    int symplectic; /* 1: symplectic for velocity-independent forces */
+    int adaptive;     /* 1: rtol/atol, 0: fixed dt */
+    int symplectic;   /* 1: symplectic for velocity-independent forces */
+    int implicit;     /* 1: solves implicit stage equations */
+    int symmetric;    /* 1: time-reversible */
+    int second_order; /* 1: needs the second-order form q' = v, v' = a(t, q, v) */
     const char *doc;
+    const char *reference;
 };
 
 /* The method called `name`, or NULL. Never fails otherwise. */
