@@ -10,86 +10,9 @@
 
 #include "endpoint.h"
 #include "mech/trajectory.h"
+#include "trajectory_request.h"
 
-/* ---- request schema -------------------------------------------------------
- * Bounds keep every intermediate finite: lengths and speeds <= 1e15,
- * accelerations <= 1e15, gm, k, b, mass <= 1e30, rotation rates <= 1e6 rad/s,
- * t_end <= 1e15 s (the step budget and deadline bound the work). */
-#define TRAJ_NUM(lo, hi) "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi "}"
-#define TRAJ_VEC3(desc)                                                                     \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" TRAJ_NUM("-1e15", "1e15") \
-    ",\"description\":\"" desc "\"}"
-#define TRAJ_OBJ(req, props) \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[" req "],\"properties\":{" props "}}"
-
-static const char traj_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"particle\",\"t_end\"],"
-    "\"properties\":{"
-    "\"particle\":" TRAJ_OBJ(
-        "\"mass\",\"position\",\"velocity\"",
-        "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
-        "\"description\":\"kg\"},"
-        "\"position\":" TRAJ_VEC3("m, frame axes") ","
-        "\"velocity\":" TRAJ_VEC3("m/s, relative to the frame")) ","
-    "\"frame\":{\"description\":\"default {\\\"type\\\": \\\"inertial\\\"}\",\"oneOf\":["
-    TRAJ_OBJ("\"type\"", "\"type\":{\"const\":\"inertial\"}") ","
-    TRAJ_OBJ("\"type\",\"omega\"",
-             "\"type\":{\"const\":\"rotating\"},"
-             "\"omega\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"
-             TRAJ_NUM("-1e6", "1e6") ",\"description\":\"constant angular velocity of the "
-             "frame about the origin, rad/s, frame axes\"}") ","
-    TRAJ_OBJ("\"type\",\"latitude_deg\"",
-             "\"type\":{\"const\":\"earth\"},"
-             "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90},"
-             "\"omega_magnitude\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6,"
-             "\"default\":7.2921159e-05,\"description\":\"rad/s, default sidereal\"}")
-    "]},"
-    "\"forces\":{\"type\":\"array\",\"maxItems\":32,\"items\":{\"oneOf\":["
-    TRAJ_OBJ("\"type\",\"g\"",
-             "\"type\":{\"const\":\"uniform_gravity\"},"
-             "\"g\":" TRAJ_VEC3("gravitational acceleration, m/s^2 (e.g. [0, 0, -9.80665])")) ","
-    TRAJ_OBJ("\"type\",\"gm\"",
-             "\"type\":{\"const\":\"central_gravity\"},"
-             "\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
-             "\"description\":\"G M, m^3/s^2\"},"
-             "\"center\":" TRAJ_VEC3("m, default [0, 0, 0]")) ","
-    TRAJ_OBJ("\"type\",\"k\"",
-             "\"type\":{\"const\":\"spring\"},"
-             "\"k\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,\"description\":\"N/m\"},"
-             "\"anchor\":" TRAJ_VEC3("m, default [0, 0, 0]") ","
-             "\"rest_length\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e15,"
-             "\"default\":0}") ","
-    TRAJ_OBJ("\"type\",\"b\"",
-             "\"type\":{\"const\":\"linear_drag\"},"
-             "\"b\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,"
-             "\"description\":\"kg/s: F = -b v\"}")
-    "]}},"
-    "\"fictitious\":{\"type\":\"array\",\"maxItems\":2,\"uniqueItems\":true,"
-    "\"items\":{\"enum\":[\"coriolis\",\"centrifugal\"]},"
-    "\"description\":\"terms modelled in a rotating or earth frame; default both\"},"
-    "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":{\"description\":\"default {\\\"method\\\": \\\"rk8pd\\\", \\\"rtol\\\": "
-    "1e-10, \\\"atol\\\": 1e-12}\",\"oneOf\":["
-    TRAJ_OBJ("\"method\"",
-             "\"method\":{\"enum\":[\"rk8pd\",\"rkck\",\"rkf45\"]},"
-             "\"rtol\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,\"default\":1e-10},"
-             "\"atol\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e15,\"default\":1e-12}") ","
-    TRAJ_OBJ("\"method\",\"dt\"",
-             "\"method\":{\"enum\":[\"rk4\",\"verlet\"]},"
-             "\"dt\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,"
-             "\"description\":\"fixed step, s\"}")
-    "]},"
-    "\"stop\":" TRAJ_OBJ(
-        "\"coordinate\",\"crosses\"",
-        "\"coordinate\":{\"enum\":[\"x\",\"y\",\"z\"]},"
-        "\"crosses\":" TRAJ_NUM("-1e15", "1e15") ","
-        "\"direction\":{\"enum\":[\"decreasing\",\"increasing\",\"either\"],"
-        "\"default\":\"either\"}") ","
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,"
-    "\"description\":\"false omits the cost block (byte-identical answers)\"}"
-    "}}";
+static const char traj_schema[] = API_TRAJ_REQUEST_SCHEMA;
 
 static const char traj_example[] =
     "{\"particle\": {\"mass\": 1, \"position\": [0, 0, 100], \"velocity\": [0, 0, 0]}, "
@@ -106,129 +29,45 @@ static const char traj_description[] =
     "local g you give. Fictitious terms: coriolis -2m omega x v, centrifugal "
     "-m omega x (omega x r) (default both in a non-inertial frame, none in an inertial one). "
     "Forces: uniform_gravity (m g), central_gravity (-m gm (r-c)/|r-c|^3), spring "
-    "(-k (|r-a| - L) unit(r-a)), linear_drag (-b v, frame velocity). Methods: rk8pd, rkck, "
-    "rkf45 (GSL adaptive, rtol/atol per component, default rk8pd 1e-10/1e-12) or rk4, verlet "
-    "(fixed dt; verlet is symplectic without velocity-dependent forces; a run needing more "
-    "steps than the server's step budget is refused up front). Samples are evenly spaced in "
-    "0..t_end, each computed by a sub-step of the method from the start of its step (as "
-    "accurate as the steps). stop: the first crossing of a coordinate value, located by "
-    "Brent's method on the same sub-step solution to ~1e-15 relative in time; samples end "
-    "there. model.terms lists every force and both fictitious terms, included or not, with "
-    "the largest |acceleration| seen over the samples and steps (an omitted term's size "
-    "says what leaving it out neglects). diagnostics.invariant is the energy (inertial) or "
+    "(-k (|r-a| - L) unit(r-a)), linear_drag (-b v, frame velocity). integrator: a method "
+    "(adaptive rk8pd, rkck, rkf45, radau15, msbdf with rtol/atol; fixed-step euler, "
+    "symplectic_euler, rk4, verlet, yoshida4, yoshida6, gauss4, gauss6, boris with dt; GET "
+    "/v1/integrators describes each), or {\"accuracy\": \"draft\"|\"balanced\"|\"precise\"|"
+    "\"machine\"} (relative error 1e-3, 1e-8, 1e-10, 1e-11 promised), or {\"target_error\": "
+    "x} (relative, positions and velocities); the default is balanced. mechd picks radau15 for "
+    "velocity-free scenes and rk8pd/rkf45 with drag or Coriolis, with atol scaled to the "
+    "scene; diagnostics.selection says what it picked and why. A fixed-step run needing more "
+    "steps than the budget is refused up front. Samples are evenly spaced in 0..t_end, each "
+    "computed by a sub-step of the method from the start of its step (as accurate as the "
+    "steps). stop: the first crossing of a coordinate value, located by Brent's method on the "
+    "same sub-step solution to ~1e-15 relative in time; samples end there. model.terms lists "
+    "every force and both fictitious terms, included or not, with the largest |acceleration| "
+    "seen (an omitted term's size says what leaving it out neglects). Error evidence: "
+    "diagnostics.invariants lists every conserved quantity of the scene - energy (inertial) or "
     "the Jacobi integral 1/2 m v^2 + U - 1/2 m |omega x r|^2 (rotating/earth; the last term "
-    "only if centrifugal is modelled), with conserved = false when drag dissipates it; "
-    "max_relative_drift is max |I - I0| / |I0|. A fixed dt that does not resolve a close "
-    "approach to a central mass, or a particle reaching it, is a numerical-failure.";
-
-static int axis_of(const char *s) { return s[0] - 'x'; }
-
-static enum mech_force_type force_type_of(const char *s)
-{
-    if (strcmp(s, "central_gravity") == 0) return MECH_FORCE_CENTRAL_GRAVITY;
-    if (strcmp(s, "spring") == 0) return MECH_FORCE_SPRING;
-    if (strcmp(s, "linear_drag") == 0) return MECH_FORCE_LINEAR_DRAG;
-    return MECH_FORCE_UNIFORM_GRAVITY;
-}
-
-/* Parse the schema-validated body into p (forces into the caller's array).
- * Returns 0 after recording a validation error. */
-static int parse(struct api_call *c, const json_t *body, struct mech_trajectory_problem *p,
-                 struct mech_force *forces)
-{
-    const struct mech_vec3 zero = mech_vec3_make(0, 0, 0);
-    memset(p, 0, sizeof *p);
-    const json_t *part = json_object_get(body, "particle");
-    p->mass = api_number(part, "mass", 0);
-    p->position = api_vec3_member(part, "position", zero);
-    p->velocity = api_vec3_member(part, "velocity", zero);
-
-    const json_t *frame = json_object_get(body, "frame");
-    const char *ft = frame ? api_string(frame, "type", "inertial") : "inertial";
-    if (strcmp(ft, "rotating") == 0) {
-        p->frame.type = MECH_FRAME_ROTATING;
-        p->frame.omega = api_vec3_member(frame, "omega", zero);
-    } else if (strcmp(ft, "earth") == 0) {
-        p->frame.type = MECH_FRAME_EARTH;
-        p->frame.latitude_deg = api_number(frame, "latitude_deg", 0);
-        p->frame.omega_magnitude = api_number(frame, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
-    } else {
-        p->frame.type = MECH_FRAME_INERTIAL;
-    }
-
-    const json_t *fs = json_object_get(body, "forces");
-    p->n_forces = json_array_size(fs);
-    for (size_t i = 0; i < p->n_forces; i++) {
-        const json_t *f = json_array_get(fs, i);
-        struct mech_force *mf = &forces[i];
-        memset(mf, 0, sizeof *mf);
-        mf->type = force_type_of(api_string(f, "type", ""));
-        switch (mf->type) {
-        case MECH_FORCE_UNIFORM_GRAVITY:
-            mf->u.uniform_gravity.g = api_vec3_member(f, "g", zero);
-            break;
-        case MECH_FORCE_CENTRAL_GRAVITY:
-            mf->u.central_gravity.gm = api_number(f, "gm", 0);
-            mf->u.central_gravity.center = api_vec3_member(f, "center", zero);
-            break;
-        case MECH_FORCE_SPRING:
-            mf->u.spring.k = api_number(f, "k", 0);
-            mf->u.spring.anchor = api_vec3_member(f, "anchor", zero);
-            mf->u.spring.rest_length = api_number(f, "rest_length", 0);
-            break;
-        case MECH_FORCE_LINEAR_DRAG:
-            mf->u.linear_drag.b = api_number(f, "b", 0);
-            break;
-        }
-    }
-    p->forces = forces;
-
-    const json_t *fic = json_object_get(body, "fictitious");
-    if (fic) {
-        if (p->frame.type == MECH_FRAME_INERTIAL && json_array_size(fic) > 0) {
-            api_call_invalid(c, "/fictitious",
-                             "fictitious terms need a rotating or earth frame; an inertial "
-                             "frame has none");
-            return 0;
-        }
-        for (size_t i = 0; i < json_array_size(fic); i++) {
-            const char *s = json_string_value(json_array_get(fic, i));
-            p->fictitious |= strcmp(s, "coriolis") == 0 ? MECH_FICTITIOUS_CORIOLIS
-                                                        : MECH_FICTITIOUS_CENTRIFUGAL;
-        }
-    } else {
-        p->fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
-    }
-
-    p->t_end = api_number(body, "t_end", 0);
-    p->samples = (size_t)api_number(body, "samples", 101);
-    const json_t *in = json_object_get(body, "integrator");
-    p->method = in ? api_string(in, "method", "rk8pd") : "rk8pd";
-    p->opt.rtol = api_number(in, "rtol", 1e-10);
-    p->opt.atol = api_number(in, "atol", 1e-12);
-    p->opt.dt = api_number(in, "dt", 0);
-
-    const json_t *stop = json_object_get(body, "stop");
-    if (stop) {
-        p->has_stop = 1;
-        p->stop_axis = axis_of(api_string(stop, "coordinate", "z"));
-        p->stop_value = api_number(stop, "crosses", 0);
-        const char *d = api_string(stop, "direction", "either");
-        p->stop_direction = strcmp(d, "decreasing") == 0   ? MECH_STOP_DECREASING
-                            : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
-                                                           : MECH_STOP_EITHER;
-    }
-    return 1;
-}
+    "only if centrifugal is modelled), conserved = false when drag dissipates it, and the "
+    "angular momentum about the centre when every force is central about one point - with "
+    "max_relative_drift = max |I - I0| / |I0| (diagnostics.invariant repeats the first). "
+    "diagnostics.reference compares every sample with an exact solution (kepler: one "
+    "central_gravity, universal-variable propagation; harmonic_oscillator: one spring of rest "
+    "length 0, optional uniform gravity; uniform_gravity, optionally with linear_drag) or the "
+    "notes' first-order Coriolis solution r0 + v0 t + g t^2/2 - omega x (v0 t^2 + g t^3/3) "
+    "(rotating/earth frame, uniform gravity only; truncation_estimate is the size of the "
+    "neglected second-order terms), in metres and relative to the largest |r| and |v| of the "
+    "reference; null when the scene has none. Then error_estimate: true runs the scene again "
+    "(adaptive: rtol/100, atol/100, or radau15 / rk8pd at round-off when that is beyond the "
+    "method; fixed: dt/2, Richardson-scaled) within the same step "
+    "budget and reports the difference. A fixed dt that does not resolve a close approach to "
+    "a central mass, a particle reaching it, or any non-finite value (with the time and the "
+    "last finite position) is a numerical-failure.";
 
 static json_t *traj_op(struct api_call *c, const json_t *body)
 {
-    struct mech_force forces[MECH_TRAJECTORY_MAX_FORCES];
-    struct mech_trajectory_problem p;
-    if (!parse(c, body, &p, forces)) return NULL;
+    struct api_traj_request rq;
+    if (!api_traj_request_parse(c, body, "", &rq)) return NULL;
 
     /* Output buffers, owned here: samples x (t, position, velocity). */
-    const size_t n = p.samples;
+    const size_t n = rq.p.samples;
     double *t = malloc(n * sizeof *t);
     struct mech_vec3 *pos = malloc(n * sizeof *pos);
     struct mech_vec3 *vel = malloc(n * sizeof *vel);
@@ -240,7 +79,7 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st =
-        (t && pos && vel) ? mech_trajectory_integrate(&p, &c->budget, &r, &e) : MECH_ENOMEM;
+        (t && pos && vel) ? mech_trajectory_integrate(&rq.p, &c->budget, &r, &e) : MECH_ENOMEM;
     if (st != MECH_OK) {
         free(t);
         free(pos);
@@ -285,29 +124,10 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     json_object_set_new(model, "terms", terms);
     json_object_set_new(res, "model", model);
 
-    json_t *d = json_object();
-    json_object_set_new(d, "method", json_string(r.method));
-    struct mech_ode_method_info mi = mech_ode_method_describe(mech_ode_method_find(r.method));
-    if (mi.adaptive) {
-        json_object_set_new(d, "rtol", api_real(c, p.opt.rtol));
-        json_object_set_new(d, "atol", api_real(c, p.opt.atol));
-    } else {
-        json_object_set_new(d, "dt", api_real(c, p.opt.dt));
-    }
-    json_object_set_new(d, "order", json_integer(mi.order));
-    json_object_set_new(d, "steps", json_integer(r.stats.steps));
-    json_object_set_new(d, "rejected_steps", json_integer(r.stats.rejected_steps));
-    json_object_set_new(d, "rhs_evaluations", json_integer(r.stats.rhs_evaluations));
-    json_t *inv = json_object();
-    json_object_set_new(inv, "name", json_string(r.invariant.name));
-    json_object_set_new(inv, "conserved", json_boolean(r.invariant.conserved));
-    json_object_set_new(inv, "initial", api_real(c, r.invariant.initial));
-    json_object_set_new(inv, "final", api_real(c, r.invariant.final));
-    json_object_set_new(inv, "max_relative_drift", api_real(c, r.invariant.max_relative_drift));
-    json_object_set_new(d, "invariant", inv);
+    json_t *d = api_traj_diagnostics(c, &rq, &r);
     json_object_set_new(res, "diagnostics", d);
 
-    if (!res || !jp || !jv || !terms || !model || !d || !inv ||
+    if (!res || !jp || !jv || !terms || !model || !d ||
         json_array_size(jp) != r.n_samples) {
         json_decref(res);
         return api_call_fail_core(c, MECH_ENOMEM, NULL, "");

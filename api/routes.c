@@ -6,10 +6,14 @@
 extern const struct api_route api_route_rigid_inertia;
 extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
+extern const struct api_route api_route_compare;
+extern const struct api_route api_route_integrators;
 
 const struct api_route *const api_routes[] = {
     &api_route_rigid_inertia,
     &api_route_relativity_boost,
     &api_route_trajectory,
+    &api_route_compare,
+    &api_route_integrators,
 };
 const size_t api_route_count = sizeof api_routes / sizeof api_routes[0];

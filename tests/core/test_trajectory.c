@@ -427,7 +427,7 @@ static void test_validation(void)
     CHECK_EQ_INT(run(&p, &r, &e), MECH_EDOMAIN);
     CHECK(strcmp(e.param, "particle/mass") == 0);
     p.mass = 1.0;
-    p.method = "euler";
+    p.method = "no_such_method";
     CHECK_EQ_INT(run(&p, &r, &e), MECH_EINVAL);
     CHECK(strcmp(e.param, "integrator/method") == 0);
     p.method = "rk4";

@@ -1,0 +1,270 @@
+/* trajectory_request.c — parsing of the /v1/trajectory request and encoding
+ * of its diagnostics, shared by ep_trajectory.c and ep_compare.c (see
+ * trajectory_request.h). */
+#include "trajectory_request.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#include "mech/reference.h"
+
+static int axis_of(const char *s) { return s[0] - 'x'; }
+
+static enum mech_force_type force_type_of(const char *s)
+{
+    if (strcmp(s, "central_gravity") == 0) return MECH_FORCE_CENTRAL_GRAVITY;
+    if (strcmp(s, "spring") == 0) return MECH_FORCE_SPRING;
+    if (strcmp(s, "linear_drag") == 0) return MECH_FORCE_LINEAR_DRAG;
+    return MECH_FORCE_UNIFORM_GRAVITY;
+}
+
+void api_traj_request_fix(struct api_traj_request *rq)
+{
+    rq->p.forces = rq->forces;
+}
+
+int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request *rq,
+                                    const json_t *in, const char *pointer)
+{
+    struct mech_trajectory_problem *p = &rq->p;
+    rq->requested = in;
+    rq->chosen = 0;
+    rq->accuracy = NULL;
+    memset(&rq->choice, 0, sizeof rq->choice);
+    const char *method = in ? api_string(in, "method", NULL) : NULL;
+    if (method) {
+        p->method = method;
+        p->opt.rtol = api_number(in, "rtol", 1e-10);
+        p->opt.atol = api_number(in, "atol", 1e-12);
+        p->opt.dt = api_number(in, "dt", 0);
+        return 1;
+    }
+    double target;
+    const json_t *te = in ? json_object_get(in, "target_error") : NULL;
+    if (te) {
+        target = json_number_value(te);
+    } else {
+        const char *acc = in ? api_string(in, "accuracy", "balanced") : "balanced";
+        enum mech_accuracy a = MECH_ACCURACY_BALANCED;
+        for (int i = 0; i < MECH_ACCURACY_COUNT; i++)
+            if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, acc))
+                a = (enum mech_accuracy)i;
+        rq->accuracy = mech_accuracy_preset_at(a)->name;
+        target = mech_accuracy_preset_at(a)->promise;
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_trajectory_choose(p, target, &rq->choice, &e);
+    if (st != MECH_OK) {
+        api_call_invalid(c, pointer, "%s", e.text);
+        return 0;
+    }
+    rq->chosen = 1;
+    p->method = rq->choice.method;
+    p->opt = rq->choice.opt;
+    return 1;
+}
+
+int api_traj_request_parse(struct api_call *c, const json_t *body, const char *prefix,
+                           struct api_traj_request *rq)
+{
+    const struct mech_vec3 zero = mech_vec3_make(0, 0, 0);
+    memset(rq, 0, sizeof *rq);
+    struct mech_trajectory_problem *p = &rq->p;
+    const json_t *part = json_object_get(body, "particle");
+    p->mass = api_number(part, "mass", 0);
+    p->position = api_vec3_member(part, "position", zero);
+    p->velocity = api_vec3_member(part, "velocity", zero);
+
+    const json_t *frame = json_object_get(body, "frame");
+    const char *ft = frame ? api_string(frame, "type", "inertial") : "inertial";
+    if (strcmp(ft, "rotating") == 0) {
+        p->frame.type = MECH_FRAME_ROTATING;
+        p->frame.omega = api_vec3_member(frame, "omega", zero);
+    } else if (strcmp(ft, "earth") == 0) {
+        p->frame.type = MECH_FRAME_EARTH;
+        p->frame.latitude_deg = api_number(frame, "latitude_deg", 0);
+        p->frame.omega_magnitude = api_number(frame, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+    } else {
+        p->frame.type = MECH_FRAME_INERTIAL;
+    }
+
+    const json_t *fs = json_object_get(body, "forces");
+    p->n_forces = json_array_size(fs);
+    for (size_t i = 0; i < p->n_forces && i < MECH_TRAJECTORY_MAX_FORCES; i++) {
+        const json_t *f = json_array_get(fs, i);
+        struct mech_force *mf = &rq->forces[i];
+        memset(mf, 0, sizeof *mf);
+        mf->type = force_type_of(api_string(f, "type", ""));
+        switch (mf->type) {
+        case MECH_FORCE_UNIFORM_GRAVITY:
+            mf->u.uniform_gravity.g = api_vec3_member(f, "g", zero);
+            break;
+        case MECH_FORCE_CENTRAL_GRAVITY:
+            mf->u.central_gravity.gm = api_number(f, "gm", 0);
+            mf->u.central_gravity.center = api_vec3_member(f, "center", zero);
+            break;
+        case MECH_FORCE_SPRING:
+            mf->u.spring.k = api_number(f, "k", 0);
+            mf->u.spring.anchor = api_vec3_member(f, "anchor", zero);
+            mf->u.spring.rest_length = api_number(f, "rest_length", 0);
+            break;
+        case MECH_FORCE_LINEAR_DRAG:
+            mf->u.linear_drag.b = api_number(f, "b", 0);
+            break;
+        }
+    }
+    api_traj_request_fix(rq);
+
+    const json_t *fic = json_object_get(body, "fictitious");
+    if (fic) {
+        if (p->frame.type == MECH_FRAME_INERTIAL && json_array_size(fic) > 0) {
+            api_call_invalid(c, *prefix ? "/request/fictitious" : "/fictitious",
+                             "fictitious terms need a rotating or earth frame; an inertial "
+                             "frame has none");
+            return 0;
+        }
+        for (size_t i = 0; i < json_array_size(fic); i++) {
+            const char *s = json_string_value(json_array_get(fic, i));
+            p->fictitious |= strcmp(s, "coriolis") == 0 ? MECH_FICTITIOUS_CORIOLIS
+                                                        : MECH_FICTITIOUS_CENTRIFUGAL;
+        }
+    } else {
+        p->fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
+    }
+
+    p->t_end = api_number(body, "t_end", 0);
+    p->samples = (size_t)api_number(body, "samples", 101);
+    p->error_estimate = json_is_true(json_object_get(body, "error_estimate"));
+
+    const json_t *stop = json_object_get(body, "stop");
+    if (stop) {
+        p->has_stop = 1;
+        p->stop_axis = axis_of(api_string(stop, "coordinate", "z"));
+        p->stop_value = api_number(stop, "crosses", 0);
+        const char *d = api_string(stop, "direction", "either");
+        p->stop_direction = strcmp(d, "decreasing") == 0   ? MECH_STOP_DECREASING
+                            : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
+                                                           : MECH_STOP_EITHER;
+    }
+    char ptr[64];
+    snprintf(ptr, sizeof ptr, "%s/integrator", prefix);
+    return api_traj_request_set_integrator(c, rq, json_object_get(body, "integrator"), ptr);
+}
+
+json_t *api_traj_settings(struct api_call *c, const struct mech_trajectory_problem *p)
+{
+    json_t *s = json_object();
+    const struct mech_integrator *m = mech_ode_method_find(p->method);
+    json_object_set_new(s, "method", json_string(p->method));
+    if (m && mech_ode_method_describe(m).adaptive) {
+        json_object_set_new(s, "rtol", api_real(c, p->opt.rtol));
+        json_object_set_new(s, "atol", api_real(c, p->opt.atol));
+    } else {
+        json_object_set_new(s, "dt", api_real(c, p->opt.dt));
+    }
+    return s;
+}
+
+json_t *api_traj_invariant(struct api_call *c, const struct mech_trajectory_invariant *inv)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "name", json_string(inv->name));
+    json_object_set_new(j, "conserved", json_boolean(inv->conserved));
+    json_object_set_new(j, "initial", api_real(c, inv->initial));
+    json_object_set_new(j, "final", api_real(c, inv->final));
+    json_object_set_new(j, "max_relative_drift", api_real(c, inv->max_relative_drift));
+    if (inv->is_vector) {
+        json_object_set_new(j, "initial_vector", api_vec3(c, inv->initial_vector));
+        json_object_set_new(j, "final_vector", api_vec3(c, inv->final_vector));
+    }
+    return j;
+}
+
+static json_t *reference_json(struct api_call *c, const struct mech_trajectory_reference_report *rf)
+{
+    if (rf->kind == MECH_REFERENCE_NONE) return json_null();
+    json_t *j = json_object();
+    json_object_set_new(j, "kind",
+                        json_string(rf->kind == MECH_REFERENCE_EXACT ? "exact" : "first_order"));
+    json_object_set_new(j, "name", json_string(rf->name));
+    json_object_set_new(j, "max_position_error", api_real(c, rf->max_position_error));
+    json_object_set_new(j, "final_position_error", api_real(c, rf->final_position_error));
+    json_object_set_new(j, "max_velocity_error", api_real(c, rf->max_velocity_error));
+    json_object_set_new(j, "max_relative_position_error",
+                        api_real(c, rf->max_relative_position_error));
+    json_object_set_new(j, "max_relative_velocity_error",
+                        api_real(c, rf->max_relative_velocity_error));
+    if (rf->kind == MECH_REFERENCE_FIRST_ORDER)
+        json_object_set_new(j, "truncation_estimate", api_real(c, rf->truncation_estimate));
+    return j;
+}
+
+json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *rq,
+                             const struct mech_trajectory_result *r)
+{
+    const struct mech_trajectory_problem *p = &rq->p;
+    json_t *d = json_object();
+    if (!d) return NULL;
+    struct mech_ode_method_info mi = mech_ode_method_describe(mech_ode_method_find(r->method));
+    json_object_set_new(d, "method", json_string(r->method));
+    if (mi.adaptive) {
+        json_object_set_new(d, "rtol", api_real(c, p->opt.rtol));
+        json_object_set_new(d, "atol", api_real(c, p->opt.atol));
+    } else {
+        json_object_set_new(d, "dt", api_real(c, p->opt.dt));
+    }
+    json_object_set_new(d, "order", json_integer(mi.order));
+    json_object_set_new(d, "steps", json_integer(r->stats.steps));
+    json_object_set_new(d, "rejected_steps", json_integer(r->stats.rejected_steps));
+    json_object_set_new(d, "rhs_evaluations", json_integer(r->stats.rhs_evaluations));
+    json_object_set_new(d, "invariant", api_traj_invariant(c, &r->invariant));
+    json_t *invs = json_array();
+    for (size_t i = 0; invs && i < r->n_invariants; i++)
+        json_array_append_new(invs, api_traj_invariant(c, &r->invariants[i]));
+    json_object_set_new(d, "invariants", invs);
+    json_object_set_new(d, "reference", reference_json(c, &r->reference));
+    if (p->error_estimate) {
+        const struct mech_trajectory_error_estimate *ee = &r->error_estimate;
+        json_t *j = json_object();
+        if (ee->done) {
+            struct mech_trajectory_problem p2 = *p;
+            p2.method = ee->method;
+            p2.opt = ee->opt;
+            json_object_set_new(j, "settings", api_traj_settings(c, &p2));
+            json_object_set_new(j, "rule", json_string(ee->rule));
+            json_object_set_new(j, "max_position_difference",
+                                api_real(c, ee->max_position_difference));
+            json_object_set_new(j, "final_position_difference",
+                                api_real(c, ee->final_position_difference));
+            json_object_set_new(j, "max_velocity_difference",
+                                api_real(c, ee->max_velocity_difference));
+            json_object_set_new(j, "max_position_error_estimate",
+                                api_real(c, ee->max_position_error_estimate));
+            json_object_set_new(j, "steps", json_integer(ee->stats.steps));
+            json_object_set_new(j, "rhs_evaluations", json_integer(ee->stats.rhs_evaluations));
+        } else {
+            json_object_set_new(j, "skipped",
+                                json_string("the scene has a reference solution: see reference"));
+        }
+        json_object_set_new(d, "error_estimate", j);
+    }
+    json_t *sel = json_object();
+    json_object_set_new(sel, "requested", rq->requested ? json_deep_copy(rq->requested)
+                                                        : json_null());
+    json_t *set = api_traj_settings(c, p);
+    json_object_update(sel, set);
+    json_decref(set);
+    if (rq->chosen) {
+        json_object_set_new(sel, "target_error", api_real(c, rq->choice.target));
+        char why[400];
+        snprintf(why, sizeof why, "%s%s",
+                 rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+                 rq->choice.reason);
+        json_object_set_new(sel, "reason", json_string(why));
+    } else {
+        json_object_set_new(sel, "reason", json_string("method and settings given in the request"));
+    }
+    json_object_set_new(d, "selection", sel);
+    return d;
+}

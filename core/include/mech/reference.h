@@ -1,0 +1,119 @@
+/* mech/reference.h — exact and first-order solutions used as references for
+ * the error of numerical trajectories (DESIGN.md "Accuracy you can see").
+ *
+ *   Kepler two-body motion (universal variables, any conic),
+ *   the isotropic harmonic oscillator (spring of rest length 0) with uniform
+ *   gravity, uniform gravity with linear drag, and the notes' first-order
+ *   Coriolis solution near the Earth / in a rotating frame.
+ *
+ * mech_trajectory_reference_find() recognises which of these a trajectory
+ * scene is; mech_trajectory_reference_eval() evaluates it at a time.
+ *
+ * Units: SI. Thread-safety: reentrant, no globals, no allocation.
+ */
+#ifndef MECH_REFERENCE_H
+#define MECH_REFERENCE_H
+
+#include "mech/status.h"
+#include "mech/trajectory.h"
+#include "mech/vec.h"
+
+/* Propagate a Kepler orbit about a fixed centre (at the origin of r0) by t
+ * seconds: r'' = -gm r / |r|^3. Universal-variable formulation with
+ * Stiefel–Scheifele G-functions (Danby, Fundamentals of Celestial Mechanics,
+ * 2nd ed., §6.9; Vallado, Fundamentals of Astrodynamics and Applications,
+ * 4th ed., Algorithm 8 "KEPLER"), valid for elliptic, parabolic and
+ * hyperbolic orbits alike. The universal Kepler equation
+ *   t = r0 G1(s) + (r0.v0) G2(s) + gm G3(s)
+ * is solved for s by Newton's method safeguarded by bisection on a bracket
+ * (its derivative is r(s) > 0, so it is monotonic), to round-off. Bound
+ * orbits are first reduced by whole periods (fmod, exact), so 1e5 orbits cost
+ * the same as one; the reduction's error is that of the period computed from
+ * the initial state (~1.5 |de/a|/a relative per orbit, i.e. ~n eps for n
+ * orbits away from e = 1).
+ * gm > 0 finite; r0 != 0 finite; v0 finite; t finite (either sign).
+ * Statuses: MECH_OK; MECH_EINVAL (bad arguments); MECH_ENUMERIC (a radial
+ * orbit through the centre before t, or a non-finite result). */
+enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0, struct mech_vec3 v0,
+                                       double t, struct mech_vec3 *r, struct mech_vec3 *v,
+                                       struct mech_error *err);
+
+/* Isotropic harmonic oscillator about `anchor` with uniform acceleration g:
+ * r'' = -omega^2 (r - anchor) + g, omega >= 0 (omega = 0: free fall). Exact:
+ *   r - a = (r0 - a) cos wt + v0 sin(wt)/w + g (1 - cos wt)/w^2,
+ * with sin(wt)/w = t sinc(wt) and (1 - cos wt)/w^2 = (t^2/2) sinc^2(wt/2), so
+ * no cancellation for small w t. Cannot fail. */
+void mech_harmonic_propagate(double omega, struct mech_vec3 anchor, struct mech_vec3 g,
+                             struct mech_vec3 r0, struct mech_vec3 v0, double t,
+                             struct mech_vec3 *r, struct mech_vec3 *v);
+
+/* Uniform gravity g with linear drag F = -b v (gamma = b/m >= 0), exact:
+ *   v = v0 e^{-x} + g t E1(x),  r = r0 + v0 t E1(x) + g t^2 E2(x),  x = gamma t,
+ * E1(x) = (1 - e^{-x})/x = -expm1(-x)/x, E2(x) = (x - 1 + e^{-x})/x^2 (a series
+ * for x < 1, so no cancellation); gamma = 0 gives r0 + v0 t + g t^2/2. This is
+ * the issue's r0 + (m/b)(v0 - v_term)(1 - e^{-bt/m}) + v_term t, v_term = m g/b,
+ * rearranged so that neither large nor small b t/m cancels. Cannot fail. */
+void mech_uniform_drag_propagate(struct mech_vec3 g, double gamma, struct mech_vec3 r0,
+                                 struct mech_vec3 v0, double t, struct mech_vec3 *r,
+                                 struct mech_vec3 *v);
+
+/* First-order Coriolis solution of r'' = g - 2 w x r' (notes §1.3–1.4,
+ * "Deflection of a Falling Object", "Deflection of Cannon Balls"): expanding
+ * in w, r = r_0(t) + r_1(t) + O(w^2) with r_0 = r0 + v0 t + g t^2/2 and
+ * r_1'' = -2 w x r_0' = -2 w x (v0 + g t), so
+ *   r(t) = r0 + v0 t + g t^2/2 - w x (v0 t^2 + g t^3/3),
+ *   v(t) = v0 + g t - w x (2 v0 t + g t^2).
+ * For a drop from rest (v0 = 0, g = -g z, w = W (0, cos lat, sin lat)) this is
+ * x_east = W g cos(lat) t^3 / 3, the notes' result. The neglected second-order
+ * terms are 2 w x (w x (v0 t^3/3 + g t^4/12)) from Coriolis and, when the
+ * centrifugal term of the displacement is modelled,
+ * -w x (w x (r0 t^2/2 + v0 t^3/6 + g t^4/24)); *second_order (may be NULL)
+ * receives their sum (its norm is the reference's own error estimate).
+ * Cannot fail. */
+void mech_coriolis_first_order(struct mech_vec3 w, struct mech_vec3 g, int centrifugal,
+                               struct mech_vec3 r0, struct mech_vec3 v0, double t,
+                               struct mech_vec3 *r, struct mech_vec3 *v,
+                               struct mech_vec3 *second_order);
+
+enum mech_reference_kind {
+    MECH_REFERENCE_NONE = 0,
+    MECH_REFERENCE_EXACT,       /* exact to round-off */
+    MECH_REFERENCE_FIRST_ORDER, /* first order in the frame rotation rate */
+};
+
+/* A recognised reference solution of a trajectory scene. */
+struct mech_trajectory_reference {
+    enum mech_reference_kind kind;
+    const char *name; /* "kepler", "harmonic_oscillator", "uniform_gravity",
+                         "uniform_gravity_linear_drag", "coriolis_first_order" (static) */
+    /* parameters (internal) */
+    double gm, omega, gamma;
+    struct mech_vec3 center, g, w;
+    int centrifugal;
+    struct mech_vec3 r0, v0;
+};
+
+/* Which reference, if any, the scene p has (fills ref; ref->kind NONE if
+ * none). Recognised (forces with no effect — g = 0, k = 0, b = 0 — are
+ * ignored):
+ *   exact "kepler": inertial frame, exactly one central_gravity, nothing else;
+ *   exact "harmonic_oscillator": inertial, one spring with rest_length 0,
+ *     optionally uniform gravity;
+ *   exact "uniform_gravity" / "uniform_gravity_linear_drag": inertial (or a
+ *     frame whose fictitious terms are all absent or zero), only uniform
+ *     gravity and linear drag (no forces at all is the free particle);
+ *   first-order "coriolis_first_order": rotating or earth frame with
+ *     Coriolis modelled, only uniform gravity (centrifugal modelled or not).
+ * p must be valid (as mech_trajectory_integrate checks). Cannot fail. */
+enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
+                                                        struct mech_trajectory_reference *ref);
+
+/* Evaluate the reference at time t (s); *second_order (may be NULL) gets the
+ * size of the neglected second-order terms (0 for exact references).
+ * Statuses: MECH_OK, MECH_EINVAL (kind NONE), those of mech_kepler_propagate. */
+enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_reference *ref,
+                                                double t, struct mech_vec3 *r,
+                                                struct mech_vec3 *v, double *second_order,
+                                                struct mech_error *err);
+
+#endif

@@ -1,0 +1,340 @@
+/* reference.c — exact and first-order reference solutions for trajectories
+ * (mech/reference.h): Kepler by universal variables, the harmonic oscillator,
+ * uniform gravity with linear drag, the first-order Coriolis solution, and
+ * the recognition of which one a scene has.
+ */
+#include "mech/reference.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+static const double ref_pi = 3.14159265358979323846;
+
+/* ---- Stumpff functions ----------------------------------------------------
+ * c_k(z) = sum_j (-z)^j / (k + 2j)!  (Danby §6.9; Vallado §2.2, eqs. 2-52).
+ * Series for |z| < 2 (terms fall by z/((k+2j+1)(k+2j+2)) each, 25 terms are
+ * far below round-off), closed forms otherwise. */
+static void stumpff(double z, double c[4])
+{
+    if (fabs(z) < 2.0) {
+        /* c_k(z) = 1/k! - z/(k+2)! + z^2/(k+4)! - ... */
+        for (int k = 0; k < 4; k++) {
+            double term = 1.0, sum;
+            for (int i = 2; i <= k; i++) term /= i; /* 1/k! */
+            sum = term;
+            for (int j = 1; j < 25; j++) {
+                term *= -z / ((double)(k + 2 * j - 1) * (double)(k + 2 * j));
+                sum += term;
+                if (fabs(term) < 1e-18 * fabs(sum)) break;
+            }
+            c[k] = sum;
+        }
+        return;
+    }
+    if (z > 0.0) {
+        double y = sqrt(z), sh = sin(0.5 * y);
+        c[0] = cos(y);
+        c[1] = sin(y) / y;
+        c[2] = 2.0 * sh * sh / z;
+        c[3] = (y - sin(y)) / (z * y);
+    } else {
+        double y = sqrt(-z), sh = sinh(0.5 * y);
+        c[0] = cosh(y);
+        c[1] = sinh(y) / y;
+        c[2] = 2.0 * sh * sh / (-z);
+        c[3] = (sinh(y) - y) / (-z * y);
+    }
+}
+
+struct kepler_eq {
+    double r0, sigma0, gm, beta, t; /* sigma0 = r0.v0, beta = gm (2/r0 - v0^2/gm) */
+};
+
+/* G-functions G_k = s^k c_k(beta s^2); F(s) = r0 G1 + sigma0 G2 + gm G3 - t and
+ * F'(s) = r(s) = r0 G0 + sigma0 G1 + gm G2. */
+static void kepler_eval(const struct kepler_eq *k, double s, double G[4], double *F, double *r)
+{
+    double c[4];
+    stumpff(k->beta * s * s, c);
+    G[0] = c[0];
+    G[1] = s * c[1];
+    G[2] = s * s * c[2];
+    G[3] = s * s * s * c[3];
+    *F = k->r0 * G[1] + k->sigma0 * G[2] + k->gm * G[3] - k->t;
+    *r = k->r0 * G[0] + k->sigma0 * G[1] + k->gm * G[2];
+}
+
+enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0v, struct mech_vec3 v0v,
+                                       double t, struct mech_vec3 *r, struct mech_vec3 *v,
+                                       struct mech_error *err)
+{
+    if (!r || !v) return mech_error_set(err, MECH_EINVAL, NULL, "NULL output");
+    const double r0 = mech_vec3_norm(r0v);
+    if (!(isfinite(gm) && gm > 0.0) || !(r0 > 0.0 && isfinite(r0)) ||
+        !mech_vec3_isfinite(v0v) || !isfinite(t))
+        return mech_error_set(err, MECH_EINVAL, NULL, "invalid Kepler propagation arguments");
+    struct kepler_eq k;
+    k.r0 = r0;
+    k.sigma0 = mech_vec3_dot(r0v, v0v);
+    k.gm = gm;
+    /* beta = gm / a = 2 gm / r0 - v^2 (Danby's alpha), > 0 bound, 0 parabolic. */
+    k.beta = 2.0 * gm / r0 - mech_vec3_dot(v0v, v0v);
+    k.t = t;
+
+    double lo, hi;
+    if (k.beta > 0.0) {
+        /* Bound orbit: reduce by whole periods P = 2 pi gm / beta^(3/2)
+         * (= 2 pi sqrt(a^3 / gm)); fmod is exact, the error is P's own. */
+        const double P = 2.0 * ref_pi * gm / (k.beta * sqrt(k.beta));
+        double tr = fmod(t, P);
+        if (tr < 0.0) tr += P;
+        k.t = tr;
+        lo = 0.0;
+        hi = 2.0 * ref_pi / sqrt(k.beta); /* F(hi) = P - tr >= 0 */
+    } else {
+        /* F is increasing (F' = r > 0); bracket by doubling from t / r0. */
+        double s = t / r0, G[4], F, rr;
+        if (s == 0.0) {
+            *r = r0v;
+            *v = v0v;
+            return MECH_OK;
+        }
+        int it = 0;
+        for (;; it++) {
+            kepler_eval(&k, s, G, &F, &rr);
+            if (isnan(F)) F = s > 0.0 ? INFINITY : -INFINITY; /* overflow: beyond the root */
+            if ((s > 0.0 && F >= 0.0) || (s < 0.0 && F <= 0.0)) break;
+            if (it > 2100) return mech_error_set(err, MECH_ENUMERIC, NULL,
+                                                 "Kepler equation: no bracket found");
+            s *= 2.0;
+        }
+        lo = s > 0.0 ? 0.0 : s;
+        hi = s > 0.0 ? s : 0.0;
+    }
+
+    /* Newton safeguarded by bisection (Numerical Recipes' rtsafe). */
+    double s = 0.5 * (lo + hi), G[4], F, rr;
+    if (k.beta > 0.0) s = k.t / (2.0 * ref_pi * gm / (k.beta * sqrt(k.beta))) * hi; /* mean-anomaly guess */
+    for (int it = 0; it < 2200; it++) {
+        kepler_eval(&k, s, G, &F, &rr);
+        if (!isfinite(F)) F = s > 0.0 ? INFINITY : -INFINITY;
+        if (F == 0.0) break;
+        if (F < 0.0) lo = s;
+        else hi = s;
+        double sn = s - F / rr;
+        if (!(sn > lo && sn < hi) || !isfinite(sn)) sn = 0.5 * (lo + hi);
+        const double tol = 2.0 * DBL_EPSILON * fabs(sn) + DBL_MIN;
+        if (fabs(sn - s) <= tol || hi - lo <= tol) {
+            s = sn;
+            break;
+        }
+        s = sn;
+    }
+    kepler_eval(&k, s, G, &F, &rr);
+    if (!(rr > 0.0) || !isfinite(rr))
+        return mech_error_set(err, MECH_ENUMERIC, NULL,
+                              "the Kepler orbit passes through the centre (radial orbit)");
+    /* f and g functions (Danby eqs. 6.9.x): no t - ... cancellation in g. */
+    const double f = 1.0 - gm * G[2] / r0;
+    const double g = r0 * G[1] + k.sigma0 * G[2];
+    const double fd = -gm * G[1] / (rr * r0);
+    const double gd = 1.0 - gm * G[2] / rr;
+    *r = mech_vec3_add(mech_vec3_scale(r0v, f), mech_vec3_scale(v0v, g));
+    *v = mech_vec3_add(mech_vec3_scale(r0v, fd), mech_vec3_scale(v0v, gd));
+    if (!mech_vec3_isfinite(*r) || !mech_vec3_isfinite(*v))
+        return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite Kepler state at t = %.9g s",
+                              t);
+    return MECH_OK;
+}
+
+/* sin(x)/x without cancellation or division by zero. */
+static double sinc(double x)
+{
+    if (fabs(x) < 1e-4) return 1.0 - x * x / 6.0;
+    return sin(x) / x;
+}
+
+void mech_harmonic_propagate(double omega, struct mech_vec3 anchor, struct mech_vec3 g,
+                             struct mech_vec3 r0, struct mech_vec3 v0, double t,
+                             struct mech_vec3 *r, struct mech_vec3 *v)
+{
+    const double wt = omega * t, c = cos(wt);
+    const double s_w = t * sinc(wt);                      /* sin(wt)/w */
+    const double sh = sinc(0.5 * wt);
+    const double one_minus_c_w2 = 0.5 * t * t * sh * sh; /* (1 - cos wt)/w^2 */
+    const double ws = omega * sin(wt);                     /* w sin(wt) */
+    struct mech_vec3 d0 = mech_vec3_sub(r0, anchor);
+    /* r - a = d0 cos + v0 sin/w + g (1 - cos)/w^2; v = -d0 w sin + v0 cos + g sin/w */
+    *r = mech_vec3_add(anchor, mech_vec3_add(mech_vec3_add(mech_vec3_scale(d0, c),
+                                                           mech_vec3_scale(v0, s_w)),
+                                             mech_vec3_scale(g, one_minus_c_w2)));
+    *v = mech_vec3_add(mech_vec3_add(mech_vec3_scale(d0, -ws), mech_vec3_scale(v0, c)),
+                       mech_vec3_scale(g, s_w));
+}
+
+/* E1(x) = (1 - e^-x)/x and E2(x) = (x - 1 + e^-x)/x^2 (series below 1). */
+static void drag_functions(double x, double *e1, double *e2)
+{
+    if (x < 1.0) {
+        /* E1 = sum (-x)^n/(n+1)!, E2 = sum (-x)^n/(n+2)! */
+        double t1 = 1.0, t2 = 0.5, s1 = 1.0, s2 = 0.5;
+        for (int n = 1; n < 40; n++) {
+            t1 *= -x / (n + 1);
+            t2 *= -x / (n + 2);
+            s1 += t1;
+            s2 += t2;
+            if (fabs(t1) < 1e-18 * s1 && fabs(t2) < 1e-18 * s2) break;
+        }
+        *e1 = s1;
+        *e2 = s2;
+        return;
+    }
+    const double em = expm1(-x); /* e^-x - 1 */
+    *e1 = -em / x;
+    *e2 = (x + em) / (x * x);
+}
+
+void mech_uniform_drag_propagate(struct mech_vec3 g, double gamma, struct mech_vec3 r0,
+                                 struct mech_vec3 v0, double t, struct mech_vec3 *r,
+                                 struct mech_vec3 *v)
+{
+    const double x = gamma * t;
+    double e1, e2;
+    drag_functions(x, &e1, &e2);
+    /* e^-x = 1 - x E1 */
+    const double ex = exp(-x);
+    *v = mech_vec3_add(mech_vec3_scale(v0, ex), mech_vec3_scale(g, t * e1));
+    *r = mech_vec3_add(r0, mech_vec3_add(mech_vec3_scale(v0, t * e1),
+                                         mech_vec3_scale(g, t * t * e2)));
+}
+
+void mech_coriolis_first_order(struct mech_vec3 w, struct mech_vec3 g, int centrifugal,
+                               struct mech_vec3 r0, struct mech_vec3 v0, double t,
+                               struct mech_vec3 *r, struct mech_vec3 *v,
+                               struct mech_vec3 *second_order)
+{
+    const double t2 = t * t, t3 = t2 * t, t4 = t3 * t;
+    /* notes §1.3-1.4: r = r0 + v0 t + g t^2/2 - w x (v0 t^2 + g t^3/3) */
+    struct mech_vec3 r_0 = mech_vec3_add(r0, mech_vec3_add(mech_vec3_scale(v0, t),
+                                                            mech_vec3_scale(g, 0.5 * t2)));
+    struct mech_vec3 c1 = mech_vec3_add(mech_vec3_scale(v0, t2), mech_vec3_scale(g, t3 / 3.0));
+    *r = mech_vec3_sub(r_0, mech_vec3_cross(w, c1));
+    struct mech_vec3 c1d = mech_vec3_add(mech_vec3_scale(v0, 2.0 * t), mech_vec3_scale(g, t2));
+    *v = mech_vec3_sub(mech_vec3_add(v0, mech_vec3_scale(g, t)), mech_vec3_cross(w, c1d));
+    if (second_order) {
+        struct mech_vec3 a = mech_vec3_add(mech_vec3_scale(v0, t3 / 3.0),
+                                           mech_vec3_scale(g, t4 / 12.0));
+        struct mech_vec3 s = mech_vec3_scale(mech_vec3_cross(w, mech_vec3_cross(w, a)), 2.0);
+        if (centrifugal) {
+            struct mech_vec3 b = mech_vec3_add(
+                mech_vec3_scale(r0, 0.5 * t2),
+                mech_vec3_add(mech_vec3_scale(v0, t3 / 6.0), mech_vec3_scale(g, t4 / 24.0)));
+            s = mech_vec3_sub(s, mech_vec3_cross(w, mech_vec3_cross(w, b)));
+        }
+        *second_order = s;
+    }
+}
+
+/* ---- scene recognition ---------------------------------------------------- */
+
+static int vec_is_zero(struct mech_vec3 a) { return a.x == 0.0 && a.y == 0.0 && a.z == 0.0; }
+
+/* A force that exerts nothing whatever the state. */
+static int force_is_null(const struct mech_force *f)
+{
+    switch (f->type) {
+    case MECH_FORCE_UNIFORM_GRAVITY: return vec_is_zero(f->u.uniform_gravity.g);
+    case MECH_FORCE_CENTRAL_GRAVITY: return 0;
+    case MECH_FORCE_SPRING: return f->u.spring.k == 0.0;
+    case MECH_FORCE_LINEAR_DRAG: return f->u.linear_drag.b == 0.0;
+    }
+    return 0;
+}
+
+enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
+                                                        struct mech_trajectory_reference *ref)
+{
+    memset(ref, 0, sizeof *ref);
+    ref->kind = MECH_REFERENCE_NONE;
+    ref->name = "";
+    if (!p) return ref->kind;
+    ref->r0 = p->position;
+    ref->v0 = p->velocity;
+    struct mech_vec3 w = mech_frame_omega(&p->frame);
+    const int noninertial = p->frame.type != MECH_FRAME_INERTIAL && !vec_is_zero(w);
+    const int coriolis = noninertial && (p->fictitious & MECH_FICTITIOUS_CORIOLIS);
+    const int centrifugal = noninertial && (p->fictitious & MECH_FICTITIOUS_CENTRIFUGAL);
+    size_t n_central = 0, n_spring = 0, n_uniform = 0, n_drag = 0;
+    const struct mech_force *central = NULL, *spring = NULL;
+    struct mech_vec3 g = mech_vec3_make(0, 0, 0);
+    double b = 0.0;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        const struct mech_force *f = &p->forces[i];
+        if (force_is_null(f)) continue;
+        switch (f->type) {
+        case MECH_FORCE_CENTRAL_GRAVITY: n_central++; central = f; break;
+        case MECH_FORCE_SPRING: n_spring++; spring = f; break;
+        case MECH_FORCE_UNIFORM_GRAVITY:
+            n_uniform++;
+            g = mech_vec3_add(g, f->u.uniform_gravity.g);
+            break;
+        case MECH_FORCE_LINEAR_DRAG: n_drag++; b += f->u.linear_drag.b; break;
+        }
+    }
+    ref->g = g;
+    if (!coriolis && !centrifugal) {
+        if (n_central == 1 && n_spring + n_uniform + n_drag == 0) {
+            ref->kind = MECH_REFERENCE_EXACT;
+            ref->name = "kepler";
+            ref->gm = central->u.central_gravity.gm;
+            ref->center = central->u.central_gravity.center;
+        } else if (n_spring == 1 && spring->u.spring.rest_length == 0.0 && n_central + n_drag == 0) {
+            ref->kind = MECH_REFERENCE_EXACT;
+            ref->name = "harmonic_oscillator";
+            ref->omega = sqrt(spring->u.spring.k / p->mass);
+            ref->center = spring->u.spring.anchor;
+        } else if (n_central + n_spring == 0) {
+            ref->kind = MECH_REFERENCE_EXACT;
+            ref->name = n_drag ? "uniform_gravity_linear_drag" : "uniform_gravity";
+            ref->gamma = b / p->mass;
+        }
+    } else if (coriolis && n_central + n_spring + n_drag == 0) {
+        ref->kind = MECH_REFERENCE_FIRST_ORDER;
+        ref->name = "coriolis_first_order";
+        ref->w = w;
+        ref->centrifugal = centrifugal;
+    }
+    return ref->kind;
+}
+
+enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_reference *ref,
+                                                double t, struct mech_vec3 *r,
+                                                struct mech_vec3 *v, double *second_order,
+                                                struct mech_error *err)
+{
+    if (second_order) *second_order = 0.0;
+    if (!ref || ref->kind == MECH_REFERENCE_NONE)
+        return mech_error_set(err, MECH_EINVAL, NULL, "no reference solution");
+    if (!strcmp(ref->name, "kepler")) {
+        struct mech_vec3 rr, vv;
+        enum mech_status st = mech_kepler_propagate(ref->gm, mech_vec3_sub(ref->r0, ref->center),
+                                                    ref->v0, t, &rr, &vv, err);
+        if (st != MECH_OK) return st;
+        *r = mech_vec3_add(rr, ref->center);
+        *v = vv;
+    } else if (!strcmp(ref->name, "harmonic_oscillator")) {
+        mech_harmonic_propagate(ref->omega, ref->center, ref->g, ref->r0, ref->v0, t, r, v);
+    } else if (!strcmp(ref->name, "coriolis_first_order")) {
+        struct mech_vec3 s;
+        mech_coriolis_first_order(ref->w, ref->g, ref->centrifugal, ref->r0, ref->v0, t, r, v,
+                                  &s);
+        if (second_order) *second_order = mech_vec3_norm(s);
+    } else {
+        mech_uniform_drag_propagate(ref->g, ref->gamma, ref->r0, ref->v0, t, r, v);
+    }
+    if (!mech_vec3_isfinite(*r) || !mech_vec3_isfinite(*v))
+        return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite reference state at t = %.9g s",
+                              t);
+    return MECH_OK;
+}
