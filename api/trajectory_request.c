@@ -257,7 +257,7 @@ json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *
     json_decref(set);
     if (rq->chosen) {
         json_object_set_new(sel, "target_error", api_real(c, rq->choice.target));
-        char why[400];
+        char why[sizeof rq->choice.reason + 64];
         snprintf(why, sizeof why, "%s%s",
                  rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
                  rq->choice.reason);
