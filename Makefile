@@ -28,8 +28,12 @@ test-sanitize: deps
 	cmake --build $(BUILD_SAN) -j $(JOBS)
 	cd $(BUILD_SAN) && ctest --no-tests=error --output-on-failure -j $(JOBS)
 
+# Benchmarks print figures and same-run ratios; never part of `make test`.
+# The work-precision plot needs gnuplot and the SciPy baseline (Debian packages).
 bench: all
-	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b"; done; true
+	./scripts/install-deps.sh --bench
+	@mkdir -p $(BUILD)/bench-out
+	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b" $(BUILD)/bench-out || exit 1; done
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN)

@@ -2,10 +2,18 @@
 # Installs the Debian packages mechd needs to build, run and test, and only
 # those that are missing: safe to run again and again (idempotent). Runs
 # `apt-get update` only when something must be installed. Needs root (or sudo).
+#   install-deps.sh          build, run and test (make run, make test)
+#   install-deps.sh --bench  also the benchmarks' gnuplot-nox (the PNG plot)
+#                            and python3-scipy (the SciPy DOP853 baseline,
+#                            imported by Debian's /usr/bin/python3)
 set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev curl python3"
-# clang is only needed for the sanitizer build; gcc's sanitizers are used.
+case "${1:-}" in
+  --bench) PKGS="$PKGS gnuplot-nox python3-scipy" ;;
+  "") ;;
+  *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
+esac
 
 missing=""
 for p in $PKGS; do

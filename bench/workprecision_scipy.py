@@ -1,0 +1,71 @@
+#!/usr/bin/python3
+"""workprecision_scipy.py -- the baseline a Python user would pick: SciPy's
+solve_ivp with DOP853 (Hairer-Norsett-Wanner's 8(5,3) Dormand-Prince pair) on
+the same Kepler scene as bench/bench_workprecision.c, timed with
+time.process_time() around solve_ivp only.
+
+Run by bench_workprecision (never by the tests) with Debian's /usr/bin/python3
+(python3-scipy; scripts/install-deps.sh --bench installs it):
+
+    workprecision_scipy.py GM T_END Q0x Q0y Q0z V0x V0y V0z REPEATS RTOL [RTOL ...]
+
+Scene: q'' = -GM q / |q|^3 in 3-D (the same 6-dimensional state as the C
+program), t from 0 to T_END, rtol = atol = RTOL. One output line per RTOL:
+
+    dop853 rtol=<r> steps=<n> nfev=<n> cpu=<s> max_rel_dE=<x> final=<6 reals>
+
+cpu is the minimum over REPEATS runs (the runs are deterministic, so every
+repeat gives the same numbers). max_rel_dE is max |E - E0| / |E0| over every
+accepted step (solve_ivp returns them all without t_eval); the C program
+computes the position error of `final` against Kepler's equation with the
+same code it uses for its own runs, so both sides are measured alike.
+"""
+import math
+import sys
+import time
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+
+def main(argv):
+    if len(argv) < 11:
+        sys.stderr.write(__doc__)
+        return 2
+    gm = float(argv[1])
+    t_end = float(argv[2])
+    y0 = [float(a) for a in argv[3:9]]
+    repeats = max(1, int(argv[9]))
+    rtols = [float(a) for a in argv[10:]]
+
+    def rhs(t, y):
+        x, yy, z, vx, vy, vz = y
+        r2 = x * x + yy * yy + z * z
+        k = -gm / (r2 * math.sqrt(r2))
+        return [vx, vy, vz, k * x, k * yy, k * z]
+
+    def energy(y):
+        q = y[0:3]
+        v = y[3:6]
+        return 0.5 * np.sum(v * v, axis=0) - gm / np.sqrt(np.sum(q * q, axis=0))
+
+    e0 = energy(np.array(y0).reshape(6, 1))[0]
+    for rtol in rtols:
+        best = math.inf
+        sol = None
+        for _ in range(repeats):
+            c0 = time.process_time()
+            sol = solve_ivp(rhs, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=rtol)
+            best = min(best, time.process_time() - c0)
+        if sol.status != 0:
+            print("dop853 rtol=%.3g failed: %s" % (rtol, sol.message), flush=True)
+            continue
+        drift = float(np.max(np.abs(energy(sol.y) - e0)) / abs(e0))
+        final = " ".join(repr(float(v)) for v in sol.y[:, -1])
+        print("dop853 rtol=%.17g steps=%d nfev=%d cpu=%.6f max_rel_dE=%.6e final=%s"
+              % (rtol, sol.t.size - 1, sol.nfev, best, drift, final), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
