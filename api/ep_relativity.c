@@ -6,6 +6,7 @@
 
 #include "endpoint.h"
 #include "mech/boost.h"
+#include "velocity_request.h"
 
 /* ---- request schema -------------------------------------------------------
  * Component bounds keep every intermediate finite: |x| ≤ 1e150 and γ ≤ 5e151
@@ -15,10 +16,6 @@
     "{\"type\":\"array\",\"minItems\":4,\"maxItems\":4,\"items\":" BOOST_NUM4                      \
     ",\"description\":\"a 4-vector [x0, x1, x2, x3] with x0 = ct (or E/c), any one unit, "         \
     "each |component| <= 1e150\"}"
-#define BOOST_DIR3                                                                                 \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\"},"           \
-    "\"description\":\"direction of the new frame's velocity; any nonzero length\"}"
-
 static const char boost_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
     "\"required\":[\"vectors\",\"velocity\"],"
@@ -27,27 +24,7 @@ static const char boost_schema[] =
     "the same shape\",\"oneOf\":["
     "{\"type\":\"array\",\"minItems\":1,\"maxItems\":100000,\"items\":" BOOST_VEC4 "}," BOOST_VEC4
     "]},"
-    "\"velocity\":{\"type\":\"object\",\"description\":\"the velocity of the new frame, "
-    "as exactly one of four forms\",\"oneOf\":["
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"beta\"],"
-    "\"properties\":{\"beta\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"
-    "\"items\":{\"type\":\"number\"},\"description\":\"beta = v/c, |beta| < 1\"}}},"
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"rapidity\",\"direction\"],\"properties\":{"
-    "\"rapidity\":{\"type\":\"number\",\"minimum\":-350,\"maximum\":350,"
-    "\"description\":\"eta = atanh(beta); negative means along -direction\"},"
-    "\"direction\":" BOOST_DIR3 "}},"
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"gamma\",\"direction\"],\"properties\":{"
-    "\"gamma\":{\"type\":\"number\",\"maximum\":1e151,"
-    "\"description\":\"Lorentz factor, >= 1\"},"
-    "\"direction\":" BOOST_DIR3 "}},"
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"one_minus_beta\",\"direction\"],\"properties\":{"
-    "\"one_minus_beta\":{\"type\":\"number\",\"description\":\"1 - beta in (0, 2), "
-    "the precise way to give beta near 1 (e.g. 1e-15); above 1 means beta < 0\"},"
-    "\"direction\":" BOOST_DIR3 "}}"
-    "]}}}";
+    "\"velocity\":" API_VELOCITY_SCHEMA "}}";
 
 static const char boost_example[] =
     "{\"vectors\": [[1, 0, 0, 0], [1, 1, 0, 0]], \"velocity\": {\"beta\": [0.6, 0, 0]}}";
@@ -84,17 +61,7 @@ static json_t *boost_op(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st;
-    const json_t *j;
-    struct mech_vec3 dir = api_vec3_member(vel, "direction", mech_vec3_make(0, 0, 0));
-    if ((j = json_object_get(vel, "beta")))
-        st = mech_boost_from_beta(api_vec3_of(j), &b, &e);
-    else if ((j = json_object_get(vel, "rapidity")))
-        st = mech_boost_from_rapidity(json_number_value(j), dir, &b, &e);
-    else if ((j = json_object_get(vel, "gamma")))
-        st = mech_boost_from_gamma(json_number_value(j), dir, &b, &e);
-    else
-        st = mech_boost_from_one_minus_beta(api_number(vel, "one_minus_beta", 0), dir, &b, &e);
-    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "/velocity");
+    if (!api_velocity_parse(c, vel, "/velocity", &b)) return NULL;
 
     /* The schema's oneOf: either one 4-vector (numbers) or a list of them. */
     const int single = json_is_number(json_array_get(vectors, 0));
@@ -122,11 +89,7 @@ static json_t *boost_op(struct api_call *c, const json_t *body)
             json_array_append_new(vs, api_reals(c, out + 4 * i, 4));
     }
     json_object_set_new(res, "vectors", vs);
-    json_object_set_new(res, "gamma", api_real(c, b.gamma));
-    json_object_set_new(res, "gamma_minus_one", api_real(c, b.gamma_minus_one));
-    json_object_set_new(res, "beta", api_vec3(c, b.beta_vec));
-    json_object_set_new(res, "rapidity", api_real(c, b.rapidity));
-    json_object_set_new(res, "one_minus_beta", api_real(c, b.one_minus_beta));
+    api_velocity_describe(c, &b, res);
     json_object_set_new(res, "invariants_before",
                         single ? api_real(c, ib[0]) : api_reals(c, ib, n));
     json_object_set_new(res, "invariants_after", single ? api_real(c, ia[0]) : api_reals(c, ia, n));
