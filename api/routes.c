@@ -8,9 +8,21 @@ extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
 extern const struct api_route api_route_integrators;
+extern const struct api_route api_route_rotation_convert;
+extern const struct api_route api_route_rotation_compose;
+extern const struct api_route api_route_rotation_apply;
+extern const struct api_route api_route_rigid_rotate;
+extern const struct api_route api_route_rigid_top;
+extern const struct api_route api_route_rigid_stability;
 
 const struct api_route *const api_routes[] = {
+    &api_route_rotation_convert,
+    &api_route_rotation_compose,
+    &api_route_rotation_apply,
     &api_route_rigid_inertia,
+    &api_route_rigid_rotate,
+    &api_route_rigid_top,
+    &api_route_rigid_stability,
     &api_route_relativity_boost,
     &api_route_trajectory,
     &api_route_compare,

@@ -1,0 +1,214 @@
+/* ep_rigid_top.c — POST /v1/rigid/top: the heavy symmetric top with a fixed
+ * tip (notes §2.10), integrated as a rigid body so theta = 0 is not singular,
+ * with Euler angles per sample, the nutation range from the turning-point
+ * cubic beside the measured one, conserved p_phi, p_psi and E, the sleeping-top
+ * condition and the steady-precession rates. Physics: core/top.c. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "integrator_block.h"
+#include "mech/top.h"
+#include "trajectory_request.h"
+
+#define T_NUM(lo, hi, desc)                                                               \
+    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"description\":\"" desc "\"}"
+#define T_POS(hi, desc)                                                                   \
+    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":" hi ",\"description\":\"" desc "\"}"
+
+static const char schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"I1\",\"I3\",\"mass\",\"distance\",\"theta\",\"t_end\"],"
+    "\"properties\":{"
+    "\"I1\":" T_POS("1e30", "kg m^2, about the tip, perpendicular to the symmetry axis; "
+                    "I1 >= mass distance^2") ","
+    "\"I3\":" T_POS("1e30", "kg m^2, about the symmetry axis; I3 <= 2 I1") ","
+    "\"mass\":" T_POS("1e30", "kg") ","
+    "\"distance\":" T_NUM("0", "1e15", "m, tip to centre of mass (h)") ","
+    "\"g\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e15,\"default\":9.80665,"
+    "\"description\":\"m/s^2, along -z of space\"},"
+    "\"theta\":" T_NUM("0", "3.141592653589793", "rad, tilt of the symmetry axis from "
+                       "vertical (0: upright)") ","
+    "\"phi\":" T_NUM("-1e6", "1e6", "rad, azimuth of the line of nodes, default 0") ","
+    "\"psi\":" T_NUM("-1e6", "1e6", "rad, spin angle, default 0") ","
+    "\"theta_dot\":" T_NUM("-1e6", "1e6", "rad/s, default 0") ","
+    "\"phi_dot\":" T_NUM("-1e6", "1e6", "rad/s, precession rate, default 0") ","
+    "\"psi_dot\":" T_NUM("-1e6", "1e6", "rad/s, spin rate, default 0") ","
+    "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
+    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
+    "\"cost\":{\"type\":\"boolean\",\"default\":true,"
+    "\"description\":\"false omits the cost block (byte-identical answers)\"}"
+    "}}";
+
+static const char description[] =
+    "Heavy symmetric top with its tip fixed (notes §2.10): moments I1 (= I2) and I3 about the "
+    "tip, mass M, tip-to-centre-of-mass distance h, gravity g along -z. Euler angles z-x-z as "
+    "in the notes (phi about z, theta about the line of nodes, psi about the symmetry axis; R "
+    "= R_psi R_theta R_phi, passive), with rates; the body angular velocity is w = (phi' sin "
+    "theta sin psi + theta' cos psi, phi' sin theta cos psi - theta' sin psi, phi' cos theta + "
+    "psi'). The motion is integrated as a rigid body - Euler's equations about the tip with "
+    "the gravity torque -M g h e3 x z and a unit-quaternion attitude, dimensionless in time "
+    "units of 1/W, W = max(|w0|, sqrt(M g h / I1)) (rate_scale) - so nothing is singular at "
+    "theta = 0 (a sleeping top) or pi; Euler angles are extracted per sample and unwrapped to "
+    "be continuous. Where theta is exactly 0 (or pi) only phi + psi (phi - psi) is "
+    "determined: the branch keeps psi from the previous sample (the initial psi for the "
+    "first), and pole_samples lists those samples; phi_plus_psi is given for every sample. "
+    "axis: the symmetry axis in space axes, (sin theta sin phi, -sin theta cos phi, cos "
+    "theta). conserved: p_phi = (I1 sin^2 theta + I3 cos^2 theta) phi' + I3 cos theta psi' "
+    "(angular momentum about the vertical), p_psi = I3 (psi' + phi' cos theta) = I3 w3, E = "
+    "1/2 I1 (theta'^2 + phi'^2 sin^2 theta) + 1/2 I3 w3^2 + M g h cos theta, each with its "
+    "largest drift over every step and sample, relative to |L0| (momenta) or T0 + M g h "
+    "(energy). nutation: the turning points theta_min, theta_max from the roots of the cubic "
+    "f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2 = (du/dt)^2 in u = cos theta (alpha = "
+    "(2E - p_psi^2 / I3) / I1, beta = 2 M g h / I1, a = p_psi / I1, b = p_phi / I1), solved in "
+    "the distance x = 1 -+ u from the nearer pole (GSL gsl_poly_solve_cubic + Newton polish; "
+    "the known root is divided out when theta' sin theta = 0) so turning points near a pole "
+    "keep full precision; steady = no nutation; beside them the extremes measured over the "
+    "samples and steps (they approach the cubic's as samples increase). sleeping_top: the "
+    "condition I3^2 w3^2 > 4 I1 M g h for the given spin (both sides, stable, and the "
+    "critical w3). precession: the two steady-precession rates at theta0 (roots of I1 cos "
+    "theta phi'^2 - I3 w3 phi' + M g h = 0; null if none), the gyroscopic approximation M g "
+    "h / (I3 w3), and the measured mean rate (phi_end - phi_0) / t_end. integrator: the "
+    "shared block; second-order-only methods are refused; presets pick rk8pd (rkf45 for "
+    "draft) tightened for long runs.";
+
+static const char example[] =
+    "{\"I1\": 0.02, \"I3\": 0.01, \"mass\": 1, \"distance\": 0.1, \"theta\": 0.5, "
+    "\"psi_dot\": 60, \"t_end\": 2, \"samples\": 5}";
+
+static json_t *quantity(struct api_call *c, double initial, double final, double drift)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "initial", api_real(c, initial));
+    json_object_set_new(j, "final", api_real(c, final));
+    json_object_set_new(j, "max_relative_drift", api_real(c, drift));
+    return j;
+}
+
+static json_t *real_or_null(struct api_call *c, double x)
+{
+    return isfinite(x) ? api_real(c, x) : json_null();
+}
+
+static json_t *top(struct api_call *c, const json_t *body)
+{
+    struct mech_top_problem p;
+    memset(&p, 0, sizeof p);
+    p.I1 = api_number(body, "I1", 0);
+    p.I3 = api_number(body, "I3", 0);
+    p.mass = api_number(body, "mass", 0);
+    p.distance = api_number(body, "distance", 0);
+    p.g = api_number(body, "g", 9.80665);
+    p.theta = api_number(body, "theta", 0);
+    p.phi = api_number(body, "phi", 0);
+    p.psi = api_number(body, "psi", 0);
+    p.theta_dot = api_number(body, "theta_dot", 0);
+    p.phi_dot = api_number(body, "phi_dot", 0);
+    p.psi_dot = api_number(body, "psi_dot", 0);
+    p.t_end = api_number(body, "t_end", 1);
+    p.samples = (size_t)api_number(body, "samples", 101);
+    struct mech_error e;
+    mech_error_clear(&e);
+    struct api_integrator_choice ch;
+    if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
+                                    p.t_end * mech_top_rate_scale(&p), &ch))
+        return NULL;
+    p.method = ch.method;
+    p.opt = ch.opt;
+
+    const size_t n = p.samples;
+    double *buf = malloc(5 * n * sizeof *buf);
+    struct mech_vec3 *ax = malloc(n * sizeof *ax);
+    int *pole = malloc(n * sizeof *pole);
+    json_t *out = NULL;
+    if (!buf || !ax || !pole) {
+        mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for %zu samples", n);
+        api_call_fail_core(c, MECH_ENOMEM, &e, "");
+        goto done;
+    }
+    struct mech_top_result r;
+    memset(&r, 0, sizeof r);
+    r.t = buf;
+    r.theta = buf + n;
+    r.phi = buf + 2 * n;
+    r.psi = buf + 3 * n;
+    r.phi_plus_psi = buf + 4 * n;
+    r.axis = ax;
+    r.at_pole = pole;
+    enum mech_status st = mech_top_integrate(&p, &c->budget, &r, &e);
+    if (st != MECH_OK) {
+        api_call_fail_core(c, st, &e, "");
+        goto done;
+    }
+    const size_t ns = r.n_samples;
+    out = json_object();
+    json_object_set_new(out, "t", api_reals(c, r.t, ns));
+    json_object_set_new(out, "theta", api_reals(c, r.theta, ns));
+    json_object_set_new(out, "phi", api_reals(c, r.phi, ns));
+    json_object_set_new(out, "psi", api_reals(c, r.psi, ns));
+    json_object_set_new(out, "phi_plus_psi", api_reals(c, r.phi_plus_psi, ns));
+    json_t *ja = json_array(), *jp = json_array();
+    for (size_t i = 0; i < ns; i++) {
+        json_array_append_new(ja, api_vec3(c, ax[i]));
+        if (pole[i]) json_array_append_new(jp, json_integer((json_int_t)i));
+    }
+    json_object_set_new(out, "axis", ja);
+    json_object_set_new(out, "pole_samples", jp);
+    json_object_set_new(out, "omega3", api_real(c, r.omega3));
+
+    json_t *nu = json_object();
+    json_object_set_new(nu, "theta_min", api_real(c, r.turning.theta_min));
+    json_object_set_new(nu, "theta_max", api_real(c, r.turning.theta_max));
+    json_object_set_new(nu, "steady", json_boolean(r.turning.steady));
+    json_object_set_new(nu, "measured_theta_min", api_real(c, r.theta_min_measured));
+    json_object_set_new(nu, "measured_theta_max", api_real(c, r.theta_max_measured));
+    json_object_set_new(nu, "cubic_roots_u", api_reals(c, r.turning.roots, (size_t)r.turning.n_roots));
+    json_object_set_new(out, "nutation", nu);
+
+    json_t *co = json_object();
+    json_object_set_new(co, "p_phi", quantity(c, r.p_phi0, r.p_phi_final, r.max_p_phi_drift));
+    json_object_set_new(co, "p_psi", quantity(c, r.p_psi0, r.p_psi_final, r.max_p_psi_drift));
+    json_object_set_new(co, "energy", quantity(c, r.E0, r.E_final, r.max_E_drift));
+    json_object_set_new(out, "conserved", co);
+
+    json_t *sl = json_object();
+    json_object_set_new(sl, "lhs_I3sq_omega3sq", api_real(c, r.sleep_lhs));
+    json_object_set_new(sl, "rhs_4_I1_M_g_h", api_real(c, r.sleep_rhs));
+    json_object_set_new(sl, "stable", json_boolean(r.sleep_stable));
+    json_object_set_new(sl, "critical_omega3", api_real(c, r.critical_omega3));
+    json_object_set_new(out, "sleeping_top", sl);
+
+    json_t *pr = json_object();
+    json_object_set_new(pr, "steady_slow", real_or_null(c, r.precession_slow));
+    json_object_set_new(pr, "steady_fast", real_or_null(c, r.precession_fast));
+    json_object_set_new(pr, "gyroscopic_approximation", real_or_null(c, r.precession_gyroscopic));
+    json_object_set_new(pr, "measured_mean_rate", real_or_null(c, r.precession_measured));
+    json_object_set_new(out, "precession", pr);
+    json_object_set_new(out, "rate_scale", api_real(c, r.rate_scale));
+
+    json_t *d = json_object();
+    api_integrator_block_stats(c, d, &ch, &r.stats);
+    json_object_set_new(d, "quaternion_norm_drift", api_real(c, r.max_quaternion_norm_drift));
+    json_object_set_new(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new(out, "diagnostics", d);
+    json_object_set_new(out, "cost", json_object());
+done:
+    free(buf);
+    free(ax);
+    free(pole);
+    return out;
+}
+
+const struct api_route api_route_rigid_top = {
+    "POST",
+    "/v1/rigid/top",
+    "Heavy symmetric top with a fixed tip: Euler angles, nutation range, conserved momenta, "
+    "sleeping-top stability",
+    description,
+    schema,
+    example,
+    top,
+    1,
+};

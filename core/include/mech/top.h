@@ -1,0 +1,118 @@
+/* mech/top.h — the heavy symmetric top with a fixed tip (notes §2.10,
+ * "Lagrange Equations for Top with One Fixed Point").
+ *
+ * Moments about the tip: I1 (= I2, perpendicular to the symmetry axis) and I3;
+ * mass M, tip-to-centre-of-mass distance h, gravity g along -z of space.
+ * z-x-z Euler angles (phi, theta, psi) as in the notes: theta is the tilt of
+ * the symmetry axis (body z) from space z, phi the azimuth of the line of
+ * nodes, psi the spin angle; R = R_psi R_theta R_phi (passive).
+ *
+ * The notes' Lagrangian L = 1/2 I1 (phi'^2 sin^2 theta + theta'^2)
+ * + 1/2 I3 (phi' cos theta + psi')^2 - M g h cos theta has the conserved
+ *   p_phi = (I1 sin^2 theta + I3 cos^2 theta) phi' + I3 cos theta psi'
+ *         (= L . z_space, the angular momentum about the vertical),
+ *   p_psi = I3 (psi' + phi' cos theta) = I3 w3,
+ *   E = 1/2 I1 (theta'^2 + phi'^2 sin^2 theta) + 1/2 I3 w3^2 + M g h cos theta.
+ * The Euler-angle equations are singular at theta = 0 (a sleeping top), so the
+ * motion is integrated as a rigid body instead: Euler's equations about the
+ * tip with the gravity torque G = -M g h e3 x z_body (z_body = space z in body
+ * axes) and the quaternion attitude of mech/attitude.h; Euler angles are
+ * extracted per sample. Nothing is singular at theta = 0.
+ *
+ * Turning points (derived from E and the two momenta with u = cos theta):
+ *   u'^2 = f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2,
+ *   alpha = 2 E' / I1, E' = E - p_psi^2 / (2 I3), beta = 2 M g h / I1,
+ *   a = p_psi / I1, b = p_phi / I1,
+ * a cubic beta u^3 - (alpha + a^2) u^2 + (2ab - beta) u + (alpha - b^2); theta
+ * nutates between the roots u1 <= cos theta0 <= u2 next to cos theta0. It is
+ * solved in x = 1 - sigma u (sigma = sign of cos theta0: the distance from the
+ * nearer pole), with coefficients formed without cancellation, so turning
+ * points near theta = 0 or pi keep their relative precision (in u they would
+ * lose ~sqrt(eps): measured 1e-4 relative for a sleeping top at 1e-3 rad).
+ * Sleeping top (theta = 0, notes §2.11 problem 11): stable when
+ * I3^2 w3^2 > 4 I1 M g h.
+ * Steady precession at theta0 (theta'' = 0 in the theta equation):
+ * I1 cos theta phi'^2 - I3 w3 phi' + M g h = 0; the slow root tends to the
+ * gyroscopic approximation M g h / (I3 w3) for a fast spin.
+ *
+ * Units SI. Thread-safety: reentrant; nothing global.
+ */
+#ifndef MECH_TOP_H
+#define MECH_TOP_H
+
+#include <stddef.h>
+
+#include "mech/budget.h"
+#include "mech/ode.h"
+#include "mech/status.h"
+#include "mech/vec.h"
+
+struct mech_top_problem {
+    double I1, I3;          /* kg m^2 about the tip, > 0; physical: I3 <= 2 I1, I1 >= M h^2 */
+    double mass, distance;  /* kg > 0; m >= 0 (tip to centre of mass) */
+    double g;               /* m/s^2, >= 0 */
+    double phi, theta, psi; /* initial Euler angles, rad (theta may be 0 or pi) */
+    double phi_dot, theta_dot, psi_dot; /* rad/s */
+    double t_end;           /* s, > 0 */
+    size_t samples;         /* 2..100000 */
+    const char *method;     /* a first-order method of mech_ode_method_find() */
+    struct mech_ode_options opt; /* rtol/atol on the dimensionless state, dt in s */
+};
+
+struct mech_top_turning {
+    int steady;             /* 1: theta_min = theta_max (a double root: no nutation) */
+    double u_min, u_max;    /* turning points in u = cos theta (u_min <= cos theta0 <= u_max) */
+    double theta_min, theta_max; /* acos(u_max), acos(u_min) */
+    double roots[3];        /* real roots of f found (polished), ascending */
+    int n_roots;
+};
+
+struct mech_top_result {
+    /* Caller-owned buffers of `samples` entries; any may be NULL. */
+    double *t, *theta, *phi, *psi, *phi_plus_psi; /* phi, psi unwrapped continuously
+                               (followed through every step, not just the samples) */
+    struct mech_vec3 *axis; /* symmetry axis in space axes */
+    int *at_pole;           /* 1 where theta = 0 or pi exactly (only phi +- psi is determined) */
+    /* Filled by the call. */
+    size_t n_samples;
+    struct mech_ode_stats stats;
+    double rate_scale;
+    double omega3;                         /* spin w3 = phi' cos theta + psi' (conserved) */
+    double p_phi0, p_psi0, E0;             /* at t = 0 */
+    double p_phi_final, p_psi_final, E_final;
+    double max_p_phi_drift, max_p_psi_drift, max_E_drift; /* relative to the scales below */
+    double L_scale, E_scale;               /* |L0| (or I1 W) and T0 + M g h */
+    double theta_min_measured, theta_max_measured; /* over every step end and sample */
+    double max_quaternion_norm_drift;
+    struct mech_top_turning turning;
+    /* sleeping top: I3^2 w3^2 vs 4 I1 M g h */
+    double sleep_lhs, sleep_rhs, critical_omega3;
+    int sleep_stable;
+    /* steady precession at theta0: rates (NaN when there is none) */
+    double precession_slow, precession_fast, precession_gyroscopic;
+    double precession_measured;            /* (phi_end - phi_0) / t_end from the unwrapped phi */
+};
+
+/* Turning points of the nutation from the initial state (see above): roots of
+ * f (in x) with gsl_poly_solve_cubic (gsl_poly_solve_quadratic when g = 0 or
+ * M h = 0), each polished by Newton's method; when theta0' sin theta0 = 0
+ * the known root cos theta0 is divided out first so the other turning point
+ * comes from a quadratic (no ill-conditioned triple solve).
+ * Statuses: MECH_OK; MECH_EINVAL / MECH_EDOMAIN as mech_top_integrate. */
+enum mech_status mech_top_turning_points(const struct mech_top_problem *p,
+                                         struct mech_top_turning *out, struct mech_error *err);
+
+/* Integrate the top from t = 0 to t_end. Statuses: MECH_OK; MECH_EDOMAIN with
+ * param "I1", "I3", "mass", "distance", "g" (non-positive or unphysical:
+ * I3 > 2 I1 or I1 < M h^2, 1e-12 slack); MECH_EINVAL with param "theta", ...,
+ * "t_end", "samples", "integrator/method" (second-order-only methods);
+ * MECH_EBUDGET / MECH_EDEADLINE / MECH_ECANCELLED (progress in s);
+ * MECH_ENUMERIC; MECH_ENOMEM. */
+enum mech_status mech_top_integrate(const struct mech_top_problem *p,
+                                    const struct mech_budget *budget,
+                                    struct mech_top_result *res, struct mech_error *err);
+
+/* The rate scale W (1/s): max(|w0|, sqrt(M g h / I1)), or 1 / t_end if both are 0. */
+double mech_top_rate_scale(const struct mech_top_problem *p);
+
+#endif
