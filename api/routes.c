@@ -14,6 +14,11 @@ extern const struct api_route api_route_rotation_apply;
 extern const struct api_route api_route_rigid_rotate;
 extern const struct api_route api_route_rigid_top;
 extern const struct api_route api_route_rigid_stability;
+extern const struct api_route api_route_relativity_velocity_addition;
+extern const struct api_route api_route_relativity_interval;
+extern const struct api_route api_route_relativity_worldline;
+extern const struct api_route api_route_relativity_doppler;
+extern const struct api_route api_route_relativity_fields;
 
 const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
@@ -24,6 +29,11 @@ const struct api_route *const api_routes[] = {
     &api_route_rigid_top,
     &api_route_rigid_stability,
     &api_route_relativity_boost,
+    &api_route_relativity_velocity_addition,
+    &api_route_relativity_interval,
+    &api_route_relativity_worldline,
+    &api_route_relativity_doppler,
+    &api_route_relativity_fields,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_integrators,

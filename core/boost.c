@@ -190,6 +190,42 @@ enum mech_status mech_boost_from_one_minus_beta(double one_minus_beta, struct me
     return MECH_OK;
 }
 
+enum mech_status mech_boost_from_gamma_minus_one(double gamma_minus_one,
+                                                 struct mech_vec3 direction,
+                                                 struct mech_boost *out, struct mech_error *err)
+{
+    double gm1 = gamma_minus_one;
+    if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output boost given");
+    if (!isfinite(gm1))
+        return mech_error_set(err, MECH_EINVAL, "gamma_minus_one", "gamma - 1 must be finite");
+    if (!(gm1 >= 0.0))
+        return mech_error_set(err, MECH_EDOMAIN, "gamma_minus_one",
+                              "gamma - 1 must be >= 0, got %.17g", gm1);
+    struct mech_boost o;
+    if (gm1 == 0.0) {
+        if (!unit_direction(direction, &o.direction)) o.direction = mech_vec3_make(1, 0, 0);
+    } else if (!unit_direction(direction, &o.direction)) {
+        return mech_error_set(err, MECH_EINVAL, "direction",
+                              "direction must be a nonzero finite vector");
+    }
+    /* βγ = sqrt(γ² − 1) = sqrt((γ − 1)(γ + 1)), never γ² − 1 by subtraction;
+     * e^{η} = γ + βγ; 1 − β = 1/(γ² (1 + β)) = 1/(γ e^{η}) (as in from_gamma). */
+    double bg = sqrt(gm1) * sqrt(gm1 + 2.0);
+    o.gamma_minus_one = gm1;
+    o.gamma = 1.0 + gm1;
+    o.beta_gamma = bg;
+    o.beta = bg / o.gamma;
+    o.exp_rapidity = o.gamma + bg;
+    o.exp_neg_rapidity = 1.0 / o.exp_rapidity;
+    o.rapidity = log1p(gm1 + bg);
+    o.one_minus_beta = (1.0 / o.gamma) / o.exp_rapidity;
+    o.beta_vec = mech_vec3_scale(o.direction, o.beta);
+    enum mech_status st = check_range(&o, "gamma_minus_one", err);
+    if (st != MECH_OK) return st;
+    *out = o;
+    return MECH_OK;
+}
+
 struct mech_boost mech_boost_inverse(const struct mech_boost *b)
 {
     struct mech_boost r = *b;

@@ -73,6 +73,19 @@ enum mech_status mech_boost_from_gamma(double gamma, struct mech_vec3 direction,
 enum mech_status mech_boost_from_one_minus_beta(double one_minus_beta, struct mech_vec3 direction,
                                                 struct mech_boost *out, struct mech_error *err);
 
+/* Boost with γ − 1 = gamma_minus_one ≥ 0 along direction: the precise way to
+ * build a boost whose γ − 1 was computed without cancellation (e.g. a
+ * relative velocity, core/velocity_addition.c). γ = 1 + (γ − 1),
+ * βγ = sqrt((γ − 1)(γ + 1)), e^{η} = γ + βγ, η = log1p((γ − 1) + βγ),
+ * 1 − β = 1/(γ e^{η}): each to a few ulp. gamma_minus_one = 0 is the identity
+ * and then direction may be zero (it is +x then). Statuses: MECH_OK;
+ * MECH_EDOMAIN param "gamma_minus_one" (< 0); MECH_EINVAL param
+ * "gamma_minus_one" (non-finite, or rapidity beyond MECH_BOOST_RAPIDITY_MAX)
+ * or "direction" (zero or non-finite while gamma_minus_one > 0). */
+enum mech_status mech_boost_from_gamma_minus_one(double gamma_minus_one,
+                                                 struct mech_vec3 direction,
+                                                 struct mech_boost *out, struct mech_error *err);
+
 /* The inverse boost (same speed, opposite direction). Cannot fail. */
 struct mech_boost mech_boost_inverse(const struct mech_boost *b);
 

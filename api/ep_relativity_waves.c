@@ -1,0 +1,308 @@
+/* ep_relativity_waves.c — light and fields under relative motion:
+ * POST /v1/relativity/doppler (Doppler shift and aberration, notes §3.14) and
+ * POST /v1/relativity/fields (E and B under a boost, notes "Lorentz
+ * Transformation of the Fields"). The numerics live in core/doppler.c and
+ * core/em_fields.c; velocities use the shared input of velocity_request.h. */
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/doppler.h"
+#include "mech/em_fields.h"
+#include "velocity_request.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* A 3-vector property with a description (bounded so products stay finite). */
+#define WAVES_VEC3_HEAD                                                                            \
+    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"                                           \
+    "\"items\":{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100},\"description\":"
+
+#define DOPPLER_EMISSION_DIR                                                                       \
+    WAVES_VEC3_HEAD "\"the direction the light travels (from the source towards the observer) in " \
+                    "the SOURCE's rest frame; give exactly one of emission_direction and "         \
+                    "arrival_direction\"}"
+#define DOPPLER_ARRIVAL_DIR                                                                        \
+    WAVES_VEC3_HEAD "\"the direction the light travels when it reaches the observer, in the "      \
+                    "OBSERVER's rest frame (opposite to the line of sight towards the source)\"}"
+#define FIELDS_E                                                                                   \
+    WAVES_VEC3_HEAD "\"electric field: V/m in SI; in Heaviside-Lorentz the same unit as B; each "  \
+                    "|component| <= 1e100\"}"
+#define FIELDS_B                                                                                   \
+    WAVES_VEC3_HEAD "\"magnetic field: T in SI; in Heaviside-Lorentz the same unit as E\"}"
+
+/* ======================= POST /v1/relativity/doppler ======================= */
+
+static const char doppler_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"properties\":{"
+    "\"source_velocity\":" API_VELOCITY_SCHEMA ","
+    "\"observer_velocity\":" API_VELOCITY_SCHEMA ","
+    "\"emission_direction\":" DOPPLER_EMISSION_DIR ","
+    "\"arrival_direction\":" DOPPLER_ARRIVAL_DIR ","
+    "\"frequency\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,"
+    "\"description\":\"emitted frequency in Hz, in the source's rest frame (optional; at most "
+    "one of frequency and wavelength)\"},"
+    "\"wavelength\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,"
+    "\"description\":\"emitted wavelength in m, in the source's rest frame (optional)\"}"
+    "}}";
+
+static const char doppler_example[] =
+    "{\"observer_velocity\": {\"beta\": [0.8, 0, 0]}, \"emission_direction\": [1, 0, 0], "
+    "\"frequency\": 1}";
+
+static const char doppler_description[] =
+    "Relativistic Doppler shift and aberration (notes §3.14) for light from a source to an "
+    "observer that each move with a velocity (the shared velocity forms: beta, rapidity, "
+    "gamma or one_minus_beta; absent = at rest in the lab). The light's propagation direction "
+    "is given either as emission_direction in the source's rest frame or as "
+    "arrival_direction in the observer's rest frame (each frame's axes are the lab's carried "
+    "by its pure boost). The relative motion is computed from the two boosts' rapidities and "
+    "light-cone components, not by subtracting velocities. Angles: angle_source_frame is "
+    "alpha_S, between the light and the observer's velocity seen in the source frame; "
+    "angle_observer_frame is alpha_O, between the light and the source's velocity seen in "
+    "the observer frame; tan(alpha_S/2) tan(alpha_O/2) = exp(-eta). The Doppler factor "
+    "D = nu_obs/nu_emit = gamma(1 - beta cos alpha_S) = 1/(gamma(1 - beta cos alpha_O)) is "
+    "computed as exp(-eta) + 2 sinh(eta) sin^2(alpha_S/2) (no cancellation at any speed) and "
+    "D - 1 from gamma - 1 (accurate at 1 m/s). case names the geometry computed (within "
+    "1e-15 rad): longitudinal_approaching (D = exp(eta) = sqrt((1+beta)/(1-beta))), "
+    "longitudinal_receding (D = exp(-eta)), transverse_source_frame (light perpendicular to "
+    "the motion in the source frame: blue shift D = gamma), transverse_observer_frame "
+    "(perpendicular in the observer frame: red shift D = 1/gamma, the notes' transverse "
+    "effect), general, or no_relative_motion. Wavelengths use c = 299792458 m/s exactly.";
+
+static const char *frame_pointer(int in_source)
+{
+    return in_source ? "/emission_direction" : "/arrival_direction";
+}
+
+static json_t *angle_or_null(struct api_call *c, double a, double scale)
+{
+    return isnan(a) ? json_null() : api_real(c, a * scale);
+}
+
+static json_t *doppler_op(struct api_call *c, const json_t *body)
+{
+    const json_t *emit = json_object_get(body, "emission_direction");
+    const json_t *arrive = json_object_get(body, "arrival_direction");
+    const json_t *fj = json_object_get(body, "frequency");
+    const json_t *lj = json_object_get(body, "wavelength");
+    if (emit && arrive)
+        api_call_invalid(c, "/arrival_direction",
+                         "give the light's direction once: emission_direction (source frame) "
+                         "or arrival_direction (observer frame), not both");
+    else if (!emit && !arrive)
+        api_call_invalid(c, "/emission_direction",
+                         "give the light's direction: emission_direction (in the source's frame) "
+                         "or arrival_direction (in the observer's frame)");
+    if (fj && lj)
+        api_call_invalid(c, "/wavelength",
+                         "give the emitted light as a frequency or as a wavelength, not both");
+    struct mech_boost src, obs;
+    const json_t *sv = json_object_get(body, "source_velocity");
+    const json_t *ov = json_object_get(body, "observer_velocity");
+    int ok = 1;
+    if (sv && !api_velocity_parse(c, sv, "/source_velocity", &src)) ok = 0;
+    if (ov && !api_velocity_parse(c, ov, "/observer_velocity", &obs)) ok = 0;
+    if (!ok || c->problem != API_PROBLEM_NONE) return NULL;
+
+    const int in_source = emit != NULL;
+    const struct mech_vec3 dir = api_vec3_of(in_source ? emit : arrive);
+    struct mech_doppler d;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_doppler_compute(
+        sv ? &src : NULL, ov ? &obs : NULL, dir,
+        in_source ? MECH_DOPPLER_SOURCE_FRAME : MECH_DOPPLER_OBSERVER_FRAME, &d, &e);
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "direction"))
+            snprintf(e.param, sizeof e.param, "%s", frame_pointer(in_source) + 1);
+        return api_call_fail_core(c, st, &e, "");
+    }
+
+    /* Emitted and observed light: ν_obs = D ν_emit, λ = c/ν (c exact). */
+    double f_emit = 0, l_emit = 0, f_obs = 0, l_obs = 0;
+    const int have_light = fj || lj;
+    if (have_light) {
+        if (fj) {
+            f_emit = json_number_value(fj);
+            l_emit = MECH_EM_C / f_emit;
+        } else {
+            l_emit = json_number_value(lj);
+            f_emit = MECH_EM_C / l_emit;
+        }
+        f_obs = d.factor * f_emit;
+        l_obs = l_emit / d.factor;
+        if (!(isfinite(f_obs) && f_obs >= DBL_MIN && isfinite(l_obs) && l_obs >= DBL_MIN &&
+              isfinite(l_emit) && isfinite(f_emit) && l_emit > 0 && f_emit > 0)) {
+            mech_error_clear(&e);
+            mech_error_set(&e, MECH_ENUMERIC, fj ? "frequency" : "wavelength",
+                           "the observed light (Doppler factor %.6g) is outside the range of "
+                           "double precision; use a less extreme frequency or wavelength",
+                           d.factor);
+            return api_call_fail_core(c, MECH_ENUMERIC, &e, "");
+        }
+    }
+
+    json_t *res = json_object();
+    json_object_set_new(res, "case", json_string(mech_doppler_case_name(d.kind)));
+    json_object_set_new(res, "doppler_factor", api_real(c, d.factor));
+    json_object_set_new(res, "doppler_factor_minus_one", api_real(c, d.factor_minus_one));
+    if (have_light) {
+        json_object_set_new(res, "frequency_emitted", api_real(c, f_emit));
+        json_object_set_new(res, "wavelength_emitted", api_real(c, l_emit));
+        json_object_set_new(res, "frequency_observed", api_real(c, f_obs));
+        json_object_set_new(res, "wavelength_observed", api_real(c, l_obs));
+    }
+    json_object_set_new(res, "angle_source_frame_deg",
+                        angle_or_null(c, d.angle_source, 180 / M_PI));
+    json_object_set_new(res, "angle_observer_frame_deg",
+                        angle_or_null(c, d.angle_observer, 180 / M_PI));
+    json_object_set_new(res, "angle_source_frame_rad", angle_or_null(c, d.angle_source, 1));
+    json_object_set_new(res, "angle_observer_frame_rad", angle_or_null(c, d.angle_observer, 1));
+    json_object_set_new(res, "direction_source_frame", api_vec3(c, d.direction_source));
+    json_object_set_new(res, "direction_observer_frame", api_vec3(c, d.direction_observer));
+
+    json_t *rel = json_object();
+    json_object_set_new(rel, "gamma", api_real(c, d.gamma));
+    json_object_set_new(rel, "gamma_minus_one", api_real(c, d.gamma_minus_one));
+    json_object_set_new(rel, "beta", api_real(c, d.beta));
+    json_object_set_new(rel, "rapidity", api_real(c, d.rapidity));
+    json_object_set_new(rel, "one_minus_beta", api_real(c, d.one_minus_beta));
+    json_object_set_new(rel, "beta_gamma", api_real(c, d.beta_gamma));
+    json_object_set_new(rel, "observer_beta_in_source_frame",
+                        api_vec3(c, d.observer_beta_in_source));
+    json_object_set_new(rel, "source_beta_in_observer_frame",
+                        api_vec3(c, d.source_beta_in_observer));
+    json_object_set_new(res, "relative_velocity", rel);
+    if (sv) {
+        json_t *o = json_object();
+        api_velocity_describe(c, &src, o);
+        json_object_set_new(res, "source_velocity", o);
+    }
+    if (ov) {
+        json_t *o = json_object();
+        api_velocity_describe(c, &obs, o);
+        json_object_set_new(res, "observer_velocity", o);
+    }
+    if (!res || !rel) {
+        json_decref(res);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    return res;
+}
+
+const struct api_route api_route_relativity_doppler = {
+    "POST",
+    "/v1/relativity/doppler",
+    "Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with "
+    "aberration",
+    doppler_description,
+    doppler_schema,
+    doppler_example,
+    doppler_op,
+    0,
+};
+
+/* ======================= POST /v1/relativity/fields ======================== */
+
+static const char fields_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"E\",\"B\",\"velocity\"],"
+    "\"properties\":{"
+    "\"E\":" FIELDS_E ","
+    "\"B\":" FIELDS_B ","
+    "\"velocity\":" API_VELOCITY_SCHEMA ","
+    "\"units\":{\"enum\":[\"heaviside_lorentz\",\"si\"],\"default\":\"heaviside_lorentz\","
+    "\"description\":\"heaviside_lorentz: c = 1, the notes' units (default); si: E in V/m, B "
+    "in T\"}"
+    "}}";
+
+static const char fields_example[] =
+    "{\"E\": [1, 2, 3], \"B\": [4, 5, 6], \"velocity\": {\"beta\": [0.6, 0, 0]}}";
+
+static const char fields_description[] =
+    "Electric and magnetic fields at the same event seen from the frame moving with velocity "
+    "beta*c (the passive boost of /v1/relativity/boost; notes 'Lorentz Transformation of the "
+    "Fields'). Heaviside-Lorentz (c = 1): E'par = E par, B'par = B par, "
+    "E'perp = gamma(E + beta x B)perp, B'perp = gamma(B - beta x E)perp; SI: "
+    "E'perp = gamma(E + v x B)perp, B'perp = gamma(B - v x E/c^2)perp, c = 299792458 m/s. A "
+    "charge at rest (pure E) is seen moving with -beta c, and B' = -beta x E'. The "
+    "perpendicular parts are computed from P = E + n x B and M = E - n x B, which scale "
+    "exactly by exp(+eta) and exp(-eta), or from the gamma - 1 form, whichever is more "
+    "accurate. invariants_before are E^2 - B^2 (SI: E^2 - c^2 B^2) and E.B of the given "
+    "fields; invariants_after the same of the boosted fields, from the boosted light-cone "
+    "combinations (E'^2 - B'^2 = E par^2 - B par^2 + P'.M', E'.B' = E par B par + "
+    "n.(M' x P')/2) with compensated products, so they agree to about 1e-16 of "
+    "field_scale_squared = |E|^2 + |B|^2 (SI: |E|^2 + c^2|B|^2) at any gamma; "
+    "invariants_difference reports |after - before|/field_scale_squared (E.B in SI scaled "
+    "by c).";
+
+static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "E2_minus_B2", api_real(c, v->e2_minus_b2));
+    json_object_set_new(o, "E_dot_B", api_real(c, v->e_dot_b));
+    return o;
+}
+
+static json_t *fields_op(struct api_call *c, const json_t *body)
+{
+    struct mech_boost b;
+    if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
+    const char *units = api_string(body, "units", "heaviside_lorentz");
+    const int si = !strcmp(units, "si");
+    const struct mech_vec3 e = api_vec3_member(body, "E", mech_vec3_make(0, 0, 0));
+    const struct mech_vec3 bf = api_vec3_member(body, "B", mech_vec3_make(0, 0, 0));
+    struct mech_em_boosted r;
+    struct mech_error err;
+    mech_error_clear(&err);
+    enum mech_status st =
+        mech_em_fields_boost(&b, e, bf, si ? MECH_EM_SI : MECH_EM_HEAVISIDE_LORENTZ, &r, &err);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &err, "");
+
+    json_t *res = json_object();
+    json_object_set_new(res, "units", json_string(si ? "si" : "heaviside_lorentz"));
+    json_object_set_new(
+        res, "convention",
+        json_string(si ? "passive boost into the frame moving with velocity v = beta c: "
+                         "E'par = Epar, B'par = Bpar, E'perp = gamma (E + v x B)perp, "
+                         "B'perp = gamma (B - v x E / c^2)perp; E in V/m, B in T"
+                       : "passive boost into the frame moving with velocity beta (c = 1): "
+                         "E'par = Epar, B'par = Bpar, E'perp = gamma (E + beta x B)perp, "
+                         "B'perp = gamma (B - beta x E)perp"));
+    json_object_set_new(res, "E", api_vec3(c, r.e));
+    json_object_set_new(res, "B", api_vec3(c, r.b));
+    api_velocity_describe(c, &b, res);
+    json_object_set_new(res, "invariants_before", invariants_json(c, &r.before));
+    json_object_set_new(res, "invariants_after", invariants_json(c, &r.after));
+    json_object_set_new(res, "field_scale_squared", api_real(c, r.scale2));
+    json_t *diff = json_object();
+    const double s2 = r.scale2 > 0 ? r.scale2 : 1.0;
+    const double k = si ? MECH_EM_C : 1.0;
+    json_object_set_new(diff, "E2_minus_B2",
+                        api_real(c, fabs(r.after.e2_minus_b2 - r.before.e2_minus_b2) / s2));
+    json_object_set_new(diff, "E_dot_B",
+                        api_real(c, fabs(r.after.e_dot_b - r.before.e_dot_b) * k / s2));
+    json_object_set_new(res, "invariants_difference", diff);
+    if (!res || !diff) {
+        json_decref(res);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    return res;
+}
+
+const struct api_route api_route_relativity_fields = {
+    "POST",
+    "/v1/relativity/fields",
+    "E and B under a boost, Heaviside–Lorentz or SI, with the invariants E² − B² and E·B",
+    fields_description,
+    fields_schema,
+    fields_example,
+    fields_op,
+    0,
+};
