@@ -19,6 +19,10 @@ extern const struct api_route api_route_relativity_interval;
 extern const struct api_route api_route_relativity_worldline;
 extern const struct api_route api_route_relativity_doppler;
 extern const struct api_route api_route_relativity_fields;
+extern const struct api_route api_route_relativity_invariant_mass;
+extern const struct api_route api_route_relativity_decay;
+extern const struct api_route api_route_relativity_compton;
+extern const struct api_route api_route_relativity_collision;
 
 const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
@@ -34,6 +38,10 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_worldline,
     &api_route_relativity_doppler,
     &api_route_relativity_fields,
+    &api_route_relativity_invariant_mass,
+    &api_route_relativity_decay,
+    &api_route_relativity_compton,
+    &api_route_relativity_collision,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_integrators,

@@ -1,0 +1,880 @@
+/* ep_relativity_kinematics.c — particle kinematics in natural units (notes §3
+ * "Kinematics Problems in Electron Volts", π⁰ decay, neutron decay, Compton
+ * scattering; problems 10–12, 18, 19):
+ *   POST /v1/relativity/kinematics/invariant-mass
+ *   POST /v1/relativity/kinematics/decay
+ *   POST /v1/relativity/kinematics/compton
+ *   POST /v1/relativity/kinematics/collision
+ * Energies, masses (unit/c²) and momenta (unit/c) are in `energy_unit`
+ * (eV … TeV, default MeV; c = 1). Particles are a name from the PDG 2024 table
+ * (core/particles.c) or a mass. The numerics live in core/kinematics.c. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/boost.h"
+#include "mech/kinematics.h"
+#include "mech/particles.h"
+#include "velocity_request.h"
+
+static const double PI = 3.14159265358979323846;
+
+/* ---- shared schema fragments --------------------------------------------------- */
+
+/* clang-format off */
+#define KIN_NAME_JSON(name, mass, source) "\"" name "\""
+#define KIN_NAME_TEXT(name, mass, source) name " " #mass
+#define KIN_JSON_COMMA ","
+#define KIN_TEXT_SEP ", "
+#define KIN_NAMES MECH_PARTICLE_TABLE(KIN_NAME_JSON, KIN_JSON_COMMA)
+
+/* The particle table as catalog text (names with masses in MeV/c²). */
+#define KIN_TABLE_TEXT                                                                             \
+    " Particle names and masses in MeV/c^2 (" MECH_PARTICLE_EDITION "; neutrinos taken "          \
+    "massless): " MECH_PARTICLE_TABLE(KIN_NAME_TEXT, KIN_TEXT_SEP) "."
+
+#define KIN_UNIT_DESC                                                                              \
+    " Units: every energy, mass (unit/c^2) and momentum (unit/c) is in energy_unit (eV, keV, "     \
+    "MeV, GeV, TeV; default MeV), c = 1; angles in radians, or in degrees in the *_deg fields."
+
+#define KIN_UNIT                                                                                   \
+    "{\"type\":\"string\",\"enum\":[\"eV\",\"keV\",\"MeV\",\"GeV\",\"TeV\"],\"default\":\"MeV\","  \
+    "\"description\":\"unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1\"}"
+#define KIN_NUM(desc)                                                                              \
+    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60,\"description\":\"" desc "\"}"
+#define KIN_PARTICLE                                                                               \
+    "{\"description\":\"a particle name (table in the operation description) or a mass >= 0 "     \
+    "in energy_unit/c^2\",\"oneOf\":[{\"type\":\"string\",\"enum\":[" KIN_NAMES "]},"             \
+    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60}]}"
+#define KIN_VEC(n, desc)                                                                           \
+    "{\"type\":\"array\",\"minItems\":" #n ",\"maxItems\":" #n ",\"items\":"                        \
+    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60},\"description\":\"" desc "\"}"
+#define KIN_RAD(desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":3.141592653589793,"       \
+    "\"description\":\"" desc " (radians)\"}"
+#define KIN_DEG(desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":180,"                         \
+    "\"description\":\"" desc " (degrees)\"}"
+/* A particle with an optional state of motion (none given: at rest). */
+#define KIN_MOVING(desc)                                                                           \
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\"],"             \
+    "\"description\":\"" desc "; at most one of energy, kinetic_energy, momentum, velocity "       \
+    "(none: at rest)\",\"properties\":{"                                                           \
+    "\"particle\":" KIN_PARTICLE ","                                                               \
+    "\"energy\":" KIN_NUM("total energy E = gamma m c^2 >= m") ","                                 \
+    "\"kinetic_energy\":" KIN_NUM("kinetic energy T = E - m >= 0") ","                             \
+    "\"momentum\":" KIN_NUM("magnitude of the momentum |p| >= 0") ","                              \
+    "\"velocity\":" API_VELOCITY_SCHEMA "}}"
+/* clang-format on */
+
+/* ---- shared request readers -------------------------------------------------- */
+
+static int unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit *u)
+{
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), u, &e);
+    if (st != MECH_OK) {
+        api_call_fail_core(c, st, &e, "");
+        return 0;
+    }
+    return 1;
+}
+
+/* Mass of a particle field (name or number) in unit u; 0 after recording an error. */
+static int mass_of(struct api_call *c, const json_t *v, const char *ptr, enum mech_energy_unit u,
+                   double *m)
+{
+    if (json_is_string(v)) {
+        const struct mech_particle *p = mech_particle_find(json_string_value(v));
+        if (!p) {
+            api_call_invalid(c, ptr, "unknown particle name \"%s\"", json_string_value(v));
+            return 0;
+        }
+        *m = mech_energy_convert(p->mass, MECH_MEV, u);
+        return 1;
+    }
+    double x = json_number_value(v);
+    if (x < 0) {
+        api_call_domain(c, ptr,
+                        "a mass cannot be negative (m c^2 is the rest energy, >= 0), got %.17g", x);
+        return 0;
+    }
+    *m = x;
+    return 1;
+}
+
+/* Angle from key (radians) or key_deg (degrees), at most one. Returns 1 if
+ * present (value in *rad), 0 if absent, -1 after recording an error. */
+static int angle_of(struct api_call *c, const json_t *obj, const char *key, const char *ptr,
+                    double *rad)
+{
+    char kdeg[64];
+    snprintf(kdeg, sizeof kdeg, "%s_deg", key);
+    const json_t *r = json_object_get(obj, key), *d = json_object_get(obj, kdeg);
+    if (r && d) {
+        api_call_invalid(c, ptr, "give %s (radians) or %s (degrees), not both", key, kdeg);
+        return -1;
+    }
+    if (r) *rad = json_number_value(r);
+    if (d) *rad = json_number_value(d) / 180.0 * PI;
+    return r || d;
+}
+
+/* State of motion of a KIN_MOVING object with mass m. *given says whether any
+ * motion was given (else the particle is at rest). 0 after recording an error. */
+static int motion_of(struct api_call *c, const json_t *obj, const char *ptr, double m,
+                     struct mech_kin_motion *k, int *given)
+{
+    static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
+    const char *which = NULL;
+    char p[160];
+    for (int i = 0; i < 4; i++) {
+        if (!json_object_get(obj, keys[i])) continue;
+        if (which) {
+            snprintf(p, sizeof p, "%s/%s", ptr, keys[i]);
+            api_call_invalid(c, p,
+                             "give only one of energy, kinetic_energy, momentum, velocity "
+                             "(both %s and %s were given)",
+                             which, keys[i]);
+            return 0;
+        }
+        which = keys[i];
+    }
+    *given = which != NULL;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st;
+    if (!which) {
+        st = mech_kin_motion_at_rest(m, k, &e);
+    } else if (!strcmp(which, "velocity")) {
+        struct mech_boost b;
+        snprintf(p, sizeof p, "%s/velocity", ptr);
+        if (!api_velocity_parse(c, json_object_get(obj, "velocity"), p, &b)) return 0;
+        st = mech_kin_motion_from_boost(m, &b, k, &e);
+    } else {
+        double x = api_number(obj, which, 0);
+        if (!strcmp(which, "energy"))
+            st = mech_kin_motion_from_energy(m, x, k, &e);
+        else if (!strcmp(which, "kinetic_energy"))
+            st = mech_kin_motion_from_kinetic(m, x, k, &e);
+        else
+            st = mech_kin_motion_from_momentum(m, x, k, &e);
+    }
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "mass")) snprintf(e.param, sizeof e.param, "particle");
+        api_call_fail_core(c, st, &e, ptr);
+        return 0;
+    }
+    return 1;
+}
+
+/* mass, energy, kinetic_energy, momentum and (massive) the precise speed. */
+static json_t *describe_motion(struct api_call *c, const struct mech_kin_motion *k)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "mass", api_real(c, k->mass));
+    json_object_set_new(o, "energy", api_real(c, k->energy));
+    json_object_set_new(o, "kinetic_energy", api_real(c, k->kinetic));
+    json_object_set_new(o, "momentum", api_real(c, k->momentum));
+    struct mech_boost b;
+    if (k->mass > 0 && mech_kin_motion_boost(k, mech_vec3_make(0, 0, 1), &b, NULL) == MECH_OK) {
+        json_object_set_new(o, "gamma", api_real(c, b.gamma));
+        json_object_set_new(o, "gamma_minus_one", api_real(c, b.gamma_minus_one));
+        json_object_set_new(o, "beta", api_real(c, b.beta));
+        json_object_set_new(o, "one_minus_beta", api_real(c, b.one_minus_beta));
+        json_object_set_new(o, "beta_gamma", api_real(c, b.beta_gamma));
+        json_object_set_new(o, "rapidity", api_real(c, b.rapidity));
+    } else if (k->mass == 0) {
+        json_object_set_new(o, "beta", json_real(1.0));
+        json_object_set_new(o, "one_minus_beta", json_real(0.0));
+    }
+    return o;
+}
+
+/* The CM velocity block of a system (null when the total is light-like). */
+static json_t *describe_cm(struct api_call *c, const struct mech_kin_system *s)
+{
+    if (!s->has_rest_frame) return json_null();
+    json_t *o = json_object();
+    json_object_set_new(o, "gamma", api_real(c, s->gamma));
+    json_object_set_new(o, "gamma_minus_one", api_real(c, s->gamma_minus_one));
+    json_object_set_new(o, "beta", api_vec3(c, s->beta));
+    json_object_set_new(o, "rapidity", api_real(c, s->rapidity));
+    json_object_set_new(o, "one_minus_beta", api_real(c, s->one_minus_beta));
+    json_object_set_new(o, "beta_gamma", api_real(c, s->beta_gamma));
+    return o;
+}
+
+static json_t *finish(struct api_call *c, json_t *res)
+{
+    if (!res) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    return res;
+}
+
+/* ---- POST /v1/relativity/kinematics/invariant-mass ---------------------------- */
+
+/* clang-format off */
+static const char im_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"momenta\"],"
+    "\"properties\":{"
+    "\"energy_unit\":" KIN_UNIT ","
+    "\"momenta\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":1000,\"description\":\"1 to "
+    "1000 particles, each a 4-momentum [E, px, py, pz] or {particle, momentum}\",\"items\":{"
+    "\"oneOf\":[" KIN_VEC(4, "4-momentum [E, px, py, pz] with E >= |p|") ","
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\",\"momentum\"],"
+    "\"properties\":{\"particle\":" KIN_PARTICLE ","
+    "\"momentum\":" KIN_VEC(3, "momentum 3-vector; E = sqrt(m^2 + p^2)") "}}]}}}}";
+/* clang-format on */
+
+static const char im_example[] =
+    "{\"energy_unit\": \"MeV\", \"momenta\": [[67.4884, 0, 0, 67.4884], "
+    "{\"particle\": \"photon\", \"momentum\": [0, 0, -67.4884]}]}";
+
+static const char im_description[] =
+    "Invariant mass M of a set of particles (notes §3: p.p = -m^2 c^2 is the same in every "
+    "frame) and the velocity of their centre-of-momentum (CM) frame. Each particle is a "
+    "4-momentum [E, px, py, pz], or a particle (name or mass) with a momentum 3-vector, for "
+    "which E = sqrt(m^2 + p^2): give massive particles this way when the momenta are large "
+    "compared with the mass (a rounded E at gamma = 1e6 no longer carries m). M^2 = sum m_i^2 "
+    "+ 2 sum_{i<j} (E_i E_j - p_i.p_j) with each pair term formed without cancellation as "
+    "(m_i^2 E_j^2 + p_i^2 m_j^2)/(E_i E_j + |p_i||p_j|) + |p_i||p_j| 2 sin^2(theta/2), theta "
+    "from atan2(|p_i x p_j|, p_i.p_j): massless and nearly collinear particles keep full "
+    "relative precision (two photons 1e-9 rad apart), and M is boost-invariant to round-off. "
+    "The CM velocity is given precisely: gamma = E/M, gamma - 1 = P^2/(M(E + M)), "
+    "1 - beta = M^2/(E(E + P)), rapidity = log1p(beta gamma + gamma - 1). A 4-momentum with "
+    "E < |p| (spacelike: no real particle) is a 422 naming it; one spacelike by rounding only "
+    "(E^2 - p^2 >= -8 eps E^2) is taken as massless and listed in lightlike_clamped. A "
+    "light-like total (collinear massless particles) has M = 0 and no CM frame: "
+    "center_of_momentum is null." KIN_UNIT_DESC KIN_TABLE_TEXT;
+
+static json_t *invariant_mass_op(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    if (!unit_of(c, body, &u)) return NULL;
+    const json_t *moms = json_object_get(body, "momenta");
+    size_t n = json_array_size(moms);
+    struct mech_kin_particle *ps = malloc(n * sizeof *ps);
+    if (!ps) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    json_t *clamped = json_array();
+    int bad = 0;
+    for (size_t i = 0; i < n; i++) {
+        const json_t *it = json_array_get(moms, i);
+        char ptr[64];
+        snprintf(ptr, sizeof ptr, "/momenta/%zu", i);
+        struct mech_error e;
+        mech_error_clear(&e);
+        enum mech_status st;
+        if (json_is_array(it)) {
+            double p4[4];
+            for (size_t k = 0; k < 4; k++)
+                p4[k] = json_number_value(json_array_get(it, k));
+            int cl = 0;
+            st = mech_kin_particle_from_four(p4, &ps[i], &cl, &e);
+            if (st == MECH_OK && cl) json_array_append_new(clamped, json_integer((json_int_t)i));
+        } else {
+            char pp[80];
+            double m;
+            snprintf(pp, sizeof pp, "%s/particle", ptr);
+            if (!mass_of(c, json_object_get(it, "particle"), pp, u, &m)) {
+                bad = 1;
+                continue;
+            }
+            st = mech_kin_particle_from_mass(
+                m, api_vec3_member(it, "momentum", mech_vec3_make(0, 0, 0)), &ps[i], &e);
+        }
+        if (st != MECH_OK) {
+            if (st == MECH_EDOMAIN)
+                api_call_domain(c, ptr, "momentum %zu: %s", i, e.text);
+            else
+                api_call_fail_core(c, st, &e, ptr);
+            bad = 1;
+        }
+    }
+    struct mech_kin_system s;
+    struct mech_error e;
+    mech_error_clear(&e);
+    if (bad) {
+        free(ps);
+        json_decref(clamped);
+        return NULL;
+    }
+    enum mech_status st = mech_kin_invariant_mass(ps, n, &c->budget, &s, &e);
+    free(ps);
+    if (st != MECH_OK) {
+        json_decref(clamped);
+        return api_call_fail_core(c, st, &e, "");
+    }
+    json_t *res = json_object();
+    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new(res, "invariant_mass", api_real(c, s.mass));
+    json_object_set_new(res, "invariant_mass_squared", api_real(c, s.mass_squared));
+    json_object_set_new(res, "total_energy", api_real(c, s.energy));
+    json_object_set_new(res, "total_momentum", api_vec3(c, s.momentum));
+    json_object_set_new(res, "center_of_momentum", describe_cm(c, &s));
+    if (!s.has_rest_frame)
+        json_object_set_new(res, "note",
+                            json_string("the total 4-momentum is light-like (M = 0): no frame "
+                                        "has zero total momentum"));
+    if (json_array_size(clamped))
+        json_object_set_new(res, "lightlike_clamped", clamped);
+    else
+        json_decref(clamped);
+    return finish(c, res);
+}
+
+/* ---- POST /v1/relativity/kinematics/decay ------------------------------------------ */
+
+/* clang-format off */
+static const char decay_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"parent\",\"daughters\"],"
+    "\"properties\":{"
+    "\"energy_unit\":" KIN_UNIT ","
+    "\"parent\":" KIN_MOVING("the decaying particle in the lab; it moves along +z") ","
+    "\"daughters\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":3,\"items\":" KIN_PARTICLE ","
+    "\"description\":\"two or three decay products\"},"
+    "\"theta_star\":" KIN_RAD("two-body: rest-frame angle of daughter 0 to the parent's "
+                              "direction; daughter 1 goes the opposite way") ","
+    "\"theta_star_deg\":" KIN_DEG("the same in degrees") ","
+    "\"cone\":{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"daughter\"],"
+    "\"description\":\"two-body: the energy range of one daughter seen within a cone around "
+    "the parent's direction\",\"properties\":{"
+    "\"daughter\":{\"type\":\"integer\",\"minimum\":0,\"maximum\":1},"
+    "\"half_angle\":" KIN_RAD("half-angle of the cone") ","
+    "\"half_angle_deg\":" KIN_DEG("half-angle of the cone") "}},"
+    "\"angles\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":2,\"items\":{\"type\":\"number\","
+    "\"minimum\":0,\"maximum\":3.141592653589793},\"description\":\"three-body, rest frame, "
+    "one plane: [angle between daughters 0 and 1, angle between 1 and 2] in radians\"},"
+    "\"angles_deg\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":2,\"items\":{\"type\":"
+    "\"number\",\"minimum\":0,\"maximum\":180},\"description\":\"the same in degrees\"}}}";
+/* clang-format on */
+
+static const char decay_example[] =
+    "{\"energy_unit\": \"GeV\", \"parent\": {\"particle\": \"pi+\", \"kinetic_energy\": 500}, "
+    "\"daughters\": [\"mu+\", \"nu_mu\"], \"cone\": {\"daughter\": 1, \"half_angle\": 0.001}}";
+
+static const char decay_description[] =
+    "Two- and three-body decays (notes §3 pi0 decay and neutron decay; problems 11, 12, 19). "
+    "The parent is a particle with its lab energy, kinetic energy, momentum or velocity (none: "
+    "at rest) moving along +z. q_value = M - sum m (compensated). Two-body: the rest-frame "
+    "momentum p* = sqrt(lambda(M^2, m1^2, m2^2))/(2M), the Kallen function factored as "
+    "(M - m1 - m2)(M + m1 + m2)(M - m1 + m2)(M + m1 - m2) so it is exact near threshold; each "
+    "daughter's lab energy range [E(theta*=180), E(theta*=0)] and maximum lab angle "
+    "(sin theta_max = (p*/m)/(beta gamma) of the parent; null when the daughter can go "
+    "backward); the minimum opening angle of the pair (2 asin(1/gamma) for massless "
+    "daughters) and the rest-frame angle where it occurs; with theta_star, both daughters' lab "
+    "energy, momentum components along and across the parent's direction, angle, and their "
+    "opening angle (lab energies use gamma(E* - beta p*) = (gamma m^2 + p*^2/gamma)/(E* + "
+    "beta p*) backward, so nothing cancels at gamma = 1e6); with cone, the lab energies of the "
+    "chosen daughter seen within half_angle of the parent's direction (the pion-to-neutrino "
+    "beam problem): one interval, or two when the cone is narrower than the daughter's "
+    "maximum lab angle (forward and backward rest-frame emission both reach it), with the "
+    "rest-frame angles at the edges. Three-body: each daughter's maximum energy "
+    "E_max = (M^2 + m_i^2 - (sum_{j!=i} m_j)^2)/(2M), computed exactly as "
+    "T_max = Q (M - m_i + S_i)/(2M) (the others recoil together) - not with the notes' "
+    "nonrelativistic-proton approximation, which for the neutron's electron endpoint is "
+    "2.2e-7 MeV low (0.7815820 vs 0.7815822 MeV, Q = 0.7823334 MeV) - plus the lab maximum "
+    "gamma(E_max + beta p_max) for a moving parent; with angles, the planar rest-frame "
+    "configuration: momentum balance gives p0 : p1 : p2 = sin(theta12) : sin(theta20) : "
+    "sin(theta01) and energy conservation the scale. A parent lighter than its daughters "
+    "(M < sum m) is a 422 explaining that the decay cannot happen." KIN_UNIT_DESC KIN_TABLE_TEXT;
+
+static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "energy", api_real(c, l->energy));
+    json_object_set_new(o, "kinetic_energy", api_real(c, l->kinetic));
+    json_object_set_new(o, "momentum", api_real(c, l->momentum));
+    json_object_set_new(o, "momentum_parallel", api_real(c, l->momentum_parallel));
+    json_object_set_new(o, "momentum_transverse", api_real(c, l->momentum_transverse));
+    json_object_set_new(o, "angle", api_real(c, l->angle));
+    return o;
+}
+
+static json_t *two_body(struct api_call *c, const json_t *body, const struct mech_boost *b,
+                        double mp, const double m[2], json_t *res)
+{
+    struct mech_kin_two_body tb;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_kin_two_body_rest(mp, m[0], m[1], &tb, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    double theta_star = 0, half = 0;
+    int has_ts = angle_of(c, body, "theta_star", "/theta_star", &theta_star);
+    const json_t *cone = json_object_get(body, "cone");
+    int has_cone = 0;
+    if (cone) {
+        has_cone = angle_of(c, cone, "half_angle", "/cone/half_angle", &half);
+        if (has_cone == 0) {
+            api_call_invalid(c, "/cone", "the cone needs half_angle or half_angle_deg");
+            has_cone = -1;
+        } else if (has_cone == 1 && !(half > 0)) {
+            api_call_domain(c, "/cone/half_angle", "the cone's half-angle must be > 0");
+            has_cone = -1;
+        }
+    }
+    if (json_object_get(body, "angles") || json_object_get(body, "angles_deg"))
+        api_call_invalid(c, json_object_get(body, "angles") ? "/angles" : "/angles_deg",
+                         "angles describe a three-body decay; this one has two daughters");
+    if (has_ts < 0 || has_cone < 0 || c->problem != API_PROBLEM_NONE) return NULL;
+
+    json_object_set_new(res, "q_value", api_real(c, tb.q_value));
+    json_t *rf = json_object();
+    json_object_set_new(rf, "momentum", api_real(c, tb.momentum));
+    json_object_set_new(rf, "energies", api_reals(c, tb.energy, 2));
+    json_object_set_new(rf, "kinetic_energies", api_reals(c, tb.kinetic, 2));
+    json_object_set_new(res, "rest_frame", rf);
+
+    json_t *ranges = json_array(), *maxang = json_array();
+    for (int i = 0; i < 2; i++) {
+        struct mech_kin_lab fw, bw;
+        mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], 0.0, 0, &fw);
+        mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], PI, 0, &bw);
+        double r[2] = {bw.energy, fw.energy};
+        json_array_append_new(ranges, api_reals(c, r, 2));
+        double tm;
+        json_array_append_new(maxang, mech_kin_decay_max_angle(b, m[i], tb.momentum, &tm)
+                                          ? api_real(c, tm)
+                                          : json_null());
+    }
+    json_object_set_new(res, "lab_energy_ranges", ranges);
+    json_object_set_new(res, "maximum_lab_angles", maxang);
+    double a, at;
+    mech_kin_decay_min_opening(b, m, tb.momentum, tb.energy, &a, &at);
+    json_t *mo = json_object();
+    json_object_set_new(mo, "angle", api_real(c, a));
+    json_object_set_new(mo, "theta_star", api_real(c, at));
+    json_object_set_new(res, "minimum_opening_angle", mo);
+
+    if (has_ts == 1) {
+        struct mech_kin_lab l1, l2;
+        mech_kin_decay_lab(b, m[0], tb.momentum, tb.energy[0], theta_star, 0, &l1);
+        mech_kin_decay_lab(b, m[1], tb.momentum, tb.energy[1], theta_star, 1, &l2);
+        double open = l1.angle + l2.angle;
+        if (open > PI) open = 2 * PI - open;
+        json_t *o = json_object(), *ds = json_array();
+        json_object_set_new(o, "theta_star", api_real(c, theta_star));
+        json_array_append_new(ds, lab_json(c, &l1));
+        json_array_append_new(ds, lab_json(c, &l2));
+        json_object_set_new(o, "daughters", ds);
+        json_object_set_new(o, "opening_angle", api_real(c, open));
+        json_object_set_new(res, "at_theta_star", o);
+    }
+    if (has_cone == 1) {
+        int i = (int)api_number(cone, "daughter", 0);
+        double r[2][2], edges[2];
+        int nr = mech_kin_decay_cone(b, m[i], tb.momentum, tb.energy[i], half, r, edges);
+        json_t *o = json_object(), *rs = json_array();
+        json_object_set_new(o, "daughter", json_integer(i));
+        json_object_set_new(o, "half_angle", api_real(c, half));
+        for (int k = 0; k < nr; k++)
+            json_array_append_new(rs, api_reals(c, r[k], 2));
+        json_object_set_new(o, "energy_ranges", rs);
+        json_object_set_new(o, "theta_star_edges", api_reals(c, edges, (size_t)nr));
+        json_object_set_new(res, "cone", o);
+    }
+    return res;
+}
+
+static json_t *three_body(struct api_call *c, const json_t *body, const struct mech_boost *b,
+                          double mp, const double m[3], json_t *res)
+{
+    static const char *const two_only[] = {"theta_star", "theta_star_deg", "cone"};
+    for (int i = 0; i < 3; i++) {
+        if (json_object_get(body, two_only[i])) {
+            char p[40];
+            snprintf(p, sizeof p, "/%s", two_only[i]);
+            api_call_invalid(c, p, "%s is for two-body decays; this one has three daughters",
+                             two_only[i]);
+        }
+    }
+    const json_t *ar = json_object_get(body, "angles"), *ad = json_object_get(body, "angles_deg");
+    if (ar && ad) api_call_invalid(c, "/angles", "give angles or angles_deg, not both");
+    if (c->problem != API_PROBLEM_NONE) return NULL;
+    json_t *ends = json_array();
+    json_object_set_new(res, "q_value", api_real(c, mech_kin_q_value(mp, m, 3)));
+    json_object_set_new(res, "maximum_energies", ends);
+    json_t *labmax = b->beta > 0 ? json_array() : NULL;
+    for (size_t i = 0; i < 3; i++) {
+        double em, tm, pm;
+        struct mech_error e;
+        mech_error_clear(&e);
+        enum mech_status st = mech_kin_endpoint(mp, m, 3, i, &em, &tm, &pm, &e);
+        if (st != MECH_OK) {
+            json_decref(labmax);
+            return api_call_fail_core(c, st, &e, "");
+        }
+        json_t *o = json_object();
+        json_object_set_new(o, "energy", api_real(c, em));
+        json_object_set_new(o, "kinetic_energy", api_real(c, tm));
+        json_object_set_new(o, "momentum", api_real(c, pm));
+        json_array_append_new(ends, o);
+        if (labmax) {
+            struct mech_kin_lab l;
+            mech_kin_decay_lab(b, m[i], pm, em, 0.0, 0, &l);
+            json_array_append_new(labmax, api_real(c, l.energy));
+        }
+    }
+    if (labmax) json_object_set_new(res, "lab_maximum_energies", labmax);
+    if (ar || ad) {
+        const json_t *a = ar ? ar : ad;
+        double t01 = json_number_value(json_array_get(a, 0));
+        double t12 = json_number_value(json_array_get(a, 1));
+        t01 = ar ? t01 : t01 / 180.0 * PI;
+        t12 = ar ? t12 : t12 / 180.0 * PI;
+        double mom[3], en[3], ke[3];
+        struct mech_error e;
+        mech_error_clear(&e);
+        enum mech_status st = mech_kin_three_body_planar(mp, m, t01, t12, mom, en, ke, &e);
+        if (st != MECH_OK) {
+            if (!strcmp(e.param, "angles") && ad) snprintf(e.param, sizeof e.param, "angles_deg");
+            return api_call_fail_core(c, st, &e, "");
+        }
+        json_t *o = json_object();
+        json_object_set_new(o, "momenta", api_reals(c, mom, 3));
+        json_object_set_new(o, "energies", api_reals(c, en, 3));
+        json_object_set_new(o, "kinetic_energies", api_reals(c, ke, 3));
+        json_object_set_new(res, "planar", o);
+    }
+    return res;
+}
+
+static json_t *decay_op(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    if (!unit_of(c, body, &u)) return NULL;
+    const json_t *parent = json_object_get(body, "parent");
+    const json_t *ds = json_object_get(body, "daughters");
+    double mp = 0, m[3] = {0, 0, 0};
+    int ok = mass_of(c, json_object_get(parent, "particle"), "/parent/particle", u, &mp);
+    size_t n = json_array_size(ds);
+    for (size_t i = 0; i < n; i++) {
+        char p[40];
+        snprintf(p, sizeof p, "/daughters/%zu", i);
+        ok &= mass_of(c, json_array_get(ds, i), p, u, &m[i]);
+    }
+    if (!ok) return NULL;
+    if (!(mp > 0)) {
+        api_call_domain(c, "/parent/particle",
+                        "a massless particle cannot decay: it has no rest frame (it always "
+                        "moves at c)");
+        return NULL;
+    }
+    struct mech_kin_motion k;
+    int given;
+    if (!motion_of(c, parent, "/parent", mp, &k, &given)) return NULL;
+    struct mech_boost b;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_kin_motion_boost(&k, mech_vec3_make(0, 0, 1), &b, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "/parent");
+
+    json_t *res = json_object();
+    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new(res, "parent", describe_motion(c, &k));
+    json_t *out = n == 2 ? two_body(c, body, &b, mp, m, res) : three_body(c, body, &b, mp, m, res);
+    if (!out) {
+        json_decref(res);
+        return NULL;
+    }
+    return finish(c, out);
+}
+
+/* ---- POST /v1/relativity/kinematics/compton ---------------------------------------- */
+
+/* clang-format off */
+static const char compton_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"properties\":{"
+    "\"energy_unit\":" KIN_UNIT ","
+    "\"energy\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e60,"
+    "\"description\":\"incident photon energy (give this or wavelength)\"},"
+    "\"wavelength\":{\"type\":\"number\",\"exclusiveMinimum\":1e-60,\"maximum\":1e15,"
+    "\"description\":\"incident photon wavelength in metres (give this or energy)\"},"
+    "\"angle\":" KIN_RAD("photon scattering angle theta") ","
+    "\"angle_deg\":" KIN_DEG("photon scattering angle theta") ","
+    "\"target\":" KIN_PARTICLE "}}";
+/* clang-format on */
+
+static const char compton_example[] = "{\"wavelength\": 7.09e-11, \"angle_deg\": 90}";
+
+static const char compton_description[] =
+    "Compton scattering (notes §3): a photon of energy E (or wavelength lambda = hc/E, in "
+    "metres) scatters by theta off a target at rest, an electron unless target names another "
+    "particle or gives a mass. E' = E/(1 + (E/m)(1 - cos theta)), lambda' - lambda = "
+    "(h/(m c))(1 - cos theta), with 1 - cos theta computed as 2 sin^2(theta/2) so small angles "
+    "keep their precision; the recoil's kinetic energy T = E - E' = E k/(1 + k), "
+    "k = (E/m)(1 - cos theta), its momentum sqrt(T(T + 2m)) and angle phi to the incident "
+    "direction from cot phi = (1 + E/m) tan(theta/2) (phi = 90 degrees in the limit "
+    "theta -> 0). hc = 1.239841984332e-6 eV m from the exact SI h, c and e; "
+    "compton_wavelength is hc/(m c^2). Give exactly one of energy and wavelength, and one of "
+    "angle (radians) and angle_deg." KIN_UNIT_DESC KIN_TABLE_TEXT;
+
+static json_t *compton_op(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    if (!unit_of(c, body, &u)) return NULL;
+    const json_t *je = json_object_get(body, "energy"), *jw = json_object_get(body, "wavelength");
+    if (je && jw) api_call_invalid(c, "/wavelength", "give energy or wavelength, not both");
+    if (!je && !jw) api_call_invalid(c, "", "give the photon's energy or wavelength");
+    double theta = 0;
+    int ha = angle_of(c, body, "angle", "/angle", &theta);
+    if (ha == 0) api_call_invalid(c, "", "give the scattering angle as angle or angle_deg");
+    double m = 0;
+    const json_t *jt = json_object_get(body, "target");
+    int okm = 1;
+    if (jt)
+        okm = mass_of(c, jt, "/target", u, &m);
+    else
+        m = mech_energy_convert(mech_particle_find("electron")->mass, MECH_MEV, u);
+    if (!okm || c->problem != API_PROBLEM_NONE) return NULL;
+    double hc = mech_energy_hc(u);
+    double lambda = jw ? json_number_value(jw) : 0;
+    double e = jw ? hc / lambda : json_number_value(je);
+    if (!(m > 0)) {
+        api_call_domain(c, "/target",
+                        "the target must have a mass: a massless particle cannot be at rest");
+        return NULL;
+    }
+    struct mech_kin_compton r;
+    struct mech_error err;
+    mech_error_clear(&err);
+    enum mech_status st = mech_kin_compton(e, m, theta, &r, &err);
+    if (st != MECH_OK) {
+        if (!strcmp(err.param, "energy") && jw) snprintf(err.param, sizeof err.param, "wavelength");
+        return api_call_fail_core(c, st, &err, "");
+    }
+    double lc = hc / m, dl = lc * r.one_minus_cos;
+    if (!jw) lambda = hc / e;
+    double lambda_out = jw ? lambda + dl : hc / r.energy_out;
+
+    json_t *res = json_object();
+    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new(res, "target_mass", api_real(c, m));
+    json_object_set_new(res, "angle", api_real(c, theta));
+    json_t *in = json_object(), *sc = json_object(), *rc = json_object();
+    json_object_set_new(in, "energy", api_real(c, e));
+    json_object_set_new(in, "wavelength", api_real(c, lambda));
+    json_object_set_new(res, "incident", in);
+    json_object_set_new(sc, "energy", api_real(c, r.energy_out));
+    json_object_set_new(sc, "wavelength", api_real(c, lambda_out));
+    json_object_set_new(res, "scattered", sc);
+    json_object_set_new(res, "wavelength_shift", api_real(c, dl));
+    json_object_set_new(res, "compton_wavelength", api_real(c, lc));
+    json_object_set_new(rc, "kinetic_energy", api_real(c, r.recoil_kinetic));
+    json_object_set_new(rc, "energy", api_real(c, m + r.recoil_kinetic));
+    json_object_set_new(rc, "momentum", api_real(c, r.recoil_momentum));
+    json_object_set_new(rc, "angle", api_real(c, r.recoil_angle));
+    json_object_set_new(res, "recoil", rc);
+    return finish(c, res);
+}
+
+/* ---- POST /v1/relativity/kinematics/collision -------------------------------------- */
+
+/* clang-format off */
+static const char collision_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"beam\",\"target\"],"
+    "\"properties\":{"
+    "\"energy_unit\":" KIN_UNIT ","
+    "\"beam\":" KIN_MOVING("the incoming particle, moving along +z") ","
+    "\"target\":" KIN_MOVING("the target: at rest, or a second beam moving along -z "
+                             "(tilted by crossing_angle)") ","
+    "\"crossing_angle\":" KIN_RAD("colliding beams: deviation from head-on; the momenta are "
+                                  "at pi - crossing_angle") ","
+    "\"crossing_angle_deg\":" KIN_DEG("the same in degrees") ","
+    "\"sqrt_s\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e60,\"description\":\"inverse "
+    "problem: the CM energy wanted on a target at rest; the beam's energy is then computed "
+    "(give no beam energy)\"},"
+    "\"final_state\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":100,\"items\":" KIN_PARTICLE
+    ",\"description\":\"particles to produce: threshold energies\"}}}";
+/* clang-format on */
+
+static const char collision_example[] =
+    "{\"energy_unit\": \"GeV\", \"beam\": {\"particle\": \"proton\", \"kinetic_energy\": 10}, "
+    "\"target\": {\"particle\": \"proton\"}, "
+    "\"final_state\": [\"proton\", \"proton\", \"proton\", \"antiproton\"]}";
+
+static const char collision_description[] =
+    "Collision energies (notes §3, problems 10 and 18): a beam on a target at rest, or two "
+    "beams (the target given a motion moves along -z, tilted towards +x by crossing_angle). "
+    "s = m1^2 + m2^2 + 2(E1 E2 - p1.p2) with E1 E2 - p1.p2 formed without cancellation "
+    "((m1^2 E2^2 + p1^2 m2^2)/(E1 E2 + p1 p2) + p1 p2 (1 - cos alpha)), and "
+    "s - (m1 + m2)^2 too, so available_energy = sqrt_s - m1 - m2 and the CM momentum "
+    "p* = sqrt(lambda(s, m1^2, m2^2))/(2 sqrt_s) are exact for slow collisions. Also: each "
+    "particle's energy, momentum and precise speed (gamma - 1, 1 - beta, rapidity), the CM "
+    "velocity, the beam energy a fixed target of the same mass would need for the same sqrt_s "
+    "(T = (s - (m1 + m2)^2)/(2 m2)), and for equal masses the beam energy of a symmetric "
+    "head-on collider (sqrt_s/2). Inverse: give sqrt_s (and no beam energy) with the target "
+    "at rest to get the beam energy E = (s - m1^2 - m2^2)/(2 m2). final_state gives the "
+    "threshold sqrt_s = sum of the final masses, whether it is reached, and the fixed-target "
+    "beam energy at threshold (p p -> p p p pbar: T = 6 m_p = 5.63 GeV); conservation laws "
+    "(charge, baryon number) are not checked. Unreachable requests (sqrt_s below m1 + m2, a "
+    "massless target at rest) are 422s." KIN_UNIT_DESC KIN_TABLE_TEXT;
+
+static json_t *collision_op(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    if (!unit_of(c, body, &u)) return NULL;
+    const json_t *jb = json_object_get(body, "beam"), *jt = json_object_get(body, "target");
+    const json_t *jw = json_object_get(body, "sqrt_s"), *jf = json_object_get(body, "final_state");
+    double m1 = 0, m2 = 0;
+    int ok = mass_of(c, json_object_get(jb, "particle"), "/beam/particle", u, &m1);
+    ok &= mass_of(c, json_object_get(jt, "particle"), "/target/particle", u, &m2);
+    size_t nf = json_array_size(jf);
+    double *mf = nf ? malloc(nf * sizeof *mf) : NULL;
+    if (nf && !mf) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    for (size_t i = 0; i < nf; i++) {
+        char p[40];
+        snprintf(p, sizeof p, "/final_state/%zu", i);
+        ok &= mass_of(c, json_array_get(jf, i), p, u, &mf[i]);
+    }
+    double chi = 0;
+    int hx = angle_of(c, body, "crossing_angle", "/crossing_angle", &chi);
+    if (!ok || hx < 0) {
+        free(mf);
+        return NULL;
+    }
+    struct mech_kin_motion kb, kt;
+    int gb = 0, gt = 0;
+    if (!motion_of(c, jt, "/target", m2, &kt, &gt)) {
+        free(mf);
+        return NULL;
+    }
+    if (hx && !gt)
+        api_call_invalid(
+            c, json_object_get(body, "crossing_angle") ? "/crossing_angle" : "/crossing_angle_deg",
+            "a crossing angle needs a moving target (a second beam)");
+    if (jw) {
+        static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
+        for (int i = 0; i < 4; i++)
+            if (json_object_get(jb, keys[i]))
+                api_call_invalid(c, "/sqrt_s", "give either the beam's %s or sqrt_s, not both",
+                                 keys[i]);
+        if (gt)
+            api_call_invalid(c, "/sqrt_s",
+                             "sqrt_s is solved for a target at rest; give the "
+                             "target no motion");
+        if (c->problem != API_PROBLEM_NONE) {
+            free(mf);
+            return NULL;
+        }
+        double t;
+        struct mech_error e;
+        mech_error_clear(&e);
+        enum mech_status st = mech_kin_fixed_target_kinetic(json_number_value(jw), m1, m2, &t, &e);
+        if (st == MECH_OK) st = mech_kin_motion_from_kinetic(m1, t, &kb, &e);
+        if (st != MECH_OK) {
+            free(mf);
+            if (strcmp(e.param, "target/particle")) snprintf(e.param, sizeof e.param, "sqrt_s");
+            return api_call_fail_core(c, st, &e, "");
+        }
+        gb = 1;
+    } else if (!motion_of(c, jb, "/beam", m1, &kb, &gb)) {
+        free(mf);
+        return NULL;
+    }
+    if (c->problem != API_PROBLEM_NONE) {
+        free(mf);
+        return NULL;
+    }
+    /* Geometry: beam along +z; a moving target along (sin χ, 0, −cos χ). The
+     * angle α between the momenta is π − χ: 1 − cos α = 1 + cos χ = 2cos²(χ/2). */
+    double ch = cos(0.5 * chi), sh = sin(0.5 * chi);
+    double omc = 2.0 * ch * ch;
+    double s, d;
+    mech_kin_collision_s(&kb, &kt, omc, &s, &d);
+    double w = sqrt(s);
+    struct mech_kin_system sys;
+    sys.mass = w;
+    sys.mass_squared = s;
+    sys.energy = kb.energy + kt.energy;
+    /* P_z = p1 − p2 cos χ = (p1 − p2) + p2 · 2 sin²(χ/2) */
+    sys.momentum = mech_vec3_make(kt.momentum * sin(chi), 0,
+                                  (kb.momentum - kt.momentum) + kt.momentum * 2.0 * sh * sh);
+    mech_kin_system_finish(&sys);
+
+    json_t *res = json_object();
+    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new(res, "sqrt_s", api_real(c, w));
+    json_object_set_new(res, "s", api_real(c, s));
+    json_object_set_new(res, "available_energy", api_real(c, d / (w + m1 + m2)));
+    json_object_set_new(res, "cm_momentum", api_real(c, mech_kin_cm_momentum(w, d, m1, m2)));
+    json_object_set_new(res, "beam", describe_motion(c, &kb));
+    json_object_set_new(res, "target", describe_motion(c, &kt));
+    json_object_set_new(res, "center_of_momentum", describe_cm(c, &sys));
+    if (m2 > 0) {
+        double t = d / (2.0 * m2); /* s − (m1 + m2)² = 2 m2 T on a fixed target */
+        json_object_set_new(res, "fixed_target_beam_energy", api_real(c, m1 + t));
+        json_object_set_new(res, "fixed_target_beam_kinetic_energy", api_real(c, t));
+    }
+    if (m1 == m2 && w / 2 >= m1)
+        json_object_set_new(res, "symmetric_collider_beam_energy", api_real(c, w / 2));
+    if (nf) {
+        double sum = -mech_kin_q_value(0.0, mf, nf);
+        json_t *o = json_object();
+        json_object_set_new(o, "sqrt_s", api_real(c, sum));
+        json_object_set_new(o, "reached", json_boolean(w >= sum));
+        if (m2 > 0) {
+            double t = 0;
+            double mi[2] = {m1, m2};
+            if (mech_kin_q_value(sum, mi, 2) > 0)
+                mech_kin_fixed_target_kinetic(sum, m1, m2, &t, NULL);
+            json_object_set_new(o, "fixed_target_beam_energy", api_real(c, m1 + t));
+            json_object_set_new(o, "fixed_target_beam_kinetic_energy", api_real(c, t));
+        }
+        if (m1 == m2 && sum / 2 >= m1)
+            json_object_set_new(o, "symmetric_collider_beam_energy", api_real(c, sum / 2));
+        json_object_set_new(res, "threshold", o);
+    }
+    free(mf);
+    (void)gb;
+    return finish(c, res);
+}
+
+/* ---- routes ------------------------------------------------------------------------ */
+
+const struct api_route api_route_relativity_invariant_mass = {
+    "POST",
+    "/v1/relativity/kinematics/invariant-mass",
+    "Invariant mass and centre-of-momentum velocity of a set of 4-momenta or particles",
+    im_description,
+    im_schema,
+    im_example,
+    invariant_mass_op,
+    0,
+};
+
+const struct api_route api_route_relativity_decay = {
+    "POST",
+    "/v1/relativity/kinematics/decay",
+    "Two- and three-body decays: rest-frame momentum, lab energies and angles, opening "
+    "angles, cone energy ranges, endpoints",
+    decay_description,
+    decay_schema,
+    decay_example,
+    decay_op,
+    0,
+};
+
+const struct api_route api_route_relativity_compton = {
+    "POST",
+    "/v1/relativity/kinematics/compton",
+    "Compton scattering off an electron or any target: scattered photon, recoil energy and angle",
+    compton_description,
+    compton_schema,
+    compton_example,
+    compton_op,
+    0,
+};
+
+const struct api_route api_route_relativity_collision = {
+    "POST",
+    "/v1/relativity/kinematics/collision",
+    "sqrt(s) of fixed-target and colliding beams, the beam energy for a given sqrt(s), "
+    "production thresholds",
+    collision_description,
+    collision_schema,
+    collision_example,
+    collision_op,
+    0,
+};
