@@ -9,6 +9,7 @@
  * Precision recipes: notes/numerics.md "Special relativity in floating point".
  */
 #include "mech/boost.h"
+#include "mech/compensated.h"
 
 #include <float.h>
 #include <math.h>
@@ -238,40 +239,15 @@ struct mech_boost mech_boost_inverse(const struct mech_boost *b)
  * Each product a·b is split exactly into hi + lo with fma (TwoProduct), and the
  * terms are added with Neumaier's compensated summation, so the sum is right
  * to about one rounding of the result plus n² ε² Σ|terms|. */
-struct csum {
-    double s, c;
-};
-
-static void csum_add(struct csum *a, double t)
-{
-    double s = a->s + t;
-    if (fabs(a->s) >= fabs(t))
-        a->c += (a->s - s) + t;
-    else
-        a->c += (t - s) + a->s;
-    a->s = s;
-}
-
-static void csum_add_product(struct csum *a, double x, double y)
-{
-    double p = x * y;
-    csum_add(a, p);
-    csum_add(a, fma(x, y, -p));
-}
-
-static double csum_value(const struct csum *a)
-{
-    return a->s + a->c;
-}
 
 double mech_minkowski_square(const double x[4])
 {
-    struct csum a = {0, 0};
-    csum_add_product(&a, -x[0], x[0]);
-    csum_add_product(&a, x[1], x[1]);
-    csum_add_product(&a, x[2], x[2]);
-    csum_add_product(&a, x[3], x[3]);
-    return csum_value(&a);
+    struct mech_csum a = {0, 0};
+    mech_csum_add_product(&a, -x[0], x[0]);
+    mech_csum_add_product(&a, x[1], x[1]);
+    mech_csum_add_product(&a, x[2], x[2]);
+    mech_csum_add_product(&a, x[3], x[3]);
+    return mech_csum_value(&a);
 }
 
 /* ---- applying a boost ------------------------------------------------------ */
@@ -293,10 +269,10 @@ enum mech_status mech_boost_apply(const struct mech_boost *b, const double x[4],
      * (error-free products, compensated sum): near the light cone u = x0 − x∥
      * is small and later multiplied by e^{η}, so an ordinary dot product's
      * error ε|r| would be amplified. For n along an axis everything is exact. */
-    struct csum dot = {0, 0};
-    csum_add_product(&dot, n.x, r.x);
-    csum_add_product(&dot, n.y, r.y);
-    csum_add_product(&dot, n.z, r.z);
+    struct mech_csum dot = {0, 0};
+    mech_csum_add_product(&dot, n.x, r.x);
+    mech_csum_add_product(&dot, n.y, r.y);
+    mech_csum_add_product(&dot, n.z, r.z);
     const double xp = dot.s + dot.c;
     const double xp_lo = dot.c - (xp - dot.s);
     const struct mech_vec3 xperp =
@@ -339,12 +315,12 @@ enum mech_status mech_boost_apply(const struct mech_boost *b, const double x[4],
     if (inv_after) {
         /* −x0'² + x∥'² + x⊥'² = −u'v' + |x⊥|² (notes §3.5; numerics.md: never from
          * the large boosted components). */
-        struct csum a = {0, 0};
-        csum_add_product(&a, -up, vp);
-        csum_add_product(&a, xperp.x, xperp.x);
-        csum_add_product(&a, xperp.y, xperp.y);
-        csum_add_product(&a, xperp.z, xperp.z);
-        after = csum_value(&a);
+        struct mech_csum a = {0, 0};
+        mech_csum_add_product(&a, -up, vp);
+        mech_csum_add_product(&a, xperp.x, xperp.x);
+        mech_csum_add_product(&a, xperp.y, xperp.y);
+        mech_csum_add_product(&a, xperp.z, xperp.z);
+        after = mech_csum_value(&a);
     }
     if (!isfinite(x0_new) || !mech_vec3_isfinite(r_new) || !isfinite(before) || !isfinite(after))
         return mech_error_set(err, MECH_ENUMERIC, "vectors",

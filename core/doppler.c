@@ -17,6 +17,7 @@
  * α_O = π/2 → 1/γ (the notes' transverse red shift ν' = ν/γ).
  */
 #include "mech/doppler.h"
+#include "mech/compensated.h"
 
 #include <math.h>
 
@@ -25,39 +26,6 @@
 #endif
 
 /* ---- accurate small vector arithmetic ------------------------------------ */
-
-/* a·b − c·d with one rounding of error plus a tiny term (Kahan's algorithm
- * with fma): cross products of nearly parallel vectors keep their digits. */
-static double diff_of_products(double a, double b, double c, double d)
-{
-    double w = c * d;
-    double e = fma(c, d, -w);
-    double f = fma(a, b, -w);
-    return f - e;
-}
-
-static struct mech_vec3 cross_acc(struct mech_vec3 a, struct mech_vec3 b)
-{
-    return mech_vec3_make(diff_of_products(a.y, b.z, a.z, b.y),
-                          diff_of_products(a.z, b.x, a.x, b.z),
-                          diff_of_products(a.x, b.y, a.y, b.x));
-}
-
-/* Dot product with error-free products and Neumaier summation. */
-static double dot_acc(struct mech_vec3 a, struct mech_vec3 b)
-{
-    double t[6] = {a.x * b.x, 0, a.y * b.y, 0, a.z * b.z, 0};
-    t[1] = fma(a.x, b.x, -t[0]);
-    t[3] = fma(a.y, b.y, -t[2]);
-    t[5] = fma(a.z, b.z, -t[4]);
-    double s = 0, c = 0;
-    for (int i = 0; i < 6; i++) {
-        double x = s + t[i];
-        c += fabs(s) >= fabs(t[i]) ? (s - x) + t[i] : (t[i] - x) + s;
-        s = x;
-    }
-    return s + c;
-}
 
 /* Unit vector along d (scaled first so nothing overflows); 0 if d is zero or
  * not finite. */
@@ -137,8 +105,8 @@ void mech_doppler_relative_motion(const struct mech_boost *frame, const struct m
         return;
     }
     /* Body 4-velocity U = (cosh η_M, sinh η_M m); split along n (angle φ). */
-    const double cphi = dot_acc(m, n);
-    const struct mech_vec3 mperp = cross_acc(n, cross_acc(m, n)); /* m − (m·n) n */
+    const double cphi = mech_dot_compensated(m, n);
+    const struct mech_vec3 mperp = mech_cross_compensated(n, mech_cross_compensated(m, n)); /* m − (m·n) n */
     const struct mech_vec3 dm = mech_vec3_sub(m, n), sm = mech_vec3_add(m, n);
     const double s2 = 0.25 * mech_vec3_dot(dm, dm); /* sin²(φ/2), from the chord */
     const double c2 = 0.25 * mech_vec3_dot(sm, sm); /* cos²(φ/2) */
@@ -235,8 +203,8 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
         if (mech_vec3_norm(wg) == 0) ag = negated(af);
         /* α_F from atan2 of |k̂ × â| and k̂·â; its supplement separately, so the
          * half-angles sin(α/2), cos(α/2) are accurate at both ends. */
-        const double sf = mech_vec3_norm(cross_acc(dn, af));
-        const double cf = fmax(-1.0, fmin(1.0, dot_acc(dn, af)));
+        const double sf = mech_vec3_norm(mech_cross_compensated(dn, af));
+        const double cf = fmax(-1.0, fmin(1.0, mech_dot_compensated(dn, af)));
         alpha_f = atan2(sf, cf);
         const double alpha_f_sup = atan2(sf, -cf);
         double shf, chf;
@@ -273,13 +241,13 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
          * c = β_F × β_G (perpendicular to both boosts, so the same vector in
          * the lab, F and G) and takes â_F to −â_G. Collinear motion: R = 1. */
         struct mech_vec3 eperp = mech_vec3_make(0, 0, 0);
-        if (sf > 0 && unit(cross_acc(af, cross_acc(dn, af)), &eperp)) {
+        if (sf > 0 && unit(mech_cross_compensated(af, mech_cross_compensated(dn, af)), &eperp)) {
             struct mech_vec3 axis;
-            if (unit(cross_acc(source->direction, observer->direction), &axis) &&
+            if (unit(mech_cross_compensated(source->direction, observer->direction), &axis) &&
                 source->rapidity > 0 && observer->rapidity > 0) {
                 const struct mech_vec3 b = negated(ag);
-                const double so = mech_vec3_dot(axis, cross_acc(af, b));
-                const double co = dot_acc(af, b);
+                const double so = mech_vec3_dot(axis, mech_cross_compensated(af, b));
+                const double co = mech_dot_compensated(af, b);
                 const double om = atan2(so, co);
                 eperp = rotate(eperp, axis, cos(om), sin(om));
             }

@@ -14,61 +14,11 @@
  * factor of an observer receding with the wave (notes §3.14).
  */
 #include "mech/em_fields.h"
+#include "mech/compensated.h"
 
 #include <math.h>
 
 /* ---- compensated arithmetic (as in boost.c, file-local) ------------------- */
-struct csum {
-    double s, c;
-};
-
-static void csum_add(struct csum *a, double t)
-{
-    double s = a->s + t;
-    if (fabs(a->s) >= fabs(t))
-        a->c += (a->s - s) + t;
-    else
-        a->c += (t - s) + a->s;
-    a->s = s;
-}
-
-/* a += x·y exactly split (TwoProduct with fma). */
-static void csum_add_product(struct csum *a, double x, double y)
-{
-    double p = x * y;
-    csum_add(a, p);
-    csum_add(a, fma(x, y, -p));
-}
-
-static double csum_value(const struct csum *a)
-{
-    return a->s + a->c;
-}
-
-static double dot_acc(struct mech_vec3 a, struct mech_vec3 b)
-{
-    struct csum s = {0, 0};
-    csum_add_product(&s, a.x, b.x);
-    csum_add_product(&s, a.y, b.y);
-    csum_add_product(&s, a.z, b.z);
-    return csum_value(&s);
-}
-
-/* a·b − c·d to about one rounding (Kahan, with fma). */
-static double diff_of_products(double a, double b, double c, double d)
-{
-    double w = c * d;
-    double e = fma(c, d, -w);
-    double f = fma(a, b, -w);
-    return f - e;
-}
-
-static struct mech_vec3 cross_acc(struct mech_vec3 a, struct mech_vec3 b)
-{
-    return mech_vec3_make(diff_of_products(a.y, b.z, a.z, b.y),
-                          diff_of_products(a.z, b.x, a.x, b.z),
-                          diff_of_products(a.x, b.y, a.y, b.x));
-}
 
 /* x − (n·x) n, with n·x compensated and the subtraction fused. */
 static struct mech_vec3 perp(struct mech_vec3 x, struct mech_vec3 n, double xpar)
@@ -86,15 +36,15 @@ struct mech_em_invariants mech_em_invariants_of(struct mech_vec3 e, struct mech_
 {
     struct mech_em_invariants r;
     struct mech_vec3 cb = units == MECH_EM_SI ? mech_vec3_scale(b, MECH_EM_C) : b;
-    struct csum s = {0, 0};
-    csum_add_product(&s, e.x, e.x);
-    csum_add_product(&s, e.y, e.y);
-    csum_add_product(&s, e.z, e.z);
-    csum_add_product(&s, -cb.x, cb.x);
-    csum_add_product(&s, -cb.y, cb.y);
-    csum_add_product(&s, -cb.z, cb.z);
-    r.e2_minus_b2 = csum_value(&s);
-    r.e_dot_b = dot_acc(e, b);
+    struct mech_csum s = {0, 0};
+    mech_csum_add_product(&s, e.x, e.x);
+    mech_csum_add_product(&s, e.y, e.y);
+    mech_csum_add_product(&s, e.z, e.z);
+    mech_csum_add_product(&s, -cb.x, cb.x);
+    mech_csum_add_product(&s, -cb.y, cb.y);
+    mech_csum_add_product(&s, -cb.z, cb.z);
+    r.e2_minus_b2 = mech_csum_value(&s);
+    r.e_dot_b = mech_dot_compensated(e, b);
     return r;
 }
 
@@ -114,17 +64,17 @@ enum mech_status mech_em_fields_boost(const struct mech_boost *boost, struct mec
 
     struct mech_em_boosted o;
     o.before = mech_em_invariants_of(e, b, units);
-    o.scale2 = dot_acc(e, e) + dot_acc(cb, cb);
+    o.scale2 = mech_dot_compensated(e, e) + mech_dot_compensated(cb, cb);
 
-    const double epar = dot_acc(n, e), bpar = dot_acc(n, cb);
+    const double epar = mech_dot_compensated(n, e), bpar = mech_dot_compensated(n, cb);
     const struct mech_vec3 eperp = perp(e, n, epar), bperp = perp(cb, n, bpar);
-    const struct mech_vec3 nxb = cross_acc(n, cb), nxe = cross_acc(n, e);
+    const struct mech_vec3 nxb = mech_cross_compensated(n, cb), nxe = mech_cross_compensated(n, e);
 
     /* Light-cone form: P' = e^{η}(E⊥ + n×B), M' = e^{−η}(E⊥ − n×B). */
     const struct mech_vec3 pp = mech_vec3_scale(mech_vec3_add(eperp, nxb), ep);
     const struct mech_vec3 mp = mech_vec3_scale(mech_vec3_sub(eperp, nxb), en);
     const struct mech_vec3 eperp_lc = mech_vec3_scale(mech_vec3_add(pp, mp), 0.5);
-    const struct mech_vec3 bperp_lc = cross_acc(n, mech_vec3_scale(mech_vec3_sub(mp, pp), 0.5));
+    const struct mech_vec3 bperp_lc = mech_cross_compensated(n, mech_vec3_scale(mech_vec3_sub(mp, pp), 0.5));
     const double err_lc = 0.5 * (sum_abs(pp) + sum_abs(mp));
 
     /* γ − 1 form: X' = X⊥ + [(γ − 1) X⊥ ± βγ n×Y], accurate at small η. */
@@ -148,20 +98,20 @@ enum mech_status mech_em_fields_boost(const struct mech_boost *boost, struct mec
     /* Invariants of the boosted fields from the boosted light-cone vectors:
      * E'⊥² − B'⊥² = P'·M' and E'⊥·B'⊥ = ½ n·(M'×P'), never from the large
      * rounded components (which would cancel at large γ). */
-    struct csum s = {0, 0};
-    csum_add_product(&s, epar, epar);
-    csum_add_product(&s, -bpar, bpar);
-    csum_add_product(&s, pp.x, mp.x);
-    csum_add_product(&s, pp.y, mp.y);
-    csum_add_product(&s, pp.z, mp.z);
-    o.after.e2_minus_b2 = csum_value(&s);
-    const struct mech_vec3 mxp = cross_acc(mp, pp);
-    struct csum d = {0, 0};
-    csum_add_product(&d, epar, bpar);
-    csum_add_product(&d, 0.5 * n.x, mxp.x);
-    csum_add_product(&d, 0.5 * n.y, mxp.y);
-    csum_add_product(&d, 0.5 * n.z, mxp.z);
-    o.after.e_dot_b = csum_value(&d);
+    struct mech_csum s = {0, 0};
+    mech_csum_add_product(&s, epar, epar);
+    mech_csum_add_product(&s, -bpar, bpar);
+    mech_csum_add_product(&s, pp.x, mp.x);
+    mech_csum_add_product(&s, pp.y, mp.y);
+    mech_csum_add_product(&s, pp.z, mp.z);
+    o.after.e2_minus_b2 = mech_csum_value(&s);
+    const struct mech_vec3 mxp = mech_cross_compensated(mp, pp);
+    struct mech_csum d = {0, 0};
+    mech_csum_add_product(&d, epar, bpar);
+    mech_csum_add_product(&d, 0.5 * n.x, mxp.x);
+    mech_csum_add_product(&d, 0.5 * n.y, mxp.y);
+    mech_csum_add_product(&d, 0.5 * n.z, mxp.z);
+    o.after.e_dot_b = mech_csum_value(&d);
     if (si) o.after.e_dot_b /= MECH_EM_C; /* E·(cB)/c */
 
     if (!mech_vec3_isfinite(o.e) || !mech_vec3_isfinite(o.b) || !isfinite(o.scale2) ||

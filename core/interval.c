@@ -3,31 +3,18 @@
  * exactly formed coordinate differences with compensated arithmetic, so far
  * events with a tiny interval keep their digits. */
 #include "mech/interval.h"
+#include "mech/compensated.h"
 
 #include <float.h>
 #include <math.h>
 
-struct csum {
-    double s, c;
-};
-
-static void csum_add(struct csum *a, double t)
-{
-    double s = a->s + t;
-    if (fabs(a->s) >= fabs(t))
-        a->c += (a->s - s) + t;
-    else
-        a->c += (t - s) + a->s;
-    a->s = s;
-}
-
 /* sign · (hi + lo)² = sign · (hi² + 2 hi lo + lo²), hi² split exactly. */
-static void csum_add_square(struct csum *a, double sign, double hi, double lo)
+static void csum_add_square(struct mech_csum *a, double sign, double hi, double lo)
 {
     double p = hi * hi;
-    csum_add(a, sign * p);
-    csum_add(a, sign * fma(hi, hi, -p));
-    csum_add(a, sign * (2.0 * hi * lo + lo * lo));
+    mech_csum_add(a, sign * p);
+    mech_csum_add(a, sign * fma(hi, hi, -p));
+    mech_csum_add(a, sign * (2.0 * hi * lo + lo * lo));
 }
 
 enum mech_status mech_interval_compute(const double e1[4], const double e2[4],
@@ -39,7 +26,7 @@ enum mech_status mech_interval_compute(const double e1[4], const double e2[4],
         if (!isfinite(e1[i]) || !isfinite(e2[i]))
             return mech_error_set(err, MECH_EINVAL, "events", "event coordinates must be finite");
     struct mech_interval o;
-    struct csum acc = {0, 0};
+    struct mech_csum acc = {0, 0};
     double scale = 0, in_err = 0;
     const double u = 0.5 * DBL_EPSILON; /* unit round-off 2^-53 */
     for (int i = 0; i < 4; i++) {

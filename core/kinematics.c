@@ -8,6 +8,7 @@
  * (γ = 1e6 and beyond) cases keep full relative precision.
  */
 #include "mech/kinematics.h"
+#include "mech/compensated.h"
 
 #include <float.h>
 #include <math.h>
@@ -16,41 +17,13 @@ static const double KIN_PI = 3.14159265358979323846;
 
 /* ---- compensated arithmetic (Neumaier sums, fma products) ------------------ */
 
-struct csum {
-    double s, c;
-};
-
-static void csum_add(struct csum *a, double t)
-{
-    double s = a->s + t;
-    if (fabs(a->s) >= fabs(t))
-        a->c += (a->s - s) + t;
-    else
-        a->c += (t - s) + a->s;
-    a->s = s;
-}
-
-static double csum_value(const struct csum *a)
-{
-    return a->s + a->c;
-}
-
-/* a·b − c·d to about 1.5 ulp (Kahan's fma algorithm). */
-static double diff_of_products(double a, double b, double c, double d)
-{
-    double w = c * d;
-    double e = fma(-c, d, w);
-    double f = fma(a, b, -w);
-    return f + e;
-}
-
 static double sum3(double a, double b, double c)
 {
-    struct csum s = {0, 0};
-    csum_add(&s, a);
-    csum_add(&s, b);
-    csum_add(&s, c);
-    return csum_value(&s);
+    struct mech_csum s = {0, 0};
+    mech_csum_add(&s, a);
+    mech_csum_add(&s, b);
+    mech_csum_add(&s, c);
+    return mech_csum_value(&s);
 }
 
 /* ---- single-particle motion ------------------------------------------------ */
@@ -267,20 +240,20 @@ double mech_kin_pair_product(const struct mech_kin_particle *a, const struct mec
     /* θ between the momenta from atan2(|u × v|, u·v), both fma-accurate, then
      * 1 − cos θ = 2 sin²(θ/2): right to round-off for θ near 0 and near π. */
     struct mech_vec3 cr =
-        mech_vec3_make(diff_of_products(u.y, v.z, u.z, v.y), diff_of_products(u.z, v.x, u.x, v.z),
-                       diff_of_products(u.x, v.y, u.y, v.x));
-    struct csum d = {0, 0};
+        mech_vec3_make(mech_diff_of_products(u.y, v.z, u.z, v.y), mech_diff_of_products(u.z, v.x, u.x, v.z),
+                       mech_diff_of_products(u.x, v.y, u.y, v.x));
+    struct mech_csum d = {0, 0};
     double t;
     t = u.x * v.x;
-    csum_add(&d, t);
-    csum_add(&d, fma(u.x, v.x, -t));
+    mech_csum_add(&d, t);
+    mech_csum_add(&d, fma(u.x, v.x, -t));
     t = u.y * v.y;
-    csum_add(&d, t);
-    csum_add(&d, fma(u.y, v.y, -t));
+    mech_csum_add(&d, t);
+    mech_csum_add(&d, fma(u.y, v.y, -t));
     t = u.z * v.z;
-    csum_add(&d, t);
-    csum_add(&d, fma(u.z, v.z, -t));
-    double theta = atan2(mech_vec3_norm(cr), csum_value(&d));
+    mech_csum_add(&d, t);
+    mech_csum_add(&d, fma(u.z, v.z, -t));
+    double theta = atan2(mech_vec3_norm(cr), mech_csum_value(&d));
     double sh = sin(0.5 * theta);
     return base + pa * pb * (2.0 * sh * sh);
 }
@@ -319,18 +292,18 @@ enum mech_status mech_kin_invariant_mass(const struct mech_kin_particle *ps, siz
     if (!ps || n == 0 || !out || !budget)
         return mech_error_set(err, MECH_EINVAL, NULL, "particles, output and budget are required");
     double emax = 0;
-    struct csum se = {0, 0}, sx = {0, 0}, sy = {0, 0}, sz = {0, 0};
+    struct mech_csum se = {0, 0}, sx = {0, 0}, sy = {0, 0}, sz = {0, 0};
     for (size_t i = 0; i < n; i++) {
         emax = fmax(emax, ps[i].energy);
-        csum_add(&se, ps[i].energy);
-        csum_add(&sx, ps[i].momentum.x);
-        csum_add(&sy, ps[i].momentum.y);
-        csum_add(&sz, ps[i].momentum.z);
+        mech_csum_add(&se, ps[i].energy);
+        mech_csum_add(&sx, ps[i].momentum.x);
+        mech_csum_add(&sy, ps[i].momentum.y);
+        mech_csum_add(&sz, ps[i].momentum.z);
     }
     /* One power of two brings the largest energy near 1 (exact scaling), so
      * squares and products of energies cannot overflow or underflow. */
     double scale = emax > 0 ? ldexp(1.0, -ilogb(emax)) : 1.0;
-    struct csum m2 = {0, 0};
+    struct mech_csum m2 = {0, 0};
     for (size_t i = 0; i < n; i++) {
         enum mech_status st = mech_budget_check(budget, (long)i + 1, i == 0, err);
         if (st != MECH_OK) {
@@ -339,18 +312,18 @@ enum mech_status mech_kin_invariant_mass(const struct mech_kin_particle *ps, siz
         }
         struct mech_kin_particle a = {ps[i].mass * scale, ps[i].energy * scale,
                                       mech_vec3_scale(ps[i].momentum, scale)};
-        csum_add(&m2, a.mass * a.mass);
+        mech_csum_add(&m2, a.mass * a.mass);
         for (size_t j = i + 1; j < n; j++) {
             struct mech_kin_particle b = {ps[j].mass * scale, ps[j].energy * scale,
                                           mech_vec3_scale(ps[j].momentum, scale)};
-            csum_add(&m2, 2.0 * mech_kin_pair_product(&a, &b));
+            mech_csum_add(&m2, 2.0 * mech_kin_pair_product(&a, &b));
         }
     }
-    double msq = csum_value(&m2);
+    double msq = mech_csum_value(&m2);
     out->mass = sqrt(msq) / scale;
     out->mass_squared = (msq / scale) / scale;
-    out->energy = csum_value(&se);
-    out->momentum = mech_vec3_make(csum_value(&sx), csum_value(&sy), csum_value(&sz));
+    out->energy = mech_csum_value(&se);
+    out->momentum = mech_vec3_make(mech_csum_value(&sx), mech_csum_value(&sy), mech_csum_value(&sz));
     mech_kin_system_finish(out);
     if (!isfinite(out->mass) || !isfinite(out->mass_squared) || !isfinite(out->energy) ||
         !mech_vec3_isfinite(out->momentum))
@@ -362,11 +335,11 @@ enum mech_status mech_kin_invariant_mass(const struct mech_kin_particle *ps, siz
 
 double mech_kin_q_value(double parent, const double *m, size_t n)
 {
-    struct csum q = {0, 0};
-    csum_add(&q, parent);
+    struct mech_csum q = {0, 0};
+    mech_csum_add(&q, parent);
     for (size_t i = 0; i < n; i++)
-        csum_add(&q, -m[i]);
-    return csum_value(&q);
+        mech_csum_add(&q, -m[i]);
+    return mech_csum_value(&q);
 }
 
 static enum mech_status below_threshold(double parent, const double *m, size_t n,
@@ -607,10 +580,10 @@ enum mech_status mech_kin_endpoint(double parent, const double *m, size_t n, siz
                               "a decaying parent needs a positive mass, got %.17g", parent);
     double q = mech_kin_q_value(parent, m, n);
     if (q < 0) return below_threshold(parent, m, n, err);
-    struct csum s = {0, 0};
+    struct mech_csum s = {0, 0};
     for (size_t j = 0; j < n; j++)
-        if (j != i) csum_add(&s, m[j]);
-    double si = csum_value(&s);
+        if (j != i) mech_csum_add(&s, m[j]);
+    double si = mech_csum_value(&s);
     /* T_max = ((M − m_i)² − S_i²)/(2M) = Q (M − m_i + S_i)/(2M): no cancellation. */
     double t = q * (sum3(parent, -m[i], si) / (2.0 * parent));
     if (e_max) *e_max = m[i] + t;
@@ -654,10 +627,10 @@ enum mech_status mech_kin_three_body_planar(double parent, const double m[3], do
     for (int it = 0; q > 0 && it < 300; it++) {
         double mid = 0.5 * (lo + hi);
         if (mid <= lo || mid >= hi) break;
-        struct csum t = {0, 0};
+        struct mech_csum t = {0, 0};
         for (int i = 0; i < 3; i++)
-            csum_add(&t, kinetic_of(m[i], mid * r[i]));
-        if (csum_value(&t) < q)
+            mech_csum_add(&t, kinetic_of(m[i], mid * r[i]));
+        if (mech_csum_value(&t) < q)
             lo = mid;
         else
             hi = mid;

@@ -16,41 +16,10 @@
  * 1 − (rounded c), so small angles keep their precision.
  */
 #include "mech/velocity_addition.h"
+#include "mech/compensated.h"
 
 #include <math.h>
 #include <stdio.h>
-
-/* a·d − b·c with one rounding of each product corrected (Kahan's fma form):
- * error about one ulp of the result, even when the two products cancel. */
-static double det2(double a, double b, double c, double d)
-{
-    double p = b * c;
-    double r = fma(a, d, -p);
-    double e = fma(b, c, -p);
-    return r - e;
-}
-
-static struct mech_vec3 cross_accurate(struct mech_vec3 u, struct mech_vec3 v)
-{
-    return mech_vec3_make(det2(u.y, u.z, v.y, v.z), det2(u.z, u.x, v.z, v.x),
-                          det2(u.x, u.y, v.x, v.y));
-}
-
-/* Dot product with error-free products and a compensated sum. */
-static double dot_accurate(struct mech_vec3 u, struct mech_vec3 v)
-{
-    double t[6] = {u.x * v.x, 0, u.y * v.y, 0, u.z * v.z, 0};
-    t[1] = fma(u.x, v.x, -t[0]);
-    t[3] = fma(u.y, v.y, -t[2]);
-    t[5] = fma(u.z, v.z, -t[4]);
-    double s = 0, comp = 0;
-    for (int i = 0; i < 6; i++) {
-        double y = s + t[i];
-        comp += fabs(s) >= fabs(t[i]) ? (s - y) + t[i] : (t[i] - y) + s;
-        s = y;
-    }
-    return s + comp;
-}
 
 /* The angle between unit vectors f and o: cos, sin, 1 − cos, 1 + cos (each
  * to a few ulp) and the unit vector m ⊥ f in the plane, toward o (has_m = 0
@@ -64,9 +33,9 @@ struct angle_parts {
 static struct angle_parts angle_between(struct mech_vec3 f, struct mech_vec3 o)
 {
     struct angle_parts a;
-    struct mech_vec3 w = cross_accurate(f, o);
+    struct mech_vec3 w = mech_cross_compensated(f, o);
     double s = mech_vec3_norm(w);
-    double c = dot_accurate(f, o);
+    double c = mech_dot_compensated(f, o);
     /* Normalise (c, s) onto the unit circle: the inputs are unit to rounding. */
     double h = hypot(c, s);
     if (h > 0) {
@@ -85,7 +54,7 @@ static struct angle_parts angle_between(struct mech_vec3 f, struct mech_vec3 o)
     a.has_m = s > 0;
     if (a.has_m) {
         /* (f × o) × f = o − (o·f) f, of length s. */
-        struct mech_vec3 m = cross_accurate(w, f);
+        struct mech_vec3 m = mech_cross_compensated(w, f);
         double len = mech_vec3_norm(m);
         a.m = mech_vec3_scale(m, 1.0 / len);
     } else {
@@ -197,7 +166,7 @@ static void wigner_half(const struct mech_boost *first, const struct mech_boost 
     double t = t1 * t2;
     *num = ap.s * t;
     *den = (u1 + t1 * u2) + t * ap.opc;
-    struct mech_vec3 w = cross_accurate(second->direction, first->direction);
+    struct mech_vec3 w = mech_cross_compensated(second->direction, first->direction);
     double len = mech_vec3_norm(w);
     if (*num > 0 && len > 0) {
         *axis = mech_vec3_scale(w, 1.0 / len);

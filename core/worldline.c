@@ -12,28 +12,10 @@
  * From rest (η0 = 0): t = (c/a) sinh(aτ/c), x = (c²/a)(cosh(aτ/c) − 1).
  */
 #include "mech/worldline.h"
+#include "mech/compensated.h"
 
 #include <math.h>
 #include <stdio.h>
-
-struct csum {
-    double s, c;
-};
-
-static void csum_add(struct csum *a, double t)
-{
-    double s = a->s + t;
-    if (fabs(a->s) >= fabs(t))
-        a->c += (a->s - s) + t;
-    else
-        a->c += (t - s) + a->s;
-    a->s = s;
-}
-
-static double csum_value(const struct csum *a)
-{
-    return a->s + a->c;
-}
 
 static double cosh_m1(double x)
 {
@@ -90,7 +72,7 @@ enum mech_status mech_worldline_run(const struct mech_leg *legs, size_t n, doubl
         return mech_error_set(err, MECH_EINVAL, "units", "the speed of light must be > 0");
     struct mech_boost cur;
     mech_boost_from_beta(mech_vec3_make(0, 0, 0), &cur, NULL);
-    struct csum t = {0, 0}, tau = {0, 0}, age = {0, 0}, dist = {0, 0}, te = {0, 0}, tr = {0, 0};
+    struct mech_csum t = {0, 0}, tau = {0, 0}, age = {0, 0}, dist = {0, 0}, te = {0, 0}, tr = {0, 0};
     struct mech_vec3 x = mech_vec3_make(0, 0, 0);
     char text[200];
 
@@ -220,39 +202,39 @@ enum mech_status mech_worldline_run(const struct mech_leg *legs, size_t n, doubl
         o->age_difference = agek;
         o->distance = path;
         o->displacement = disp;
-        o->start[0] = csum_value(&t);
+        o->start[0] = mech_csum_value(&t);
         o->start[1] = x.x;
         o->start[2] = x.y;
         o->start[3] = x.z;
-        o->home_clock_seen_start = csum_value(&te);
-        o->home_receives_start = csum_value(&tr);
-        csum_add(&t, T);
-        csum_add(&tau, ptau);
-        csum_add(&age, agek);
-        csum_add(&dist, path);
-        csum_add(&te, dte);
-        csum_add(&tr, dtr);
+        o->home_clock_seen_start = mech_csum_value(&te);
+        o->home_receives_start = mech_csum_value(&tr);
+        mech_csum_add(&t, T);
+        mech_csum_add(&tau, ptau);
+        mech_csum_add(&age, agek);
+        mech_csum_add(&dist, path);
+        mech_csum_add(&te, dte);
+        mech_csum_add(&tr, dtr);
         x = xe;
-        o->end[0] = csum_value(&t);
+        o->end[0] = mech_csum_value(&t);
         o->end[1] = x.x;
         o->end[2] = x.y;
         o->end[3] = x.z;
-        o->home_clock_seen_end = csum_value(&te);
-        o->home_receives_end = csum_value(&tr);
+        o->home_clock_seen_end = mech_csum_value(&te);
+        o->home_receives_end = mech_csum_value(&tr);
         o->final_velocity = fin;
         cur = fin;
     }
-    total->proper_time = csum_value(&tau);
-    total->coordinate_time = csum_value(&t);
-    total->age_difference = csum_value(&age);
-    total->distance = csum_value(&dist);
+    total->proper_time = mech_csum_value(&tau);
+    total->coordinate_time = mech_csum_value(&t);
+    total->age_difference = mech_csum_value(&age);
+    total->distance = mech_csum_value(&dist);
     total->end[0] = total->coordinate_time;
     total->end[1] = x.x;
     total->end[2] = x.y;
     total->end[3] = x.z;
     total->final_velocity = cur;
-    total->home_clock_seen_end = csum_value(&te);
-    total->home_receives_end = csum_value(&tr);
+    total->home_clock_seen_end = mech_csum_value(&te);
+    total->home_receives_end = mech_csum_value(&tr);
     if (!isfinite(total->coordinate_time) || !isfinite(total->home_receives_end) ||
         !mech_vec3_isfinite(x))
         return mech_error_set(err, MECH_ENUMERIC, "legs", "the trip's totals overflow");
