@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "rotation_request.h"
 #include "mech/inertia.h"
 #include "mech/rotation.h"
 
@@ -23,33 +24,11 @@
 #define S_MASS                                                                          \
     "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"                      \
     "\"description\":\"kg, > 0\"}"
-#define S_ANGLE "{\"type\":\"number\",\"minimum\":-1e6,\"maximum\":1e6}"
 #define S_ROW3                                                                          \
     "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"                       \
     "{\"type\":\"number\",\"minimum\":-2,\"maximum\":2}}"
 
-#define S_MATRIX                                                                        \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" S_ROW3                \
-    ",\"description\":\"3x3 rows, orthonormal with det +1 to 1e-9\"}"
-#define S_EULER                                                                         \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" S_ANGLE               \
-    ",\"description\":\"[phi, theta, psi] rad: phi about z, theta about the new x, "     \
-    "psi about the new z; R = R_psi R_theta R_phi\"}"
-#define S_AXIS_ANGLE                                                                    \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                               \
-    "\"required\":[\"axis\",\"angle\"],"                                                 \
-    "\"properties\":{\"axis\":" S_VEC3("non-zero axis") ",\"angle\":" S_ANGLE "},"       \
-    "\"description\":\"axes turned by angle (rad, right-handed) about axis\"}"
-#define S_QUATERNION                                                                    \
-    "{\"type\":\"array\",\"minItems\":4,\"maxItems\":4,\"items\":" S_COORD               \
-    ",\"description\":\"[w, x, y, z] = [cos(a/2), sin(a/2) n], normalised here\"}"
-#define S_ORIENTATION                                                                   \
-    "{\"type\":\"object\",\"minProperties\":1,\"maxProperties\":1,"                      \
-    "\"additionalProperties\":false,"                                                   \
-    "\"description\":\"Passive rotation R taking scene components to body components "  \
-    "(rows of R = body axes in scene axes), given as exactly one form.\","               \
-    "\"properties\":{\"matrix\":" S_MATRIX ",\"euler_zxz\":" S_EULER                    \
-    ",\"axis_angle\":" S_AXIS_ANGLE ",\"quaternion\":" S_QUATERNION "}}"
+#define S_ORIENTATION API_ROTATION_SCHEMA
 
 #define S_HOLE                                                                          \
     ",\"hole\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true: the part is "  \
@@ -226,43 +205,19 @@ static const char *const shape_names[MECH_SHAPE_COUNT] = {
     [MECH_SHAPE_TORUS] = "torus",       [MECH_SHAPE_MESH] = "mesh",
 };
 
-static struct mech_mat3 mat3_of(const json_t *rows)
+/* Read body i's orientation (any form of api/rotation_request.h; passive by
+ * default) into the passive matrix *r. Errors are recorded in c, naming the
+ * field; the return value is then MECH_EINVAL. */
+static enum mech_status read_orientation(struct api_call *c, const json_t *o, size_t i,
+                                         struct mech_mat3 *r)
 {
-    struct mech_mat3 m;
-    for (int i = 0; i < 3; i++) {
-        struct mech_vec3 r = api_vec3_of(json_array_get(rows, (size_t)i));
-        m.a[i][0] = r.x;
-        m.a[i][1] = r.y;
-        m.a[i][2] = r.z;
-    }
-    return m;
-}
-
-/* Read body i's orientation (schema-validated: exactly one form) into *r.
- * Returns MECH_OK, or the core status with e filled and *prefix set to the JSON
- * pointer the core's param is relative to. */
-static enum mech_status read_orientation(const json_t *o, size_t i, struct mech_mat3 *r,
-                                         char *prefix, size_t np, struct mech_error *e)
-{
-    const json_t *v;
-    snprintf(prefix, np, "/bodies/%zu/orientation", i);
-    if ((v = json_object_get(o, "matrix"))) return mech_rotation_from_matrix(mat3_of(v), r, e);
-    if ((v = json_object_get(o, "euler_zxz")))
-        return mech_rotation_from_euler_zxz(json_number_value(json_array_get(v, 0)),
-                                            json_number_value(json_array_get(v, 1)),
-                                            json_number_value(json_array_get(v, 2)), r, e);
-    if ((v = json_object_get(o, "axis_angle"))) {
-        snprintf(prefix, np, "/bodies/%zu/orientation/axis_angle", i);
-        return mech_rotation_from_axis_angle(api_vec3_member(v, "axis", mech_vec3_make(0, 0, 0)),
-                                             api_number(v, "angle", 0), r, e);
-    }
-    if ((v = json_object_get(o, "quaternion"))) {
-        double q[4];
-        for (size_t k = 0; k < 4; k++)
-            q[k] = json_number_value(json_array_get(v, k));
-        return mech_rotation_from_quaternion(q, r, e);
-    }
-    return mech_error_set(e, MECH_EINVAL, NULL, "no orientation form given");
+    char ptr[96];
+    snprintf(ptr, sizeof ptr, "/bodies/%zu/orientation", i);
+    struct api_rotation rot;
+    if (api_rotation_read(c, o, ptr, MECH_ROTATION_PASSIVE, &rot) != 0) return MECH_EINVAL;
+    api_rotation_set_sense(&rot, MECH_ROTATION_PASSIVE);
+    *r = rot.matrix;
+    return MECH_OK;
 }
 
 static void dims3(const json_t *b, const char *key, double *d)
@@ -298,7 +253,8 @@ static enum mech_status read_mesh(const json_t *b, struct mech_inertia_part *p,
 }
 
 /* Parse bodies[i] into *p. Returns MECH_OK or a core status with e and prefix set. */
-static enum mech_status read_part(const json_t *b, size_t i, struct mech_inertia_part *p,
+static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
+                                  struct mech_inertia_part *p,
                                   char *prefix, size_t np, struct mech_error *e)
 {
     const char *shape = api_string(b, "shape", "");
@@ -364,7 +320,7 @@ static enum mech_status read_part(const json_t *b, size_t i, struct mech_inertia
         break;
     }
     const json_t *o = json_object_get(b, "orientation");
-    if (o) return read_orientation(o, i, &p->orientation, prefix, np, e);
+    if (o) return read_orientation(c, o, i, &p->orientation);
     return MECH_OK;
 }
 
@@ -417,11 +373,12 @@ static json_t *inertia(struct api_call *c, const json_t *body)
     for (size_t i = 0; i < n; i++) {
         char prefix[96];
         enum mech_status st =
-            read_part(json_array_get(bodies, i), i, &parts[i], prefix, sizeof prefix, &e);
+            read_part(c, json_array_get(bodies, i), i, &parts[i], prefix, sizeof prefix, &e);
         if (st != MECH_OK) {
             free_parts(parts, n);
             free(pp);
-            return api_call_fail_core(c, st, &e, prefix);
+            /* an orientation error is already recorded in c, naming its field */
+            return c->problem != API_PROBLEM_NONE ? NULL : api_call_fail_core(c, st, &e, prefix);
         }
     }
     const json_t *oj = json_object_get(body, "origin");

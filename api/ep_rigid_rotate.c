@@ -14,6 +14,7 @@
 #include "mech/attitude.h"
 #include "mech/rigid_rotation.h"
 #include "mech/rotation.h"
+#include "rotation_request.h"
 #include "routes.h"
 #include "schema.h"
 #include "trajectory_request.h"
@@ -26,23 +27,8 @@ extern const struct api_route api_route_rigid_inertia;
     "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" R_NUM(lo, hi)         \
     ",\"description\":\"" desc "\"}"
 #define R_ROW3 "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" R_NUM("-2", "2") "}"
-/* the orientation forms of /v1/rigid/inertia (passive) */
-#define R_ORIENTATION                                                                   \
-    "{\"type\":\"object\",\"minProperties\":1,\"maxProperties\":1,"                      \
-    "\"additionalProperties\":false,"                                                   \
-    "\"description\":\"initial attitude: the passive rotation R0 taking space (inertial) " \
-    "components to body components (rows = body axes in space axes), as exactly one of " \
-    "matrix, euler_zxz [phi, theta, psi] (R = R_psi R_theta R_phi), axis_angle {axis, "  \
-    "angle} or quaternion [w, x, y, z]; default identity\","                             \
-    "\"properties\":{"                                                                  \
-    "\"matrix\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" R_ROW3     \
-    ",\"description\":\"3x3 rows, orthonormal with det +1 to 1e-9\"},"                  \
-    "\"euler_zxz\":" R_VEC3("-1e6", "1e6", "[phi, theta, psi], rad") ","                 \
-    "\"axis_angle\":{\"type\":\"object\",\"additionalProperties\":false,"                \
-    "\"required\":[\"axis\",\"angle\"],\"properties\":{\"axis\":"                        \
-    R_VEC3("-1e15", "1e15", "non-zero axis") ",\"angle\":" R_NUM("-1e6", "1e6") "}},"    \
-    "\"quaternion\":{\"type\":\"array\",\"minItems\":4,\"maxItems\":4,\"items\":"        \
-    R_NUM("-1e15", "1e15") ",\"description\":\"[w, x, y, z], normalised here\"}}}"
+/* the initial attitude: any rotation form of api/rotation_request.h, passive by default */
+#define R_ORIENTATION API_ROTATION_SCHEMA
 /* clang-format on */
 
 static const char schema[] =
@@ -125,30 +111,6 @@ static struct mech_mat3 mat3_of(const json_t *rows)
         m.a[i][2] = r.z;
     }
     return m;
-}
-
-/* The passive matrix of an orientation object; prefix set for errors. */
-static enum mech_status read_orientation(const json_t *o, struct mech_mat3 *r, const char **prefix,
-                                         struct mech_error *e)
-{
-    const json_t *v;
-    *prefix = "/orientation";
-    if ((v = json_object_get(o, "matrix"))) return mech_rotation_from_matrix(mat3_of(v), r, e);
-    if ((v = json_object_get(o, "euler_zxz")))
-        return mech_rotation_from_euler_zxz(json_number_value(json_array_get(v, 0)),
-                                            json_number_value(json_array_get(v, 1)),
-                                            json_number_value(json_array_get(v, 2)), r, e);
-    if ((v = json_object_get(o, "axis_angle"))) {
-        *prefix = "/orientation/axis_angle";
-        return mech_rotation_from_axis_angle(api_vec3_member(v, "axis", mech_vec3_make(0, 0, 0)),
-                                             api_number(v, "angle", 0), r, e);
-    }
-    if ((v = json_object_get(o, "quaternion"))) {
-        double q[4];
-        for (size_t k = 0; k < 4; k++) q[k] = json_number_value(json_array_get(v, k));
-        return mech_rotation_from_quaternion(q, r, e);
-    }
-    return mech_error_set(e, MECH_EINVAL, NULL, "no orientation form given");
 }
 
 /* Run the /v1/rigid/inertia handler on `in`; moments and principal axes out.
@@ -272,9 +234,11 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     struct mech_mat3 R0 = mech_mat3_identity();
     const json_t *oj = json_object_get(body, "orientation");
     if (oj) {
-        const char *prefix = "/orientation";
-        enum mech_status st = read_orientation(oj, &R0, &prefix, &e);
-        if (st != MECH_OK) return api_call_fail_core(c, st, &e, prefix);
+        struct api_rotation rot;
+        if (api_rotation_read(c, oj, "/orientation", MECH_ROTATION_PASSIVE, &rot) != 0)
+            return NULL; /* recorded in c, naming the field */
+        api_rotation_set_sense(&rot, MECH_ROTATION_PASSIVE);
+        R0 = rot.matrix;
     }
     mech_attitude_from_matrix(mech_mat3_mul(P, R0), p.q0);
     const json_t *tj = json_object_get(body, "torque");
