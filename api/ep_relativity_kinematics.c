@@ -878,3 +878,32 @@ const struct api_route api_route_relativity_collision = {
     collision_op,
     0,
 };
+
+/* ---- GET /v1/relativity/particles ------------------------------------------ */
+
+static json_t *particles_resource(struct api_call *c, const json_t *body)
+{
+    (void)body;
+    json_t *list = json_array();
+    for (size_t i = 0; list && i < mech_particle_count(); i++) {
+        const struct mech_particle *p = mech_particle_at(i);
+        json_array_append_new(list, json_pack("{s:s,s:o,s:s}", "name", p->name, "mass_mev",
+                                              api_real(c, p->mass), "source", p->source));
+    }
+    return json_pack("{s:s,s:s,s:o}", "edition", MECH_PARTICLE_EDITION, "mass_unit", "MeV/c^2",
+                     "particles", list);
+}
+
+const struct api_route api_route_relativity_particles = {
+    "GET",
+    "/v1/relativity/particles",
+    "The particle names the kinematics operations accept, with their masses",
+    "Every name a kinematics request may use in place of a mass (\"pi0\", \"proton\", "
+    "\"electron\", ...), with its mass in MeV/c^2 and the source of the value (PDG 2024 "
+    "for particles, CODATA 2018 for light nuclei, 0 for massless ones). Requests may give "
+    "energies in any energy_unit; this table is in MeV/c^2.",
+    NULL,
+    NULL,
+    particles_resource,
+    0,
+};

@@ -23,6 +23,7 @@ extern const struct api_route api_route_relativity_invariant_mass;
 extern const struct api_route api_route_relativity_decay;
 extern const struct api_route api_route_relativity_compton;
 extern const struct api_route api_route_relativity_collision;
+extern const struct api_route api_route_relativity_particles;
 
 const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
@@ -42,6 +43,7 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_decay,
     &api_route_relativity_compton,
     &api_route_relativity_collision,
+    &api_route_relativity_particles,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_integrators,
