@@ -106,9 +106,14 @@ def main():
         base = "http://127.0.0.1:%d" % port
         catalog = json.load(urllib.request.urlopen(base + "/v1", timeout=10))
         ops = {(o["method"], o["path"]) for o in catalog["operations"]}
-        table = set(re.findall(r"^\|\s*`?(POST|GET)`?\s*\|\s*`(/v1/[^`]+)`", text, re.M))
+        table = set(re.findall(r"^\|\s*`?(POST|GET)`?\s*\|\s*`(/[^`]*)`", text, re.M))
         table_ops = {t for t in table if t[0] == "POST"}
         check(table_ops == ops, "README endpoint table %s != catalog %s" % (sorted(table_ops), sorted(ops)))
+        # GET resources: the catalog's list and the README's rows name the same paths.
+        resources = {("GET", r["path"]) for r in catalog["resources"]}
+        table_gets = {t for t in table if t[0] == "GET"}
+        check(table_gets == resources, "README GET rows %s != catalog resources %s"
+              % (sorted(table_gets ^ resources), "(symmetric difference)"))
 
         blocks = re.findall(r"```sh\n(curl [^\n]*127\.0\.0\.1:8080[^`]*?)```\s*```json\n(.*?)```", text, re.S)
         check(len(blocks) >= 3, "README has %d curl examples with output, want >= 3" % len(blocks))
