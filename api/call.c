@@ -85,6 +85,13 @@ json_t *api_call_fail_core(struct api_call *c, enum mech_status st,
         break;
     case MECH_ENUMERIC:
         set_problem(c, API_PROBLEM_NUMERIC, text);
+        /* Name the input that led there when the core knows it. */
+        if (e && e->param[0]) {
+            if (!c->errors) c->errors = json_array();
+            if (c->errors && json_array_size(c->errors) < 20)
+                json_array_append_new(c->errors, json_pack("{s:s,s:s}", "pointer", pointer,
+                                                           "detail", text));
+        }
         break;
     default:
         set_problem(c, API_PROBLEM_INTERNAL, "internal error");

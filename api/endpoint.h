@@ -54,7 +54,8 @@ void api_call_domain(struct api_call *c, const char *pointer, const char *fmt, .
 /* Map a failed core call to a problem and return NULL. EINVAL/EDOMAIN with a
  * param become errors at pointer_prefix + "/" + param (pointer_prefix may be
  * ""); EBUDGET/EDEADLINE become compute-budget-exceeded with the progress;
- * ECANCELLED -> 503; ENUMERIC -> numerical failure; others -> 500. */
+ * ECANCELLED -> 503; ENUMERIC -> numerical failure (with errors[] at the param when the
+ * core names one); others -> 500. */
 json_t *api_call_fail_core(struct api_call *c, enum mech_status st,
                            const struct mech_error *e, const char *pointer_prefix);
 
