@@ -7,6 +7,14 @@ extern const struct api_route api_route_rigid_inertia;
 extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
+extern const struct api_route api_route_frames_effective_force;
+extern const struct api_route api_route_earth_gravity;
+extern const struct api_route api_route_earth_tides;
+extern const struct api_route api_route_scene_falling_object;
+extern const struct api_route api_route_scene_vertical_shot;
+extern const struct api_route api_route_scene_cannonball;
+extern const struct api_route api_route_scene_foucault;
+extern const struct api_route api_route_scene_rotating_table;
 extern const struct api_route api_route_integrators;
 extern const struct api_route api_route_rotation_convert;
 extern const struct api_route api_route_rotation_compose;
@@ -24,6 +32,8 @@ extern const struct api_route api_route_relativity_decay;
 extern const struct api_route api_route_relativity_compton;
 extern const struct api_route api_route_relativity_collision;
 extern const struct api_route api_route_relativity_particles;
+extern const struct api_route api_route_gr_schwarzschild;
+extern const struct api_route api_route_gr_geodesic;
 
 const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
@@ -44,8 +54,18 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_compton,
     &api_route_relativity_collision,
     &api_route_relativity_particles,
+    &api_route_gr_schwarzschild,
+    &api_route_gr_geodesic,
     &api_route_trajectory,
     &api_route_compare,
+    &api_route_frames_effective_force,
+    &api_route_earth_gravity,
+    &api_route_earth_tides,
+    &api_route_scene_falling_object,
+    &api_route_scene_vertical_shot,
+    &api_route_scene_cannonball,
+    &api_route_scene_foucault,
+    &api_route_scene_rotating_table,
     &api_route_integrators,
 };
 const size_t api_route_count = sizeof api_routes / sizeof api_routes[0];

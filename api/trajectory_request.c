@@ -15,6 +15,8 @@ static enum mech_force_type force_type_of(const char *s)
     if (strcmp(s, "central_gravity") == 0) return MECH_FORCE_CENTRAL_GRAVITY;
     if (strcmp(s, "spring") == 0) return MECH_FORCE_SPRING;
     if (strcmp(s, "linear_drag") == 0) return MECH_FORCE_LINEAR_DRAG;
+    if (strcmp(s, "lorentz") == 0) return MECH_FORCE_LORENTZ;
+    if (strcmp(s, "third_body_tide") == 0) return MECH_FORCE_THIRD_BODY_TIDE;
     return MECH_FORCE_UNIFORM_GRAVITY;
 }
 
@@ -73,6 +75,8 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     struct mech_trajectory_problem *p = &rq->p;
     const json_t *part = json_object_get(body, "particle");
     p->mass = api_number(part, "mass", 0);
+    p->charge = api_number(part, "charge", 0);
+    p->reduce_planar = 1;
     p->position = api_vec3_member(part, "position", zero);
     p->velocity = api_vec3_member(part, "velocity", zero);
 
@@ -81,6 +85,8 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     if (strcmp(ft, "rotating") == 0) {
         p->frame.type = MECH_FRAME_ROTATING;
         p->frame.omega = api_vec3_member(frame, "omega", zero);
+        p->frame.omega_dot = api_vec3_member(frame, "omega_dot", zero);
+        p->frame.acceleration = api_vec3_member(frame, "acceleration", zero);
     } else if (strcmp(ft, "earth") == 0) {
         p->frame.type = MECH_FRAME_EARTH;
         p->frame.latitude_deg = api_number(frame, "latitude_deg", 0);
@@ -112,12 +118,34 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         case MECH_FORCE_LINEAR_DRAG:
             mf->u.linear_drag.b = api_number(f, "b", 0);
             break;
+        case MECH_FORCE_LORENTZ:
+            mf->u.lorentz.E = api_vec3_member(f, "E", zero);
+            mf->u.lorentz.B = api_vec3_member(f, "B", zero);
+            break;
+        case MECH_FORCE_THIRD_BODY_TIDE: {
+            const int has_m = json_object_get(f, "mass") != NULL;
+            const int has_gm = json_object_get(f, "gm") != NULL;
+            if (has_m == has_gm) {
+                char ptr[64];
+                snprintf(ptr, sizeof ptr, "%s/forces/%zu", prefix, i);
+                api_call_invalid(c, ptr, "third_body_tide needs exactly one of mass and gm");
+                return 0;
+            }
+            mf->u.third_body_tide.gm = has_gm ? api_number(f, "gm", 0)
+                                              : MECH_GRAVITATIONAL_CONSTANT * api_number(f, "mass", 0);
+            mf->u.third_body_tide.position = api_vec3_member(f, "position", zero);
+            break;
+        }
         }
     }
     api_traj_request_fix(rq);
 
     const json_t *fic = json_object_get(body, "fictitious");
-    if (fic) {
+    if (json_is_string(fic)) {
+        /* "auto": resolved below, once the accuracy is known */
+        rq->auto_model = 1;
+        p->fictitious = MECH_FICTITIOUS_ALL;
+    } else if (fic) {
         if (p->frame.type == MECH_FRAME_INERTIAL && json_array_size(fic) > 0) {
             api_call_invalid(c, *prefix ? "/request/fictitious" : "/fictitious",
                              "fictitious terms need a rotating or earth frame; an inertial "
@@ -126,11 +154,13 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         }
         for (size_t i = 0; i < json_array_size(fic); i++) {
             const char *s = json_string_value(json_array_get(fic, i));
-            p->fictitious |= strcmp(s, "coriolis") == 0 ? MECH_FICTITIOUS_CORIOLIS
-                                                        : MECH_FICTITIOUS_CENTRIFUGAL;
+            p->fictitious |= strcmp(s, "coriolis") == 0      ? MECH_FICTITIOUS_CORIOLIS
+                             : strcmp(s, "centrifugal") == 0 ? MECH_FICTITIOUS_CENTRIFUGAL
+                             : strcmp(s, "euler") == 0       ? MECH_FICTITIOUS_EULER
+                                                             : MECH_FICTITIOUS_TRANSLATIONAL;
         }
     } else {
-        p->fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
+        p->fictitious = MECH_FICTITIOUS_ALL;
     }
 
     p->t_end = api_number(body, "t_end", 0);
@@ -147,9 +177,139 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
                             : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
                                                            : MECH_STOP_EITHER;
     }
+    const json_t *block = json_object_get(body, "integrator");
+    if (rq->auto_model && !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
+        return 0;
     char ptr[64];
     snprintf(ptr, sizeof ptr, "%s/integrator", prefix);
-    return api_traj_request_set_integrator(c, rq, json_object_get(body, "integrator"), ptr);
+    return api_traj_request_set_integrator(c, rq, block, ptr);
+}
+
+double api_traj_block_target(const json_t *in)
+{
+    const double balanced = mech_accuracy_preset_at(MECH_ACCURACY_BALANCED)->promise;
+    if (!in) return balanced;
+    const json_t *te = json_object_get(in, "target_error");
+    if (te) return json_number_value(te);
+    const char *acc = api_string(in, "accuracy", NULL);
+    if (acc) {
+        for (int i = 0; i < MECH_ACCURACY_COUNT; i++)
+            if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, acc))
+                return mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
+        return balanced;
+    }
+    if (json_object_get(in, "rtol")) {
+        double r = api_number(in, "rtol", 1e-10);
+        return r < 1e-15 ? 1e-15 : r > 0.1 ? 0.1 : r;
+    }
+    const char *m = api_string(in, "method", NULL);
+    const struct mech_integrator *mm = m ? mech_ode_method_find(m) : NULL;
+    if (mm && mech_ode_method_describe(mm).adaptive) return 1e-10; /* the default rtol */
+    return balanced;
+}
+
+int api_traj_request_auto(struct api_call *c, struct api_traj_request *rq, double target,
+                          const char *prefix)
+{
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_trajectory_model_select(&rq->p, target, &c->budget, &rq->model, &e);
+    if (st != MECH_OK) {
+        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
+            size_t n = strlen(e.text);
+            snprintf(e.text + n, sizeof e.text - n, " (in the first pass of \"fictitious\": \"auto\")");
+        }
+        api_call_fail_core(c, st, &e, *prefix ? "/request" : "");
+        return 0;
+    }
+    rq->auto_model = 1;
+    rq->p.fictitious = rq->model.fictitious;
+    long used = rq->model.first_pass_stats.steps;
+    if (used > 0) c->budget.max_steps = c->budget.max_steps - used > 1 ? c->budget.max_steps - used : 1;
+    return 1;
+}
+
+json_t *api_traj_model(struct api_call *c, const struct api_traj_request *rq,
+                       const struct mech_trajectory_result *r)
+{
+    json_t *model = json_object();
+    json_t *terms = json_array();
+    if (!model || !terms) {
+        json_decref(model);
+        json_decref(terms);
+        return NULL;
+    }
+    json_object_set_new(model, "mode", json_string(rq->auto_model ? "auto" : "given"));
+    const size_t nf = rq->p.n_forces;
+    for (size_t i = 0; i < r->n_terms; i++) {
+        json_t *tm = json_object();
+        json_object_set_new(tm, "term", json_string(r->terms[i].term));
+        if (r->terms[i].force_index >= 0)
+            json_object_set_new(tm, "force_index", json_integer(r->terms[i].force_index));
+        json_object_set_new(tm, "included", json_boolean(r->terms[i].included));
+        json_object_set_new(tm, "max_acceleration", api_real(c, r->terms[i].max_acceleration));
+        if (rq->auto_model && i >= nf && i - nf < MECH_TRAJECTORY_N_FICTITIOUS) {
+            const struct mech_term_estimate *te = &rq->model.terms[i - nf];
+            if (te->applicable) {
+                json_t *ee = json_object();
+                json_object_set_new(ee, "acceleration_bound", api_real(c, te->accel_bound));
+                json_object_set_new(ee, "position", api_real(c, te->position_effect));
+                json_object_set_new(ee, "velocity", api_real(c, te->velocity_effect));
+                json_object_set_new(ee, "relative", api_real(c, te->relative_effect));
+                json_object_set_new(tm, "estimated_effect", ee);
+            } else {
+                json_object_set_new(tm, "estimated_effect", json_null());
+            }
+            json_object_set_new(tm, "reason", json_string(te->reason));
+        }
+        json_array_append_new(terms, tm);
+    }
+    json_object_set_new(model, "terms", terms);
+    if (rq->auto_model) {
+        const struct mech_trajectory_model *m = &rq->model;
+        json_t *a = json_object();
+        json_object_set_new(a, "target_error", api_real(c, m->target));
+        json_object_set_new(a, "safety_factor", api_real(c, m->safety));
+        json_object_set_new(
+            a, "rule",
+            json_string("a term is included when max(|a| T^2/2 / L, |a| T / V) > target / "
+                        "safety, with |a| the term's largest acceleration, L and V the largest "
+                        "|r| and |v|, T the duration, all from a first pass with every term at "
+                        "draft accuracy (1e-3 relative: the bounds are good to ~1e-3)"));
+        json_object_set_new(a, "time_scale", api_real(c, m->time_scale));
+        json_object_set_new(a, "position_scale", api_real(c, m->position_scale));
+        json_object_set_new(a, "velocity_scale", api_real(c, m->velocity_scale));
+        if (m->first_pass_done) {
+            json_t *fp = json_object();
+            json_object_set_new(fp, "method", json_string(m->first_pass_method));
+            json_object_set_new(fp, "rtol", api_real(c, m->first_pass_opt.rtol));
+            json_object_set_new(fp, "atol", api_real(c, m->first_pass_opt.atol));
+            json_object_set_new(fp, "steps", json_integer(m->first_pass_stats.steps));
+            json_object_set_new(fp, "rhs_evaluations",
+                                json_integer(m->first_pass_stats.rhs_evaluations));
+            json_object_set_new(a, "first_pass", fp);
+        } else {
+            json_object_set_new(a, "first_pass", json_null());
+        }
+        json_object_set_new(model, "auto", a);
+    }
+    json_t *state = json_object();
+    json_object_set_new(state, "dimensions", json_integer(r->dimensions));
+    if (r->dimensions == 2) {
+        json_object_set_new(state, "plane_normal", api_vec3(c, r->plane_normal));
+        json_object_set_new(state, "reason",
+                            json_string("planar scene: r0, v0 and every force and modelled term "
+                                        "keep the motion in the plane through the origin normal "
+                                        "to plane_normal; integrated in its two coordinates"));
+    } else {
+        json_object_set_new(state, "plane_normal", json_null());
+        json_object_set_new(
+            state, "reason",
+            json_string("not planar (or a Boris run with velocity-dependent forces): three "
+                        "dimensions"));
+    }
+    json_object_set_new(model, "state", state);
+    return model;
 }
 
 json_t *api_traj_settings(struct api_call *c, const struct mech_trajectory_problem *p)
@@ -171,6 +331,7 @@ json_t *api_traj_invariant(struct api_call *c, const struct mech_trajectory_inva
     json_t *j = json_object();
     json_object_set_new(j, "name", json_string(inv->name));
     json_object_set_new(j, "conserved", json_boolean(inv->conserved));
+    if (inv->note) json_object_set_new(j, "note", json_string(inv->note));
     json_object_set_new(j, "initial", api_real(c, inv->initial));
     json_object_set_new(j, "final", api_real(c, inv->final));
     json_object_set_new(j, "max_relative_drift", api_real(c, inv->max_relative_drift));

@@ -56,6 +56,8 @@
         "\"mass\",\"position\",\"velocity\"",                                                  \
         "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"               \
         "\"description\":\"kg\"},"                                                             \
+        "\"charge\":{\"type\":\"number\",\"minimum\":-1e15,\"maximum\":1e15,\"default\":0,"  \
+        "\"description\":\"C (lorentz forces)\"},"                                            \
         "\"position\":" API_TRAJ_VEC3("m, frame axes") ","                                     \
         "\"velocity\":" API_TRAJ_VEC3("m/s, relative to the frame")) ","                       \
     "\"frame\":{\"description\":\"default {\\\"type\\\": \\\"inertial\\\"}\",\"oneOf\":["      \
@@ -63,8 +65,13 @@
     API_TRAJ_OBJ("\"type\",\"omega\"",                                                         \
              "\"type\":{\"const\":\"rotating\"},"                                              \
              "\"omega\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"          \
-             API_TRAJ_NUM("-1e6", "1e6") ",\"description\":\"constant angular velocity of the " \
-             "frame about the origin, rad/s, frame axes\"}") ","                               \
+             API_TRAJ_NUM("-1e6", "1e6") ",\"description\":\"angular velocity of the "        \
+             "frame about the origin at t = 0, rad/s, frame axes\"},"                          \
+             "\"omega_dot\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"      \
+             API_TRAJ_NUM("-1e6", "1e6") ",\"description\":\"constant angular acceleration, "  \
+             "rad/s^2: omega(t) = omega + omega_dot t; default 0\"},"                          \
+             "\"acceleration\":" API_TRAJ_VEC3("constant acceleration of the origin, m/s^2, "  \
+                                              "frame axes; default 0")) ","                  \
     API_TRAJ_OBJ("\"type\",\"latitude_deg\"",                                                  \
              "\"type\":{\"const\":\"earth\"},"                                                 \
              "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90},"          \
@@ -89,11 +96,25 @@
     API_TRAJ_OBJ("\"type\",\"b\"",                                                             \
              "\"type\":{\"const\":\"linear_drag\"},"                                           \
              "\"b\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,"                      \
-             "\"description\":\"kg/s: F = -b v\"}")                                            \
+             "\"description\":\"kg/s: F = -b v\"}") ","                                          \
+    API_TRAJ_OBJ("\"type\"",                                                                  \
+             "\"type\":{\"const\":\"lorentz\"},"                                              \
+             "\"E\":" API_TRAJ_VEC3("electric field, V/m, frame axes; default 0") ","         \
+             "\"B\":" API_TRAJ_VEC3("magnetic field, T, frame axes; default 0")) ","          \
+    API_TRAJ_OBJ("\"type\",\"position\"",                                                     \
+             "\"type\":{\"const\":\"third_body_tide\"},"                                      \
+             "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e40,"          \
+             "\"description\":\"kg (GM = 6.67430e-11 M); give mass or gm\"},"                 \
+             "\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"            \
+             "\"description\":\"G M, m^3/s^2; give mass or gm\"},"                           \
+             "\"position\":" API_TRAJ_VEC3("m, fixed in the frame, not the origin"))          \
     "]}},"                                                                                     \
-    "\"fictitious\":{\"type\":\"array\",\"maxItems\":2,\"uniqueItems\":true,"                  \
-    "\"items\":{\"enum\":[\"coriolis\",\"centrifugal\"]},"                                     \
-    "\"description\":\"terms modelled in a rotating or earth frame; default both\"},"          \
+    "\"fictitious\":{\"description\":\"terms modelled in a rotating or earth frame: a list, " \
+    "or \\\"auto\\\" (model only the terms that matter at the requested accuracy); "           \
+    "default all four\",\"oneOf\":["                                                         \
+    "{\"type\":\"array\",\"maxItems\":4,\"uniqueItems\":true,"                                \
+    "\"items\":{\"enum\":[\"coriolis\",\"centrifugal\",\"euler\",\"translational\"]}},"        \
+    "{\"const\":\"auto\"}]},"                                                                 \
     "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"}," \
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"     \
     "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","                                           \
@@ -121,7 +142,26 @@ struct api_traj_request {
     int chosen;              /* 1: by an accuracy preset, a target error or the default */
     const char *accuracy;    /* preset name, or NULL */
     struct mech_trajectory_choice choice; /* when chosen */
+    /* "fictitious": "auto" */
+    int auto_model;                       /* 1: the terms were chosen by the estimate */
+    struct mech_trajectory_model model;   /* its evidence (when auto_model) */
 };
+
+/* The relative accuracy an integrator block asks for (NULL: balanced): a
+ * preset's promise, target_error, an adaptive method's rtol (clamped to
+ * [1e-15, 0.1]), or for a fixed step the balanced promise. */
+double api_traj_block_target(const json_t *block);
+
+/* "fictitious": "auto": choose p.fictitious with mech_trajectory_model_select
+ * at `target`, spending c->budget's steps (what the first pass used is taken
+ * off c->budget.max_steps). Returns 0 after recording an error. */
+int api_traj_request_auto(struct api_call *c, struct api_traj_request *rq, double target,
+                          const char *prefix);
+
+/* model: {"mode": "auto"|"given", "terms": [...], "state": {...}, ...}.
+ * New reference. */
+json_t *api_traj_model(struct api_call *c, const struct api_traj_request *rq,
+                       const struct mech_trajectory_result *r);
 
 /* Parse a schema-validated trajectory body into rq (including its integrator
  * block and error_estimate). `prefix` is prepended to error pointers ("" or

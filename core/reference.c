@@ -241,9 +241,12 @@ void mech_coriolis_first_order(struct mech_vec3 w, struct mech_vec3 g, int centr
 static int vec_is_zero(struct mech_vec3 a) { return a.x == 0.0 && a.y == 0.0 && a.z == 0.0; }
 
 /* A force that exerts nothing whatever the state. */
-static int force_is_null(const struct mech_force *f)
+static int force_is_null(const struct mech_force *f, double charge)
 {
     switch (f->type) {
+    case MECH_FORCE_LORENTZ:
+        return charge == 0.0 || (vec_is_zero(f->u.lorentz.E) && vec_is_zero(f->u.lorentz.B));
+    case MECH_FORCE_THIRD_BODY_TIDE: return 0;
     case MECH_FORCE_UNIFORM_GRAVITY: return vec_is_zero(f->u.uniform_gravity.g);
     case MECH_FORCE_CENTRAL_GRAVITY: return 0;
     case MECH_FORCE_SPRING: return f->u.spring.k == 0.0;
@@ -262,16 +265,24 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
     ref->r0 = p->position;
     ref->v0 = p->velocity;
     struct mech_vec3 w = mech_frame_omega(&p->frame);
+    const int rotating = p->frame.type == MECH_FRAME_ROTATING;
     const int noninertial = p->frame.type != MECH_FRAME_INERTIAL && !vec_is_zero(w);
     const int coriolis = noninertial && (p->fictitious & MECH_FICTITIOUS_CORIOLIS);
     const int centrifugal = noninertial && (p->fictitious & MECH_FICTITIOUS_CENTRIFUGAL);
+    /* A rotation that changes with time has no reference here (the first-order
+     * solution assumes a constant w); a constant origin acceleration A is a
+     * uniform field -A and joins g. */
+    if (rotating && !vec_is_zero(p->frame.omega_dot) &&
+        (p->fictitious & (MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL |
+                          MECH_FICTITIOUS_EULER)))
+        return ref->kind;
     size_t n_central = 0, n_spring = 0, n_uniform = 0, n_drag = 0;
     const struct mech_force *central = NULL, *spring = NULL;
     struct mech_vec3 g = mech_vec3_make(0, 0, 0);
     double b = 0.0;
     for (size_t i = 0; i < p->n_forces; i++) {
         const struct mech_force *f = &p->forces[i];
-        if (force_is_null(f)) continue;
+        if (force_is_null(f, p->charge)) continue;
         switch (f->type) {
         case MECH_FORCE_CENTRAL_GRAVITY: n_central++; central = f; break;
         case MECH_FORCE_SPRING: n_spring++; spring = f; break;
@@ -280,7 +291,15 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
             g = mech_vec3_add(g, f->u.uniform_gravity.g);
             break;
         case MECH_FORCE_LINEAR_DRAG: n_drag++; b += f->u.linear_drag.b; break;
+        case MECH_FORCE_LORENTZ:
+        case MECH_FORCE_THIRD_BODY_TIDE:
+            return ref->kind; /* no reference with these */
         }
+    }
+    if (rotating && (p->fictitious & MECH_FICTITIOUS_TRANSLATIONAL) &&
+        !vec_is_zero(p->frame.acceleration)) {
+        g = mech_vec3_sub(g, p->frame.acceleration);
+        n_uniform++;
     }
     ref->g = g;
     if (!coriolis && !centrifugal) {

@@ -19,13 +19,19 @@ static const double traj_pi = 3.14159265358979323846;
 
 struct traj_ctx {
     const struct mech_trajectory_problem *p;
-    struct mech_vec3 w;   /* frame angular velocity, frame axes */
+    struct mech_vec3 w;   /* frame angular velocity at t = 0, frame axes */
+    struct mech_vec3 wdot;/* its constant rate of change (rotating frames), else 0 */
+    struct mech_vec3 A;   /* acceleration of the origin (rotating frames), else 0 */
     int noninertial;
-    int coriolis, centrifugal; /* modelled */
+    int coriolis, centrifugal, euler, translational; /* modelled */
+    /* planar integration: r = u1 e1 + u2 e2 (dim2 = 1) */
+    int dim2;
+    struct mech_vec3 e1, e2;
     double fixed_dt;      /* step of a fixed-step method, 0 for adaptive ones */
     struct mech_error *err;
     /* observer accumulators */
-    double term_max[MECH_TRAJECTORY_MAX_FORCES + 2];
+    double term_max[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
+    double rmax, vmax; /* largest |r| and |v| observed */
     int have_inv0;
     double inv0, inv_last, drift_max, scale_max;
     /* angular momentum about `lcenter` when the scene conserves it */
@@ -45,6 +51,8 @@ static const char *force_name(enum mech_force_type t)
     case MECH_FORCE_CENTRAL_GRAVITY: return "central_gravity";
     case MECH_FORCE_SPRING: return "spring";
     case MECH_FORCE_LINEAR_DRAG: return "linear_drag";
+    case MECH_FORCE_LORENTZ: return "lorentz";
+    case MECH_FORCE_THIRD_BODY_TIDE: return "third_body_tide";
     }
     return "unknown";
 }
@@ -65,6 +73,47 @@ struct mech_vec3 mech_frame_omega(const struct mech_frame *frame)
     default:
         return mech_vec3_make(0.0, 0.0, 0.0);
     }
+}
+
+/* Tidal acceleration of a body gm at d (notes §1.4, "The Tides"):
+ *   a = gm [(d - r)/s^3 - d/q^3],  s = |d - r|, q = |d|,
+ * written as a = gm [d (1/s^3 - 1/q^3) - r/s^3] with
+ *   1/s^3 - 1/q^3 = (q - s)(q^2 + q s + s^2) / (s^3 q^3),
+ *   q - s = (q^2 - s^2)/(q + s) = (2 d.r - r.r)/(q + s),
+ * so nothing cancels when |r| << |d| (the direct difference loses
+ * log10(|d|/|r|) digits: 2 at the Earth-Moon ratio 60, all of them at 1 m). */
+static enum mech_status tide_accel(const struct traj_ctx *c, size_t i, struct mech_vec3 r,
+                                   double t, struct mech_vec3 *a)
+{
+    const struct mech_force *f = &c->p->forces[i];
+    const struct mech_vec3 d = f->u.third_body_tide.position;
+    const double gm = f->u.third_body_tide.gm;
+    const double q = mech_vec3_norm(d);
+    const double s = mech_vec3_norm(mech_vec3_sub(d, r));
+    if (!(s > 0.0) || !(q > 0.0)) {
+        char param[32];
+        snprintf(param, sizeof param, "forces/%zu", i);
+        return mech_error_set(c->err, MECH_ENUMERIC, param,
+                              "the particle reached the tide-raising body of force %zu at "
+                              "t = %.9g s",
+                              i, t);
+    }
+    const double qms = (2.0 * mech_vec3_dot(d, r) - mech_vec3_dot(r, r)) / (q + s);
+    /* (q - s)(q^2 + q s + s^2)/(s^3 q^3), arranged against overflow */
+    const double k1 = (qms / s) * ((q * q + q * s + s * s) / (q * q)) / (s * s * q);
+    const double s3 = 1.0 / (s * s * s);
+    *a = mech_vec3_scale(mech_vec3_sub(mech_vec3_scale(d, k1), mech_vec3_scale(r, s3)), gm);
+    return MECH_OK;
+}
+
+/* Tidal potential per unit mass, -gm [1/s - 1/q - d.r/q^3] with
+ * 1/s - 1/q = (q - s)/(q s) (q - s as above): zero at r = 0, no cancellation. */
+static double tide_potential(const struct mech_force *f, struct mech_vec3 r)
+{
+    const struct mech_vec3 d = f->u.third_body_tide.position;
+    const double q = mech_vec3_norm(d), s = mech_vec3_norm(mech_vec3_sub(d, r));
+    const double qms = (2.0 * mech_vec3_dot(d, r) - mech_vec3_dot(r, r)) / (q + s);
+    return -f->u.third_body_tide.gm * (qms / (q * s) - mech_vec3_dot(d, r) / (q * q * q));
 }
 
 /* Acceleration of force i at (r, v). MECH_ENUMERIC at the centre of a central mass. */
@@ -106,11 +155,26 @@ static enum mech_status force_accel(const struct traj_ctx *c, size_t i, struct m
     case MECH_FORCE_LINEAR_DRAG:
         *a = mech_vec3_scale(v, -f->u.linear_drag.b / m);
         return MECH_OK;
+    case MECH_FORCE_LORENTZ: {
+        /* F = q (E + v x B) (SI), fields in the frame's axes */
+        const double qm = c->p->charge / m;
+        *a = mech_vec3_scale(mech_vec3_add(f->u.lorentz.E, mech_vec3_cross(v, f->u.lorentz.B)), qm);
+        return MECH_OK;
+    }
+    case MECH_FORCE_THIRD_BODY_TIDE:
+        return tide_accel(c, i, r, t, a);
     }
     return mech_error_set(c->err, MECH_EINTERNAL, NULL, "unknown force type");
 }
 
-/* notes §1.2: a_Coriolis = -2 w x v, a_centrifugal = -w x (w x r). */
+/* The frame's angular velocity at t: w0 + (dw/dt) t. */
+static struct mech_vec3 omega_at(const struct traj_ctx *c, double t)
+{
+    return mech_vec3_add(c->w, mech_vec3_scale(c->wdot, t));
+}
+
+/* notes §1.2: a_Coriolis = -2 w x v, a_centrifugal = -w x (w x r),
+ * a_Euler = -(dw/dt) x r, a_translational = -A. */
 static struct mech_vec3 coriolis_accel(struct mech_vec3 w, struct mech_vec3 v)
 {
     return mech_vec3_scale(mech_vec3_cross(w, v), -2.0);
@@ -148,8 +212,11 @@ static enum mech_status traj_accel(double t, const double *q, const double *v, d
         if (st != MECH_OK) return st;
         acc = mech_vec3_add(acc, ai);
     }
-    if (c->coriolis) acc = mech_vec3_add(acc, coriolis_accel(c->w, vv));
-    if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(c->w, r));
+    const struct mech_vec3 w = omega_at(c, t);
+    if (c->coriolis) acc = mech_vec3_add(acc, coriolis_accel(w, vv));
+    if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(w, r));
+    if (c->euler) acc = mech_vec3_sub(acc, mech_vec3_cross(c->wdot, r));
+    if (c->translational) acc = mech_vec3_sub(acc, c->A);
     if (!mech_vec3_isfinite(acc) || !mech_vec3_isfinite(r) || !mech_vec3_isfinite(vv))
         return nonfinite_error(c, t, r, vv);
     a[0] = acc.x;
@@ -167,9 +234,11 @@ static enum mech_status traj_rhs(double t, const double *y, double *dydt, void *
 }
 
 /* Lorentz-type split for Boris (mech/ode.h): a = e(t, q) + v x w(t, q) with
- * e = position-dependent forces / m + centrifugal, w = 2 W when Coriolis is
- * modelled (-2 W x v = v x 2W), else 0. Only offered when no drag acts
- * (linear drag -b v/m is not of that form; b = 0 contributes nothing). */
+ * e = position-dependent forces / m (with q E / m) + centrifugal + Euler +
+ * translational, w = q B / m summed over the lorentz forces + 2 W(t) when
+ * Coriolis is modelled (-2 W x v = v x 2W; q v x B / m = v x (q B / m)).
+ * Only offered when no drag acts (linear drag -b v/m is not of that form;
+ * b = 0 contributes nothing). */
 static enum mech_status traj_lorentz(double t, const double *q, double *e, double *w,
                                      void *params)
 {
@@ -177,16 +246,23 @@ static enum mech_status traj_lorentz(double t, const double *q, double *e, doubl
     struct mech_vec3 r = mech_vec3_make(q[0], q[1], q[2]);
     const struct mech_vec3 zero = mech_vec3_make(0.0, 0.0, 0.0);
     struct mech_vec3 acc = zero;
+    struct mech_vec3 ww = zero;
+    const struct mech_vec3 wt = omega_at(c, t);
     for (size_t i = 0; i < c->p->n_forces; i++) {
-        if (c->p->forces[i].type == MECH_FORCE_LINEAR_DRAG) continue;
+        const struct mech_force *f = &c->p->forces[i];
+        if (f->type == MECH_FORCE_LINEAR_DRAG) continue;
+        if (f->type == MECH_FORCE_LORENTZ)
+            ww = mech_vec3_add(ww, mech_vec3_scale(f->u.lorentz.B, c->p->charge / c->p->mass));
         struct mech_vec3 ai;
-        enum mech_status st = force_accel(c, i, r, zero, t, &ai);
+        enum mech_status st = force_accel(c, i, r, zero, t, &ai); /* lorentz: q E / m */
         if (st != MECH_OK) return st;
         acc = mech_vec3_add(acc, ai);
     }
-    if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(c->w, r));
+    if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(wt, r));
+    if (c->euler) acc = mech_vec3_sub(acc, mech_vec3_cross(c->wdot, r));
+    if (c->translational) acc = mech_vec3_sub(acc, c->A);
     if (!mech_vec3_isfinite(acc) || !mech_vec3_isfinite(r)) return nonfinite_error(c, t, r, zero);
-    struct mech_vec3 ww = c->coriolis ? mech_vec3_scale(c->w, 2.0) : zero;
+    if (c->coriolis) ww = mech_vec3_add(ww, mech_vec3_scale(wt, 2.0));
     e[0] = acc.x;
     e[1] = acc.y;
     e[2] = acc.z;
@@ -196,9 +272,9 @@ static enum mech_status traj_lorentz(double t, const double *q, double *e, doubl
     return MECH_OK;
 }
 
-/* The invariant at (r, v) and the sum of the magnitudes of its parts. */
-static void invariant_at(const struct traj_ctx *c, struct mech_vec3 r, struct mech_vec3 v,
-                         double *value, double *scale)
+/* The invariant at (t, r, v) and the sum of the magnitudes of its parts. */
+static void invariant_at(const struct traj_ctx *c, double t, struct mech_vec3 r,
+                         struct mech_vec3 v, double *value, double *scale)
 {
     const double m = c->p->mass;
     double ke = 0.5 * m * mech_vec3_dot(v, v);
@@ -222,14 +298,27 @@ static void invariant_at(const struct traj_ctx *c, struct mech_vec3 r, struct me
         }
         case MECH_FORCE_LINEAR_DRAG:
             break; /* dissipative: no potential */
+        case MECH_FORCE_LORENTZ:
+            /* v x B does no work; static uniform E: U = -q E.r */
+            u = -c->p->charge * mech_vec3_dot(f->u.lorentz.E, r);
+            break;
+        case MECH_FORCE_THIRD_BODY_TIDE:
+            u = m * tide_potential(f, r);
+            break;
         }
         sum += u;
         mag += fabs(u);
     }
     if (c->centrifugal) {
         /* centrifugal potential -1/2 m |w x r|^2 (Jacobi integral) */
-        struct mech_vec3 wr = mech_vec3_cross(c->w, r);
+        struct mech_vec3 wr = mech_vec3_cross(omega_at(c, t), r);
         double u = -0.5 * m * mech_vec3_dot(wr, wr);
+        sum += u;
+        mag += fabs(u);
+    }
+    if (c->translational) {
+        /* potential of the uniform fictitious force -m A: +m A.r */
+        double u = m * mech_vec3_dot(c->A, r);
         sum += u;
         mag += fabs(u);
     }
@@ -280,11 +369,16 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
     }
     /* Fictitious terms are sized even when omitted (DESIGN: say what was
      * left out, with its size); both are 0 in an inertial frame. */
-    c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(c->w, v)));
-    c->term_max[n + 1] = fmax(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(c->w, r)));
+    const struct mech_vec3 wt = omega_at(c, t);
+    c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
+    c->term_max[n + 1] = fmax(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(wt, r)));
+    c->term_max[n + 2] = fmax(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
+    c->term_max[n + 3] = fmax(c->term_max[n + 3], mech_vec3_norm(c->A));
+    c->rmax = fmax(c->rmax, mech_vec3_norm(r));
+    c->vmax = fmax(c->vmax, mech_vec3_norm(v));
 
     double inv, scale;
-    invariant_at(c, r, v, &inv, &scale);
+    invariant_at(c, t, r, v, &inv, &scale);
     if (!isfinite(inv) || !isfinite(scale))
         return mech_error_set(c->err, MECH_ENUMERIC, NULL,
                               "non-finite energy at t = %.9g s", t);
@@ -313,8 +407,58 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
 static double traj_event(double t, const double *y, void *params)
 {
     (void)t;
-    const struct mech_trajectory_problem *p = params;
-    return y[p->stop_axis] - p->stop_value;
+    const struct traj_ctx *c = params;
+    return y[c->p->stop_axis] - c->p->stop_value;
+}
+
+/* ---- planar scenes: the state (u1, u2, u1', u2') with r = u1 e1 + u2 e2 ---- */
+
+static void plane_expand(const struct traj_ctx *c, const double *u, double *y)
+{
+    struct mech_vec3 r = mech_vec3_add(mech_vec3_scale(c->e1, u[0]), mech_vec3_scale(c->e2, u[1]));
+    struct mech_vec3 v = mech_vec3_add(mech_vec3_scale(c->e1, u[2]), mech_vec3_scale(c->e2, u[3]));
+    y[0] = r.x;
+    y[1] = r.y;
+    y[2] = r.z;
+    y[3] = v.x;
+    y[4] = v.y;
+    y[5] = v.z;
+}
+
+static enum mech_status plane_accel(double t, const double *q, const double *v, double *a,
+                                    void *params)
+{
+    const struct traj_ctx *c = params;
+    double u[4] = {q[0], q[1], v[0], v[1]}, y[6], a3[3];
+    plane_expand(c, u, y);
+    enum mech_status st = traj_accel(t, y, y + 3, a3, params);
+    if (st != MECH_OK) return st;
+    /* the scene is planar: the acceleration lies in the plane; project it */
+    struct mech_vec3 av = mech_vec3_make(a3[0], a3[1], a3[2]);
+    a[0] = mech_vec3_dot(av, c->e1);
+    a[1] = mech_vec3_dot(av, c->e2);
+    return MECH_OK;
+}
+
+static enum mech_status plane_rhs(double t, const double *y, double *dydt, void *params)
+{
+    dydt[0] = y[2];
+    dydt[1] = y[3];
+    return plane_accel(t, y, y + 2, dydt + 2, params);
+}
+
+static enum mech_status plane_observe(double t, const double *u, void *params)
+{
+    double y[6];
+    plane_expand(params, u, y);
+    return traj_observe(t, y, params);
+}
+
+static double plane_event(double t, const double *u, void *params)
+{
+    double y[6];
+    plane_expand(params, u, y);
+    return traj_event(t, y, params);
 }
 
 static enum mech_status check_vec(struct mech_vec3 v, const char *param, struct mech_error *err)
@@ -332,6 +476,8 @@ static enum mech_status check_problem(const struct mech_trajectory_problem *p,
     if (!(isfinite(p->mass) && p->mass > 0.0))
         return mech_error_set(err, MECH_EDOMAIN, "particle/mass",
                               "mass must be finite and > 0, got %.17g", p->mass);
+    if (!isfinite(p->charge))
+        return mech_error_set(err, MECH_EINVAL, "particle/charge", "charge must be finite");
     if ((st = check_vec(p->position, "particle/position", err)) != MECH_OK) return st;
     if ((st = check_vec(p->velocity, "particle/velocity", err)) != MECH_OK) return st;
     switch (p->frame.type) {
@@ -339,6 +485,9 @@ static enum mech_status check_problem(const struct mech_trajectory_problem *p,
         break;
     case MECH_FRAME_ROTATING:
         if ((st = check_vec(p->frame.omega, "frame/omega", err)) != MECH_OK) return st;
+        if ((st = check_vec(p->frame.omega_dot, "frame/omega_dot", err)) != MECH_OK) return st;
+        if ((st = check_vec(p->frame.acceleration, "frame/acceleration", err)) != MECH_OK)
+            return st;
         break;
     case MECH_FRAME_EARTH:
         if (!(p->frame.latitude_deg >= -90.0 && p->frame.latitude_deg <= 90.0))
@@ -391,6 +540,27 @@ static enum mech_status check_problem(const struct mech_trajectory_problem *p,
             if (!(isfinite(f->u.linear_drag.b) && f->u.linear_drag.b >= 0.0))
                 return mech_error_set(err, MECH_EDOMAIN, param, "b must be finite and >= 0");
             break;
+        case MECH_FORCE_LORENTZ:
+            snprintf(param, sizeof param, "forces/%zu/E", i);
+            if ((st = check_vec(f->u.lorentz.E, param, err)) != MECH_OK) return st;
+            snprintf(param, sizeof param, "forces/%zu/B", i);
+            if ((st = check_vec(f->u.lorentz.B, param, err)) != MECH_OK) return st;
+            break;
+        case MECH_FORCE_THIRD_BODY_TIDE: {
+            snprintf(param, sizeof param, "forces/%zu/gm", i);
+            if (!(isfinite(f->u.third_body_tide.gm) && f->u.third_body_tide.gm > 0.0))
+                return mech_error_set(err, MECH_EDOMAIN, param, "gm must be finite and > 0");
+            snprintf(param, sizeof param, "forces/%zu/position", i);
+            if ((st = check_vec(f->u.third_body_tide.position, param, err)) != MECH_OK) return st;
+            if (!(mech_vec3_norm(f->u.third_body_tide.position) > 0.0))
+                return mech_error_set(err, MECH_EDOMAIN, param,
+                                      "the tide-raising body cannot be at the frame's origin");
+            if (!(mech_vec3_norm(mech_vec3_sub(p->position, f->u.third_body_tide.position)) > 0.0))
+                return mech_error_set(err, MECH_EDOMAIN, "particle/position",
+                                      "the particle starts at the tide-raising body of force %zu",
+                                      i);
+            break;
+        }
         default:
             snprintf(param, sizeof param, "forces/%zu/type", i);
             return mech_error_set(err, MECH_EINVAL, param, "unknown force type");
@@ -420,7 +590,10 @@ static enum mech_status check_problem(const struct mech_trajectory_problem *p,
 static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
 {
     const struct mech_trajectory_problem *p = c->p;
-    if ((c->coriolis || c->centrifugal) && mech_vec3_norm(c->w) > 0.0) return 0;
+    if ((c->coriolis || c->centrifugal || c->euler) &&
+        (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0))
+        return 0;
+    if (c->translational && mech_vec3_norm(c->A) > 0.0) return 0;
     int have = 0;
     struct mech_vec3 ctr = mech_vec3_make(0, 0, 0);
     for (size_t i = 0; i < p->n_forces; i++) {
@@ -440,6 +613,11 @@ static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *c
         case MECH_FORCE_CENTRAL_GRAVITY:
             fc = f->u.central_gravity.center;
             break;
+        case MECH_FORCE_LORENTZ:
+            if (p->charge == 0.0 ||
+                (mech_vec3_norm(f->u.lorentz.E) == 0.0 && mech_vec3_norm(f->u.lorentz.B) == 0.0))
+                continue;
+            return 0;
         default:
             return 0;
         }
@@ -459,8 +637,14 @@ static void ctx_init(struct traj_ctx *c, const struct mech_trajectory_problem *p
     c->err = err;
     c->noninertial = p->frame.type != MECH_FRAME_INERTIAL;
     c->w = mech_frame_omega(&p->frame);
+    if (p->frame.type == MECH_FRAME_ROTATING) {
+        c->wdot = p->frame.omega_dot;
+        c->A = p->frame.acceleration;
+    }
     c->coriolis = c->noninertial && (p->fictitious & MECH_FICTITIOUS_CORIOLIS);
     c->centrifugal = c->noninertial && (p->fictitious & MECH_FICTITIOUS_CENTRIFUGAL);
+    c->euler = c->noninertial && (p->fictitious & MECH_FICTITIOUS_EULER);
+    c->translational = c->noninertial && (p->fictitious & MECH_FICTITIOUS_TRANSLATIONAL);
     c->fixed_dt = fixed_dt;
     c->track_l = angular_momentum_center(c, &c->lcenter);
     c->r_last = p->position;
@@ -472,6 +656,143 @@ static int scene_has_drag(const struct mech_trajectory_problem *p)
         if (p->forces[i].type == MECH_FORCE_LINEAR_DRAG && p->forces[i].u.linear_drag.b > 0.0)
             return 1;
     return 0;
+}
+
+/* Whether the acceleration depends on the velocity: drag, Coriolis in a
+ * rotating frame, or a magnetic field acting on a charge. */
+static int scene_velocity_dependent(const struct traj_ctx *c)
+{
+    const struct mech_trajectory_problem *p = c->p;
+    if (scene_has_drag(p)) return 1;
+    if (c->coriolis && (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0)) return 1;
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type == MECH_FORCE_LORENTZ && p->charge != 0.0 &&
+            mech_vec3_norm(p->forces[i].u.lorentz.B) > 0.0)
+            return 1;
+    return 0;
+}
+
+/* Whether the time-dependent rotation makes the equations depend on t. */
+static int scene_time_dependent(const struct traj_ctx *c)
+{
+    return (c->coriolis || c->centrifugal || c->euler) && mech_vec3_norm(c->wdot) > 0.0;
+}
+
+/* ---- planar scenes --------------------------------------------------------- */
+
+/* Unit vector of a (a != 0). */
+static struct mech_vec3 unit(struct mech_vec3 a) { return mech_vec3_scale(a, 1.0 / mech_vec3_norm(a)); }
+
+/* |n.u| <= 1e-15 |u| with n a unit vector: u lies in the plane of normal n. */
+static int in_plane(struct mech_vec3 n, struct mech_vec3 u)
+{
+    return fabs(mech_vec3_dot(n, u)) <= 1e-15 * mech_vec3_norm(u);
+}
+
+/* |n x u| <= 1e-15 |u|: u is along n. */
+static int along(struct mech_vec3 n, struct mech_vec3 u)
+{
+    return mech_vec3_norm(mech_vec3_cross(n, u)) <= 1e-15 * mech_vec3_norm(u);
+}
+
+/* The coordinate axis least aligned with u (u != 0), crossed with u, normalised. */
+static struct mech_vec3 perpendicular_to(struct mech_vec3 u)
+{
+    double ax = fabs(u.x), ay = fabs(u.y), az = fabs(u.z);
+    struct mech_vec3 e = ax <= ay && ax <= az ? mech_vec3_make(1, 0, 0)
+                         : ay <= az           ? mech_vec3_make(0, 1, 0)
+                                              : mech_vec3_make(0, 0, 1);
+    return unit(mech_vec3_cross(e, u));
+}
+
+int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_vec3 *normal)
+{
+    struct mech_vec3 inp[2 * MECH_TRAJECTORY_MAX_FORCES + 4], nrm[MECH_TRAJECTORY_MAX_FORCES + 2];
+    size_t ni = 0, nn = 0;
+    if (!p || (p->n_forces && !p->forces) || p->n_forces > MECH_TRAJECTORY_MAX_FORCES) return 0;
+    inp[ni++] = p->position;
+    inp[ni++] = p->velocity;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        const struct mech_force *f = &p->forces[i];
+        switch (f->type) {
+        case MECH_FORCE_UNIFORM_GRAVITY: inp[ni++] = f->u.uniform_gravity.g; break;
+        case MECH_FORCE_CENTRAL_GRAVITY: inp[ni++] = f->u.central_gravity.center; break;
+        case MECH_FORCE_SPRING:
+            if (f->u.spring.k != 0.0) inp[ni++] = f->u.spring.anchor;
+            break;
+        case MECH_FORCE_LINEAR_DRAG: break; /* -b v stays in the plane */
+        case MECH_FORCE_LORENTZ:
+            if (p->charge != 0.0) {
+                inp[ni++] = f->u.lorentz.E;
+                nrm[nn++] = f->u.lorentz.B; /* v x B in the plane iff B is normal */
+            }
+            break;
+        case MECH_FORCE_THIRD_BODY_TIDE: inp[ni++] = f->u.third_body_tide.position; break;
+        default: return 0;
+        }
+    }
+    if (p->frame.type != MECH_FRAME_INERTIAL) {
+        const unsigned fm = p->fictitious;
+        /* Coriolis -2 w x v and centrifugal -w x (w x r) stay in the plane when w
+         * is normal to it (then -w x (w x r) = |w|^2 r); Euler -(dw/dt) x r when
+         * dw/dt is normal; translational -A when A lies in it */
+        if (fm & (MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL)) {
+            nrm[nn++] = mech_frame_omega(&p->frame);
+            if (p->frame.type == MECH_FRAME_ROTATING) nrm[nn++] = p->frame.omega_dot;
+        }
+        if ((fm & MECH_FICTITIOUS_EULER) && p->frame.type == MECH_FRAME_ROTATING)
+            nrm[nn++] = p->frame.omega_dot;
+        if ((fm & MECH_FICTITIOUS_TRANSLATIONAL) && p->frame.type == MECH_FRAME_ROTATING)
+            inp[ni++] = p->frame.acceleration;
+    }
+    for (size_t i = 0; i < ni + nn; i++)
+        if (!mech_vec3_isfinite(i < ni ? inp[i] : nrm[i - ni])) return 0;
+    /* the normal: a given one, or the cross product of two independent in-plane vectors */
+    struct mech_vec3 n = mech_vec3_make(0, 0, 0);
+    int have = 0;
+    for (size_t i = 0; i < nn && !have; i++)
+        if (mech_vec3_norm(nrm[i]) > 0.0) {
+            n = unit(nrm[i]);
+            have = 1;
+        }
+    for (size_t i = 0; i < ni && !have; i++) {
+        if (!(mech_vec3_norm(inp[i]) > 0.0)) continue;
+        for (size_t j = i + 1; j < ni && !have; j++) {
+            struct mech_vec3 x = mech_vec3_cross(inp[i], inp[j]);
+            if (mech_vec3_norm(x) > 1e-15 * mech_vec3_norm(inp[i]) * mech_vec3_norm(inp[j])) {
+                n = unit(x);
+                have = 1;
+            }
+        }
+    }
+    if (!have) {
+        /* every in-plane vector is on one line (or zero): any plane holding it */
+        for (size_t i = 0; i < ni && !have; i++)
+            if (mech_vec3_norm(inp[i]) > 0.0) {
+                n = perpendicular_to(inp[i]);
+                have = 1;
+            }
+        if (!have) n = mech_vec3_make(0, 0, 1);
+    }
+    for (size_t i = 0; i < ni; i++)
+        if (!in_plane(n, inp[i])) return 0;
+    for (size_t i = 0; i < nn; i++)
+        if (!along(n, nrm[i])) return 0;
+    if (normal) *normal = n;
+    return 1;
+}
+
+/* Set up planar integration in c when asked and possible for this method. */
+static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
+{
+    struct mech_vec3 n;
+    c->dim2 = 0;
+    if (!c->p->reduce_planar || !mech_trajectory_plane(c->p, &n)) return;
+    /* Boris rotates 3-vectors: 2-D only when it needs no Lorentz split */
+    if (!strcmp(mi->name, "boris") && scene_velocity_dependent(c)) return;
+    c->dim2 = 1;
+    c->e1 = perpendicular_to(n);
+    c->e2 = mech_vec3_cross(n, c->e1);
 }
 
 /* Buffers of one run: samples (t, y) and the stop state. */
@@ -489,31 +810,50 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
                                   struct mech_error *err)
 {
     const int dissipative = scene_has_drag(p);
-    const int velocity_free = !dissipative && !(c->coriolis && mech_vec3_norm(c->w) > 0.0);
+    const int velocity_free = !scene_velocity_dependent(c);
     struct mech_ode_system sys = {6, traj_rhs, traj_accel,
                                   velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c,
                                   dissipative ? NULL : traj_lorentz};
     double y0[6] = {p->position.x, p->position.y, p->position.z,
                     p->velocity.x, p->velocity.y, p->velocity.z};
+    double u0[4], u_stop[4] = {0, 0, 0, 0};
+    double *u_samples = NULL;
+    if (c->dim2) {
+        /* planar: 4 components, r = u1 e1 + u2 e2 */
+        sys = (struct mech_ode_system){4, plane_rhs, plane_accel,
+                                       velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c, NULL};
+        u0[0] = mech_vec3_dot(p->position, c->e1);
+        u0[1] = mech_vec3_dot(p->position, c->e2);
+        u0[2] = mech_vec3_dot(p->velocity, c->e1);
+        u0[3] = mech_vec3_dot(p->velocity, c->e2);
+        u_samples = malloc(p->samples * 4 * sizeof *u_samples);
+        if (!u_samples) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
+    }
     struct mech_ode_problem op = {
         .sys = &sys,
         .method = method,
         .opt = opt,
         .t0 = 0.0,
         .t_end = p->t_end,
-        .y0 = y0,
+        .y0 = c->dim2 ? u0 : y0,
         .n_samples = p->samples,
         .sample_t = run->sample_t,
-        .sample_y = run->sample_y,
-        .event = p->has_stop ? traj_event : NULL,
+        .sample_y = c->dim2 ? u_samples : run->sample_y,
+        .event = p->has_stop ? (c->dim2 ? plane_event : traj_event) : NULL,
         .event_direction = (int)p->stop_direction,
-        .event_params = (void *)p,
-        .observe = traj_observe,
+        .event_params = c,
+        .observe = c->dim2 ? plane_observe : traj_observe,
         .observe_params = c,
-        .y_stop = run->y_stop,
+        .y_stop = c->dim2 ? u_stop : run->y_stop,
     };
     memset(&run->out, 0, sizeof run->out);
     enum mech_status st = mech_ode_solve(&op, budget, &run->out, err);
+    if (c->dim2) {
+        for (size_t i = 0; i < run->out.n_samples; i++)
+            plane_expand(c, u_samples + 4 * i, run->sample_y + 6 * i);
+        if (run->out.stopped) plane_expand(c, u_stop, run->y_stop);
+        free(u_samples);
+    }
     if (st == MECH_ENUMERIC && err && err->code == MECH_ENUMERIC && !strstr(err->text, "position") &&
         !strstr(err->text, "distance")) {
         /* The driver's own message (a non-finite state after a step) does not
@@ -614,6 +954,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
 
     struct traj_ctx c;
     ctx_init(&c, p, mi.adaptive ? 0.0 : p->opt.dt, err);
+    ctx_plane(&c, &mi);
     const int dissipative = scene_has_drag(p);
 
     struct traj_run run;
@@ -639,7 +980,11 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         res->stop_position = yvec(run.y_stop, 0);
         res->stop_velocity = yvec(run.y_stop, 3);
     }
-    res->n_terms = p->n_forces + 2;
+    res->n_terms = p->n_forces + MECH_TRAJECTORY_N_FICTITIOUS;
+    res->dimensions = c.dim2 ? 2 : 3;
+    res->max_radius = c.rmax;
+    res->max_speed = c.vmax;
+    res->plane_normal = c.dim2 ? mech_vec3_cross(c.e1, c.e2) : mech_vec3_make(0, 0, 0);
     for (size_t i = 0; i < p->n_forces; i++) {
         res->terms[i].term = force_name(p->forces[i].type);
         res->terms[i].force_index = (int)i;
@@ -650,6 +995,10 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                                                             c.term_max[p->n_forces]};
     res->terms[p->n_forces + 1] = (struct mech_trajectory_term){"centrifugal", -1, c.centrifugal,
                                                                 c.term_max[p->n_forces + 1]};
+    res->terms[p->n_forces + 2] = (struct mech_trajectory_term){"euler", -1, c.euler,
+                                                                c.term_max[p->n_forces + 2]};
+    res->terms[p->n_forces + 3] = (struct mech_trajectory_term){
+        "translational", -1, c.translational, c.term_max[p->n_forces + 3]};
     res->method = mi.name;
     res->stats = run.out.stats;
     res->total_steps = run.out.stats.steps;
@@ -657,7 +1006,16 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
     struct mech_trajectory_invariant *inv = &res->invariants[0];
     memset(res->invariants, 0, sizeof res->invariants);
     inv->name = c.noninertial ? "jacobi_integral" : "energy";
-    inv->conserved = !dissipative;
+    const int time_dependent = scene_time_dependent(&c);
+    inv->conserved = !dissipative && !time_dependent;
+    inv->note = time_dependent
+                    ? "not conserved: the frame's angular velocity changes with time (omega_dot), "
+                      "so the equations depend on t and no energy-like integral exists"
+                : dissipative ? "not conserved: linear drag dissipates it"
+                : c.noninertial
+                    ? "conserved: 1/2 m v^2 + U - 1/2 m |w x r|^2 (if centrifugal modelled) + m A.r "
+                      "(if translational modelled); Coriolis and q v x B do no work"
+                    : "conserved: 1/2 m v^2 + U (q v x B does no work; U includes -q E.r)";
     inv->initial = c.inv0;
     inv->final = c.inv_last;
     double denom = c.inv0 != 0.0 ? fabs(c.inv0) : c.scale_max;
@@ -667,6 +1025,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         struct mech_trajectory_invariant *l = &res->invariants[1];
         l->name = "angular_momentum";
         l->conserved = 1;
+        l->note = "conserved: every force is central about one point";
         l->is_vector = 1;
         l->initial_vector = c.l0;
         l->final_vector = c.l_last;
@@ -712,6 +1071,11 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         struct traj_run run2;
         struct traj_ctx c2;
         ctx_init(&c2, p, mi.adaptive ? 0.0 : o2.dt, err);
+        {
+            const struct mech_ode_method_info mi2 =
+                method2 ? mech_ode_method_describe(method2) : mi;
+            ctx_plane(&c2, &mi2);
+        }
         if (b2.max_steps <= 0) {
             st = mech_error_set(err, MECH_EBUDGET, NULL,
                                 "no steps left in the budget for the error estimate's second run");
@@ -787,8 +1151,7 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
     memset(out, 0, sizeof *out);
     struct traj_ctx c;
     ctx_init(&c, p, 0.0, NULL);
-    const int dissipative = scene_has_drag(p);
-    const int velocity_free = !dissipative && !(c.coriolis && mech_vec3_norm(c.w) > 0.0);
+    const int velocity_free = !scene_velocity_dependent(&c);
 
     /* The loosest preset whose promise meets the target; below a preset's
      * promise its rtol scales with the target (radau15's eps is floored at
@@ -842,5 +1205,131 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
              pr->name, pr->promise, rtol,
              target < pr->promise ? " (target below every promise: round-off)" : "",
              length_factor < 1.0 ? " (tightened for a run of many dynamical times)" : "", S, L, V);
+    return MECH_OK;
+}
+
+/* ---- modelling only what the scene requires --------------------------------
+ * DESIGN.md promise 3 and issue 6: estimate each fictitious term's effect on
+ * the returned positions and velocities before integrating, keep only those
+ * that matter at the accuracy asked for, say why for every one. */
+
+void mech_term_effect_estimate(const char *term, double accel_bound, double T, double L, double V,
+                               double target, double safety, struct mech_term_estimate *out)
+{
+    memset(out, 0, sizeof *out);
+    out->term = term;
+    out->applicable = 1;
+    if (!(safety >= 1.0)) safety = 1.0;
+    out->accel_bound = accel_bound;
+    /* a term of size <= a over T moves r by <= a T^2/2 and v by <= a T */
+    out->position_effect = 0.5 * accel_bound * T * T;
+    out->velocity_effect = accel_bound * T;
+    double rp = L > 0.0 ? out->position_effect / L : 0.0;
+    double rv = V > 0.0 ? out->velocity_effect / V : 0.0;
+    out->relative_effect = fmax(rp, rv);
+    const double threshold = target / safety;
+    if (!(L > 0.0) && !(V > 0.0)) {
+        out->included = accel_bound > 0.0;
+        snprintf(out->reason, sizeof out->reason,
+                 out->included ? "the scene has no position or velocity scale: a non-zero term "
+                                 "(%.3g m/s^2) is kept"
+                               : "zero along the trajectory (%.3g m/s^2)",
+                 accel_bound);
+        return;
+    }
+    out->included = out->relative_effect > threshold;
+    /* name the dominant of the two effects in the reason */
+    const int by_velocity = rv > rp;
+    const double eff = by_velocity ? out->velocity_effect : out->position_effect;
+    const double scale = by_velocity ? V : L;
+    const char *unit_s = by_velocity ? "m/s" : "m";
+    snprintf(out->reason, sizeof out->reason,
+             "estimated effect %.3g %s %s target %.3g x %.6g %s / safety %g (|a| <= %.3g m/s^2 "
+             "over T = %.6g s: |a| T^2/2 = %.3g m, |a| T = %.3g m/s)",
+             eff, unit_s, out->included ? ">" : "<=", target, scale, unit_s, safety, accel_bound,
+             T, out->position_effect, out->velocity_effect);
+}
+
+enum mech_status mech_trajectory_model_select(const struct mech_trajectory_problem *p,
+                                              double target, const struct mech_budget *budget,
+                                              struct mech_trajectory_model *m,
+                                              struct mech_error *err)
+{
+    if (!p || !m) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
+    memset(m, 0, sizeof *m);
+    if (!(target >= 1e-15 && target <= 0.1))
+        return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
+                              "target_error must be in [1e-15, 0.1], got %.17g", target);
+    enum mech_status st = check_problem(p, err);
+    if (st != MECH_OK) return st;
+    m->target = target;
+    m->safety = MECH_TRAJECTORY_AUTO_SAFETY;
+    static const char *const names[MECH_TRAJECTORY_N_FICTITIOUS] = {"coriolis", "centrifugal",
+                                                                    "euler", "translational"};
+    static const unsigned bits[MECH_TRAJECTORY_N_FICTITIOUS] = {
+        MECH_FICTITIOUS_CORIOLIS, MECH_FICTITIOUS_CENTRIFUGAL, MECH_FICTITIOUS_EULER,
+        MECH_FICTITIOUS_TRANSLATIONAL};
+    /* 1. applicability: which terms are not identically zero in this frame */
+    const struct mech_vec3 w = mech_frame_omega(&p->frame);
+    const int rotating_frame = p->frame.type == MECH_FRAME_ROTATING;
+    const struct mech_vec3 wdot = rotating_frame ? p->frame.omega_dot : mech_vec3_make(0, 0, 0);
+    const struct mech_vec3 A = rotating_frame ? p->frame.acceleration : mech_vec3_make(0, 0, 0);
+    const int rotates = mech_vec3_norm(w) > 0.0 || mech_vec3_norm(wdot) > 0.0;
+    const int applicable[MECH_TRAJECTORY_N_FICTITIOUS] = {
+        p->frame.type != MECH_FRAME_INERTIAL && rotates,
+        p->frame.type != MECH_FRAME_INERTIAL && rotates, mech_vec3_norm(wdot) > 0.0,
+        mech_vec3_norm(A) > 0.0};
+    static const char *const why_not[MECH_TRAJECTORY_N_FICTITIOUS] = {
+        "not carried: the frame does not rotate (omega = 0, omega_dot = 0)",
+        "not carried: the frame does not rotate (omega = 0, omega_dot = 0)",
+        "not carried: the frame's angular velocity is constant (omega_dot = 0)",
+        "not carried: the frame's origin does not accelerate (acceleration = 0)"};
+    unsigned all = 0;
+    for (int k = 0; k < MECH_TRAJECTORY_N_FICTITIOUS; k++) {
+        m->terms[k].term = names[k];
+        if (applicable[k]) {
+            all |= bits[k];
+        } else {
+            snprintf(m->terms[k].reason, sizeof m->terms[k].reason, "%s",
+                     p->frame.type == MECH_FRAME_INERTIAL ? "not carried: inertial frame"
+                                                           : why_not[k]);
+        }
+    }
+    if (!all) return MECH_OK;
+
+    /* 2. the cheap first pass with every applicable term, draft accuracy */
+    struct mech_trajectory_problem q = *p;
+    q.fictitious = all;
+    q.error_estimate = 0;
+    q.reduce_planar = 0;
+    if (q.samples > 101) q.samples = 101;
+    struct mech_trajectory_choice ch;
+    st = mech_trajectory_choose(&q, mech_accuracy_preset_at(MECH_ACCURACY_DRAFT)->promise, &ch,
+                                err);
+    if (st != MECH_OK) return st;
+    q.method = ch.method;
+    q.opt = ch.opt;
+    struct mech_trajectory_result r;
+    memset(&r, 0, sizeof r); /* no sample buffers: bounds come from the observer */
+    st = mech_trajectory_integrate(&q, budget, &r, err);
+    if (st != MECH_OK) return st;
+    m->first_pass_done = 1;
+    m->first_pass_method = r.method;
+    m->first_pass_opt = q.opt;
+    m->first_pass_stats = r.stats;
+    m->time_scale = r.stopped ? r.t_stop : p->t_end;
+    if (!(m->time_scale > 0.0)) m->time_scale = p->t_end;
+    /* scales: the largest |r| and |v| seen at every step end and sample */
+    m->position_scale = r.max_radius;
+    m->velocity_scale = r.max_speed;
+
+    /* 3. judge each applicable term */
+    for (int k = 0; k < MECH_TRAJECTORY_N_FICTITIOUS; k++) {
+        if (!applicable[k]) continue;
+        double a = r.terms[p->n_forces + (size_t)k].max_acceleration;
+        mech_term_effect_estimate(names[k], a, m->time_scale, m->position_scale,
+                                  m->velocity_scale, target, m->safety, &m->terms[k]);
+        if (m->terms[k].included) m->fictitious |= bits[k];
+    }
     return MECH_OK;
 }

@@ -441,9 +441,53 @@ static void test_coriolis(void)
     }
 }
 
+/* Scene recognition with the issue-6 terms: a modelled translational term
+ * joins g (exact uniform_gravity with g - A); a time-dependent rotation, a
+ * Lorentz force on a charge or a tide has no reference; a Lorentz force on a
+ * neutral particle is null and changes nothing. */
+static void test_recognition_issue6(void)
+{
+    struct mech_trajectory_problem p;
+    struct mech_force f[2];
+    struct mech_trajectory_reference ref;
+    memset(&p, 0, sizeof p);
+    memset(f, 0, sizeof f);
+    p.mass = 1.0;
+    f[0].type = MECH_FORCE_UNIFORM_GRAVITY;
+    f[0].u.uniform_gravity.g = mech_vec3_make(0, 0, -9.8);
+    p.forces = f;
+    p.n_forces = 1;
+    p.frame.type = MECH_FRAME_ROTATING;
+    p.frame.acceleration = mech_vec3_make(1, 2, 3);
+    p.fictitious = MECH_FICTITIOUS_ALL;
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_EXACT);
+    CHECK(strcmp(ref.name, "uniform_gravity") == 0);
+    CHECK_CLOSE(ref.g.x, -1.0, 0, 0);
+    CHECK_CLOSE(ref.g.z, -12.8, 1e-15, 0);
+    p.fictitious = MECH_FICTITIOUS_CORIOLIS; /* A not modelled: g alone */
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_EXACT);
+    CHECK_CLOSE(ref.g.z, -9.8, 0, 0);
+    p.frame.omega = mech_vec3_make(0, 0, 1);
+    p.frame.omega_dot = mech_vec3_make(0, 0, 1e-3);
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_NONE);
+    p.frame.omega_dot = mech_vec3_make(0, 0, 0);
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_FIRST_ORDER);
+    f[1].type = MECH_FORCE_LORENTZ;
+    f[1].u.lorentz.B = mech_vec3_make(0, 0, 1);
+    p.n_forces = 2;
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_FIRST_ORDER); /* q = 0 */
+    p.charge = 1e-6;
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_NONE);
+    f[1].type = MECH_FORCE_THIRD_BODY_TIDE;
+    f[1].u.third_body_tide.gm = 1.0;
+    f[1].u.third_body_tide.position = mech_vec3_make(10, 0, 0);
+    CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_NONE);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_recognition_issue6();
     test_kepler_ellipse();
     test_kepler_many_periods();
     test_kepler_hyperbola_parabola();

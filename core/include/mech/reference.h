@@ -104,6 +104,9 @@ struct mech_trajectory_reference {
  *     gravity and linear drag (no forces at all is the free particle);
  *   first-order "coriolis_first_order": rotating or earth frame with
  *     Coriolis modelled, only uniform gravity (centrifugal modelled or not).
+ * A modelled translational term -A joins g (a uniform field). A rotation
+ * that changes with time (omega_dot != 0 with a rotation term modelled), a
+ * lorentz force on a charge or a third-body tide: no reference.
  * p must be valid (as mech_trajectory_integrate checks). Cannot fail. */
 enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
                                                         struct mech_trajectory_reference *ref);

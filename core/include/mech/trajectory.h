@@ -1,11 +1,18 @@
-/* mech/trajectory.h — a point particle in an inertial, uniformly rotating or
- * local Earth frame under simple forces, integrated with any ODE method of
- * mech/ode.h, with the model terms and the conserved quantity reported.
+/* mech/trajectory.h — a point particle in an inertial, rotating (optionally
+ * with constant angular acceleration and an accelerating origin) or local
+ * Earth frame under simple forces, integrated with any ODE method of
+ * mech/ode.h, with the model terms and the conserved quantity reported, and
+ * the "model only what the scene requires" selection of fictitious terms
+ * (mech_trajectory_model_select, mech_term_effect_estimate).
  *
- * Notes §1.2–1.3 (non-inertial frames, motion near the Earth): in a frame
- * rotating with constant angular velocity w about the origin,
- *   m a = F - 2 m w x v - m w x (w x r)
- * (Coriolis and centrifugal terms). The Earth frame has its origin on the
+ * Notes §1.2 (the general effective force, "a more general derivation"):
+ * in a frame whose origin accelerates with A and whose axes rotate with
+ * angular velocity w(t),
+ *   m a = F - m A - 2 m w x v - m (dw/dt) x r - m w x (w x r)
+ * (translational, Coriolis, Euler and centrifugal terms). Here A is constant
+ * in the frame's axes and w(t) = w0 + (dw/dt) t with dw/dt constant; dw/dt is
+ * the same seen from the inertial and the rotating frame (their derivatives
+ * of any vector differ by w x ., and w x w = 0, notes §1.1). The Earth frame has its origin on the
  * ground, axes x east, y north, z up, and w = W (0, cos(lat), sin(lat)).
  * There the centrifugal acceleration of the origin itself is already part of
  * the local g the caller gives (notes §1.3, "Deflection of a Falling
@@ -34,7 +41,11 @@ enum mech_frame_type { MECH_FRAME_INERTIAL = 0, MECH_FRAME_ROTATING, MECH_FRAME_
 
 struct mech_frame {
     enum mech_frame_type type;
-    struct mech_vec3 omega;  /* ROTATING: angular velocity (rad/s), finite */
+    struct mech_vec3 omega;  /* ROTATING: angular velocity at t = 0 (rad/s), finite */
+    struct mech_vec3 omega_dot;    /* ROTATING: constant angular acceleration (rad/s^2):
+                                      w(t) = omega + omega_dot t; 0 for the other types */
+    struct mech_vec3 acceleration; /* ROTATING: constant acceleration of the origin (m/s^2),
+                                      frame axes; 0 for the other types */
     double latitude_deg;     /* EARTH: latitude in [-90, 90] degrees */
     double omega_magnitude;  /* EARTH: rotation rate >= 0 (rad/s); use MECH_EARTH_OMEGA_SIDEREAL */
 };
@@ -44,7 +55,12 @@ enum mech_force_type {
     MECH_FORCE_CENTRAL_GRAVITY,     /* F = -m gm (r - c) / |r - c|^3 */
     MECH_FORCE_SPRING,              /* F = -k (|r - a| - L) (r - a) / |r - a| */
     MECH_FORCE_LINEAR_DRAG,         /* F = -b v (v: velocity in the frame) */
+    MECH_FORCE_LORENTZ,             /* F = q (E + v x B), q = problem charge, frame axes */
+    MECH_FORCE_THIRD_BODY_TIDE,     /* F = m gm [(d - r)/|d - r|^3 - d/|d|^3] (notes §1.4) */
 };
+
+/* Newtonian constant of gravitation (CODATA 2018), m^3 kg^-1 s^-2. */
+#define MECH_GRAVITATIONAL_CONSTANT 6.67430e-11
 
 struct mech_force {
     enum mech_force_type type;
@@ -53,11 +69,24 @@ struct mech_force {
         struct { double gm; struct mech_vec3 center; } central_gravity;/* gm > 0 (m^3/s^2) */
         struct { double k; struct mech_vec3 anchor; double rest_length; } spring; /* k >= 0 N/m, L >= 0 m */
         struct { double b; } linear_drag;                             /* b >= 0 kg/s */
+        /* E (V/m) and B (T), uniform and constant in the frame's axes; the
+         * velocity in q v x B is the velocity relative to the frame. */
+        struct { struct mech_vec3 E, B; } lorentz;
+        /* A body of gm = G M > 0 (m^3/s^2) at a fixed position d != 0 of the
+         * frame (the frame's origin is in free fall towards it, so only the
+         * difference of its attraction at r and at the origin acts: the tidal
+         * acceleration, computed without cancellation when |r| << |d|). */
+        struct { double gm; struct mech_vec3 position; } third_body_tide;
     } u;
 };
 
-#define MECH_FICTITIOUS_CORIOLIS 0x1u
-#define MECH_FICTITIOUS_CENTRIFUGAL 0x2u
+#define MECH_FICTITIOUS_CORIOLIS 0x1u      /* -2 m w x v */
+#define MECH_FICTITIOUS_CENTRIFUGAL 0x2u   /* -m w x (w x r) */
+#define MECH_FICTITIOUS_EULER 0x4u         /* -m (dw/dt) x r */
+#define MECH_FICTITIOUS_TRANSLATIONAL 0x8u /* -m A */
+#define MECH_FICTITIOUS_ALL 0xfu
+/* The four fictitious terms, in the order model.terms lists them. */
+#define MECH_TRAJECTORY_N_FICTITIOUS 4
 
 enum mech_stop_direction {
     MECH_STOP_EITHER = MECH_ODE_EITHER,
@@ -67,6 +96,7 @@ enum mech_stop_direction {
 
 struct mech_trajectory_problem {
     double mass;                  /* kg, finite, > 0 */
+    double charge;                /* C, finite (used by lorentz forces only) */
     struct mech_vec3 position;    /* m, in the frame */
     struct mech_vec3 velocity;    /* m/s, relative to the frame */
     struct mech_frame frame;
@@ -83,11 +113,14 @@ struct mech_trajectory_problem {
     int stop_axis;                /* 0 = x, 1 = y, 2 = z */
     double stop_value;            /* m */
     enum mech_stop_direction stop_direction;
+    int reduce_planar;            /* 1: integrate a planar scene in two dimensions (see
+                                     mech_trajectory_plane); 0: always in three */
 };
 
 /* One modelled (or deliberately omitted) term. */
 struct mech_trajectory_term {
-    const char *term;        /* "uniform_gravity", ..., "coriolis", "centrifugal" (static) */
+    const char *term;        /* "uniform_gravity", ..., "coriolis", "centrifugal", "euler",
+                                "translational" (static) */
     int force_index;         /* index into forces, or -1 for a fictitious term */
     int included;            /* 1 if it is in the equations of motion */
     double max_acceleration; /* max |a_term| over the samples and step ends (m/s^2);
@@ -97,7 +130,9 @@ struct mech_trajectory_term {
 struct mech_trajectory_invariant {
     const char *name;         /* "energy" (inertial), "jacobi_integral" (rotating, earth) or
                                  "angular_momentum" (about the centre of a central scene) */
-    int conserved;            /* 0 when a drag force with b > 0 dissipates it */
+    int conserved;            /* 0 when a drag force with b > 0 dissipates it, or the frame's
+                                 rotation changes with time (see note) */
+    const char *note;         /* why it is (not) conserved (static, never NULL) */
     double initial, final;    /* J; for angular_momentum |L| in kg m^2/s */
     double max_relative_drift;/* max |I - I0| / |I0| (|I0| = 0: over the largest |part| seen);
                                  for a vector, max |L - L0| / |L0| */
@@ -147,8 +182,13 @@ struct mech_trajectory_result {
     int stopped;
     double t_stop;            /* NaN if not stopped */
     struct mech_vec3 stop_position, stop_velocity;
-    struct mech_trajectory_term terms[MECH_TRAJECTORY_MAX_FORCES + 2];
-    size_t n_terms;           /* n_forces + 2 (coriolis, centrifugal always listed) */
+    struct mech_trajectory_term terms[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
+    size_t n_terms;           /* n_forces + 4 (coriolis, centrifugal, euler, translational
+                                 always listed) */
+    double max_radius;        /* m: largest |r| at the samples and step ends */
+    double max_speed;         /* m/s: largest |v| there */
+    int dimensions;           /* 2: integrated in the plane of a planar scene; 3 otherwise */
+    struct mech_vec3 plane_normal; /* unit normal of that plane (dimensions 2), else 0 */
     const char *method;       /* the method's name (static) */
     struct mech_ode_stats stats;      /* of the answer's run (not the estimate's) */
     struct mech_trajectory_invariant invariant; /* = invariants[0] (kept for compatibility) */
@@ -159,9 +199,24 @@ struct mech_trajectory_result {
     long total_steps;                 /* steps of every run made (answer + estimate) */
 };
 
-/* Angular velocity of the frame in its own axes (rad/s): 0 for inertial,
- * omega for rotating, W (0, cos lat, sin lat) for earth. No validation. */
+/* Angular velocity of the frame in its own axes (rad/s) at t = 0: 0 for
+ * inertial, omega for rotating, W (0, cos lat, sin lat) for earth. No validation. */
 struct mech_vec3 mech_frame_omega(const struct mech_frame *frame);
+
+/* Whether the scene p (with its fictitious mask as given) stays in a plane
+ * through the origin: every vector that must lie in the plane (r0, v0, g of
+ * uniform gravity, centres and anchors, E, the tide body's position, the
+ * translational acceleration A when modelled) is perpendicular to one unit
+ * normal n, and every vector that must be normal to it (w and dw/dt when a
+ * rotation term is modelled, B when the charge is non-zero) is parallel to n
+ * (or zero). "Perpendicular" means |n.u| <= 1e-15 |u|: out-of-plane
+ * components below round-off are dropped. Forces that are null (g = 0, k = 0,
+ * b = 0, E = B = 0 or q = 0) impose nothing. Then the motion never leaves the
+ * plane (every acceleration term maps the plane into itself). Returns 1 and
+ * the normal (deterministic: the normalised cross product of the first two
+ * independent in-plane vectors, or the given normal, or for a line or a point
+ * the coordinate axis least aligned with it crossed with it), else 0. */
+int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_vec3 *normal);
 
 /* ---- choosing by accuracy ---------------------------------------------------- */
 
@@ -213,8 +268,16 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
  * Invariant: E = 1/2 m |v|^2 + U(r) with U = -m g.r (uniform gravity),
  * -m gm / |r - c| (central), 1/2 k (|r - a| - L)^2 (spring); in a non-inertial
  * frame with the centrifugal term modelled, U also has -1/2 m |w x r|^2
- * (the Jacobi integral; Coriolis does no work). Linear drag with b > 0 makes
- * it decrease: it is still reported, with conserved = 0. In an inertial frame
+ * (the Jacobi integral; Coriolis does no work), and with the translational
+ * term +m A.r. Lorentz forces: q v x B does no work (it is perpendicular to
+ * v, like Coriolis), and a uniform static E in the frame has the potential
+ * -q E.r, so the energy (or Jacobi integral) including -q E.r is conserved.
+ * Third-body tide: U = -m gm [1/|d - r| - 1/|d| - d.r/|d|^3] (evaluated
+ * without cancellation). Linear drag with b > 0 makes it decrease: it is
+ * still reported, with conserved = 0. When the frame's rotation changes with
+ * time (dw/dt != 0 with any rotation term modelled) the equations depend
+ * explicitly on t and NOTHING is conserved: the Jacobi integral (with w(t))
+ * is reported with conserved = 0 and a note saying so. In an inertial frame
  * whose every active force is central about one point c (central gravity
  * centred, springs anchored there), the angular momentum m (r - c) x v about
  * c is reported too (invariants[1]).
@@ -228,6 +291,12 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
  * estimate scaled by Richardson's 2^p/(2^p - 1)) with the budget the first
  * run left, and the difference goes to res->error_estimate. A Lorentz-type split (mech_ode_system.lorentz) is
  * provided whenever no drag acts, so Boris-type methods apply.
+ *
+ * Planar scenes (p->reduce_planar and mech_trajectory_plane): integrated in
+ * the plane's two coordinates (a 4-component state instead of 6), the
+ * samples mapped back to the frame's axes; res->dimensions says which. Not
+ * for Boris-type methods (their Lorentz split rotates 3-vectors): those stay
+ * in three dimensions.
  *
  * Non-finite values (an overflowing force or state) stop the integration with
  * MECH_ENUMERIC naming t and the last finite position.
@@ -245,5 +314,82 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                                            const struct mech_budget *budget,
                                            struct mech_trajectory_result *res,
                                            struct mech_error *err);
+
+/* ---- modelling only what the scene requires ---------------------------------- */
+
+/* The estimate for one candidate term. */
+struct mech_term_estimate {
+    const char *term;        /* "coriolis", "centrifugal", "euler", "translational" (static) */
+    int applicable;          /* 0: identically zero in this frame (not carried, not estimated) */
+    int included;            /* 1: modelled */
+    double accel_bound;      /* m/s^2: bound on |a_term| along the trajectory */
+    double position_effect;  /* m: accel_bound T^2 / 2 */
+    double velocity_effect;  /* m/s: accel_bound T */
+    double relative_effect;  /* max(position_effect / L, velocity_effect / V) */
+    char reason[224];        /* why included or left out (with the numbers) */
+};
+
+/* The rule behind "fictitious": "auto", reusable by any scene that knows a
+ * bound on a term's acceleration: leaving out a term whose acceleration stays
+ * below accel_bound for a time T moves the positions by at most
+ * accel_bound T^2/2 and the velocities by at most accel_bound T (the term
+ * integrated twice / once; an upper bound for secular effects, conservative
+ * for oscillating ones). The term is included iff
+ *   max(accel_bound T^2/2 / L, accel_bound T / V) > target / safety
+ * (a scale that is 0 is skipped; both 0: included iff accel_bound > 0).
+ * L (m) and V (m/s) are the scene's position and velocity scales (e.g. the
+ * largest |r| and |v| of the motion), target the relative accuracy asked for
+ * (e.g. 1e-8), safety >= 1 the margin for several omitted terms adding up and
+ * for the bound's slack (mech_trajectory_model_select uses 10). Fills out
+ * (term is stored as given, borrowed: pass a static string), including the
+ * reason, e.g. "estimated effect 3e-12 m < target 1e-8 x 100 m / safety 10".
+ * All inputs finite and >= 0 (T > 0, target > 0). Cannot fail. */
+void mech_term_effect_estimate(const char *term, double accel_bound, double T, double L, double V,
+                               double target, double safety, struct mech_term_estimate *out);
+
+#define MECH_TRAJECTORY_AUTO_SAFETY 10.0
+
+/* The fictitious terms chosen for a scene, with the evidence. */
+struct mech_trajectory_model {
+    double target;             /* relative accuracy asked for */
+    double safety;             /* MECH_TRAJECTORY_AUTO_SAFETY */
+    double time_scale;         /* T (s): t_end, or the stop time of the first pass */
+    double position_scale;     /* L (m): max |r| over the first pass */
+    double velocity_scale;     /* V (m/s): max |v| over the first pass */
+    unsigned fictitious;       /* the MECH_FICTITIOUS_* mask chosen */
+    struct mech_term_estimate terms[MECH_TRAJECTORY_N_FICTITIOUS]; /* coriolis, centrifugal,
+                                                                     euler, translational */
+    /* the cheap first pass that bounds |a_term|, |r| and |v| (not run when no
+     * term is applicable) */
+    int first_pass_done;
+    const char *first_pass_method; /* static */
+    struct mech_ode_options first_pass_opt;
+    struct mech_ode_stats first_pass_stats;
+};
+
+/* "fictitious": "auto". Decide which fictitious terms the scene p needs for
+ * relative accuracy `target` (in [1e-15, 0.1]) BEFORE the answer's run
+ * (p->fictitious and p->method/opt are ignored; nothing of p is changed):
+ *  1. terms identically zero in p's frame (no rotation: Coriolis, centrifugal
+ *     and Euler; dw/dt = 0: Euler; A = 0: translational; an inertial frame:
+ *     all) are not applicable: not carried, no estimate;
+ *  2. if any term is applicable, a cheap first pass integrates the scene with
+ *     every applicable term at the "draft" setting of mech_trajectory_choose
+ *     (1e-3 relative; at most 101 samples, same stop event) and records the
+ *     largest |a_term| of each term at every step end and sample, the largest
+ *     |r| (L) and |v| (V) and the duration T (t_end or the stop time). A 1e-3
+ *     error in the first pass changes these bounds by ~1e-3 relative, far
+ *     inside the safety factor, so the bound is honest;
+ *  3. each term is then judged by mech_term_effect_estimate with safety
+ *     MECH_TRAJECTORY_AUTO_SAFETY.
+ * The first pass uses `budget` (its steps are reported in m->first_pass_stats;
+ * the caller should give the answer's run what is left).
+ * Statuses: MECH_OK; MECH_EINVAL (target out of range, invalid p: those of
+ * mech_trajectory_integrate); MECH_EBUDGET / MECH_EDEADLINE /
+ * MECH_ECANCELLED / MECH_ENUMERIC / MECH_ENOMEM from the first pass. */
+enum mech_status mech_trajectory_model_select(const struct mech_trajectory_problem *p,
+                                              double target, const struct mech_budget *budget,
+                                              struct mech_trajectory_model *m,
+                                              struct mech_error *err);
 
 #endif

@@ -1,0 +1,917 @@
+/* ep_gr.c — general relativity (the notes' "A Little General Relativity",
+ * built as Hartle, "Gravity" ch. 9 and 11; Carroll ch. 5; Schutz ch. 11):
+ *   POST /v1/gr/schwarzschild — radii, clocks and red shift, circular orbits,
+ *     the GPS-style clock comparison, the effective potentials;
+ *   POST /v1/gr/geodesic — equatorial timelike and null geodesics with the
+ *     periapsis advance and the light deflection beside their exact values.
+ * The physics is core/schwarzschild.c and core/geodesic.c, in geometric units
+ * (M = 1); this file converts SI through GM/c^2 and GM/c^3. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "integrator_block.h"
+#include "mech/geodesic.h"
+#include "mech/schwarzschild.h"
+#include "trajectory_request.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+/* Constants (documented in the routes' descriptions). */
+#define GR_C 299792458.0           /* m/s, exact (SI definition) */
+#define GR_G 6.67430e-11           /* m^3 kg^-1 s^-2, CODATA 2018 */
+#define GR_GM_SUN 1.32712440018e20 /* m^3/s^2, IAU 2015 nominal / DE430 */
+#define GR_GM_EARTH 3.986004418e14 /* m^3/s^2, WGS 84 / IERS */
+#define GR_ARCSEC (180.0 * 3600.0 / M_PI)
+#define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
+
+/* clang-format off */
+#define GR_M_SCHEMA                                                                           \
+    "\"M\":{\"description\":\"the central mass: kg, or \\\"sun\\\" (GM = 1.32712440018e20 "  \
+    "m^3/s^2) or \\\"earth\\\" (GM = 3.986004418e14 m^3/s^2); a mass in kg uses G = "         \
+    "6.67430e-11. Required with units SI; optional with units geometric (then it only adds "  \
+    "the SI scale GM/c^2 to the answer).\",\"oneOf\":["                                      \
+    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e42},"                          \
+    "{\"enum\":[\"sun\",\"earth\"]}]}"
+#define GR_UNITS_SCHEMA                                                                       \
+    "\"units\":{\"enum\":[\"SI\",\"geometric\"],\"default\":\"SI\",\"description\":\"SI: "   \
+    "lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c = 1 "  \
+    "with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in GM/c, "   \
+    "speeds in c.\"}"
+#define GR_LEN(desc) \
+    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,\"description\":\"" desc "\"}"
+#define GR_OBJ(req, props) \
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[" req "],\"properties\":{" props "}}"
+#define GR_DIR                                                                                \
+    "\"radial_direction\":{\"enum\":[\"inward\",\"outward\"],\"default\":\"inward\","        \
+    "\"description\":\"sign of dr/dtau (dr/dlambda) at r0\"}"
+/* clang-format on */
+
+/* ---- units ------------------------------------------------------------------------ */
+
+struct gr_units {
+    int geometric;
+    int has_mass; /* GM known */
+    double GM;    /* m^3/s^2 (NaN when unknown) */
+    double len;   /* one length unit of the request in GM/c^2: m -> 1/(GM/c^2); geometric 1 */
+    double m;     /* GM/c^2 in m (NaN when unknown) */
+    double s;     /* GM/c^3 in s */
+};
+
+/* Parse M and units. Returns 0 after recording an error. */
+static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units *u)
+{
+    memset(u, 0, sizeof *u);
+    u->geometric = !strcmp(api_string(body, "units", "SI"), "geometric");
+    const json_t *M = json_object_get(body, "M");
+    u->GM = u->m = u->s = NAN;
+    if (M) {
+        if (json_is_string(M))
+            u->GM = !strcmp(json_string_value(M), "sun") ? GR_GM_SUN : GR_GM_EARTH;
+        else
+            u->GM = GR_G * json_number_value(M);
+        u->has_mass = 1;
+        u->m = u->GM / (GR_C * GR_C);
+        u->s = u->m / GR_C;
+        if (!(u->m > 0) || !isfinite(u->m)) {
+            api_call_domain(c, "/M", "GM/c^2 = %.6g m is not a usable length", u->m);
+            return 0;
+        }
+    } else if (!u->geometric) {
+        api_call_invalid(c, "/M",
+                         "M is required with units SI (a mass in kg, \"sun\" or \"earth\")");
+        return 0;
+    }
+    return 1;
+}
+
+/* request length (m or GM/c^2) -> GM/c^2 */
+static double gr_len_in(const struct gr_units *u, double x)
+{
+    return u->geometric ? x : x / u->m;
+}
+/* GM/c^2 -> answer length */
+static double gr_len_out(const struct gr_units *u, double r)
+{
+    return u->geometric ? r : r * u->m;
+}
+static double gr_time_in(const struct gr_units *u, double x)
+{
+    return u->geometric ? x : x / u->s;
+}
+static double gr_time_out(const struct gr_units *u, double t)
+{
+    return u->geometric ? t : t * u->s;
+}
+/* specific angular momentum: GM/c -> m^2/s is x GM/c = m c */
+static double gr_ang_in(const struct gr_units *u, double L)
+{
+    return u->geometric ? L : L / (u->m * GR_C);
+}
+static double gr_ang_out(const struct gr_units *u, double L)
+{
+    return u->geometric ? L : L * u->m * GR_C;
+}
+static double gr_speed_in(const struct gr_units *u, double v)
+{
+    return u->geometric ? v : v / GR_C;
+}
+
+static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "system", json_string(u->geometric ? "geometric" : "SI"));
+    json_object_set_new(j, "length", json_string(u->geometric ? "GM/c^2" : "m"));
+    json_object_set_new(j, "time", json_string(u->geometric ? "GM/c^3" : "s"));
+    json_object_set_new(j, "specific_angular_momentum",
+                        json_string(u->geometric ? "GM/c" : "m^2/s"));
+    json_object_set_new(j, "speed", json_string(u->geometric ? "c" : "m/s"));
+    json_object_set_new(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
+    json_object_set_new(j, "angle", json_string("rad"));
+    json_object_set_new(j, "c", api_real(c, GR_C));
+    if (u->has_mass) {
+        json_object_set_new(j, "GM", api_real(c, u->GM));
+        json_object_set_new(j, "GM_over_c2", api_real(c, u->m));
+        json_object_set_new(j, "GM_over_c3", api_real(c, u->s));
+    }
+    return j;
+}
+
+static const char *stability_name(enum mech_schw_stability s)
+{
+    switch (s) {
+    case MECH_SCHW_ORBIT_STABLE:
+        return "stable";
+    case MECH_SCHW_ORBIT_UNSTABLE:
+        return "unstable";
+    case MECH_SCHW_ORBIT_MARGINAL:
+        return "marginal";
+    default:
+        return "none";
+    }
+}
+
+/* ===================================================================================== */
+/* POST /v1/gr/schwarzschild                                                              */
+
+/* clang-format off */
+static const char schw_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{" GR_M_SCHEMA
+    "," GR_UNITS_SCHEMA ","
+    "\"r\":" GR_LEN("radius (Schwarzschild r: circumference / 2 pi) for the clocks and the "
+                    "circular orbit; > r_s") ","
+    "\"reference_r\":" GR_LEN("radius of a static reference clock (e.g. the ground: 6371000 m "
+                              "mean or 6378137 m equatorial for the Earth): compares it with a "
+                              "clock on a circular orbit at r (GPS). Needs r.") ","
+    "\"effective_potential\":" GR_OBJ(
+        "\"angular_momentum\"",
+        "\"angular_momentum\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,"
+        "\"description\":\"specific angular momentum L/m (m^2/s, or GM/c in geometric units)\"},"
+        "\"r_min\":" GR_LEN("first sample radius, >= r_s; default r_s") ","
+        "\"r_max\":" GR_LEN("last sample radius; default max(30 GM/c^2, 3 x the stable circular "
+                            "orbit)") ","
+        "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":10000,\"default\":200}")
+    "}}";
+/* clang-format on */
+
+static const char schw_description[] =
+    "The Schwarzschild geometry of a mass M (Hartle ch. 9, Carroll ch. 5): r_s = 2GM/c^2, the "
+    "photon sphere 3GM/c^2, the ISCO 6GM/c^2, the critical impact parameter 3 sqrt(3) GM/c^2. "
+    "With r: a static clock's rate dtau/dt = sqrt(1 - r_s/r) (Hartle eq. 9.17) and the red shift "
+    "of light sent from r to infinity z = 1/sqrt(1 - r_s/r) - 1 (eq. 9.18), both with their "
+    "deficits 1 - dtau/dt formed as x/(1 + sqrt(1 - x)) so GPS-size effects (1e-10) keep full "
+    "relative precision; the circular geodesic at r (none inside the photon sphere, unstable for "
+    "3 < r < 6 GM/c^2, marginal at 6, stable beyond): clock rate dtau/dt = sqrt(1 - 3GM/(c^2 r)), "
+    "E/(m c^2) = (1 - r_s/r)/sqrt(1 - 3GM/(c^2 r)), L/m = sqrt(GM r)/sqrt(1 - 3GM/(c^2 r)), the "
+    "speed a static observer measures sqrt(GM/(c^2 r - 2GM)) c, angular velocity dphi/dt = "
+    "sqrt(GM/r^3) and its periods. With reference_r: a static clock at reference_r (the ground; "
+    "the Earth's rotation, ~0.1 us/day at the equator, is left out) against a clock on the "
+    "circular orbit at r, relative to the reference clock: gravitational (static at r vs "
+    "reference), velocity (orbiting vs static at r) and net, as fractions and in microseconds "
+    "per day (86400 s of the reference clock), beside their first-order forms GM/c^2 (1/R - "
+    "1/r) and -GM/(2 c^2 r). GPS: M earth, reference_r 6371000, r 26561750 gives +45.7, -7.2 "
+    "and +38.5 us/day. effective_potential: samples of the massive potential in the E^2 "
+    "normalisation, (dr/dtau)^2/c^2 + V(r) = (E/mc^2)^2 with V = (1 - r_s/r)(1 + L^2/(c^2 r^2)) "
+    "(dimensionless; Hartle's V_eff of eq. 9.29 is (V - 1) c^2/2), and of the photon potential "
+    "W(r) = (1 - r_s/r)/r^2 (1/m^2 or (GM/c^2)^-2; (1/L^2)(dr/dlambda)^2 = 1/b^2 - W, Hartle eq. "
+    "11.10), with the extrema (circular orbits at r = (L^2/2GM)(1 +- sqrt(1 - 12 (GM/cL)^2)), "
+    "eq. 9.33; the photon maximum at 3GM/c^2). Constants: c = 299792458 m/s (exact), G = "
+    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440018e20, GM_earth = "
+    "3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
+    "units block says which.";
+
+static const char schw_example[] =
+    "{\"M\": \"earth\", \"r\": 26561750, \"reference_r\": 6371000, "
+    "\"effective_potential\": {\"angular_momentum\": 1e11, \"samples\": 5}}";
+
+static json_t *schwarzschild(struct api_call *c, const json_t *body)
+{
+    struct gr_units u;
+    if (!gr_units_read(c, body, &u)) return NULL;
+    struct mech_error e;
+    mech_error_clear(&e);
+    json_t *out = json_object();
+    json_object_set_new(out, "units", gr_units_json(c, &u));
+    json_object_set_new(out, "schwarzschild_radius",
+                        api_real(c, gr_len_out(&u, MECH_SCHW_HORIZON)));
+    json_object_set_new(out, "photon_sphere", api_real(c, gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
+    json_object_set_new(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
+    json_object_set_new(out, "critical_impact_parameter",
+                        api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
+
+    const json_t *rj = json_object_get(body, "r"), *refj = json_object_get(body, "reference_r");
+    if (refj && !rj) {
+        api_call_invalid(c, "/r", "reference_r compares with a circular orbit at r: give r");
+        json_decref(out);
+        return NULL;
+    }
+    if (rj) {
+        const double r = gr_len_in(&u, json_number_value(rj));
+        struct mech_schw_static s;
+        struct mech_schw_circular co;
+        if (mech_schw_static_clock(r, &s, &e) != MECH_OK ||
+            mech_schw_circular_orbit(r, &co, &e) != MECH_OK) {
+            api_call_domain(c, "/r",
+                            "r = %.17g is not outside the horizon r_s = %.17g: no static clock or "
+                            "orbit there",
+                            json_number_value(rj), gr_len_out(&u, 2.0));
+            json_decref(out);
+            return NULL;
+        }
+        json_t *a = json_object();
+        json_object_set_new(a, "r", api_real(c, json_number_value(rj))); /* echoed exactly */
+        json_object_set_new(a, "r_over_rs", api_real(c, r / 2.0));
+        json_t *st = json_object();
+        json_object_set_new(st, "clock_rate", api_real(c, s.rate));
+        json_object_set_new(st, "clock_rate_deficit", api_real(c, s.rate_deficit));
+        json_object_set_new(st, "redshift", api_real(c, s.redshift));
+        json_object_set_new(a, "static", st);
+        json_t *cj = json_object();
+        json_object_set_new(cj, "exists", json_boolean(co.stability != MECH_SCHW_ORBIT_NONE));
+        json_object_set_new(cj, "stability", json_string(stability_name(co.stability)));
+        if (co.stability != MECH_SCHW_ORBIT_NONE) {
+            json_object_set_new(cj, "clock_rate", api_real(c, co.rate));
+            json_object_set_new(cj, "clock_rate_deficit", api_real(c, co.rate_deficit));
+            json_object_set_new(cj, "energy", api_real(c, co.energy));
+            json_object_set_new(cj, "angular_momentum",
+                                api_real(c, gr_ang_out(&u, co.angular_momentum)));
+            json_object_set_new(cj, "local_speed_over_c", api_real(c, co.local_speed));
+            json_object_set_new(cj, "angular_velocity",
+                                api_real(c, co.omega / gr_time_out(&u, 1.0)));
+            json_object_set_new(cj, "period_coordinate", api_real(c, gr_time_out(&u, co.period_t)));
+            json_object_set_new(cj, "period_proper", api_real(c, gr_time_out(&u, co.period_tau)));
+        } else {
+            json_object_set_new(cj, "why",
+                                json_string("no circular geodesic at or inside the photon "
+                                            "sphere r = 3GM/c^2"));
+        }
+        json_object_set_new(a, "circular_orbit", cj);
+        json_object_set_new(out, "at_r", a);
+        if (refj) {
+            const double R = gr_len_in(&u, json_number_value(refj));
+            struct mech_schw_clock_compare cc;
+            enum mech_status st2 = mech_schw_clock_compare(R, r, &cc, &e);
+            if (st2 != MECH_OK) {
+                api_call_fail_core(c, st2, &e, "");
+                json_decref(out);
+                return NULL;
+            }
+            const double day = 86400e6;
+            json_t *k = json_object();
+            json_object_set_new(k, "reference", json_string("static clock at reference_r"));
+            json_object_set_new(k, "clock", json_string("clock on the circular orbit at r"));
+            json_object_set_new(k, "reference_r", api_real(c, json_number_value(refj)));
+            json_object_set_new(k, "r", api_real(c, json_number_value(rj)));
+            json_t *f = json_object();
+            json_object_set_new(f, "gravitational", api_real(c, cc.gravitational));
+            json_object_set_new(f, "velocity", api_real(c, cc.velocity));
+            json_object_set_new(f, "net", api_real(c, cc.net));
+            json_object_set_new(k, "fractional", f);
+            json_t *d = json_object();
+            json_object_set_new(d, "gravitational", api_real(c, cc.gravitational * day));
+            json_object_set_new(d, "velocity", api_real(c, cc.velocity * day));
+            json_object_set_new(d, "net", api_real(c, cc.net * day));
+            json_object_set_new(k, "microseconds_per_day", d);
+            json_t *fo = json_object();
+            json_object_set_new(fo, "gravitational", api_real(c, cc.first_order_gravitational));
+            json_object_set_new(fo, "velocity", api_real(c, cc.first_order_velocity));
+            json_object_set_new(
+                fo, "net", api_real(c, cc.first_order_gravitational + cc.first_order_velocity));
+            json_object_set_new(
+                fo, "microseconds_per_day_net",
+                api_real(c, (cc.first_order_gravitational + cc.first_order_velocity) * day));
+            json_object_set_new(k, "first_order", fo);
+            json_object_set_new(k, "left_out",
+                                json_string("the reference's own motion (the Earth's rotation: "
+                                            "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
+                                            "other masses, orbit eccentricity"));
+            json_object_set_new(out, "clock_comparison", k);
+        }
+    }
+
+    const json_t *ej = json_object_get(body, "effective_potential");
+    if (ej) {
+        const double L = gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
+        double ru, rs;
+        int ne = mech_schw_veff_extrema(L, &ru, &rs);
+        const json_t *a = json_object_get(ej, "r_min"), *b = json_object_get(ej, "r_max");
+        /* sampled evenly in the request's length unit, so given ends are echoed exactly */
+        double rmin = a ? json_number_value(a) : gr_len_out(&u, 2.0);
+        double rmax = b ? json_number_value(b) : gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
+        if (!(gr_len_in(&u, rmin) >= 2.0)) {
+            api_call_domain(c, "/effective_potential/r_min",
+                            "r_min must be at least r_s = %.17g (outside the horizon)",
+                            gr_len_out(&u, 2.0));
+            json_decref(out);
+            return NULL;
+        }
+        if (!(rmax > rmin) || !isfinite(rmax)) {
+            api_call_invalid(c, "/effective_potential/r_max", "r_max must be above r_min");
+            json_decref(out);
+            return NULL;
+        }
+        const size_t n = (size_t)api_number(ej, "samples", 200);
+        double *rr = malloc(n * sizeof *rr), *vm = malloc(n * sizeof *vm),
+               *vp = malloc(n * sizeof *vp);
+        double *v1 = malloc(n * sizeof *v1);
+        if (!rr || !vm || !vp || !v1) {
+            free(rr);
+            free(vm);
+            free(vp);
+            free(v1);
+            mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory");
+            api_call_fail_core(c, MECH_ENOMEM, &e, "");
+            json_decref(out);
+            return NULL;
+        }
+        const double inv_len2 = 1.0 / (gr_len_out(&u, 1.0) * gr_len_out(&u, 1.0));
+        for (size_t i = 0; i < n; i++) {
+            rr[i] = i + 1 == n ? rmax : rmin + (rmax - rmin) * (double)i / (double)(n - 1);
+            const double r = gr_len_in(&u, rr[i]), Lr = L / r;
+            vm[i] = mech_schw_veff_massive(r, L);
+            v1[i] = -2.0 / r + Lr * Lr - 2.0 * Lr * Lr / r; /* V - 1 without cancellation */
+            vp[i] = mech_schw_veff_photon(r) * inv_len2;
+        }
+        json_t *v = json_object();
+        json_object_set_new(v, "angular_momentum", api_real(c, gr_ang_out(&u, L)));
+        json_object_set_new(v, "massive_normalisation",
+                            json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
+                                        "L^2/(c^2 r^2)), dimensionless"));
+        json_object_set_new(v, "photon_normalisation",
+                            json_string(u.geometric ? "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
+                                                      "r_s/r)/r^2, (GM/c^2)^-2"
+                                                    : "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
+                                                      "r_s/r)/r^2, 1/m^2"));
+        json_object_set_new(v, "r", api_reals(c, rr, n));
+        json_object_set_new(v, "massive", api_reals(c, vm, n));
+        json_object_set_new(v, "massive_minus_one", api_reals(c, v1, n));
+        json_object_set_new(v, "photon", api_reals(c, vp, n));
+        json_t *x = json_object();
+        json_object_set_new(x, "count", json_integer(ne));
+        json_object_set_new(x, "unstable_r", ne ? api_real(c, gr_len_out(&u, ru)) : json_null());
+        json_object_set_new(x, "unstable_V",
+                            ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
+        json_object_set_new(x, "stable_r", ne ? api_real(c, gr_len_out(&u, rs)) : json_null());
+        json_object_set_new(x, "stable_V",
+                            ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
+        json_object_set_new(v, "massive_extrema", x);
+        json_t *pm = json_object();
+        json_object_set_new(pm, "r", api_real(c, gr_len_out(&u, 3.0)));
+        json_object_set_new(pm, "W", api_real(c, inv_len2 / 27.0));
+        json_object_set_new(v, "photon_maximum", pm);
+        json_object_set_new(out, "effective_potential", v);
+        free(rr);
+        free(vm);
+        free(vp);
+        free(v1);
+    }
+    return out;
+}
+
+const struct api_route api_route_gr_schwarzschild = {
+    "POST",
+    "/v1/gr/schwarzschild",
+    "Schwarzschild radius, clock rates and red shift, circular orbits and their stability, "
+    "ISCO, photon sphere, effective potentials; GPS-style clock comparison",
+    schw_description,
+    schw_schema,
+    schw_example,
+    schwarzschild,
+    0,
+};
+
+/* ===================================================================================== */
+/* POST /v1/gr/geodesic                                                                   */
+
+/* clang-format off */
+static const char geo_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"kind\",\"initial\"],"
+    "\"properties\":{" GR_M_SCHEMA "," GR_UNITS_SCHEMA ","
+    "\"kind\":{\"enum\":[\"timelike\",\"null\"],\"description\":\"timelike: a massive "
+    "particle (proper time tau); null: light (affine parameter lambda, normalised to "
+    "dt/dlambda -> 1 far away)\"},"
+    "\"r0\":" GR_LEN("start radius (not with the orbit forms, which start at periapsis)") ","
+    "\"phi0\":{\"type\":\"number\",\"minimum\":-1000,\"maximum\":1000,\"default\":0,"
+    "\"description\":\"rad\"},"
+    "\"initial\":{\"description\":\"one of: conserved energy and angular momentum "
+    "(timelike); the velocity measured by a static observer at r0; an impact parameter "
+    "(null); the turning points or a, e of a bound orbit (timelike, start at periapsis)\","
+    "\"oneOf\":["
+    GR_OBJ("\"energy\",\"angular_momentum\"",
+           "\"energy\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e6,"
+           "\"description\":\"E/(m c^2), specific energy at infinity (1 - E is the binding)\"},"
+           "\"angular_momentum\":{\"type\":\"number\",\"minimum\":-1e30,\"maximum\":1e30,"
+           "\"description\":\"L/m, m^2/s (GM/c geometric); the sign is the sense of phi\"},"
+           GR_DIR) ","
+    GR_OBJ("\"local_velocity\"",
+           "\"local_velocity\":" GR_OBJ("\"radial\",\"tangential\"",
+               "\"radial\":{\"type\":\"number\",\"minimum\":-1e9,\"maximum\":1e9},"
+               "\"tangential\":{\"type\":\"number\",\"minimum\":-1e9,\"maximum\":1e9}")) ","
+    GR_OBJ("\"impact_parameter\"",
+           "\"impact_parameter\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e20,"
+           "\"description\":\"b = L/E (m, GM/c^2 geometric); light only\"}," GR_DIR) ","
+    GR_OBJ("\"periapsis\",\"apoapsis\"",
+           "\"periapsis\":" GR_LEN("r_p") ",\"apoapsis\":" GR_LEN("r_a >= r_p")) ","
+    GR_OBJ("\"semi_major_axis\",\"eccentricity\"",
+           "\"semi_major_axis\":" GR_LEN("a = (r_p + r_a)/2") ","
+           "\"eccentricity\":{\"type\":\"number\",\"minimum\":0,\"exclusiveMaximum\":1,"
+           "\"description\":\"e = (r_a - r_p)/(r_a + r_p)\"}")
+    "]},"
+    "\"tau_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,"
+    "\"description\":\"timelike: proper time to integrate (s, GM/c^3 geometric)\"},"
+    "\"orbits\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":100000,\"description\":"
+    "\"timelike bound orbits: integrate this many radial periods (exact, by quadrature)\"},"
+    "\"lambda_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,"
+    "\"description\":\"null: affine parameter to integrate (s, GM/c^3 geometric); default "
+    "1.02 x the straight-line path from r0 to r_escape + 600 pi GM/c^3 (100 loops of the "
+    "photon sphere)\"},"
+    "\"r_escape\":" GR_LEN("escape when r passes it moving outward; default 2 r0 (2 r_a for "
+                           "bound orbits)") ","
+    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":201},"
+    "\"constraint_bound\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.5,"
+    "\"default\":1e-3,\"description\":\"stop with a numerical-failure error when the "
+    "constraint g(u,u) = -1 (0 for light) drifts by more than this, relative to the size of "
+    "its terms\"},"
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
+    "\"cost\":{\"type\":\"boolean\",\"default\":true}"
+    "}}";
+/* clang-format on */
+
+static const char geo_description[] =
+    "An equatorial geodesic of the Schwarzschild metric (Hartle §9.2-9.3, 11.1; Carroll §5.4). "
+    "Massive (kind timelike, proper time tau) or light (kind null, affine lambda with E = 1 so "
+    "lambda -> t far away; given in time units). Initial data: {energy, angular_momentum, "
+    "radial_direction} (E/(mc^2) and L/m, timelike), {local_velocity: {radial, tangential}} "
+    "measured by a static observer at r0 (m/s or c; for light only the direction counts), "
+    "{impact_parameter, radial_direction} (light), or a bound orbit {periapsis, apoapsis} or "
+    "{semi_major_axis, eccentricity} (r_p = a(1 - e), r_a = a(1 + e): the turning points; "
+    "start at periapsis; then no r0). Integrated, in a form without turning-point "
+    "singularities, as the second-order radial equation d^2r/dtau^2 = -GM/r^2 + L^2/r^3 - "
+    "3GM L^2/(c^2 r^4) (no GM/r^2 term for light) with dphi/dtau = L/r^2 and dt/dtau = "
+    "E/(1 - r_s/r), on a state scaled to O(1) (r/r0 and tau in units of sqrt(r0^3/GM), or "
+    "lambda in r0/c), by the shared integrator block (first-order methods; accuracy presets "
+    "pick rk8pd). The constraint g(u,u) = -1 (0) is checked at every step: "
+    "diagnostics.constraint reports its largest drift relative to the size of its terms, and "
+    "past constraint_bound the run stops with a numerical-failure problem naming "
+    "/constraint_bound. Stops at capture (r falls to r_s (1 + 1e-6): captured true) or escape "
+    "(r passes r_escape outward). Answers samples of tau (or lambda), t, r, phi; "
+    "for bound orbits the periapses located by the driver's event root-finding on dr/dtau = 0 "
+    "and precession: the measured advance per orbit (phi between the first and last periapsis "
+    "over the orbits between, minus 2 pi) beside the exact one, 4K(k)/sqrt(2(u3 - u1)) - 2 pi "
+    "with the roots u1 < u2 < u3 of (du/dphi)^2 = 2(u - u1)(u - u2)(u - u3) in u = GM/(c^2 r) "
+    "(Byrd & Friedman 233.00; formed without cancellation), the same by an independent "
+    "quadrature, and the 1PN 6 pi GM/(c^2 a (1 - e^2)); in SI also per Julian century of "
+    "coordinate time (arcsec). For light that came in and escaped, deflection: measured "
+    "(integrated Delta phi plus the asymptotic tails beyond r0 and r_escape by quadrature, "
+    "minus pi) beside the exact 2 int_0^{u_max} du / sqrt(1/b^2 - u^2 (1 - 2u)) - pi by a "
+    "quadrature without cancellation (exact) and as an elliptic integral (exact_elliptic), "
+    "4GM/(c^2 b) and the second order + 15 pi (GM/c^2 "
+    "b)^2/4. Typed errors: r0 at or inside the horizon (/r0), E^2 below V(r0) (/initial/"
+    "energy), a photon that cannot be at r0 (/initial/impact_parameter), a speed >= c "
+    "(/initial/local_velocity). Constants as in /v1/gr/schwarzschild.";
+
+static const char geo_example[] =
+    "{\"M\": \"sun\", \"kind\": \"timelike\", \"initial\": {\"semi_major_axis\": 5.7909050e10, "
+    "\"eccentricity\": 0.20563593}, \"orbits\": 3, \"samples\": 5, "
+    "\"integrator\": {\"accuracy\": \"precise\"}}";
+
+static const char *class_name(enum mech_geodesic_class k)
+{
+    switch (k) {
+    case MECH_GEODESIC_BOUND:
+        return "bound";
+    case MECH_GEODESIC_UNBOUND:
+        return "unbound";
+    case MECH_GEODESIC_CIRCULAR:
+        return "circular";
+    default:
+        return "plunge";
+    }
+}
+
+/* map a core init error's param onto the request */
+static json_t *init_fail(struct api_call *c, enum mech_status st, struct mech_error *e, int ae)
+{
+    char ptr[128];
+    if (!strcmp(e->param, "r0"))
+        snprintf(ptr, sizeof ptr, "/r0");
+    else if (ae && (!strcmp(e->param, "periapsis") || !strcmp(e->param, "apoapsis")))
+        snprintf(ptr, sizeof ptr, "/initial/semi_major_axis");
+    else
+        snprintf(ptr, sizeof ptr, "/initial/%s", e->param);
+    e->param[0] = 0;
+    return api_call_fail_core(c, st, e, ptr);
+}
+
+static json_t *geodesic(struct api_call *c, const json_t *body)
+{
+    struct gr_units u;
+    if (!gr_units_read(c, body, &u)) return NULL;
+    const int photon = !strcmp(api_string(body, "kind", "timelike"), "null");
+    const json_t *ini = json_object_get(body, "initial");
+    const json_t *r0j = json_object_get(body, "r0");
+    const int form_energy = json_object_get(ini, "energy") != NULL;
+    const int form_local = json_object_get(ini, "local_velocity") != NULL;
+    const int form_impact = json_object_get(ini, "impact_parameter") != NULL;
+    const int form_turn = json_object_get(ini, "periapsis") != NULL;
+    const int form_ae = json_object_get(ini, "semi_major_axis") != NULL;
+    const int orbit_form = form_turn || form_ae;
+    if (photon && (form_energy || orbit_form)) {
+        api_call_invalid(c, form_energy ? "/initial/energy" : "/initial",
+                         "light (kind null) is given by impact_parameter or local_velocity");
+        return NULL;
+    }
+    if (!photon && form_impact) {
+        api_call_invalid(c, "/initial/impact_parameter",
+                         "impact_parameter is for light (kind null); a massive particle takes "
+                         "energy and angular_momentum, local_velocity or an orbit");
+        return NULL;
+    }
+    if (orbit_form && r0j) {
+        api_call_invalid(c, "/r0",
+                         "an orbit given by its turning points starts at periapsis: "
+                         "omit r0");
+        return NULL;
+    }
+    if (!orbit_form && !r0j) {
+        api_call_invalid(c, "/r0", "r0 (the start radius) is required");
+        return NULL;
+    }
+    const json_t *tj = json_object_get(body, "tau_end"), *oj = json_object_get(body, "orbits"),
+                 *lj = json_object_get(body, "lambda_end");
+    if (photon && (tj || oj)) {
+        api_call_invalid(c, tj ? "/tau_end" : "/orbits",
+                         "light has no proper time: give lambda_end (or nothing)");
+        return NULL;
+    }
+    if (!photon && lj) {
+        api_call_invalid(c, "/lambda_end", "a massive particle runs in proper time: tau_end");
+        return NULL;
+    }
+    if (!photon && !!tj == !!oj) {
+        api_call_invalid(c, "/tau_end", "give exactly one of tau_end and orbits");
+        return NULL;
+    }
+
+    struct mech_error e;
+    mech_error_clear(&e);
+    struct mech_geodesic_init in;
+    const double phi0 = api_number(body, "phi0", 0);
+    const double r0 = r0j ? gr_len_in(&u, json_number_value(r0j)) : NAN;
+    enum mech_status st;
+    if (form_energy) {
+        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
+                                       gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
+                                       &in, &e);
+    } else if (form_local) {
+        const json_t *lv = json_object_get(ini, "local_velocity");
+        st = mech_geodesic_init_local(photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE, r0,
+                                      phi0, gr_speed_in(&u, api_number(lv, "radial", 0)),
+                                      gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
+    } else if (form_impact) {
+        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        st = mech_geodesic_init_impact(
+            r0, phi0, gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
+    } else {
+        double rp, ra;
+        if (form_turn) {
+            rp = gr_len_in(&u, api_number(ini, "periapsis", 1));
+            ra = gr_len_in(&u, api_number(ini, "apoapsis", 1));
+        } else {
+            double a = gr_len_in(&u, api_number(ini, "semi_major_axis", 1));
+            double ec = api_number(ini, "eccentricity", 0);
+            rp = a * (1.0 - ec);
+            ra = a * (1.0 + ec);
+        }
+        st = mech_geodesic_init_orbit(rp, ra, phi0, &in, &e);
+    }
+    if (st != MECH_OK) return init_fail(c, st, &e, form_ae);
+
+    /* classification and exact references */
+    enum mech_geodesic_class cls = MECH_GEODESIC_PLUNGE;
+    struct mech_geodesic_bound bd = {NAN, NAN, NAN};
+    int bound = 0;
+    double adv_exact = NAN, adv_quad = NAN, Ttau = NAN, Tt = NAN;
+    if (!photon) {
+        if ((st = mech_geodesic_classify(&in, &cls, &bd, &e)) != MECH_OK)
+            return api_call_fail_core(c, st, &e, "");
+        bound = cls == MECH_GEODESIC_BOUND;
+        if (bound) {
+            if ((st = mech_geodesic_precession_exact(&bd, &adv_exact, &e)) != MECH_OK ||
+                (st = mech_geodesic_precession_quadrature(&bd, in.E, in.L, &adv_quad, &Ttau, &Tt,
+                                                          &e)) != MECH_OK)
+                return api_call_fail_core(c, st, &e, "");
+        }
+    }
+    if (oj && !bound) {
+        api_call_invalid(c, "/orbits",
+                         "orbits counts radial periods of a bound orbit; this motion is %s: give "
+                         "tau_end",
+                         class_name(cls));
+        return NULL;
+    }
+
+    struct mech_geodesic_problem p;
+    memset(&p, 0, sizeof p);
+    p.init = in;
+    const double T = mech_geodesic_time_unit(&in);
+    const double rs_esc = json_object_get(body, "r_escape")
+                              ? gr_len_in(&u, api_number(body, "r_escape", 1))
+                              : 2.0 * (bound ? 1.0 / bd.u1 : in.r0);
+    p.r_escape = rs_esc;
+    if (!(rs_esc > in.r0)) {
+        api_call_invalid(c, "/r_escape", "r_escape must be beyond the start radius %.17g",
+                         gr_len_out(&u, in.r0));
+        return NULL;
+    }
+    if (photon) {
+        /* default: the straight-line path to r_escape, 2 % longer (the Shapiro delay is
+         * ~4GM/c^2 ln(r/b)), plus 100 loops of the photon sphere for near-critical light */
+        const double b = fabs(in.L), r02 = fmax(0.0, (in.r0 - b) * (in.r0 + b));
+        const double re2 = fmax(0.0, (rs_esc - b) * (rs_esc + b));
+        const double path = in.rdot0 <= 0 ? sqrt(r02) + sqrt(re2) : sqrt(re2) - sqrt(r02);
+        p.param_end = lj ? gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
+    } else
+        p.param_end = tj ? gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
+    p.constraint_bound = api_number(body, "constraint_bound", 1e-3);
+    if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
+    p.samples = (size_t)api_number(body, "samples", 201);
+    if (!isfinite(p.param_end) || !(p.param_end / T > 0)) {
+        api_call_invalid(c, photon ? "/lambda_end" : "/tau_end",
+                         "the run's length is not representable");
+        return NULL;
+    }
+
+    /* integrator: the shared block; second-order methods do not apply */
+    const json_t *ib = json_object_get(body, "integrator");
+    const char *mname = ib ? api_string(ib, "method", NULL) : NULL;
+    if (mname) {
+        const struct mech_integrator *mm = mech_ode_method_find(mname);
+        if (mm && mech_ode_method_describe(mm).second_order) {
+            api_call_invalid(
+                c, "/integrator/method",
+                "%s needs q'' = a(t, q) with q' = v; the geodesic's state (r, dr/dtau, "
+                "phi, t) has phi and t as quadratures, so use rk8pd, rkck, rkf45 or "
+                "msbdf (rtol/atol), or rk4, gauss4, gauss6 (symplectic) or euler (dt), "
+                "or an accuracy preset",
+                mname);
+            return NULL;
+        }
+    }
+    struct api_integrator_choice ch;
+    if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &ch)) return NULL;
+    p.method = ch.method;
+    p.opt = ch.opt;
+    if (ch.opt.dt > 0) p.opt.dt = gr_time_in(&u, ch.opt.dt) / T;
+
+    const size_t n = p.samples;
+    double *sp = malloc(n * sizeof *sp), *st_ = malloc(n * sizeof *st_),
+           *sr = malloc(n * sizeof *sr), *sf = malloc(n * sizeof *sf);
+    json_t *out = NULL;
+    if (!sp || !st_ || !sr || !sf) {
+        mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for %zu samples", n);
+        api_call_fail_core(c, MECH_ENOMEM, &e, "");
+        goto done;
+    }
+    struct mech_geodesic_result r;
+    memset(&r, 0, sizeof r);
+    r.param = sp;
+    r.t = st_;
+    r.r = sr;
+    r.phi = sf;
+    st = mech_geodesic_integrate(&p, &c->budget, &r, &e);
+    if (st != MECH_OK) {
+        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
+            e.progress.t_reached = gr_time_out(&u, e.progress.t_reached);
+            e.progress.t_target = gr_time_out(&u, e.progress.t_target);
+        }
+        if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
+            api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
+            if (!c->extra) c->extra = json_object();
+            json_t *pr = json_object();
+            json_object_set_new(pr, "samples_written", json_integer((json_int_t)r.n_samples));
+            json_object_set_new(pr, "steps", json_integer(r.stats.steps));
+            json_object_set_new(c->extra, "progress", pr);
+        } else {
+            if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
+                char ptr[128];
+                snprintf(ptr, sizeof ptr, "/%s", e.param);
+                e.param[0] = 0;
+                api_call_fail_core(c, st, &e, ptr);
+            } else {
+                api_call_fail_core(c, st, &e, "");
+            }
+        }
+        goto done;
+    }
+
+    /* ---- the answer ---- */
+    out = json_object();
+    json_object_set_new(out, "units", gr_units_json(c, &u));
+    json_object_set_new(out, "kind", json_string(photon ? "null" : "timelike"));
+    json_t *cons = json_object();
+    if (photon) {
+        json_object_set_new(cons, "impact_parameter", api_real(c, gr_len_out(&u, in.L)));
+        json_object_set_new(cons, "normalisation",
+                            json_string("E = 1: dt/dlambda = 1/(1 - r_s/r)"));
+    } else {
+        json_object_set_new(cons, "energy", api_real(c, in.E));
+        json_object_set_new(cons, "energy_minus_one", api_real(c, in.E2m1 / (1.0 + in.E)));
+        json_object_set_new(cons, "angular_momentum", api_real(c, gr_ang_out(&u, in.L)));
+    }
+    json_object_set_new(out, "conserved", cons);
+    json_object_set_new(out, "r0", api_real(c, gr_len_out(&u, in.r0)));
+    /* light: b > 3 sqrt 3 outside the photon sphere turns (scatter, or escapes if it
+     * starts outward); inside it, it turns back into the hole; b < 3 sqrt 3 falls in
+     * unless it starts outward */
+    const int wide = fabs(in.L) > MECH_SCHW_CRITICAL_IMPACT;
+    const int scatter = photon && wide && in.r0 > 3.0;
+    const char *light = scatter                   ? (in.rdot0 <= 0 ? "scatter" : "escape")
+                        : (wide || in.rdot0 <= 0) ? "capture"
+                                                  : "escape";
+    if (photon)
+        json_object_set_new(out, "motion", json_string(light));
+    else
+        json_object_set_new(out, "motion", json_string(class_name(cls)));
+    if (bound) {
+        const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
+        json_t *o = json_object();
+        json_object_set_new(o, "periapsis", api_real(c, gr_len_out(&u, rp)));
+        json_object_set_new(o, "apoapsis", api_real(c, gr_len_out(&u, ra)));
+        json_object_set_new(o, "semi_major_axis", api_real(c, gr_len_out(&u, 0.5 * (rp + ra))));
+        json_object_set_new(o, "eccentricity", api_real(c, (ra - rp) / (ra + rp)));
+        json_object_set_new(o, "radial_period_proper", api_real(c, gr_time_out(&u, Ttau)));
+        json_object_set_new(o, "radial_period_coordinate", api_real(c, gr_time_out(&u, Tt)));
+        json_object_set_new(out, "orbit", o);
+    }
+    const size_t ns = r.n_samples;
+    for (size_t i = 0; i < ns; i++) {
+        sp[i] = gr_time_out(&u, sp[i]);
+        st_[i] = gr_time_out(&u, st_[i]);
+        sr[i] = gr_len_out(&u, sr[i]);
+    }
+    json_t *sj = json_object();
+    json_object_set_new(sj, photon ? "lambda" : "tau", api_reals(c, sp, ns));
+    json_object_set_new(sj, "t", api_reals(c, st_, ns));
+    json_object_set_new(sj, "r", api_reals(c, sr, ns));
+    json_object_set_new(sj, "phi", api_reals(c, sf, ns));
+    json_object_set_new(out, "samples", sj);
+    json_t *en = json_object();
+    json_object_set_new(en, "reason",
+                        json_string(r.captured  ? "captured"
+                                    : r.escaped ? "escaped"
+                                    : photon    ? "lambda_end"
+                                                : "tau_end"));
+    json_object_set_new(en, "captured", json_boolean(r.captured));
+    json_object_set_new(en, "escaped", json_boolean(r.escaped));
+    json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, gr_time_out(&u, r.end_param)));
+    json_object_set_new(en, "t", api_real(c, gr_time_out(&u, r.end_t)));
+    json_object_set_new(en, "r", api_real(c, gr_len_out(&u, r.end_r)));
+    json_object_set_new(en, "phi", api_real(c, r.end_phi));
+    if (r.captured)
+        json_object_set_new(
+            en, "capture_radius",
+            api_real(c, gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
+    if (r.escaped) json_object_set_new(en, "r_escape", api_real(c, gr_len_out(&u, rs_esc)));
+    json_object_set_new(out, "end", en);
+
+    if (bound) {
+        const double a = 0.5 * (1.0 / bd.u1 + 1.0 / bd.u2);
+        const double first = 3.0 * M_PI * (bd.u1 + bd.u2); /* 6 pi M/(a(1-e^2)) */
+        json_t *pj = json_object();
+        json_object_set_new(pj, "periapses_found", json_integer(r.n_periapses));
+        json_object_set_new(pj, "orbits_measured",
+                            json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
+        int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
+        json_object_set_new(pj, "measured_per_orbit",
+                            has ? api_real(c, r.measured_advance) : json_null());
+        json_object_set_new(pj, "exact_per_orbit", api_real(c, adv_exact));
+        json_object_set_new(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
+        json_object_set_new(pj, "first_order_per_orbit", api_real(c, first));
+        json_object_set_new(pj, "measured_minus_exact",
+                            has ? api_real(c, r.measured_advance - adv_exact) : json_null());
+        json_object_set_new(pj, "relative_error",
+                            has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact)
+                                : json_null());
+        json_object_set_new(
+            pj, "first_order_formula",
+            json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
+        (void)a;
+        if (!u.geometric) {
+            const double per_century = GR_CENTURY_S / gr_time_out(&u, Tt) * GR_ARCSEC;
+            json_t *ac = json_object();
+            json_object_set_new(ac, "measured",
+                                has ? api_real(c, r.measured_advance * per_century) : json_null());
+            json_object_set_new(ac, "exact", api_real(c, adv_exact * per_century));
+            json_object_set_new(ac, "first_order", api_real(c, first * per_century));
+            json_object_set_new(ac, "orbits_per_century", api_real(c, per_century / GR_ARCSEC));
+            json_object_set_new(pj, "arcsec_per_century", ac);
+        }
+        json_object_set_new(out, "precession", pj);
+    }
+    if (scatter) {
+        const double b = fabs(in.L);
+        double dx, dq, rmin;
+        if ((st = mech_geodesic_deflection_exact(b, &dx, &rmin, &e)) != MECH_OK ||
+            (st = mech_geodesic_deflection_quadrature(b, &dq, &e)) != MECH_OK) {
+            json_decref(out);
+            out = NULL;
+            api_call_fail_core(c, st, &e, "");
+            goto done;
+        }
+        const int has = isfinite(r.measured_deflection);
+        json_t *dj = json_object();
+        json_object_set_new(dj, "measured", has ? api_real(c, r.measured_deflection) : json_null());
+        if (!has)
+            json_object_set_new(dj, "why_not_measured",
+                                json_string("measured only for light that starts inward and "
+                                            "escapes within the run"));
+        /* the quadrature keeps full relative precision for tiny deflections; the
+         * elliptic form loses ~eps pi / delta to the final "- pi" */
+        json_object_set_new(dj, "exact", api_real(c, dq));
+        /* the elliptic form ends in "- pi": ~4e-16 pi / delta relative */
+        const double ell_prec = 4e-16 * M_PI / dq;
+        json_object_set_new(dj, "exact_elliptic", ell_prec < 1e-3 ? api_real(c, dx) : json_null());
+        json_object_set_new(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
+        json_object_set_new(dj, "exact_method",
+                            json_string("exact: quadrature of the deflection integral in a form "
+                                        "without cancellation; exact_elliptic: Byrd & Friedman "
+                                        "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
+                                        "(relative precision ~4e-16 pi / delta; null beyond "
+                                        "1e-3)"));
+        json_object_set_new(dj, "first_order", api_real(c, 4.0 / b));
+        json_object_set_new(dj, "second_order", api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
+        json_object_set_new(dj, "measured_minus_exact",
+                            has ? api_real(c, r.measured_deflection - dq) : json_null());
+        json_object_set_new(dj, "closest_approach", api_real(c, gr_len_out(&u, rmin)));
+        json_t *as = json_object();
+        json_object_set_new(as, "measured",
+                            has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
+        json_object_set_new(as, "exact", api_real(c, dq * GR_ARCSEC));
+        json_object_set_new(as, "first_order", api_real(c, 4.0 / b * GR_ARCSEC));
+        json_object_set_new(dj, "arcsec", as);
+        json_object_set_new(out, "deflection", dj);
+    }
+
+    json_t *d = json_object();
+    api_integrator_block_stats(c, d, &ch, &r.stats);
+    json_t *cj = json_object();
+    json_object_set_new(cj, "definition",
+                        json_string(photon
+                                        ? "g(k,k) = 0 with E = 1: residual (dr/dlambda)^2 + (1 - "
+                                          "r_s/r) L^2/r^2 - E^2"
+                                        : "g(u,u) = -c^2: residual (dr/dtau)^2/c^2 + V(r) - E^2"));
+    json_object_set_new(cj, "bound", api_real(c, p.constraint_bound));
+    json_object_set_new(cj, "max_relative", api_real(c, r.constraint_max_relative));
+    json_object_set_new(cj, "final_relative", api_real(c, r.constraint_final_relative));
+    json_object_set_new(cj, photon ? "max_abs_g_kk" : "max_abs_g_uu_plus_1",
+                        api_real(c, r.constraint_max_abs));
+    json_object_set_new(d, "constraint", cj);
+    json_object_set_new(d, "time_unit_of_the_scaled_state", api_real(c, gr_time_out(&u, T)));
+    json_object_set_new(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new(out, "diagnostics", d);
+    json_object_set_new(out, "cost", json_object());
+done:
+    free(sp);
+    free(st_);
+    free(sr);
+    free(sf);
+    return out;
+}
+
+const struct api_route api_route_gr_geodesic = {
+    "POST",
+    "/v1/gr/geodesic",
+    "Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light "
+    "deflection measured beside the exact values and 1PN formulas",
+    geo_description,
+    geo_schema,
+    geo_example,
+    geodesic,
+    1,
+};

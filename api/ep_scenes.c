@@ -1,0 +1,567 @@
+/* ep_scenes.c — POST /v1/scenes/falling-object, /vertical-shot, /cannonball
+ * and /rotating-table: the notes' chapter-1 scenes (core/scenes.c), each
+ * answering the numerical result (fictitious terms chosen by "auto" at the
+ * requested accuracy) beside the notes' first-order formula, their
+ * difference and the second-order terms the formula neglects. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/scenes.h"
+#include "mech/trajectory.h"
+#include "trajectory_request.h"
+
+static const double ep_pi = 3.14159265358979323846;
+
+/* ---- shared schema pieces ---------------------------------------------------- */
+
+#define SC_NUM(lo, hi, desc)                                                                       \
+    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"description\":\"" desc "\"}"
+#define SC_EARTH                                                                                   \
+    "\"latitude_deg\":" SC_NUM(                                                                    \
+        "-90", "90",                                                                               \
+        "geographic latitude, degrees (north > 0)") ","                                            \
+                                                    "\"g\":{\"type\":\"number\","                  \
+                                                    "\"exclusiveMinimum\":0,\"maximum\":1000,"     \
+                                                    "\"default\":9.80665,"                         \
+                                                    "\"description\":\"local effective g, m/s^2 "  \
+                                                    "(its centrifugal part included, notes "       \
+                                                    "§1.3)\"},"                                   \
+                                                    "\"omega_magnitude\":{\"type\":\"number\","    \
+                                                    "\"minimum\":0,\"maximum\":0.01,"              \
+                                                    "\"default\":7.2921159e-05,\"description\":"   \
+                                                    "\"Earth rotation rate, rad/s (sidereal)\"},"
+#define SC_ACCURACY                                                                                \
+    "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
+    "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \
+    "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"                     \
+    "\"description\":\"relative error on positions and velocities (not with accuracy)\"},"         \
+    "\"cost\":{\"type\":\"boolean\",\"default\":true}"
+
+/* The relative accuracy asked for; 0 after recording an error. */
+static double scene_target(struct api_call *c, const json_t *body)
+{
+    const json_t *te = json_object_get(body, "target_error");
+    const char *acc = api_string(body, "accuracy", NULL);
+    if (te && acc) {
+        api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
+        return 0.0;
+    }
+    if (te) return json_number_value(te);
+    for (int i = 0; i < MECH_ACCURACY_COUNT; i++) {
+        const struct mech_accuracy_preset *pr = mech_accuracy_preset_at((enum mech_accuracy)i);
+        if (acc && !strcmp(pr->name, acc)) return pr->promise;
+    }
+    return mech_accuracy_preset_at(MECH_ACCURACY_BALANCED)->promise;
+}
+
+/* A request-like view of a core scene run, for the shared model/diagnostics encoders. */
+static void scene_rq(struct api_traj_request *rq, const struct mech_trajectory_problem *p,
+                     const struct mech_trajectory_model *m, const struct mech_trajectory_choice *ch,
+                     const char *accuracy)
+{
+    memset(rq, 0, sizeof *rq);
+    rq->p = *p;
+    for (size_t i = 0; i < p->n_forces && i < MECH_TRAJECTORY_MAX_FORCES; i++)
+        rq->forces[i] = p->forces[i];
+    api_traj_request_fix(rq);
+    rq->requested = NULL;
+    rq->chosen = 1;
+    rq->accuracy = accuracy;
+    rq->choice = *ch;
+    rq->auto_model = 1;
+    rq->model = *m;
+}
+
+/* {"t", "east", "north"} (+ "south" or firing-direction components). */
+static json_t *landing_json(struct api_call *c, const struct mech_scene_landing *l, int south,
+                            const struct mech_vec3 *fwd)
+{
+    json_t *j = json_object();
+    json_object_set_new(j, "t", api_real(c, l->t));
+    json_object_set_new(j, "east", api_real(c, l->r.x));
+    json_object_set_new(j, "north", api_real(c, l->r.y));
+    if (south) json_object_set_new(j, "south", api_real(c, -l->r.y));
+    if (fwd) {
+        /* along the firing direction, and to its right (f x z) */
+        json_object_set_new(j, "range", api_real(c, l->r.x * fwd->x + l->r.y * fwd->y));
+        json_object_set_new(j, "right", api_real(c, l->r.x * fwd->y - l->r.y * fwd->x));
+    }
+    return j;
+}
+
+static json_t *ballistic_answer(struct api_call *c, const char *scene,
+                                struct mech_scene_ballistic_result *r, json_t *parameters,
+                                json_t *formula, int south, const struct mech_vec3 *fwd,
+                                const char *accuracy)
+{
+    json_t *res = json_object();
+    json_object_set_new(res, "scene", json_string(scene));
+    json_object_set_new(res, "parameters", parameters);
+    json_object_set_new(res, "numerical", landing_json(c, &r->numerical, south, fwd));
+    json_t *fo = landing_json(c, &r->first_order, south, fwd);
+    json_object_set_new(fo, "formula", formula);
+    json_object_set_new(res, "first_order", fo);
+    json_object_set_new(res, "difference", landing_json(c, &r->difference, south, fwd));
+    json_t *so = landing_json(c, &r->second_order, south, fwd);
+    json_object_set_new(so, "coriolis", landing_json(c, &r->second_coriolis, south, fwd));
+    json_object_set_new(so, "centrifugal", landing_json(c, &r->second_centrifugal, south, fwd));
+    json_object_set_new(so, "centrifugal_modelled",
+                        json_boolean((r->problem.fictitious & MECH_FICTITIOUS_CENTRIFUGAL) != 0));
+    json_object_set_new(
+        so, "derivation",
+        json_string(
+            "landing of the series r_0 + r_1 + r_2 (r_2 = 2 w x (w x (v0 t^3/3 + g t^4/12)) "
+            "from Coriolis acting on the first-order velocity, and - w x (w x (r0 t^2/2 + "
+            "v0 t^3/6 + g t^4/24)) from the centrifugal term of the displacement when it "
+            "is modelled), its landing time solved exactly, minus the first-order landing"));
+    json_object_set_new(res, "second_order", so);
+    json_object_set_new(res, "unexplained", landing_json(c, &r->unexplained, south, fwd));
+    const double dh = hypot(r->difference.r.x, r->difference.r.y);
+    const double sh = hypot(r->second_order.r.x, r->second_order.r.y);
+    const double uh = hypot(r->unexplained.r.x, r->unexplained.r.y);
+    json_t *q = json_object();
+    json_object_set_new(q, "difference_horizontal", api_real(c, dh));
+    json_object_set_new(q, "second_order_horizontal", api_real(c, sh));
+    json_object_set_new(q, "unexplained_horizontal", api_real(c, uh));
+    json_object_set_new(q, "integration_tolerance", api_real(c, r->integration_tolerance));
+    json_object_set_new(q, "within_second_order",
+                        json_boolean(dh <= 2.0 * sh + r->integration_tolerance));
+    json_object_set_new(q, "rule",
+                        json_string("within_second_order: |numerical - first_order| <= 2 "
+                                    "|second_order| + integration_tolerance (horizontal); "
+                                    "unexplained = difference - second_order is third order in w "
+                                    "plus the integration error"));
+    json_object_set_new(res, "agreement", q);
+    struct api_traj_request rq;
+    scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy);
+    json_object_set_new(res, "model", api_traj_model(c, &rq, &r->run));
+    json_object_set_new(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
+    return res;
+}
+
+static const char *accuracy_name(const json_t *body)
+{
+    return json_object_get(body, "target_error") ? NULL : api_string(body, "accuracy", "balanced");
+}
+
+static void earth_params(const json_t *body, struct mech_scene_ballistic *s)
+{
+    memset(s, 0, sizeof *s);
+    s->latitude_deg = api_number(body, "latitude_deg", 0);
+    s->g = api_number(body, "g", 9.80665);
+    s->omega = api_number(body, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+}
+
+static json_t *run_ballistic(struct api_call *c, const json_t *body, const char *scene,
+                             const struct mech_scene_ballistic *s, json_t *parameters,
+                             json_t *formula, int south, const struct mech_vec3 *fwd, double target)
+{
+    struct mech_scene_ballistic_result *r = malloc(sizeof *r);
+    if (!r) {
+        json_decref(parameters);
+        json_decref(formula);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_scene_ballistic_run(s, target, &c->budget, r, &e);
+    if (st != MECH_OK) {
+        free(r);
+        json_decref(parameters);
+        json_decref(formula);
+        /* parameter names of the core map onto the request's */
+        if (!strcmp(e.param, "omega")) snprintf(e.param, sizeof e.param, "omega_magnitude");
+        if (!strcmp(e.param, "r0") || !strcmp(e.param, "v0")) e.param[0] = '\0';
+        return api_call_fail_core(c, st, &e, "");
+    }
+    mech_scene_ballistic_fix(r);
+    json_t *res =
+        ballistic_answer(c, scene, r, parameters, formula, south, fwd, accuracy_name(body));
+    free(r);
+    return res;
+}
+
+/* ---- falling object ---------------------------------------------------------- */
+
+static const char falling_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"height\",\"latitude_deg\"]"
+    ","
+    "\"properties\":{"
+    "\"height\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":100000,"
+    "\"description\":\"drop height above the ground, m (released at rest)\"}," SC_EARTH SC_ACCURACY
+    "}}";
+
+static const char falling_example[] = "{\"height\": 100, \"latitude_deg\": 32}";
+
+static const char falling_description[] =
+    "Drop from rest at height h in the local Earth frame (notes §1.3, \"Deflection of a Falling "
+    "Object\"; axes x east, y north, z up). numerical: the landing (z = 0) of the integrated "
+    "motion under uniform g with the fictitious terms chosen by \"auto\" at the requested "
+    "accuracy (model.terms says which and why; the Coriolis term always matters, the "
+    "centrifugal term of the displacement only at high accuracy). first_order: the notes' "
+    "x_east = (W cos lat / 3) sqrt(8 h^3 / g) at t = sqrt(2 h / g), no south deflection (1.9 cm "
+    "at 100 m and 32 degrees). second_order: the terms the formula neglects, to second order in "
+    "W: the southward deflection (Coriolis acting on the eastward velocity: (1/6) g W^2 sin lat "
+    "cos lat t^4 south; centrifugal of the displacement: (5/24) g W^2 sin lat cos lat t^4 south "
+    "when modelled) and the landing-time change. difference = numerical - first_order should "
+    "equal second_order up to third-order terms and the integration error (unexplained, "
+    "agreement).";
+
+static json_t *falling_op(struct api_call *c, const json_t *body)
+{
+    double target = scene_target(c, body);
+    if (!(target > 0.0)) return NULL;
+    struct mech_scene_ballistic s;
+    earth_params(body, &s);
+    const double h = api_number(body, "height", 0);
+    s.r0 = mech_vec3_make(0, 0, h);
+    json_t *par = json_object();
+    json_object_set_new(par, "height", api_real(c, h));
+    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new(par, "g", api_real(c, s.g));
+    json_object_set_new(par, "omega_magnitude", api_real(c, s.omega));
+    json_object_set_new(par, "target_error", api_real(c, target));
+    json_t *f = json_string("x_east = (W cos(lat) / 3) sqrt(8 h^3 / g), t = sqrt(2 h / g), no "
+                            "north-south deflection (notes §1.3)");
+    return run_ballistic(c, body, "falling-object", &s, par, f, 1, NULL, target);
+}
+
+/* ---- vertical shot ------------------------------------------------------------ */
+
+static const char shot_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"latitude_deg\"],"
+    "\"properties\":{"
+    "\"speed\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":10000,"
+    "\"description\":\"initial upward speed, m/s (or give height)\"},"
+    "\"height\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":100000,"
+    "\"description\":\"height reached without rotation, m: speed = sqrt(2 g h)\"}," SC_EARTH
+        SC_ACCURACY "}}";
+
+static const char shot_example[] = "{\"height\": 100, \"latitude_deg\": 32}";
+
+static const char shot_description[] =
+    "A projectile shot vertically up (along the plumb line) from the ground (notes §1.5, "
+    "problem 3): it lands to the WEST by (4/3) W cos(lat) sqrt(8 h^3 / g) to first order, h = "
+    "v0^2 / (2 g) the height reached; that is four times the eastward deflection of an object "
+    "dropped from the same height, (1/3) W cos(lat) sqrt(8 h^3 / g) (derivation: x = -W cos(lat) "
+    "(v0 t^2 - g t^3 / 3) at t = 2 v0 / g gives -(4/3) W cos(lat) v0^3 / g^2). Give speed or "
+    "height. Same blocks as falling-object: numerical (auto terms), first_order, difference, "
+    "second_order (a north-south deflection W^2 sin lat cos lat v0 T^3 / 4 north from Coriolis "
+    "twice minus centrifugal, and the flight-time change), unexplained, agreement.";
+
+static json_t *shot_op(struct api_call *c, const json_t *body)
+{
+    double target = scene_target(c, body);
+    if (!(target > 0.0)) return NULL;
+    struct mech_scene_ballistic s;
+    earth_params(body, &s);
+    const int has_v = json_object_get(body, "speed") != NULL;
+    const int has_h = json_object_get(body, "height") != NULL;
+    if (has_v == has_h) {
+        api_call_invalid(c, "", "give exactly one of speed and height");
+        return NULL;
+    }
+    const double v0 =
+        has_v ? api_number(body, "speed", 0) : sqrt(2.0 * s.g * api_number(body, "height", 0));
+    const double h = v0 * v0 / (2.0 * s.g);
+    s.v0 = mech_vec3_make(0, 0, v0);
+    json_t *par = json_object();
+    json_object_set_new(par, "speed", api_real(c, v0));
+    json_object_set_new(par, "height", api_real(c, h));
+    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new(par, "g", api_real(c, s.g));
+    json_object_set_new(par, "omega_magnitude", api_real(c, s.omega));
+    json_object_set_new(par, "target_error", api_real(c, target));
+    const double lat = s.latitude_deg * ep_pi / 180.0;
+    const double drop = s.omega * cos(lat) / 3.0 * sqrt(8.0 * h * h * h / s.g);
+    json_object_set_new(par, "drop_deflection_east", api_real(c, drop));
+    json_t *f = json_string("x_west = (4/3) W cos(lat) sqrt(8 h^3 / g), t = 2 v0 / g (notes §1.5 "
+                            "problem 3): 4 x the drop's eastward deflection for the same height");
+    return run_ballistic(c, body, "vertical-shot", &s, par, f, 0, NULL, target);
+}
+
+/* ---- cannonball ---------------------------------------------------------------- */
+
+static const char cannon_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"speed\",\"elevation_deg\",\"latitude_deg\"],\"properties\":{"
+    "\"speed\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":10000,"
+    "\"description\":\"muzzle speed v0, m/s\"},"
+    "\"elevation_deg\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":90,"
+    "\"description\":\"inclination above the horizontal (the notes' problems 4-5 theta; the "
+    "notes' spherical theta from the vertical is 90 - elevation)\"},"
+    "\"azimuth_deg\":{\"type\":\"number\",\"minimum\":-360,\"maximum\":360,\"default\":0,"
+    "\"description\":\"the notes' phi: from east towards north, degrees (0 east, 90 "
+    "north)\"}," SC_EARTH SC_ACCURACY "}}";
+
+static const char cannon_example[] =
+    "{\"speed\": 500, \"elevation_deg\": 30, \"azimuth_deg\": 0, \"latitude_deg\": 45}";
+
+static const char cannon_description[] =
+    "A cannonball fired from the ground at speed v0, elevation alpha above the horizontal and "
+    "azimuth phi from east towards north (notes §1.3 \"Deflection of Cannon Balls\": their theta "
+    "from the vertical is 90 - alpha), no air drag. Each block gives the landing time, east, "
+    "north, range (along the firing direction) and right (to the right of it). first_order: "
+    "the linearised Coriolis landing for any direction (r_1 = -w x (v0 t^2 + g t^3/3) at the "
+    "zeroth-order flight time T0 = 2 v0 sin(alpha)/g, plus the first-order change of the flight "
+    "time); for firing due east it is the notes' problems 4 and 5: deflected south by d = 4 v0^3 "
+    "W sin(lat) sin^2(alpha) cos(alpha) / g^2 and the range increased by W cos(lat) sqrt(2 R^3 "
+    "/ g) (cot^1/2 alpha - tan^3/2 alpha / 3), R = v0^2 sin(2 alpha)/g, reported in notes_due_east "
+    "(evaluated for the given v0, alpha, lat whatever the azimuth). zeroth_order: no rotation. "
+    "second_order, difference, unexplained and agreement as for falling-object.";
+
+static json_t *cannon_op(struct api_call *c, const json_t *body)
+{
+    double target = scene_target(c, body);
+    if (!(target > 0.0)) return NULL;
+    struct mech_scene_ballistic s;
+    earth_params(body, &s);
+    const double v0 = api_number(body, "speed", 0);
+    const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
+    const double ph = api_number(body, "azimuth_deg", 0) * ep_pi / 180.0;
+    const struct mech_vec3 fwd = mech_vec3_make(cos(ph), sin(ph), 0);
+    s.v0 = mech_vec3_make(v0 * cos(al) * cos(ph), v0 * cos(al) * sin(ph), v0 * sin(al));
+    const double lat = s.latitude_deg * ep_pi / 180.0, g = s.g, W = s.omega;
+    json_t *par = json_object();
+    json_object_set_new(par, "speed", api_real(c, v0));
+    json_object_set_new(par, "elevation_deg", api_real(c, al * 180.0 / ep_pi));
+    json_object_set_new(par, "azimuth_deg", api_real(c, ph * 180.0 / ep_pi));
+    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new(par, "g", api_real(c, g));
+    json_object_set_new(par, "omega_magnitude", api_real(c, W));
+    json_object_set_new(par, "target_error", api_real(c, target));
+    json_object_set_new(par, "velocity", api_vec3(c, s.v0));
+    json_t *f = json_string("r_1(T0) - v_h z_1(T0) / z_0'(T0) with r_1 = -w x (v0 t^2 + g t^3/3), "
+                            "T0 = 2 v0 sin(alpha) / g (notes §1.3-1.4, problems 4-5)");
+    json_t *res = run_ballistic(c, body, "cannonball", &s, par, f, 0, &fwd, target);
+    if (!res) return NULL;
+    /* the no-rotation landing and the notes' due-east formulas */
+    const double T0 = 2.0 * v0 * sin(al) / g, R = v0 * v0 * sin(2.0 * al) / g;
+    json_t *z = json_object();
+    json_object_set_new(z, "t", api_real(c, T0));
+    json_object_set_new(z, "range", api_real(c, R));
+    json_object_set_new(res, "zeroth_order", z);
+    json_t *ne = json_object();
+    const double sa = sin(al), ca = cos(al);
+    json_object_set_new(ne, "south_deflection",
+                        api_real(c, 4.0 * v0 * v0 * v0 * W * sin(lat) * sa * sa * ca / (g * g)));
+    json_object_set_new(ne, "range_increase",
+                        api_real(c, W * cos(lat) * sqrt(2.0 * R * R * R / g) *
+                                        (sqrt(ca / sa) - sa * sqrt(sa / ca) / (3.0 * ca))));
+    json_object_set_new(ne, "formula",
+                        json_string("notes §1.5 problems 4-5 (firing due east): d = 4 v0^3 W "
+                                    "sin(lat) sin^2(alpha) cos(alpha) / g^2 south; dR = W cos(lat) "
+                                    "sqrt(2 R^3 / g) (cot^1/2 alpha - tan^3/2 alpha / 3)"));
+    json_object_set_new(res, "notes_due_east", ne);
+    return res;
+}
+
+/* ---- rotating table -------------------------------------------------------------- */
+
+#define SC_VEC3(desc)                                                                              \
+    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
+    "\"minimum\":-1e15,\"maximum\":1e15},\"description\":\"" desc "\"}"
+
+static const char
+    table_schema[] = "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"omega\"],"
+                     "\"properties\":{"
+                     "\"experiment\":{\"enum\":[\"through_center\",\"at_rest\",\"custom\"],"
+                     "\"default\":\"through_center\"},"
+                     "\"omega\":{\"type\":\"number\",\"minimum\":-1e6,\"maximum\":1e6,"
+                     "\"description\":\"table rotation rate about +z, rad/s, non-zero\"},"
+                     "\"radius\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,"
+                     "\"default\":1,"
+                     "\"description\":\"r1, m (through_center, at_rest)\"},"
+                     "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
+                     "\"default\":1},"
+                     "\"position\":" SC_VEC3(
+                         "custom: inertial position at t = 0, m") ","
+                                                                  "\"velocity\":" SC_VEC3(
+                                                                      "custom: inertial velocity, "
+                                                                      "m/s") ","
+                                                                             "\"t_end\":{\"type\":"
+                                                                             "\"number\","
+                                                                             "\"exclusiveMinimum\":"
+                                                                             "0,\"maximum\":1e15,"
+                                                                             "\"description\":"
+                                                                             "\"custom: duration, "
+                                                                             "s\"},"
+                                                                             "\"samples\":{"
+                                                                             "\"type\":\"integer\","
+                                                                             "\"minimum\":2,"
+                                                                             "\"maximum\":100000,"
+                                                                             "\"default\":21}"
+                                                                             "," SC_ACCURACY "}}";
+
+static const char table_example[] = "{\"experiment\": \"through_center\", \"omega\": 1, "
+                                    "\"radius\": 1, \"samples\": 5}";
+
+static const char table_description[] =
+    "The notes' rotating-table puck experiments (§1.1), seen from both frames. A frictionless "
+    "puck moves on a table rotating with omega about +z; the frames coincide at t = 0. "
+    "through_center: the puck starts at r1 e_y with inertial velocity -(2 r1 |omega| / pi) e_y, "
+    "crossing the centre and reaching the other side while the table makes half a turn (t_end "
+    "= pi / |omega|); seen from the table it curves and comes back to its start. at_rest: the "
+    "puck is at rest in the inertial frame at r1 e_y: a circle in the table's frame over a full "
+    "turn, held by Coriolis (twice the centrifugal force, opposite). custom: any inertial "
+    "position, velocity and t_end. Answers: inertial (the exact straight line), rotating "
+    "(integrated in the table's frame with fictitious \"auto\": centrifugal -m w x (w x r) and "
+    "Coriolis -2 m w x v') and rotating_exact (the line's components in the rotating axes, "
+    "x' = x cos wt + y sin wt, y' = -x sin wt + y cos wt) with their largest difference; and "
+    "the effective forces at t = 0 (notes: through_center F' = -m w^2 r1 (e_y + (4/pi) e_x) for "
+    "omega > 0; at_rest F' = -m w^2 r1 e_y).";
+
+static json_t *vecs_json(struct api_call *c, const struct mech_vec3 *v, size_t n)
+{
+    json_t *a = json_array();
+    for (size_t i = 0; a && i < n; i++)
+        json_array_append_new(a, api_vec3(c, v[i]));
+    return a;
+}
+
+static json_t *table_op(struct api_call *c, const json_t *body)
+{
+    double target = scene_target(c, body);
+    if (!(target > 0.0)) return NULL;
+    struct mech_scene_table s;
+    memset(&s, 0, sizeof s);
+    const char *ex = api_string(body, "experiment", "through_center");
+    s.experiment = !strcmp(ex, "at_rest")  ? MECH_TABLE_AT_REST
+                   : !strcmp(ex, "custom") ? MECH_TABLE_CUSTOM
+                                           : MECH_TABLE_THROUGH_CENTER;
+    s.omega = api_number(body, "omega", 0);
+    s.radius = api_number(body, "radius", 1);
+    s.mass = api_number(body, "mass", 1);
+    s.samples = (size_t)api_number(body, "samples", 21);
+    if (s.experiment == MECH_TABLE_CUSTOM) {
+        static const char *const need[] = {"position", "velocity", "t_end"};
+        for (int i = 0; i < 3; i++)
+            if (!json_object_get(body, need[i])) {
+                api_call_invalid(c, "", "experiment \"custom\" needs %s", need[i]);
+                return NULL;
+            }
+        s.r0 = api_vec3_member(body, "position", mech_vec3_make(0, 0, 0));
+        s.v0 = api_vec3_member(body, "velocity", mech_vec3_make(0, 0, 0));
+        s.t_end = api_number(body, "t_end", 1);
+    } else {
+        static const char *const forbid[] = {"position", "velocity", "t_end"};
+        for (int i = 0; i < 3; i++)
+            if (json_object_get(body, forbid[i])) {
+                char ptr[32];
+                snprintf(ptr, sizeof ptr, "/%s", forbid[i]);
+                api_call_invalid(c, ptr, "only for experiment \"custom\"");
+                return NULL;
+            }
+    }
+    if (s.omega == 0.0) {
+        api_call_domain(c, "/omega", "the table must rotate: omega != 0");
+        return NULL;
+    }
+    const size_t n = s.samples;
+    struct mech_scene_table_result *r = calloc(1, sizeof *r);
+    double *t = malloc(n * sizeof *t);
+    struct mech_vec3 *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b),
+                     *x = malloc(n * sizeof *x);
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = MECH_ENOMEM;
+    if (r && t && a && b && x) {
+        r->t = t;
+        r->inertial = a;
+        r->rotating = b;
+        r->rotating_exact = x;
+        st = mech_scene_table_run(&s, target, &c->budget, r, &e);
+    }
+    json_t *res = NULL;
+    if (st == MECH_OK) {
+        res = json_object();
+        json_object_set_new(res, "scene", json_string("rotating-table"));
+        json_t *par = json_object();
+        json_object_set_new(par, "experiment", json_string(ex));
+        json_object_set_new(par, "omega", api_real(c, s.omega));
+        json_object_set_new(par, "mass", api_real(c, s.mass));
+        if (s.experiment != MECH_TABLE_CUSTOM)
+            json_object_set_new(par, "radius", api_real(c, s.radius));
+        json_object_set_new(par, "t_end", api_real(c, r->t_end));
+        json_object_set_new(par, "target_error", api_real(c, target));
+        json_object_set_new(res, "parameters", par);
+        json_t *init = json_object();
+        json_object_set_new(init, "position", api_vec3(c, r->r0_inertial));
+        json_object_set_new(init, "velocity_inertial", api_vec3(c, r->v0_inertial));
+        json_object_set_new(init, "velocity_rotating", api_vec3(c, r->v0_rotating));
+        json_object_set_new(res, "initial", init);
+        json_t *f = json_object();
+        json_object_set_new(f, "centrifugal", api_vec3(c, r->centrifugal));
+        json_object_set_new(f, "coriolis", api_vec3(c, r->coriolis));
+        json_object_set_new(f, "total", api_vec3(c, r->total));
+        json_object_set_new(res, "effective_force_at_start", f);
+        json_object_set_new(res, "t", api_reals(c, t, r->n_samples));
+        json_object_set_new(res, "inertial", vecs_json(c, a, r->n_samples));
+        json_object_set_new(res, "rotating", vecs_json(c, b, r->n_samples));
+        json_object_set_new(res, "rotating_exact", vecs_json(c, x, r->n_samples));
+        json_object_set_new(res, "end_rotating", api_vec3(c, r->end_rotating));
+        json_t *err = json_object();
+        json_object_set_new(err, "max_position_error", api_real(c, r->max_position_error));
+        json_object_set_new(err, "max_relative_position_error",
+                            api_real(c, r->max_relative_position_error));
+        json_object_set_new(res, "rotating_vs_exact", err);
+        struct api_traj_request rq;
+        scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy_name(body));
+        json_object_set_new(res, "model", api_traj_model(c, &rq, &r->run));
+        json_object_set_new(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
+    }
+    free(r);
+    free(t);
+    free(a);
+    free(b);
+    free(x);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    return res;
+}
+
+const struct api_route api_route_scene_falling_object = {
+    "POST",
+    "/v1/scenes/falling-object",
+    "Drop from a height near the Earth: east (and small south) deflection vs the notes' formula",
+    falling_description,
+    falling_schema,
+    falling_example,
+    falling_op,
+    1,
+};
+
+const struct api_route api_route_scene_vertical_shot = {
+    "POST",
+    "/v1/scenes/vertical-shot",
+    "Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical",
+    shot_description,
+    shot_schema,
+    shot_example,
+    shot_op,
+    1,
+};
+
+const struct api_route api_route_scene_cannonball = {
+    "POST",
+    "/v1/scenes/cannonball",
+    "Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change",
+    cannon_description,
+    cannon_schema,
+    cannon_example,
+    cannon_op,
+    1,
+};
+
+const struct api_route api_route_scene_rotating_table = {
+    "POST",
+    "/v1/scenes/rotating-table",
+    "The notes' rotating-table puck experiments seen from the inertial and the rotating frame",
+    table_description,
+    table_schema,
+    table_example,
+    table_op,
+    1,
+};

@@ -1,0 +1,120 @@
+/* test_schwarzschild.c — mech/schwarzschild.h: static clocks and red shift
+ * (closed forms, and the series 1 - sqrt(1 - x) = x/2 + x^2/8 + x^3/16 for
+ * x = 1e-12 where the naive formula keeps no digit), circular orbits at the
+ * ISCO and inside the photon sphere, the extrema of V_eff (L = 4: r = 4, 12,
+ * the textbook case), and the GPS clock budget against values computed
+ * independently with 40-digit arithmetic (mpmath). */
+#include <gsl/gsl_errno.h>
+#include <math.h>
+#include <string.h>
+
+#include "mech/schwarzschild.h"
+#include "testlib.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    struct mech_error e;
+    struct mech_schw_static s;
+    struct mech_schw_circular co;
+
+    /* r = 10 GM/c^2: dtau/dt = sqrt(0.8), z = 1/sqrt(0.8) - 1 */
+    CHECK(mech_schw_static_clock(10.0, &s, NULL) == MECH_OK);
+    CHECK_CLOSE(s.rate, sqrt(0.8), 1e-15, 0);
+    CHECK_CLOSE(s.redshift, 1.0 / sqrt(0.8) - 1.0, 1e-15, 0);
+    CHECK_CLOSE(s.rate_deficit, 1.0 - sqrt(0.8), 1e-15, 0);
+
+    /* r = 2e12: x = 1e-12; deficit = x/2 + x^2/8 + ..., z = x/2 + 3x^2/8 + ... */
+    CHECK(mech_schw_static_clock(2e12, &s, NULL) == MECH_OK);
+    CHECK_CLOSE(s.rate_deficit, 0.5e-12 + 1e-24 / 8, 1e-15, 0);
+    CHECK_CLOSE(s.redshift, 0.5e-12 + 3e-24 / 8, 1e-15, 0);
+    /* r = 2e30: x = 1e-30, still full precision */
+    CHECK(mech_schw_static_clock(2e30, &s, NULL) == MECH_OK);
+    CHECK_CLOSE(s.redshift, 0.5e-30, 1e-15, 0);
+    CHECK(s.rate == 1.0);
+
+    /* horizon and inside: typed error naming r */
+    mech_error_clear(&e);
+    CHECK(mech_schw_static_clock(2.0, &s, &e) == MECH_EDOMAIN);
+    CHECK(e.param[0] == 'r' && e.param[1] == 0);
+    CHECK(mech_schw_static_clock(-1.0, &s, NULL) == MECH_EDOMAIN);
+    CHECK(mech_schw_static_clock(NAN, &s, NULL) == MECH_EDOMAIN);
+    CHECK(mech_schw_static_clock(1.0 / 0.0, &s, NULL) == MECH_EDOMAIN);
+
+    /* ISCO: rate sqrt(1/2), E = sqrt(8/9), L = sqrt(12), local speed c/2 */
+    CHECK(mech_schw_circular_orbit(6.0, &co, NULL) == MECH_OK);
+    CHECK(co.stability == MECH_SCHW_ORBIT_MARGINAL);
+    CHECK_CLOSE(co.rate, sqrt(0.5), 1e-15, 0);
+    CHECK_CLOSE(co.energy, sqrt(8.0 / 9.0), 1e-15, 0);
+    CHECK_CLOSE(co.angular_momentum, sqrt(12.0), 1e-15, 0);
+    CHECK_CLOSE(co.local_speed, 0.5, 1e-15, 0);
+    CHECK_CLOSE(co.period_t, 2 * M_PI * pow(6.0, 1.5), 1e-15, 0);
+    /* the circular E and L sit at the extremum of V: V(r) = E^2, V'(r) = 0 */
+    CHECK(mech_schw_circular_orbit(10.0, &co, NULL) == MECH_OK);
+    CHECK(co.stability == MECH_SCHW_ORBIT_STABLE);
+    CHECK_CLOSE(mech_schw_veff_massive(10.0, co.angular_momentum), co.energy * co.energy, 1e-15, 0);
+    double h = 1e-5;
+    double dV = (mech_schw_veff_massive(10.0 + h, co.angular_momentum) -
+                 mech_schw_veff_massive(10.0 - h, co.angular_momentum)) /
+                (2 * h);
+    CHECK(fabs(dV) < 1e-10);
+    CHECK(mech_schw_circular_orbit(4.0, &co, NULL) == MECH_OK);
+    CHECK(co.stability == MECH_SCHW_ORBIT_UNSTABLE);
+    CHECK_CLOSE(co.local_speed, 1.0 / sqrt(2.0), 1e-15, 0);
+    CHECK(mech_schw_circular_orbit(3.0, &co, NULL) == MECH_OK);
+    CHECK(co.stability == MECH_SCHW_ORBIT_NONE);
+    CHECK(isnan(co.rate));
+    CHECK(mech_schw_circular_orbit(2.5, &co, NULL) == MECH_OK);
+    CHECK(co.stability == MECH_SCHW_ORBIT_NONE);
+    CHECK(mech_schw_circular_orbit(1.5, &co, NULL) == MECH_EDOMAIN);
+    /* a far orbit: deficit 3/(2r) + 9/(8 r^2) */
+    CHECK(mech_schw_circular_orbit(3e15, &co, NULL) == MECH_OK);
+    CHECK_CLOSE(co.rate_deficit, 0.5e-15 + 1e-30 / 8.0, 1e-15, 0);
+
+    /* V_eff extrema: L = 4 -> r = 4 (max) and 12 (min) (Hartle §9.3) */
+    double ru, rs;
+    CHECK_EQ_INT(mech_schw_veff_extrema(4.0, &ru, &rs), 2);
+    CHECK_CLOSE(ru, 4.0, 1e-15, 0);
+    CHECK_CLOSE(rs, 12.0, 1e-15, 0);
+    CHECK(mech_schw_veff_extrema(sqrt(12.0) * (1 + 4e-16), &ru, &rs) >=
+          1); /* L^2 = 12 up to rounding */
+    CHECK_CLOSE(ru, 6.0, 1e-7, 0);
+    CHECK_CLOSE(rs, 6.0, 1e-7, 0);
+    CHECK_EQ_INT(mech_schw_veff_extrema(3.0, &ru, &rs), 0);
+    CHECK(isnan(ru) && isnan(rs));
+    /* huge L: unstable orbit tends to the photon sphere, 3 + 9/L^2 */
+    CHECK_EQ_INT(mech_schw_veff_extrema(1e8, &ru, &rs), 2);
+    CHECK_CLOSE(ru, 3.0 + 9e-16, 1e-15, 0);
+    CHECK_CLOSE(rs, 1e16 - 6.0, 1e-15, 0);
+    CHECK_CLOSE(mech_schw_veff_photon(3.0), 1.0 / 27.0, 1e-15, 0);
+    CHECK_CLOSE(MECH_SCHW_CRITICAL_IMPACT, 3.0 * sqrt(3.0), 1e-16, 0);
+
+    /* GPS: ground R = 6371 km, orbit r = 26561.75 km, GM_earth = 3.986004418e14,
+     * c = 299792458; references from mpmath at 40 digits: +45.719163359084836,
+     * -7.2131245668393341, +38.506038792245501 us/day */
+    const double c = 299792458.0, GMe = 3.986004418e14, m = GMe / (c * c);
+    struct mech_schw_clock_compare cc;
+    CHECK(mech_schw_clock_compare(6371000.0 / m, 26561750.0 / m, &cc, NULL) == MECH_OK);
+    const double day = 86400e6;
+    CHECK_CLOSE(cc.gravitational * day, 45.719163359084836, 1e-13, 0);
+    CHECK_CLOSE(cc.velocity * day, -7.2131245668393341, 1e-13, 0);
+    CHECK_CLOSE(cc.net * day, 38.506038792245501, 1e-13, 0);
+    CHECK_CLOSE(cc.net, 4.456717452806192e-10, 1e-13, 0);
+    /* first order agrees to O(x^2) ~ 1e-9 relative */
+    CHECK_CLOSE(cc.first_order_gravitational, cc.gravitational, 2e-9, 0);
+    CHECK_CLOSE(cc.first_order_velocity, cc.velocity, 2e-9, 0);
+    /* equatorial radius: 38.438737351513172 us/day */
+    CHECK(mech_schw_clock_compare(6378137.0 / m, 26561750.0 / m, &cc, NULL) == MECH_OK);
+    CHECK_CLOSE(cc.net * day, 38.438737351513172, 1e-13, 0);
+    mech_error_clear(&e);
+    CHECK(mech_schw_clock_compare(1.0, 100.0, &cc, &e) == MECH_EDOMAIN);
+    CHECK(!strcmp(e.param, "reference_r"));
+    mech_error_clear(&e);
+    CHECK(mech_schw_clock_compare(100.0, 2.9, &cc, &e) == MECH_EDOMAIN);
+    CHECK(!strcmp(e.param, "r"));
+    TEST_MAIN_END();
+}
