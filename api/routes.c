@@ -34,6 +34,9 @@ extern const struct api_route api_route_relativity_collision;
 extern const struct api_route api_route_relativity_particles;
 extern const struct api_route api_route_gr_schwarzschild;
 extern const struct api_route api_route_gr_geodesic;
+extern const struct api_route api_route_hamiltonian_flow;
+extern const struct api_route api_route_hamiltonian_liouville;
+extern const struct api_route api_route_hamiltonian_poincare;
 
 const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
@@ -56,6 +59,9 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_particles,
     &api_route_gr_schwarzschild,
     &api_route_gr_geodesic,
+    &api_route_hamiltonian_flow,
+    &api_route_hamiltonian_liouville,
+    &api_route_hamiltonian_poincare,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_frames_effective_force,
