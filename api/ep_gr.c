@@ -684,7 +684,11 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
         }
     }
     struct api_integrator_choice ch;
-    if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &ch)) return NULL;
+    static const struct api_integrator_system geodesic_eqs = {
+        "the geodesic equations with r, dr/dtau, phi and t carried together",
+        "the state in geometric units (G = c = M = 1)", 1.0};
+    if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &geodesic_eqs, &ch))
+        return NULL;
     p.method = ch.method;
     p.opt = ch.opt;
     if (ch.opt.dt > 0) p.opt.dt = gr_time_in(&u, ch.opt.dt) / T;

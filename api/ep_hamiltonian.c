@@ -331,6 +331,13 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
                           struct ham_integ *out)
 {
     memset(out, 0, sizeof *out);
+    /* Chosen settings scale atol to the smallest scale of the state's SI
+     * components, so a 1e-15 m oscillator is not integrated at atol 1e-13. */
+    const struct api_integrator_system hs = {
+        "Hamilton's equations q' = dH/dp, p' = -dH/dq",
+        "the SI state: the smallest scale of its components (|q_i|, |p_i|, tau |p_i|/M_i, "
+        "M_i |q_i|/tau at the start)",
+        state_scale(s, y0, tau)};
     const char *method = block ? api_string(block, "method", NULL) : NULL;
     if (!block) {
         out->own = 1;
@@ -368,32 +375,16 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
             snprintf(out->reason, sizeof out->reason,
                      "method and settings given in the request; integrated in the second-order "
                      "form (q, v = p/M) of the separable H");
-        } else if (!api_integrator_block_parse(c, block, pointer, span, &out->ch)) {
+        } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
             return 0;
         }
-    } else if (!api_integrator_block_parse(c, block, pointer, span, &out->ch)) {
+    } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
         return 0;
     }
     out->m = mech_ode_method_find(out->ch.method);
     if (!out->m) {
         api_call_invalid(c, pointer, "unknown method");
         return 0;
-    }
-    if (out->ch.chosen) {
-        /* The shared block sets atol = rtol for dimensionless states; ours are SI
-         * (q in m or rad, p in kg m/s ...): scale atol to the smallest component scale. */
-        const double sc = state_scale(s, y0, tau);
-        out->ch.opt.atol = out->ch.opt.rtol * sc;
-        out->own = 1;
-        snprintf(out->reason, sizeof out->reason,
-                 "%spreset \"%s\" (promise %.0e relative) -> %s at rtol %.3g (not symplectic)%s; "
-                 "atol = rtol x %.6g, the smallest scale of the state's components (|q_i|, |p_i|, "
-                 "tau |p_i|/M_i, M_i |q_i|/tau at the start)",
-                 block ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-                 out->ch.accuracy ? out->ch.accuracy : "from target_error", out->ch.target,
-                 out->ch.method, out->ch.opt.rtol,
-                 span > 62.831853071795865 ? " (tightened for a run of many dynamical times)" : "",
-                 sc);
     }
     return 1;
 }

@@ -254,8 +254,11 @@ static json_t *rotate(struct api_call *c, const json_t *body)
 
     struct api_integrator_choice ch;
     double W = mech_rigid_rate_scale(&p);
+    static const struct api_integrator_system euler_eqs = {
+        "Euler's equations with a quaternion attitude",
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0};
     if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
-                                    p.t_end * W, &ch))
+                                    p.t_end * W, &euler_eqs, &ch))
         return NULL;
     p.method = ch.method;
     p.opt = ch.opt;

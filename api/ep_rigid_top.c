@@ -112,8 +112,11 @@ static json_t *top(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     struct api_integrator_choice ch;
+    static const struct api_integrator_system top_eqs = {
+        "Euler's equations of the top with gravity's torque and a quaternion attitude",
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0};
     if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
-                                    p.t_end * mech_top_rate_scale(&p), &ch))
+                                    p.t_end * mech_top_rate_scale(&p), &top_eqs, &ch))
         return NULL;
     p.method = ch.method;
     p.opt = ch.opt;

@@ -9,7 +9,8 @@
 #include "mech/trajectory.h"
 
 int api_integrator_block_parse(struct api_call *c, const json_t *in, const char *pointer,
-                               double span, struct api_integrator_choice *out)
+                               double span, const struct api_integrator_system *sys,
+                               struct api_integrator_choice *out)
 {
     memset(out, 0, sizeof *out);
     out->requested = in;
@@ -27,10 +28,10 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
         if (mi.second_order) {
             api_call_invalid(c, ptr,
                              "%s needs a second-order system q'' = a(t, q, v) and does not apply "
-                             "to this first-order system (Euler's equations with a quaternion "
-                             "attitude); use rk8pd, rkck, rkf45 or msbdf (rtol/atol), or rk4, "
-                             "gauss4, gauss6 or euler (dt), or an accuracy preset",
-                             method);
+                             "to this first-order system (%s); use rk8pd, rkck, rkf45 or msbdf "
+                             "(rtol/atol), or rk4, gauss4, gauss6 or euler (dt), or an accuracy "
+                             "preset",
+                             method, sys->equations);
             return 0;
         }
         out->method = method;
@@ -67,14 +68,15 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
     out->target = target;
     out->method = pr->method_other;
     out->opt.rtol = rtol;
-    out->opt.atol = rtol;
+    out->opt.atol = rtol * sys->state_scale;
     snprintf(out->reason, sizeof out->reason,
-             "%sfirst-order system: preset \"%s\" (promise %.0e relative) -> %s at rtol %.3g%s%s; "
-             "atol = rtol on the dimensionless state (quaternion and omega / rate scale)",
-             in ? "" : "no integrator block: accuracy \"balanced\" by default; ", pr->name,
-             pr->promise, pr->method_other, rtol,
+             "%s%s: preset \"%s\" (promise %.0e relative) -> %s at rtol %.3g%s%s; "
+             "atol = rtol x %.6g on %s",
+             in ? "" : "no integrator block: accuracy \"balanced\" by default; ", sys->equations,
+             pr->name, pr->promise, pr->method_other, rtol,
              target < pr->promise ? " (target below every promise: round-off)" : "",
-             length_factor < 1.0 ? " (tightened for a run of many dynamical times)" : "");
+             length_factor < 1.0 ? " (tightened for a run of many dynamical times)" : "",
+             sys->state_scale, sys->state);
     return 1;
 }
 

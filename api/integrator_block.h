@@ -14,7 +14,7 @@
  *   min(target / promise, 10), and — as mech_trajectory_choose() does for long
  *   runs — tightened by (20 pi) / span when the run spans more than 20 pi
  *   dynamical times (span = t_end x rate scale), floored at 1e-15;
- *   atol = rtol (the endpoints integrate dimensionless states of size ~1).
+ *   atol = rtol x the caller's state scale (1 for dimensionless states).
  * Not thread-shared: each call owns its struct api_integrator_choice. */
 #ifndef API_INTEGRATOR_BLOCK_H
 #define API_INTEGRATOR_BLOCK_H
@@ -32,12 +32,20 @@ struct api_integrator_choice {
     char reason[400];
 };
 
+/* What the caller integrates, for messages and for atol. */
+struct api_integrator_system {
+    const char *equations; /* e.g. "Euler's equations with a quaternion attitude" */
+    const char *state;     /* e.g. "the dimensionless state (quaternion and omega / rate scale)" */
+    double state_scale;    /* atol = rtol x state_scale for chosen settings (> 0) */
+};
+
 /* Parse `block` (schema-validated against API_TRAJ_INTEGRATOR_SCHEMA, or NULL
- * for the default) into *out. `pointer` names the block ("/integrator"),
- * `span` the run's length in dynamical times (>= 0). Returns 0 after recording
- * an error in c (second-order-only method), else 1. */
+ * for the default) into *out for the system `sys`. `pointer` names the block
+ * ("/integrator"), `span` the run's length in dynamical times (>= 0). Returns
+ * 0 after recording an error in c (second-order-only method), else 1. */
 int api_integrator_block_parse(struct api_call *c, const json_t *block, const char *pointer,
-                               double span, struct api_integrator_choice *out);
+                               double span, const struct api_integrator_system *sys,
+                               struct api_integrator_choice *out);
 
 /* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason"}. New reference. */
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch);
