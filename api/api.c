@@ -6,6 +6,8 @@
 #include <ctype.h>
 #include <math.h>
 #include <pthread.h>
+#include <stdint.h>
+#include <stdlib.h>
 #include <stdio.h>
 #include <string.h>
 #include <strings.h>
@@ -137,17 +139,6 @@ static void run_resource(size_t ri, const struct api_request *req, struct api_re
     json_decref(call.extra);
 }
 
-static void problem_with(struct api_response *resp, enum api_problem kind, const char *detail,
-                         json_t *errors, json_t *extra)
-{
-    json_t *p = api_problem_object(kind, detail);
-    if (p && errors) json_object_set(p, "errors", errors);
-    if (p && extra) json_object_update(p, extra);
-    api_respond_json(resp, api_problem_status(kind), "application/problem+json", p);
-    json_decref(p);
-    if (kind == API_PROBLEM_CANCELLED || kind == API_PROBLEM_QUEUE_FULL) resp->retry_after = 1;
-}
-
 /* GET /problems/<slug>: what a problem type means (its type URI resolves here). */
 static void serve_problem_doc(const char *slug, struct api_response *resp)
 {
@@ -172,35 +163,69 @@ static void method_not_allowed(struct api_response *resp, const char *allowed)
 
 /* ---- operations ---------------------------------------------------------------- */
 
-static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
+/* Every request api_handle_ext() runs is wrapped so that code holding only the
+ * struct api_request (a handler's call->req, e.g. /v1/batch) can still see the
+ * extras. Only api.c creates api_request pointers that reach handlers. */
+struct full_request {
+    struct api_request req; /* first member */
+    int no_cost;
+};
+
+static int request_no_cost(const struct api_request *req)
+{
+    return req ? ((const struct full_request *)(const void *)req)->no_cost : 0;
+}
+
+/* Copy of `errors` with every pointer prefixed (new reference). */
+static json_t *prefixed_errors(const json_t *errors, const char *prefix)
+{
+    json_t *out = json_array();
+    size_t i;
+    json_t *e;
+    json_array_foreach(errors, i, e) {
+        json_t *c = json_deep_copy(e);
+        const char *p = json_string_value(json_object_get(e, "pointer"));
+        if (c && p && prefix && *prefix) {
+            size_t n = strlen(prefix) + strlen(p) + 1;
+            char *q = malloc(n);
+            if (q) {
+                snprintf(q, n, "%s%s", prefix, p);
+                json_object_set_new(c, "pointer", json_string(q));
+                free(q);
+            }
+        }
+        json_array_append_new(out, c);
+    }
+    return out;
+}
+
+static json_t *problem_json(enum api_problem kind, const char *detail, const json_t *errors,
+                            const json_t *extra)
+{
+    json_t *p = api_problem_object(kind, detail);
+    if (p && errors) json_object_set(p, "errors", (json_t *)errors);
+    if (p && extra) json_object_update(p, (json_t *)extra);
+    return p;
+}
+
+/* The pipeline after parsing: schema validation, the handler, the non-finite
+ * check, cost accounting. Returns the HTTP status and sets *out to the answer
+ * or the problem object (new reference; NULL only when memory ran out). Error
+ * pointers are prefixed with prefix ("" at top level). note gets the reason
+ * of a 500 for the log. */
+static int run_parsed(size_t ri, const struct api_request *req, const json_t *body,
+                      const char *prefix, json_t **out, char *note, size_t note_n)
 {
     const struct api_route *r = api_routes[ri];
-    if (!is_json_media_type(req->content_type)) {
-        char d[200];
-        snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
-                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
-                 req->content_type ? "'" : "");
-        api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
-        return;
-    }
-    json_error_t jerr;
-    json_t *body = json_loadb(req->body ? req->body : "", req->body ? req->body_len : 0,
-                              JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
-    if (!body) {
-        char d[300];
-        snprintf(d, sizeof d, "line %d, column %d: %s", jerr.line, jerr.column, jerr.text);
-        api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
-        return;
-    }
+    *out = NULL;
     json_t *errors = json_array();
-    size_t nerr = api_schema_validate(route_schemas[ri], body, "", errors);
+    size_t nerr = api_schema_validate(route_schemas[ri], body, prefix, errors);
     if (nerr) {
         char d[120];
         snprintf(d, sizeof d, "%zu error%s in the request", nerr, nerr == 1 ? "" : "s");
-        problem_with(resp, API_PROBLEM_VALIDATION, d, errors, NULL);
+        *out = problem_json(API_PROBLEM_VALIDATION, d, errors, NULL);
         json_decref(errors);
-        json_decref(body);
-        return;
+        return api_problem_status(API_PROBLEM_VALIDATION);
     }
     json_decref(errors);
 
@@ -210,12 +235,11 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
     call.budget.max_steps = req->max_steps > 0 ? req->max_steps : 1;
     call.budget.deadline = isfinite(req->deadline) ? req->deadline : 0;
     call.budget.cancel = req->cancel;
-    int want_cost = !json_is_false(json_object_get(body, "cost"));
+    int want_cost = !request_no_cost(req) && !json_is_false(json_object_get(body, "cost"));
 
     double cpu0 = mech_cpu_seconds();
     json_t *result = r->fn(&call, body);
     double cpu = mech_cpu_seconds() - cpu0;
-    json_decref(body);
 
     if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
         call.problem = API_PROBLEM_NUMERIC;
@@ -234,16 +258,19 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
             snprintf(d, sizeof d, "%s", call.detail[0] ? call.detail : "internal error");
         }
         if (k == API_PROBLEM_INTERNAL) {
-            problem_with(resp, k, "internal error", NULL, NULL);
-            snprintf(resp->note, sizeof resp->note, "%.40s: %.150s", r->path,
-                     call.detail[0] ? call.detail : "handler returned no result");
+            *out = problem_json(k, "internal error", NULL, NULL);
+            if (note)
+                snprintf(note, note_n, "%.40s: %.150s", r->path,
+                         call.detail[0] ? call.detail : "handler returned no result");
         } else {
-            problem_with(resp, k, d, call.errors, call.extra);
+            json_t *pe = call.errors ? prefixed_errors(call.errors, prefix) : NULL;
+            *out = problem_json(k, d, pe, call.extra);
+            json_decref(pe);
         }
         json_decref(result);
         json_decref(call.errors);
         json_decref(call.extra);
-        return;
+        return api_problem_status(k);
     }
     json_decref(call.errors);
     json_decref(call.extra);
@@ -260,13 +287,175 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
             json_object_del(result, "cost");
         }
     }
-    api_respond_json(resp, 200, "application/json", result);
-    json_decref(result);
+    *out = result;
+    return 200;
+}
+
+int api_run_operation(const struct api_call *outer, const char *path, const json_t *request,
+                      const char *pointer_prefix, json_t **out)
+{
+    *out = NULL;
+    long ri = path ? route_index(path) : -1;
+    if (ri < 0 || strcmp(api_routes[ri]->method, "POST") != 0 || !outer || !outer->req) return -1;
+    char note[200];
+    note[0] = '\0';
+    int status = run_parsed((size_t)ri, outer->req, request, pointer_prefix ? pointer_prefix : "",
+                            out, note, sizeof note);
+    if (!*out) {
+        *out = problem_json(API_PROBLEM_INTERNAL, "internal error", NULL, NULL);
+        status = 500;
+    }
+    return status;
+}
+
+/* Serialise an outcome of run_parsed into resp (consumes `out`). */
+static void respond_outcome(struct api_response *resp, int status, json_t *out, const char *note)
+{
+    if (!out) {
+        api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
+    } else {
+        api_respond_json(resp, status, status == 200 ? "application/json"
+                                                      : "application/problem+json", out);
+        json_decref(out);
+        if (status == 503) resp->retry_after = 1;
+    }
+    if (note && note[0]) snprintf(resp->note, sizeof resp->note, "%s", note);
+}
+
+static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
+{
+    if (!is_json_media_type(req->content_type)) {
+        char d[200];
+        snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
+                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
+                 req->content_type ? "'" : "");
+        api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
+        return;
+    }
+    json_error_t jerr;
+    json_t *body = json_loadb(req->body ? req->body : "", req->body ? req->body_len : 0,
+                              JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
+    if (!body) {
+        char d[300];
+        snprintf(d, sizeof d, "line %d, column %d: %s", jerr.line, jerr.column, jerr.text);
+        api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
+        return;
+    }
+    json_t *out = NULL;
+    char note[200];
+    note[0] = '\0';
+    int status = run_parsed(ri, req, body, "", &out, note, sizeof note);
+    json_decref(body);
+    respond_outcome(resp, status, out, note);
+}
+
+/* ---- GET ?request= : determinism, ETag, 304 ------------------------------------- */
+
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID ""
+#endif
+
+/* FNV-1a 64 over the parts, each followed by a NUL separator. */
+static uint64_t fnv1a(uint64_t h, const char *s)
+{
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        h ^= *p;
+        h *= 0x100000001b3ULL;
+    }
+    h *= 0x100000001b3ULL; /* the separator: h ^= 0 */
+    return h;
+}
+
+/* Strong ETag of (build, path, canonical request) into buf (>= 19 bytes).
+ * Returns 0, or -1 if memory ran out. */
+static int request_etag(const char *path, const json_t *body, char *buf, size_t n)
+{
+    char *canon = json_dumps(body, JSON_COMPACT | JSON_SORT_KEYS | JSON_REAL_PRECISION(17) |
+                                       JSON_ENCODE_ANY);
+    if (!canon) return -1;
+    uint64_t h = 0xcbf29ce484222325ULL;
+    h = fnv1a(h, "mechd " MECHD_VERSION " " MECHD_BUILD_ID);
+    h = fnv1a(h, path);
+    h = fnv1a(h, canon);
+    free(canon);
+    snprintf(buf, n, "\"%016llx\"", (unsigned long long)h);
+    return 0;
+}
+
+/* Whether an If-None-Match header value lists `etag` (weak comparison, RFC 9110
+ * 13.1.2: a W/ prefix is ignored) or is "*". */
+static int etag_matches(const char *header, const char *etag)
+{
+    if (!header || !etag || !etag[0]) return 0;
+    size_t elen = strlen(etag);
+    const char *p = header;
+    while (*p) {
+        while (*p == ' ' || *p == '\t' || *p == ',') p++;
+        if (!*p) break;
+        const char *start = p;
+        while (*p && *p != ',') p++;
+        const char *end = p;
+        while (end > start && (end[-1] == ' ' || end[-1] == '\t')) end--;
+        if (end - start == 1 && *start == '*') return 1;
+        if (end - start >= 2 && start[0] == 'W' && start[1] == '/') start += 2;
+        if ((size_t)(end - start) == elen && !strncmp(start, etag, elen)) return 1;
+    }
+    return 0;
+}
+
+static void run_query(size_t ri, const struct api_request *req, const struct api_request_ext *ext,
+                      struct api_response *resp)
+{
+    json_error_t jerr;
+    json_t *body = json_loads(ext->query_request,
+                              JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
+    if (!body) {
+        char d[300];
+        snprintf(d, sizeof d, "the request query parameter: line %d, column %d: %s", jerr.line,
+                 jerr.column, jerr.text);
+        api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
+        resp->cache_control = "no-store";
+        return;
+    }
+    char etag[sizeof resp->etag];
+    if (request_etag(api_routes[ri]->path, body, etag, sizeof etag)) etag[0] = '\0';
+    if (etag[0] && etag_matches(ext->if_none_match, etag)) {
+        json_decref(body);
+        memset(resp, 0, sizeof *resp);
+        resp->status = 304;
+        snprintf(resp->etag, sizeof resp->etag, "%s", etag);
+        resp->cache_control = "public, max-age=86400";
+        return;
+    }
+    json_t *out = NULL;
+    char note[200];
+    note[0] = '\0';
+    int status = run_parsed(ri, req, body, "", &out, note, sizeof note);
+    json_decref(body);
+    respond_outcome(resp, status, out, note);
+    if (resp->status == 200 && etag[0]) {
+        snprintf(resp->etag, sizeof resp->etag, "%s", etag);
+        resp->cache_control = "public, max-age=86400";
+    } else {
+        resp->cache_control = "no-store";
+    }
 }
 
 void api_handle(const struct api_request *req, struct api_response *resp)
 {
+    api_handle_ext(req, NULL, resp);
+}
+
+void api_handle_ext(const struct api_request *req0, const struct api_request_ext *ext,
+                    struct api_response *resp)
+{
     memset(resp, 0, sizeof *resp);
+    struct full_request full;
+    memset(&full, 0, sizeof full);
+    full.req = *req0;
+    const struct api_request *req = &full.req;
+    const char *query = ext ? ext->query_request : NULL;
+    full.no_cost = (ext && ext->no_cost) || (query && is_get(req->method ? req->method : ""));
     if (api_init() != 0) {
         api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
         snprintf(resp->note, sizeof resp->note, "api_init failed: %.150s", init_error);
@@ -298,10 +487,18 @@ void api_handle(const struct api_request *req, struct api_response *resp)
         return;
     }
     const char *want = api_routes[ri]->method;
+    if (!strcmp(want, "POST") && is_get(m) && query) {
+        run_query((size_t)ri, req, ext, resp);
+        return;
+    }
     if (!strcmp(want, "GET") ? !is_get(m) : strcmp(m, want) != 0) {
         method_not_allowed(resp, want);
         return;
     }
-    if (!strcmp(want, "GET")) run_resource((size_t)ri, req, resp);
-    else run_operation((size_t)ri, req, resp);
+    if (!strcmp(want, "GET")) {
+        run_resource((size_t)ri, req, resp);
+    } else {
+        run_operation((size_t)ri, req, resp);
+        resp->cache_control = "no-store";
+    }
 }

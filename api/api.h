@@ -47,6 +47,16 @@ struct api_response {
     size_t body_len;
     int retry_after;          /* seconds for Retry-After, 0 for none */
     char note[200];           /* for the server log only, never sent: why a 500 happened */
+    char etag[24];            /* "" or a strong entity tag, quoted ("\"0123456789abcdef\"") */
+    const char *cache_control;/* static string for Cache-Control, or NULL for none */
+};
+
+/* What only the HTTP server and `mechd eval` know about a request (all optional).
+ * Kept apart from struct api_request so existing initialisers stay valid. */
+struct api_request_ext {
+    const char *query_request; /* GET/HEAD: the URL-decoded ?request= value (JSON text), or NULL */
+    const char *if_none_match; /* If-None-Match header, or NULL */
+    int no_cost;               /* 1: drop the measured cost, so the body is byte-deterministic */
 };
 
 /* One-time set-up (parses the route schemas). Called by api_handle() on first
@@ -59,6 +69,29 @@ const char *api_init_error(void);
 /* Handle one request. Never fails: on any failure the response is a
  * problem+json. resp is overwritten; free it with api_response_free(). */
 void api_handle(const struct api_request *req, struct api_response *resp);
+
+/* api_handle() with the HTTP extras (ext may be NULL). Determinism contract:
+ * a GET or HEAD of a POST operation with ?request=<JSON> runs it with the
+ * cost dropped; a 200 answer then carries etag = FNV-1a 64 of (build version,
+ * path, canonical request: parsed JSON re-serialised compactly with sorted keys)
+ * and Cache-Control "public, max-age=86400", and the same ETag always comes
+ * with the same bytes. If If-None-Match matches that ETag (or is "*"), the
+ * answer is 304 with no body and the operation is not run. POST answers and
+ * every problem from an operation carry Cache-Control "no-store". */
+void api_handle_ext(const struct api_request *req, const struct api_request_ext *ext,
+                    struct api_response *resp);
+
+struct api_call;
+struct json_t;
+/* For /v1/check and /v1/batch: run the POST operation at `path` on the parsed
+ * `request` (borrowed) in-process, through the same pipeline as api_handle()
+ * (schema validation, handler, non-finite check, cost), sharing the outer
+ * call's budget (deadline, steps, cancel). Pointers of every error are
+ * prefixed with pointer_prefix ("/request"). Returns the HTTP status and sets
+ * *out to a new reference: the answer (200) or the problem object. Returns -1
+ * with *out = NULL if no POST operation has that path. */
+int api_run_operation(const struct api_call *outer, const char *path, const struct json_t *request,
+                      const char *pointer_prefix, struct json_t **out);
 
 /* Fill resp with a problem+json of the given kind and detail (may be NULL).
  * Used by the server for 413, 415, 503. */

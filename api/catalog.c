@@ -21,7 +21,9 @@ static const char service_description[] =
     "mechd answers physics questions from a university mechanics course (rotations, "
     "non-inertial frames, rigid bodies, special relativity) as JSON over HTTP. SI units "
     "unless a field says otherwise; 4-vectors are [ct, x, y, z] with metric (-,+,+,+); "
-    "rotations are passive. Errors are application/problem+json (RFC 9457).";
+    "rotations are passive. Errors are application/problem+json (RFC 9457). Every POST "
+    "operation also answers GET with ?request=<url-encoded JSON body>: the same bytes without "
+    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match.";
 
 /* Server-level resources that are not operations of the route table. */
 static const struct {
@@ -80,6 +82,42 @@ static json_t *problem_response(const char *description)
                      "#/components/schemas/Problem");
 }
 
+/* The GET ?request= form of POST operation i (see api.h, api_handle_ext). */
+static json_t *get_variant(size_t i, const char *opid)
+{
+    const struct api_route *r = api_routes[i];
+    char id[160];
+    snprintf(id, sizeof id, "%s_get", opid);
+    json_t *param = json_pack("{s:s,s:s,s:b,s:s,s:{s:{s:O}}}", "name", "request", "in", "query",
+                              "required", 1, "description",
+                              "the request body as URL-encoded JSON", "content",
+                              "application/json", "schema", api_route_schema(i));
+    json_t *etag_hdr = json_pack("{s:s,s:{s:s}}", "description",
+                                 "strong tag of (build, path, canonical request)", "schema",
+                                 "type", "string");
+    json_t *cc_hdr = json_pack("{s:s,s:{s:s}}", "description", "public, max-age=86400", "schema",
+                               "type", "string");
+    json_t *ok = json_pack("{s:s,s:{s:O,s:O},s:{s:{s:{s:s}}}}", "description",
+                           "The result, byte-identical to the POST answer without cost.",
+                           "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr, "content",
+                           "application/json", "schema", "type", "object");
+    json_t *nm = json_pack("{s:s,s:{s:O,s:O}}", "description",
+                           "If-None-Match matched the ETag: no body, the operation is not run.",
+                           "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr);
+    json_decref(etag_hdr);
+    json_decref(cc_hdr);
+    json_t *responses = json_pack("{s:o,s:o,s:o,s:o,s:o,s:o}", "200", ok, "304", nm, "400",
+                                  problem_response("The request parameter is not JSON."), "422",
+                                  problem_response("Validation, domain or compute-budget error."),
+                                  "500", problem_response("Internal error."), "503",
+                                  problem_response("Queue full or shutting down; see Retry-After."));
+    return json_pack("{s:s,s:s,s:s,s:[o],s:o}", "operationId", id, "summary", r->summary,
+                     "description",
+                     "The same operation as a cacheable GET: the measured cost is left out, so "
+                     "equal requests give equal bytes and the same ETag; If-None-Match gives 304.",
+                     "parameters", param, "responses", responses);
+}
+
 static json_t *build_openapi(void)
 {
     json_t *paths = json_object();
@@ -116,7 +154,9 @@ static json_t *build_openapi(void)
         char method[16];
         snprintf(method, sizeof method, "%s", r->method);
         for (char *p = method; *p; p++) *p = (char)(*p - 'A' + 'a');
-        json_object_set_new(paths, r->path, json_pack("{s:o}", method, op));
+        json_t *item = json_pack("{s:o}", method, op);
+        if (item && !strcmp(r->method, "POST")) json_object_set_new(item, "get", get_variant(i, opid));
+        json_object_set_new(paths, r->path, item);
     }
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++) {
         json_t *get = json_pack("{s:s,s:{s:{s:s,s:{s:{}}}}}", "summary", resources[i].summary,

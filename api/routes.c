@@ -16,6 +16,9 @@ extern const struct api_route api_route_scene_cannonball;
 extern const struct api_route api_route_scene_foucault;
 extern const struct api_route api_route_scene_rotating_table;
 extern const struct api_route api_route_integrators;
+extern const struct api_route api_route_check;
+extern const struct api_route api_route_batch;
+extern const struct api_route api_route_examples;
 extern const struct api_route api_route_rotation_convert;
 extern const struct api_route api_route_rotation_compose;
 extern const struct api_route api_route_rotation_apply;
@@ -73,5 +76,8 @@ const struct api_route *const api_routes[] = {
     &api_route_scene_foucault,
     &api_route_scene_rotating_table,
     &api_route_integrators,
+    &api_route_check,
+    &api_route_batch,
+    &api_route_examples,
 };
 const size_t api_route_count = sizeof api_routes / sizeof api_routes[0];

@@ -6,6 +6,11 @@
 #   install-deps.sh --bench  also the benchmarks' gnuplot-nox (the PNG plot)
 #                            and python3-scipy (the SciPy DOP853 baseline,
 #                            imported by Debian's /usr/bin/python3)
+# Both also install what the browser test of the front end needs (make test
+# runs it): Debian's chromium (/usr/bin/chromium; Playwright never downloads a
+# browser), and node + npm only when no `node` / `npm` command exists (a
+# machine may carry a newer Node.js from another package, which must not be
+# replaced: playwright-core wants Node.js >= 20; bookworm's nodejs is 18).
 set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev curl python3"
@@ -14,6 +19,10 @@ case "${1:-}" in
   "") ;;
   *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
 esac
+
+command -v node >/dev/null 2>&1 || PKGS="$PKGS nodejs"
+command -v npm >/dev/null 2>&1 || PKGS="$PKGS npm"
+PKGS="$PKGS chromium"
 
 missing=""
 for p in $PKGS; do

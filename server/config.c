@@ -2,6 +2,8 @@
  * default) with strict validation; see config.h. */
 #include "config.h"
 
+#include "static.h" /* MECHD_STATIC_DIR, the default root */
+
 #include <arpa/inet.h>
 #include <errno.h>
 #include <stdlib.h>
@@ -19,6 +21,7 @@ enum opt_id {
     OPT_MAX_BODY,
     OPT_DEADLINE_MS,
     OPT_MAX_STEPS,
+    OPT_STATIC_DIR,
     OPT_COUNT
 };
 
@@ -44,6 +47,9 @@ static const struct opt_spec {
                          "wall-clock budget of one request in ms, from when it is queued"},
     [OPT_MAX_STEPS] = {"--max-steps", "MECHD_MAX_STEPS", "10000000", 1, 1000000000000LL,
                        "step budget of one integration"},
+    [OPT_STATIC_DIR] = {"--static-dir", "MECHD_STATIC_DIR", MECHD_STATIC_DIR, 0, 0,
+                        "directory of the front end served at / (read once at start; when it "
+                        "is missing a built-in start page is served)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -63,6 +69,11 @@ static void print_help(FILE *out, const char *prog)
     fprintf(out, "  %-22s show this help and exit\n", "--help");
     fprintf(out, "  %-22s show the version and exit\n", "--version");
     fprintf(out, "\nSIGINT/SIGTERM stop the server cleanly (exit status 0).\n");
+    fprintf(out, "\nOffline mode (no network):\n"
+                 "  %s eval [--operation=PATH] [--cost] [FILE]   (see %s eval --help)\n"
+                 "  answers one request from FILE or stdin with exactly the body the server\n"
+                 "  would send; exit status 0 answer, 1 problem (4xx), 3 server failure, 2 usage.\n",
+            prog, prog);
 }
 
 /* Strict decimal integer in [min, max]: no sign games, no trailing text. */
@@ -90,6 +101,15 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
             return -1;
         }
         strcpy(cfg->bind, value);
+        return 0;
+    }
+    if (id == OPT_STATIC_DIR) {
+        if (!*value || strlen(value) >= sizeof cfg->static_dir) {
+            fprintf(err, "mechd: invalid %s '%s': expected a directory path (< %zu bytes)\n",
+                    source, value, sizeof cfg->static_dir);
+            return -1;
+        }
+        strcpy(cfg->static_dir, value);
         return 0;
     }
     long long v;

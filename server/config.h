@@ -18,6 +18,7 @@ struct srv_config {
     size_t max_body;  /* request body limit in bytes, 1..1 GiB */
     long deadline_ms; /* wall-clock budget per request, 1..86400000 ms */
     long max_steps;   /* step budget per integration, 1..1e12 */
+    char static_dir[1024]; /* root of the front end's static files (clients/web) */
 };
 
 enum srv_config_result {

@@ -28,6 +28,7 @@
 
 #include "api.h"
 #include "log.h"
+#include "static.h"
 #include "mech/budget.h"
 
 #define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
@@ -57,6 +58,7 @@ struct srv_req {
     unsigned long id;
     double t0;
     char *method, *path, *content_type; /* owned copies */
+    char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
     char *body;
     size_t body_len, body_cap, body_seen;
     int too_large;
@@ -64,6 +66,7 @@ struct srv_req {
     enum req_state state;
     int status; /* HTTP status sent, 0 if none */
     struct api_request areq;
+    struct api_request_ext aext;
     struct api_response aresp;
 };
 
@@ -102,6 +105,8 @@ static void req_free(struct srv_req *r)
     free(r->method);
     free(r->path);
     free(r->content_type);
+    free(r->query_request);
+    free(r->if_none_match);
     free(r->body);
     free(r);
 }
@@ -111,7 +116,7 @@ static void req_free(struct srv_req *r)
 static void req_run(struct srv_job *job)
 {
     struct srv_req *r = (struct srv_req *)job;
-    api_handle(&r->areq, &r->aresp);
+    api_handle_ext(&r->areq, &r->aext, &r->aresp);
     r->state = REQ_DONE;
     MHD_resume_connection(r->conn);
 }
@@ -153,6 +158,9 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     }
     snprintf(buf, sizeof buf, "%lu", r->id);
     MHD_add_response_header(mr, "X-Request-Id", buf);
+    if (resp->etag[0]) MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
+    if (resp->cache_control)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CACHE_CONTROL, resp->cache_control);
     if (status == MHD_HTTP_METHOD_NOT_ALLOWED && r->path &&
         (strcmp(r->path, "/healthz") == 0 || strcmp(r->path, "/metrics") == 0 ||
          strcmp(r->path, "/") == 0))
@@ -190,12 +198,52 @@ static int is_get(const char *m)
     return strcmp(m, MHD_HTTP_METHOD_GET) == 0 || strcmp(m, MHD_HTTP_METHOD_HEAD) == 0;
 }
 
-/* /healthz, /metrics, /: returns 1 and answers if path is a server route. */
+/* Paths the API layer answers (operations, catalog, problem types). */
+static int is_api_path(const char *p)
+{
+    return strcmp(p, "/v1") == 0 || strncmp(p, "/v1/", 4) == 0 || strncmp(p, "/problems/", 10) == 0;
+}
+
+/* Send a cached static file (200) or 304 when If-None-Match matches. The
+ * body belongs to the static cache, which outlives the daemon. */
+static enum MHD_Result answer_static(struct srv_req *r, const struct srv_static_file *f)
+{
+    int not_modified = srv_static_not_modified(f, r->if_none_match);
+    struct MHD_Response *mr = MHD_create_response_from_buffer(
+        not_modified ? 0 : f->len, not_modified ? (void *)"" : (void *)f->body,
+        MHD_RESPMEM_PERSISTENT);
+    r->state = REQ_ANSWERED;
+    if (!mr) return MHD_NO;
+    char buf[32];
+    snprintf(buf, sizeof buf, "%lu", r->id);
+    MHD_add_response_header(mr, "X-Request-Id", buf);
+    if (!not_modified) MHD_add_response_header(mr, MHD_HTTP_HEADER_CONTENT_TYPE, f->content_type);
+    /* f->headers carry ETag, Cache-Control, the CSP and nosniff. */
+    for (int i = 0; i < f->n_headers && i < SRV_STATIC_HEADERS; i++)
+        if (f->headers[i].name && f->headers[i].value)
+            MHD_add_response_header(mr, f->headers[i].name, f->headers[i].value);
+    int status = not_modified ? MHD_HTTP_NOT_MODIFIED : MHD_HTTP_OK;
+    enum MHD_Result ret = MHD_queue_response(r->conn, (unsigned)status, mr);
+    MHD_destroy_response(mr);
+    if (ret == MHD_YES) r->status = status;
+    return ret;
+}
+
+/* /healthz, /metrics, static files, /: returns 1 and answers if path is a
+ * server route. */
 static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *ret)
 {
     const char *p = r->path;
     int health = strcmp(p, "/healthz") == 0, metrics = strcmp(p, "/metrics") == 0,
         index = strcmp(p, "/") == 0;
+    if (!health && !metrics && is_get(r->method) && !is_api_path(p)) {
+        /* The front end (clients/web) when present; else the built-in page at /. */
+        struct srv_static_file f;
+        if (srv_static_lookup(p, &f) == 0) {
+            *ret = answer_static(r, &f);
+            return 1;
+        }
+    }
     if (!health && !metrics && !index) return 0;
     if (!is_get(r->method)) {
         char detail[96];
@@ -238,9 +286,13 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->areq.max_steps = h->cfg->max_steps;
     r->areq.cancel = &h->cancel;
     r->areq.deadline = mech_clock_seconds() + (double)h->cfg->deadline_ms / 1000.0;
+    r->aext.query_request = r->query_request;
+    r->aext.if_none_match = r->if_none_match;
 
-    if (strcmp(r->method, MHD_HTTP_METHOD_GET) == 0 && api_is_inline(r->method, r->path)) {
-        api_handle(&r->areq, &r->aresp);
+    /* GET ?request= runs an operation: it goes to the pool like a POST. */
+    if (strcmp(r->method, MHD_HTTP_METHOD_GET) == 0 && !r->query_request &&
+        api_is_inline(r->method, r->path)) {
+        api_handle_ext(&r->areq, &r->aext, &r->aresp);
         return answer(r, &r->aresp);
     }
     switch (srv_pool_reserve(h->pool)) {
@@ -320,9 +372,15 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         const char *ct =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_TYPE);
         r->content_type = dup_str(ct);
+        const char *qr = MHD_lookup_connection_value(conn, MHD_GET_ARGUMENT_KIND, "request");
+        r->query_request = dup_str(qr);
+        const char *inm =
+            MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_IF_NONE_MATCH);
+        r->if_none_match = dup_str(inm);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
-        if (!r->method || !r->path || (ct && !r->content_type)) {
+        if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
+            (inm && !r->if_none_match)) {
             r->oom = 1;
             return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
         }

@@ -16,14 +16,26 @@
 
 #include "api.h"
 #include "config.h"
+#include "eval.h"
 #include "http.h"
 #include "log.h"
+#include "static.h"
 #include "workers.h"
 
 #define SRV_DRAIN_SECONDS 3.0 /* how long answers to cancelled work may take to go out */
 
 int main(int argc, char **argv)
 {
+    if (argc >= 2 && strcmp(argv[1], "eval") == 0) {
+        /* Offline mode: one request through the API layer, no socket. */
+        gsl_set_error_handler_off();
+        if (api_init() != 0) {
+            srv_log_note("API initialisation failed: %s", api_init_error());
+            return 3;
+        }
+        return srv_eval_main(argc - 1, argv + 1, stdin, stdout, stderr);
+    }
+
     struct srv_config cfg;
     memset(&cfg, 0, sizeof cfg);
     switch (srv_config_load(&cfg, argc, argv, stdout, stderr)) {
@@ -41,6 +53,11 @@ int main(int argc, char **argv)
         return 1;
     }
 
+    /* The front end's files, read once; without them / is a built-in page. */
+    int n_static = srv_static_init(cfg.static_dir);
+    if (n_static < 0)
+        srv_log_note("no static files at %s: serving the built-in start page", cfg.static_dir);
+
     /* Block the stop signals before any thread starts, so all inherit the mask. */
     sigset_t stop;
     sigemptyset(&stop);
@@ -55,15 +72,18 @@ int main(int argc, char **argv)
     struct srv_pool *pool = srv_pool_create(cfg.workers, cfg.queue);
     if (!pool) {
         srv_log_note("cannot start %d worker threads", cfg.workers);
+        srv_static_free();
         return 1;
     }
     struct srv_http *http = srv_http_start(&cfg, pool);
     if (!http) {
         srv_pool_free(pool);
+        srv_static_free();
         return 1;
     }
-    srv_log_note("workers=%d queue=%d max_body=%zu deadline_ms=%ld max_steps=%ld", cfg.workers,
-                 cfg.queue, cfg.max_body, cfg.deadline_ms, cfg.max_steps);
+    srv_log_note("workers=%d queue=%d max_body=%zu deadline_ms=%ld max_steps=%ld static_files=%d",
+                 cfg.workers, cfg.queue, cfg.max_body, cfg.deadline_ms, cfg.max_steps,
+                 n_static < 0 ? 0 : n_static);
 
     int sig = 0;
     while (sigwait(&stop, &sig) != 0) {
@@ -75,6 +95,7 @@ int main(int argc, char **argv)
     srv_http_drain(http, SRV_DRAIN_SECONDS);
     srv_http_stop(http);
     srv_pool_free(pool);
+    srv_static_free();
     srv_log_note("stopped");
     return 0;
 }

@@ -1,0 +1,574 @@
+/* ep_grading.c — POST /v1/check (grade a student's answer against any
+ * operation's answer) and POST /v1/batch (several operations in one request).
+ *
+ * Both run the inner operations in-process through api_run_operation(), the
+ * same pipeline api_handle() uses (schema validation, handler, non-finite
+ * check), sharing this request's budget: one deadline, one cancel flag.
+ * Nesting (/v1/check or /v1/batch inside either) is refused, so the work of
+ * one request stays bounded by API_BATCH_MAX operations. The rules for
+ * tolerances are documented in docs/grading.md and in the route descriptions.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "respond.h"
+#include "schema.h"
+
+#define API_BATCH_MAX 100                 /* operations in one /v1/batch */
+#define CHECK_DEFAULT_RELATIVE 1e-2       /* tolerance when none is given */
+#define CHECK_CLOSED_FORM_RELATIVE 1e-12  /* numerical error assumed without evidence */
+#define CHECK_EVIDENCE_FACTOR 10.0        /* safety factor on the operation's own error figures */
+#define CHECK_MAX_ELEMENTS 100000         /* numbers compared in one answer */
+
+/* ---- shared ----------------------------------------------------------------- */
+
+static int is_nested(const char *path)
+{
+    return !strcmp(path, "/v1/check") || !strcmp(path, "/v1/batch");
+}
+
+/* Turn an inner problem object into this call's failure (pointers were already
+ * prefixed by api_run_operation). */
+static json_t *fail_with_problem(struct api_call *c, const json_t *problem)
+{
+    const char *type = json_string_value(json_object_get(problem, "type"));
+    enum api_problem k = API_PROBLEM_INTERNAL;
+    if (type && !strncmp(type, "/problems/", 10)) k = api_problem_by_slug(type + 10);
+    if (k == API_PROBLEM_NONE) k = API_PROBLEM_INTERNAL;
+    c->problem = k;
+    const char *d = json_string_value(json_object_get(problem, "detail"));
+    snprintf(c->detail, sizeof c->detail, "%s", d ? d : "the operation failed");
+    const json_t *errors = json_object_get(problem, "errors");
+    if (json_is_array(errors)) {
+        json_decref(c->errors);
+        c->errors = json_deep_copy(errors);
+    }
+    const char *key;
+    json_t *v;
+    json_object_foreach((json_t *)problem, key, v) {
+        if (!strcmp(key, "type") || !strcmp(key, "title") || !strcmp(key, "status") ||
+            !strcmp(key, "detail") || !strcmp(key, "errors"))
+            continue;
+        if (!c->extra) c->extra = json_object();
+        if (c->extra) json_object_set(c->extra, key, v);
+    }
+    return NULL;
+}
+
+/* ---- RFC 6901 JSON pointer ------------------------------------------------------ */
+
+/* Resolve pointer in doc; NULL if it does not exist or is malformed. When
+ * parent is not NULL it receives the container holding the target (NULL for
+ * the root). *bad is set when the pointer is syntactically invalid. */
+static json_t *pointer_get(json_t *doc, const char *ptr, json_t **parent, int *bad)
+{
+    *bad = 0;
+    if (parent) *parent = NULL;
+    if (!ptr[0]) return doc;
+    if (ptr[0] != '/') { *bad = 1; return NULL; }
+    json_t *cur = doc;
+    const char *p = ptr;
+    char tok[256];
+    while (*p == '/') {
+        p++;
+        size_t n = 0;
+        while (*p && *p != '/') {
+            char ch = *p++;
+            if (ch == '~') {
+                if (*p == '0') ch = '~';
+                else if (*p == '1') ch = '/';
+                else { *bad = 1; return NULL; }
+                p++;
+            }
+            if (n + 1 >= sizeof tok) { *bad = 1; return NULL; }
+            tok[n++] = ch;
+        }
+        tok[n] = '\0';
+        if (parent) *parent = cur;
+        if (json_is_object(cur)) {
+            cur = json_object_get(cur, tok);
+        } else if (json_is_array(cur)) {
+            /* array index: "0" or digits without a leading zero */
+            if (!n || (n > 1 && tok[0] == '0') || n > 9) return NULL;
+            size_t idx = 0;
+            for (size_t i = 0; i < n; i++) {
+                if (tok[i] < '0' || tok[i] > '9') return NULL;
+                idx = idx * 10 + (size_t)(tok[i] - '0');
+            }
+            cur = json_array_get(cur, idx);
+        } else {
+            return NULL;
+        }
+        if (!cur) return NULL;
+    }
+    return cur;
+}
+
+/* ---- recommended tolerance --------------------------------------------------------- */
+
+/* Whether a diagnostics member is a relative-error figure of the computation
+ * (not a physical quantity that happens to be relative, like relative_velocity). */
+static int is_relative_evidence(const char *key)
+{
+    if (!strcmp(key, "target_error") || !strcmp(key, "quaternion_norm_drift")) return 1;
+    if (!strstr(key, "relative") && !strstr(key, "_rel_")) return 0;
+    return strstr(key, "error") || strstr(key, "drift") || strstr(key, "difference") ||
+           strstr(key, "precision") || strstr(key, "bound");
+}
+
+/* Walk a diagnostics subtree, keeping the largest relative-error figure and
+ * where it was. Objects that say "conserved": false are skipped: the drift of
+ * a quantity that is not conserved is physics, not error; so are comparisons
+ * with a first-order (approximate) reference, whose difference is the model's. */
+static void scan_evidence(const json_t *j, char *ptr, size_t cap, double *worst, char *where,
+                          size_t where_n, int depth)
+{
+    if (depth > 12) return;
+    size_t len = strlen(ptr);
+    if (json_is_object(j)) {
+        if (json_is_false(json_object_get(j, "conserved"))) return;
+        const char *kind = json_string_value(json_object_get(j, "kind"));
+        if (kind && !strcmp(kind, "first_order")) return; /* a model, not the error */
+        const char *key;
+        json_t *v;
+        json_object_foreach((json_t *)j, key, v) {
+            api_pointer_append(ptr, cap, key);
+            if (json_is_number(v)) {
+                double x = fabs(json_number_value(v));
+                if (is_relative_evidence(key) && isfinite(x) && x > *worst) {
+                    *worst = x;
+                    snprintf(where, where_n, "%s", ptr);
+                }
+            } else {
+                scan_evidence(v, ptr, cap, worst, where, where_n, depth + 1);
+            }
+            ptr[len] = '\0';
+        }
+    } else if (json_is_array(j)) {
+        size_t i;
+        json_t *v;
+        json_array_foreach(j, i, v) {
+            snprintf(ptr + len, cap - len, "/%zu", i);
+            scan_evidence(v, ptr, cap, worst, where, where_n, depth + 1);
+            ptr[len] = '\0';
+        }
+    }
+}
+
+/* Evidence from the "diagnostics" members of the answer's root and of every
+ * object on the way down to the pointer (the nearest context of the value). */
+static double find_evidence(json_t *answer, const char *pointer, char *where, size_t where_n)
+{
+    double worst = 0;
+    where[0] = '\0';
+    char prefix[512];
+    char scan[512];
+    size_t plen = strlen(pointer);
+    /* every prefix of the pointer that ends at a token boundary, root first */
+    for (size_t cut = 0; cut <= plen && cut < sizeof prefix; cut++) {
+        if (cut != 0 && cut != plen && pointer[cut] != '/') continue;
+        memcpy(prefix, pointer, cut);
+        prefix[cut] = '\0';
+        int bad;
+        json_t *node = pointer_get(answer, prefix, NULL, &bad);
+        json_t *d = json_is_object(node) ? json_object_get(node, "diagnostics") : NULL;
+        if (!json_is_object(d)) continue;
+        snprintf(scan, sizeof scan, "%s", prefix);
+        api_pointer_append(scan, sizeof scan, "diagnostics");
+        scan_evidence(d, scan, sizeof scan, &worst, where, where_n, 0);
+    }
+    return worst;
+}
+
+/* ---- comparison ------------------------------------------------------------------ */
+
+struct grade {
+    double rel, abs_tol;  /* given criteria; < 0 when absent */
+    int sig;              /* significant figures; 0 when absent */
+    double rec_rel, rec_abs;
+    double max_abs_err, max_rel_err, max_bound;
+    int have_rel;
+    size_t count, wrong;
+    json_t *wrong_ptrs;   /* pointers into the operation's answer */
+};
+
+/* Half a unit in the n-th significant figure of e. */
+static double sig_bound(double e, int n)
+{
+    if (e == 0 || n <= 0) return 0;
+    double ex = floor(log10(fabs(e)));
+    return 0.5 * pow(10.0, ex - n + 1);
+}
+
+static void grade_one(struct grade *g, double e, double a, const char *ptr)
+{
+    double err = fabs(a - e);
+    double ae = fabs(e);
+    double bound = g->rec_abs + g->rec_rel * ae;
+    if (g->rel >= 0 && g->rel * ae > bound) bound = g->rel * ae;
+    if (g->abs_tol >= 0 && g->abs_tol > bound) bound = g->abs_tol;
+    if (g->sig > 0 && sig_bound(e, g->sig) > bound) bound = sig_bound(e, g->sig);
+    g->count++;
+    if (err > g->max_abs_err) g->max_abs_err = err;
+    if (ae > 0) {
+        double re = err / ae;
+        if (!g->have_rel || re > g->max_rel_err) g->max_rel_err = re;
+        g->have_rel = 1;
+    }
+    if (bound > g->max_bound) g->max_bound = bound;
+    if (!(err <= bound)) {
+        g->wrong++;
+        if (g->wrong_ptrs && json_array_size(g->wrong_ptrs) < 20)
+            json_array_append_new(g->wrong_ptrs, json_string(ptr));
+    }
+}
+
+/* Largest |number| in a JSON value (numbers and nested arrays). */
+static double max_abs(const json_t *j, int depth)
+{
+    if (json_is_number(j)) return fabs(json_number_value(j));
+    double m = 0;
+    if (json_is_array(j) && depth < 8) {
+        size_t i;
+        json_t *v;
+        json_array_foreach(j, i, v) {
+            double x = max_abs(v, depth + 1);
+            if (x > m) m = x;
+        }
+    }
+    return m;
+}
+
+/* Shape check: want (the expected value) and got (the answer's value) are both
+ * numbers or arrays of the same length down to numbers. Returns 0, or -1 with
+ * the pointer (relative to /answer/value) of the first mismatch in where. */
+static int same_shape(const json_t *want, const json_t *got, char *where, size_t n, size_t *count,
+                      int depth)
+{
+    if (json_is_number(want)) {
+        if (!json_is_number(got)) return -1;
+        (*count)++;
+        return 0;
+    }
+    if (!json_is_array(want) || !json_is_array(got) || depth > 8 ||
+        json_array_size(want) != json_array_size(got))
+        return -1;
+    size_t len = strlen(where);
+    for (size_t i = 0; i < json_array_size(want); i++) {
+        snprintf(where + len, n - len, "/%zu", i);
+        if (same_shape(json_array_get(want, i), json_array_get(got, i), where, n, count,
+                       depth + 1))
+            return -1;
+        where[len] = '\0';
+    }
+    return *count > CHECK_MAX_ELEMENTS ? -1 : 0;
+}
+
+static void grade_tree(struct grade *g, const json_t *want, const json_t *got, char *ptr, size_t n)
+{
+    if (json_is_number(want)) {
+        grade_one(g, json_number_value(want), json_number_value(got), ptr);
+        return;
+    }
+    size_t len = strlen(ptr);
+    for (size_t i = 0; i < json_array_size(want); i++) {
+        snprintf(ptr + len, n - len, "/%zu", i);
+        grade_tree(g, json_array_get(want, i), json_array_get(got, i), ptr, n);
+        ptr[len] = '\0';
+    }
+}
+
+/* Whether a value is a number or a (nested) array with only numbers. */
+static int numeric_tree(const json_t *j, int depth)
+{
+    if (json_is_number(j)) return 1;
+    if (!json_is_array(j) || depth > 8 || json_array_size(j) == 0) return 0;
+    size_t i;
+    json_t *v;
+    json_array_foreach(j, i, v) if (!numeric_tree(v, depth + 1)) return 0;
+    return 1;
+}
+
+/* ---- POST /v1/check ------------------------------------------------------------------ */
+
+#define OPERATION_PATH                                                                             \
+    "{\"type\":\"string\",\"description\":\"path of a POST operation, e.g. "                       \
+    "\\\"/v1/rigid/inertia\\\" (not /v1/check or /v1/batch)\"}"
+
+static const char check_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"operation\",\"request\",\"answer\"],\"properties\":{"
+    "\"operation\":" OPERATION_PATH ","
+    "\"request\":{\"type\":\"object\",\"description\":\"the operation's request body; validated "
+    "against that operation's schema (errors are reported under /request)\"},"
+    "\"answer\":{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"pointer\",\"value\"],\"properties\":{"
+    "\"pointer\":{\"type\":\"string\",\"description\":\"RFC 6901 JSON pointer into the "
+    "operation's answer, e.g. /principal/moments/0\"},"
+    "\"value\":{\"type\":[\"number\",\"array\"],\"description\":\"the student's number, or an "
+    "array (nested arrays for matrices) compared element-wise when the pointer names an "
+    "array\"}}},"
+    "\"tolerance\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
+    "\"relative\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6},"
+    "\"absolute\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e300},"
+    "\"significant_figures\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":17}},"
+    "\"description\":\"correct when the error is within ANY criterion given (or within the "
+    "recommended tolerance); default {\\\"relative\\\": 0.01}\"}}}";
+
+static const char check_example[] =
+    "{\"operation\":\"/v1/rigid/inertia\",\"request\":{\"bodies\":[{\"shape\":\"box\",\"mass\":12,"
+    "\"size\":[1,2,3],\"position\":[0,0,0]}]},\"answer\":{\"pointer\":\"/principal/moments/0\","
+    "\"value\":5.001},\"tolerance\":{\"significant_figures\":3}}";
+
+static const char check_description[] =
+    "Runs `operation` on `request` in-process (exactly as POST to that path would; errors in the "
+    "request are reported with pointers under /request) and compares the number at "
+    "`answer.pointer` (RFC 6901) of its answer with `answer.value` (an array is compared "
+    "element-wise, and is correct when every element is). An element is correct when "
+    "|value - expected| <= the largest of: relative*|expected|, absolute, half a unit in the "
+    "n-th significant figure of expected (significant_figures: n), and the recommended "
+    "tolerance; i.e. passing ANY given criterion is enough, and no tolerance is ever tighter than "
+    "mechd's own numerical error. Without `tolerance`, relative 0.01 applies. "
+    "recommended_tolerance: relative = max(1e-12, 10 x the largest relative-error figure found "
+    "in the answer's diagnostics on the way to the pointer: max_relative_* errors and drifts of "
+    "conserved quantities, target_error of the chosen integrator; not differences from a "
+    "first-order reference), absolute = relative x the "
+    "largest |number| among the expected value and its siblings (so a component that should be "
+    "0 is not judged relative to 0). Answer: correct, expected, absolute_error, relative_error "
+    "(largest over elements with expected != 0; null if there is none), tolerance_applied, "
+    "recommended_tolerance, and wrong (pointers of the wrong elements, at most 20).";
+
+static json_t *check(struct api_call *c, const json_t *body)
+{
+    const char *op = api_string(body, "operation", "");
+    const json_t *request = json_object_get(body, "request");
+    const json_t *answer = json_object_get(body, "answer");
+    const char *pointer = api_string(answer, "pointer", "");
+    const json_t *value = json_object_get(answer, "value");
+    const json_t *tol = json_object_get(body, "tolerance");
+
+    if (is_nested(op)) {
+        api_call_invalid(c, "/operation", "%s cannot be checked: /v1/check runs one operation",
+                         op);
+        return NULL;
+    }
+    int bad = 0;
+    if (pointer[0] && pointer[0] != '/') bad = 1;
+    for (const char *p = pointer; *p && !bad; p++)
+        if (*p == '~' && p[1] != '0' && p[1] != '1') bad = 1;
+    if (bad) {
+        api_call_invalid(c, "/answer/pointer",
+                         "not a JSON pointer (RFC 6901): it starts with '/' and escapes '~' as ~0 "
+                         "and '/' as ~1");
+        return NULL;
+    }
+    if (json_is_array(value) && !numeric_tree(value, 0)) {
+        api_call_invalid(c, "/answer/value", "must be a number or (nested) arrays of numbers");
+        return NULL;
+    }
+
+    json_t *res = NULL;
+    int st = api_run_operation(c, op, request, "/request", &res);
+    if (st < 0) {
+        api_call_invalid(c, "/operation", "no POST operation at %.120s; GET /v1 lists them", op);
+        return NULL;
+    }
+    if (st != 200) {
+        fail_with_problem(c, res);
+        json_decref(res);
+        return NULL;
+    }
+    json_object_del(res, "cost"); /* measured, not computed: never an answer */
+
+    json_t *parent = NULL;
+    json_t *want = pointer_get(res, pointer, &parent, &bad);
+    if (!want) {
+        api_call_invalid(c, "/answer/pointer", "%.200s does not exist in the answer of %.100s",
+                         pointer, op);
+        json_decref(res);
+        return NULL;
+    }
+    if (!numeric_tree(want, 0)) {
+        api_call_invalid(c, "/answer/pointer",
+                         "%.200s names a %s in the answer of %.100s, not a number or an array of "
+                         "numbers",
+                         pointer,
+                         json_is_object(want)   ? "JSON object"
+                         : json_is_string(want) ? "string"
+                         : json_is_boolean(want) ? "boolean"
+                         : json_is_null(want)   ? "null"
+                                                : "array that is not all numbers",
+                         op);
+        json_decref(res);
+        return NULL;
+    }
+    char where[512] = "";
+    size_t count = 0;
+    if (same_shape(want, value, where, sizeof where, &count, 0)) {
+        char msg[600];
+        if (json_is_number(want))
+            snprintf(msg, sizeof msg, "%.200s names a number: give a number", pointer);
+        else
+            snprintf(msg, sizeof msg,
+                     "%.200s names an array: give an array of the same shape (%zu numbers in all; "
+                     "first mismatch at /answer/value%.200s)",
+                     pointer, count, where);
+        api_call_invalid(c, "/answer/value", "%s", msg);
+        json_decref(res);
+        return NULL;
+    }
+
+    /* recommended tolerance from the operation's own error evidence */
+    char ev_where[512];
+    double evidence = find_evidence(res, pointer, ev_where, sizeof ev_where);
+    double rec_rel = CHECK_EVIDENCE_FACTOR * evidence;
+    int from_diag = rec_rel > CHECK_CLOSED_FORM_RELATIVE;
+    if (!from_diag) rec_rel = CHECK_CLOSED_FORM_RELATIVE;
+    double scale = max_abs(want, 0);
+    if (json_is_number(want) && json_is_array(parent)) {
+        double s = max_abs(parent, 0);
+        if (s > scale) scale = s;
+    }
+    double rec_abs = rec_rel * scale;
+
+    struct grade g;
+    memset(&g, 0, sizeof g);
+    int given = json_is_object(tol) && json_object_size(tol) > 0;
+    g.rel = given ? api_number(tol, "relative", -1) : CHECK_DEFAULT_RELATIVE;
+    g.abs_tol = given ? api_number(tol, "absolute", -1) : -1;
+    g.sig = given ? (int)api_number(tol, "significant_figures", 0) : 0;
+    g.rec_rel = rec_rel;
+    g.rec_abs = rec_abs;
+    g.wrong_ptrs = json_array();
+    char ptr[1024];
+    snprintf(ptr, sizeof ptr, "%s", pointer);
+    grade_tree(&g, want, value, ptr, sizeof ptr);
+
+    json_t *out = json_object();
+    json_object_set_new(out, "correct", json_boolean(g.wrong == 0));
+    json_object_set(out, "expected", want);
+    json_object_set_new(out, "absolute_error", api_real(c, g.max_abs_err));
+    json_object_set_new(out, "relative_error", g.have_rel ? api_real(c, g.max_rel_err)
+                                                          : json_null());
+    json_t *ta = json_object();
+    json_object_set_new(ta, "relative", g.rel >= 0 ? api_real(c, g.rel) : json_null());
+    json_object_set_new(ta, "absolute", g.abs_tol >= 0 ? api_real(c, g.abs_tol) : json_null());
+    json_object_set_new(ta, "significant_figures", g.sig > 0 ? json_integer(g.sig) : json_null());
+    json_object_set_new(ta, "defaulted", json_boolean(!given));
+    json_object_set_new(ta, "rule", json_string("any: correct when |value - expected| <= the "
+                                                "largest of the criteria and the recommended "
+                                                "tolerance"));
+    json_object_set_new(ta, "bound", api_real(c, g.max_bound));
+    json_object_set_new(out, "tolerance_applied", ta);
+    json_t *rt = json_object();
+    json_object_set_new(rt, "relative", api_real(c, rec_rel));
+    json_object_set_new(rt, "absolute", api_real(c, rec_abs));
+    json_object_set_new(rt, "basis", json_string(from_diag ? "diagnostics" : "closed_form"));
+    json_object_set_new(rt, "evidence", from_diag ? json_pack("{s:s,s:o}", "pointer", ev_where,
+                                                              "value", api_real(c, evidence))
+                                                  : json_null());
+    json_object_set_new(out, "recommended_tolerance", rt);
+    json_object_set_new(out, "compared", json_integer((json_int_t)g.count));
+    json_object_set_new(out, "wrong", g.wrong_ptrs);
+    json_decref(res);
+    return out;
+}
+
+const struct api_route api_route_check = {
+    "POST",
+    "/v1/check",
+    "Grade a student's answer: the expected value at a JSON pointer of any operation's answer, "
+    "the error, and a recommended tolerance.",
+    check_description,
+    check_schema,
+    check_example,
+    check,
+    0,
+};
+
+/* ---- POST /v1/batch --------------------------------------------------------------- */
+
+static const char batch_schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"operations\"],"
+    "\"properties\":{\"operations\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":100,"
+    "\"items\":{\"type\":\"object\",\"additionalProperties\":false,"
+    "\"required\":[\"operation\",\"request\"],\"properties\":{"
+    "\"operation\":" OPERATION_PATH ","
+    "\"request\":{\"type\":\"object\",\"description\":\"the operation's request body\"}}}}}}";
+
+static const char batch_example[] =
+    "{\"operations\":[{\"operation\":\"/v1/rigid/inertia\",\"request\":{\"bodies\":[{\"shape\":"
+    "\"box\",\"mass\":12,\"size\":[1,2,3],\"position\":[0,0,0]}]}},{\"operation\":"
+    "\"/v1/relativity/boost\",\"request\":{\"vectors\":[[1,0,0,0]],\"velocity\":{\"beta\":"
+    "[0.6,0,0]}}}]}";
+
+static const char batch_description[] =
+    "Runs up to 100 operations, each exactly as POST to its path would, and answers "
+    "{\"results\": [...]} in the same order: {\"status\": 200, \"body\": answer} or "
+    "{\"status\": 4xx/5xx, \"problem\": problem details}. A failing operation does not affect "
+    "the others; its error pointers are prefixed with /operations/<i>/request. All operations "
+    "share this request's deadline and step budget per integration: once the deadline has passed, "
+    "the remaining ones answer compute-budget-exceeded. /v1/check and /v1/batch cannot be "
+    "nested (422 for that entry). The batch itself is 200 whenever its envelope is valid.";
+
+static json_t *batch(struct api_call *c, const json_t *body)
+{
+    const json_t *ops = json_object_get(body, "operations");
+    json_t *results = json_array();
+    if (!results) return NULL;
+    size_t i;
+    json_t *item;
+    json_array_foreach(ops, i, item) {
+        const char *op = api_string(item, "operation", "");
+        char prefix[64];
+        snprintf(prefix, sizeof prefix, "/operations/%zu/request", i);
+        char opptr[64];
+        snprintf(opptr, sizeof opptr, "/operations/%zu/operation", i);
+        json_t *res = NULL;
+        int st;
+        if (is_nested(op)) {
+            res = api_problem_object(API_PROBLEM_VALIDATION, "cannot be nested in a batch");
+            json_object_set_new(res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr,
+                                                         "detail",
+                                                         "/v1/check and /v1/batch cannot be "
+                                                         "nested in a batch"));
+            st = api_problem_status(API_PROBLEM_VALIDATION);
+        } else if (c->budget.deadline > 0 && mech_clock_seconds() > c->budget.deadline) {
+            res = api_problem_object(API_PROBLEM_BUDGET,
+                                     "the batch's deadline passed before this operation started");
+            json_object_set_new(res, "progress", json_pack("{s:i,s:i}", "completed", (int)i,
+                                                           "total", (int)json_array_size(ops)));
+            st = api_problem_status(API_PROBLEM_BUDGET);
+        } else {
+            st = api_run_operation(c, op, json_object_get(item, "request"), prefix, &res);
+            if (st < 0) {
+                char d[200];
+                snprintf(d, sizeof d, "no POST operation at %.120s; GET /v1 lists them", op);
+                res = api_problem_object(API_PROBLEM_VALIDATION, d);
+                json_object_set_new(res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr,
+                                                             "detail", d));
+                st = api_problem_status(API_PROBLEM_VALIDATION);
+            }
+        }
+        if (!res) {
+            json_decref(results);
+            return NULL;
+        }
+        json_array_append_new(results, json_pack("{s:i,s:o}", "status", st,
+                                                 st == 200 ? "body" : "problem", res));
+    }
+    return json_pack("{s:o}", "results", results);
+}
+
+const struct api_route api_route_batch = {
+    "POST",
+    "/v1/batch",
+    "Several operations in one request, each answered independently, in order.",
+    batch_description,
+    batch_schema,
+    batch_example,
+    batch,
+    0,
+};

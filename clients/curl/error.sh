@@ -1,0 +1,12 @@
+#!/bin/sh
+# A failing request: a boost at beta = 1 (the speed of light) is physically
+# impossible. mechd answers 422 application/problem+json, type
+# /problems/domain-error, with errors[].pointer = "/velocity/beta" naming the field.
+# (-i would show the status line and Content-Type; curl exits 0 as it got an answer.)
+# Usage: MECHD_URL=http://host:port error.sh
+exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/boost" --json '{
+  "vectors": [[1, 0, 0, 0]],
+  "velocity": {
+    "beta": [1, 0, 0]
+  }
+}'

@@ -1,0 +1,22 @@
+#!/bin/sh
+# Notes §3.15, the twin paradox: 8 light years to a star at 0.8c and back. The
+# Earth twin ages 20 years (total.stay_at_home_time), the astronaut 12
+# (total.proper_time); each leg shows the Doppler ticks each twin sees.
+# Usage: MECHD_URL=http://host:port relativity_worldline.sh
+exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/worldline" --json '{
+  "units": "years",
+  "legs": [
+    {
+      "velocity": {
+        "beta": [0.8, 0, 0]
+      },
+      "distance": 8
+    },
+    {
+      "velocity": {
+        "beta": [-0.8, 0, 0]
+      },
+      "distance": 8
+    }
+  ]
+}'

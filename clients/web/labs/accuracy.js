@@ -1,0 +1,36 @@
+// Accuracy lab: a work-precision plot from POST /v1/compare — error against
+// right-hand-side evaluations for several integrators on a Kepler orbit.
+import {el, field, val, fmt, svg, labLayout, runner, examplePicker, linePlot} from '../lib.js';
+
+const BUILTIN = [{title: 'Kepler orbit, e ≈ 0.44, 20 time units', operation: '/v1/compare',
+  request: {operation: '/v1/trajectory', request: {particle: {mass: 1, position: [1, 0, 0], velocity: [0, 1.2, 0]},
+    forces: [{type: 'central_gravity', gm: 1}], t_end: 20, samples: 21},
+    sweep: {methods: ['rk8pd', 'rkf45', 'verlet', 'yoshida4'], tolerances: [1e-4, 1e-6, 1e-8, 1e-10], dts: [0.04, 0.01, 0.0025]}}}];
+
+export default {
+  id: 'accuracy', title: 'Accuracy',
+  mount(main) {
+    const L = labLayout(main, {title: 'Accuracy: work against precision',
+      intro: 'The same scene run with many integrators and settings. Lower and further left is better: the plot shows ' +
+             'what each digit of accuracy costs.'});
+    const vy = field({label: 'initial speed', pointer: '/request/particle/velocity/1', value: 1.2, id: 'acc-v'});
+    const te = field({label: 'duration', pointer: '/request/t_end', value: 20, id: 'acc-t'});
+    L.form.append(examplePicker(['/v1/compare'], BUILTIN, () => run()), vy.wrap, te.wrap,
+      el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'acc-submit'}, 'Compare')));
+    const plot = svg('svg', {class: 'plot', id: 'acc-plot', role: 'img', 'aria-label': 'work-precision plot'});
+    L.figure.append(el('h3', {}, 'Work-precision'), plot);
+    const run = runner(L, '/v1/compare', () => {
+      const b = structuredClone(BUILTIN[0].request);
+      b.request.particle.velocity[1] = val(vy.input); b.request.t_end = val(te.input); return b;
+    }, (r) => {
+      const by = {};
+      for (const run of r.runs) if (run.status === 'ok') (by[run.method] = by[run.method] || []).push([run.rhs_evaluations, run.max_position_error]);
+      L.results.replaceChildren(el('p', {}, `${r.runs.length} runs against the ${r.reference.kind} reference (${r.reference.name || ''}).`),
+        el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
+          r.runs.map(x => el('tr', {}, el('td', {}, x.method), el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))))));
+      linePlot(plot, Object.entries(by).map(([m, pts]) => ({label: m, points: pts.sort((p, q) => p[0] - q[0]), dots: false})),
+        {xlabel: 'right-hand-side evaluations', ylabel: 'max position error', logx: true, logy: true});
+    });
+    run();
+  },
+};

@@ -1,0 +1,120 @@
+// Spacetime lab: a Minkowski diagram (events, light cone, the boosted axes
+// ct' and x' sliding with beta, the invariant hyperbola) from
+// POST /v1/relativity/boost, and the twin paradox from /v1/relativity/worldline.
+import {el, svg, field, val, fmt, num, labLayout, runner, examplePicker, showProblem, clearErrors, api, curlBox, linePlot} from '../lib.js';
+
+const BUILTIN = [
+  {title: 'Boost by β = 0.6: the event (ct, x) = (1, 0) → (1.25, −0.75)', operation: '/v1/relativity/boost',
+   request: {vectors: [[1, 0, 0, 0], [1, 1, 0, 0], [2, 0.5, 0, 0]], velocity: {beta: [0.6, 0, 0]}}},
+];
+const st = {events: '1, 0; 1, 1; 2, 0.5', beta: 0.6};
+
+export default {
+  id: 'spacetime', title: 'Spacetime',
+  mount(main) {
+    const L = labLayout(main, {title: 'Spacetime: Minkowski diagram and the twin paradox',
+      intro: 'Events (ct, x) seen from a frame moving with velocity β along x. The boosted axes ct′ and x′ close ' +
+             'in on the light cone as β grows; every event stays on its hyperbola c²t² − x² = const.'});
+    const ev = field({label: 'Events (ct, x; …)', pointer: '/vectors', value: st.events, type: 'text', id: 'st-events',
+      help: 'light-seconds; separate events with ;'});
+    const beta = field({label: 'β = v/c', pointer: '/velocity/beta', value: st.beta, step: 0.01, id: 'st-beta'});
+    const slider = el('input', {type: 'range', min: -0.95, max: 0.95, step: 0.01, value: Math.max(-0.95, Math.min(0.95, st.beta)),
+      id: 'st-beta-slider', 'aria-label': 'β slider'});
+    L.form.append(examplePicker(['/v1/relativity/boost'], BUILTIN, (ex) => {
+      ev.input.value = ex.request.vectors.map(v => `${v[0]}, ${v[1]}`).join('; ');
+      if (ex.request.velocity && ex.request.velocity.beta) beta.input.value = ex.request.velocity.beta[0];
+      run();
+    }), ev.wrap, beta.wrap, el('div', {class: 'field'}, slider),
+      el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'st-submit'}, 'Boost')));
+    const parse = () => ev.input.value.split(';').map(s => s.trim()).filter(Boolean)
+      .map(s => { const [t, x] = s.split(',').map(Number); return [t, x, 0, 0]; });
+    const plot = svg('svg', {class: 'plot', id: 'st-diagram', role: 'img', 'aria-label': 'Minkowski diagram'});
+    L.figure.append(el('h3', {}, 'Minkowski diagram'), plot,
+      el('p', {class: 'muted'}, 'grey: light cone x = ±ct; ', el('span', {class: 'c3'}, 'blue: ct′ and x′ axes'),
+        '; ', el('span', {class: 'c1'}, 'red: events'), '; dashed: their hyperbolae'));
+    const run = runner(L, '/v1/relativity/boost', () => {
+      st.events = ev.input.value; st.beta = val(beta.input);
+      return {vectors: parse(), velocity: {beta: [val(beta.input), 0, 0]}};
+    }, (a, body) => {
+      L.results.replaceChildren(el('h3', {}, 'Answer'),
+        el('dl', {class: 'nums'}, el('dt', {}, 'γ'), num('st-gamma', a.gamma), el('dt', {}, 'rapidity'), num('st-rapidity', a.rapidity)),
+        el('table', {id: 'st-table'}, el('tr', {}, ['event', 'ct', 'x', 'ct′', 'x′', 'c²t² − x²'].map(h => el('th', {}, h))),
+          body.vectors.map((v, i) => el('tr', {}, el('td', {}, String(i + 1)), el('td', {}, fmt(v[0])), el('td', {}, fmt(v[1])),
+            el('td', {id: `st-ctp-${i}`, 'data-value': a.vectors[i][0]}, fmt(a.vectors[i][0])),
+            el('td', {id: `st-xp-${i}`, 'data-value': a.vectors[i][1]}, fmt(a.vectors[i][1])),
+            el('td', {}, fmt(-a.invariants_after[i]))))));
+      diagram(plot, body.vectors, a.beta[0]);
+    });
+    slider.addEventListener('input', () => { beta.input.value = slider.value; run(); });
+    beta.input.addEventListener('change', () => { if (Math.abs(val(beta.input)) <= 0.95) slider.value = beta.input.value; });
+    run();
+
+    // --- twins ---
+    const tw = el('form', {novalidate: true, 'aria-label': 'Twin paradox inputs', id: 'twin-form'});
+    const tb = field({label: 'β out and back', pointer: '/legs/0/velocity/beta /legs/1/velocity/beta', value: 0.8, step: 0.01, id: 'tw-beta'});
+    const td = field({label: 'distance', pointer: '/legs/0/distance /legs/1/distance', value: 8, unit: 'ly', id: 'tw-dist'});
+    const tprob = el('div', {class: 'problem', role: 'alert'});
+    const tres = el('section', {class: 'results', 'aria-live': 'polite'});
+    const tplot = svg('svg', {class: 'plot', id: 'tw-diagram', role: 'img', 'aria-label': 'Twin worldlines'});
+    const tcurl = curlBox();
+    tw.append(tb.wrap, td.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'tw-submit'}, 'Travel')));
+    main.append(el('h2', {}, 'The twin paradox'), el('p', {class: 'intro'},
+      'One twin travels out at β and back; the other stays home. The traveller\'s proper time is shorter by the factor 1/γ.'),
+      el('div', {class: 'grid'}, el('div', {}, tw, tprob, tcurl.box), el('div', {}, tres, tplot)));
+    const trun = async () => {
+      const b = val(tb.input), d = val(td.input);
+      const body = {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
+      tcurl.update('/v1/relativity/worldline', body);
+      const r = await api('/v1/relativity/worldline', body);
+      if (!r.ok) { showProblem(tw, tprob, r.status, r.body); tw.dataset.state = 'error'; return; }
+      clearErrors(tw, tprob); tw.dataset.state = 'done';
+      const t = r.body.total;
+      tres.replaceChildren(el('dl', {class: 'nums'},
+        el('dt', {}, 'traveller ages'), num('tw-proper', t.proper_time, 'yr'),
+        el('dt', {}, 'stay-at-home ages'), num('tw-home', t.stay_at_home_time, 'yr'),
+        el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')));
+      const legs = r.body.legs;
+      const trav = [[0, 0], ...legs.map(l => [l.end[1], l.end[0]])];
+      linePlot(tplot, [{points: [[0, 0], [0, t.coordinate_time]], label: `home: ${fmt(t.stay_at_home_time, 4)} yr`},
+        {points: trav, label: `traveller: ${fmt(t.proper_time, 4)} yr`}], {xlabel: 'x [ly]', ylabel: 'ct [yr]', equal: true});
+    };
+    tw.addEventListener('submit', (e) => { e.preventDefault(); trun(); });
+    trun();
+  },
+};
+
+function diagram(root, vectors, b) {
+  const W = 640, H = 480, R = Math.max(2.5, ...vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])]).filter(isFinite)) * 1.2;
+  root.replaceChildren(); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const s = (H / 2 - 10) / R, X = (x) => W / 2 + s * x, Y = (t) => H / 2 - s * t;
+  const ln = (x0, t0, x1, t1, a) => root.append(svg('line', {x1: X(x0), y1: Y(t0), x2: X(x1), y2: Y(t1), ...a}));
+  ln(-R * 1.4, 0, R * 1.4, 0, {stroke: '#000', 'stroke-width': 1.5}); ln(0, -R, 0, R, {stroke: '#000', 'stroke-width': 1.5});
+  root.append(svg('text', {x: X(R * 1.3), y: Y(0) - 6, 'font-size': 18}, 'x'), svg('text', {x: X(0) + 6, y: Y(R) + 16, 'font-size': 18}, 'ct'));
+  ln(-R, -R, R, R, {stroke: '#999', 'stroke-width': 2}); ln(-R, R, R, -R, {stroke: '#999', 'stroke-width': 2});
+  if (isFinite(b) && Math.abs(b) < 1) {
+    ln(-R * b, -R, R * b, R, {stroke: '#1864ab', 'stroke-width': 3}); // ct' axis: x = beta ct
+    ln(-R, -R * b, R, R * b, {stroke: '#1864ab', 'stroke-width': 3}); // x' axis: ct = beta x
+    root.append(svg('text', {x: X(R * b) + 6, y: Y(R) + 18, fill: '#1864ab', 'font-size': 18, 'font-weight': 700}, 'ct′'),
+      svg('text', {x: X(R) - 24, y: Y(R * b) - 8, fill: '#1864ab', 'font-size': 18, 'font-weight': 700}, 'x′'));
+    // tick marks of unit length on the boosted axes: (ct, x) = gamma (1, beta) and gamma (beta, 1)
+    const g = 1 / Math.sqrt(1 - b * b);
+    for (let k = -Math.floor(R); k <= Math.floor(R); k++) if (k) {
+      root.append(svg('circle', {cx: X(k * g * b), cy: Y(k * g), r: 3, fill: '#1864ab'}),
+        svg('circle', {cx: X(k * g), cy: Y(k * g * b), r: 3, fill: '#1864ab'}));
+    }
+  }
+  vectors.forEach((v, i) => {
+    const [t, x] = v; if (!isFinite(t) || !isFinite(x)) return;
+    const s2 = t * t - x * x;
+    if (Math.abs(s2) > 1e-12) { // its hyperbola, through the event
+      const a = Math.sqrt(Math.abs(s2)), pts = [];
+      for (let u = -3; u <= 3.0001; u += 0.05) {
+        const p = s2 > 0 ? [a * Math.sinh(u), Math.sign(t) * a * Math.cosh(u)] : [Math.sign(x) * a * Math.cosh(u), a * Math.sinh(u)];
+        if (Math.abs(p[0]) <= R * 1.4 && Math.abs(p[1]) <= R) pts.push(`${X(p[0]).toFixed(1)},${Y(p[1]).toFixed(1)}`);
+      }
+      root.append(svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#c92a2a', 'stroke-dasharray': '6 5', 'stroke-width': 1.5}));
+    }
+    root.append(svg('circle', {cx: X(x), cy: Y(t), r: 7, fill: '#c92a2a'}),
+      svg('text', {x: X(x) + 9, y: Y(t) - 9, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, String(i + 1)));
+  });
+}
