@@ -94,7 +94,7 @@ def check_clients(base):
 def main():
     binary = sys.argv[1]
     text = open(README, encoding="utf-8").read()
-    proc = subprocess.Popen([binary, "--port", "0"], stdout=subprocess.PIPE,
+    proc = subprocess.Popen([binary, "--port", "0", "--deadline-ms", "300000"], stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, text=True)
     try:
         line = proc.stdout.readline()

@@ -51,7 +51,7 @@ def check(name, cond, info=""):
 
 def start_server():
     env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
-    proc = subprocess.Popen([MECHD, "--port", "0"], stdout=subprocess.PIPE,
+    proc = subprocess.Popen([MECHD, "--port", "0", "--deadline-ms", "300000"], stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, env=env)
     buf, end = b"", time.monotonic() + 20
     while not buf.endswith(b"\n") and time.monotonic() < end:

@@ -50,7 +50,7 @@ class Server:
     def __init__(self, *args):
         env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
         self.errfile = tempfile.TemporaryFile()
-        self.proc = subprocess.Popen([MECHD, "--port", "0"] + list(args), stdout=subprocess.PIPE,
+        self.proc = subprocess.Popen([MECHD, "--port", "0", "--deadline-ms", "300000"] + list(args), stdout=subprocess.PIPE,
                                      stderr=self.errfile, env=env)
         fd = self.proc.stdout.fileno()
         buf = b""

@@ -55,7 +55,7 @@ def close(a, b, rtol):
 class Server:
     def __init__(self, *args):
         env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
-        self.proc = subprocess.Popen([MECHD, "--port", "0"] + [str(a) for a in args],
+        self.proc = subprocess.Popen([MECHD, "--port", "0", "--deadline-ms", "300000"] + [str(a) for a in args],
                                      stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=env)
         buf, end = b"", time.monotonic() + 20
         while not buf.endswith(b"\n") and time.monotonic() < end:
