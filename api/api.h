@@ -26,6 +26,8 @@ enum api_problem {
     API_PROBLEM_QUEUE_FULL,         /* 503 + Retry-After */
     API_PROBLEM_INTERNAL,           /* 500, generic detail */
     API_PROBLEM_CANCELLED,          /* 503, server shutting down */
+    API_PROBLEM_UNAUTHORIZED,       /* 401, --token-file set and no/wrong bearer token */
+    API_PROBLEM_CORS_FORBIDDEN,     /* 403, CORS preflight from an origin not allowed */
     API_PROBLEM_COUNT
 };
 

@@ -47,6 +47,11 @@ static const struct problem_row problems[API_PROBLEM_COUNT] = {
         "A bug in mechd. The server log line with the same request id has the details."},
     [API_PROBLEM_CANCELLED] = {503, "/problems/cancelled", "Cancelled",
         "The server is shutting down and cancelled the computation; retry elsewhere or later."},
+    [API_PROBLEM_UNAUTHORIZED] = {401, "/problems/unauthorized", "Unauthorized",
+        "This server requires a bearer token (--token-file): send Authorization: Bearer TOKEN."},
+    [API_PROBLEM_CORS_FORBIDDEN] = {403, "/problems/cors-origin-not-allowed",
+        "Origin not allowed", "A cross-origin request from an origin the server does not list "
+        "in --cors-origin."},
 };
 
 int api_problem_status(enum api_problem kind)

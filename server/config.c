@@ -22,6 +22,8 @@ enum opt_id {
     OPT_DEADLINE_MS,
     OPT_MAX_STEPS,
     OPT_STATIC_DIR,
+    OPT_TOKEN_FILE,
+    OPT_CORS_ORIGIN,
     OPT_COUNT
 };
 
@@ -50,6 +52,12 @@ static const struct opt_spec {
     [OPT_STATIC_DIR] = {"--static-dir", "MECHD_STATIC_DIR", MECHD_STATIC_DIR, 0, 0,
                         "directory of the front end served at / (read once at start; when it "
                         "is missing a built-in start page is served)"},
+    [OPT_TOKEN_FILE] = {"--token-file", "MECHD_TOKEN_FILE", "", 0, 0,
+                        "file holding one bearer token (printable ASCII, <= 256 bytes); when "
+                        "set, every /v1 request needs 'Authorization: Bearer TOKEN'"},
+    [OPT_CORS_ORIGIN] = {"--cors-origin", "MECHD_CORS_ORIGIN", "", 0, 0,
+                         "origin allowed to call /v1 from a browser, e.g. https://lab.example.org; "
+                         "repeatable or comma-separated; none: CORS off"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -64,15 +72,16 @@ static void print_help(FILE *out, const char *prog)
         char left[40];
         snprintf(left, sizeof left, "%s=VALUE", opts[i].flag);
         fprintf(out, "  %-22s %s\n  %-22s default %s, env %s\n", left, opts[i].help, "",
-                opts[i].def, opts[i].env);
+                *opts[i].def ? opts[i].def : "none", opts[i].env);
     }
     fprintf(out, "  %-22s show this help and exit\n", "--help");
     fprintf(out, "  %-22s show the version and exit\n", "--version");
     fprintf(out, "\nSIGINT/SIGTERM stop the server cleanly (exit status 0).\n");
-    fprintf(out, "\nOffline mode (no network):\n"
-                 "  %s eval [--operation=PATH] [--cost] [FILE]   (see %s eval --help)\n"
-                 "  answers one request from FILE or stdin with exactly the body the server\n"
-                 "  would send; exit status 0 answer, 1 problem (4xx), 3 server failure, 2 usage.\n",
+    fprintf(out,
+            "\nOffline mode (no network):\n"
+            "  %s eval [--operation=PATH] [--cost] [FILE]   (see %s eval --help)\n"
+            "  answers one request from FILE or stdin with exactly the body the server\n"
+            "  would send; exit status 0 answer, 1 problem (4xx), 3 server failure, 2 usage.\n",
             prog, prog);
 }
 
@@ -85,6 +94,73 @@ static int parse_int(const char *s, long long min, long long max, long long *out
     long long v = strtoll(s, &end, 10);
     if (errno || !end || *end != '\0' || v < min || v > max) return -1;
     *out = v;
+    return 0;
+}
+
+/* Read the bearer token: the file's first line without surrounding
+ * whitespace; printable ASCII only (RFC 6750 b64token is a subset). */
+static int load_token(struct srv_config *cfg, const char *path, const char *source, FILE *err)
+{
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        fprintf(err, "mechd: cannot read %s '%s': %s\n", source, path, strerror(errno));
+        return -1;
+    }
+    char buf[SRV_TOKEN_MAX + 4];
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = '\0';
+    char *s = buf;
+    while (*s == ' ' || *s == '\t')
+        s++;
+    size_t len = strcspn(s, "\r\n");
+    int cut = s[len] == '\0' && n == sizeof buf - 1; /* first line longer than the buffer */
+    while (len > 0 && (s[len - 1] == ' ' || s[len - 1] == '\t'))
+        len--;
+    s[len] = '\0';
+    int ok = !cut && len > 0 && len <= SRV_TOKEN_MAX;
+    for (size_t i = 0; ok && i < len; i++)
+        ok = s[i] > 0x20 && s[i] < 0x7f;
+    if (!ok) {
+        fprintf(err,
+                "mechd: invalid %s '%s': expected one token of 1 to %d printable ASCII "
+                "characters without spaces on the first line\n",
+                source, path, SRV_TOKEN_MAX);
+        return -1;
+    }
+    memcpy(cfg->token, s, len + 1);
+    cfg->token_len = len;
+    return 0;
+}
+
+/* Append comma-separated origins ("scheme://host[:port]", no path, or "null"
+ * is refused) to cfg->cors_origins. */
+static int add_origins(struct srv_config *cfg, const char *value, const char *source, FILE *err)
+{
+    const char *p = value;
+    while (*p) {
+        while (*p == ',' || *p == ' ')
+            p++;
+        size_t n = strcspn(p, ", ");
+        if (n == 0) break;
+        int ok =
+            (strncmp(p, "http://", 7) == 0 && n > 7) || (strncmp(p, "https://", 8) == 0 && n > 8);
+        size_t start = strncmp(p, "https://", 8) == 0 ? 8 : 7;
+        for (size_t i = start; ok && i < n; i++)
+            ok = p[i] > 0x20 && p[i] < 0x7f && p[i] != '/' && p[i] != '*';
+        size_t used = strlen(cfg->cors_origins);
+        if (!ok || used + n + 2 > sizeof cfg->cors_origins) {
+            fprintf(err,
+                    "mechd: invalid %s '%.*s': expected an origin such as "
+                    "https://lab.example.org or http://localhost:3000 (no path, no '*')\n",
+                    source, (int)n, p);
+            return -1;
+        }
+        if (used) cfg->cors_origins[used++] = ',';
+        memcpy(cfg->cors_origins + used, p, n);
+        cfg->cors_origins[used + n] = '\0';
+        p += n;
+    }
     return 0;
 }
 
@@ -112,6 +188,18 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         strcpy(cfg->static_dir, value);
         return 0;
     }
+    if (id == OPT_TOKEN_FILE) {
+        cfg->token[0] = '\0';
+        cfg->token_len = 0;
+        if (!*value) return 0; /* no authentication */
+        if (strlen(value) >= sizeof cfg->token_file) {
+            fprintf(err, "mechd: invalid %s: path too long\n", source);
+            return -1;
+        }
+        strcpy(cfg->token_file, value);
+        return load_token(cfg, value, source, err);
+    }
+    if (id == OPT_CORS_ORIGIN) return add_origins(cfg, value, source, err);
     long long v;
     if (parse_int(value, o->min, o->max, &v) != 0) {
         fprintf(err, "mechd: invalid %s '%s': expected an integer in [%lld, %lld]\n", source, value,
@@ -148,6 +236,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
 {
     const char *prog = argc > 0 && argv[0] ? argv[0] : "mechd";
     const char *cli[OPT_COUNT] = {0};
+    int cors_cli = 0; /* --cors-origin seen on the command line (repeatable) */
 
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -182,12 +271,21 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
             fprintf(err, "mechd: unknown argument '%s' (see --help)\n", a);
             return SRV_CONFIG_ERROR;
         }
+        if (found == OPT_CORS_ORIGIN) {
+            char source[64];
+            snprintf(source, sizeof source, "option %s", opts[found].flag);
+            if (!cors_cli) cfg->cors_origins[0] = '\0';
+            cors_cli = 1;
+            if (add_origins(cfg, value, source, err) != 0) return SRV_CONFIG_ERROR;
+            continue;
+        }
         cli[found] = value;
     }
 
     for (int k = 0; k < OPT_COUNT; k++) {
         char source[64];
         const char *value = cli[k];
+        if (k == OPT_CORS_ORIGIN && cors_cli) continue; /* taken above */
         if (value) {
             snprintf(source, sizeof source, "option %s", opts[k].flag);
         } else if ((value = getenv(opts[k].env)) != NULL) {

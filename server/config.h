@@ -11,15 +11,21 @@
 #include <stdio.h>
 
 struct srv_config {
-    char bind[64];    /* numeric IPv4 or IPv6 address to listen on */
-    int port;         /* 0..65535; 0 picks a free port */
-    int workers;      /* compute threads, 1..1024 */
-    int queue;        /* jobs waiting for a worker, 1..1000000 */
-    size_t max_body;  /* request body limit in bytes, 1..1 GiB */
-    long deadline_ms; /* wall-clock budget per request, 1..86400000 ms */
-    long max_steps;   /* step budget per integration, 1..1e12 */
-    char static_dir[1024]; /* root of the front end's static files (clients/web) */
+    char bind[64];           /* numeric IPv4 or IPv6 address to listen on */
+    int port;                /* 0..65535; 0 picks a free port */
+    int workers;             /* compute threads, 1..1024 */
+    int queue;               /* jobs waiting for a worker, 1..1000000 */
+    size_t max_body;         /* request body limit in bytes, 1..1 GiB */
+    long deadline_ms;        /* wall-clock budget per request, 1..86400000 ms */
+    long max_steps;          /* step budget per integration, 1..1e12 */
+    char static_dir[1024];   /* root of the front end's static files (clients/web) */
+    char token_file[1024];   /* --token-file: "" for no authentication */
+    char token[257];         /* the bearer token read from token_file ("" if none) */
+    size_t token_len;        /* strlen(token), 0 when /v1 is open */
+    char cors_origins[2048]; /* allowed origins, comma-separated, normalised; "" = CORS off */
 };
+
+#define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */
 
 enum srv_config_result {
     SRV_CONFIG_RUN = 0,   /* cfg is filled: start the server */

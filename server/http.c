@@ -11,6 +11,21 @@
  * connection, and the next access callback sends the stored response. A full
  * queue answers 503 + Retry-After at once. (STYLE.md §9; libmicrohttpd's
  * src/examples/suspend_resume_epoll.c.)
+ *
+ * SECURITY. With --token-file, every /v1 request needs the bearer token
+ * (checked on the first callback, before any body byte is read; compared in
+ * constant time); /healthz, /metrics, /problems/... and the front end stay open.
+ * CORS is off unless --cors-origin lists origins: only those get
+ * Access-Control-Allow-Origin on /v1 answers and a 204 to a preflight. Every
+ * answer built here carries nosniff, Referrer-Policy, X-Frame-Options and a
+ * CSP of default-src 'none' (static files carry static.c's own set).
+ * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
+ * request line) carry none of these: it offers no hook for them.
+ *
+ * CANCELLATION. A suspended connection is not polled by libmicrohttpd, so a
+ * watcher thread checks the sockets of pooled requests every 10 ms and raises
+ * the request's own cancel flag when the client has hung up: a waiting
+ * request is then never run, a running one stops at its next budget check.
  */
 #include "http.h"
 
@@ -18,29 +33,54 @@
 #include <errno.h>
 #include <microhttpd.h>
 #include <netinet/in.h>
+#include <poll.h>
+#include <pthread.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
 
 #include "api.h"
 #include "log.h"
+#include "routes.h"
 #include "static.h"
 #include "mech/budget.h"
 
 #define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
 #define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
 #define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
+#define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
+
+/* Sent with every answer mechd builds (static files carry their own set from
+ * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
+ * the front end load its own scripts). JSON and text need no sources at all. */
+#define SRV_API_CSP                                                                                \
+    "default-src 'none'; frame-ancestors 'none'; base-uri 'none'; form-action 'none'"
+/* CORS (only for origins listed with --cors-origin). */
+#define SRV_CORS_METHODS "GET, HEAD, POST, OPTIONS"
+#define SRV_CORS_HEADERS "Authorization, Content-Type, If-None-Match"
+#define SRV_CORS_EXPOSE "ETag, Retry-After, X-Request-Id"
+#define SRV_CORS_MAX_AGE "600"
+
+struct srv_req;
 
 struct srv_http {
     struct MHD_Daemon *daemon;
     const struct srv_config *cfg;
     struct srv_pool *pool;
-    volatile int cancel; /* every request's budget points here */
-    int listen_fd;       /* from MHD_quiesce_daemon, closed after stop; -1 if none */
+    volatile int cancel; /* raised at shutdown; copied into every pooled request's flag */
+    /* Requests handed to the pool (queued or running), watched for a client
+     * hang-up by the watcher thread. Guarded by watch_mu. */
+    pthread_mutex_t watch_mu;
+    struct srv_req *watched;
+    int watch_stop;
+    int watch_started;
+    pthread_t watcher;
+    int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
     atomic_ulong next_id;
     atomic_int inflight; /* requests between first callback and completion */
 };
@@ -57,17 +97,32 @@ struct srv_req {
     struct MHD_Connection *conn;
     unsigned long id;
     double t0;
-    char *method, *path, *content_type; /* owned copies */
+    char *method, *path, *content_type;  /* owned copies */
     char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
     char *body;
     size_t body_len, body_cap, body_seen;
     int too_large;
     int oom;
+    int cors_ok;       /* Origin is in --cors-origin: send Access-Control-Allow-Origin */
+    int vary_origin;   /* a /v1 answer while CORS is on: send Vary: Origin */
+    int preflight;     /* a CORS preflight: answered in dispatch (keeps the connection) */
+    const char *route; /* metrics label when the server knows it ("static", ...), or NULL */
+    char *origin;      /* owned copy of the Origin header, or NULL */
+    const char *www_authenticate; /* static value for a 401, or NULL */
     enum req_state state;
     int status; /* HTTP status sent, 0 if none */
     struct api_request areq;
     struct api_request_ext aext;
     struct api_response aresp;
+    /* Cooperative cancellation (pooled requests only). areq.cancel points at
+     * `cancel`; the watcher raises it when the client hangs up (client_gone),
+     * srv_http_quiesce when the server stops. Written with __atomic stores. */
+    volatile int cancel;
+    int client_gone;
+    int fd; /* the connection's socket, -1 if unknown */
+    struct srv_http *http;
+    struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
+    int watching;
 };
 
 static const char index_html[] =
@@ -107,8 +162,85 @@ static void req_free(struct srv_req *r)
     free(r->content_type);
     free(r->query_request);
     free(r->if_none_match);
+    free(r->origin);
     free(r->body);
     free(r);
+}
+
+/* ---- watching pooled requests for a client hang-up ------------------------------ */
+
+/* Add r to the watched list (before it is submitted to the pool). */
+static void watch_add(struct srv_http *h, struct srv_req *r)
+{
+    pthread_mutex_lock(&h->watch_mu);
+    if (__atomic_load_n(&h->cancel, __ATOMIC_SEQ_CST))
+        __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
+    r->watch_prev = NULL;
+    r->watch_next = h->watched;
+    if (h->watched) h->watched->watch_prev = r;
+    h->watched = r;
+    r->watching = 1;
+    pthread_mutex_unlock(&h->watch_mu);
+}
+
+/* Remove r (before its connection is resumed: after that r may be freed). */
+static void watch_remove(struct srv_http *h, struct srv_req *r)
+{
+    pthread_mutex_lock(&h->watch_mu);
+    if (r->watching) {
+        if (r->watch_prev)
+            r->watch_prev->watch_next = r->watch_next;
+        else
+            h->watched = r->watch_next;
+        if (r->watch_next) r->watch_next->watch_prev = r->watch_prev;
+        r->watch_prev = r->watch_next = NULL;
+        r->watching = 0;
+    }
+    pthread_mutex_unlock(&h->watch_mu);
+}
+
+/* Has the peer closed its side? A suspended connection is not polled by
+ * libmicrohttpd, so look at the socket: readable with recv() peeking 0 bytes
+ * (EOF) or an error means the client is gone; readable with data (a pipelined
+ * request) is not a hang-up. A client that half-closes (shutdown(SHUT_WR))
+ * after sending its request is treated as gone too: HTTP/1.1 clients do not
+ * do that in practice (RFC 9112 §9.6), and nginx's client-abort check does
+ * the same. */
+static int peer_closed(int fd)
+{
+    struct pollfd pfd = {fd, POLLIN, 0};
+    if (poll(&pfd, 1, 0) <= 0) return 0;
+    if (pfd.revents & (POLLERR | POLLHUP | POLLNVAL)) return 1;
+    if (!(pfd.revents & POLLIN)) return 0;
+    char c;
+    ssize_t n = recv(fd, &c, 1, MSG_PEEK | MSG_DONTWAIT);
+    if (n == 0) return 1;
+    return n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR;
+}
+
+/* The watcher thread: every SRV_WATCH_PERIOD_MS, raise the cancel flag of
+ * each pooled request whose client hung up. Waiting ones are then answered
+ * at once by the worker that picks them up; running ones stop at their next
+ * budget check (mech_budget_check reads the flag every 256 steps). */
+static void *watcher_main(void *arg)
+{
+    struct srv_http *h = arg;
+    for (;;) {
+        pthread_mutex_lock(&h->watch_mu);
+        if (h->watch_stop) {
+            pthread_mutex_unlock(&h->watch_mu);
+            break;
+        }
+        for (struct srv_req *r = h->watched; r; r = r->watch_next)
+            if (r->fd >= 0 && !r->client_gone && peer_closed(r->fd)) {
+                r->client_gone = 1;
+                __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
+            }
+        pthread_mutex_unlock(&h->watch_mu);
+        struct timespec ts = {0, SRV_WATCH_PERIOD_MS * 1000L * 1000L};
+        nanosleep(&ts, NULL);
+    }
+    return NULL;
 }
 
 /* Worker side: cannot fail; the outcome is stored in the request. After
@@ -116,7 +248,15 @@ static void req_free(struct srv_req *r)
 static void req_run(struct srv_job *job)
 {
     struct srv_req *r = (struct srv_req *)job;
-    api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    pthread_mutex_lock(&r->http->watch_mu);
+    int gone = r->client_gone;
+    pthread_mutex_unlock(&r->http->watch_mu);
+    if (gone) /* hung up while waiting: nobody to answer, do not run it */
+        api_response_problem(&r->aresp, API_PROBLEM_CANCELLED,
+                             "the client closed the connection; the request was not run");
+    else
+        api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    watch_remove(r->http, r);
     r->state = REQ_DONE;
     MHD_resume_connection(r->conn);
 }
@@ -126,11 +266,27 @@ static void req_cancel(struct srv_job *job)
     struct srv_req *r = (struct srv_req *)job;
     api_response_problem(&r->aresp, API_PROBLEM_CANCELLED,
                          "the server is shutting down; the request was not run");
+    watch_remove(r->http, r);
     r->state = REQ_DONE;
     MHD_resume_connection(r->conn);
 }
 
 /* ---- answering --------------------------------------------------------------- */
+
+/* Headers every answer built here carries: the security set, and CORS for an
+ * allowed origin. */
+static void add_common_headers(struct srv_req *r, struct MHD_Response *mr)
+{
+    MHD_add_response_header(mr, "X-Content-Type-Options", "nosniff");
+    MHD_add_response_header(mr, "Referrer-Policy", "no-referrer");
+    MHD_add_response_header(mr, "X-Frame-Options", "DENY");
+    MHD_add_response_header(mr, "Content-Security-Policy", SRV_API_CSP);
+    if (r->vary_origin) MHD_add_response_header(mr, "Vary", "Origin");
+    if (r->cors_ok && r->origin) {
+        MHD_add_response_header(mr, "Access-Control-Allow-Origin", r->origin);
+        MHD_add_response_header(mr, "Access-Control-Expose-Headers", SRV_CORS_EXPOSE);
+    }
+}
 
 /* Send resp (its body is handed to MHD, which frees it) with Content-Type,
  * Retry-After and X-Request-Id. resp is left empty. */
@@ -158,6 +314,9 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     }
     snprintf(buf, sizeof buf, "%lu", r->id);
     MHD_add_response_header(mr, "X-Request-Id", buf);
+    add_common_headers(r, mr);
+    if (r->www_authenticate)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_WWW_AUTHENTICATE, r->www_authenticate);
     if (resp->etag[0]) MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
     if (resp->cache_control)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_CACHE_CONTROL, resp->cache_control);
@@ -193,6 +352,102 @@ static enum MHD_Result answer_text(struct srv_req *r, int status, const char *co
     return answer(r, &r->aresp);
 }
 
+/* A problem+json the API layer has no kind for (401, 403): type, title and
+ * detail are static text (nothing from the request, so nothing to escape). */
+static enum MHD_Result answer_server_problem(struct srv_req *r, int status, const char *slug,
+                                             const char *title, const char *detail)
+{
+    char *body = malloc(512);
+    if (!body) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    int n = snprintf(body, 512,
+                     "{\"type\":\"/problems/%s\",\"title\":\"%s\",\"status\":%d,"
+                     "\"detail\":\"%s\"}",
+                     slug, title, status, detail);
+    if (n < 0 || n >= 512) {
+        free(body);
+        return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    }
+    api_response_free(&r->aresp);
+    r->aresp.status = status;
+    r->aresp.content_type = "application/problem+json";
+    r->aresp.body = body;
+    r->aresp.body_len = (size_t)n;
+    r->aresp.retry_after = 0;
+    r->aresp.cache_control = "no-store";
+    return answer(r, &r->aresp);
+}
+
+/* /v1 and everything under it: the token and CORS apply here. */
+static int is_v1_path(const char *p)
+{
+    return strcmp(p, "/v1") == 0 || strncmp(p, "/v1/", 4) == 0;
+}
+
+/* Is origin (the Origin header) one of the comma-separated allowed origins?
+ * Scheme and host compare case-insensitively (RFC 6454 §6.1 serialises them in
+ * lower case anyway). */
+static int origin_allowed(const char *list, const char *origin)
+{
+    size_t n = strlen(origin);
+    if (n == 0) return 0;
+    for (const char *p = list; *p;) {
+        size_t k = strcspn(p, ",");
+        if (k == n && strncasecmp(p, origin, n) == 0) return 1;
+        p += k;
+        if (*p == ',') p++;
+    }
+    return 0;
+}
+
+/* Does the Authorization header carry the configured bearer token? The token
+ * comparison reads a fixed SRV_TOKEN_MAX bytes whatever the input, so its time
+ * says nothing about how many leading characters matched (RFC 6750 §2.1). */
+static int token_ok(const struct srv_config *cfg, const char *authorization)
+{
+    if (!authorization) return 0;
+    while (*authorization == ' ')
+        authorization++;
+    if (strncasecmp(authorization, "Bearer ", 7) != 0) return 0;
+    const char *given = authorization + 7;
+    while (*given == ' ')
+        given++;
+    size_t glen = strlen(given);
+    while (glen > 0 && given[glen - 1] == ' ')
+        glen--;
+    volatile unsigned char diff = (unsigned char)(glen != cfg->token_len);
+    for (size_t i = 0; i < SRV_TOKEN_MAX; i++) {
+        unsigned char a = i < glen ? (unsigned char)given[i] : 0;
+        unsigned char b = i < cfg->token_len ? (unsigned char)cfg->token[i] : 0;
+        diff |= (unsigned char)(a ^ b);
+    }
+    return diff == 0;
+}
+
+/* CORS preflight (OPTIONS with Origin and Access-Control-Request-Method) for
+ * /v1: 204 with the allowed methods and headers for a listed origin, else 403.
+ * Preflights carry no credentials, so they are answered before the token check. */
+static enum MHD_Result answer_preflight(struct srv_req *r)
+{
+    if (!r->cors_ok)
+        return answer_server_problem(r, 403, "cors-origin-not-allowed", "Origin not allowed",
+                                     "this origin is not in the server's --cors-origin list");
+    struct MHD_Response *mr =
+        MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
+    r->state = REQ_ANSWERED;
+    if (!mr) return MHD_NO;
+    char buf[32];
+    snprintf(buf, sizeof buf, "%lu", r->id);
+    MHD_add_response_header(mr, "X-Request-Id", buf);
+    add_common_headers(r, mr);
+    MHD_add_response_header(mr, "Access-Control-Allow-Methods", SRV_CORS_METHODS);
+    MHD_add_response_header(mr, "Access-Control-Allow-Headers", SRV_CORS_HEADERS);
+    MHD_add_response_header(mr, "Access-Control-Max-Age", SRV_CORS_MAX_AGE);
+    enum MHD_Result ret = MHD_queue_response(r->conn, MHD_HTTP_NO_CONTENT, mr);
+    MHD_destroy_response(mr);
+    if (ret == MHD_YES) r->status = MHD_HTTP_NO_CONTENT;
+    return ret;
+}
+
 static int is_get(const char *m)
 {
     return strcmp(m, MHD_HTTP_METHOD_GET) == 0 || strcmp(m, MHD_HTTP_METHOD_HEAD) == 0;
@@ -209,6 +464,7 @@ static int is_api_path(const char *p)
 static enum MHD_Result answer_static(struct srv_req *r, const struct srv_static_file *f)
 {
     int not_modified = srv_static_not_modified(f, r->if_none_match);
+    r->route = "static";
     struct MHD_Response *mr = MHD_create_response_from_buffer(
         not_modified ? 0 : f->len, not_modified ? (void *)"" : (void *)f->body,
         MHD_RESPMEM_PERSISTENT);
@@ -254,9 +510,10 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
         *ret = answer_text(r, 200, "application/json", dup_str(ok), sizeof ok - 1);
     } else if (metrics) {
         int queued = 0, busy = 0;
+        double busy_s = 0;
         unsigned long len = 0;
-        srv_pool_stats(h->pool, &queued, &busy);
-        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, &len);
+        srv_pool_stats(h->pool, &queued, &busy, &busy_s);
+        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s, &len);
         *ret = answer_text(r, 200, "text/plain; version=0.0.4; charset=utf-8", text, len);
     } else {
         *ret = answer_text(r, 200, "text/html; charset=utf-8", dup_str(index_html),
@@ -275,6 +532,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
                  h->cfg->max_body);
         return answer_problem(r, API_PROBLEM_BODY_TOO_LARGE, detail);
     }
+    if (r->preflight) return answer_preflight(r);
     enum MHD_Result ret;
     if (server_route(h, r, &ret)) return ret;
 
@@ -284,7 +542,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->areq.body = r->body;
     r->areq.body_len = r->body_len;
     r->areq.max_steps = h->cfg->max_steps;
-    r->areq.cancel = &h->cancel;
+    r->areq.cancel = &r->cancel;
     r->areq.deadline = mech_clock_seconds() + (double)h->cfg->deadline_ms / 1000.0;
     r->aext.query_request = r->query_request;
     r->aext.if_none_match = r->if_none_match;
@@ -310,6 +568,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         break;
     }
     r->state = REQ_QUEUED;
+    watch_add(h, r);
     MHD_suspend_connection(r->conn);
     /* Cannot fail; may run req_cancel (and resume) at once if the pool stopped. */
     srv_pool_submit(h->pool, &r->job);
@@ -363,6 +622,11 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         r = calloc(1, sizeof *r);
         if (!r) return MHD_NO;
         r->conn = conn;
+        r->http = h;
+        r->fd = -1;
+        const union MHD_ConnectionInfo *ci =
+            MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CONNECTION_FD);
+        if (ci) r->fd = (int)ci->connect_fd;
         r->id = atomic_fetch_add(&h->next_id, 1) + 1;
         r->t0 = mech_clock_seconds();
         r->job.run = req_run;
@@ -377,12 +641,38 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         const char *inm =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_IF_NONE_MATCH);
         r->if_none_match = dup_str(inm);
+        const char *origin =
+            MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ORIGIN);
+        r->origin = dup_str(origin);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
-            (inm && !r->if_none_match)) {
+            (inm && !r->if_none_match) || (origin && !r->origin)) {
             r->oom = 1;
             return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+        }
+        if (is_v1_path(r->path)) {
+            int cors_on = h->cfg->cors_origins[0] != '\0';
+            r->vary_origin = cors_on;
+            r->cors_ok = cors_on && r->origin && origin_allowed(h->cfg->cors_origins, r->origin);
+            if (strcmp(r->method, MHD_HTTP_METHOD_OPTIONS) == 0 && r->origin &&
+                MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
+                                            "Access-Control-Request-Method")) {
+                r->preflight = 1;
+                return MHD_YES;
+            }
+            if (h->cfg->token_len > 0 &&
+                !token_ok(h->cfg, MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
+                                                              MHD_HTTP_HEADER_AUTHORIZATION))) {
+                int given = MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
+                                                        MHD_HTTP_HEADER_AUTHORIZATION) != NULL;
+                r->www_authenticate = given ? "Bearer realm=\"mechd\", error=\"invalid_token\""
+                                            : "Bearer realm=\"mechd\"";
+                return answer_server_problem(
+                    r, 401, "unauthorized", "Unauthorized",
+                    given ? "the bearer token is not valid for this server"
+                          : "this server requires 'Authorization: Bearer TOKEN' for /v1");
+            }
         }
         const char *cl =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_LENGTH);
@@ -416,6 +706,22 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
     return MHD_YES;
 }
 
+/* The /metrics route label: a bounded set, whatever paths clients send. An
+ * operation's path from the route table; a server route; "static"; a /v1 or
+ * /problems resource that answered 2xx/304 (a fixed set of documents);
+ * anything else "other". */
+static const char *route_label(const struct srv_req *r)
+{
+    if (r->route) return r->route;
+    const char *p = r->path;
+    if (!p) return "other";
+    if (strcmp(p, "/healthz") == 0 || strcmp(p, "/metrics") == 0 || strcmp(p, "/") == 0) return p;
+    for (size_t i = 0; i < api_route_count; i++)
+        if (strcmp(api_routes[i]->path, p) == 0) return api_routes[i]->path;
+    if (is_api_path(p) && ((r->status >= 200 && r->status < 300) || r->status == 304)) return p;
+    return "other";
+}
+
 static void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
                          enum MHD_RequestTerminationCode toe)
 {
@@ -426,9 +732,23 @@ static void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
     if (!r) return;
     *con_cls = NULL;
     double us = (mech_clock_seconds() - r->t0) * 1e6;
-    srv_log_request(r->id, r->method, r->path, r->status, (long)(us + 0.5));
+    srv_log_request(r->id, r->method, r->path, route_label(r), r->status, (long)(us + 0.5));
     req_free(r);
     atomic_fetch_sub(&h->inflight, 1);
+}
+
+/* URL unescaping: libmicrohttpd's %HH decoding, except that a decoded NUL
+ * ("%00") becomes 0x01. A C string would otherwise end at the NUL, so that
+ * "/app.js%00.html" looked like "/app.js"; a control character is refused by
+ * the static lookup and matches no API route. */
+static size_t unescape_no_nul(void *cls, struct MHD_Connection *c, char *s)
+{
+    (void)cls;
+    (void)c;
+    size_t n = MHD_http_unescape(s);
+    for (size_t i = 0; i < n; i++)
+        if (s[i] == '\0') s[i] = '\x01';
+    return n;
 }
 
 /* ---- lifecycle ------------------------------------------------------------------ */
@@ -440,6 +760,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->cfg = cfg;
     h->pool = pool;
     h->listen_fd = -1;
+    pthread_mutex_init(&h->watch_mu, NULL);
     atomic_init(&h->next_id, 0);
     atomic_init(&h->inflight, 0);
 
@@ -461,6 +782,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         flags |= MHD_USE_IPv6;
     } else {
         srv_log_note("cannot parse bind address '%s'", cfg->bind);
+        pthread_mutex_destroy(&h->watch_mu);
         free(h);
         return NULL;
     }
@@ -468,13 +790,19 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->daemon = MHD_start_daemon(
         flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, sa,
         MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
-        SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_END);
+        SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
+        MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
     if (!h->daemon) {
         srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
+        pthread_mutex_destroy(&h->watch_mu);
         free(h);
         return NULL;
     }
+    if (pthread_create(&h->watcher, NULL, watcher_main, h) == 0)
+        h->watch_started = 1;
+    else /* still serves; a hang-up is then only noticed at the deadline */
+        srv_log_note("cannot start the hang-up watcher thread");
     int port = cfg->port;
     const union MHD_DaemonInfo *info = MHD_get_daemon_info(h->daemon, MHD_DAEMON_INFO_BIND_PORT);
     if (info && info->port) port = info->port;
@@ -491,7 +819,11 @@ void srv_http_quiesce(struct srv_http *h)
         MHD_socket fd = MHD_quiesce_daemon(h->daemon);
         h->listen_fd = fd == MHD_INVALID_SOCKET ? -1 : (int)fd;
     }
+    pthread_mutex_lock(&h->watch_mu);
     __atomic_store_n(&h->cancel, 1, __ATOMIC_SEQ_CST);
+    for (struct srv_req *r = h->watched; r; r = r->watch_next)
+        __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
+    pthread_mutex_unlock(&h->watch_mu);
 }
 
 void srv_http_drain(struct srv_http *h, double seconds)
@@ -507,7 +839,14 @@ void srv_http_drain(struct srv_http *h, double seconds)
 void srv_http_stop(struct srv_http *h)
 {
     if (!h) return;
+    if (h->watch_started) {
+        pthread_mutex_lock(&h->watch_mu);
+        h->watch_stop = 1;
+        pthread_mutex_unlock(&h->watch_mu);
+        pthread_join(h->watcher, NULL);
+    }
     MHD_stop_daemon(h->daemon);
     if (h->listen_fd >= 0) close(h->listen_fd);
+    pthread_mutex_destroy(&h->watch_mu);
     free(h);
 }

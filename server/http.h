@@ -20,15 +20,17 @@ struct srv_http;
  * stderr) if the daemon cannot start. */
 struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool);
 
-/* Stop accepting connections and raise the cancel flag every request's
- * budget points to, so running computations stop at their next check. */
+/* Stop accepting connections and raise the cancel flag of every request
+ * handed to the pool (and of any handed later), so running computations stop
+ * at their next budget check. */
 void srv_http_quiesce(struct srv_http *h);
 
 /* Wait until no request is in flight (every answer sent) or `seconds` pass. */
 void srv_http_drain(struct srv_http *h, double seconds);
 
-/* Stop the daemon (closing remaining connections) and free h. All suspended
- * connections must have been resumed (srv_pool_stop does that). h may be NULL. */
+/* Stop the hang-up watcher thread and the daemon (closing remaining
+ * connections) and free h. All suspended connections must have been resumed
+ * (srv_pool_stop does that). h may be NULL. */
 void srv_http_stop(struct srv_http *h);
 
 #endif

@@ -6,9 +6,12 @@
 /* Record a finished request: writes
  *   "mechd: req=ID METHOD PATH STATUS USECus\n"
  * to stderr in one write(2) (control characters in method/path become '?'),
- * and adds it to the metrics. status 0 means no response was sent (the client
- * went away or the server stopped). method/path may be NULL. */
-void srv_log_request(unsigned long id, const char *method, const char *path, int status, long usec);
+ * and adds it to the metrics under `route` (a label from a bounded set: the
+ * API path, "static", "other"; copied; NULL or a label with characters other
+ * than [A-Za-z0-9/._-] counts as "other"). status 0 means no response was
+ * sent (the client went away or the server stopped). method/path may be NULL. */
+void srv_log_request(unsigned long id, const char *method, const char *path, const char *route,
+                     int status, long usec);
 
 /* Write a free-form line "mechd: TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -17,6 +20,6 @@ void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
  * gauges. Returns a malloc'd NUL-terminated string (caller frees) and its
  * length in *len, or NULL when out of memory. */
 char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue_capacity,
-                       unsigned long *len_out);
+                       double worker_busy_seconds, unsigned long *len_out);
 
 #endif

@@ -5,6 +5,7 @@
 
 #include <pthread.h>
 #include <stdlib.h>
+#include <time.h>
 
 struct srv_pool {
     pthread_mutex_t mu;
@@ -13,12 +14,20 @@ struct srv_pool {
     int queued;   /* jobs in the list */
     int reserved; /* slots reserved but not yet submitted */
     int capacity;
-    int busy; /* workers inside job->run */
+    int busy;            /* workers inside job->run */
+    double busy_seconds; /* summed time of finished job->run calls */
     int stopping;
     int joined;
     int nthreads;
     pthread_t *threads;
 };
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
 
 static void *worker_main(void *arg)
 {
@@ -35,9 +44,12 @@ static void *worker_main(void *arg)
         p->busy++;
         pthread_mutex_unlock(&p->mu);
         job->next = NULL;
+        double t0 = now_seconds();
         job->run(job); /* the job may be freed by its owner from here on */
+        double dt = now_seconds() - t0;
         pthread_mutex_lock(&p->mu);
         p->busy--;
+        p->busy_seconds += dt;
     }
     pthread_mutex_unlock(&p->mu);
     return NULL;
@@ -100,11 +112,12 @@ void srv_pool_submit(struct srv_pool *p, struct srv_job *job)
     pthread_mutex_unlock(&p->mu);
 }
 
-void srv_pool_stats(struct srv_pool *p, int *queued, int *busy)
+void srv_pool_stats(struct srv_pool *p, int *queued, int *busy, double *busy_seconds)
 {
     pthread_mutex_lock(&p->mu);
     if (queued) *queued = p->queued;
     if (busy) *busy = p->busy;
+    if (busy_seconds) *busy_seconds = p->busy_seconds;
     pthread_mutex_unlock(&p->mu);
 }
 

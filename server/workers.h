@@ -37,8 +37,9 @@ enum srv_pool_result srv_pool_reserve(struct srv_pool *p);
  * between, job->cancel runs at once on the calling thread. */
 void srv_pool_submit(struct srv_pool *p, struct srv_job *job);
 
-/* Current number of waiting jobs and of workers running a job. */
-void srv_pool_stats(struct srv_pool *p, int *queued, int *busy);
+/* Current number of waiting jobs, of workers running a job, and the total
+ * seconds workers have spent in finished job->run calls. Any pointer may be NULL. */
+void srv_pool_stats(struct srv_pool *p, int *queued, int *busy, double *busy_seconds);
 
 /* Stop accepting jobs, call cancel on every queued job (on the calling
  * thread), wait for running jobs to finish and join the threads. Idempotent. */

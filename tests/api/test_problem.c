@@ -42,6 +42,8 @@ static const struct {
     {API_PROBLEM_QUEUE_FULL, 10, 503, "/problems/queue-full"},
     {API_PROBLEM_INTERNAL, 11, 500, "/problems/internal-error"},
     {API_PROBLEM_CANCELLED, 12, 503, "/problems/cancelled"},
+    {API_PROBLEM_UNAUTHORIZED, 13, 401, "/problems/unauthorized"},
+    {API_PROBLEM_CORS_FORBIDDEN, 14, 403, "/problems/cors-origin-not-allowed"},
 };
 
 int main(void)

@@ -459,10 +459,33 @@ def test_main_server():
         st, hdrs, payload = request(port, "GET", "/metrics")
         text = payload.decode("utf-8", "replace")
         check("GET /metrics 200 text/plain", st == 200 and hdrs.get("content-type", "").startswith("text/plain"))
-        for name in ('mechd_requests_total{status="200"}', 'mechd_requests_total{status="413"}',
+        for name in ('mechd_requests_total{route="/healthz",status="200"}',
+                     'mechd_requests_total{route="/v1/relativity/boost",status="413"}',
+                     'mechd_requests_total{route="/v1/relativity/boost",status="200"}',
                      "mechd_queue_depth", "mechd_workers_busy", "mechd_request_duration_seconds_sum",
-                     "mechd_request_duration_seconds_count"):
+                     "mechd_request_duration_seconds_count",
+                     'mechd_request_duration_seconds_bucket{le="0.001"}',
+                     'mechd_request_duration_seconds_bucket{le="+Inf"}',
+                     "mechd_worker_busy_seconds_total"):
             check("/metrics has %s" % name, re.search(r"^%s \d" % re.escape(name), text, re.M), text[:800])
+        # The histogram is cumulative and its +Inf bucket equals the count.
+        buckets = [float(v) for v in re.findall(
+            r'^mechd_request_duration_seconds_bucket\{le="[^"]+"\} (\S+)$', text, re.M)]
+        count = re.search(r"^mechd_request_duration_seconds_count (\S+)$", text, re.M)
+        check("/metrics histogram cumulative, +Inf == count",
+              len(buckets) >= 2 and buckets == sorted(buckets) and count
+              and buckets[-1] == float(count.group(1)), text[:1500])
+        busy_s = re.search(r"^mechd_worker_busy_seconds_total (\S+)$", text, re.M)
+        check("/metrics worker busy seconds > 0 after operations ran",
+              busy_s and float(busy_s.group(1)) > 0, text[-800:])
+        # Route labels are bounded: made-up paths count as "other", not as themselves.
+        for junk in ("/v1/made-up-1", "/v1/made-up-2", "/nope/%d" % os.getpid()):
+            request(port, "GET", junk)
+        st, _, payload = request(port, "GET", "/metrics")
+        text = payload.decode("utf-8", "replace")
+        check("/metrics: unknown paths are route=\"other\"",
+              'route="other",status="404"' in text and "made-up" not in text
+              and "/nope/" not in text, text[:1500])
     finally:
         rc, secs = s.signal_and_wait(signal.SIGINT)
         err = s.stderr()
