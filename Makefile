@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 MECHD_ARGS ?=
 
-.PHONY: all deps configure run test test-sanitize bench clean
+.PHONY: all deps configure run test test-sanitize bench fuzz clean
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -34,6 +34,11 @@ bench: all
 	./scripts/install-deps.sh --bench
 	@mkdir -p $(BUILD)/bench-out
 	@for b in $(BUILD)/bench_*; do [ -x "$$b" ] && "$$b" $(BUILD)/bench-out || exit 1; done
+
+# libFuzzer harnesses (tests/fuzz/) built with clang, each run FUZZ_SECONDS.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	./tests/fuzz/run.sh $(BUILD) $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN)

@@ -322,6 +322,16 @@ static void respond_outcome(struct api_response *resp, int status, json_t *out, 
     if (note && note[0]) snprintf(resp->note, sizeof resp->note, "%s", note);
 }
 
+/* A parse that failed for lack of memory is the server's failure, not a
+ * malformed body: answer 500 (return 1, resp filled) instead of 400. */
+static int parse_out_of_memory(const json_error_t *jerr, struct api_response *resp)
+{
+    if (json_error_code(jerr) != json_error_out_of_memory) return 0;
+    api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
+    snprintf(resp->note, sizeof resp->note, "out of memory while parsing the request");
+    return 1;
+}
+
 static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
 {
     if (!is_json_media_type(req->content_type)) {
@@ -336,6 +346,7 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
     json_t *body = json_loadb(req->body ? req->body : "", req->body ? req->body_len : 0,
                               JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
     if (!body) {
+        if (parse_out_of_memory(&jerr, resp)) return;
         char d[300];
         snprintf(d, sizeof d, "line %d, column %d: %s", jerr.line, jerr.column, jerr.text);
         api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
@@ -410,6 +421,10 @@ static void run_query(size_t ri, const struct api_request *req, const struct api
     json_t *body = json_loads(ext->query_request,
                               JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES, &jerr);
     if (!body) {
+        if (parse_out_of_memory(&jerr, resp)) {
+            resp->cache_control = "no-store";
+            return;
+        }
         char d[300];
         snprintf(d, sizeof d, "the request query parameter: line %d, column %d: %s", jerr.line,
                  jerr.column, jerr.text);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "respond.h"
 
 static void add_error(struct api_call *c, enum api_problem kind, const char *pointer,
                       const char *fmt, va_list ap)
@@ -18,8 +19,7 @@ static void add_error(struct api_call *c, enum api_problem kind, const char *poi
         c->problem = kind;
     if (!c->errors) c->errors = json_array();
     if (c->errors && json_array_size(c->errors) < 20)
-        json_array_append_new(c->errors, json_pack("{s:s,s:s}", "pointer", pointer ? pointer : "",
-                                                   "detail", detail));
+        json_array_append_new(c->errors, api_error_entry(pointer, detail));
 }
 
 void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)
@@ -89,8 +89,7 @@ json_t *api_call_fail_core(struct api_call *c, enum mech_status st,
         if (e && e->param[0]) {
             if (!c->errors) c->errors = json_array();
             if (c->errors && json_array_size(c->errors) < 20)
-                json_array_append_new(c->errors, json_pack("{s:s,s:s}", "pointer", pointer,
-                                                           "detail", text));
+                json_array_append_new(c->errors, api_error_entry(pointer, text));
         }
         break;
     default:

@@ -8,6 +8,8 @@
  * rounding the notes print it with. The data is compiled in
  * (api/examples_data.h); tests/integration/test_examples.py runs every entry
  * against a server and compares with the notes' answer. */
+#include <pthread.h>
+
 #include "endpoint.h"
 #include "examples_data.h"
 
@@ -17,12 +19,16 @@ static const char examples_doc[] =
     "rounding ({\"relative\": r} or {\"absolute\": a}: the precision the notes print), text}. "
     "POST request to operation and compare the number at pointer with value within rounding.";
 
-static json_t *examples_resource(struct api_call *c, const json_t *body)
+/* The answer is built once (the data is compiled in) and shared: handlers
+ * return a new reference to it, and jansson's reference counts are atomic,
+ * so threads may hold it at once; nobody modifies it. */
+static json_t *examples_answer;
+static pthread_once_t examples_once = PTHREAD_ONCE_INIT;
+
+static void examples_build(void)
 {
-    (void)c;
-    (void)body;
     json_t *list = json_array();
-    if (!list) return NULL;
+    if (!list) return;
     const size_t n = sizeof api_examples_data / sizeof api_examples_data[0];
     for (size_t i = 0; i < n; i++) {
         json_error_t jerr;
@@ -32,11 +38,19 @@ static json_t *examples_resource(struct api_call *c, const json_t *body)
             /* A broken entry is a build bug: the resource handler fails (500)
              * and tests/integration/test_examples.py catches it. */
             json_decref(list);
-            return NULL;
+            return;
         }
     }
-    return json_pack("{s:i,s:s,s:o}", "count", (int)n, "doc", examples_doc, "examples",
-                     list);
+    examples_answer = json_pack("{s:i,s:s,s:o}", "count", (int)n, "doc", examples_doc,
+                                "examples", list);
+}
+
+static json_t *examples_resource(struct api_call *c, const json_t *body)
+{
+    (void)c;
+    (void)body;
+    pthread_once(&examples_once, examples_build);
+    return examples_answer ? json_incref(examples_answer) : NULL;
 }
 
 const struct api_route api_route_examples = {

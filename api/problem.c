@@ -93,8 +93,9 @@ json_t *api_problem_object(enum api_problem kind, const char *detail)
     json_object_set_new(p, "type", json_string(problems[kind].type));
     json_object_set_new(p, "title", json_string(problems[kind].title));
     json_object_set_new(p, "status", json_integer(problems[kind].status));
-    json_object_set_new(p, "detail", json_string(detail && *detail ? detail
-                                                 : problems[kind].description));
+    json_object_set_new(p, "detail", api_json_text(detail && *detail
+                                                       ? detail
+                                                       : problems[kind].description));
     return p;
 }
 

@@ -53,3 +53,28 @@ void api_response_free(struct api_response *resp)
     resp->body = NULL;
     resp->body_len = 0;
 }
+
+json_t *api_json_text(const char *text)
+{
+    if (!text) text = "";
+    json_t *j = json_string(text);
+    if (j) return j;
+    /* Not valid UTF-8 (or out of memory): keep ASCII, replace the rest. */
+    size_t n = strlen(text);
+    char *copy = malloc(n + 1);
+    if (!copy) return NULL;
+    for (size_t i = 0; i <= n; i++)
+        copy[i] = (unsigned char)text[i] < 0x80 ? text[i] : '?';
+    j = json_string(copy);
+    free(copy);
+    return j;
+}
+
+json_t *api_error_entry(const char *pointer, const char *detail)
+{
+    json_t *e = json_object();
+    if (!e) return NULL;
+    json_object_set_new(e, "pointer", api_json_text(pointer));
+    json_object_set_new(e, "detail", api_json_text(detail));
+    return e;
+}

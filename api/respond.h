@@ -17,6 +17,16 @@ void api_respond_json(struct api_response *resp, int status, const char *content
 void api_respond_text(struct api_response *resp, int status, const char *content_type,
                       const char *text);
 
+/* A JSON string of text that may hold bytes from the client (a path, a key,
+ * truncated by a "%.Ns" format inside a multi-byte character): json_string()
+ * refuses invalid UTF-8 and returns NULL, which would silently drop the member
+ * it was meant for. Bytes that do not form valid UTF-8 become '?'. New
+ * reference; NULL only when out of memory. */
+json_t *api_json_text(const char *text);
+
+/* {"pointer": ..., "detail": ...} with both made safe by api_json_text(). */
+json_t *api_error_entry(const char *pointer, const char *detail);
+
 /* New problem object {type, title, status, detail} (NULL on allocation failure). */
 json_t *api_problem_object(enum api_problem kind, const char *detail);
 

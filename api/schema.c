@@ -1,5 +1,6 @@
 /* schema.c — the JSON Schema subset validator (see schema.h). */
 #include "schema.h"
+#include "respond.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -24,7 +25,7 @@ static void add_error(struct vctx *v, const char *pointer, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(detail, sizeof detail, fmt, ap);
     va_end(ap);
-    json_array_append_new(v->errors, json_pack("{s:s,s:s}", "pointer", pointer, "detail", detail));
+    json_array_append_new(v->errors, api_error_entry(pointer, detail));
 }
 
 void api_pointer_append(char *buf, size_t n, const char *token)

@@ -22,7 +22,7 @@ esac
 
 command -v node >/dev/null 2>&1 || PKGS="$PKGS nodejs"
 command -v npm >/dev/null 2>&1 || PKGS="$PKGS npm"
-PKGS="$PKGS chromium"
+PKGS="$PKGS chromium clang libclang-rt-14-dev"  # browser test; libFuzzer (make fuzz)
 
 missing=""
 for p in $PKGS; do

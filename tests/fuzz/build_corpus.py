@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""build_corpus.py ROUTES_TSV OUT_DIR — seed corpora for tests/fuzz/ harnesses.
+
+Reads tests/api/cases/*/request.json (next to this script's ../api/cases) and
+the route list printed by `FUZZ_LIST_ROUTES=1 fuzz_api` (index, method, path),
+and writes OUT_DIR/api/ (fuzz_api.c layout: flags byte, route byte, body) and
+OUT_DIR/http/ (fuzz_http.c layout: METHOD\\nPATH?QUERY\\nCT\\nINM\\nBODY).
+Python standard library only."""
+import hashlib
+import json
+import os
+import sys
+import urllib.parse
+
+here = os.path.dirname(os.path.abspath(__file__))
+cases_dir = os.path.join(here, "..", "api", "cases")
+web_dir = os.path.join(here, "..", "..", "clients", "web")
+routes_tsv, out = sys.argv[1], sys.argv[2]
+
+routes = {}
+route_method = {}
+with open(routes_tsv) as f:
+    for line in f:
+        i, m, p = line.rstrip("\n").split("\t")
+        routes[p] = int(i)
+        route_method[p] = m
+
+for sub in ("api", "http"):
+    os.makedirs(os.path.join(out, sub), exist_ok=True)
+
+
+def put(sub, data):
+    name = hashlib.sha1(data).hexdigest()
+    with open(os.path.join(out, sub, name), "wb") as f:
+        f.write(data)
+
+
+METHOD_BITS = {"GET": 1, "HEAD": 2}
+n = 0
+for case in sorted(os.listdir(cases_dir)):
+    rq_path = os.path.join(cases_dir, case, "request.json")
+    if not os.path.isfile(rq_path):
+        continue
+    with open(rq_path) as f:
+        rq = json.load(f)
+    method, path = rq.get("method", "POST"), rq.get("path", "/")
+    if "body_text" in rq:
+        body = rq["body_text"].encode()
+    elif "body" in rq:
+        body = json.dumps(rq["body"], separators=(",", ":")).encode()
+    else:
+        body = b""
+    ct = rq.get("content_type", "application/json") or ""  # null: no header
+    # fuzz_api layout
+    flags = 0
+    if method != route_method.get(path, "POST"):
+        flags |= METHOD_BITS.get(method, 3)
+    if not ct.lower().startswith("application/json"):
+        flags |= 8
+    if path in routes:
+        put("api", bytes([flags, routes[path]]) + body)
+        if route_method[path] == "POST" and "body" in rq:
+            put("api", bytes([1 | 4 | 32, routes[path]]) + body)  # GET ?request=
+    else:
+        put("api", bytes([flags, 255]) + path.encode() + b"\n" + body)
+    # fuzz_http layout
+    put("http", b"\n".join([method.encode(), path.encode(), ct.encode(), b"", body]))
+    if "body" in rq and route_method.get(path) == "POST":
+        q = urllib.parse.quote(body.decode(), safe="")
+        put("http", b"\n".join([b"GET", (path + "?request=" + q).encode(), b"", b"*", b""]))
+    n += 1
+
+# Server-side and static paths.
+extra = ["/", "/v1", "/v1/", "/v1/openapi.json", "/problems/validation-error", "/healthz",
+         "/%2e%2e/etc/passwd", "/..%2f..%2fetc/passwd", "/%252e%252e/x", "//etc/passwd",
+         "/.hidden", "/a\\b", "/index.html/"]
+for root, dirs, files in os.walk(web_dir):
+    for fn in files:
+        extra.append("/" + os.path.relpath(os.path.join(root, fn), web_dir))
+for p in extra:
+    put("http", b"\n".join([b"GET", p.encode(), b"", b'W/"x", *', b""]))
+    put("api", bytes([1, 255]) + p.encode() + b"\n")
+print(f"corpus: {n} cases, {len(os.listdir(os.path.join(out, 'api')))} api seeds, "
+      f"{len(os.listdir(os.path.join(out, 'http')))} http seeds")
