@@ -6,7 +6,7 @@ JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 MECHD_ARGS ?=
 
-.PHONY: all deps configure run test test-sanitize bench fuzz clean
+.PHONY: all deps configure run test test-sanitize bench fuzz load docker-test clean
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -39,6 +39,16 @@ bench: all
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	./tests/fuzz/run.sh $(BUILD) $(FUZZ_SECONDS)
+
+# Load scenarios (tests/load/): ~2 min, 127.0.0.1 only; print figures and
+# fail only on errors, lost answers or leaks, never on timing.
+load: all
+	./scripts/install-deps.sh --bench
+	tests/load/run.sh $(BUILD)/mechd
+
+# The container set-up end to end (needs root): docker/test.sh, 4-11 min.
+docker-test:
+	sh docker/test.sh
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN)

@@ -3,9 +3,10 @@
 # those that are missing: safe to run again and again (idempotent). Runs
 # `apt-get update` only when something must be installed. Needs root (or sudo).
 #   install-deps.sh          build, run and test (make run, make test)
-#   install-deps.sh --bench  also the benchmarks' gnuplot-nox (the PNG plot)
-#                            and python3-scipy (the SciPy DOP853 baseline,
-#                            imported by Debian's /usr/bin/python3)
+#   install-deps.sh --bench  also the benchmarks' gnuplot-nox (the PNG plot),
+#                            python3-scipy (the SciPy DOP853 baseline,
+#                            imported by Debian's /usr/bin/python3) and wrk
+#                            (bench_http, tests/load)
 # Both also install what the browser test of the front end needs (make test
 # runs it): Debian's chromium (/usr/bin/chromium; Playwright never downloads a
 # browser), and node + npm only when no `node` / `npm` command exists (a
@@ -15,7 +16,7 @@ set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev curl python3"
 case "${1:-}" in
-  --bench) PKGS="$PKGS gnuplot-nox python3-scipy" ;;
+  --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk" ;;
   "") ;;
   *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
 esac
