@@ -16,20 +16,18 @@ contacted; everything has a timeout.
 import json
 import os
 import re
-import select
 import socket
 import subprocess
 import sys
 import tempfile
 import time
+from mechdtest import check, start_mechd, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_cancel.py PATH/TO/mechd\n")
     sys.exit(2)
 MECHD = os.path.abspath(sys.argv[1])
 BOUND = 10.0  # seconds; without cancellation the worker stays busy ~60 s
-PASSED = 0
-FAILED = 0
 
 SLOW = {"particle": {"mass": 1, "position": [0, 0, 0], "velocity": [1, 0, 0]},
         "forces": [{"type": "uniform_gravity", "g": [0, 0, -9.80665]}],
@@ -37,38 +35,10 @@ SLOW = {"particle": {"mass": 1, "position": [0, 0, 0], "velocity": [1, 0, 0]},
 FAST = {"vectors": [1, 0, 0, 0], "velocity": {"beta": [0.6, 0, 0]}}
 
 
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
-
-
 def start(*args):
-    env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
     errf = tempfile.TemporaryFile()
-    proc = subprocess.Popen([MECHD, "--port", "0"] + list(args), stdout=subprocess.PIPE,
-                            stderr=errf, env=env)
-    fd = proc.stdout.fileno()
-    buf = b""
-    end = time.monotonic() + 20
-    while not buf.endswith(b"\n") and time.monotonic() < end:
-        if not select.select([fd], [], [], max(0.0, end - time.monotonic()))[0]:
-            break
-        c = os.read(fd, 1)
-        if not c:
-            break
-        buf += c
-    m = re.fullmatch(rb"mechd listening on http://127\.0\.0\.1:(\d+)\n", buf)
-    if not m:
-        proc.kill()
-        raise RuntimeError("mechd did not start: %r" % buf)
-    return proc, int(m.group(1)), errf
+    proc, port = start_mechd(MECHD, args, stderr=errf)
+    return proc, port, errf
 
 
 def send_post(port, path, body):
@@ -178,8 +148,7 @@ def main():
     err = errf.read().decode("utf-8", "replace")
     check("exit 0 on SIGTERM", rc == 0, (rc, err[-2000:]))
     check("no sanitizer report", "Sanitizer" not in err and "runtime error" not in err, err[-2000:])
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    sys.exit(1 if FAILED else 0)
+    sys.exit(summary())
 
 
 if __name__ == "__main__":

@@ -21,12 +21,12 @@ import sys
 import time
 import urllib.error
 import urllib.request
+from mechdtest import check, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_examples.py PATH/TO/mechd\n")
     sys.exit(2)
 MECHD = os.path.abspath(sys.argv[1])
-PASSED = FAILED = 0
 
 # The notes' worked examples issue 8 names (chapters 0-3) and the labs' extras:
 # each must be in the catalog (matched by a word of the id).
@@ -35,18 +35,6 @@ REQUIRED = ["rotation", "puck", "falling-object", "cannonball", "foucault", "tid
             "muon", "length-contraction", "twin-paradox", "twin-doppler", "velocity-addition",
             "pi0", "neutron", "compton", "field-transformation", "kepler", "mercury",
             "light-bending", "gps", "heavy-top", "dzhanibekov", "henon-heiles"]
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
 
 
 def start_server():
@@ -196,5 +184,4 @@ if __name__ == "__main__":
         main()
     except Exception as e:  # a crash is a failure, not a pass
         check("test ran to the end", False, "%s: %s" % (type(e).__name__, e))
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    sys.exit(1 if FAILED else 0)
+    sys.exit(summary())

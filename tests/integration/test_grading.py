@@ -22,6 +22,7 @@ import sys
 import tempfile
 import time
 import urllib.parse
+from mechdtest import check, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_grading.py PATH/TO/mechd\n")
@@ -29,21 +30,6 @@ if len(sys.argv) < 2:
 MECHD = os.path.abspath(sys.argv[1])
 START_TIMEOUT = 20.0
 REQUEST_TIMEOUT = 60.0
-
-PASSED = 0
-FAILED = 0
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
 
 
 class Server:
@@ -112,8 +98,7 @@ def main():
         run(s)
     finally:
         s.stop()
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    return 1 if FAILED else 0
+    return summary()
 
 
 def run(s):

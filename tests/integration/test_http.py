@@ -25,6 +25,7 @@ import sys
 import tempfile
 import threading
 import time
+from mechdtest import check, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_http.py PATH/TO/mechd\n")
@@ -34,21 +35,6 @@ MECHD = os.path.abspath(sys.argv[1])
 START_TIMEOUT = 20.0    # seconds for a server to print its listening line (ASan is slow)
 REQUEST_TIMEOUT = 60.0  # socket timeout of every request
 EXIT_TIMEOUT = 15.0     # seconds for a server to exit after a signal
-
-PASSED = 0
-FAILED = 0
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
 
 
 class Server:
@@ -603,8 +589,7 @@ def main():
             fn(examples)
         except Exception as e:
             check("%s ran without an exception" % fn.__name__, False, "%s: %s" % (type(e).__name__, e))
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    return 1 if FAILED else 0
+    return summary()
 
 
 if __name__ == "__main__":

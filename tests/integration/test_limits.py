@@ -22,54 +22,22 @@ Only 127.0.0.1 is contacted; every socket and subprocess has a timeout.
 import json
 import os
 import re
-import select
 import socket
 import subprocess
 import sys
 import tempfile
-import time
+from mechdtest import check, start_mechd, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_limits.py PATH/TO/mechd\n")
     sys.exit(2)
 MECHD = os.path.abspath(sys.argv[1])
 TIMEOUT = 60.0
-PASSED = 0
-FAILED = 0
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
 
 
 def start(*args):
-    env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
     errf = tempfile.TemporaryFile()
-    proc = subprocess.Popen([MECHD, "--port", "0"] + list(args), stdout=subprocess.PIPE,
-                            stderr=errf, env=env)
-    fd = proc.stdout.fileno()
-    buf = b""
-    end = time.monotonic() + 20
-    while not buf.endswith(b"\n") and time.monotonic() < end:
-        if not select.select([fd], [], [], max(0.0, end - time.monotonic()))[0]:
-            break
-        c = os.read(fd, 1)
-        if not c:
-            break
-        buf += c
-    m = re.fullmatch(rb"mechd listening on http://127\.0\.0\.1:(\d+)\n", buf)
-    if not m:
-        proc.kill()
-        raise RuntimeError("mechd did not start: %r" % buf)
-    return proc, int(m.group(1))
+    return start_mechd(MECHD, args, stderr=errf)
 
 
 def exchange(port, raw):
@@ -205,8 +173,7 @@ def main():
             proc.kill()
             rc = proc.wait(timeout=10)
     check("exit 0 on SIGTERM", rc == 0, rc)
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    sys.exit(1 if FAILED else 0)
+    sys.exit(summary())
 
 
 if __name__ == "__main__":

@@ -32,20 +32,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.dont_write_bytecode = True  # keep clients/python free of __pycache__
 sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
 import mechd  # noqa: E402
-
-PASSED = FAILED = 0
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
+from mechdtest import check, summary
 
 
 def close(a, b, rtol):
@@ -377,5 +364,4 @@ if __name__ == "__main__":
         import traceback
         traceback.print_exc()
         check("test ran to the end", False, "%s: %s" % (type(e).__name__, e))
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    sys.exit(1 if FAILED else 0)
+    sys.exit(summary())

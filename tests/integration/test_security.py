@@ -25,6 +25,7 @@ import subprocess
 import sys
 import tempfile
 import time
+from mechdtest import check, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_security.py PATH/TO/mechd\n")
@@ -35,21 +36,6 @@ START_TIMEOUT = 20.0
 REQUEST_TIMEOUT = 30.0
 TOKEN = "k7-Q2x.9_zz~tokenForTests"
 ALLOWED = ["http://lab.example.org", "https://grading.example.org:8443", "http://localhost:3000"]
-
-PASSED = 0
-FAILED = 0
-
-
-def check(name, cond, info=""):
-    global PASSED, FAILED
-    if cond:
-        PASSED += 1
-        print("ok   %s" % name)
-    else:
-        FAILED += 1
-        print("FAIL %s %s" % (name, info))
-    sys.stdout.flush()
-    return bool(cond)
 
 
 class Server:
@@ -377,8 +363,7 @@ def main():
     test_cors_off(op["path"], op["example"])
     test_options(tmp)
 
-    print("%d passed, %d failed" % (PASSED, FAILED))
-    sys.exit(1 if FAILED else 0)
+    sys.exit(summary())
 
 
 if __name__ == "__main__":
