@@ -399,4 +399,5 @@ const struct api_route api_route_compare = {
     compare_example,
     compare_op,
     1,
+    0,
 };

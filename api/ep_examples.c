@@ -66,4 +66,5 @@ const struct api_route api_route_examples = {
     NULL,
     examples_resource,
     0,
+    0,
 };

@@ -159,6 +159,7 @@ const struct api_route api_route_frames_effective_force = {
     ef_example,
     effective_force,
     0,
+    1, /* quick */
 };
 
 /* ============================== earth/gravity =============================== */
@@ -306,6 +307,7 @@ const struct api_route api_route_earth_gravity = {
     gr_example,
     earth_gravity,
     0,
+    1, /* quick */
 };
 
 /* =============================== earth/tides ================================ */
@@ -507,5 +509,6 @@ const struct api_route api_route_earth_tides = {
     td_schema,
     td_example,
     earth_tides,
+    0,
     0,
 };

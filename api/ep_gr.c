@@ -402,6 +402,7 @@ const struct api_route api_route_gr_schwarzschild = {
     schw_example,
     schwarzschild,
     0,
+    0,
 };
 
 /* ===================================================================================== */
@@ -918,4 +919,5 @@ const struct api_route api_route_gr_geodesic = {
     geo_example,
     geodesic,
     1,
+    0,
 };

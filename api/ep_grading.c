@@ -486,6 +486,7 @@ const struct api_route api_route_check = {
     check_example,
     check,
     0,
+    0,
 };
 
 /* ---- POST /v1/batch --------------------------------------------------------------- */
@@ -570,5 +571,6 @@ const struct api_route api_route_batch = {
     batch_schema,
     batch_example,
     batch,
+    0,
     0,
 };

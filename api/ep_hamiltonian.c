@@ -1103,6 +1103,7 @@ const struct api_route api_route_hamiltonian_flow = {
     flow_example,
     flow,
     1,
+    0,
 };
 
 const struct api_route api_route_hamiltonian_liouville = {
@@ -1115,6 +1116,7 @@ const struct api_route api_route_hamiltonian_liouville = {
     liouville_example,
     liouville,
     1,
+    0,
 };
 
 const struct api_route api_route_hamiltonian_poincare = {
@@ -1127,4 +1129,5 @@ const struct api_route api_route_hamiltonian_poincare = {
     poincare_example,
     poincare,
     1,
+    0,
 };

@@ -63,4 +63,5 @@ const struct api_route api_route_integrators = {
     NULL,
     integrators_resource,
     0,
+    0,
 };

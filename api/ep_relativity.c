@@ -110,4 +110,5 @@ const struct api_route api_route_relativity_boost = {
     boost_example,
     boost_op,
     0,
+    1, /* quick */
 };

@@ -235,6 +235,7 @@ const struct api_route api_route_relativity_velocity_addition = {
     va_example,
     velocity_addition_op,
     0,
+    1, /* quick */
 };
 
 /* ======================= interval ========================================= */
@@ -333,6 +334,7 @@ const struct api_route api_route_relativity_interval = {
     iv_example,
     interval_op,
     0,
+    1, /* quick */
 };
 
 /* ======================= worldline ========================================= */
@@ -603,5 +605,6 @@ const struct api_route api_route_relativity_worldline = {
     wl_schema,
     wl_example,
     worldline_op,
+    0,
     0,
 };

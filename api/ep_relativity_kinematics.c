@@ -842,6 +842,7 @@ const struct api_route api_route_relativity_invariant_mass = {
     im_example,
     invariant_mass_op,
     0,
+    1, /* quick */
 };
 
 const struct api_route api_route_relativity_decay = {
@@ -854,6 +855,7 @@ const struct api_route api_route_relativity_decay = {
     decay_example,
     decay_op,
     0,
+    0,
 };
 
 const struct api_route api_route_relativity_compton = {
@@ -865,6 +867,7 @@ const struct api_route api_route_relativity_compton = {
     compton_example,
     compton_op,
     0,
+    1, /* quick */
 };
 
 const struct api_route api_route_relativity_collision = {
@@ -877,6 +880,7 @@ const struct api_route api_route_relativity_collision = {
     collision_example,
     collision_op,
     0,
+    1, /* quick */
 };
 
 /* ---- GET /v1/relativity/particles ------------------------------------------ */
@@ -905,5 +909,6 @@ const struct api_route api_route_relativity_particles = {
     NULL,
     NULL,
     particles_resource,
+    0,
     0,
 };

@@ -206,6 +206,7 @@ const struct api_route api_route_relativity_doppler = {
     doppler_example,
     doppler_op,
     0,
+    1, /* quick */
 };
 
 /* ======================= POST /v1/relativity/fields ======================== */
@@ -305,4 +306,5 @@ const struct api_route api_route_relativity_fields = {
     fields_example,
     fields_op,
     0,
+    1, /* quick */
 };

@@ -438,4 +438,5 @@ const struct api_route api_route_rigid_inertia = {
     example,
     inertia,
     0,
+    1, /* quick */
 };

@@ -383,4 +383,5 @@ const struct api_route api_route_rigid_rotate = {
     example,
     rotate,
     1,
+    0,
 };

@@ -130,4 +130,5 @@ const struct api_route api_route_rigid_stability = {
     example,
     stability,
     0,
+    0,
 };

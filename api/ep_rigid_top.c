@@ -214,4 +214,5 @@ const struct api_route api_route_rigid_top = {
     example,
     top,
     1,
+    0,
 };

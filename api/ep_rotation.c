@@ -57,6 +57,7 @@ const struct api_route api_route_rotation_convert = {
     convert_example,
     convert,
     0,
+    1, /* quick */
 };
 
 /* ---- compose ------------------------------------------------------------------ */
@@ -152,6 +153,7 @@ const struct api_route api_route_rotation_compose = {
     compose_example,
     compose,
     0,
+    1, /* quick */
 };
 
 /* ---- apply -------------------------------------------------------------------- */
@@ -242,4 +244,5 @@ const struct api_route api_route_rotation_apply = {
     apply_example,
     apply,
     0,
+    1, /* quick */
 };

@@ -488,4 +488,5 @@ const struct api_route api_route_scene_foucault = {
     fc_example,
     fc_op,
     1,
+    0,
 };

@@ -531,6 +531,7 @@ const struct api_route api_route_scene_falling_object = {
     falling_example,
     falling_op,
     1,
+    0,
 };
 
 const struct api_route api_route_scene_vertical_shot = {
@@ -542,6 +543,7 @@ const struct api_route api_route_scene_vertical_shot = {
     shot_example,
     shot_op,
     1,
+    0,
 };
 
 const struct api_route api_route_scene_cannonball = {
@@ -553,6 +555,7 @@ const struct api_route api_route_scene_cannonball = {
     cannon_example,
     cannon_op,
     1,
+    0,
 };
 
 const struct api_route api_route_scene_rotating_table = {
@@ -564,4 +567,5 @@ const struct api_route api_route_scene_rotating_table = {
     table_example,
     table_op,
     1,
+    0,
 };

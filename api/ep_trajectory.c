@@ -148,4 +148,5 @@ const struct api_route api_route_trajectory = {
     traj_example,
     traj_op,
     1,
+    0,
 };
