@@ -25,6 +25,47 @@ static int init_status = -1;
 static char init_error[300] = "api_init not run";
 static pthread_once_t init_once = PTHREAD_ONCE_INIT;
 
+/* ---- allocation failures inside jansson ------------------------------------------
+ *
+ * Endpoints build answers with json_object_set_new(), json_array_append_new(),
+ * json_pack() and the encoders; checking each of those hundreds of calls would
+ * bury the physics, and one unchecked failure silently drops a member (a 200
+ * with a field missing, or a 422 listing fewer errors than it counts). So
+ * jansson allocates through json_malloc_checked(), which records a failure in
+ * a per-thread flag; api_handle_ext() clears the flag before a request and,
+ * when it is raised afterwards, answers the fixed 500 out-of-memory problem
+ * instead of whatever was built. The previous allocator (the C library's, or
+ * one a test installed before api_init) does the allocating. */
+static _Thread_local int json_alloc_failed;
+static json_malloc_t prev_json_malloc;
+static json_free_t prev_json_free;
+
+static void *json_malloc_checked(size_t n)
+{
+    void *p = prev_json_malloc ? prev_json_malloc(n) : malloc(n);
+    if (!p) json_alloc_failed = 1;
+    return p;
+}
+
+static void json_free_checked(void *p)
+{
+    if (prev_json_free)
+        prev_json_free(p);
+    else
+        free(p);
+}
+
+static void install_json_allocator(void)
+{
+    json_malloc_t m;
+    json_free_t f;
+    json_get_alloc_funcs(&m, &f);
+    if (m == json_malloc_checked) return;
+    prev_json_malloc = m;
+    prev_json_free = f;
+    json_set_alloc_funcs(json_malloc_checked, json_free_checked);
+}
+
 static int init_routes(void)
 {
     route_schemas = calloc(api_route_count, sizeof *route_schemas);
@@ -68,6 +109,7 @@ static int init_routes(void)
 
 static void init_once_fn(void)
 {
+    install_json_allocator();
     init_status = init_routes();
 }
 
@@ -468,8 +510,22 @@ void api_handle(const struct api_request *req, struct api_response *resp)
     api_handle_ext(req, NULL, resp);
 }
 
+static void handle(const struct api_request *req0, const struct api_request_ext *ext,
+                   struct api_response *resp);
+
 void api_handle_ext(const struct api_request *req0, const struct api_request_ext *ext,
                     struct api_response *resp)
+{
+    json_alloc_failed = 0;
+    handle(req0, ext, resp);
+    if (json_alloc_failed) { /* something was dropped: never send it (see above) */
+        api_respond_out_of_memory(resp);
+        snprintf(resp->note, sizeof resp->note, "out of memory while building the answer");
+    }
+}
+
+static void handle(const struct api_request *req0, const struct api_request_ext *ext,
+                   struct api_response *resp)
 {
     memset(resp, 0, sizeof *resp);
     struct full_request full;

@@ -465,7 +465,12 @@ static json_t *apsides(struct api_call *c, const struct mech_ham_system *s, cons
         return o;
     }
     double *buf = malloc(7 * MAXP * sizeof *buf);
-    if (!buf) {
+    if (!buf) { /* the server's failure (500), never an answer without its apsides */
+        struct mech_error e;
+        mech_error_clear(&e);
+        mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for the apsides");
+        api_call_fail_core(c, MECH_ENOMEM, &e, "");
+        *failed = 1;
         json_decref(o);
         return NULL;
     }

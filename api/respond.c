@@ -9,8 +9,10 @@ static const char oom_body[] =
     "{\"type\":\"/problems/internal-error\",\"title\":\"Internal error\",\"status\":500,"
     "\"detail\":\"out of memory\"}\n";
 
-static void respond_oom(struct api_response *resp)
+void api_respond_out_of_memory(struct api_response *resp)
 {
+    free(resp->body);
+    memset(resp, 0, sizeof *resp);
     resp->status = 500;
     resp->content_type = "application/problem+json";
     resp->retry_after = 0;
@@ -23,7 +25,7 @@ void api_respond_text(struct api_response *resp, int status, const char *content
 {
     memset(resp, 0, sizeof *resp);
     resp->body = strdup(text);
-    if (!resp->body) { respond_oom(resp); return; }
+    if (!resp->body) { api_respond_out_of_memory(resp); return; }
     resp->status = status;
     resp->content_type = content_type;
     resp->body_len = strlen(resp->body);
@@ -34,10 +36,10 @@ void api_respond_json(struct api_response *resp, int status, const char *content
 {
     memset(resp, 0, sizeof *resp);
     char *s = body ? json_dumps(body, JSON_COMPACT | JSON_REAL_PRECISION(17)) : NULL;
-    if (!s) { respond_oom(resp); return; }
+    if (!s) { api_respond_out_of_memory(resp); return; }
     size_t n = strlen(s);
     char *b = realloc(s, n + 2); /* add a trailing newline for terminals */
-    if (!b) { free(s); respond_oom(resp); return; }
+    if (!b) { free(s); api_respond_out_of_memory(resp); return; }
     b[n] = '\n';
     b[n + 1] = '\0';
     resp->status = status;

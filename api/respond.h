@@ -13,6 +13,12 @@
 void api_respond_json(struct api_response *resp, int status, const char *content_type,
                       const json_t *body);
 
+/* Replace whatever resp holds (its body is freed) with the fixed 500
+ * internal-error problem saying memory ran out; built without jansson, so it
+ * works when allocation does not (body NULL if even the copy fails: the
+ * server then sends the 500 with an empty body). */
+void api_respond_out_of_memory(struct api_response *resp);
+
 /* Copy a NUL-terminated text into resp. */
 void api_respond_text(struct api_response *resp, int status, const char *content_type,
                       const char *text);

@@ -762,8 +762,19 @@ enum mech_status mech_geodesic_integrate(const struct mech_geodesic_problem *p,
         memset(&r2, 0, sizeof r2);
         struct mech_error e2;
         mech_error_clear(&e2);
-        if (mech_ode_solve(&q2, budget, &r2, &e2) == MECH_OK && r2.stopped)
+        /* A failed look-ahead (out of memory, budget) is the run's failure: dropping
+         * the periapsis silently would change periapses_found and the advance. */
+        enum mech_status sta = mech_ode_solve(&q2, budget, &r2, &e2);
+        if (sta != MECH_OK) {
+            st = mech_error_set(err, sta, NULL, "periapsis look-ahead: %s", e2.text);
+            if (err && err->code == sta) {
+                err->progress = e2.progress;
+                err->progress.t_reached = e2.progress.t_reached * T;
+                err->progress.t_target = p->param_end;
+            }
+        } else if (r2.stopped) {
             record_periapsis(&c, r2.t_stop, ys2);
+        }
         res->stats.steps += r2.stats.steps;
         res->stats.rejected_steps += r2.stats.rejected_steps;
         res->stats.rhs_evaluations += r2.stats.rhs_evaluations;
