@@ -373,7 +373,7 @@ struct td_body {
 
 static struct td_body td_moon(void)
 {
-    struct td_body b = {"moon", MECH_G_NEWTON * MECH_MOON_MASS, MECH_MOON_MASS, MECH_MOON_DISTANCE,
+    struct td_body b = {"moon", MECH_GRAVITATIONAL_CONSTANT * MECH_MOON_MASS, MECH_MOON_MASS, MECH_MOON_DISTANCE,
                         "mass 7.342e22 kg, mean distance 3.844e8 m (semi-major axis); "
                         "GM = G mass, G = 6.67430e-11 (CODATA 2018)"};
     return b;
@@ -381,7 +381,7 @@ static struct td_body td_moon(void)
 
 static struct td_body td_sun(void)
 {
-    struct td_body b = {"sun", MECH_SUN_GM, MECH_SUN_GM / MECH_G_NEWTON, MECH_AU,
+    struct td_body b = {"sun", MECH_SUN_GM, MECH_SUN_GM / MECH_GRAVITATIONAL_CONSTANT, MECH_AU,
                         "GM = 1.32712440018e20 m^3/s^2 (IERS Conventions 2010), mass = GM/G; "
                         "distance 1 au = 1.495978707e11 m (IAU 2012 B2)"};
     return b;
@@ -412,7 +412,7 @@ static json_t *earth_tides(struct api_call *c, const json_t *body)
     } else {
         b.name = "custom";
         b.mass = api_number(bj, "mass", 0);
-        b.gm = MECH_G_NEWTON * b.mass;
+        b.gm = MECH_GRAVITATIONAL_CONSTANT * b.mass;
         b.distance = api_number(bj, "distance", 0);
         b.source = "GM = G mass, G = 6.67430e-11 (CODATA 2018)";
         dist_pointer = "/body/distance";

@@ -164,7 +164,7 @@ static void check_long_double(void)
 
 static void check_heights(void)
 {
-    const double gmoon = MECH_G_NEWTON * MECH_MOON_MASS;
+    const double gmoon = MECH_GRAVITATIONAL_CONSTANT * MECH_MOON_MASS;
     struct mech_tide_height hm, hs;
     CHECK_EQ_INT(mech_tide_height(gmoon, MECH_EARTH_GM, MECH_MOON_DISTANCE, MECH_EARTH_RADIUS_MEAN,
                                   0, &hm, NULL),

@@ -45,10 +45,9 @@
 #ifndef MECH_TIDES_H
 #define MECH_TIDES_H
 
+#include "mech/constants.h"
 #include "mech/status.h"
 
-/* Newtonian constant of gravitation, m^3 kg^-1 s^-2 (CODATA 2018). */
-#define MECH_G_NEWTON 6.67430e-11
 /* Mass of the Moon, kg (JPL planetary fact sheet / DE ephemerides: 7.342e22). */
 #define MECH_MOON_MASS 7.342e22
 /* Mean Earth-Moon distance, m (semi-major axis of the lunar orbit, 384 400 km). */

@@ -26,6 +26,7 @@
 #include <stddef.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/vec.h"
@@ -58,9 +59,6 @@ enum mech_force_type {
     MECH_FORCE_LORENTZ,             /* F = q (E + v x B), q = problem charge, frame axes */
     MECH_FORCE_THIRD_BODY_TIDE,     /* F = m gm [(d - r)/|d - r|^3 - d/|d|^3] (notes §1.4) */
 };
-
-/* Newtonian constant of gravitation (CODATA 2018), m^3 kg^-1 s^-2. */
-#define MECH_GRAVITATIONAL_CONSTANT 6.67430e-11
 
 struct mech_force {
     enum mech_force_type type;
