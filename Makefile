@@ -2,11 +2,12 @@
 # (scripts/install-deps.sh installs missing Debian packages first).
 BUILD      ?= build
 BUILD_SAN  ?= build-sanitize
+BUILD_TSAN ?= build-tsan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 MECHD_ARGS ?=
 
-.PHONY: all deps configure run test test-sanitize bench fuzz load docker-test clean
+.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -27,6 +28,17 @@ test-sanitize: deps
 	@test -f $(BUILD_SAN)/CMakeCache.txt || cmake -S . -B $(BUILD_SAN) -DCMAKE_BUILD_TYPE=Debug -DMECHD_SANITIZE=ON $(CMAKE_ARGS)
 	cmake --build $(BUILD_SAN) -j $(JOBS)
 	cd $(BUILD_SAN) && ctest --no-tests=error --output-on-failure -j $(JOBS)
+
+# ThreadSanitizer: mechd built with -fsanitize=thread, and the integration
+# tests (workers, queue, suspend/resume, hang-up watcher, shutdown) run against
+# it as tsan/* (label tsan); any TSan report fails the test (see
+# tests/integration/run_tsan.sh). Only mechd is built. About 1 minute.
+test-tsan: deps
+	@test -f $(BUILD_TSAN)/CMakeCache.txt || cmake -S . -B $(BUILD_TSAN) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DMECHD_TSAN=ON $(CMAKE_ARGS)
+	cmake --build $(BUILD_TSAN) -j $(JOBS) --target mechd
+	@./$(BUILD_TSAN)/mechd --version >/dev/null || { echo "test-tsan: the TSan mechd does not start" \
+	  "(an ifunc/target_clones resolver instrumented by TSan? guard it with __SANITIZE_THREAD__)" >&2; exit 1; }
+	cd $(BUILD_TSAN) && ctest --no-tests=error --output-on-failure -j $(JOBS) -L tsan
 
 # Benchmarks print figures and same-run ratios; never part of `make test`.
 # The work-precision plot needs gnuplot and the SciPy baseline (Debian packages).
@@ -51,4 +63,4 @@ docker-test:
 	sh docker/test.sh
 
 clean:
-	rm -rf $(BUILD) $(BUILD_SAN)
+	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_TSAN)

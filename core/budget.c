@@ -35,7 +35,9 @@ enum mech_status mech_budget_check(const struct mech_budget *b, long steps, int 
         st = mech_error_set(err, MECH_EBUDGET, NULL,
                             "step budget of %ld steps exhausted", b->max_steps);
     } else if (force || (steps & 255) == 0) {
-        if (b->cancel && *b->cancel)
+        /* The flag is raised by another thread (hang-up watcher, shutdown) with an
+         * atomic store; a plain read would be a data race (C11 5.1.2.4). */
+        if (b->cancel && __atomic_load_n(b->cancel, __ATOMIC_RELAXED))
             st = mech_error_set(err, MECH_ECANCELLED, NULL, "computation cancelled");
         else if (mech_clock_seconds() > b->deadline)
             st = mech_error_set(err, MECH_EDEADLINE, NULL, "deadline passed");
