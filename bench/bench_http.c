@@ -12,7 +12,8 @@
  * Usage: bench_http [OUTDIR] — OUTDIR (from `make bench`) is ignored.
  * Environment: MECHD=path of mechd, FLOOR_SERVER=path of floor_server (both
  * default to this program's directory), BENCH_SECONDS=seconds per wrk run
- * (default 5, at most 30), BENCH_CONNECTIONS (default 64).
+ * (default 5, at most 30), BENCH_CONNECTIONS (default 64), BENCH_MECHD_ARGS=extra
+ * mechd options, space-separated (e.g. "--io-threads 1"; at most 16 words).
  * Needs wrk (apt-get install wrk). Figures vary 15-40 % between runs on a
  * shared 2-core machine (server and wrk share it): read the ratios.
  * Exit status 0 when everything ran (targets never decide it), 1 when a
@@ -296,7 +297,13 @@ int main(int argc, char **argv)
 
     struct server fl = {0, 0}, md = {0, 0};
     char *fargv[] = {(char *)floor_bin, "0", NULL};
-    char *margv[] = {(char *)mechd, "--port", "0", "--workers", "2", "--max-body", "16777216", NULL};
+    char *margv[32] = {(char *)mechd, "--port", "0", "--workers", "2", "--max-body", "16777216", NULL};
+    static char extra[1024];
+    snprintf(extra, sizeof extra, "%s", getenv("BENCH_MECHD_ARGS") ? getenv("BENCH_MECHD_ARGS") : "");
+    int na = 7;
+    for (char *w = strtok(extra, " "); w && na < 7 + 16; w = strtok(NULL, " "))
+        margv[na++] = w;
+    margv[na] = NULL;
     int have_floor = server_start(fargv, &fl) == 0;
     if (!have_floor)
         fprintf(stderr, "bench_http: cannot start %s (build the floor_server target): no floor, no ratios\n",
@@ -331,8 +338,8 @@ int main(int argc, char **argv)
         free(b);
     }
 
-    printf("bench_http: wrk -t2 -c%d -d%ds on 127.0.0.1; mechd --workers 2; floor = libmicrohttpd fixed JSON\n", conns,
-           seconds);
+    printf("bench_http: wrk -t2 -c%d -d%ds on 127.0.0.1; mechd --workers 2 %s; floor = libmicrohttpd fixed JSON\n",
+           conns, seconds, getenv("BENCH_MECHD_ARGS") ? getenv("BENCH_MECHD_ARGS") : "");
     printf("%-26s %10s %8s %8s %9s   %5s  %5s\n", "case", "req/s", "p50 ms", "p99 ms", "CPU µs/r", "xrate", "xcpu");
     struct result rf = {0}, r[3];
     memset(r, 0, sizeof r);

@@ -24,6 +24,10 @@ enum opt_id {
     OPT_STATIC_DIR,
     OPT_TOKEN_FILE,
     OPT_CORS_ORIGIN,
+    OPT_IO_THREADS,
+    OPT_REQUEST_TIMEOUT_MS,
+    OPT_INLINE_MAX_US,
+    OPT_WORKER_NICE,
     OPT_COUNT
 };
 
@@ -58,6 +62,22 @@ static const struct opt_spec {
     [OPT_CORS_ORIGIN] = {"--cors-origin", "MECHD_CORS_ORIGIN", "", 0, 0,
                          "origin allowed to call /v1 from a browser, e.g. https://lab.example.org; "
                          "repeatable or comma-separated; none: CORS off"},
+    [OPT_IO_THREADS] = {"--io-threads", "MECHD_IO_THREADS", "2", 1, 64,
+                        "HTTP I/O threads (libmicrohttpd's thread pool); they read requests, "
+                        "answer quick operations and /healthz, and send answers"},
+    [OPT_REQUEST_TIMEOUT_MS] = {"--request-timeout-ms", "MECHD_REQUEST_TIMEOUT_MS", "30000", 100,
+                                3600000LL,
+                                "longest time a client may take to send one whole request "
+                                "(headers and body, counted from the connection or its previous "
+                                "answer); slower connections are closed"},
+    [OPT_INLINE_MAX_US] = {"--inline-max-us", "MECHD_INLINE_MAX_US", "100", 0, 1000000,
+                           "a quick operation (closed form, small body) is answered on an I/O "
+                           "thread while its measured cost predicts at most this many µs; "
+                           "0: every operation goes to the workers"},
+    [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "10", 0, 19,
+                         "how much lower the compute workers' scheduling priority is than the "
+                         "I/O threads' (nice increment; with > 0 also SCHED_BATCH), so /healthz "
+                         "and quick answers win a busy core; 0: same priority"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -224,6 +244,18 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_MAX_STEPS:
         cfg->max_steps = (long)v;
+        break;
+    case OPT_IO_THREADS:
+        cfg->io_threads = (int)v;
+        break;
+    case OPT_REQUEST_TIMEOUT_MS:
+        cfg->request_timeout_ms = (long)v;
+        break;
+    case OPT_INLINE_MAX_US:
+        cfg->inline_max_us = (long)v;
+        break;
+    case OPT_WORKER_NICE:
+        cfg->worker_nice = (int)v;
         break;
     default:
         break;

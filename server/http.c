@@ -22,10 +22,44 @@
  * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
  * request line) carry none of these: it offers no hook for them.
  *
+ * QUICK OPERATIONS. A POST that api_is_quick() accepts (a closed-form
+ * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
+ * I/O thread, with the same deadline, step budget and cancel flag as a pooled
+ * request: the suspend -> worker -> resume hand-off (two context switches, a
+ * futex wake-up and an eventfd write) costs more than such an operation. It is
+ * logged and counted in /metrics like any other request. The choice is
+ * measured, not assumed (DESIGN.md): every run of a quick route, inline or on
+ * a worker, updates a moving average of its wall time per byte of request
+ * (plus SRV_QUICK_BASE_BYTES for the fixed costs), and a request runs inline
+ * only while its predicted time is at most --inline-max-us, so a route that
+ * turns out slow (or a large body) goes to the pool and never holds an I/O
+ * thread, and /healthz, for long. The first request of a route runs inline.
+ *
+ * I/O THREADS. libmicrohttpd runs a pool of --io-threads epoll threads (its
+ * MHD_OPTION_THREAD_POOL_SIZE; default 2, the machine's cores), each with its
+ * own connections; suspend/resume works per connection in that mode.
+ *
  * CANCELLATION. A suspended connection is not polled by libmicrohttpd, so a
  * watcher thread checks the sockets of pooled requests every 10 ms and raises
- * the request's own cancel flag when the client has hung up: a waiting
- * request is then never run, a running one stops at its next budget check.
+ * the request's own cancel flag when the client has hung up: a running request
+ * stops at its next budget check; a request still waiting in the queue is
+ * taken out of it at once (srv_pool_remove), so its slot frees, and is
+ * answered 503 cancelled and resumed by the watcher itself.
+ *
+ * SLOW CLIENTS. libmicrohttpd's connection timeout counts idle time only, so a
+ * client sending a byte a second is never timed out by it. Every connection
+ * is therefore registered (MHD_OPTION_NOTIFY_CONNECTION) with the time it
+ * became ready for a request (when it connected, or when its previous answer
+ * was sent) and a receive state. The I/O thread claims the connection when a
+ * whole request has arrived (or is answered early); the watcher closes a
+ * connection still receiving --request-timeout-ms after it became ready:
+ * shutdown(2) of its socket, after which libmicrohttpd sees end-of-file and
+ * closes it on its own thread. Both sides switch the state with a
+ * compare-and-swap, so exactly one wins: either the request is answered or the
+ * connection is closed (no 408 is sent: the I/O thread owns what is written on
+ * the socket). The socket stays open while registered (libmicrohttpd notifies
+ * CLOSED before it closes the descriptor), so the watcher never touches a
+ * reused descriptor. Keep-alive idle time counts towards the limit.
  */
 #include "http.h"
 
@@ -54,6 +88,7 @@
 #define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
 #define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
+#define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -67,6 +102,22 @@
 #define SRV_CORS_MAX_AGE "600"
 
 struct srv_req;
+
+/* Receive state of a connection (struct srv_conn.rx), switched by CAS. */
+enum conn_rx {
+    CONN_RX = 0,    /* waiting for or receiving a request: the receive limit runs */
+    CONN_BUSY,      /* claimed by the I/O thread: request queued, running or answering */
+    CONN_TIMED_OUT, /* claimed by the watcher: the socket was shut down */
+};
+
+/* One per open connection (libmicrohttpd's socket context), in http->conns
+ * under conn_mu from NOTIFY_CONNECTION STARTED to CLOSED. */
+struct srv_conn {
+    int fd;
+    atomic_int rx;         /* enum conn_rx */
+    atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
+    struct srv_conn *prev, *next;
+};
 
 struct srv_http {
     struct MHD_Daemon *daemon;
@@ -83,6 +134,13 @@ struct srv_http {
     int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
     atomic_ulong next_id;
     atomic_int inflight; /* requests between first callback and completion */
+    /* Open connections, for the receive time limit. Guarded by conn_mu. */
+    pthread_mutex_t conn_mu;
+    struct srv_conn *conns;
+    /* Per route (api_routes index): moving average of a quick route's wall
+     * time in ns per KiB of (body + SRV_QUICK_BASE_BYTES); 0 = not measured.
+     * Relaxed atomics: a lost update only delays the average. */
+    atomic_llong *quick_cost;
 };
 
 enum req_state {
@@ -121,6 +179,9 @@ struct srv_req {
     int client_gone;
     int fd; /* the connection's socket, -1 if unknown */
     struct srv_http *http;
+    struct srv_conn *sc; /* the connection's registration, or NULL */
+    long route_index;    /* index in api_routes of a POST to an operation, else -1 */
+    int quick_route;     /* route is quick and the body small enough (api_is_quick) */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
     int watching;
 };
@@ -183,10 +244,9 @@ static void watch_add(struct srv_http *h, struct srv_req *r)
     pthread_mutex_unlock(&h->watch_mu);
 }
 
-/* Remove r (before its connection is resumed: after that r may be freed). */
-static void watch_remove(struct srv_http *h, struct srv_req *r)
+/* Unlink r from the watched list; watch_mu held. */
+static void watch_unlink(struct srv_http *h, struct srv_req *r)
 {
-    pthread_mutex_lock(&h->watch_mu);
     if (r->watching) {
         if (r->watch_prev)
             r->watch_prev->watch_next = r->watch_next;
@@ -196,6 +256,13 @@ static void watch_remove(struct srv_http *h, struct srv_req *r)
         r->watch_prev = r->watch_next = NULL;
         r->watching = 0;
     }
+}
+
+/* Remove r (before its connection is resumed: after that r may be freed). */
+static void watch_remove(struct srv_http *h, struct srv_req *r)
+{
+    pthread_mutex_lock(&h->watch_mu);
+    watch_unlink(h, r);
     pthread_mutex_unlock(&h->watch_mu);
 }
 
@@ -218,10 +285,40 @@ static int peer_closed(int fd)
     return n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR;
 }
 
-/* The watcher thread: every SRV_WATCH_PERIOD_MS, raise the cancel flag of
- * each pooled request whose client hung up. Waiting ones are then answered
- * at once by the worker that picks them up; running ones stop at their next
- * budget check (mech_budget_check reads the flag every 256 steps). */
+static long long now_ms(void)
+{
+    return (long long)(mech_clock_seconds() * 1000.0);
+}
+
+/* Close every connection that has been receiving one request for longer than
+ * --request-timeout-ms (see SLOW CLIENTS above) and count it in /metrics.
+ * Returns how many. Lock order: conn_mu, then log.c's counters. */
+static int close_slow_connections(struct srv_http *h)
+{
+    long long now = now_ms(), limit = h->cfg->request_timeout_ms;
+    int n = 0;
+    if (limit <= 0) return 0; /* no limit configured */
+    pthread_mutex_lock(&h->conn_mu);
+    for (struct srv_conn *c = h->conns; c; c = c->next) {
+        if (atomic_load(&c->rx) != CONN_RX || now - atomic_load(&c->ready_ms) <= limit) continue;
+        int expected = CONN_RX;
+        if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_TIMED_OUT)) continue;
+        /* Counted before the client can see the close. Registered, so the
+         * descriptor is still libmicrohttpd's open socket. */
+        srv_metrics_count_timeouts(1);
+        if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
+        n++;
+    }
+    pthread_mutex_unlock(&h->conn_mu);
+    return n;
+}
+
+/* The watcher thread, every SRV_WATCH_PERIOD_MS: raise the cancel flag of each
+ * pooled request whose client hung up (a running one stops at its next budget
+ * check: mech_budget_check reads the flag every 256 steps); take such a
+ * request out of the queue if it is still waiting there, answer it 503 and
+ * resume its connection (the slot frees at once); close connections that
+ * are too slow to send their request. Lock order: watch_mu, then the pool's. */
 static void *watcher_main(void *arg)
 {
     struct srv_http *h = arg;
@@ -231,16 +328,119 @@ static void *watcher_main(void *arg)
             pthread_mutex_unlock(&h->watch_mu);
             break;
         }
-        for (struct srv_req *r = h->watched; r; r = r->watch_next)
+        struct srv_req *next;
+        for (struct srv_req *r = h->watched; r; r = next) {
+            next = r->watch_next;
             if (r->fd >= 0 && !r->client_gone && peer_closed(r->fd)) {
                 r->client_gone = 1;
                 __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
             }
+            /* Not found when a worker has it (it sees client_gone), when it is
+             * not submitted yet (tried again next round) or when the pool
+             * stopped (req_cancel answers it). Found: the pool forgets it and
+             * it is ours to finish, as req_run would. */
+            if (r->client_gone && srv_pool_remove(h->pool, &r->job)) {
+                api_response_problem(&r->aresp, API_PROBLEM_CANCELLED,
+                                     "the client closed the connection; the request was not run");
+                watch_unlink(h, r);
+                r->state = REQ_DONE;
+                MHD_resume_connection(r->conn); /* r may be freed from here on */
+            }
+        }
         pthread_mutex_unlock(&h->watch_mu);
+        int closed = close_slow_connections(h);
+        if (closed > 0) {
+            srv_log_note("closed %d connection%s that sent no whole request within %ld ms", closed,
+                         closed == 1 ? "" : "s", h->cfg->request_timeout_ms);
+        }
         struct timespec ts = {0, SRV_WATCH_PERIOD_MS * 1000L * 1000L};
         nanosleep(&ts, NULL);
     }
     return NULL;
+}
+
+/* The I/O thread claims the connection for the request it is about to answer
+ * or queue. Returns 0 if the watcher has already timed it out: the caller
+ * returns MHD_NO and libmicrohttpd closes the connection. */
+static int conn_claim(struct srv_req *r)
+{
+    if (!r->sc) return 1;
+    int expected = CONN_RX;
+    if (atomic_compare_exchange_strong(&r->sc->rx, &expected, CONN_BUSY)) return 1;
+    return expected != CONN_TIMED_OUT;
+}
+
+static int conn_timed_out(const struct srv_conn *c)
+{
+    return c && atomic_load(&c->rx) == CONN_TIMED_OUT;
+}
+
+/* NOTIFY_CONNECTION: register a new connection, unregister a closing one (on
+ * its I/O thread; the descriptor is closed only after CLOSED returns). */
+static void on_connection(void *cls, struct MHD_Connection *conn, void **socket_context,
+                          enum MHD_ConnectionNotificationCode code)
+{
+    struct srv_http *h = cls;
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+        struct srv_conn *c = calloc(1, sizeof *c);
+        *socket_context = c;
+        if (!c) return; /* served without the receive limit (the idle timeout still applies) */
+        const union MHD_ConnectionInfo *ci =
+            MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CONNECTION_FD);
+        c->fd = ci ? (int)ci->connect_fd : -1;
+        atomic_init(&c->rx, CONN_RX);
+        atomic_init(&c->ready_ms, now_ms());
+        pthread_mutex_lock(&h->conn_mu);
+        c->prev = NULL;
+        c->next = h->conns;
+        if (h->conns) h->conns->prev = c;
+        h->conns = c;
+        pthread_mutex_unlock(&h->conn_mu);
+    } else if (code == MHD_CONNECTION_NOTIFY_CLOSED) {
+        struct srv_conn *c = *socket_context;
+        *socket_context = NULL;
+        if (!c) return;
+        pthread_mutex_lock(&h->conn_mu);
+        if (c->prev)
+            c->prev->next = c->next;
+        else
+            h->conns = c->next;
+        if (c->next) c->next->prev = c->prev;
+        pthread_mutex_unlock(&h->conn_mu);
+        free(c);
+    }
+}
+
+/* ---- quick operations: measured cost -------------------------------------------- */
+
+static unsigned long long quick_units(size_t body_len)
+{
+    return (unsigned long long)body_len + SRV_QUICK_BASE_BYTES;
+}
+
+/* Run the API on r, timing it for the quick-route average when it is one. */
+static void run_api(struct srv_req *r)
+{
+    if (!r->quick_route || !r->http->quick_cost) {
+        api_handle_ext(&r->areq, &r->aext, &r->aresp);
+        return;
+    }
+    double t0 = mech_clock_seconds();
+    api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    double ns = (mech_clock_seconds() - t0) * 1e9;
+    long long per_kib = (long long)(ns * 1024.0 / (double)quick_units(r->body_len)) + 1;
+    atomic_llong *avg = &r->http->quick_cost[r->route_index];
+    long long old = atomic_load_explicit(avg, memory_order_relaxed);
+    atomic_store_explicit(avg, old ? old + (per_kib - old) / 8 : per_kib, memory_order_relaxed);
+}
+
+/* Whether the quick request r is predicted to finish within --inline-max-us. */
+static int quick_inline(const struct srv_http *h, const struct srv_req *r)
+{
+    if (!r->quick_route || !h->quick_cost || h->cfg->inline_max_us <= 0) return 0;
+    long long per_kib = atomic_load_explicit(&h->quick_cost[r->route_index], memory_order_relaxed);
+    double predicted_ns = (double)per_kib * (double)quick_units(r->body_len) / 1024.0;
+    return predicted_ns <= (double)h->cfg->inline_max_us * 1000.0;
 }
 
 /* Worker side: cannot fail; the outcome is stored in the request. After
@@ -255,7 +455,7 @@ static void req_run(struct srv_job *job)
         api_response_problem(&r->aresp, API_PROBLEM_CANCELLED,
                              "the client closed the connection; the request was not run");
     else
-        api_handle_ext(&r->areq, &r->aext, &r->aresp);
+        run_api(r);
     watch_remove(r->http, r);
     r->state = REQ_DONE;
     MHD_resume_connection(r->conn);
@@ -522,10 +722,14 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
     return 1;
 }
 
-/* The whole request has arrived: route it. */
+/* The whole request has arrived (or is answered early): route it. */
 static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
 {
     char detail[160];
+    if (!conn_claim(r)) {
+        r->state = REQ_ANSWERED;
+        return MHD_NO; /* the receive limit passed: the watcher closed the connection */
+    }
     if (r->oom) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
     if (r->too_large) {
         snprintf(detail, sizeof detail, "the request body exceeds the limit of %zu bytes",
@@ -552,6 +756,19 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         api_is_inline(r->method, r->path)) {
         api_handle_ext(&r->areq, &r->aext, &r->aresp);
         return answer(r, &r->aresp);
+    }
+    /* A quick POST: cheaper to answer here than to hand off (see QUICK OPERATIONS). */
+    if (!r->query_request && api_is_quick(r->method, r->path, r->body_len)) {
+        for (size_t i = 0; i < api_route_count; i++)
+            if (strcmp(api_routes[i]->path, r->path) == 0) {
+                r->route_index = (long)i;
+                r->quick_route = 1;
+                break;
+            }
+        if (quick_inline(h, r)) {
+            run_api(r);
+            return answer(r, &r->aresp);
+        }
     }
     switch (srv_pool_reserve(h->pool)) {
     case SRV_POOL_FULL:
@@ -619,10 +836,16 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
     (void)version;
 
     if (!r) { /* first call: headers only */
+        const union MHD_ConnectionInfo *sci =
+            MHD_get_connection_info(conn, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
+        struct srv_conn *sc = sci ? sci->socket_context : NULL;
+        if (conn_timed_out(sc)) return MHD_NO;
         r = calloc(1, sizeof *r);
         if (!r) return MHD_NO;
         r->conn = conn;
         r->http = h;
+        r->sc = sc;
+        r->route_index = -1;
         r->fd = -1;
         const union MHD_ConnectionInfo *ci =
             MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CONNECTION_FD);
@@ -649,7 +872,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
             (inm && !r->if_none_match) || (origin && !r->origin)) {
             r->oom = 1;
-            return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+            return dispatch(h, r); /* answers 500 */
         }
         if (is_v1_path(r->path)) {
             int cors_on = h->cfg->cors_origins[0] != '\0';
@@ -668,6 +891,10 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
                                                         MHD_HTTP_HEADER_AUTHORIZATION) != NULL;
                 r->www_authenticate = given ? "Bearer realm=\"mechd\", error=\"invalid_token\""
                                             : "Bearer realm=\"mechd\"";
+                if (!conn_claim(r)) {
+                    r->state = REQ_ANSWERED;
+                    return MHD_NO;
+                }
                 return answer_server_problem(
                     r, 401, "unauthorized", "Unauthorized",
                     given ? "the bearer token is not valid for this server"
@@ -689,6 +916,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
     }
 
     if (*upload_data_size) {
+        if (conn_timed_out(r->sc)) return MHD_NO; /* closed by the receive limit */
         if (r->state == REQ_RECEIVING) take_body(h, r, upload_data, *upload_data_size);
         *upload_data_size = 0;
         return MHD_YES;
@@ -713,6 +941,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
 static const char *route_label(const struct srv_req *r)
 {
     if (r->route) return r->route;
+    if (r->route_index >= 0) return api_routes[r->route_index]->path;
     const char *p = r->path;
     if (!p) return "other";
     if (strcmp(p, "/healthz") == 0 || strcmp(p, "/metrics") == 0 || strcmp(p, "/") == 0) return p;
@@ -731,8 +960,15 @@ static void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
     (void)toe;
     if (!r) return;
     *con_cls = NULL;
-    double us = (mech_clock_seconds() - r->t0) * 1e6;
+    double now = mech_clock_seconds();
+    double us = (now - r->t0) * 1e6;
     srv_log_request(r->id, r->method, r->path, route_label(r), r->status, (long)(us + 0.5));
+    /* The connection is ready for its next request: the receive limit restarts.
+     * Only this I/O thread moves a connection out of CONN_BUSY. */
+    if (r->sc && atomic_load(&r->sc->rx) == CONN_BUSY) {
+        atomic_store(&r->sc->ready_ms, (long long)(now * 1000.0));
+        atomic_store(&r->sc->rx, CONN_RX);
+    }
     req_free(r);
     atomic_fetch_sub(&h->inflight, 1);
 }
@@ -761,6 +997,10 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->pool = pool;
     h->listen_fd = -1;
     pthread_mutex_init(&h->watch_mu, NULL);
+    pthread_mutex_init(&h->conn_mu, NULL);
+    h->quick_cost = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick_cost);
+    for (size_t i = 0; h->quick_cost && i < api_route_count; i++)
+        atomic_init(&h->quick_cost[i], 0);
     atomic_init(&h->next_id, 0);
     atomic_init(&h->inflight, 0);
 
@@ -783,19 +1023,28 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     } else {
         srv_log_note("cannot parse bind address '%s'", cfg->bind);
         pthread_mutex_destroy(&h->watch_mu);
+        pthread_mutex_destroy(&h->conn_mu);
+        free(h->quick_cost);
         free(h);
         return NULL;
     }
 
+    /* One I/O thread means no pool: then the pool option, last in the list,
+     * is replaced by the end marker (libmicrohttpd warns about a size of 0 or 1). */
+    unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 0u;
+    enum MHD_OPTION pool_opt = io_threads > 1 ? MHD_OPTION_THREAD_POOL_SIZE : MHD_OPTION_END;
     h->daemon = MHD_start_daemon(
         flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, sa,
         MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
         SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
-        MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+        MHD_OPTION_NOTIFY_CONNECTION, on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK,
+        unescape_no_nul, NULL, pool_opt, io_threads, MHD_OPTION_END);
     if (!h->daemon) {
         srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
         pthread_mutex_destroy(&h->watch_mu);
+        pthread_mutex_destroy(&h->conn_mu);
+        free(h->quick_cost);
         free(h);
         return NULL;
     }
@@ -848,5 +1097,7 @@ void srv_http_stop(struct srv_http *h)
     MHD_stop_daemon(h->daemon);
     if (h->listen_fd >= 0) close(h->listen_fd);
     pthread_mutex_destroy(&h->watch_mu);
+    pthread_mutex_destroy(&h->conn_mu);
+    free(h->quick_cost);
     free(h);
 }

@@ -1,7 +1,9 @@
-/* http.h — mechd's HTTP front: libmicrohttpd (epoll, one internal polling
- * thread) that reads requests, enforces the body limit, answers the
- * server-owned routes (/healthz, /metrics, /) and cheap GETs inline, and hands
- * everything else to the worker pool with suspend/resume.
+/* http.h — mechd's HTTP front: libmicrohttpd (epoll, a pool of
+ * cfg->io_threads internal polling threads) that reads requests, enforces the
+ * body limit and the total receive time (cfg->request_timeout_ms), answers the
+ * server-owned routes (/healthz, /metrics, /), cheap GETs and quick POSTs
+ * (api_is_quick) inline, and hands everything else to the worker pool with
+ * suspend/resume; a queued job whose client hangs up leaves the queue at once.
  *
  * Shutdown order (main.c): srv_http_quiesce, srv_pool_stop, srv_http_drain,
  * srv_http_stop, srv_pool_free. Not thread-safe: call from main only.

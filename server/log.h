@@ -13,6 +13,10 @@
 void srv_log_request(unsigned long id, const char *method, const char *path, const char *route,
                      int status, long usec);
 
+/* Count connections closed because they did not send a whole request within
+ * --request-timeout-ms (mechd_request_timeouts_total). */
+void srv_metrics_count_timeouts(unsigned long n);
+
 /* Write a free-form line "mechd: TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 

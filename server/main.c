@@ -69,7 +69,7 @@ int main(int argc, char **argv)
     }
     signal(SIGPIPE, SIG_IGN);
 
-    struct srv_pool *pool = srv_pool_create(cfg.workers, cfg.queue);
+    struct srv_pool *pool = srv_pool_create_nice(cfg.workers, cfg.queue, cfg.worker_nice);
     if (!pool) {
         srv_log_note("cannot start %d worker threads", cfg.workers);
         srv_static_free();
@@ -81,8 +81,10 @@ int main(int argc, char **argv)
         srv_static_free();
         return 1;
     }
-    srv_log_note("workers=%d queue=%d max_body=%zu deadline_ms=%ld max_steps=%ld static_files=%d",
-                 cfg.workers, cfg.queue, cfg.max_body, cfg.deadline_ms, cfg.max_steps,
+    srv_log_note("workers=%d queue=%d io_threads=%d max_body=%zu deadline_ms=%ld max_steps=%ld "
+                 "request_timeout_ms=%ld inline_max_us=%ld worker_nice=%d static_files=%d",
+                 cfg.workers, cfg.queue, cfg.io_threads, cfg.max_body, cfg.deadline_ms,
+                 cfg.max_steps, cfg.request_timeout_ms, cfg.inline_max_us, cfg.worker_nice,
                  n_static < 0 ? 0 : n_static);
 
     int sig = 0;

@@ -6,6 +6,9 @@
  * callback can fail: results and errors live in the enclosing request
  * (STYLE.md §9). After run/cancel returns the pool never touches the job
  * again, so the callback may hand the job's memory back to its owner.
+ * Workers run at a lower scheduling priority than the threads that call in
+ * (nice +10 and SCHED_BATCH on Linux by default), so the I/O threads win a
+ * busy core.
  * All functions are thread-safe except srv_pool_create/srv_pool_free.
  */
 #ifndef SERVER_WORKERS_H
@@ -25,8 +28,14 @@ enum srv_pool_result {
     SRV_POOL_STOPPED, /* shutting down: answer 503 cancelled */
 };
 
+#define SRV_POOL_DEFAULT_NICE 10 /* CFS weight 110 against 1024 at nice 0 */
+
 /* Start `workers` threads (>= 1) with a queue of `capacity` (>= 1) waiting jobs.
- * Returns NULL if a thread or allocation fails (nothing is left running). */
+ * Each worker adds `nice` (0..19; 0: unchanged) to its nice value and, when
+ * nice > 0, runs as SCHED_BATCH (Linux). srv_pool_create uses
+ * SRV_POOL_DEFAULT_NICE. Returns NULL if a thread or allocation fails
+ * (nothing is left running). */
+struct srv_pool *srv_pool_create_nice(int workers, int capacity, int nice);
 struct srv_pool *srv_pool_create(int workers, int capacity);
 
 /* Reserve one queue slot. On SRV_POOL_OK the caller must call srv_pool_submit
@@ -36,6 +45,14 @@ enum srv_pool_result srv_pool_reserve(struct srv_pool *p);
 /* Queue a job into a reserved slot. Cannot fail: if the pool has stopped in
  * between, job->cancel runs at once on the calling thread. */
 void srv_pool_submit(struct srv_pool *p, struct srv_job *job);
+
+/* Take a job that is still waiting out of the queue, freeing its slot at
+ * once (a client that hung up while its job waited). Returns 1 if it was
+ * removed: the pool forgets it and calls neither run nor cancel, so the caller
+ * owns it again and must finish it itself. Returns 0 if the job is not
+ * waiting (a worker has taken it, srv_pool_stop has cancelled it, or it was
+ * never submitted): then run or cancel is called as usual. O(queue length). */
+int srv_pool_remove(struct srv_pool *p, struct srv_job *job);
 
 /* Current number of waiting jobs, of workers running a job, and the total
  * seconds workers have spent in finished job->run calls. Any pointer may be NULL. */

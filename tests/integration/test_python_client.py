@@ -88,6 +88,11 @@ def expect_error(name, cls, fn, status, ptype, pointer=None):
 
 CUBE = {"bodies": [{"shape": "box", "mass": 1, "size": [1, 1, 1], "position": [0.5, 0.5, 0.5]}],
         "origin": [0, 0, 0]}
+# The same cube as 128 coincident boxes of mass 1/128 (exact in binary): the
+# body is over API_QUICK_MAX_BODY (8 KiB), so the server queues it for a worker
+# instead of answering it on the I/O thread, and a full queue refuses it 503.
+QUEUED_CUBE = {"bodies": [{"shape": "box", "mass": 1 / 128, "size": [1, 1, 1], "position": [0.5, 0.5, 0.5]}] * 128,
+               "origin": [0, 0, 0]}
 
 
 def test_success(m):
@@ -216,13 +221,13 @@ def test_busy():
         check("a second one waits in the queue",
               wait_for(lambda: metric(plain, "mechd_queue_depth") == 1, 10))
         e = expect_error("queue full, retries=0", mechd.ServerBusy,
-                         lambda: plain.rigid_inertia(CUBE), 503, "/problems/queue-full")
+                         lambda: plain.rigid_inertia(QUEUED_CUBE), 503, "/problems/queue-full")
         check("ServerBusy.retry_after from the Retry-After header",
               e is not None and e.retry_after is not None and e.retry_after >= 1, repr(e and e.retry_after))
         retries = []
         patient = mechd.Client(s.url, timeout=60, retries=20, max_retry_wait=1.0,
                                on_retry=lambda n, w, err: retries.append((n, w, type(err).__name__)))
-        r = _answer(lambda: patient.rigid_inertia(CUBE))
+        r = _answer(lambda: patient.rigid_inertia(QUEUED_CUBE))
         check("retry on 503: the request finally succeeds",
               isinstance(r, dict) and close(r["principal"]["moments"][0], 1 / 6, 1e-13), repr(r)[:200])
         check("retry on 503: it retried, after ServerBusy, waiting Retry-After capped at 1 s",
@@ -244,7 +249,7 @@ def test_busy():
         once = []
         short = mechd.Client(s.url, timeout=60, retries=1, max_retry_wait=0.2,
                              on_retry=lambda n, w, err: once.append(w))
-        e = _raised(lambda: short.rigid_inertia(CUBE))
+        e = _raised(lambda: short.rigid_inertia(QUEUED_CUBE))
         check("retries=1: one retry, then ServerBusy", isinstance(e, mechd.ServerBusy) and once == [0.2],
               repr((e, once)))
         t3.join(60)

@@ -116,6 +116,13 @@ def request(port, method, path, body=None, timeout=30):
         c.close()
 
 
+def metric(port, name):
+    """The value of an unlabelled metric from /metrics (float), or None."""
+    _, _, data, _ = request(port, "GET", "/metrics", timeout=10)
+    m = re.search(r"^" + re.escape(name) + r" (\S+)$", data.decode(), re.M)
+    return float(m.group(1)) if m else None
+
+
 def pct(values, p):
     if not values:
         return float("nan")
