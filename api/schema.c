@@ -45,9 +45,25 @@ void api_pointer_append(char *buf, size_t n, const char *token)
     buf[len] = '\0';
 }
 
+/* base + "/" + i into buf (truncated to n - 1 bytes); without printf, since a
+ * 100000-vector request asks for 500000 of these. */
 static void pointer_index(char *buf, size_t n, const char *base, size_t i)
 {
-    snprintf(buf, n, "%s/%zu", base, i);
+    char digits[24];
+    size_t nd = 0;
+    do {
+        digits[nd++] = (char)('0' + i % 10);
+        i /= 10;
+    } while (i);
+    size_t len = strlen(base);
+    if (len + 2 + nd > n) { /* does not fit: the slow path truncates like snprintf */
+        snprintf(buf, n, "%s/%zu", base, i);
+        return;
+    }
+    memcpy(buf, base, len);
+    buf[len++] = '/';
+    while (nd) buf[len++] = digits[--nd];
+    buf[len] = '\0';
 }
 
 static const char *type_name(const json_t *j)
@@ -98,6 +114,48 @@ static void value_text(const json_t *j, char *buf, size_t n)
     free(s);
 }
 
+/* The keywords of one schema node, read in one pass over its members (a node
+ * has a handful; looking each of the 17 keywords up by hash cost more than
+ * the validation itself). NULL where absent. */
+struct kw {
+    const json_t *type, *cnst, *enm, *oneof, *props, *required, *addl, *min_props, *max_props;
+    const json_t *items, *min_items, *max_items, *unique;
+    const json_t *minimum, *maximum, *ex_minimum, *ex_maximum;
+};
+
+static void read_keywords(const json_t *s, struct kw *k)
+{
+    memset(k, 0, sizeof *k);
+    const char *key;
+    json_t *val;
+    json_object_foreach((json_t *)s, key, val) {
+        switch (key[0]) {
+        case 't': if (!strcmp(key, "type")) k->type = val; break;
+        case 'c': if (!strcmp(key, "const")) k->cnst = val; break;
+        case 'e':
+            if (!strcmp(key, "enum")) k->enm = val;
+            else if (!strcmp(key, "exclusiveMinimum")) k->ex_minimum = val;
+            else if (!strcmp(key, "exclusiveMaximum")) k->ex_maximum = val;
+            break;
+        case 'o': if (!strcmp(key, "oneOf")) k->oneof = val; break;
+        case 'p': if (!strcmp(key, "properties")) k->props = val; break;
+        case 'r': if (!strcmp(key, "required")) k->required = val; break;
+        case 'a': if (!strcmp(key, "additionalProperties")) k->addl = val; break;
+        case 'i': if (!strcmp(key, "items")) k->items = val; break;
+        case 'u': if (!strcmp(key, "uniqueItems")) k->unique = val; break;
+        case 'm':
+            if (!strcmp(key, "minimum")) k->minimum = val;
+            else if (!strcmp(key, "maximum")) k->maximum = val;
+            else if (!strcmp(key, "minItems")) k->min_items = val;
+            else if (!strcmp(key, "maxItems")) k->max_items = val;
+            else if (!strcmp(key, "minProperties")) k->min_props = val;
+            else if (!strcmp(key, "maxProperties")) k->max_props = val;
+            break;
+        default: break;
+        }
+    }
+}
+
 static void validate(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr);
 
 static void validate_type(struct vctx *v, const json_t *t, const json_t *inst, const char *ptr,
@@ -113,21 +171,25 @@ static void validate_type(struct vctx *v, const json_t *t, const json_t *inst, c
     }
     size_t i;
     json_t *e;
-    char names[200] = "";
     json_array_foreach(t, i, e) {
         if (type_matches(json_string_value(e), inst)) { *ok = 1; return; }
+    }
+    *ok = 0;
+    if (!v->errors) { v->count++; return; } /* counting only: no message */
+    char names[200] = "";
+    json_array_foreach(t, i, e) {
         size_t len = strlen(names);
         snprintf(names + len, sizeof names - len, "%s%s", i ? " or " : "", json_string_value(e));
     }
-    *ok = 0;
     add_error(v, ptr, "must be %s, got %s", names, type_name(inst));
 }
 
-static void validate_object(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr)
+static void validate_object(struct vctx *v, const struct kw *kw, const json_t *inst,
+                            const char *ptr)
 {
-    const json_t *props = json_object_get(s, "properties");
-    const json_t *req = json_object_get(s, "required");
-    const json_t *addl = json_object_get(s, "additionalProperties");
+    const json_t *props = kw->props;
+    const json_t *req = kw->required;
+    const json_t *addl = kw->addl;
     char child[PTR_MAX];
     size_t i;
     json_t *e;
@@ -135,6 +197,7 @@ static void validate_object(struct vctx *v, const json_t *s, const json_t *inst,
     json_array_foreach(req, i, e) {
         const char *k = json_string_value(e);
         if (!json_object_get(inst, k)) {
+            if (!v->errors) { v->count++; continue; } /* counting only */
             snprintf(child, sizeof child, "%s", ptr);
             api_pointer_append(child, sizeof child, k);
             add_error(v, child, "is required");
@@ -143,12 +206,18 @@ static void validate_object(struct vctx *v, const json_t *s, const json_t *inst,
     const char *key;
     json_t *val;
     json_object_foreach((json_t *)inst, key, val) {
-        snprintf(child, sizeof child, "%s", ptr);
-        api_pointer_append(child, sizeof child, key);
+        /* Pointers only matter where errors are recorded (not when counting). */
+        const char *cp = ptr;
+        if (v->errors) {
+            snprintf(child, sizeof child, "%s", ptr);
+            api_pointer_append(child, sizeof child, key);
+            cp = child;
+        }
         const json_t *ps = props ? json_object_get(props, key) : NULL;
         if (ps) {
-            validate(v, ps, val, child);
+            validate(v, ps, val, cp);
         } else if (json_is_false(addl)) {
+            if (!v->errors) { v->count++; continue; } /* counting only */
             char allowed[300] = "";
             const char *pk;
             json_t *pv;
@@ -156,11 +225,11 @@ static void validate_object(struct vctx *v, const json_t *s, const json_t *inst,
                 size_t len = strlen(allowed);
                 snprintf(allowed + len, sizeof allowed - len, "%s%s", len ? ", " : "", pk);
             }
-            add_error(v, child, "unknown key; allowed here: %s", allowed[0] ? allowed : "none");
+            add_error(v, cp, "unknown key; allowed here: %s", allowed[0] ? allowed : "none");
         }
     }
-    const json_t *mn = json_object_get(s, "minProperties");
-    const json_t *mx = json_object_get(s, "maxProperties");
+    const json_t *mn = kw->min_props;
+    const json_t *mx = kw->max_props;
     size_t n = json_object_size(inst);
     if (mn && (double)n < json_number_value(mn))
         add_error(v, ptr, "must have at least %g members", json_number_value(mn));
@@ -168,11 +237,12 @@ static void validate_object(struct vctx *v, const json_t *s, const json_t *inst,
         add_error(v, ptr, "must have at most %g members", json_number_value(mx));
 }
 
-static void validate_array(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr)
+static void validate_array(struct vctx *v, const struct kw *kw, const json_t *inst,
+                           const char *ptr)
 {
     size_t n = json_array_size(inst);
-    const json_t *mn = json_object_get(s, "minItems");
-    const json_t *mx = json_object_get(s, "maxItems");
+    const json_t *mn = kw->min_items;
+    const json_t *mx = kw->max_items;
     if (mn && (double)n < json_number_value(mn)) {
         add_error(v, ptr, "must have at least %g items, got %zu", json_number_value(mn), n);
         return;
@@ -181,18 +251,18 @@ static void validate_array(struct vctx *v, const json_t *s, const json_t *inst, 
         add_error(v, ptr, "must have at most %g items, got %zu", json_number_value(mx), n);
         return;
     }
-    const json_t *items = json_object_get(s, "items");
+    const json_t *items = kw->items;
     if (items) {
         char child[PTR_MAX];
         for (size_t i = 0; i < n; i++) {
             /* Stop descending once the error list is full: a 100000-item
              * array of wrong items must not cost 100000 messages. */
             if (v->errors && json_array_size(v->errors) >= API_SCHEMA_MAX_ERRORS) break;
-            pointer_index(child, sizeof child, ptr, i);
-            validate(v, items, json_array_get(inst, i), child);
+            if (v->errors) pointer_index(child, sizeof child, ptr, i);
+            validate(v, items, json_array_get(inst, i), v->errors ? child : ptr);
         }
     }
-    if (json_is_true(json_object_get(s, "uniqueItems"))) {
+    if (json_is_true(kw->unique)) {
         for (size_t i = 0; i < n; i++)
             for (size_t j = i + 1; j < n && j < 1000; j++)
                 if (json_same(json_array_get(inst, i), json_array_get(inst, j))) {
@@ -204,17 +274,18 @@ static void validate_array(struct vctx *v, const json_t *s, const json_t *inst, 
     }
 }
 
-static void validate_number(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr)
+static void validate_number(struct vctx *v, const struct kw *kw, const json_t *inst,
+                            const char *ptr)
 {
     double x = json_number_value(inst);
     const json_t *k;
-    if ((k = json_object_get(s, "minimum")) && !(x >= json_number_value(k)))
+    if ((k = kw->minimum) && !(x >= json_number_value(k)))
         add_error(v, ptr, "must be >= %.17g, got %.17g", json_number_value(k), x);
-    if ((k = json_object_get(s, "maximum")) && !(x <= json_number_value(k)))
+    if ((k = kw->maximum) && !(x <= json_number_value(k)))
         add_error(v, ptr, "must be <= %.17g, got %.17g", json_number_value(k), x);
-    if ((k = json_object_get(s, "exclusiveMinimum")) && !(x > json_number_value(k)))
+    if ((k = kw->ex_minimum) && !(x > json_number_value(k)))
         add_error(v, ptr, "must be > %.17g, got %.17g", json_number_value(k), x);
-    if ((k = json_object_get(s, "exclusiveMaximum")) && !(x < json_number_value(k)))
+    if ((k = kw->ex_maximum) && !(x < json_number_value(k)))
         add_error(v, ptr, "must be < %.17g, got %.17g", json_number_value(k), x);
 }
 
@@ -239,9 +310,14 @@ static void validate_oneof(struct vctx *v, const json_t *branches, const json_t 
                            const char *ptr)
 {
     size_t i, best = 0, best_count = (size_t)-1, passes = 0;
-    int best_mismatch = 1;
+    int best_mismatch = 1, any_allowed = 0;
     json_t *b;
+    /* A branch whose discriminator (a const property) the instance contradicts
+     * cannot pass, and is only a candidate for the error report when every
+     * branch is contradicted: then it need not be validated at all. */
+    json_array_foreach(branches, i, b) if (!discriminator_mismatch(b, inst)) any_allowed = 1;
     json_array_foreach(branches, i, b) {
+        if (any_allowed && discriminator_mismatch(b, inst)) continue;
         struct vctx t = {NULL, 0};
         validate(&t, b, inst, ptr);
         if (t.count == 0) passes++;
@@ -265,34 +341,36 @@ static void validate_oneof(struct vctx *v, const json_t *branches, const json_t 
 static void validate(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr)
 {
     if (v->errors && json_array_size(v->errors) >= API_SCHEMA_MAX_ERRORS) { v->count++; return; }
+    struct kw kw;
+    read_keywords(s, &kw);
     const json_t *k;
-    if ((k = json_object_get(s, "type"))) {
+    if ((k = kw.type)) {
         int ok;
         validate_type(v, k, inst, ptr, &ok);
         if (!ok) return;
     }
-    if ((k = json_object_get(s, "const")) && !json_same(k, inst)) {
-        char t[120];
-        value_text(k, t, sizeof t);
+    if ((k = kw.cnst) && !json_same(k, inst)) {
+        char t[120] = "";
+        if (v->errors) value_text(k, t, sizeof t); /* no message when counting only */
         add_error(v, ptr, "must be %s", t);
         return;
     }
-    if ((k = json_object_get(s, "enum"))) {
+    if ((k = kw.enm)) {
         size_t i;
         json_t *e;
         int found = 0;
         json_array_foreach(k, i, e) if (json_same(e, inst)) found = 1;
         if (!found) {
-            char t[300];
-            value_text(k, t, sizeof t);
+            char t[300] = "";
+            if (v->errors) value_text(k, t, sizeof t);
             add_error(v, ptr, "must be one of %s", t);
             return;
         }
     }
-    if (json_is_object(inst)) validate_object(v, s, inst, ptr);
-    else if (json_is_array(inst)) validate_array(v, s, inst, ptr);
-    else if (json_is_number(inst)) validate_number(v, s, inst, ptr);
-    if ((k = json_object_get(s, "oneOf"))) validate_oneof(v, k, inst, ptr);
+    if (json_is_object(inst)) validate_object(v, &kw, inst, ptr);
+    else if (json_is_array(inst)) validate_array(v, &kw, inst, ptr);
+    else if (json_is_number(inst)) validate_number(v, &kw, inst, ptr);
+    if ((k = kw.oneof)) validate_oneof(v, k, inst, ptr);
 }
 
 size_t api_schema_validate(const json_t *schema, const json_t *instance,
