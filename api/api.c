@@ -203,11 +203,16 @@ static void serve_problem_doc(const char *slug, struct api_response *resp)
     json_decref(doc);
 }
 
-static void method_not_allowed(struct api_response *resp, const char *allowed)
+/* 405 for a path that takes `want` ("GET" or "POST"), with its Allow header
+ * (RFC 9110 §15.5.6). An operation also answers GET/HEAD with ?request=. */
+static void method_not_allowed(struct api_response *resp, const char *want)
 {
-    char d[120];
-    snprintf(d, sizeof d, "this path takes %s", allowed);
-    api_response_problem(resp, API_PROBLEM_METHOD_NOT_ALLOWED, d);
+    int post = !strcmp(want, "POST");
+    api_response_problem(resp, API_PROBLEM_METHOD_NOT_ALLOWED,
+                         post ? "this path takes POST (or GET with ?request= and the JSON body, "
+                                "URL-encoded)"
+                              : "this path takes GET (or HEAD)");
+    resp->allow = post ? "POST, GET, HEAD" : "GET, HEAD";
 }
 
 /* ---- operations ---------------------------------------------------------------- */

@@ -51,6 +51,7 @@ struct api_response {
     char note[200];           /* for the server log only, never sent: why a 500 happened */
     char etag[24];            /* "" or a strong entity tag, quoted ("\"0123456789abcdef\"") */
     const char *cache_control;/* static string for Cache-Control, or NULL for none */
+    const char *allow;        /* a 405's Allow header (static string), or NULL */
 };
 
 /* What only the HTTP server and `mechd eval` know about a request (all optional).

@@ -520,9 +520,11 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     if (resp->etag[0]) MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
     if (resp->cache_control)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_CACHE_CONTROL, resp->cache_control);
-    if (status == MHD_HTTP_METHOD_NOT_ALLOWED && r->path &&
-        (strcmp(r->path, "/healthz") == 0 || strcmp(r->path, "/metrics") == 0 ||
-         strcmp(r->path, "/") == 0))
+    if (status == MHD_HTTP_METHOD_NOT_ALLOWED && resp->allow)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_ALLOW, resp->allow);
+    else if (status == MHD_HTTP_METHOD_NOT_ALLOWED && r->path &&
+             (strcmp(r->path, "/healthz") == 0 || strcmp(r->path, "/metrics") == 0 ||
+              strcmp(r->path, "/") == 0))
         MHD_add_response_header(mr, MHD_HTTP_HEADER_ALLOW, "GET, HEAD");
     enum MHD_Result ret = MHD_queue_response(r->conn, (unsigned)status, mr);
     MHD_destroy_response(mr);

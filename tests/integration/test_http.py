@@ -344,8 +344,14 @@ def test_main_server():
                       404, "/problems/not-found")
         check_problem("404 POST unknown path",
                       request(port, "POST", "/v1/no/such/thing", boost_ex), 404, "/problems/not-found")
-        check_problem("405 GET on a POST route", request(port, "GET", "/v1/trajectory"),
-                      405, "/problems/method-not-allowed")
+        res = request(port, "GET", "/v1/trajectory")
+        check_problem("405 GET on a POST route", res, 405, "/problems/method-not-allowed")
+        check("405 GET on a POST route: Allow: POST, GET, HEAD (GET takes ?request=)",
+              res[1].get("allow") == "POST, GET, HEAD", repr(res[1].get("allow")))
+        res = request(port, "POST", "/v1/integrators", b"{}")
+        check_problem("405 POST on a GET resource", res, 405, "/problems/method-not-allowed")
+        check("405 POST on a GET resource: Allow: GET, HEAD", res[1].get("allow") == "GET, HEAD",
+              repr(res[1].get("allow")))
         check_problem("405 PUT with a body on a POST route",
                       request(port, "PUT", "/v1/rigid/inertia", inertia_ex),
                       405, "/problems/method-not-allowed")
