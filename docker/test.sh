@@ -5,8 +5,9 @@
 #      (cached in $MECHD_DOCKER_CACHE, default /var/cache/mechd-docker);
 #   2. starts Debian's dockerd with its own data root, exec root and socket
 #      (--storage-driver vfs), never touching a system engine;
-#   3. builds the mechd image (docker/Dockerfile: its build stage runs the test
-#      suite) and the nginx image, brings up docker/compose.yaml (nginx + three
+#   3. builds the mechd image (docker/Dockerfile: its build stage runs
+#      `make test`, the browser test included, with the host's extra CA
+#      certificates for npm) and the nginx image, brings up docker/compose.yaml (nginx + three
 #      replicas) on 127.0.0.1:$MECHD_HTTP_PORT (default 18080);
 #   4. sends 600 requests through nginx (every operation's catalog example),
 #      docker-kills one replica after 150 answers, and checks that every
@@ -15,7 +16,8 @@
 #   5. tears everything down (compose stack, dockerd by its pid, data root,
 #      docker0).
 # Needs root. Installs debootstrap, docker.io, docker-compose with apt when
-# missing. Takes 3-10 minutes (the image build runs the test suite on vfs).
+# missing. Takes 6-15 minutes (the image build installs chromium and runs
+# the test suite on vfs).
 # Exit status 0 on success, 1 on any failure.
 set -eu
 
@@ -109,9 +111,16 @@ say "imported debian:bookworm-slim"
 mkdir -p "$WORK/ctx"
 tar -C "$ROOT" --exclude='./build' --exclude='./build-*' --exclude='./.git' \
     --exclude='node_modules' --exclude='__pycache__' -cf - . | tar -C "$WORK/ctx" -xf -
+# The build stage's npm ci must trust what this machine trusts (an HTTPS proxy's
+# CA, say): hand it the host's extra CA certificates (build stage only).
+for c in /usr/local/share/ca-certificates/*.crt; do
+  if [ -f "$c" ]; then cp "$c" "$WORK/ctx/docker/ca-certificates/"; fi
+done
 say "building mechd image (runs the test suite)"
-$DOCKER build -q -f "$WORK/ctx/docker/Dockerfile" -t mechd:latest "$WORK/ctx" >"$WORK/build.log" 2>&1 \
+$DOCKER build -f "$WORK/ctx/docker/Dockerfile" -t mechd:latest "$WORK/ctx" >"$WORK/build.log" 2>&1 \
   || { tail -60 "$WORK/build.log"; fail "docker build mechd"; }
+# What the build stage's `make test` said (the browser test's Node.js, the summary).
+grep -E '^build stage:|browser/labs|tests passed|tests failed' "$WORK/build.log" | sed 's/^/  /'
 say "building nginx image"
 $DOCKER build -q -f "$WORK/ctx/docker/nginx.Dockerfile" -t mechd-nginx:latest "$WORK/ctx" >"$WORK/build-nginx.log" 2>&1 \
   || { tail -30 "$WORK/build-nginx.log"; fail "docker build nginx"; }

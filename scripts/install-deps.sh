@@ -7,23 +7,30 @@
 #                            python3-scipy (the SciPy DOP853 baseline,
 #                            imported by Debian's /usr/bin/python3) and wrk
 #                            (bench_http, tests/load)
-# Both also install what the browser test of the front end needs (make test
-# runs it): Debian's chromium (/usr/bin/chromium; Playwright never downloads a
-# browser), and node + npm only when no `node` / `npm` command exists (a
-# machine may carry a newer Node.js from another package, which must not be
-# replaced: playwright-core wants Node.js >= 20; bookworm's nodejs is 18).
+#   install-deps.sh --fuzz   also clang and libclang-rt-14-dev (libFuzzer and
+#                            the sanitizers for tests/fuzz/run.sh, make fuzz)
+# Options combine (install-deps.sh --bench --fuzz).
+# Every form also installs what the browser test of the front end needs (make
+# test runs it): Debian's chromium (/usr/bin/chromium; Playwright never
+# downloads a browser), and node + npm only when no `node` / `npm` command
+# exists (a machine may carry a newer Node.js from another package, which must
+# not be replaced). playwright-core wants Node.js >= 20 and bookworm's nodejs
+# is 18: then tests/browser/run.sh fetches a pinned Node.js 20 from the npm
+# registry into the build tree (no system change).
 set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev curl python3"
-case "${1:-}" in
-  --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk" ;;
-  "") ;;
-  *) echo "usage: $0 [--bench]" >&2; exit 2 ;;
-esac
+for opt in "$@"; do
+  case "$opt" in
+    --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk" ;;
+    --fuzz) PKGS="$PKGS clang libclang-rt-14-dev" ;;
+    *) echo "usage: $0 [--bench] [--fuzz]" >&2; exit 2 ;;
+  esac
+done
 
 command -v node >/dev/null 2>&1 || PKGS="$PKGS nodejs"
 command -v npm >/dev/null 2>&1 || PKGS="$PKGS npm"
-PKGS="$PKGS chromium clang libclang-rt-14-dev"  # browser test; libFuzzer (make fuzz)
+PKGS="$PKGS chromium"  # the browser test (tests/browser/run.sh)
 
 missing=""
 for p in $PKGS; do

@@ -9,7 +9,8 @@
  *   - srv_static_lookup() with the fuzzed path (the raw bytes and the decoded
  *     ones) and srv_static_not_modified() with the fuzzed If-None-Match, over
  *     the real front end (clients/web, MECHD_STATIC_DIR).
- * libmicrohttpd's own parsing (request line, header syntax) is not covered.
+ * libmicrohttpd's own parsing (request line, header syntax) and http.c's
+ * callbacks are covered by fuzz_server.c (the real server over TCP).
  *
  * Input layout: lines "METHOD\nPATH[?QUERY]\nCONTENT-TYPE\nIF-NONE-MATCH\nBODY..."
  * (an empty content-type or If-None-Match line means the header is absent).

@@ -201,7 +201,9 @@ def wait_for(fn, timeout):
 
 
 def test_busy():
-    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "2500", "--max-steps", "1000000000000")
+    # 5 s of deadline: the queue must still be full when the checks below run,
+    # even on a loaded machine.
+    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "5000", "--max-steps", "1000000000000")
     try:
         plain = mechd.Client(s.url, timeout=60, retries=0)
         results = {}
@@ -239,23 +241,42 @@ def test_busy():
         check("the slow requests end with BudgetExceeded (deadline)",
               all(isinstance(results.get(k), mechd.BudgetExceeded) for k in ("first", "second")),
               repr(results))
-        # bounded: with the pool busy again and retries=1 the call gives up with ServerBusy
-        t3 = threading.Thread(target=run, args=("third",))
+    finally:
+        s.stop()
+    # Bounded: with the pool busy and retries=1 the call gives up with ServerBusy.
+    # A server of its own with a long deadline, so the worker and the queue stay
+    # taken for the whole check however slow a loaded machine is; stopping it
+    # ends the two slow requests (cancelled) without waiting for the deadline.
+    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "120000", "--max-steps", "1000000000000")
+    t3 = t4 = None
+    try:
+        plain = mechd.Client(s.url, timeout=180, retries=0)
+        results = {}
+
+        def run_slow(key):
+            try:
+                results[key] = plain.trajectory(slow_trajectory())
+            except mechd.MechdError as e:
+                results[key] = e
+
+        t3 = threading.Thread(target=run_slow, args=("third",))
         t3.start()
-        wait_for(lambda: metric(plain, "mechd_workers_busy") == 1, 10)
-        t4 = threading.Thread(target=run, args=("fourth",))
+        busy = wait_for(lambda: metric(plain, "mechd_workers_busy") == 1, 30)
+        t4 = threading.Thread(target=run_slow, args=("fourth",))
         t4.start()
-        wait_for(lambda: metric(plain, "mechd_queue_depth") == 1, 10)
+        queued = wait_for(lambda: metric(plain, "mechd_queue_depth") == 1, 30)
+        check("a slow request runs and another waits (bounded-retry set-up)", busy and queued)
         once = []
         short = mechd.Client(s.url, timeout=60, retries=1, max_retry_wait=0.2,
                              on_retry=lambda n, w, err: once.append(w))
         e = _raised(lambda: short.rigid_inertia(QUEUED_CUBE))
         check("retries=1: one retry, then ServerBusy", isinstance(e, mechd.ServerBusy) and once == [0.2],
               repr((e, once)))
-        t3.join(60)
-        t4.join(60)
     finally:
         s.stop()
+        for t in (t3, t4):
+            if t is not None:
+                t.join(60)
 
 
 def _answer(fn):
