@@ -97,7 +97,7 @@ static void write_all(const char *s, size_t n)
 
 /* Append s to the line at *o (stopping at `end`), replacing control
  * characters and spaces so that one request stays one parseable line. */
-static char *put_clean(char *o, const char *end, const char *s, size_t max)
+static char *put_clean(char *o, char *end, const char *s, size_t max)
 {
     if (!s) s = "-";
     for (size_t i = 0; *s && i < max && o < end; s++, i++) {
@@ -107,14 +107,14 @@ static char *put_clean(char *o, const char *end, const char *s, size_t max)
     return o;
 }
 
-static char *put_str(char *o, const char *end, const char *s)
+static char *put_str(char *o, char *end, const char *s)
 {
     while (*s && o < end)
         *o++ = *s++;
     return o;
 }
 
-static char *put_ulong(char *o, const char *end, unsigned long u)
+static char *put_ulong(char *o, char *end, unsigned long u)
 {
     char d[24];
     int n = 0;
@@ -127,7 +127,7 @@ static char *put_ulong(char *o, const char *end, unsigned long u)
     return o;
 }
 
-static char *put_long(char *o, const char *end, long v)
+static char *put_long(char *o, char *end, long v)
 {
     if (v < 0 && o < end) *o++ = '-';
     return put_ulong(o, end, v < 0 ? 0UL - (unsigned long)v : (unsigned long)v);
@@ -145,6 +145,8 @@ void srv_log_request(unsigned long id, const char *method, const char *path, con
                      int status, long usec)
 {
     char line[640];
+    /* end is a plain char *: GCC 12 -O0 warns when a pointer into the not yet
+     * written buffer is passed as const char * (-Wmaybe-uninitialized). */
     char *o = line, *end = line + sizeof line - 1; /* room for the newline */
     o = put_str(o, end, "mechd: req=");
     o = put_ulong(o, end, id);
