@@ -131,6 +131,7 @@ static int start_server(void)
     size_t n = 0;
     while (n < sizeof line - 1) {
         ssize_t r = read(fds[0], line + n, sizeof line - 1 - n);
+        if (r < 0 && errno == EINTR) continue;
         if (r <= 0) break;
         n += (size_t)r;
         if (memchr(line, '\n', n)) break;
@@ -224,8 +225,22 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     a.sin_family = AF_INET;
     a.sin_port = htons((uint16_t)g_port);
     a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    if (connect(s, (struct sockaddr *)&a, sizeof a) != 0)
-        die("connect to the server: %s", strerror(errno), data, size);
+    if (connect(s, (struct sockaddr *)&a, sizeof a) != 0) {
+        /* libFuzzer's timer signal can interrupt a blocking connect; the
+         * connection then completes in the background (POSIX connect(2)):
+         * wait for it and read its outcome. A CI run once stopped here. */
+        int e = errno, err = 0;
+        socklen_t len = sizeof err;
+        if (e == EINTR) {
+            struct pollfd p = {s, POLLOUT, 0};
+            while (poll(&p, 1, 10000) < 0 && errno == EINTR) {
+            }
+            if (getsockopt(s, SOL_SOCKET, SO_ERROR, &err, &len) != 0) err = errno;
+        } else {
+            err = e;
+        }
+        if (err) die("connect to the server: %s", strerror(err), data, size);
+    }
     double deadline = now_s() + FUZZ_SERVER_WAIT_S;
 
     /* Write the input; the server may answer and close before reading it all
