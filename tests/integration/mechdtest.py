@@ -1,6 +1,8 @@
 """mechdtest.py — what the integration tests share (Python 3 stdlib only):
 check() and its tally, summary() printing the "N passed, M failed" line CTest
-reads, and start_mechd() starting `mechd --port 0` and reading its port."""
+reads, start_mechd() starting `mechd --port 0` and reading its port,
+wait_for() polling a condition, and metric_value() reading one sample of the
+Prometheus text that /metrics serves."""
 import os
 import re
 import select
@@ -51,3 +53,23 @@ def start_mechd(binary, args=(), stderr=None, timeout=20):
         proc.kill()
         raise RuntimeError("mechd did not start: %r" % buf)
     return proc, int(m.group(1))
+
+
+def wait_for(pred, timeout, period=0.02):
+    """Poll pred() every `period` s until it is true (return True) or `timeout`
+    s have passed (return False)."""
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if pred():
+            return True
+        time.sleep(period)
+    return False
+
+
+def metric_value(text, name):
+    """The value of the unlabelled sample `name` in Prometheus text (str or
+    bytes), as a float; None if absent."""
+    if isinstance(text, bytes):
+        text = text.decode("utf-8", "replace")
+    m = re.search(r"(?m)^" + re.escape(name) + r" (\S+)$", text)
+    return float(m.group(1)) if m else None

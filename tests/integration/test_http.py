@@ -25,7 +25,7 @@ import sys
 import tempfile
 import threading
 import time
-from mechdtest import check, summary
+from mechdtest import check, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_http.py PATH/TO/mechd\n")
@@ -185,14 +185,6 @@ def metric(port, name):
     m = re.search(r"^%s (\S+)$" % re.escape(name), payload.decode(), re.M)
     return float(m.group(1)) if m else None
 
-
-def wait_for(pred, timeout):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if pred():
-            return True
-        time.sleep(0.05)
-    return False
 
 
 class Async:

@@ -32,7 +32,7 @@ ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
 sys.dont_write_bytecode = True  # keep clients/python free of __pycache__
 sys.path.insert(0, os.path.join(ROOT, "clients", "python"))
 import mechd  # noqa: E402
-from mechdtest import check, summary
+from mechdtest import check, summary, wait_for
 
 
 def close(a, b, rtol):
@@ -190,14 +190,6 @@ def metric(m, name):
     mm = re.search(r"^%s (\S+)$" % re.escape(name), body.decode(), re.M) if status == 200 else None
     return float(mm.group(1)) if mm else None
 
-
-def wait_for(fn, timeout):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if fn():
-            return True
-        time.sleep(0.05)
-    return False
 
 
 def test_busy():

@@ -23,7 +23,7 @@ import sys
 import tempfile
 import time
 
-from mechdtest import check, start_mechd, summary
+from mechdtest import check, metric_value, start_mechd, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_srv_queue_hangup.py PATH/TO/mechd\n")
@@ -71,17 +71,8 @@ def metrics(port):
 
 
 def gauge(port, name):
-    m = re.search(r"(?m)^" + re.escape(name) + r" (\S+)$", metrics(port))
-    return float(m.group(1)) if m else None
+    return metric_value(metrics(port), name)
 
-
-def wait_for(fn, timeout):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if fn():
-            return True
-        time.sleep(0.02)
-    return False
 
 
 def main():

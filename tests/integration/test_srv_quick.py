@@ -39,7 +39,7 @@ import sys
 import tempfile
 import time
 
-from mechdtest import check, start_mechd, summary
+from mechdtest import check, metric_value, start_mechd, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_srv_quick.py PATH/TO/mechd\n")
@@ -96,17 +96,8 @@ def counter(text, route, status):
 
 
 def gauge(text, name):
-    m = re.search(r"(?m)^" + re.escape(name) + r" (\S+)$", text)
-    return float(m.group(1)) if m else None
+    return metric_value(text, name)
 
-
-def wait_for(fn, timeout):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if fn():
-            return True
-        time.sleep(0.02)
-    return False
 
 
 def stop(proc):

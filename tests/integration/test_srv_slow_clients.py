@@ -32,7 +32,7 @@ import tempfile
 import threading
 import time
 
-from mechdtest import check, start_mechd, summary
+from mechdtest import check, metric_value, start_mechd, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_srv_slow_clients.py PATH/TO/mechd\n")
@@ -95,17 +95,8 @@ def get(port, path):
 
 def metric(port, name):
     _, text = get(port, "/metrics")
-    m = re.search(rb"(?m)^" + re.escape(name.encode()) + rb" (\S+)$", text)
-    return float(m.group(1)) if m else None
+    return metric_value(text, name)
 
-
-def wait_for(fn, timeout):
-    end = time.monotonic() + timeout
-    while time.monotonic() < end:
-        if fn():
-            return True
-        time.sleep(0.05)
-    return False
 
 
 class Trickler(threading.Thread):
