@@ -162,11 +162,11 @@ int api_is_inline(const char *method, const char *path)
     return !(method && path && !strcmp(method, "POST") && route_index(path) >= 0);
 }
 
-int api_is_quick(const char *method, const char *path, size_t body_len)
+long api_quick_route(const char *method, const char *path, size_t body_len)
 {
-    if (!method || !path || strcmp(method, "POST") != 0 || body_len > API_QUICK_MAX_BODY) return 0;
+    if (!method || !path || strcmp(method, "POST") != 0 || body_len > API_QUICK_MAX_BODY) return -1;
     long ri = route_index(path);
-    return ri >= 0 && api_routes[ri]->quick;
+    return ri >= 0 && api_routes[ri]->quick ? ri : -1;
 }
 
 /* A GET route: call the handler without a body; it cannot fail on input. */

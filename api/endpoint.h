@@ -43,7 +43,7 @@ struct api_route {
     int reports_cost;        /* 1: the framework adds cost.cpu_seconds (and honours "cost": false) */
     int quick;               /* 1: closed form, no integration or search loop; its cost grows at
                                 most linearly with the body, so a small request may be answered
-                                on the server's I/O thread (api_is_quick) */
+                                on the server's I/O thread (api_quick_route) */
 };
 
 /* Record a validation error at a JSON pointer ("/bodies/0/mass"); 422. */

@@ -22,7 +22,7 @@
  * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
  * request line) carry none of these: it offers no hook for them.
  *
- * QUICK OPERATIONS. A POST that api_is_quick() accepts (a closed-form
+ * QUICK OPERATIONS. A POST that api_quick_route() accepts (a closed-form
  * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
  * I/O thread, with the same deadline, step budget and cancel flag as a pooled
  * request: the suspend -> worker -> resume hand-off (two context switches, a
@@ -181,7 +181,7 @@ struct srv_req {
     struct srv_http *http;
     struct srv_conn *sc; /* the connection's registration, or NULL */
     long route_index;    /* index in api_routes of a POST to an operation, else -1 */
-    int quick_route;     /* route is quick and the body small enough (api_is_quick) */
+    int quick_route;     /* route is quick and the body small enough (api_quick_route) */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
     int watching;
 };
@@ -760,13 +760,10 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         return answer(r, &r->aresp);
     }
     /* A quick POST: cheaper to answer here than to hand off (see QUICK OPERATIONS). */
-    if (!r->query_request && api_is_quick(r->method, r->path, r->body_len)) {
-        for (size_t i = 0; i < api_route_count; i++)
-            if (strcmp(api_routes[i]->path, r->path) == 0) {
-                r->route_index = (long)i;
-                r->quick_route = 1;
-                break;
-            }
+    long qi = r->query_request ? -1 : api_quick_route(r->method, r->path, r->body_len);
+    if (qi >= 0) {
+        r->route_index = qi;
+        r->quick_route = 1;
         if (quick_inline(h, r)) {
             run_api(r);
             return answer(r, &r->aresp);

@@ -2,7 +2,7 @@
  * cfg->io_threads internal polling threads) that reads requests, enforces the
  * body limit and the total receive time (cfg->request_timeout_ms), answers the
  * server-owned routes (/healthz, /metrics, /), cheap GETs and quick POSTs
- * (api_is_quick) inline, and hands everything else to the worker pool with
+ * (api_quick_route) inline, and hands everything else to the worker pool with
  * suspend/resume; a queued job whose client hangs up leaves the queue at once.
  *
  * Shutdown order (main.c): srv_http_quiesce, srv_pool_stop, srv_http_drain,
