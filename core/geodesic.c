@@ -804,7 +804,7 @@ enum mech_status mech_geodesic_integrate(const struct mech_geodesic_problem *p,
     res->measured_deflection = NAN;
     if (st == MECH_OK && !timelike && res->escaped && in->rdot0 <= 0) {
         const double b = fabs(in->L);
-        double w1, t0, t1;
+        double w1 = 0.0, t0 = 0.0, t1 = 0.0; /* initialised: GCC -O3 warns (maybe-uninitialized) */
         struct mech_error e2;
         mech_error_clear(&e2);
         if (light_w1(b, &w1, &e2) == MECH_OK && light_tail(b, w1, r0, &t0, &e2) == MECH_OK &&

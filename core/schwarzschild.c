@@ -86,8 +86,8 @@ enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit,
                                          struct mech_schw_clock_compare *out,
                                          struct mech_error *err)
 {
-    struct mech_schw_static g, so;
-    struct mech_schw_circular co;
+    struct mech_schw_static g = {0}, so = {0}; /* zeroed: GCC -O3 cannot see every path sets them */
+    struct mech_schw_circular co = {0};
     enum mech_status st = mech_schw_static_clock(r_ref, &g, NULL);
     if (st != MECH_OK)
         return mech_error_set(err, st, "reference_r",

@@ -493,7 +493,7 @@ static enum mech_status radau_step(void *ws, const struct mech_ode_system *sys, 
     } else {
         radau_zero_b(w, S);
     }
-    double pc;
+    double pc = 0.0; /* set by radau_iterate; initialised for GCC -O3 */
     st = radau_iterate(w, S, sys, t, h, RADAU15_PC_MAX_STEP, stats, err, &pc);
     if (st != MECH_OK) return st;
     if (!(pc <= RADAU15_PC_DIVERGED))
@@ -545,7 +545,7 @@ static enum mech_status radau_evolve(void *ws, const struct mech_ode_system *sys
         if (!(dt > 0.0) || *t + dt == *t)
             return mech_error_set(err, MECH_ENUMERIC, NULL,
                                   "radau15: step size underflow at t = %.9g s", *t);
-        double pc;
+        double pc = 0.0;
         st = radau_iterate(w, S, sys, *t + w->ct, dt, RADAU15_PC_MAX_EVOLVE, stats, err, &pc);
         if (st != MECH_OK) return st;
         double dt_new;

@@ -249,7 +249,7 @@ int main(void)
                 } else {
                     CHECK(s.kind == MECH_STABILITY_UNSTABLE);
                     double t_end = acosh(1e6) / s.growth_rate;
-                    double eps[2];
+                    double eps[2] = {0.0, 0.0};
                     CHECK(integrate(bodies[bi], ax, spin, delta, t_end, 2, eps) == 0);
                     double g = acosh(eps[1] / delta) / t_end;
                     worst_g = fmax(worst_g, fabs(g - s.growth_rate) / s.growth_rate);
