@@ -19,8 +19,12 @@
 #include "routes.h"
 #include "schema.h"
 
-/* Parsed route schemas, index-aligned with api_routes; read-only after init. */
+/* Parsed route schemas, index-aligned with api_routes; read-only after init.
+ * route_compiled[i] is route_schemas[i] compiled (it borrows from it); both
+ * live for the whole process (api.h has no shutdown: they stay reachable
+ * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
+static struct api_schema **route_compiled;
 static int init_status = -1;
 static char init_error[300] = "api_init not run";
 static pthread_once_t init_once = PTHREAD_ONCE_INIT;
@@ -69,7 +73,11 @@ static void install_json_allocator(void)
 static int init_routes(void)
 {
     route_schemas = calloc(api_route_count, sizeof *route_schemas);
-    if (!route_schemas) { snprintf(init_error, sizeof init_error, "out of memory"); return -1; }
+    route_compiled = calloc(api_route_count, sizeof *route_compiled);
+    if (!route_schemas || !route_compiled) {
+        snprintf(init_error, sizeof init_error, "out of memory");
+        return -1;
+    }
     for (size_t i = 0; i < api_route_count; i++) {
         const struct api_route *r = api_routes[i];
         json_error_t jerr;
@@ -89,13 +97,15 @@ static int init_routes(void)
             return -1;
         }
         route_schemas[i] = s;
-        if (api_schema_check(s, msg, sizeof msg)) {
+        /* Checked and compiled once; requests are validated against the tree. */
+        route_compiled[i] = api_schema_compile(s, msg, sizeof msg);
+        if (!route_compiled[i]) {
             snprintf(init_error, sizeof init_error, "%s: schema: %s", r->path, msg);
             return -1;
         }
         /* The catalog's example must be a request the schema accepts. */
         json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, &jerr);
-        size_t nerr = ex ? api_schema_validate(s, ex, "", NULL) : 1;
+        size_t nerr = ex ? api_schema_validate(route_compiled[i], ex, "", NULL) : 1;
         json_decref(ex);
         if (nerr) {
             snprintf(init_error, sizeof init_error, "%s: example does not match its schema",
@@ -127,6 +137,11 @@ const char *api_init_error(void)
 const json_t *api_route_schema(size_t i)
 {
     return i < api_route_count && route_schemas ? route_schemas[i] : NULL;
+}
+
+const struct api_schema *api_route_schema_compiled(size_t i)
+{
+    return i < api_route_count && route_compiled ? route_compiled[i] : NULL;
 }
 
 /* ---- helpers ---------------------------------------------------------------- */
@@ -273,7 +288,7 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
     const struct api_route *r = api_routes[ri];
     *out = NULL;
     json_t *errors = json_array();
-    size_t nerr = api_schema_validate(route_schemas[ri], body, prefix, errors);
+    size_t nerr = api_schema_validate(route_compiled[ri], body, prefix, errors);
     if (nerr) {
         char d[120];
         snprintf(d, sizeof d, "%zu error%s in the request", nerr, nerr == 1 ? "" : "s");

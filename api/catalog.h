@@ -17,4 +17,9 @@ const char *api_openapi_text(void);
 /* Parsed schema of route i (borrowed; NULL before init). */
 const json_t *api_route_schema(size_t i);
 
+/* Compiled schema of route i, for api_schema_validate (borrowed; lives for
+ * the process; NULL before init and for GET routes). */
+struct api_schema;
+const struct api_schema *api_route_schema_compiled(size_t i);
+
 #endif

@@ -121,7 +121,7 @@ static int inertia_principal(struct api_call *c, const json_t *in, double moment
     size_t ri = api_route_count;
     for (size_t i = 0; i < api_route_count; i++)
         if (!strcmp(api_routes[i]->path, "/v1/rigid/inertia")) ri = i;
-    const json_t *sch = ri < api_route_count ? api_route_schema(ri) : NULL;
+    const struct api_schema *sch = ri < api_route_count ? api_route_schema_compiled(ri) : NULL;
     if (!sch) {
         struct mech_error e;
         mech_error_clear(&e);

@@ -1,15 +1,157 @@
-/* schema.c — the JSON Schema subset validator (see schema.h). */
+/* schema.c — the JSON Schema subset validator (see schema.h): the self-check
+ * of a route schema, its compilation into a tree of struct snode, and the
+ * validation of a request against that tree.
+ *
+ * Every message, pointer and the order of the errors are those of the
+ * interpreter this replaced (it walked the schema's jansson objects on every
+ * request); tests/api/test_schema.c keeps that interpreter as its reference
+ * and compares the two over every route schema. */
 #include "schema.h"
 #include "respond.h"
 
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define PTR_MAX 512
 
+/* Type bits: what `type` allows (T_INTEGER: a number with integral value). */
+enum {
+    T_OBJECT = 1u << 0,
+    T_ARRAY = 1u << 1,
+    T_STRING = 1u << 2,
+    T_NUMBER = 1u << 3,
+    T_INTEGER = 1u << 4,
+    T_BOOLEAN = 1u << 5,
+    T_NULL = 1u << 6,
+};
+
+/* Which numeric keywords a node has. */
+enum {
+    H_MIN_ITEMS = 1u << 0,
+    H_MAX_ITEMS = 1u << 1,
+    H_MIN_PROPS = 1u << 2,
+    H_MAX_PROPS = 1u << 3,
+    H_MINIMUM = 1u << 4,
+    H_MAXIMUM = 1u << 5,
+    H_EX_MINIMUM = 1u << 6,
+    H_EX_MAXIMUM = 1u << 7,
+};
+
+struct snode;
+
+/* One entry of `properties`: key borrowed from the schema, len its bytes. */
+struct sprop {
+    const char *key;
+    size_t len;
+    struct snode *node;
+};
+
+/* A discriminator of a oneOf branch: property `key` must equal `value` (the
+ * property schema's `const`, borrowed). */
+struct sdisc {
+    const char *key;
+    const json_t *value;
+};
+
+struct sbranch {
+    struct snode *node;
+    struct sdisc *disc;
+    size_t ndisc;
+};
+
+/* One compiled schema object. Texts are formatted at compile time exactly as
+ * the messages print them; pointers to json_t are borrowed from the schema. */
+struct snode {
+    unsigned has_type;  /* `type` present */
+    unsigned type_mask; /* T_* */
+    unsigned bounds;    /* H_* */
+    int addl_false;     /* additionalProperties: false */
+    int unique;         /* uniqueItems: true */
+    char *type_msg;     /* "must be an integer", "must be string or null" */
+    const json_t *cnst;
+    char *cnst_text;
+    const json_t *enm;
+    char *enum_text;
+    struct sprop *props;
+    size_t nprops;
+    const char **required;
+    size_t nrequired;
+    char *allowed; /* "a, b" or "none" (with addl_false only) */
+    struct snode *items;
+    struct sbranch *oneof;
+    size_t noneof;
+    double min_items, max_items, min_props, max_props;
+    double minimum, maximum, ex_minimum, ex_maximum;
+};
+
+struct api_schema {
+    struct snode *root;
+};
+
+/* ---- pointers -------------------------------------------------------------- */
+
+/* Append '/' + escaped token to buf, which holds len bytes (capacity n).
+ * Returns the new length. */
+static size_t pointer_append_at(char *buf, size_t n, size_t len, const char *token)
+{
+    if (len + 1 >= n) return len;
+    buf[len++] = '/';
+    for (const char *p = token; *p && len + 1 < n; p++) {
+        if (*p == '~' || *p == '/') {
+            if (len + 2 >= n) break;
+            buf[len++] = '~';
+            buf[len++] = *p == '~' ? '0' : '1';
+        } else {
+            buf[len++] = *p;
+        }
+    }
+    buf[len] = '\0';
+    return len;
+}
+
+void api_pointer_append(char *buf, size_t n, const char *token)
+{
+    pointer_append_at(buf, n, strlen(buf), token);
+}
+
+/* ptr (plen bytes) + "/" + escaped key into buf[PTR_MAX]; returns its length. */
+static size_t pointer_key(char *buf, const char *ptr, size_t plen, const char *key)
+{
+    if (plen > PTR_MAX - 1) plen = PTR_MAX - 1;
+    memcpy(buf, ptr, plen);
+    buf[plen] = '\0';
+    return pointer_append_at(buf, PTR_MAX, plen, key);
+}
+
+/* base (blen bytes) + "/" + i into buf[PTR_MAX] (truncated to PTR_MAX - 1
+ * bytes); without printf, since a 100000-vector request asks for 500000 of
+ * these. Returns its length. */
+static size_t pointer_index(char *buf, const char *base, size_t blen, size_t i)
+{
+    char digits[24];
+    size_t nd = 0, k = i;
+    do {
+        digits[nd++] = (char)('0' + k % 10);
+        k /= 10;
+    } while (k);
+    if (blen + 2 + nd > PTR_MAX) { /* does not fit: truncate like snprintf */
+        snprintf(buf, PTR_MAX, "%s/%zu", base, i);
+        return strlen(buf);
+    }
+    memcpy(buf, base, blen);
+    buf[blen++] = '/';
+    while (nd) buf[blen++] = digits[--nd];
+    buf[blen] = '\0';
+    return blen;
+}
+
+/* ---- validation ---------------------------------------------------------------- */
+
 struct vctx {
-    json_t *errors;  /* may be NULL: count only */
+    json_t *errors; /* may be NULL: count only */
     size_t count;
 };
 
@@ -28,44 +170,6 @@ static void add_error(struct vctx *v, const char *pointer, const char *fmt, ...)
     json_array_append_new(v->errors, api_error_entry(pointer, detail));
 }
 
-void api_pointer_append(char *buf, size_t n, const char *token)
-{
-    size_t len = strlen(buf);
-    if (len + 1 >= n) return;
-    buf[len++] = '/';
-    for (const char *p = token; *p && len + 1 < n; p++) {
-        if (*p == '~' || *p == '/') {
-            if (len + 2 >= n) break;
-            buf[len++] = '~';
-            buf[len++] = *p == '~' ? '0' : '1';
-        } else {
-            buf[len++] = *p;
-        }
-    }
-    buf[len] = '\0';
-}
-
-/* base + "/" + i into buf (truncated to n - 1 bytes); without printf, since a
- * 100000-vector request asks for 500000 of these. */
-static void pointer_index(char *buf, size_t n, const char *base, size_t i)
-{
-    char digits[24];
-    size_t nd = 0;
-    do {
-        digits[nd++] = (char)('0' + i % 10);
-        i /= 10;
-    } while (i);
-    size_t len = strlen(base);
-    if (len + 2 + nd > n) { /* does not fit: the slow path truncates like snprintf */
-        snprintf(buf, n, "%s/%zu", base, i);
-        return;
-    }
-    memcpy(buf, base, len);
-    buf[len++] = '/';
-    while (nd) buf[len++] = digits[--nd];
-    buf[len] = '\0';
-}
-
 static const char *type_name(const json_t *j)
 {
     switch (json_typeof(j)) {
@@ -81,19 +185,23 @@ static const char *type_name(const json_t *j)
     return "unknown";
 }
 
-static int type_matches(const char *t, const json_t *j)
+static int type_ok(unsigned mask, const json_t *j)
 {
-    if (!strcmp(t, "object")) return json_is_object(j);
-    if (!strcmp(t, "array")) return json_is_array(j);
-    if (!strcmp(t, "string")) return json_is_string(j);
-    if (!strcmp(t, "number")) return json_is_number(j);
-    if (!strcmp(t, "integer")) {
-        if (!json_is_number(j)) return 0;
+    switch (json_typeof(j)) {
+    case JSON_OBJECT: return (mask & T_OBJECT) != 0;
+    case JSON_ARRAY: return (mask & T_ARRAY) != 0;
+    case JSON_STRING: return (mask & T_STRING) != 0;
+    case JSON_INTEGER:
+    case JSON_REAL: {
+        if (mask & T_NUMBER) return 1;
+        if (!(mask & T_INTEGER)) return 0;
         double x = json_number_value(j);
         return isfinite(x) && floor(x) == x;
     }
-    if (!strcmp(t, "boolean")) return json_is_boolean(j);
-    if (!strcmp(t, "null")) return json_is_null(j);
+    case JSON_TRUE:
+    case JSON_FALSE: return (mask & T_BOOLEAN) != 0;
+    case JSON_NULL: return (mask & T_NULL) != 0;
+    }
     return 0;
 }
 
@@ -106,222 +214,143 @@ static int json_same(const json_t *a, const json_t *b)
     return json_equal((json_t *)a, (json_t *)b);
 }
 
-/* Short text form of a small JSON value for messages. */
-static void value_text(const json_t *j, char *buf, size_t n)
+/* The compiled child for property `key` (len bytes), or NULL. Properties are
+ * few per object: a linear scan that mostly stops at the length. */
+static const struct snode *prop_find(const struct snode *s, const char *key, size_t len)
 {
-    char *s = json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(15));
-    snprintf(buf, n, "%s", s ? s : "?");
-    free(s);
+    for (size_t i = 0; i < s->nprops; i++) {
+        const struct sprop *p = &s->props[i];
+        if (p->len == len && p->key[0] == key[0] && !memcmp(p->key, key, len)) return p->node;
+    }
+    return NULL;
 }
 
-/* The keywords of one schema node, read in one pass over its members (a node
- * has a handful; looking each of the 17 keywords up by hash cost more than
- * the validation itself). NULL where absent. */
-struct kw {
-    const json_t *type, *cnst, *enm, *oneof, *props, *required, *addl, *min_props, *max_props;
-    const json_t *items, *min_items, *max_items, *unique;
-    const json_t *minimum, *maximum, *ex_minimum, *ex_maximum;
-};
+static void validate(struct vctx *v, const struct snode *s, const json_t *inst, const char *ptr,
+                     size_t plen);
 
-static void read_keywords(const json_t *s, struct kw *k)
+static void validate_object(struct vctx *v, const struct snode *s, const json_t *inst,
+                            const char *ptr, size_t plen)
 {
-    memset(k, 0, sizeof *k);
-    const char *key;
-    json_t *val;
-    json_object_foreach((json_t *)s, key, val) {
-        switch (key[0]) {
-        case 't': if (!strcmp(key, "type")) k->type = val; break;
-        case 'c': if (!strcmp(key, "const")) k->cnst = val; break;
-        case 'e':
-            if (!strcmp(key, "enum")) k->enm = val;
-            else if (!strcmp(key, "exclusiveMinimum")) k->ex_minimum = val;
-            else if (!strcmp(key, "exclusiveMaximum")) k->ex_maximum = val;
-            break;
-        case 'o': if (!strcmp(key, "oneOf")) k->oneof = val; break;
-        case 'p': if (!strcmp(key, "properties")) k->props = val; break;
-        case 'r': if (!strcmp(key, "required")) k->required = val; break;
-        case 'a': if (!strcmp(key, "additionalProperties")) k->addl = val; break;
-        case 'i': if (!strcmp(key, "items")) k->items = val; break;
-        case 'u': if (!strcmp(key, "uniqueItems")) k->unique = val; break;
-        case 'm':
-            if (!strcmp(key, "minimum")) k->minimum = val;
-            else if (!strcmp(key, "maximum")) k->maximum = val;
-            else if (!strcmp(key, "minItems")) k->min_items = val;
-            else if (!strcmp(key, "maxItems")) k->max_items = val;
-            else if (!strcmp(key, "minProperties")) k->min_props = val;
-            else if (!strcmp(key, "maxProperties")) k->max_props = val;
-            break;
-        default: break;
-        }
-    }
-}
-
-static void validate(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr);
-
-static void validate_type(struct vctx *v, const json_t *t, const json_t *inst, const char *ptr,
-                          int *ok)
-{
-    if (json_is_string(t)) {
-        *ok = type_matches(json_string_value(t), inst);
-        if (!*ok)
-            add_error(v, ptr, "must be %s %s, got %s",
-                      strchr("aeiou", json_string_value(t)[0]) ? "an" : "a",
-                      json_string_value(t), type_name(inst));
-        return;
-    }
-    size_t i;
-    json_t *e;
-    json_array_foreach(t, i, e) {
-        if (type_matches(json_string_value(e), inst)) { *ok = 1; return; }
-    }
-    *ok = 0;
-    if (!v->errors) { v->count++; return; } /* counting only: no message */
-    char names[200] = "";
-    json_array_foreach(t, i, e) {
-        size_t len = strlen(names);
-        snprintf(names + len, sizeof names - len, "%s%s", i ? " or " : "", json_string_value(e));
-    }
-    add_error(v, ptr, "must be %s, got %s", names, type_name(inst));
-}
-
-static void validate_object(struct vctx *v, const struct kw *kw, const json_t *inst,
-                            const char *ptr)
-{
-    const json_t *props = kw->props;
-    const json_t *req = kw->required;
-    const json_t *addl = kw->addl;
     char child[PTR_MAX];
-    size_t i;
-    json_t *e;
-
-    json_array_foreach(req, i, e) {
-        const char *k = json_string_value(e);
+    for (size_t i = 0; i < s->nrequired; i++) {
+        const char *k = s->required[i];
         if (!json_object_get(inst, k)) {
             if (!v->errors) { v->count++; continue; } /* counting only */
-            snprintf(child, sizeof child, "%s", ptr);
-            api_pointer_append(child, sizeof child, k);
+            pointer_key(child, ptr, plen, k);
             add_error(v, child, "is required");
         }
     }
     const char *key;
     json_t *val;
     json_object_foreach((json_t *)inst, key, val) {
-        /* Pointers only matter where errors are recorded (not when counting). */
-        const char *cp = ptr;
-        if (v->errors) {
-            snprintf(child, sizeof child, "%s", ptr);
-            api_pointer_append(child, sizeof child, key);
-            cp = child;
+        /* strlen, not the stored length: a key with an embedded NUL is looked
+         * up by its C-string prefix, as json_object_get() would. */
+        const struct snode *ps = prop_find(s, key, strlen(key));
+        if (!ps && !s->addl_false) continue;
+        if (!v->errors) { /* counting only: no pointers */
+            if (ps) validate(v, ps, val, ptr, plen);
+            else v->count++;
+            continue;
         }
-        const json_t *ps = props ? json_object_get(props, key) : NULL;
-        if (ps) {
-            validate(v, ps, val, cp);
-        } else if (json_is_false(addl)) {
-            if (!v->errors) { v->count++; continue; } /* counting only */
-            char allowed[300] = "";
-            const char *pk;
-            json_t *pv;
-            json_object_foreach((json_t *)props, pk, pv) {
-                size_t len = strlen(allowed);
-                snprintf(allowed + len, sizeof allowed - len, "%s%s", len ? ", " : "", pk);
-            }
-            add_error(v, cp, "unknown key; allowed here: %s", allowed[0] ? allowed : "none");
-        }
+        size_t clen = pointer_key(child, ptr, plen, key);
+        if (ps) validate(v, ps, val, child, clen);
+        else add_error(v, child, "unknown key; allowed here: %s", s->allowed);
     }
-    const json_t *mn = kw->min_props;
-    const json_t *mx = kw->max_props;
-    size_t n = json_object_size(inst);
-    if (mn && (double)n < json_number_value(mn))
-        add_error(v, ptr, "must have at least %g members", json_number_value(mn));
-    if (mx && (double)n > json_number_value(mx))
-        add_error(v, ptr, "must have at most %g members", json_number_value(mx));
+    if (s->bounds & (H_MIN_PROPS | H_MAX_PROPS)) {
+        size_t n = json_object_size(inst);
+        if ((s->bounds & H_MIN_PROPS) && (double)n < s->min_props)
+            add_error(v, ptr, "must have at least %g members", s->min_props);
+        if ((s->bounds & H_MAX_PROPS) && (double)n > s->max_props)
+            add_error(v, ptr, "must have at most %g members", s->max_props);
+    }
 }
 
-static void validate_array(struct vctx *v, const struct kw *kw, const json_t *inst,
-                           const char *ptr)
+static void validate_array(struct vctx *v, const struct snode *s, const json_t *inst,
+                           const char *ptr, size_t plen)
 {
     size_t n = json_array_size(inst);
-    const json_t *mn = kw->min_items;
-    const json_t *mx = kw->max_items;
-    if (mn && (double)n < json_number_value(mn)) {
-        add_error(v, ptr, "must have at least %g items, got %zu", json_number_value(mn), n);
+    if ((s->bounds & H_MIN_ITEMS) && (double)n < s->min_items) {
+        add_error(v, ptr, "must have at least %g items, got %zu", s->min_items, n);
         return;
     }
-    if (mx && (double)n > json_number_value(mx)) {
-        add_error(v, ptr, "must have at most %g items, got %zu", json_number_value(mx), n);
+    if ((s->bounds & H_MAX_ITEMS) && (double)n > s->max_items) {
+        add_error(v, ptr, "must have at most %g items, got %zu", s->max_items, n);
         return;
     }
-    const json_t *items = kw->items;
-    if (items) {
-        char child[PTR_MAX];
+    char child[PTR_MAX];
+    if (s->items) {
         for (size_t i = 0; i < n; i++) {
+            if (!v->errors) {
+                validate(v, s->items, json_array_get(inst, i), ptr, plen);
+                continue;
+            }
             /* Stop descending once the error list is full: a 100000-item
              * array of wrong items must not cost 100000 messages. */
-            if (v->errors && json_array_size(v->errors) >= API_SCHEMA_MAX_ERRORS) break;
-            if (v->errors) pointer_index(child, sizeof child, ptr, i);
-            validate(v, items, json_array_get(inst, i), v->errors ? child : ptr);
+            if (json_array_size(v->errors) >= API_SCHEMA_MAX_ERRORS) break;
+            size_t clen = pointer_index(child, ptr, plen, i);
+            validate(v, s->items, json_array_get(inst, i), child, clen);
         }
     }
-    if (json_is_true(kw->unique)) {
+    if (s->unique) {
         for (size_t i = 0; i < n; i++)
             for (size_t j = i + 1; j < n && j < 1000; j++)
                 if (json_same(json_array_get(inst, i), json_array_get(inst, j))) {
-                    char child[PTR_MAX];
-                    pointer_index(child, sizeof child, ptr, j);
-                    add_error(v, child, "repeats item %zu; items must be unique", i);
+                    if (v->errors) pointer_index(child, ptr, plen, j);
+                    add_error(v, v->errors ? child : ptr, "repeats item %zu; items must be unique",
+                              i);
                     return;
                 }
     }
 }
 
-static void validate_number(struct vctx *v, const struct kw *kw, const json_t *inst,
+static void validate_number(struct vctx *v, const struct snode *s, const json_t *inst,
                             const char *ptr)
 {
+    if (!s->bounds) return;
     double x = json_number_value(inst);
-    const json_t *k;
-    if ((k = kw->minimum) && !(x >= json_number_value(k)))
-        add_error(v, ptr, "must be >= %.17g, got %.17g", json_number_value(k), x);
-    if ((k = kw->maximum) && !(x <= json_number_value(k)))
-        add_error(v, ptr, "must be <= %.17g, got %.17g", json_number_value(k), x);
-    if ((k = kw->ex_minimum) && !(x > json_number_value(k)))
-        add_error(v, ptr, "must be > %.17g, got %.17g", json_number_value(k), x);
-    if ((k = kw->ex_maximum) && !(x < json_number_value(k)))
-        add_error(v, ptr, "must be < %.17g, got %.17g", json_number_value(k), x);
+    if ((s->bounds & H_MINIMUM) && !(x >= s->minimum))
+        add_error(v, ptr, "must be >= %.17g, got %.17g", s->minimum, x);
+    if ((s->bounds & H_MAXIMUM) && !(x <= s->maximum))
+        add_error(v, ptr, "must be <= %.17g, got %.17g", s->maximum, x);
+    if ((s->bounds & H_EX_MINIMUM) && !(x > s->ex_minimum))
+        add_error(v, ptr, "must be > %.17g, got %.17g", s->ex_minimum, x);
+    if ((s->bounds & H_EX_MAXIMUM) && !(x < s->ex_maximum))
+        add_error(v, ptr, "must be < %.17g, got %.17g", s->ex_maximum, x);
 }
 
 /* A branch is ruled out by a discriminator when one of its properties is a
  * `const` and the instance holds that key with another value (e.g. a body
  * with "shape": "box" is not a sphere, whatever else is wrong with it). */
-static int discriminator_mismatch(const json_t *branch, const json_t *inst)
+static int discriminator_mismatch(const struct sbranch *b, const json_t *inst)
 {
-    const json_t *props = json_object_get(branch, "properties");
-    if (!json_is_object(inst) || !props) return 0;
-    const char *k;
-    json_t *ps;
-    json_object_foreach((json_t *)props, k, ps) {
-        const json_t *c = json_object_get(ps, "const");
-        const json_t *v = json_object_get(inst, k);
-        if (c && v && !json_same(c, v)) return 1;
+    if (!b->ndisc || !json_is_object(inst)) return 0;
+    for (size_t i = 0; i < b->ndisc; i++) {
+        const json_t *x = json_object_get(inst, b->disc[i].key);
+        if (x && !json_same(b->disc[i].value, x)) return 1;
     }
     return 0;
 }
 
-static void validate_oneof(struct vctx *v, const json_t *branches, const json_t *inst,
-                           const char *ptr)
+static void validate_oneof(struct vctx *v, const struct snode *s, const json_t *inst,
+                           const char *ptr, size_t plen)
 {
-    size_t i, best = 0, best_count = (size_t)-1, passes = 0;
+    size_t best = 0, best_count = (size_t)-1, passes = 0, nb = s->noneof;
     int best_mismatch = 1, any_allowed = 0;
-    json_t *b;
+    unsigned char mm[64]; /* each branch's discriminator_mismatch, when nb <= 64 */
     /* A branch whose discriminator (a const property) the instance contradicts
      * cannot pass, and is only a candidate for the error report when every
      * branch is contradicted: then it need not be validated at all. */
-    json_array_foreach(branches, i, b) if (!discriminator_mismatch(b, inst)) any_allowed = 1;
-    json_array_foreach(branches, i, b) {
-        if (any_allowed && discriminator_mismatch(b, inst)) continue;
+    for (size_t i = 0; i < nb; i++) {
+        int m = discriminator_mismatch(&s->oneof[i], inst);
+        if (i < sizeof mm) mm[i] = (unsigned char)m;
+        if (!m) any_allowed = 1;
+    }
+    for (size_t i = 0; i < nb; i++) {
+        int mismatch = i < sizeof mm ? mm[i] : discriminator_mismatch(&s->oneof[i], inst);
+        if (any_allowed && mismatch) continue;
         struct vctx t = {NULL, 0};
-        validate(&t, b, inst, ptr);
+        validate(&t, s->oneof[i].node, inst, ptr, plen);
         if (t.count == 0) passes++;
-        int mismatch = discriminator_mismatch(b, inst);
         /* Prefer branches the discriminator allows, then fewest errors. */
         if (mismatch < best_mismatch || (mismatch == best_mismatch && t.count < best_count)) {
             best_mismatch = mismatch;
@@ -335,49 +364,50 @@ static void validate_oneof(struct vctx *v, const json_t *branches, const json_t 
         return;
     }
     /* None matched: report why the closest form failed. */
-    validate(v, json_array_get(branches, best), inst, ptr);
+    validate(v, s->oneof[best].node, inst, ptr, plen);
 }
 
-static void validate(struct vctx *v, const json_t *s, const json_t *inst, const char *ptr)
+/* Recursion follows the compiled tree, so its depth is at most the schema's
+ * (<= API_SCHEMA_MAX_DEPTH), whatever the instance. */
+static void validate(struct vctx *v, const struct snode *s, const json_t *inst, const char *ptr,
+                     size_t plen)
 {
     if (v->errors && json_array_size(v->errors) >= API_SCHEMA_MAX_ERRORS) { v->count++; return; }
-    struct kw kw;
-    read_keywords(s, &kw);
-    const json_t *k;
-    if ((k = kw.type)) {
-        int ok;
-        validate_type(v, k, inst, ptr, &ok);
-        if (!ok) return;
-    }
-    if ((k = kw.cnst) && !json_same(k, inst)) {
-        char t[120] = "";
-        if (v->errors) value_text(k, t, sizeof t); /* no message when counting only */
-        add_error(v, ptr, "must be %s", t);
+    if (s->has_type && !type_ok(s->type_mask, inst)) {
+        add_error(v, ptr, "%s, got %s", s->type_msg, type_name(inst));
         return;
     }
-    if ((k = kw.enm)) {
+    if (s->cnst && !json_same(s->cnst, inst)) {
+        add_error(v, ptr, "must be %s", s->cnst_text);
+        return;
+    }
+    if (s->enm) {
         size_t i;
         json_t *e;
         int found = 0;
-        json_array_foreach(k, i, e) if (json_same(e, inst)) found = 1;
+        json_array_foreach(s->enm, i, e) if (json_same(e, inst)) { found = 1; break; }
         if (!found) {
-            char t[300] = "";
-            if (v->errors) value_text(k, t, sizeof t);
-            add_error(v, ptr, "must be one of %s", t);
+            add_error(v, ptr, "must be one of %s", s->enum_text);
             return;
         }
     }
-    if (json_is_object(inst)) validate_object(v, &kw, inst, ptr);
-    else if (json_is_array(inst)) validate_array(v, &kw, inst, ptr);
-    else if (json_is_number(inst)) validate_number(v, &kw, inst, ptr);
-    if ((k = kw.oneof)) validate_oneof(v, k, inst, ptr);
+    switch (json_typeof(inst)) {
+    case JSON_OBJECT: validate_object(v, s, inst, ptr, plen); break;
+    case JSON_ARRAY: validate_array(v, s, inst, ptr, plen); break;
+    case JSON_INTEGER:
+    case JSON_REAL: validate_number(v, s, inst, ptr); break;
+    default: break;
+    }
+    if (s->noneof) validate_oneof(v, s, inst, ptr, plen);
 }
 
-size_t api_schema_validate(const json_t *schema, const json_t *instance,
+size_t api_schema_validate(const struct api_schema *schema, const json_t *instance,
                            const char *pointer, json_t *errors)
 {
+    if (!schema) return 0; /* as the empty schema {} (what a NULL json_t schema did) */
     struct vctx v = {errors, 0};
-    validate(&v, schema, instance, pointer ? pointer : "");
+    const char *p = pointer ? pointer : "";
+    validate(&v, schema->root, instance, p, strlen(p));
     return v.count;
 }
 
@@ -400,9 +430,13 @@ static int in_list(const char *const *list, const char *s)
     return 0;
 }
 
-static int check(const json_t *s, const char *where, char *msg, size_t n)
+static int check(const json_t *s, const char *where, int depth, char *msg, size_t n)
 {
     if (!json_is_object(s)) { snprintf(msg, n, "%s: schema must be an object", where); return -1; }
+    if (depth > API_SCHEMA_MAX_DEPTH) {
+        snprintf(msg, n, "%s: schema nests deeper than %d levels", where, API_SCHEMA_MAX_DEPTH);
+        return -1;
+    }
     const char *key;
     json_t *val;
     char sub[PTR_MAX];
@@ -427,7 +461,7 @@ static int check(const json_t *s, const char *where, char *msg, size_t n)
             json_object_foreach(val, pk, pv) {
                 snprintf(sub, sizeof sub, "%s/properties", where);
                 api_pointer_append(sub, sizeof sub, pk);
-                if (check(pv, sub, msg, n)) return -1;
+                if (check(pv, sub, depth + 1, msg, n)) return -1;
             }
         } else if (!strcmp(key, "required")) {
             size_t i;
@@ -438,14 +472,14 @@ static int check(const json_t *s, const char *where, char *msg, size_t n)
             if (!json_is_false(val)) goto bad;
         } else if (!strcmp(key, "items")) {
             snprintf(sub, sizeof sub, "%s/items", where);
-            if (check(val, sub, msg, n)) return -1;
+            if (check(val, sub, depth + 1, msg, n)) return -1;
         } else if (!strcmp(key, "oneOf")) {
             size_t i;
             json_t *e;
             if (!json_is_array(val) || json_array_size(val) == 0) goto bad;
             json_array_foreach(val, i, e) {
                 snprintf(sub, sizeof sub, "%s/oneOf/%zu", where, i);
-                if (check(e, sub, msg, n)) return -1;
+                if (check(e, sub, depth + 1, msg, n)) return -1;
             }
         } else if (!strcmp(key, "enum")) {
             if (!json_is_array(val)) goto bad;
@@ -467,5 +501,207 @@ static int check(const json_t *s, const char *where, char *msg, size_t n)
 
 int api_schema_check(const json_t *schema, char *msg, size_t n)
 {
-    return check(schema, "#", msg, n);
+    return check(schema, "#", 0, msg, n);
+}
+
+/* ---- compilation ------------------------------------------------------------ */
+
+static void node_free(struct snode *s)
+{
+    if (!s) return;
+    for (size_t i = 0; i < s->nprops; i++) node_free(s->props[i].node);
+    for (size_t i = 0; i < s->noneof; i++) {
+        node_free(s->oneof[i].node);
+        free(s->oneof[i].disc);
+    }
+    node_free(s->items);
+    free(s->props);
+    free(s->required);
+    free(s->oneof);
+    free(s->type_msg);
+    free(s->cnst_text);
+    free(s->enum_text);
+    free(s->allowed);
+    free(s);
+}
+
+/* Short text form of a small JSON value for messages, truncated to n - 1
+ * bytes; NULL if memory ran out. */
+static char *value_text(const json_t *j, size_t n)
+{
+    char *s = json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(15));
+    if (!s) return NULL;
+    if (strlen(s) > n - 1) s[n - 1] = '\0';
+    char *t = strdup(s);
+    free(s);
+    return t;
+}
+
+static unsigned type_bit(const char *t)
+{
+    static const unsigned bits[] = {T_OBJECT, T_ARRAY, T_STRING, T_NUMBER,
+                                    T_INTEGER, T_BOOLEAN, T_NULL};
+    for (size_t i = 0; type_names[i]; i++)
+        if (!strcmp(type_names[i], t)) return bits[i];
+    return 0;
+}
+
+/* Compile the `type` keyword t into s (mask and message). 0, or -1 on OOM. */
+static int compile_type(struct snode *s, const json_t *t)
+{
+    char text[220];
+    s->has_type = 1;
+    if (json_is_string(t)) {
+        const char *name = json_string_value(t);
+        s->type_mask = type_bit(name);
+        snprintf(text, sizeof text, "must be %s %s", strchr("aeiou", name[0]) ? "an" : "a",
+                 name);
+    } else {
+        char names[200] = "";
+        size_t i;
+        json_t *e;
+        json_array_foreach(t, i, e) {
+            s->type_mask |= type_bit(json_string_value(e));
+            size_t len = strlen(names);
+            snprintf(names + len, sizeof names - len, "%s%s", i ? " or " : "",
+                     json_string_value(e));
+        }
+        snprintf(text, sizeof text, "must be %s", names);
+    }
+    return (s->type_msg = strdup(text)) ? 0 : -1;
+}
+
+static struct snode *compile_node(const json_t *schema);
+
+static int compile_props(struct snode *s, const json_t *props)
+{
+    size_t np = json_object_size(props);
+    if (np && !(s->props = calloc(np, sizeof *s->props))) return -1;
+    const char *pk;
+    size_t plen;
+    json_t *pv;
+    json_object_keylen_foreach((json_t *)props, pk, plen, pv) {
+        struct sprop *p = &s->props[s->nprops];
+        p->key = pk;
+        p->len = plen;
+        if (!(p->node = compile_node(pv))) return -1;
+        s->nprops++;
+    }
+    return 0;
+}
+
+/* The discriminators of branch b: its properties that hold a `const`. */
+static int compile_discriminators(struct sbranch *b)
+{
+    const struct snode *s = b->node;
+    size_t nd = 0;
+    for (size_t i = 0; i < s->nprops; i++) nd += s->props[i].node->cnst != NULL;
+    if (!nd) return 0;
+    if (!(b->disc = calloc(nd, sizeof *b->disc))) return -1;
+    for (size_t i = 0; i < s->nprops; i++)
+        if (s->props[i].node->cnst) {
+            b->disc[b->ndisc].key = s->props[i].key;
+            b->disc[b->ndisc].value = s->props[i].node->cnst;
+            b->ndisc++;
+        }
+    return 0;
+}
+
+/* Compile one (already checked) schema object; NULL when memory ran out. */
+static struct snode *compile_node(const json_t *schema)
+{
+    struct snode *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    const json_t *props = NULL;
+    const char *key;
+    json_t *val;
+    json_object_foreach((json_t *)schema, key, val) {
+        if (!strcmp(key, "type")) {
+            if (compile_type(s, val)) goto oom;
+        } else if (!strcmp(key, "const")) {
+            s->cnst = val;
+            if (!(s->cnst_text = value_text(val, 120))) goto oom;
+        } else if (!strcmp(key, "enum")) {
+            s->enm = val;
+            if (!(s->enum_text = value_text(val, 300))) goto oom;
+        } else if (!strcmp(key, "properties")) {
+            props = val;
+            if (compile_props(s, val)) goto oom;
+        } else if (!strcmp(key, "required")) {
+            size_t nr = json_array_size(val), i;
+            json_t *e;
+            if (nr && !(s->required = calloc(nr, sizeof *s->required))) goto oom;
+            json_array_foreach(val, i, e) s->required[s->nrequired++] = json_string_value(e);
+        } else if (!strcmp(key, "additionalProperties")) {
+            s->addl_false = 1; /* the check admits only false */
+        } else if (!strcmp(key, "items")) {
+            if (!(s->items = compile_node(val))) goto oom;
+        } else if (!strcmp(key, "uniqueItems")) {
+            s->unique = json_is_true(val);
+        } else if (!strcmp(key, "oneOf")) {
+            size_t nb = json_array_size(val), i;
+            json_t *e;
+            if (!(s->oneof = calloc(nb, sizeof *s->oneof))) goto oom;
+            json_array_foreach(val, i, e) {
+                struct sbranch *b = &s->oneof[s->noneof];
+                if (!(b->node = compile_node(e))) goto oom;
+                s->noneof++;
+                if (compile_discriminators(b)) goto oom;
+            }
+        } else {
+            static const struct {
+                const char *name;
+                unsigned bit;
+                size_t off;
+            } num[] = {
+                {"minItems", H_MIN_ITEMS, offsetof(struct snode, min_items)},
+                {"maxItems", H_MAX_ITEMS, offsetof(struct snode, max_items)},
+                {"minProperties", H_MIN_PROPS, offsetof(struct snode, min_props)},
+                {"maxProperties", H_MAX_PROPS, offsetof(struct snode, max_props)},
+                {"minimum", H_MINIMUM, offsetof(struct snode, minimum)},
+                {"maximum", H_MAXIMUM, offsetof(struct snode, maximum)},
+                {"exclusiveMinimum", H_EX_MINIMUM, offsetof(struct snode, ex_minimum)},
+                {"exclusiveMaximum", H_EX_MAXIMUM, offsetof(struct snode, ex_maximum)},
+            };
+            for (size_t i = 0; i < sizeof num / sizeof num[0]; i++)
+                if (!strcmp(key, num[i].name)) {
+                    s->bounds |= num[i].bit;
+                    *(double *)(void *)((char *)s + num[i].off) = json_number_value(val);
+                }
+        }
+    }
+    if (s->addl_false) {
+        /* The keys an unknown one is told about, in schema order. */
+        char allowed[300] = "";
+        const char *pk;
+        json_t *pv;
+        json_object_foreach((json_t *)props, pk, pv) {
+            size_t len = strlen(allowed);
+            snprintf(allowed + len, sizeof allowed - len, "%s%s", len ? ", " : "", pk);
+        }
+        if (!(s->allowed = strdup(allowed[0] ? allowed : "none"))) goto oom;
+    }
+    return s;
+oom:
+    node_free(s);
+    return NULL;
+}
+
+struct api_schema *api_schema_compile(const json_t *schema, char *msg, size_t n)
+{
+    if (check(schema, "#", 0, msg, n)) return NULL;
+    struct api_schema *c = malloc(sizeof *c);
+    if (c && !(c->root = compile_node(schema))) {
+        free(c);
+        c = NULL;
+    }
+    if (!c) snprintf(msg, n, "out of memory");
+    return c;
+}
+
+void api_schema_free(struct api_schema *s)
+{
+    if (!s) return;
+    node_free(s->root);
+    free(s);
 }

@@ -10,6 +10,14 @@
  * maxProperties. Annotations (title, description, default, examples) are
  * ignored. Anything else is refused by api_schema_check(), so a route cannot
  * silently rely on an unsupported keyword.
+ *
+ * A schema is compiled once (api_schema_compile, at api_init) into a tree of
+ * C structures: keyword values as doubles and flags, property names as
+ * (pointer, length) pairs, the messages that depend only on the schema (type
+ * names, allowed keys, const/enum text) formatted in advance, and for each
+ * oneOf branch its discriminators (the properties that hold a `const`).
+ * Validating a request then walks that tree and the instance only; it never
+ * looks a keyword up in the schema's jansson objects.
  */
 #ifndef API_SCHEMA_H
 #define API_SCHEMA_H
@@ -20,16 +28,46 @@
 /* Most errors one validation reports; more are counted but not listed. */
 #define API_SCHEMA_MAX_ERRORS 20
 
-/* Validate `instance` against `schema` (both borrowed). `pointer` is the JSON
- * pointer of instance ("" for the document root). Each violation appends
- * {"pointer", "detail"} to `errors` (a JSON array, borrowed), at most
- * API_SCHEMA_MAX_ERRORS in all. Returns the number of violations found
- * (possibly more than were appended). Reentrant; schema is only read. */
-size_t api_schema_validate(const json_t *schema, const json_t *instance,
+/* Deepest nesting of subschemas (properties / items / oneOf, the root being
+ * depth 0) that api_schema_check and api_schema_compile accept. Validation
+ * recurses only along the compiled tree, so this bounds its recursion whatever
+ * the instance (whose own depth jansson's parser caps at
+ * JSON_PARSER_MAX_DEPTH, 2048). mechd's deepest route schema is far below. */
+#define API_SCHEMA_MAX_DEPTH 32
+
+/* A compiled schema (opaque). Immutable after api_schema_compile, so one tree
+ * may be used by any number of threads at once. */
+struct api_schema;
+
+/* Check `schema` (as api_schema_check does) and compile it. Returns a new tree
+ * (free with api_schema_free), or NULL with a message in msg (n bytes) when
+ * the schema is malformed, nests deeper than API_SCHEMA_MAX_DEPTH, or memory
+ * ran out. Ownership: the tree BORROWS from `schema` (property names, required
+ * names, const and enum values point into it), so `schema` must stay alive and
+ * unchanged for as long as the tree is used; mechd's route schemas live for
+ * the whole process. Allocates with malloc (not jansson's allocator). */
+struct api_schema *api_schema_compile(const json_t *schema, char *msg, size_t n);
+
+/* Free a tree from api_schema_compile (NULL is allowed). `schema` is not
+ * touched. */
+void api_schema_free(struct api_schema *s);
+
+/* Validate `instance` (borrowed) against the compiled schema `s`. `pointer`
+ * is the JSON pointer of instance ("" or NULL for the document root). Each
+ * violation appends {"pointer", "detail"} to `errors` (a JSON array, borrowed),
+ * at most API_SCHEMA_MAX_ERRORS entries in the array in all. With errors ==
+ * NULL only counts: no message or pointer is formatted. Returns the number of
+ * violations found (possibly more than were appended). Reentrant; s is only
+ * read. For oneOf the branch the instance's discriminators allow, then the
+ * one with the fewest errors, is the one whose errors are reported. s == NULL
+ * acts as the empty schema (returns 0); callers pass a compiled route schema,
+ * which every POST route has once api_init succeeded. */
+size_t api_schema_validate(const struct api_schema *s, const json_t *instance,
                            const char *pointer, json_t *errors);
 
-/* Check that `schema` uses only the supported keywords with well-formed values.
- * Returns 0 if it does; otherwise -1 with a message in msg (n bytes). */
+/* Check that `schema` uses only the supported keywords with well-formed values
+ * and nests at most API_SCHEMA_MAX_DEPTH deep. Returns 0 if it does; otherwise
+ * -1 with a message in msg (n bytes). */
 int api_schema_check(const json_t *schema, char *msg, size_t n);
 
 /* Append the RFC 6901 escape of `token` ('~' -> "~0", '/' -> "~1") to the
