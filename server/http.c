@@ -87,6 +87,9 @@
 #define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
 #define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
 #define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
+#define SRV_BODY_SMALL 512u          /* ... unless its first piece fits in this (a quick request):
+                                        glibc serves < 1 KiB from its small bins, while every
+                                        larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 
@@ -805,7 +808,7 @@ static void take_body(struct srv_http *h, struct srv_req *r, const char *data, s
         return;
     }
     if (r->body_len + n > r->body_cap) {
-        size_t cap = r->body_cap ? r->body_cap : SRV_BODY_CHUNK;
+        size_t cap = r->body_cap ? r->body_cap : n <= SRV_BODY_SMALL ? SRV_BODY_SMALL : SRV_BODY_CHUNK;
         while (cap < r->body_len + n)
             cap *= 2;
         if (cap > limit) cap = limit;
