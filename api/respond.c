@@ -5,6 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "json_write.h"
+
 static const char oom_body[] =
     "{\"type\":\"/problems/internal-error\",\"title\":\"Internal error\",\"status\":500,"
     "\"detail\":\"out of memory\"}\n";
@@ -35,17 +37,17 @@ void api_respond_json(struct api_response *resp, int status, const char *content
                       const json_t *body)
 {
     memset(resp, 0, sizeof *resp);
-    char *s = body ? json_dumps(body, JSON_COMPACT | JSON_REAL_PRECISION(17)) : NULL;
-    if (!s) { api_respond_out_of_memory(resp); return; }
-    size_t n = strlen(s);
-    char *b = realloc(s, n + 2); /* add a trailing newline for terminals */
-    if (!b) { free(s); api_respond_out_of_memory(resp); return; }
-    b[n] = '\n';
-    b[n + 1] = '\0';
+    /* Only objects and arrays, as json_dumps without JSON_ENCODE_ANY; a
+     * trailing newline for terminals. */
+    size_t n = 0;
+    char *b = body && (json_is_object(body) || json_is_array(body))
+                  ? api_json_write_compact(body, "\n", &n)
+                  : NULL;
+    if (!b) { api_respond_out_of_memory(resp); return; }
     resp->status = status;
     resp->content_type = content_type;
     resp->body = b;
-    resp->body_len = n + 1;
+    resp->body_len = n;
 }
 
 void api_response_free(struct api_response *resp)

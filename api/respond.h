@@ -7,9 +7,12 @@
 
 #include "api.h"
 
-/* Serialise `body` (borrowed; may be NULL, which gives a 500) into resp with
- * the given status and content type. Reals print with 17 significant digits.
- * On allocation failure resp becomes a fixed 500 problem. */
+/* Serialise `body` (borrowed; an object or array; NULL or anything else gives
+ * a 500) compactly into resp, plus a trailing newline, with the given status
+ * and content type, through api_json_write_compact() (api/json_write.h):
+ * jansson's compact text except that reals print with the shortest digits
+ * that read back as the same double (api/real_format.h), not always 17.
+ * On allocation failure resp becomes the fixed 500 problem. */
 void api_respond_json(struct api_response *resp, int status, const char *content_type,
                       const json_t *body);
 

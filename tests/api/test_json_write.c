@@ -1,0 +1,653 @@
+/* test_json_write.c — the response writer (api/json_write.c) and its real
+ * formatter (api/real_format.c, Grisu2).
+ *
+ * (a) round trip: ~2.2 million doubles (random bit patterns over every
+ *     exponent, "decimal-looking" k/10^n, integers up to 2^53, neighbours of
+ *     every power of ten and two, subnormal and normal extremes, both signs)
+ *     -> api_real_format -> strtod gives the same bits; at most 17 digits;
+ *     notation equal to jansson's whenever the digits are (else the same
+ *     fixed/scientific choice and exponent);
+ * (b) shortness: against the smallest P in 1..17 for which "%.*g" reads
+ *     back, on a sample; prints the fractions measured;
+ * (c) exact texts for hand-chosen values, checked against json_dumps where
+ *     jansson's 17 digits are the shortest ones;
+ * (d) json_dumps byte identity for trees without reals (escapes, UTF-8,
+ *     NUL, nesting, integer extremes, random trees, the fallbacks), and for
+ *     trees with reals both texts parsed back and compared bit for bit.
+ * Counts scale down under sanitizers; a micro benchmark prints ns per real
+ * (never asserted). */
+#include <float.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "json_write.h"
+#include "mech/budget.h"
+#include "real_format.h"
+#include "testlib.h"
+
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
+#define SCALE 4 /* sanitizers: a quarter of the counts */
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(undefined_behavior_sanitizer)
+#define SCALE 4
+#endif
+#endif
+#ifndef SCALE
+#define SCALE 1
+#endif
+
+#define DUMP_FLAGS (JSON_COMPACT | JSON_REAL_PRECISION(17))
+
+/* ---- helpers -------------------------------------------------------------------- */
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15ULL;
+static uint64_t rnd(void) /* splitmix64 */
+{
+    uint64_t z = (rng_state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return z ^ (z >> 31);
+}
+
+static uint64_t bits_of(double x)
+{
+    uint64_t b;
+    memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+static double of_bits(uint64_t b)
+{
+    double x;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/* jansson 2.14's real text (src/strconv.c, jsonp_dtostr without dtoa):
+ * %.17g, ".0" when it looks like an integer, exponent without '+' and
+ * leading zeros. Checked against json_dumps below. */
+static void jansson_text(double x, char *out, size_t size)
+{
+    int n = snprintf(out, size, "%.17g", x);
+    if (!strchr(out, '.') && !strchr(out, 'e')) {
+        memcpy(out + n, ".0", 3);
+        n += 2;
+    }
+    char *e = strchr(out, 'e');
+    if (e) {
+        char *start = e + 1, *end = start + 1;
+        if (*start == '-') start++;
+        while (*end == '0')
+            end++;
+        memmove(start, end, strlen(end) + 1);
+    }
+}
+
+/* Significant digits of a number text (no sign, point, exponent, leading or
+ * trailing zeros) and the decimal exponent of the first one; *sci set when
+ * the text has an exponent. */
+static int digits_of(const char *s, char *dig, int *exp10, int *sci)
+{
+    int n = 0, point = -1, pos = 0, first = -1;
+    const char *p = s;
+    if (*p == '-') p++;
+    for (; *p && *p != 'e'; p++) {
+        if (*p == '.') {
+            point = pos;
+            continue;
+        }
+        if (first < 0 && *p == '0') {
+            pos++;
+            continue;
+        }
+        if (first < 0) first = pos;
+        dig[n++] = *p;
+        pos++;
+    }
+    if (point < 0) point = pos;
+    while (n > 0 && dig[n - 1] == '0')
+        n--;
+    dig[n] = '\0';
+    *sci = *p == 'e';
+    *exp10 = (first < 0 ? 0 : point - first - 1) + (*p == 'e' ? atoi(p + 1) : 0);
+    return n;
+}
+
+static long n_roundtrip, n_bad_roundtrip, n_long, n_notation, n_notation_bad;
+
+static void check_one(double x)
+{
+    char buf[API_REAL_FORMAT_SIZE + 8];
+    memset(buf, 'x', sizeof buf);
+    size_t len = api_real_format(x, buf);
+    n_roundtrip++;
+    int ok = len == strlen(buf) && len < API_REAL_FORMAT_SIZE;
+    char *end;
+    double y = strtod(buf, &end);
+    ok = ok && *end == '\0' && bits_of(y) == bits_of(x);
+    char dig[40], jdig[40], jt[64];
+    int e10, sci, je10, jsci;
+    int nd = digits_of(buf, dig, &e10, &sci);
+    if (nd > 17 || (nd < 1 && x != 0)) {
+        if (nd > 17) n_long++;
+        ok = 0;
+    }
+    if (!ok) {
+        if (n_bad_roundtrip++ < 10)
+            fprintf(stderr, "round trip: %a (%.17g) -> \"%s\" -> %a\n", x, x, buf, y);
+        return;
+    }
+    /* notation against jansson's text of the same value */
+    jansson_text(x, jt, sizeof jt);
+    digits_of(jt, jdig, &je10, &jsci);
+    n_notation++;
+    int same;
+    if (!strcmp(dig, jdig))
+        same = !strcmp(buf, jt);
+    else
+        /* other digits: same choice of notation and sign; the same exponent,
+         * or one more when the shortest digits carry (1e23 vs 9.99...e22) */
+        same = sci == jsci && (buf[0] == '-') == (jt[0] == '-') &&
+               (sci ? e10 - je10 == 0 || e10 - je10 == 1 : e10 == je10 && strchr(buf, '.'));
+    if (!same && n_notation_bad++ < 10)
+        fprintf(stderr, "notation: %.17g -> \"%s\", jansson \"%s\"\n", x, buf, jt);
+}
+
+static void check_pm(double x)
+{
+    check_one(x);
+    check_one(-x);
+}
+
+/* ---- (a) round trip ---------------------------------------------------------- */
+
+static void test_round_trip(void)
+{
+    const long per = 560000 / SCALE;
+    /* random bit patterns, every exponent */
+    for (long i = 0; i < per; i++) {
+        uint64_t b = rnd();
+        if (((b >> 52) & 0x7FF) == 0x7FF) continue;
+        check_one(of_bits(b));
+    }
+    /* every biased exponent (0 = subnormal) with a few random significands */
+    for (uint64_t be = 0; be < 0x7FF; be++)
+        for (int k = 0; k < 40 / (SCALE > 1 ? 4 : 1); k++) {
+            uint64_t frac = k == 0 ? 0 : k == 1 ? 1 : k == 2 ? (1ULL << 52) - 1 : rnd() >> 12;
+            if (be == 0 && frac == 0) continue;
+            check_pm(of_bits(be << 52 | frac));
+        }
+    /* decimal-looking: k / 10^n with k of 1..17 digits */
+    static const double p10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                 1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    for (long i = 0; i < per; i++) {
+        int nd = 1 + (int)(rnd() % 17), n = (int)(rnd() % 23);
+        uint64_t k = rnd() % (uint64_t)p10[nd];
+        double x = (double)k / p10[n];
+        if (rnd() & 1) x = (double)k * p10[n % 16];
+        check_one(rnd() & 1 ? -x : x);
+    }
+    /* integers up to 2^53 */
+    for (long i = 0; i < per / 2; i++) {
+        uint64_t k = rnd() >> (11 + rnd() % 53);
+        check_one((double)k);
+    }
+    /* short decimal texts at every decade (the nearest double) */
+    for (long i = 0; i < per / 2; i++) {
+        char t[48];
+        snprintf(t, sizeof t, "%llue%d", (unsigned long long)(rnd() % 100000000ULL),
+                 (int)(rnd() % 640) - 330);
+        double x = strtod(t, NULL);
+        if (isfinite(x)) check_one(x);
+    }
+    /* neighbours of every power of ten (as strtod reads "1eN") and of two */
+    for (int e = -330; e <= 310; e++) {
+        char t[16];
+        snprintf(t, sizeof t, "1e%d", e);
+        double x = strtod(t, NULL);
+        if (!isfinite(x)) continue;
+        double lo = x, hi = x;
+        check_pm(x);
+        for (int k = 0; k < 8; k++) {
+            lo = nextafter(lo, 0.0);
+            hi = nextafter(hi, INFINITY);
+            check_pm(lo);
+            if (isfinite(hi)) check_pm(hi);
+        }
+    }
+    for (int e = -1074; e <= 1023; e++) {
+        double x = ldexp(1.0, e), lo = x, hi = x;
+        check_pm(x);
+        for (int k = 0; k < 8; k++) {
+            lo = nextafter(lo, 0.0);
+            hi = nextafter(hi, INFINITY);
+            check_pm(lo);
+            if (isfinite(hi)) check_pm(hi);
+        }
+    }
+    /* extremes: the smallest and largest subnormals, around DBL_MIN, DBL_MAX */
+    for (uint64_t f = 1; f <= 20000 / SCALE; f++) {
+        check_pm(of_bits(f));
+        check_pm(of_bits((1ULL << 52) - f));
+        check_pm(of_bits((1ULL << 52) + f - 1));
+        check_pm(of_bits(0x7FEFFFFFFFFFFFFFULL - f + 1));
+    }
+    check_pm(DBL_MIN);
+    check_pm(DBL_MAX);
+    check_pm(DBL_TRUE_MIN);
+    check_pm(DBL_EPSILON);
+    printf("round trip: %ld values, %ld wrong, %ld with more than 17 digits; notation "
+           "compared with jansson's text for %ld, %ld different\n",
+           n_roundtrip, n_bad_roundtrip, n_long, n_notation, n_notation_bad);
+    CHECK(n_roundtrip >= 2000000 / SCALE);
+    CHECK(n_bad_roundtrip == 0);
+    CHECK(n_long == 0);
+    CHECK(n_notation_bad == 0);
+}
+
+/* ---- (b) shortness --------------------------------------------------------------- */
+
+static int shortest_printf(double x) /* smallest P with %.*g reading back */
+{
+    char t[48];
+    for (int p = 1; p < 17; p++) {
+        snprintf(t, sizeof t, "%.*g", p, x);
+        if (bits_of(strtod(t, NULL)) == bits_of(x)) return p;
+    }
+    return 17;
+}
+
+static void shortness_sample(const char *what, long n, double (*gen)(void))
+{
+    long shorter = 0, equal = 0, longer = 0, over17 = 0;
+    for (long i = 0; i < n; i++) {
+        double x = gen();
+        char buf[API_REAL_FORMAT_SIZE], dig[40];
+        int e10, sci;
+        api_real_format(x, buf);
+        int nd = digits_of(buf, dig, &e10, &sci);
+        int p = shortest_printf(x);
+        if (nd < p)
+            shorter++;
+        else if (nd == p)
+            equal++;
+        else
+            longer++;
+        if (nd > 17) over17++;
+    }
+    double frac = (double)(shorter + equal) / (double)n;
+    printf("shortness, %s: %ld values: %.4f %% as short as %%.*g's shortest (%ld shorter, "
+           "%ld longer)\n",
+           what, n, 100.0 * frac, shorter, longer);
+    CHECK(frac >= 0.99);
+    CHECK(over17 == 0);
+}
+
+static double gen_bits(void)
+{
+    for (;;) {
+        uint64_t b = rnd();
+        if (((b >> 52) & 0x7FF) != 0x7FF) return of_bits(b);
+    }
+}
+
+static double gen_decimal(void) /* a 1..12-digit decimal at any decade, finite */
+{
+    for (;;) {
+        char t[48];
+        snprintf(t, sizeof t, "%llue%d", (unsigned long long)(rnd() % 1000000000000ULL),
+                 (int)(rnd() % 600) - 300);
+        double x = strtod(t, NULL);
+        if (isfinite(x)) return x;
+    }
+}
+
+static double gen_physics(void) /* what responses hold: sums and products of short inputs */
+{
+    double a = (double)(rnd() % 1000) / 10.0, b = (double)(rnd() % 1000 + 1) / 100.0;
+    switch (rnd() % 4) {
+    case 0:
+        return a + b;
+    case 1:
+        return a * b;
+    case 2:
+        return a / b;
+    default:
+        return sqrt(a * a + b * b);
+    }
+}
+
+static void test_shortness(void)
+{
+    shortness_sample("random bits", 100000 / SCALE, gen_bits);
+    shortness_sample("12-digit decimals", 100000 / SCALE, gen_decimal);
+    shortness_sample("arithmetic on short decimals", 100000 / SCALE, gen_physics);
+}
+
+/* ---- (c) exact texts ------------------------------------------------------------- */
+
+static void check_text(double x, const char *want, int jansson_same)
+{
+    char buf[API_REAL_FORMAT_SIZE];
+    size_t n = api_real_format(x, buf);
+    int ok = !strcmp(buf, want) && n == strlen(want);
+    CHECK(ok);
+    if (!ok) fprintf(stderr, "  %.17g: got \"%s\", want \"%s\"\n", x, buf, want);
+    if (jansson_same) { /* jansson prints the same text (17 digits = shortest) */
+        json_t *a = json_pack("[f]", x);
+        char *s = json_dumps(a, DUMP_FLAGS);
+        char w[64];
+        snprintf(w, sizeof w, "[%s]", want);
+        CHECK(s && !strcmp(s, w));
+        if (s && strcmp(s, w)) fprintf(stderr, "  json_dumps: %s, want %s\n", s, w);
+        free(s);
+        json_decref(a);
+    }
+}
+
+static void test_texts(void)
+{
+    check_text(0.6, "0.6", 0);
+    check_text(0.1 + 0.2, "0.30000000000000004", 1);
+    check_text(0.1, "0.1", 0);
+    check_text(1.0, "1.0", 1);
+    check_text(-0.0, "-0.0", 1);
+    check_text(0.0, "0.0", 1);
+    check_text(100.0, "100.0", 1);
+    check_text(-2.5, "-2.5", 1);
+    check_text(1e21, "1e21", 1);
+    check_text(1e17, "1e17", 1);
+    check_text(1e16, "10000000000000000.0", 1); /* X = 16 < 17: fixed, as %.17g */
+    check_text(12345678901234567.0, "12345678901234568.0", 1);
+    check_text(123456789012345680.0, "1.2345678901234568e17", 1);
+    check_text(5e-324, "5e-324", 0);
+    check_text(-5e-324, "-5e-324", 0);
+    check_text(DBL_TRUE_MIN * 3, "1.5e-323", 0);
+    check_text(DBL_MIN, "2.2250738585072014e-308", 1);
+    check_text(DBL_MAX, "1.7976931348623157e308", 1);
+    check_text(-DBL_MAX, "-1.7976931348623157e308", 1);
+    check_text(of_bits(0x000FFFFFFFFFFFFFULL), "2.225073858507201e-308", 0); /* largest subnormal */
+    check_text(0.0001, "0.0001", 1);                                         /* X = -4: fixed */
+    check_text(0.00012, "0.00012", 1);
+    check_text(0.00001, "1e-5", 0); /* X = -5: scientific */
+    check_text(1e-7, "1e-7", 0);
+    check_text(2.5e-300, "2.5e-300", 1);
+    check_text(1e30, "1e30", 1);
+    /* 1e23 lies exactly halfway between two doubles and reads back as the
+     * even one, this one; Grisu2 excludes the interval's ends, so it misses
+     * the shortest "1e23" (Loitsch 2010 §5) and gives 16 digits. */
+    check_text(1e23, "9.999999999999999e22", 0);
+    check_text(9007199254740992.0, "9007199254740992.0", 1);
+    check_text(9007199254740993.0, "9007199254740992.0", 1);
+    check_text(299792458.0, "299792458.0", 1);
+    check_text(6.62607015e-34, "6.62607015e-34", 0);
+    check_text(1.0 / 3.0, "0.3333333333333333", 0);
+    check_text(2.0 / 3.0, "0.6666666666666666", 0);
+    check_text(0x1p-1052, "2.0722615e-317", 0); /* Python: repr(2.0**-1052) */
+    check_text(INFINITY, "null", 0);
+    check_text(NAN, "null", 0);
+}
+
+/* ---- (d) writer vs json_dumps ------------------------------------------------- */
+
+static int same_values(const json_t *a, const json_t *b) /* reals bit for bit */
+{
+    if (json_typeof(a) != json_typeof(b)) return 0;
+    switch (json_typeof(a)) {
+    case JSON_REAL:
+        return bits_of(json_real_value(a)) == bits_of(json_real_value(b));
+    case JSON_INTEGER:
+        return json_integer_value(a) == json_integer_value(b);
+    case JSON_STRING:
+        return json_equal((json_t *)a, (json_t *)b);
+    case JSON_ARRAY:
+        if (json_array_size(a) != json_array_size(b)) return 0;
+        for (size_t i = 0; i < json_array_size(a); i++)
+            if (!same_values(json_array_get(a, i), json_array_get(b, i))) return 0;
+        return 1;
+    case JSON_OBJECT: {
+        if (json_object_size(a) != json_object_size(b)) return 0;
+        void *ia = json_object_iter((json_t *)a), *ib = json_object_iter((json_t *)b);
+        for (; ia && ib; ia = json_object_iter_next((json_t *)a, ia),
+                         ib = json_object_iter_next((json_t *)b, ib)) {
+            if (json_object_iter_key_len(ia) != json_object_iter_key_len(ib) ||
+                memcmp(json_object_iter_key(ia), json_object_iter_key(ib),
+                       json_object_iter_key_len(ia)) ||
+                !same_values(json_object_iter_value(ia), json_object_iter_value(ib)))
+                return 0;
+        }
+        return 1;
+    }
+    default:
+        return 1;
+    }
+}
+
+/* j (stolen): writer text == json_dumps text (want_identical), or both
+ * parse back to the same values; both fail together. */
+static int compare_tree(json_t *j, int want_identical)
+{
+    size_t n = 0;
+    char *mine = api_json_write_compact(j, NULL, &n);
+    char *theirs = json_dumps(j, DUMP_FLAGS | JSON_ENCODE_ANY);
+    int ok;
+    if (!mine || !theirs) {
+        ok = !mine && !theirs;
+    } else if (want_identical) {
+        ok = n == strlen(mine) && !strcmp(mine, theirs);
+    } else {
+        json_t *a = json_loads(mine, JSON_DECODE_ANY | JSON_ALLOW_NUL, NULL);
+        json_t *b = json_loads(theirs, JSON_DECODE_ANY | JSON_ALLOW_NUL, NULL);
+        ok = a && b && same_values(a, b) && same_values(a, j) && n == strlen(mine);
+        json_decref(a);
+        json_decref(b);
+    }
+    if (!ok) {
+        size_t at = 0;
+        while (mine && theirs && mine[at] && mine[at] == theirs[at])
+            at++;
+        fprintf(stderr, "tree: first difference at byte %zu: mine %.300s\n   jansson %.300s\n", at,
+                mine ? mine + (at > 40 ? at - 40 : 0) : "(null)",
+                theirs ? theirs + (at > 40 ? at - 40 : 0) : "(null)");
+    }
+    free(mine);
+    free(theirs);
+    json_decref(j);
+    return ok;
+}
+
+static json_t *random_string(int nul)
+{
+    static const char *pieces[] = {"a",
+                                   "Z",
+                                   " ",
+                                   "\"",
+                                   "\\",
+                                   "/",
+                                   "\b",
+                                   "\f",
+                                   "\n",
+                                   "\r",
+                                   "\t",
+                                   "\x01",
+                                   "\x1f",
+                                   "\x7f",
+                                   "\xc3\xa9",
+                                   "\xe2\x82\xac",
+                                   "\xf0\x9f\x98\x80",
+                                   "\xef\xbf\xbf",
+                                   "\xc2\x80",
+                                   "\xf4\x8f\xbf\xbf",
+                                   "\xed\x9f\xbf",
+                                   "\xee\x80\x80",
+                                   "kg",
+                                   "m/s"};
+    char t[256];
+    size_t n = 0, k = rnd() % 24;
+    for (size_t i = 0; i < k; i++) {
+        if (nul && rnd() % 8 == 0) { /* NUL inside (json_stringn) */
+            t[n++] = '\0';
+            continue;
+        }
+        const char *p = pieces[rnd() % (sizeof pieces / sizeof *pieces)];
+        size_t m = strlen(p);
+        memcpy(t + n, p, m);
+        n += m;
+    }
+    return json_stringn(t, n);
+}
+
+static json_t *random_tree(int depth, int reals)
+{
+    unsigned kind = (unsigned)(rnd() % (depth > 4 ? 6 : 8));
+    switch (kind) {
+    case 0:
+        return json_null();
+    case 1:
+        return rnd() & 1 ? json_true() : json_false();
+    case 2: {
+        json_int_t v = (json_int_t)(rnd() >> (rnd() % 64));
+        return json_integer(rnd() & 1 ? v : -v);
+    }
+    case 3:
+        return random_string(1);
+    case 4:
+        if (reals) return json_real(rnd() & 1 ? gen_physics() : gen_bits());
+        return json_integer((json_int_t)(rnd() % 1000));
+    case 5:
+        return json_integer(rnd() & 1 ? INT64_MAX : INT64_MIN);
+    case 6: {
+        json_t *a = json_array();
+        for (int n = (int)(rnd() % 6); n > 0; n--)
+            json_array_append_new(a, random_tree(depth + 1, reals));
+        return a;
+    }
+    default: {
+        json_t *o = json_object();
+        for (int n = (int)(rnd() % 6); n > 0; n--) {
+            /* json_loads refuses NUL in keys: none where texts are parsed back */
+            json_t *key = random_string(!reals);
+            json_object_setn_new(o, json_string_value(key), json_string_length(key),
+                                 random_tree(depth + 1, reals));
+            json_decref(key);
+        }
+        return o;
+    }
+    }
+}
+
+static void test_writer(void)
+{
+    /* hand-made trees */
+    CHECK(compare_tree(json_object(), 1));
+    CHECK(compare_tree(json_array(), 1));
+    CHECK(compare_tree(json_pack("{s:{},s:[],s:[{}],s:[[[]]]}", "a", "b", "c", "d"), 1));
+    CHECK(compare_tree(json_pack("{s:s,s:i,s:I,s:I,s:b,s:b,s:n}", "name", "mechd", "n", -42, "max",
+                                 (json_int_t)INT64_MAX, "min", (json_int_t)INT64_MIN, "t", 1, "f",
+                                 0, "z"),
+                       1));
+    CHECK(compare_tree(json_pack("[s,s,s,s]", "quote \" back \\ slash / tab \t nl \n cr \r",
+                                 "\b\f\x01\x02\x1f\x7f",
+                                 "caf\xc3\xa9 \xe2\x82\xac \xf0\x9f\x98\x80", ""),
+                       1));
+    CHECK(compare_tree(json_pack("{s:s%}", "nul", "a\0b\0", (size_t)4), 1));
+    {
+        json_t *o = json_object();
+        json_object_setn_new(o, "k\0\"\n\xc3\xa9", 6, json_integer(1));
+        json_object_set_new(o, "second", json_string("x"));
+        json_object_set_new(o, "first", json_string("y")); /* insertion order, not sorted */
+        CHECK(compare_tree(o, 1));
+    }
+    /* scalars at the top (JSON_ENCODE_ANY) */
+    CHECK(compare_tree(json_integer(0), 1));
+    CHECK(compare_tree(json_string("s"), 1));
+    CHECK(compare_tree(json_null(), 1));
+    /* invalid UTF-8 (json_stringn_nocheck): json_dumps fails, and so do we */
+    CHECK(compare_tree(json_pack("[o]", json_stringn_nocheck("\xff\xfe", 2)), 1));
+    CHECK(compare_tree(json_pack("[o]", json_stringn_nocheck("\xed\xa0\x80", 3)), 1));
+    CHECK(compare_tree(json_pack("[o]", json_stringn_nocheck("\xe0\x80\x80", 3)), 1));
+    CHECK(compare_tree(json_pack("[o]", json_stringn_nocheck("\xc3", 1)), 1));
+    /* deeper than the bound: json_dumps's text, with reals through it */
+    {
+        json_t *root = json_array(), *cur = root;
+        for (int i = 0; i < API_JSON_WRITE_MAX_DEPTH + 20; i++) {
+            json_t *next = json_array();
+            json_array_append_new(cur, json_integer(i));
+            json_array_append_new(cur, next);
+            cur = next;
+        }
+        CHECK(compare_tree(root, 1));
+    }
+    /* suffix and length */
+    {
+        json_t *o = json_pack("{s:f,s:[f,f]}", "beta", 0.6, "v", 0.1, 1e-7);
+        size_t n = 0;
+        char *s = api_json_write_compact(o, "\n", &n);
+        CHECK(s && !strcmp(s, "{\"beta\":0.6,\"v\":[0.1,1e-7]}\n") && n == strlen(s));
+        free(s);
+        s = api_json_write_compact(o, NULL, NULL);
+        CHECK(s && !strcmp(s, "{\"beta\":0.6,\"v\":[0.1,1e-7]}"));
+        free(s);
+        json_decref(o);
+        CHECK(api_json_write_compact(NULL, "\n", &n) == NULL);
+    }
+    /* a large array (buffer growth): 100,000 vectors */
+    {
+        json_t *a = json_array();
+        for (int i = 0; i < 100000 / SCALE; i++)
+            json_array_append_new(
+                a, json_pack("[f,f,f,f]", gen_bits(), gen_physics(), gen_decimal(), (double)i));
+        CHECK(compare_tree(a, 0));
+    }
+    /* random trees */
+    long same = 0, n_trees = 20000 / SCALE;
+    for (long i = 0; i < n_trees; i++)
+        same += compare_tree(random_tree(0, 0), 1);
+    CHECK_EQ_INT(same, n_trees);
+    same = 0;
+    for (long i = 0; i < n_trees; i++)
+        same += compare_tree(random_tree(0, 1), 0);
+    CHECK_EQ_INT(same, n_trees);
+}
+
+/* ---- micro benchmark (printed, never asserted) --------------------------------- */
+
+static void bench(void)
+{
+    enum { N = 4096 };
+    static double xs[N];
+    for (int i = 0; i < N; i++)
+        xs[i] = i & 1 ? gen_bits() : gen_physics();
+    const int rounds = 100 / SCALE;
+    size_t sink = 0;
+    char buf[64];
+    double t0 = mech_clock_seconds();
+    for (int r = 0; r < rounds; r++)
+        for (int i = 0; i < N; i++)
+            sink += api_real_format(xs[i], buf);
+    double t1 = mech_clock_seconds();
+    for (int r = 0; r < rounds; r++)
+        for (int i = 0; i < N; i++)
+            sink += (size_t)snprintf(buf, sizeof buf, "%.17g", xs[i]);
+    double t2 = mech_clock_seconds();
+    double per = (double)rounds * N;
+    printf("micro: api_real_format %.1f ns per real, snprintf(\"%%.17g\") %.1f ns (ratio %.1f)%s "
+           "[%zu]\n",
+           (t1 - t0) / per * 1e9, (t2 - t1) / per * 1e9, (t2 - t1) / (t1 - t0),
+           SCALE > 1 ? " (sanitizer build)" : "", sink % 10);
+}
+
+int main(void)
+{
+    test_texts();
+    test_round_trip();
+    test_shortness();
+    test_writer();
+    bench();
+    TEST_MAIN_END();
+}
