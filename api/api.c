@@ -260,7 +260,7 @@ static json_t *prefixed_errors(const json_t *errors, const char *prefix)
             char *q = malloc(n);
             if (q) {
                 snprintf(q, n, "%s%s", prefix, p);
-                json_object_set_new(c, "pointer", json_string(q));
+                json_object_set_new_nocheck(c, "pointer", json_string(q));
                 free(q);
             }
         }
@@ -352,9 +352,9 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
             json_t *cost = json_object_get(result, "cost");
             if (!json_is_object(cost)) {
                 cost = json_object();
-                json_object_set_new(result, "cost", cost);
+                json_object_set_new_nocheck(result, "cost", cost);
             }
-            if (cost) json_object_set_new(cost, "cpu_seconds", json_real(cpu));
+            if (cost) json_object_set_new_nocheck(cost, "cpu_seconds", json_real(cpu));
         } else {
             json_object_del(result, "cost");
         }

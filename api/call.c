@@ -63,20 +63,21 @@ json_t *api_call_fail_core(struct api_call *c, enum mech_status st,
         set_problem(c, API_PROBLEM_BUDGET, text);
         json_t *prog = json_object();
         if (prog && e) {
-            json_object_set_new(prog, "limit", json_string(st == MECH_EBUDGET ? "max_steps"
-                                                                              : "deadline"));
-            json_object_set_new(prog, "steps", json_integer(e->progress.steps));
+            json_object_set_new_nocheck(prog, "limit",
+                                        json_string(st == MECH_EBUDGET ? "max_steps" : "deadline"));
+            json_object_set_new_nocheck(prog, "steps", json_integer(e->progress.steps));
             if (isfinite(e->progress.t_reached))
-                json_object_set_new(prog, "t_reached", json_real(e->progress.t_reached));
+                json_object_set_new_nocheck(prog, "t_reached", json_real(e->progress.t_reached));
             if (isfinite(e->progress.t_target))
-                json_object_set_new(prog, "t_target", json_real(e->progress.t_target));
+                json_object_set_new_nocheck(prog, "t_target", json_real(e->progress.t_target));
             if (isfinite(e->progress.t_reached) && isfinite(e->progress.t_target) &&
                 e->progress.t_target != 0)
-                json_object_set_new(prog, "fraction_done",
-                                    json_real(e->progress.t_reached / e->progress.t_target));
+                json_object_set_new_nocheck(
+                    prog, "fraction_done", json_real(e->progress.t_reached / e->progress.t_target));
         }
         if (!c->extra) c->extra = json_object();
-        if (c->extra && prog) json_object_set_new(c->extra, "progress", prog);
+        if (c->extra && prog)
+            json_object_set_new_nocheck(c->extra, "progress", prog);
         else json_decref(prog);
         break;
     }

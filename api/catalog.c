@@ -155,7 +155,8 @@ static json_t *build_openapi(void)
         snprintf(method, sizeof method, "%s", r->method);
         for (char *p = method; *p; p++) *p = (char)(*p - 'A' + 'a');
         json_t *item = json_pack("{s:o}", method, op);
-        if (item && !strcmp(r->method, "POST")) json_object_set_new(item, "get", get_variant(i, opid));
+        if (item && !strcmp(r->method, "POST"))
+            json_object_set_new_nocheck(item, "get", get_variant(i, opid));
         json_object_set_new(paths, r->path, item);
     }
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++) {

@@ -130,7 +130,7 @@ static json_t *fail_run(struct api_call *c, enum mech_status st, const struct me
     api_call_fail_core(c, st, &e2, prefix);
     if (k >= 0 && (st == MECH_EBUDGET || st == MECH_EDEADLINE)) {
         if (!c->extra) c->extra = json_object();
-        if (c->extra) json_object_set_new(c->extra, "run", json_string(pointer));
+        if (c->extra) json_object_set_new_nocheck(c->extra, "run", json_string(pointer));
     }
     return NULL;
 }
@@ -230,8 +230,8 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
     int ref_stopped = 0;
     struct mech_vec3 ref_stop = mech_vec3_make(0, 0, 0), ref_stop_v = ref_stop;
     if (have_exact) {
-        json_object_set_new(jref, "kind", json_string("exact"));
-        json_object_set_new(jref, "name", json_string(exact.name));
+        json_object_set_new_nocheck(jref, "kind", json_string("exact"));
+        json_object_set_new_nocheck(jref, "name", json_string(exact.name));
     } else {
         struct api_traj_request rq = base;
         api_traj_request_fix(&rq);
@@ -249,11 +249,11 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         ref_stopped = r.stopped;
         ref_stop = r.stop_position;
         ref_stop_v = r.stop_velocity;
-        json_object_set_new(jref, "kind", json_string("numerical"));
-        json_object_set_new(jref, "name", json_string(COMPARE_REFERENCE_METHOD));
-        json_object_set_new(jref, "rtol", api_real(c, COMPARE_REFERENCE_RTOL));
-        json_object_set_new(jref, "steps", json_integer(r.stats.steps));
-        json_object_set_new(jref, "rhs_evaluations", json_integer(r.stats.rhs_evaluations));
+        json_object_set_new_nocheck(jref, "kind", json_string("numerical"));
+        json_object_set_new_nocheck(jref, "name", json_string(COMPARE_REFERENCE_METHOD));
+        json_object_set_new_nocheck(jref, "rtol", api_real(c, COMPARE_REFERENCE_RTOL));
+        json_object_set_new_nocheck(jref, "steps", json_integer(r.stats.steps));
+        json_object_set_new_nocheck(jref, "rhs_evaluations", json_integer(r.stats.rhs_evaluations));
         ref_cpu = cpu;
     }
 
@@ -268,13 +268,13 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
             goto done;
         }
         json_t *row = json_object();
-        json_object_set_new(row, "requested", json_deep_copy(specs[k].block));
+        json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
         json_t *set = api_traj_settings(c, &rq.p);
         json_object_update(row, set);
         json_decref(set);
         const struct mech_integrator *mm = mech_ode_method_find(rq.p.method);
-        json_object_set_new(row, "order",
-                            json_integer(mm ? mech_ode_method_describe(mm).order : 0));
+        json_object_set_new_nocheck(row, "order",
+                                    json_integer(mm ? mech_ode_method_describe(mm).order : 0));
         struct mech_budget b = c->budget;
         b.max_steps = c->budget.max_steps - used;
         enum mech_status st;
@@ -300,11 +300,11 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
             goto done;
         }
         if (st != MECH_OK) {
-            json_object_set_new(row, "status", json_string("failed"));
-            json_object_set_new(row, "problem", json_string(mech_status_name(st)));
-            json_object_set_new(row, "detail", json_string(e.text));
+            json_object_set_new_nocheck(row, "status", json_string("failed"));
+            json_object_set_new_nocheck(row, "problem", json_string(mech_status_name(st)));
+            json_object_set_new_nocheck(row, "detail", json_string(e.text));
         } else {
-            json_object_set_new(row, "status", json_string("ok"));
+            json_object_set_new_nocheck(row, "status", json_string("ok"));
             double emax, efin, evmax, erel, evrel;
             if (have_exact) {
                 emax = r.reference.max_position_error;
@@ -335,20 +335,22 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
                 erel = rmax > 0 ? emax / rmax : 0;
                 evrel = vmax > 0 ? evmax / vmax : 0;
             }
-            json_object_set_new(row, "max_position_error", api_real(c, emax));
-            json_object_set_new(row, "final_position_error", api_real(c, efin));
-            json_object_set_new(row, "max_velocity_error", api_real(c, evmax));
-            json_object_set_new(row, "max_relative_position_error", api_real(c, erel));
-            json_object_set_new(row, "max_relative_velocity_error", api_real(c, evrel));
+            json_object_set_new_nocheck(row, "max_position_error", api_real(c, emax));
+            json_object_set_new_nocheck(row, "final_position_error", api_real(c, efin));
+            json_object_set_new_nocheck(row, "max_velocity_error", api_real(c, evmax));
+            json_object_set_new_nocheck(row, "max_relative_position_error", api_real(c, erel));
+            json_object_set_new_nocheck(row, "max_relative_velocity_error", api_real(c, evrel));
             json_t *invs = json_array();
             for (size_t i = 0; invs && i < r.n_invariants; i++)
                 json_array_append_new(invs, json_pack("{s:s,s:o}", "name", r.invariants[i].name,
                                                       "max_relative_drift",
                                                       api_real(c, r.invariants[i].max_relative_drift)));
-            json_object_set_new(row, "invariants", invs);
-            json_object_set_new(row, "steps", json_integer(r.stats.steps));
-            json_object_set_new(row, "rejected_steps", json_integer(r.stats.rejected_steps));
-            json_object_set_new(row, "rhs_evaluations", json_integer(r.stats.rhs_evaluations));
+            json_object_set_new_nocheck(row, "invariants", invs);
+            json_object_set_new_nocheck(row, "steps", json_integer(r.stats.steps));
+            json_object_set_new_nocheck(row, "rejected_steps",
+                                        json_integer(r.stats.rejected_steps));
+            json_object_set_new_nocheck(row, "rhs_evaluations",
+                                        json_integer(r.stats.rhs_evaluations));
         }
         /* measured time lives under the top-level cost block only, so the
          * rest of the answer is byte-identical from run to run */
@@ -366,18 +368,19 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
     }
     res = json_object();
     if (res) {
-        json_object_set_new(res, "operation", json_string("/v1/trajectory"));
-        json_object_set_new(res, "reference", jref);
+        json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
+        json_object_set_new_nocheck(res, "reference", jref);
         jref = NULL;
-        json_object_set_new(res, "runs", rows);
-        json_object_set_new(res, "total_steps", json_integer(used));
+        json_object_set_new_nocheck(res, "runs", rows);
+        json_object_set_new_nocheck(res, "total_steps", json_integer(used));
         /* the framework adds cost.cpu_seconds (the whole request) and drops
          * the block for "cost": false */
         json_t *jc = json_object();
-        if (ref_cpu >= 0.0) json_object_set_new(jc, "reference_cpu_seconds", json_real(ref_cpu));
-        json_object_set_new(jc, "runs", cost_runs);
+        if (ref_cpu >= 0.0)
+            json_object_set_new_nocheck(jc, "reference_cpu_seconds", json_real(ref_cpu));
+        json_object_set_new_nocheck(jc, "runs", cost_runs);
         cost_runs = NULL;
-        json_object_set_new(res, "cost", jc);
+        json_object_set_new_nocheck(res, "cost", jc);
     } else {
         json_decref(rows);
         api_call_fail_core(c, MECH_ENOMEM, NULL, "");

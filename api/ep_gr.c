@@ -124,19 +124,19 @@ static double gr_speed_in(const struct gr_units *u, double v)
 static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
 {
     json_t *j = json_object();
-    json_object_set_new(j, "system", json_string(u->geometric ? "geometric" : "SI"));
-    json_object_set_new(j, "length", json_string(u->geometric ? "GM/c^2" : "m"));
-    json_object_set_new(j, "time", json_string(u->geometric ? "GM/c^3" : "s"));
-    json_object_set_new(j, "specific_angular_momentum",
-                        json_string(u->geometric ? "GM/c" : "m^2/s"));
-    json_object_set_new(j, "speed", json_string(u->geometric ? "c" : "m/s"));
-    json_object_set_new(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
-    json_object_set_new(j, "angle", json_string("rad"));
-    json_object_set_new(j, "c", api_real(c, GR_C));
+    json_object_set_new_nocheck(j, "system", json_string(u->geometric ? "geometric" : "SI"));
+    json_object_set_new_nocheck(j, "length", json_string(u->geometric ? "GM/c^2" : "m"));
+    json_object_set_new_nocheck(j, "time", json_string(u->geometric ? "GM/c^3" : "s"));
+    json_object_set_new_nocheck(j, "specific_angular_momentum",
+                                json_string(u->geometric ? "GM/c" : "m^2/s"));
+    json_object_set_new_nocheck(j, "speed", json_string(u->geometric ? "c" : "m/s"));
+    json_object_set_new_nocheck(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
+    json_object_set_new_nocheck(j, "angle", json_string("rad"));
+    json_object_set_new_nocheck(j, "c", api_real(c, GR_C));
     if (u->has_mass) {
-        json_object_set_new(j, "GM", api_real(c, u->GM));
-        json_object_set_new(j, "GM_over_c2", api_real(c, u->m));
-        json_object_set_new(j, "GM_over_c3", api_real(c, u->s));
+        json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
+        json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
+        json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
     }
     return j;
 }
@@ -215,13 +215,14 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     json_t *out = json_object();
-    json_object_set_new(out, "units", gr_units_json(c, &u));
-    json_object_set_new(out, "schwarzschild_radius",
-                        api_real(c, gr_len_out(&u, MECH_SCHW_HORIZON)));
-    json_object_set_new(out, "photon_sphere", api_real(c, gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
-    json_object_set_new(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
-    json_object_set_new(out, "critical_impact_parameter",
-                        api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
+    json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
+    json_object_set_new_nocheck(out, "schwarzschild_radius",
+                                api_real(c, gr_len_out(&u, MECH_SCHW_HORIZON)));
+    json_object_set_new_nocheck(out, "photon_sphere",
+                                api_real(c, gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
+    json_object_set_new_nocheck(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
+    json_object_set_new_nocheck(out, "critical_impact_parameter",
+                                api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
 
     const json_t *rj = json_object_get(body, "r"), *refj = json_object_get(body, "reference_r");
     if (refj && !rj) {
@@ -243,34 +244,38 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             return NULL;
         }
         json_t *a = json_object();
-        json_object_set_new(a, "r", api_real(c, json_number_value(rj))); /* echoed exactly */
-        json_object_set_new(a, "r_over_rs", api_real(c, r / 2.0));
+        json_object_set_new_nocheck(a, "r",
+                                    api_real(c, json_number_value(rj))); /* echoed exactly */
+        json_object_set_new_nocheck(a, "r_over_rs", api_real(c, r / 2.0));
         json_t *st = json_object();
-        json_object_set_new(st, "clock_rate", api_real(c, s.rate));
-        json_object_set_new(st, "clock_rate_deficit", api_real(c, s.rate_deficit));
-        json_object_set_new(st, "redshift", api_real(c, s.redshift));
-        json_object_set_new(a, "static", st);
+        json_object_set_new_nocheck(st, "clock_rate", api_real(c, s.rate));
+        json_object_set_new_nocheck(st, "clock_rate_deficit", api_real(c, s.rate_deficit));
+        json_object_set_new_nocheck(st, "redshift", api_real(c, s.redshift));
+        json_object_set_new_nocheck(a, "static", st);
         json_t *cj = json_object();
-        json_object_set_new(cj, "exists", json_boolean(co.stability != MECH_SCHW_ORBIT_NONE));
-        json_object_set_new(cj, "stability", json_string(stability_name(co.stability)));
+        json_object_set_new_nocheck(cj, "exists",
+                                    json_boolean(co.stability != MECH_SCHW_ORBIT_NONE));
+        json_object_set_new_nocheck(cj, "stability", json_string(stability_name(co.stability)));
         if (co.stability != MECH_SCHW_ORBIT_NONE) {
-            json_object_set_new(cj, "clock_rate", api_real(c, co.rate));
-            json_object_set_new(cj, "clock_rate_deficit", api_real(c, co.rate_deficit));
-            json_object_set_new(cj, "energy", api_real(c, co.energy));
-            json_object_set_new(cj, "angular_momentum",
-                                api_real(c, gr_ang_out(&u, co.angular_momentum)));
-            json_object_set_new(cj, "local_speed_over_c", api_real(c, co.local_speed));
-            json_object_set_new(cj, "angular_velocity",
-                                api_real(c, co.omega / gr_time_out(&u, 1.0)));
-            json_object_set_new(cj, "period_coordinate", api_real(c, gr_time_out(&u, co.period_t)));
-            json_object_set_new(cj, "period_proper", api_real(c, gr_time_out(&u, co.period_tau)));
+            json_object_set_new_nocheck(cj, "clock_rate", api_real(c, co.rate));
+            json_object_set_new_nocheck(cj, "clock_rate_deficit", api_real(c, co.rate_deficit));
+            json_object_set_new_nocheck(cj, "energy", api_real(c, co.energy));
+            json_object_set_new_nocheck(cj, "angular_momentum",
+                                        api_real(c, gr_ang_out(&u, co.angular_momentum)));
+            json_object_set_new_nocheck(cj, "local_speed_over_c", api_real(c, co.local_speed));
+            json_object_set_new_nocheck(cj, "angular_velocity",
+                                        api_real(c, co.omega / gr_time_out(&u, 1.0)));
+            json_object_set_new_nocheck(cj, "period_coordinate",
+                                        api_real(c, gr_time_out(&u, co.period_t)));
+            json_object_set_new_nocheck(cj, "period_proper",
+                                        api_real(c, gr_time_out(&u, co.period_tau)));
         } else {
-            json_object_set_new(cj, "why",
-                                json_string("no circular geodesic at or inside the photon "
-                                            "sphere r = 3GM/c^2"));
+            json_object_set_new_nocheck(cj, "why",
+                                        json_string("no circular geodesic at or inside the photon "
+                                                    "sphere r = 3GM/c^2"));
         }
-        json_object_set_new(a, "circular_orbit", cj);
-        json_object_set_new(out, "at_r", a);
+        json_object_set_new_nocheck(a, "circular_orbit", cj);
+        json_object_set_new_nocheck(out, "at_r", a);
         if (refj) {
             const double R = gr_len_in(&u, json_number_value(refj));
             struct mech_schw_clock_compare cc;
@@ -282,34 +287,37 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             }
             const double day = 86400e6;
             json_t *k = json_object();
-            json_object_set_new(k, "reference", json_string("static clock at reference_r"));
-            json_object_set_new(k, "clock", json_string("clock on the circular orbit at r"));
-            json_object_set_new(k, "reference_r", api_real(c, json_number_value(refj)));
-            json_object_set_new(k, "r", api_real(c, json_number_value(rj)));
+            json_object_set_new_nocheck(k, "reference", json_string("static clock at reference_r"));
+            json_object_set_new_nocheck(k, "clock",
+                                        json_string("clock on the circular orbit at r"));
+            json_object_set_new_nocheck(k, "reference_r", api_real(c, json_number_value(refj)));
+            json_object_set_new_nocheck(k, "r", api_real(c, json_number_value(rj)));
             json_t *f = json_object();
-            json_object_set_new(f, "gravitational", api_real(c, cc.gravitational));
-            json_object_set_new(f, "velocity", api_real(c, cc.velocity));
-            json_object_set_new(f, "net", api_real(c, cc.net));
-            json_object_set_new(k, "fractional", f);
+            json_object_set_new_nocheck(f, "gravitational", api_real(c, cc.gravitational));
+            json_object_set_new_nocheck(f, "velocity", api_real(c, cc.velocity));
+            json_object_set_new_nocheck(f, "net", api_real(c, cc.net));
+            json_object_set_new_nocheck(k, "fractional", f);
             json_t *d = json_object();
-            json_object_set_new(d, "gravitational", api_real(c, cc.gravitational * day));
-            json_object_set_new(d, "velocity", api_real(c, cc.velocity * day));
-            json_object_set_new(d, "net", api_real(c, cc.net * day));
-            json_object_set_new(k, "microseconds_per_day", d);
+            json_object_set_new_nocheck(d, "gravitational", api_real(c, cc.gravitational * day));
+            json_object_set_new_nocheck(d, "velocity", api_real(c, cc.velocity * day));
+            json_object_set_new_nocheck(d, "net", api_real(c, cc.net * day));
+            json_object_set_new_nocheck(k, "microseconds_per_day", d);
             json_t *fo = json_object();
-            json_object_set_new(fo, "gravitational", api_real(c, cc.first_order_gravitational));
-            json_object_set_new(fo, "velocity", api_real(c, cc.first_order_velocity));
+            json_object_set_new_nocheck(fo, "gravitational",
+                                        api_real(c, cc.first_order_gravitational));
+            json_object_set_new_nocheck(fo, "velocity", api_real(c, cc.first_order_velocity));
             json_object_set_new(
                 fo, "net", api_real(c, cc.first_order_gravitational + cc.first_order_velocity));
             json_object_set_new(
                 fo, "microseconds_per_day_net",
                 api_real(c, (cc.first_order_gravitational + cc.first_order_velocity) * day));
-            json_object_set_new(k, "first_order", fo);
-            json_object_set_new(k, "left_out",
-                                json_string("the reference's own motion (the Earth's rotation: "
-                                            "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
-                                            "other masses, orbit eccentricity"));
-            json_object_set_new(out, "clock_comparison", k);
+            json_object_set_new_nocheck(k, "first_order", fo);
+            json_object_set_new_nocheck(
+                k, "left_out",
+                json_string("the reference's own motion (the Earth's rotation: "
+                            "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
+                            "other masses, orbit eccentricity"));
+            json_object_set_new_nocheck(out, "clock_comparison", k);
         }
     }
 
@@ -357,33 +365,37 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             vp[i] = mech_schw_veff_photon(r) * inv_len2;
         }
         json_t *v = json_object();
-        json_object_set_new(v, "angular_momentum", api_real(c, gr_ang_out(&u, L)));
-        json_object_set_new(v, "massive_normalisation",
-                            json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
-                                        "L^2/(c^2 r^2)), dimensionless"));
-        json_object_set_new(v, "photon_normalisation",
-                            json_string(u.geometric ? "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
+        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, gr_ang_out(&u, L)));
+        json_object_set_new_nocheck(
+            v, "massive_normalisation",
+            json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
+                        "L^2/(c^2 r^2)), dimensionless"));
+        json_object_set_new_nocheck(v, "photon_normalisation",
+                                    json_string(u.geometric
+                                                    ? "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
                                                       "r_s/r)/r^2, (GM/c^2)^-2"
                                                     : "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
                                                       "r_s/r)/r^2, 1/m^2"));
-        json_object_set_new(v, "r", api_reals(c, rr, n));
-        json_object_set_new(v, "massive", api_reals(c, vm, n));
-        json_object_set_new(v, "massive_minus_one", api_reals(c, v1, n));
-        json_object_set_new(v, "photon", api_reals(c, vp, n));
+        json_object_set_new_nocheck(v, "r", api_reals(c, rr, n));
+        json_object_set_new_nocheck(v, "massive", api_reals(c, vm, n));
+        json_object_set_new_nocheck(v, "massive_minus_one", api_reals(c, v1, n));
+        json_object_set_new_nocheck(v, "photon", api_reals(c, vp, n));
         json_t *x = json_object();
-        json_object_set_new(x, "count", json_integer(ne));
-        json_object_set_new(x, "unstable_r", ne ? api_real(c, gr_len_out(&u, ru)) : json_null());
-        json_object_set_new(x, "unstable_V",
-                            ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
-        json_object_set_new(x, "stable_r", ne ? api_real(c, gr_len_out(&u, rs)) : json_null());
-        json_object_set_new(x, "stable_V",
-                            ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
-        json_object_set_new(v, "massive_extrema", x);
+        json_object_set_new_nocheck(x, "count", json_integer(ne));
+        json_object_set_new_nocheck(x, "unstable_r",
+                                    ne ? api_real(c, gr_len_out(&u, ru)) : json_null());
+        json_object_set_new_nocheck(x, "unstable_V",
+                                    ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
+        json_object_set_new_nocheck(x, "stable_r",
+                                    ne ? api_real(c, gr_len_out(&u, rs)) : json_null());
+        json_object_set_new_nocheck(x, "stable_V",
+                                    ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
+        json_object_set_new_nocheck(v, "massive_extrema", x);
         json_t *pm = json_object();
-        json_object_set_new(pm, "r", api_real(c, gr_len_out(&u, 3.0)));
-        json_object_set_new(pm, "W", api_real(c, inv_len2 / 27.0));
-        json_object_set_new(v, "photon_maximum", pm);
-        json_object_set_new(out, "effective_potential", v);
+        json_object_set_new_nocheck(pm, "r", api_real(c, gr_len_out(&u, 3.0)));
+        json_object_set_new_nocheck(pm, "W", api_real(c, inv_len2 / 27.0));
+        json_object_set_new_nocheck(v, "photon_maximum", pm);
+        json_object_set_new_nocheck(out, "effective_potential", v);
         free(rr);
         free(vm);
         free(vp);
@@ -719,9 +731,10 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
             api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
             if (!c->extra) c->extra = json_object();
             json_t *pr = json_object();
-            json_object_set_new(pr, "samples_written", json_integer((json_int_t)r.n_samples));
-            json_object_set_new(pr, "steps", json_integer(r.stats.steps));
-            json_object_set_new(c->extra, "progress", pr);
+            json_object_set_new_nocheck(pr, "samples_written",
+                                        json_integer((json_int_t)r.n_samples));
+            json_object_set_new_nocheck(pr, "steps", json_integer(r.stats.steps));
+            json_object_set_new_nocheck(c->extra, "progress", pr);
         } else {
             if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
                 char ptr[128];
@@ -737,20 +750,20 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
 
     /* ---- the answer ---- */
     out = json_object();
-    json_object_set_new(out, "units", gr_units_json(c, &u));
-    json_object_set_new(out, "kind", json_string(photon ? "null" : "timelike"));
+    json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
+    json_object_set_new_nocheck(out, "kind", json_string(photon ? "null" : "timelike"));
     json_t *cons = json_object();
     if (photon) {
-        json_object_set_new(cons, "impact_parameter", api_real(c, gr_len_out(&u, in.L)));
-        json_object_set_new(cons, "normalisation",
-                            json_string("E = 1: dt/dlambda = 1/(1 - r_s/r)"));
+        json_object_set_new_nocheck(cons, "impact_parameter", api_real(c, gr_len_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "normalisation",
+                                    json_string("E = 1: dt/dlambda = 1/(1 - r_s/r)"));
     } else {
-        json_object_set_new(cons, "energy", api_real(c, in.E));
-        json_object_set_new(cons, "energy_minus_one", api_real(c, in.E2m1 / (1.0 + in.E)));
-        json_object_set_new(cons, "angular_momentum", api_real(c, gr_ang_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "energy", api_real(c, in.E));
+        json_object_set_new_nocheck(cons, "energy_minus_one", api_real(c, in.E2m1 / (1.0 + in.E)));
+        json_object_set_new_nocheck(cons, "angular_momentum", api_real(c, gr_ang_out(&u, in.L)));
     }
-    json_object_set_new(out, "conserved", cons);
-    json_object_set_new(out, "r0", api_real(c, gr_len_out(&u, in.r0)));
+    json_object_set_new_nocheck(out, "conserved", cons);
+    json_object_set_new_nocheck(out, "r0", api_real(c, gr_len_out(&u, in.r0)));
     /* light: b > 3 sqrt 3 outside the photon sphere turns (scatter, or escapes if it
      * starts outward); inside it, it turns back into the hole; b < 3 sqrt 3 falls in
      * unless it starts outward */
@@ -760,19 +773,21 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
                         : (wide || in.rdot0 <= 0) ? "capture"
                                                   : "escape";
     if (photon)
-        json_object_set_new(out, "motion", json_string(light));
+        json_object_set_new_nocheck(out, "motion", json_string(light));
     else
-        json_object_set_new(out, "motion", json_string(class_name(cls)));
+        json_object_set_new_nocheck(out, "motion", json_string(class_name(cls)));
     if (bound) {
         const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
         json_t *o = json_object();
-        json_object_set_new(o, "periapsis", api_real(c, gr_len_out(&u, rp)));
-        json_object_set_new(o, "apoapsis", api_real(c, gr_len_out(&u, ra)));
-        json_object_set_new(o, "semi_major_axis", api_real(c, gr_len_out(&u, 0.5 * (rp + ra))));
-        json_object_set_new(o, "eccentricity", api_real(c, (ra - rp) / (ra + rp)));
-        json_object_set_new(o, "radial_period_proper", api_real(c, gr_time_out(&u, Ttau)));
-        json_object_set_new(o, "radial_period_coordinate", api_real(c, gr_time_out(&u, Tt)));
-        json_object_set_new(out, "orbit", o);
+        json_object_set_new_nocheck(o, "periapsis", api_real(c, gr_len_out(&u, rp)));
+        json_object_set_new_nocheck(o, "apoapsis", api_real(c, gr_len_out(&u, ra)));
+        json_object_set_new_nocheck(o, "semi_major_axis",
+                                    api_real(c, gr_len_out(&u, 0.5 * (rp + ra))));
+        json_object_set_new_nocheck(o, "eccentricity", api_real(c, (ra - rp) / (ra + rp)));
+        json_object_set_new_nocheck(o, "radial_period_proper", api_real(c, gr_time_out(&u, Ttau)));
+        json_object_set_new_nocheck(o, "radial_period_coordinate",
+                                    api_real(c, gr_time_out(&u, Tt)));
+        json_object_set_new_nocheck(out, "orbit", o);
     }
     const size_t ns = r.n_samples;
     for (size_t i = 0; i < ns; i++) {
@@ -782,47 +797,48 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
     }
     json_t *sj = json_object();
     json_object_set_new(sj, photon ? "lambda" : "tau", api_reals(c, sp, ns));
-    json_object_set_new(sj, "t", api_reals(c, st_, ns));
-    json_object_set_new(sj, "r", api_reals(c, sr, ns));
-    json_object_set_new(sj, "phi", api_reals(c, sf, ns));
-    json_object_set_new(out, "samples", sj);
+    json_object_set_new_nocheck(sj, "t", api_reals(c, st_, ns));
+    json_object_set_new_nocheck(sj, "r", api_reals(c, sr, ns));
+    json_object_set_new_nocheck(sj, "phi", api_reals(c, sf, ns));
+    json_object_set_new_nocheck(out, "samples", sj);
     json_t *en = json_object();
-    json_object_set_new(en, "reason",
-                        json_string(r.captured  ? "captured"
-                                    : r.escaped ? "escaped"
-                                    : photon    ? "lambda_end"
-                                                : "tau_end"));
-    json_object_set_new(en, "captured", json_boolean(r.captured));
-    json_object_set_new(en, "escaped", json_boolean(r.escaped));
+    json_object_set_new_nocheck(en, "reason",
+                                json_string(r.captured  ? "captured"
+                                            : r.escaped ? "escaped"
+                                            : photon    ? "lambda_end"
+                                                        : "tau_end"));
+    json_object_set_new_nocheck(en, "captured", json_boolean(r.captured));
+    json_object_set_new_nocheck(en, "escaped", json_boolean(r.escaped));
     json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, gr_time_out(&u, r.end_param)));
-    json_object_set_new(en, "t", api_real(c, gr_time_out(&u, r.end_t)));
-    json_object_set_new(en, "r", api_real(c, gr_len_out(&u, r.end_r)));
-    json_object_set_new(en, "phi", api_real(c, r.end_phi));
+    json_object_set_new_nocheck(en, "t", api_real(c, gr_time_out(&u, r.end_t)));
+    json_object_set_new_nocheck(en, "r", api_real(c, gr_len_out(&u, r.end_r)));
+    json_object_set_new_nocheck(en, "phi", api_real(c, r.end_phi));
     if (r.captured)
         json_object_set_new(
             en, "capture_radius",
             api_real(c, gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
-    if (r.escaped) json_object_set_new(en, "r_escape", api_real(c, gr_len_out(&u, rs_esc)));
-    json_object_set_new(out, "end", en);
+    if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, gr_len_out(&u, rs_esc)));
+    json_object_set_new_nocheck(out, "end", en);
 
     if (bound) {
         const double a = 0.5 * (1.0 / bd.u1 + 1.0 / bd.u2);
         const double first = 3.0 * M_PI * (bd.u1 + bd.u2); /* 6 pi M/(a(1-e^2)) */
         json_t *pj = json_object();
-        json_object_set_new(pj, "periapses_found", json_integer(r.n_periapses));
-        json_object_set_new(pj, "orbits_measured",
-                            json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
+        json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
+        json_object_set_new_nocheck(pj, "orbits_measured",
+                                    json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
         int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
-        json_object_set_new(pj, "measured_per_orbit",
-                            has ? api_real(c, r.measured_advance) : json_null());
-        json_object_set_new(pj, "exact_per_orbit", api_real(c, adv_exact));
-        json_object_set_new(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
-        json_object_set_new(pj, "first_order_per_orbit", api_real(c, first));
-        json_object_set_new(pj, "measured_minus_exact",
-                            has ? api_real(c, r.measured_advance - adv_exact) : json_null());
-        json_object_set_new(pj, "relative_error",
-                            has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact)
-                                : json_null());
+        json_object_set_new_nocheck(pj, "measured_per_orbit",
+                                    has ? api_real(c, r.measured_advance) : json_null());
+        json_object_set_new_nocheck(pj, "exact_per_orbit", api_real(c, adv_exact));
+        json_object_set_new_nocheck(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
+        json_object_set_new_nocheck(pj, "first_order_per_orbit", api_real(c, first));
+        json_object_set_new_nocheck(pj, "measured_minus_exact",
+                                    has ? api_real(c, r.measured_advance - adv_exact)
+                                        : json_null());
+        json_object_set_new_nocheck(
+            pj, "relative_error",
+            has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact) : json_null());
         json_object_set_new(
             pj, "first_order_formula",
             json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
@@ -830,14 +846,15 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
         if (!u.geometric) {
             const double per_century = GR_CENTURY_S / gr_time_out(&u, Tt) * GR_ARCSEC;
             json_t *ac = json_object();
-            json_object_set_new(ac, "measured",
-                                has ? api_real(c, r.measured_advance * per_century) : json_null());
-            json_object_set_new(ac, "exact", api_real(c, adv_exact * per_century));
-            json_object_set_new(ac, "first_order", api_real(c, first * per_century));
-            json_object_set_new(ac, "orbits_per_century", api_real(c, per_century / GR_ARCSEC));
-            json_object_set_new(pj, "arcsec_per_century", ac);
+            json_object_set_new_nocheck(
+                ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
+            json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
+            json_object_set_new_nocheck(ac, "first_order", api_real(c, first * per_century));
+            json_object_set_new_nocheck(ac, "orbits_per_century",
+                                        api_real(c, per_century / GR_ARCSEC));
+            json_object_set_new_nocheck(pj, "arcsec_per_century", ac);
         }
-        json_object_set_new(out, "precession", pj);
+        json_object_set_new_nocheck(out, "precession", pj);
     }
     if (scatter) {
         const double b = fabs(in.L);
@@ -851,56 +868,62 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
         }
         const int has = isfinite(r.measured_deflection);
         json_t *dj = json_object();
-        json_object_set_new(dj, "measured", has ? api_real(c, r.measured_deflection) : json_null());
+        json_object_set_new_nocheck(dj, "measured",
+                                    has ? api_real(c, r.measured_deflection) : json_null());
         if (!has)
-            json_object_set_new(dj, "why_not_measured",
-                                json_string("measured only for light that starts inward and "
-                                            "escapes within the run"));
+            json_object_set_new_nocheck(
+                dj, "why_not_measured",
+                json_string("measured only for light that starts inward and "
+                            "escapes within the run"));
         /* the quadrature keeps full relative precision for tiny deflections; the
          * elliptic form loses ~eps pi / delta to the final "- pi" */
-        json_object_set_new(dj, "exact", api_real(c, dq));
+        json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
         /* the elliptic form ends in "- pi": ~4e-16 pi / delta relative */
         const double ell_prec = 4e-16 * M_PI / dq;
-        json_object_set_new(dj, "exact_elliptic", ell_prec < 1e-3 ? api_real(c, dx) : json_null());
-        json_object_set_new(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
-        json_object_set_new(dj, "exact_method",
-                            json_string("exact: quadrature of the deflection integral in a form "
-                                        "without cancellation; exact_elliptic: Byrd & Friedman "
-                                        "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
-                                        "(relative precision ~4e-16 pi / delta; null beyond "
-                                        "1e-3)"));
-        json_object_set_new(dj, "first_order", api_real(c, 4.0 / b));
-        json_object_set_new(dj, "second_order", api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
-        json_object_set_new(dj, "measured_minus_exact",
-                            has ? api_real(c, r.measured_deflection - dq) : json_null());
-        json_object_set_new(dj, "closest_approach", api_real(c, gr_len_out(&u, rmin)));
+        json_object_set_new_nocheck(dj, "exact_elliptic",
+                                    ell_prec < 1e-3 ? api_real(c, dx) : json_null());
+        json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
+        json_object_set_new_nocheck(
+            dj, "exact_method",
+            json_string("exact: quadrature of the deflection integral in a form "
+                        "without cancellation; exact_elliptic: Byrd & Friedman "
+                        "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
+                        "(relative precision ~4e-16 pi / delta; null beyond "
+                        "1e-3)"));
+        json_object_set_new_nocheck(dj, "first_order", api_real(c, 4.0 / b));
+        json_object_set_new_nocheck(dj, "second_order",
+                                    api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
+        json_object_set_new_nocheck(dj, "measured_minus_exact",
+                                    has ? api_real(c, r.measured_deflection - dq) : json_null());
+        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, gr_len_out(&u, rmin)));
         json_t *as = json_object();
-        json_object_set_new(as, "measured",
-                            has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
-        json_object_set_new(as, "exact", api_real(c, dq * GR_ARCSEC));
-        json_object_set_new(as, "first_order", api_real(c, 4.0 / b * GR_ARCSEC));
-        json_object_set_new(dj, "arcsec", as);
-        json_object_set_new(out, "deflection", dj);
+        json_object_set_new_nocheck(
+            as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
+        json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
+        json_object_set_new_nocheck(as, "first_order", api_real(c, 4.0 / b * GR_ARCSEC));
+        json_object_set_new_nocheck(dj, "arcsec", as);
+        json_object_set_new_nocheck(out, "deflection", dj);
     }
 
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &ch, &r.stats);
     json_t *cj = json_object();
-    json_object_set_new(cj, "definition",
-                        json_string(photon
-                                        ? "g(k,k) = 0 with E = 1: residual (dr/dlambda)^2 + (1 - "
-                                          "r_s/r) L^2/r^2 - E^2"
-                                        : "g(u,u) = -c^2: residual (dr/dtau)^2/c^2 + V(r) - E^2"));
-    json_object_set_new(cj, "bound", api_real(c, p.constraint_bound));
-    json_object_set_new(cj, "max_relative", api_real(c, r.constraint_max_relative));
-    json_object_set_new(cj, "final_relative", api_real(c, r.constraint_final_relative));
+    json_object_set_new_nocheck(
+        cj, "definition",
+        json_string(photon ? "g(k,k) = 0 with E = 1: residual (dr/dlambda)^2 + (1 - "
+                             "r_s/r) L^2/r^2 - E^2"
+                           : "g(u,u) = -c^2: residual (dr/dtau)^2/c^2 + V(r) - E^2"));
+    json_object_set_new_nocheck(cj, "bound", api_real(c, p.constraint_bound));
+    json_object_set_new_nocheck(cj, "max_relative", api_real(c, r.constraint_max_relative));
+    json_object_set_new_nocheck(cj, "final_relative", api_real(c, r.constraint_final_relative));
     json_object_set_new(cj, photon ? "max_abs_g_kk" : "max_abs_g_uu_plus_1",
                         api_real(c, r.constraint_max_abs));
-    json_object_set_new(d, "constraint", cj);
-    json_object_set_new(d, "time_unit_of_the_scaled_state", api_real(c, gr_time_out(&u, T)));
-    json_object_set_new(d, "selection", api_integrator_block_selection(c, &ch));
-    json_object_set_new(out, "diagnostics", d);
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(d, "constraint", cj);
+    json_object_set_new_nocheck(d, "time_unit_of_the_scaled_state",
+                                api_real(c, gr_time_out(&u, T)));
+    json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new_nocheck(out, "diagnostics", d);
+    json_object_set_new_nocheck(out, "cost", json_object());
 done:
     free(sp);
     free(st_);

@@ -447,31 +447,36 @@ static json_t *check(struct api_call *c, const json_t *body)
     grade_tree(&g, want, value, ptr, sizeof ptr);
 
     json_t *out = json_object();
-    json_object_set_new(out, "correct", json_boolean(g.wrong == 0));
+    json_object_set_new_nocheck(out, "correct", json_boolean(g.wrong == 0));
     json_object_set(out, "expected", want);
-    json_object_set_new(out, "absolute_error", api_real(c, g.max_abs_err));
-    json_object_set_new(out, "relative_error", g.have_rel ? api_real(c, g.max_rel_err)
-                                                          : json_null());
+    json_object_set_new_nocheck(out, "absolute_error", api_real(c, g.max_abs_err));
+    json_object_set_new_nocheck(out, "relative_error",
+                                g.have_rel ? api_real(c, g.max_rel_err) : json_null());
     json_t *ta = json_object();
-    json_object_set_new(ta, "relative", g.rel >= 0 ? api_real(c, g.rel) : json_null());
-    json_object_set_new(ta, "absolute", g.abs_tol >= 0 ? api_real(c, g.abs_tol) : json_null());
-    json_object_set_new(ta, "significant_figures", g.sig > 0 ? json_integer(g.sig) : json_null());
-    json_object_set_new(ta, "defaulted", json_boolean(!given));
-    json_object_set_new(ta, "rule", json_string("any: correct when |value - expected| <= the "
-                                                "largest of the criteria and the recommended "
-                                                "tolerance"));
-    json_object_set_new(ta, "bound", api_real(c, g.max_bound));
-    json_object_set_new(out, "tolerance_applied", ta);
+    json_object_set_new_nocheck(ta, "relative", g.rel >= 0 ? api_real(c, g.rel) : json_null());
+    json_object_set_new_nocheck(ta, "absolute",
+                                g.abs_tol >= 0 ? api_real(c, g.abs_tol) : json_null());
+    json_object_set_new_nocheck(ta, "significant_figures",
+                                g.sig > 0 ? json_integer(g.sig) : json_null());
+    json_object_set_new_nocheck(ta, "defaulted", json_boolean(!given));
+    json_object_set_new_nocheck(ta, "rule",
+                                json_string("any: correct when |value - expected| <= the "
+                                            "largest of the criteria and the recommended "
+                                            "tolerance"));
+    json_object_set_new_nocheck(ta, "bound", api_real(c, g.max_bound));
+    json_object_set_new_nocheck(out, "tolerance_applied", ta);
     json_t *rt = json_object();
-    json_object_set_new(rt, "relative", api_real(c, rec_rel));
-    json_object_set_new(rt, "absolute", api_real(c, rec_abs));
-    json_object_set_new(rt, "basis", json_string(from_diag ? "diagnostics" : "closed_form"));
-    json_object_set_new(rt, "evidence", from_diag ? json_pack("{s:s,s:o}", "pointer", ev_where,
-                                                              "value", api_real(c, evidence))
-                                                  : json_null());
-    json_object_set_new(out, "recommended_tolerance", rt);
-    json_object_set_new(out, "compared", json_integer((json_int_t)g.count));
-    json_object_set_new(out, "wrong", g.wrong_ptrs);
+    json_object_set_new_nocheck(rt, "relative", api_real(c, rec_rel));
+    json_object_set_new_nocheck(rt, "absolute", api_real(c, rec_abs));
+    json_object_set_new_nocheck(rt, "basis",
+                                json_string(from_diag ? "diagnostics" : "closed_form"));
+    json_object_set_new_nocheck(
+        rt, "evidence",
+        from_diag ? json_pack("{s:s,s:o}", "pointer", ev_where, "value", api_real(c, evidence))
+                  : json_null());
+    json_object_set_new_nocheck(out, "recommended_tolerance", rt);
+    json_object_set_new_nocheck(out, "compared", json_integer((json_int_t)g.count));
+    json_object_set_new_nocheck(out, "wrong", g.wrong_ptrs);
     json_decref(res);
     return out;
 }
@@ -531,16 +536,17 @@ static json_t *batch(struct api_call *c, const json_t *body)
         int st;
         if (is_nested(op)) {
             res = api_problem_object(API_PROBLEM_VALIDATION, "cannot be nested in a batch");
-            json_object_set_new(res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr,
-                                                         "detail",
-                                                         "/v1/check and /v1/batch cannot be "
-                                                         "nested in a batch"));
+            json_object_set_new_nocheck(res, "errors",
+                                        json_pack("[{s:s,s:s}]", "pointer", opptr, "detail",
+                                                  "/v1/check and /v1/batch cannot be "
+                                                  "nested in a batch"));
             st = api_problem_status(API_PROBLEM_VALIDATION);
         } else if (c->budget.deadline > 0 && mech_clock_seconds() > c->budget.deadline) {
             res = api_problem_object(API_PROBLEM_BUDGET,
                                      "the batch's deadline passed before this operation started");
-            json_object_set_new(res, "progress", json_pack("{s:i,s:i}", "completed", (int)i,
-                                                           "total", (int)json_array_size(ops)));
+            json_object_set_new_nocheck(
+                res, "progress",
+                json_pack("{s:i,s:i}", "completed", (int)i, "total", (int)json_array_size(ops)));
             st = api_problem_status(API_PROBLEM_BUDGET);
         } else {
             st = api_run_operation(c, op, json_object_get(item, "request"), prefix, &res);
@@ -548,8 +554,8 @@ static json_t *batch(struct api_call *c, const json_t *body)
                 char d[200];
                 snprintf(d, sizeof d, "no POST operation at %.120s; GET /v1 lists them", op);
                 res = api_problem_object(API_PROBLEM_VALIDATION, d);
-                json_object_set_new(res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr,
-                                                             "detail", d));
+                json_object_set_new_nocheck(
+                    res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr, "detail", d));
                 st = api_problem_status(API_PROBLEM_VALIDATION);
             }
         }

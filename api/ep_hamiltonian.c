@@ -274,21 +274,22 @@ static json_t *names_array(const struct mech_ham_system *s, int momenta)
 static json_t *system_info(const struct mech_ham_system *s, const json_t *js)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "name", json_string(kind_names[s->kind]));
+    json_object_set_new_nocheck(o, "name", json_string(kind_names[s->kind]));
     if (s->kind == MECH_HAM_POTENTIAL_3D)
-        json_object_set_new(o, "potential", json_string(api_string(js, "potential", "harmonic")));
-    json_object_set_new(o, "hamiltonian",
-                        json_string(hamiltonian_text(s, api_string(js, "potential", ""))));
-    json_object_set_new(o, "degrees_of_freedom", json_integer(s->dof));
-    json_object_set_new(o, "coordinates", names_array(s, 0));
-    json_object_set_new(o, "momenta", names_array(s, 1));
+        json_object_set_new_nocheck(o, "potential",
+                                    json_string(api_string(js, "potential", "harmonic")));
+    json_object_set_new_nocheck(o, "hamiltonian",
+                                json_string(hamiltonian_text(s, api_string(js, "potential", ""))));
+    json_object_set_new_nocheck(o, "degrees_of_freedom", json_integer(s->dof));
+    json_object_set_new_nocheck(o, "coordinates", names_array(s, 0));
+    json_object_set_new_nocheck(o, "momenta", names_array(s, 1));
     json_t *cyc = json_array();
     struct mech_ham_conserved cl[MECH_HAM_MAX_CONSERVED];
     const size_t nc = mech_ham_conserved_list(s, cl);
     for (size_t k = 0; k < nc; k++)
         if (cl[k].cyclic) json_array_append_new(cyc, json_string(mech_ham_coordinate_name(s, cl[k].index)));
-    json_object_set_new(o, "cyclic_coordinates", cyc);
-    json_object_set_new(o, "separable", json_boolean(mech_ham_separable(s, NULL)));
+    json_object_set_new_nocheck(o, "cyclic_coordinates", cyc);
+    json_object_set_new_nocheck(o, "separable", json_boolean(mech_ham_separable(s, NULL)));
     return o;
 }
 
@@ -393,17 +394,17 @@ static json_t *ham_selection(struct api_call *c, const struct ham_integ *hi)
 {
     if (!hi->own) return api_integrator_block_selection(c, &hi->ch);
     json_t *sel = json_object();
-    json_object_set_new(sel, "requested",
-                        hi->ch.requested ? json_deep_copy(hi->ch.requested) : json_null());
-    json_object_set_new(sel, "method", json_string(hi->ch.method));
+    json_object_set_new_nocheck(sel, "requested",
+                                hi->ch.requested ? json_deep_copy(hi->ch.requested) : json_null());
+    json_object_set_new_nocheck(sel, "method", json_string(hi->ch.method));
     if (mech_ode_method_describe(hi->m).adaptive) {
-        json_object_set_new(sel, "rtol", api_real(c, hi->ch.opt.rtol));
-        json_object_set_new(sel, "atol", api_real(c, hi->ch.opt.atol));
+        json_object_set_new_nocheck(sel, "rtol", api_real(c, hi->ch.opt.rtol));
+        json_object_set_new_nocheck(sel, "atol", api_real(c, hi->ch.opt.atol));
     } else {
-        json_object_set_new(sel, "dt", api_real(c, hi->ch.opt.dt));
+        json_object_set_new_nocheck(sel, "dt", api_real(c, hi->ch.opt.dt));
     }
-    if (hi->ch.chosen) json_object_set_new(sel, "target_error", api_real(c, hi->ch.target));
-    json_object_set_new(sel, "reason", json_string(hi->reason));
+    if (hi->ch.chosen) json_object_set_new_nocheck(sel, "target_error", api_real(c, hi->ch.target));
+    json_object_set_new_nocheck(sel, "reason", json_string(hi->reason));
     return sel;
 }
 
@@ -412,11 +413,12 @@ static json_t *ham_diagnostics(struct api_call *c, const struct ham_integ *hi,
 {
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &hi->ch, st);
-    json_object_set_new(d, "symplectic", json_boolean(mech_ode_method_describe(hi->m).symplectic));
-    json_object_set_new(d, "form", json_string(second_order ? "second-order (q, v = p/M)"
-                                                            : "first-order (q, p)"));
-    json_object_set_new(d, "time_scale", api_real(c, tau));
-    json_object_set_new(d, "selection", ham_selection(c, hi));
+    json_object_set_new_nocheck(d, "symplectic",
+                                json_boolean(mech_ode_method_describe(hi->m).symplectic));
+    json_object_set_new_nocheck(
+        d, "form", json_string(second_order ? "second-order (q, v = p/M)" : "first-order (q, p)"));
+    json_object_set_new_nocheck(d, "time_scale", api_real(c, tau));
+    json_object_set_new_nocheck(d, "selection", ham_selection(c, hi));
     return d;
 }
 
@@ -428,10 +430,10 @@ static json_t *real_or_null(struct api_call *c, double x)
 static json_t *drift_json(struct api_call *c, const struct mech_ham_drift *d)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "initial", api_real(c, d->initial));
-    json_object_set_new(o, "final", api_real(c, d->final));
-    json_object_set_new(o, "max_abs_drift", api_real(c, d->max_abs));
-    json_object_set_new(o, "max_rel_drift", real_or_null(c, d->max_rel));
+    json_object_set_new_nocheck(o, "initial", api_real(c, d->initial));
+    json_object_set_new_nocheck(o, "final", api_real(c, d->final));
+    json_object_set_new_nocheck(o, "max_abs_drift", api_real(c, d->max_abs));
+    json_object_set_new_nocheck(o, "max_rel_drift", real_or_null(c, d->max_rel));
     return o;
 }
 
@@ -442,11 +444,11 @@ static json_t *conserved_json(struct api_call *c, const struct mech_ham_system *
     json_t *a = json_array();
     for (size_t k = 0; k < n; k++) {
         json_t *o = drift_json(c, &dr[k]);
-        json_object_set_new(o, "name", json_string(cl[k].name));
-        json_object_set_new(o, "kind", json_string(cl[k].cyclic ? "cyclic" : "symmetry"));
-        json_object_set_new(o, "coordinate", cl[k].cyclic
-                                                 ? json_string(mech_ham_coordinate_name(s, cl[k].index))
-                                                 : json_null());
+        json_object_set_new_nocheck(o, "name", json_string(cl[k].name));
+        json_object_set_new_nocheck(o, "kind", json_string(cl[k].cyclic ? "cyclic" : "symmetry"));
+        json_object_set_new_nocheck(
+            o, "coordinate",
+            cl[k].cyclic ? json_string(mech_ham_coordinate_name(s, cl[k].index)) : json_null());
         json_array_append_new(a, o);
     }
     return a;
@@ -461,7 +463,7 @@ static json_t *apsides(struct api_call *c, const struct mech_ham_system *s, cons
     enum { MAXP = 1000 };
     json_t *o = json_object();
     if (y0[3] == 0.0) {
-        json_object_set_new(o, "note", json_string("p_phi = 0: radial motion, no apsides"));
+        json_object_set_new_nocheck(o, "note", json_string("p_phi = 0: radial motion, no apsides"));
         return o;
     }
     double *buf = malloc(7 * MAXP * sizeof *buf);
@@ -504,22 +506,25 @@ static json_t *apsides(struct api_call *c, const struct mech_ham_system *s, cons
         json_array_append_new(jp, api_real(c, pr.y[4 * k + 1]));
     }
     json_t *pc = json_object();
-    json_object_set_new(pc, "t", jt);
-    json_object_set_new(pc, "r", jr);
-    json_object_set_new(pc, "phi", jp);
-    json_object_set_new(o, "pericentres", pc);
+    json_object_set_new_nocheck(pc, "t", jt);
+    json_object_set_new_nocheck(pc, "r", jr);
+    json_object_set_new_nocheck(pc, "phi", jp);
+    json_object_set_new_nocheck(o, "pericentres", pc);
     const size_t n = pr.n_crossings;
-    json_object_set_new(o, "apsidal_angle_measured",
-                        n >= 2 ? api_real(c, (pr.y[4 * (n - 1) + 1] - pr.y[1]) / (2.0 * (double)(n - 1)))
-                               : json_null());
-    json_object_set_new(o, "apsidal_angle_near_circular",
-                        s->power > -2.0 ? api_real(c, H_PI / sqrt(s->power + 2.0)) : json_null());
-    json_object_set_new(o, "note",
-                        json_string("pericentres are p_r = 0 crossings upwards, located by "
-                                    "root-finding with the flow's method; the measured apsidal "
-                                    "angle is the mean pericentre-to-pericentre angle / 2; "
-                                    "pi/sqrt(n+2) is its limit for near-circular orbits "
-                                    "(Goldstein §3.6)"));
+    json_object_set_new_nocheck(
+        o, "apsidal_angle_measured",
+        n >= 2 ? api_real(c, (pr.y[4 * (n - 1) + 1] - pr.y[1]) / (2.0 * (double)(n - 1)))
+               : json_null());
+    json_object_set_new_nocheck(o, "apsidal_angle_near_circular",
+                                s->power > -2.0 ? api_real(c, H_PI / sqrt(s->power + 2.0))
+                                                : json_null());
+    json_object_set_new_nocheck(
+        o, "note",
+        json_string("pericentres are p_r = 0 crossings upwards, located by "
+                    "root-finding with the flow's method; the measured apsidal "
+                    "angle is the mean pericentre-to-pericentre angle / 2; "
+                    "pi/sqrt(n+2) is its limit for near-circular orbits "
+                    "(Goldstein §3.6)"));
     free(buf);
     return o;
 }
@@ -559,31 +564,34 @@ static json_t *flow(struct api_call *c, const json_t *body)
         goto done;
     }
     out = json_object();
-    json_object_set_new(out, "system", system_info(&s, js));
-    json_object_set_new(out, "t", api_reals(c, t, r.n_samples));
+    json_object_set_new_nocheck(out, "system", system_info(&s, js));
+    json_object_set_new_nocheck(out, "t", api_reals(c, t, r.n_samples));
     json_t *jq = json_array(), *jp = json_array();
     for (size_t i = 0; i < r.n_samples; i++) {
         json_array_append_new(jq, api_reals(c, y + i * dim, n));
         json_array_append_new(jp, api_reals(c, y + i * dim + n, n));
     }
-    json_object_set_new(out, "q", jq);
-    json_object_set_new(out, "p", jp);
-    json_object_set_new(out, "energy", drift_json(c, &r.energy));
-    json_object_set_new(out, "conserved",
-                        conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
+    json_object_set_new_nocheck(out, "q", jq);
+    json_object_set_new_nocheck(out, "p", jp);
+    json_object_set_new_nocheck(out, "energy", drift_json(c, &r.energy));
+    json_object_set_new_nocheck(
+        out, "conserved", conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
     if (s.kind == MECH_HAM_SPHERICAL_PENDULUM && y0[0] > 0.0 && y0[0] < 0.5 * H_PI) {
         /* theta'' = 0: p_phi^2 cos/(m l^2 sin^3) = m g l sin -> phi' = sqrt(g/(l cos theta0)) */
         const double wphi = sqrt(s.g / (s.length * cos(y0[0])));
         const double sn = sin(y0[0]);
         json_t *co = json_object();
-        json_object_set_new(co, "theta", api_real(c, y0[0]));
-        json_object_set_new(co, "phi_dot", api_real(c, wphi));
-        json_object_set_new(co, "p_phi", api_real(c, s.mass * s.length * s.length * sn * sn * wphi));
-        json_object_set_new(co, "period", wphi > 0.0 ? api_real(c, 2.0 * H_PI / wphi) : json_null());
-        json_object_set_new(co, "note", json_string("conical motion at this theta: start with "
-                                                    "p_theta = 0 and this p_phi and theta stays "
-                                                    "constant, phi' = sqrt(g/(l cos theta))"));
-        json_object_set_new(out, "conical_motion", co);
+        json_object_set_new_nocheck(co, "theta", api_real(c, y0[0]));
+        json_object_set_new_nocheck(co, "phi_dot", api_real(c, wphi));
+        json_object_set_new_nocheck(co, "p_phi",
+                                    api_real(c, s.mass * s.length * s.length * sn * sn * wphi));
+        json_object_set_new_nocheck(co, "period",
+                                    wphi > 0.0 ? api_real(c, 2.0 * H_PI / wphi) : json_null());
+        json_object_set_new_nocheck(co, "note",
+                                    json_string("conical motion at this theta: start with "
+                                                "p_theta = 0 and this p_phi and theta stays "
+                                                "constant, phi' = sqrt(g/(l cos theta))"));
+        json_object_set_new_nocheck(out, "conical_motion", co);
     }
     if (s.kind == MECH_HAM_CENTRAL) {
         const double Kn = s.strength * s.power, r0 = y0[0];
@@ -591,11 +599,12 @@ static json_t *flow(struct api_call *c, const json_t *body)
             /* dH/dr = 0 with p_r = 0: p_phi^2 = m k n r^(n+2); period 2 pi m r^2 / p_phi */
             const double pc = sqrt(s.mass * Kn * pow(r0, s.power + 2.0));
             json_t *co = json_object();
-            json_object_set_new(co, "r", api_real(c, r0));
-            json_object_set_new(co, "p_phi", api_real(c, pc));
-            json_object_set_new(co, "period", api_real(c, 2.0 * H_PI * s.mass * r0 * r0 / pc));
-            json_object_set_new(co, "stable", json_boolean(s.power > -2.0));
-            json_object_set_new(out, "circular_orbit", co);
+            json_object_set_new_nocheck(co, "r", api_real(c, r0));
+            json_object_set_new_nocheck(co, "p_phi", api_real(c, pc));
+            json_object_set_new_nocheck(co, "period",
+                                        api_real(c, 2.0 * H_PI * s.mass * r0 * r0 / pc));
+            json_object_set_new_nocheck(co, "stable", json_boolean(s.power > -2.0));
+            json_object_set_new_nocheck(out, "circular_orbit", co);
         }
         int failed = 0;
         json_t *ap = apsides(c, &s, y0, t_end, &hi, r.stats.steps, &failed);
@@ -604,10 +613,11 @@ static json_t *flow(struct api_call *c, const json_t *body)
             out = NULL;
             goto done;
         }
-        if (ap) json_object_set_new(out, "apsides", ap);
+        if (ap) json_object_set_new_nocheck(out, "apsides", ap);
     }
-    json_object_set_new(out, "diagnostics", ham_diagnostics(c, &hi, &r.stats, r.second_order, tau));
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(out, "diagnostics",
+                                ham_diagnostics(c, &hi, &r.stats, r.second_order, tau));
+    json_object_set_new_nocheck(out, "cost", json_object());
 done:
     free(t);
     free(y);
@@ -775,77 +785,84 @@ static json_t *liouville(struct api_call *c, const json_t *body)
         }
     }
     out = json_object();
-    json_object_set_new(out, "system", system_info(&s, js));
-    json_object_set_new(out, "measured",
-                        json_string("A = (1/2) sum_i oint (q_i dp_i - p_i dq_i) over the image of "
-                                    "the closed curve (Poincare's integral invariant; 1 degree of "
-                                    "freedom: the enclosed (q, p) area, counter-clockwise "
-                                    "positive; more: the sum of the oriented areas of the "
-                                    "projections on the (q_i, p_i) planes). Each edge / arc is "
-                                    "split into intervals carrying 15 Gauss-Kronrod nodes whose "
-                                    "orbits are integrated with their tangent vectors "
-                                    "(variational equations, same method), so the image curve is "
-                                    "never approximated by a polygon; intervals are halved until "
-                                    "the summed |Kronrod - Gauss| bound is below tol |A0|. "
-                                    "vertex_polygon_area: the shoelace area of the vertex images "
-                                    "(compensated), which changes as the edges bend. The tangent "
-                                    "map Phi = dy(t)/dy(0) along the reference orbit comes from "
-                                    "the variational equations with the same method: det Phi = 1 "
-                                    "is Liouville's theorem, Phi^T J Phi = J symplecticity."));
+    json_object_set_new_nocheck(out, "system", system_info(&s, js));
+    json_object_set_new_nocheck(
+        out, "measured",
+        json_string("A = (1/2) sum_i oint (q_i dp_i - p_i dq_i) over the image of "
+                    "the closed curve (Poincare's integral invariant; 1 degree of "
+                    "freedom: the enclosed (q, p) area, counter-clockwise "
+                    "positive; more: the sum of the oriented areas of the "
+                    "projections on the (q_i, p_i) planes). Each edge / arc is "
+                    "split into intervals carrying 15 Gauss-Kronrod nodes whose "
+                    "orbits are integrated with their tangent vectors "
+                    "(variational equations, same method), so the image curve is "
+                    "never approximated by a polygon; intervals are halved until "
+                    "the summed |Kronrod - Gauss| bound is below tol |A0|. "
+                    "vertex_polygon_area: the shoelace area of the vertex images "
+                    "(compensated), which changes as the edges bend. The tangent "
+                    "map Phi = dy(t)/dy(0) along the reference orbit comes from "
+                    "the variational equations with the same method: det Phi = 1 "
+                    "is Liouville's theorem, Phi^T J Phi = J symplecticity."));
     if (cloud)
-        json_object_set_new(out, "measured",
-                            json_string("a cloud: its covariance volume sqrt(det C) (C the "
-                                        "covariance of the points in phase space; conserved "
-                                        "exactly by linear volume-preserving maps, C -> A C A^T) "
-                                        "and, for dim + 1 points, the volume |det(x_i - x_0)|/dim! "
-                                        "of their simplex. Under a nonlinear flow neither is the "
-                                        "volume of the image region (they differ at O(cloud size "
-                                        "/ flow scale)); Liouville's theorem itself is det Phi = 1 "
-                                        "along the reference orbit (the cloud's mean), from the "
-                                        "variational equations with the same method."));
+        json_object_set_new_nocheck(
+            out, "measured",
+            json_string("a cloud: its covariance volume sqrt(det C) (C the "
+                        "covariance of the points in phase space; conserved "
+                        "exactly by linear volume-preserving maps, C -> A C A^T) "
+                        "and, for dim + 1 points, the volume |det(x_i - x_0)|/dim! "
+                        "of their simplex. Under a nonlinear flow neither is the "
+                        "volume of the image region (they differ at O(cloud size "
+                        "/ flow scale)); Liouville's theorem itself is det Phi = 1 "
+                        "along the reference orbit (the cloud's mean), from the "
+                        "variational equations with the same method."));
     json_object_set_new(out, cloud ? "covariance_volume_initial" : "area_initial",
                         api_real(c, r[0].area0));
-    json_object_set_new(out, "t", api_reals(c, r[0].t, ns));
-    json_object_set_new(out, "reference_start", api_reals(c, y_ref, dim));
+    json_object_set_new_nocheck(out, "t", api_reals(c, r[0].t, ns));
+    json_object_set_new_nocheck(out, "reference_start", api_reals(c, y_ref, dim));
     runs = json_array();
     for (size_t k = 0; k < nrun; k++) {
         json_t *o = json_object();
         const struct mech_liouville_result *x = &r[k];
-        json_object_set_new(o, "method", json_string(hi[k].ch.method));
-        json_object_set_new(o, "symplectic",
-                            json_boolean(mech_ode_method_describe(hi[k].m).symplectic));
+        json_object_set_new_nocheck(o, "method", json_string(hi[k].ch.method));
+        json_object_set_new_nocheck(o, "symplectic",
+                                    json_boolean(mech_ode_method_describe(hi[k].m).symplectic));
         if (cloud) {
-            json_object_set_new(o, "covariance_volume", api_reals(c, x->area, ns));
+            json_object_set_new_nocheck(o, "covariance_volume", api_reals(c, x->area, ns));
             if (p.n_vertices == dim + 1)
-                json_object_set_new(o, "simplex_volume", api_reals(c, x->vertex_area, ns));
-            json_object_set_new(o, "max_relative_covariance_volume_drift",
-                                api_real(c, x->max_rel_area_drift));
+                json_object_set_new_nocheck(o, "simplex_volume", api_reals(c, x->vertex_area, ns));
+            json_object_set_new_nocheck(o, "max_relative_covariance_volume_drift",
+                                        api_real(c, x->max_rel_area_drift));
         } else {
-            json_object_set_new(o, "area", api_reals(c, x->area, ns));
-            json_object_set_new(o, "area_quadrature_bound", api_reals(c, x->area_bound, ns));
+            json_object_set_new_nocheck(o, "area", api_reals(c, x->area, ns));
+            json_object_set_new_nocheck(o, "area_quadrature_bound",
+                                        api_reals(c, x->area_bound, ns));
             if (polygon)
-                json_object_set_new(o, "vertex_polygon_area", api_reals(c, x->vertex_area, ns));
-            json_object_set_new(o, "max_relative_area_drift", api_real(c, x->max_rel_area_drift));
+                json_object_set_new_nocheck(o, "vertex_polygon_area",
+                                            api_reals(c, x->vertex_area, ns));
+            json_object_set_new_nocheck(o, "max_relative_area_drift",
+                                        api_real(c, x->max_rel_area_drift));
         }
-        json_object_set_new(o, "det_tangent_map", api_reals(c, x->det, ns));
-        json_object_set_new(o, "symplectic_defect", api_reals(c, x->symplectic_defect, ns));
-        json_object_set_new(o, "max_det_drift", api_real(c, x->max_det_drift));
-        json_object_set_new(o, "max_symplectic_defect", api_real(c, x->max_symplectic_defect));
+        json_object_set_new_nocheck(o, "det_tangent_map", api_reals(c, x->det, ns));
+        json_object_set_new_nocheck(o, "symplectic_defect", api_reals(c, x->symplectic_defect, ns));
+        json_object_set_new_nocheck(o, "max_det_drift", api_real(c, x->max_det_drift));
+        json_object_set_new_nocheck(o, "max_symplectic_defect",
+                                    api_real(c, x->max_symplectic_defect));
         if (!cloud) {
-            json_object_set_new(o, "quadrature_converged", json_boolean(x->converged));
-            json_object_set_new(o, "max_relative_quadrature_bound",
-                                api_real(c, x->max_area_bound_rel));
-            json_object_set_new(o, "intervals", json_integer((json_int_t)x->n_intervals));
+            json_object_set_new_nocheck(o, "quadrature_converged", json_boolean(x->converged));
+            json_object_set_new_nocheck(o, "max_relative_quadrature_bound",
+                                        api_real(c, x->max_area_bound_rel));
+            json_object_set_new_nocheck(o, "intervals", json_integer((json_int_t)x->n_intervals));
         }
-        json_object_set_new(o, "node_trajectories", json_integer(x->trajectories));
+        json_object_set_new_nocheck(o, "node_trajectories", json_integer(x->trajectories));
         json_t *ro = json_array();
         for (size_t i = 0; i < ns; i++) json_array_append_new(ro, api_reals(c, x->reference_y + i * dim, dim));
-        json_object_set_new(o, "reference_orbit", ro);
-        json_object_set_new(o, "diagnostics", ham_diagnostics(c, &hi[k], &x->stats, x->second_order, tau));
+        json_object_set_new_nocheck(o, "reference_orbit", ro);
+        json_object_set_new_nocheck(o, "diagnostics",
+                                    ham_diagnostics(c, &hi[k], &x->stats, x->second_order, tau));
         json_array_append_new(runs, o);
     }
-    json_object_set_new(out, "runs", runs);
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(out, "runs", runs);
+    json_object_set_new_nocheck(out, "cost", json_object());
     goto done;
 nomem : {
     struct mech_error e;
@@ -963,10 +980,10 @@ static json_t *poincare(struct api_call *c, const json_t *body)
         second_order = r.second_order;
         json_t *jo = json_object();
         json_t *st0 = json_object();
-        json_object_set_new(st0, "q", api_reals(c, y0 + 4 * k, 2));
-        json_object_set_new(st0, "p", api_reals(c, y0 + 4 * k + 2, 2));
-        json_object_set_new(jo, "start", st0);
-        json_object_set_new(jo, "t", api_reals(c, r.t, r.n_crossings));
+        json_object_set_new_nocheck(st0, "q", api_reals(c, y0 + 4 * k, 2));
+        json_object_set_new_nocheck(st0, "p", api_reals(c, y0 + 4 * k + 2, 2));
+        json_object_set_new_nocheck(jo, "start", st0);
+        json_object_set_new_nocheck(jo, "t", api_reals(c, r.t, r.n_crossings));
         json_t *pts = json_array();
         const int wrap = !strcmp(mech_ham_coordinate_name(&s, o), "phi");
         for (size_t i = 0; i < r.n_crossings; i++) {
@@ -977,35 +994,39 @@ static json_t *poincare(struct api_call *c, const json_t *body)
             }
             json_array_append_new(pts, api_reals(c, uv, 2));
         }
-        json_object_set_new(jo, "points", pts);
-        json_object_set_new(jo, "crossings", json_integer((json_int_t)r.n_crossings));
-        json_object_set_new(jo, "complete", json_boolean(r.complete));
-        json_object_set_new(jo, "t_reached", api_real(c, r.t_reached));
-        json_object_set_new(jo, "max_section_residual", api_real(c, r.max_section_residual));
-        json_object_set_new(jo, "energy", drift_json(c, &r.energy));
-        json_object_set_new(jo, "conserved",
-                            conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
-        json_object_set_new(jo, "steps", json_integer(r.stats.steps));
+        json_object_set_new_nocheck(jo, "points", pts);
+        json_object_set_new_nocheck(jo, "crossings", json_integer((json_int_t)r.n_crossings));
+        json_object_set_new_nocheck(jo, "complete", json_boolean(r.complete));
+        json_object_set_new_nocheck(jo, "t_reached", api_real(c, r.t_reached));
+        json_object_set_new_nocheck(jo, "max_section_residual",
+                                    api_real(c, r.max_section_residual));
+        json_object_set_new_nocheck(jo, "energy", drift_json(c, &r.energy));
+        json_object_set_new_nocheck(
+            jo, "conserved", conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
+        json_object_set_new_nocheck(jo, "steps", json_integer(r.stats.steps));
         json_array_append_new(jorb, jo);
     }
     out = json_object();
-    json_object_set_new(out, "system", system_info(&s, js));
+    json_object_set_new_nocheck(out, "system", system_info(&s, js));
     json_t *sj_out = json_object();
-    json_object_set_new(sj_out, "coordinate", json_string(mech_ham_coordinate_name(&s, sec.index)));
-    json_object_set_new(sj_out, "value", api_real(c, sec.value));
-    json_object_set_new(sj_out, "direction",
-                        json_string(sec.angle ? "in the direction of rotation (sign of p_phi), "
-                                                "phi taken modulo 2 pi"
-                                              : "increasing (its momentum > 0)"));
+    json_object_set_new_nocheck(sj_out, "coordinate",
+                                json_string(mech_ham_coordinate_name(&s, sec.index)));
+    json_object_set_new_nocheck(sj_out, "value", api_real(c, sec.value));
+    json_object_set_new_nocheck(sj_out, "direction",
+                                json_string(sec.angle
+                                                ? "in the direction of rotation (sign of p_phi), "
+                                                  "phi taken modulo 2 pi"
+                                                : "increasing (its momentum > 0)"));
     json_t *plane = json_array();
     json_array_append_new(plane, json_string(mech_ham_coordinate_name(&s, o)));
     json_array_append_new(plane, json_string(mech_ham_momentum_name(&s, o)));
-    json_object_set_new(sj_out, "plane", plane);
-    json_object_set_new(out, "section", sj_out);
-    json_object_set_new(out, "orbits", jorb);
+    json_object_set_new_nocheck(sj_out, "plane", plane);
+    json_object_set_new_nocheck(out, "section", sj_out);
+    json_object_set_new_nocheck(out, "orbits", jorb);
     jorb = NULL;
-    json_object_set_new(out, "diagnostics", ham_diagnostics(c, &hi, &total, second_order, tau));
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(out, "diagnostics",
+                                ham_diagnostics(c, &hi, &total, second_order, tau));
+    json_object_set_new_nocheck(out, "cost", json_object());
 done:
     json_decref(jorb);
     free(y0);

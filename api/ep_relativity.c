@@ -88,11 +88,12 @@ static json_t *boost_op(struct api_call *c, const json_t *body)
         for (size_t i = 0; vs && i < n; i++)
             json_array_append_new(vs, api_reals(c, out + 4 * i, 4));
     }
-    json_object_set_new(res, "vectors", vs);
+    json_object_set_new_nocheck(res, "vectors", vs);
     api_velocity_describe(c, &b, res);
-    json_object_set_new(res, "invariants_before",
-                        single ? api_real(c, ib[0]) : api_reals(c, ib, n));
-    json_object_set_new(res, "invariants_after", single ? api_real(c, ia[0]) : api_reals(c, ia, n));
+    json_object_set_new_nocheck(res, "invariants_before",
+                                single ? api_real(c, ib[0]) : api_reals(c, ib, n));
+    json_object_set_new_nocheck(res, "invariants_after",
+                                single ? api_real(c, ia[0]) : api_reals(c, ia, n));
     free(x);
     if (!res || !vs) {
         json_decref(res);

@@ -88,11 +88,11 @@ static json_t *velocity_in_frame(struct api_call *c, const json_t *vel, const st
             json_decref(res);
             return api_call_fail_core(c, MECH_ENUMERIC, &e, "");
         }
-        json_object_set_new(res, "light", json_true());
-        json_object_set_new(res, "direction", api_vec3(c, k));
-        json_object_set_new(res, "beta", api_vec3(c, k));
-        json_object_set_new(res, "one_minus_beta", api_real(c, 0.0));
-        json_object_set_new(res, "frequency_ratio", api_real(c, ratio));
+        json_object_set_new_nocheck(res, "light", json_true());
+        json_object_set_new_nocheck(res, "direction", api_vec3(c, k));
+        json_object_set_new_nocheck(res, "beta", api_vec3(c, k));
+        json_object_set_new_nocheck(res, "one_minus_beta", api_real(c, 0.0));
+        json_object_set_new_nocheck(res, "frequency_ratio", api_real(c, ratio));
         return res;
     }
     struct mech_boost o, r;
@@ -111,7 +111,7 @@ static json_t *velocity_in_frame(struct api_call *c, const json_t *vel, const st
     api_velocity_describe(c, &r, res);
     json_t *given = json_object();
     api_velocity_describe(c, &o, given);
-    json_object_set_new(res, "object_velocity", given);
+    json_object_set_new_nocheck(res, "object_velocity", given);
     return res;
 }
 
@@ -146,14 +146,15 @@ static json_t *composition(struct api_call *c, const json_t *list)
     json_t *res = json_object();
     json_t *v = json_object();
     api_velocity_describe(c, &comp.total, v);
-    json_object_set_new(res, "velocity", v);
+    json_object_set_new_nocheck(res, "velocity", v);
     json_t *w = json_object();
-    json_object_set_new(w, "angle", api_real(c, comp.angle));
-    json_object_set_new(w, "angle_deg", api_real(c, comp.angle * (180.0 / 3.14159265358979323846)));
-    json_object_set_new(w, "axis", comp.angle > 0 ? api_vec3(c, comp.axis) : json_null());
-    json_object_set_new(w, "quaternion", api_reals(c, comp.quaternion, 4));
-    json_object_set_new(w, "matrix", api_mat3(c, comp.rotation));
-    json_object_set_new(res, "wigner_rotation", w);
+    json_object_set_new_nocheck(w, "angle", api_real(c, comp.angle));
+    json_object_set_new_nocheck(w, "angle_deg",
+                                api_real(c, comp.angle * (180.0 / 3.14159265358979323846)));
+    json_object_set_new_nocheck(w, "axis", comp.angle > 0 ? api_vec3(c, comp.axis) : json_null());
+    json_object_set_new_nocheck(w, "quaternion", api_reals(c, comp.quaternion, 4));
+    json_object_set_new_nocheck(w, "matrix", api_mat3(c, comp.rotation));
+    json_object_set_new_nocheck(res, "wigner_rotation", w);
     /* Λ = R B(total): B's rows (notes §3.9, boost in an arbitrary direction). */
     const struct mech_boost *t = &comp.total;
     double B[4][4], n3[3] = {t->direction.x, t->direction.y, t->direction.z};
@@ -172,7 +173,7 @@ static json_t *composition(struct api_call *c, const json_t *list)
                       comp.rotation.a[i][2] * B[3][nu];
         json_array_append_new(L, api_reals(c, row, 4));
     }
-    json_object_set_new(res, "lorentz_matrix", L);
+    json_object_set_new_nocheck(res, "lorentz_matrix", L);
     return res;
 }
 
@@ -209,10 +210,10 @@ static json_t *velocity_addition_op(struct api_call *c, const json_t *body)
             json_object_set(res, "object_velocity", given);
             json_object_del(vin, "object_velocity");
         }
-        json_object_set_new(res, "velocity_in_frame", vin);
+        json_object_set_new_nocheck(res, "velocity_in_frame", vin);
         json_t *fd = json_object();
         api_velocity_describe(c, &f, fd);
-        json_object_set_new(res, "frame_velocity", fd);
+        json_object_set_new_nocheck(res, "frame_velocity", fd);
     }
     if (list) {
         json_t *comp = composition(c, list);
@@ -220,7 +221,7 @@ static json_t *velocity_addition_op(struct api_call *c, const json_t *body)
             json_decref(res);
             return NULL;
         }
-        json_object_set_new(res, "composition", comp);
+        json_object_set_new_nocheck(res, "composition", comp);
     }
     return res;
 }
@@ -292,23 +293,24 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
 
     static const char *const kinds[] = {"timelike", "spacelike", "lightlike"};
     json_t *res = json_object();
-    json_object_set_new(res, "delta", api_reals(c, iv.delta, 4));
-    json_object_set_new(res, "s2", api_real(c, iv.s2));
-    json_object_set_new(res, "kind", json_string(kinds[iv.kind]));
-    json_object_set_new(res, "lightlike_tolerance", api_real(c, iv.tolerance));
-    json_object_set_new(res, "s2_input_uncertainty", api_real(c, iv.input_error));
-    json_object_set_new(res, "coincident", json_boolean(iv.coincident));
+    json_object_set_new_nocheck(res, "delta", api_reals(c, iv.delta, 4));
+    json_object_set_new_nocheck(res, "s2", api_real(c, iv.s2));
+    json_object_set_new_nocheck(res, "kind", json_string(kinds[iv.kind]));
+    json_object_set_new_nocheck(res, "lightlike_tolerance", api_real(c, iv.tolerance));
+    json_object_set_new_nocheck(res, "s2_input_uncertainty", api_real(c, iv.input_error));
+    json_object_set_new_nocheck(res, "coincident", json_boolean(iv.coincident));
     if (iv.kind == MECH_INTERVAL_TIMELIKE) {
-        json_object_set_new(res, "proper_time", api_real(c, iv.proper / c_light));
-        json_object_set_new(res, "proper_time_ct", api_real(c, iv.proper));
+        json_object_set_new_nocheck(res, "proper_time", api_real(c, iv.proper / c_light));
+        json_object_set_new_nocheck(res, "proper_time_ct", api_real(c, iv.proper));
     } else if (iv.kind == MECH_INTERVAL_SPACELIKE) {
-        json_object_set_new(res, "proper_length", api_real(c, iv.proper));
+        json_object_set_new_nocheck(res, "proper_length", api_real(c, iv.proper));
     }
-    json_object_set_new(res, "time_order",
-                        json_string(iv.delta[0] > 0   ? "first_before_second"
-                                    : iv.delta[0] < 0 ? "second_before_first"
-                                                      : "simultaneous"));
-    json_object_set_new(res, "time_order_reversible", json_boolean(iv.time_order_reversible));
+    json_object_set_new_nocheck(res, "time_order",
+                                json_string(iv.delta[0] > 0   ? "first_before_second"
+                                            : iv.delta[0] < 0 ? "second_before_first"
+                                                              : "simultaneous"));
+    json_object_set_new_nocheck(res, "time_order_reversible",
+                                json_boolean(iv.time_order_reversible));
     if (iv.has_frame) {
         json_t *f = json_object();
         json_object_set_new(
@@ -316,10 +318,10 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
             json_string(iv.kind == MECH_INTERVAL_TIMELIKE ? "co-located" : "simultaneous"));
         json_t *v = json_object();
         api_velocity_describe(c, &iv.frame, v);
-        json_object_set_new(f, "velocity", v);
-        json_object_set_new(res, "example_frame", f);
+        json_object_set_new_nocheck(f, "velocity", v);
+        json_object_set_new_nocheck(res, "example_frame", f);
     } else {
-        json_object_set_new(res, "example_frame", json_null());
+        json_object_set_new_nocheck(res, "example_frame", json_null());
     }
     return res;
 }
@@ -459,8 +461,8 @@ static json_t *telescope(struct api_call *c, const char *from_key, double from, 
     json_t *o = json_object();
     json_object_set_new(o, from_key, api_real(c, from));
     json_object_set_new(o, to_key, api_real(c, to));
-    json_object_set_new(o, "ticks", api_real(c, ticks));
-    json_object_set_new(o, "rate", api_real(c, rate));
+    json_object_set_new_nocheck(o, "ticks", api_real(c, ticks));
+    json_object_set_new_nocheck(o, "rate", api_real(c, rate));
     return o;
 }
 
@@ -534,65 +536,65 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
 
     json_t *res = json_object();
     json_t *u = json_object();
-    json_object_set_new(u, "time", json_string(years ? "yr" : "s"));
-    json_object_set_new(u, "length", json_string(years ? "ly" : "m"));
-    json_object_set_new(u, "c", api_real(c, cl));
-    json_object_set_new(u, "g", api_real(c, g));
-    json_object_set_new(u, "tick_interval", api_real(c, tick));
-    json_object_set_new(res, "units", u);
+    json_object_set_new_nocheck(u, "time", json_string(years ? "yr" : "s"));
+    json_object_set_new_nocheck(u, "length", json_string(years ? "ly" : "m"));
+    json_object_set_new_nocheck(u, "c", api_real(c, cl));
+    json_object_set_new_nocheck(u, "g", api_real(c, g));
+    json_object_set_new_nocheck(u, "tick_interval", api_real(c, tick));
+    json_object_set_new_nocheck(res, "units", u);
     json_t *arr = json_array();
     for (size_t k = 0; k < n; k++) {
         const struct mech_leg_result *r = &out[k];
         json_t *o = json_object();
-        json_object_set_new(o, "kind",
-                            json_string(json_object_get(json_array_get(jl, k), "velocity")
-                                            ? "coast"
-                                            : "accelerate"));
-        json_object_set_new(o, "proper_time", api_real(c, r->proper_time));
-        json_object_set_new(o, "coordinate_time", api_real(c, r->coordinate_time));
-        json_object_set_new(o, "age_difference", api_real(c, r->age_difference));
-        json_object_set_new(o, "distance", api_real(c, r->distance));
-        json_object_set_new(o, "displacement", api_vec3(c, r->displacement));
-        json_object_set_new(o, "start", api_reals(c, r->start, 4));
-        json_object_set_new(o, "end", api_reals(c, r->end, 4));
+        json_object_set_new_nocheck(o, "kind",
+                                    json_string(json_object_get(json_array_get(jl, k), "velocity")
+                                                    ? "coast"
+                                                    : "accelerate"));
+        json_object_set_new_nocheck(o, "proper_time", api_real(c, r->proper_time));
+        json_object_set_new_nocheck(o, "coordinate_time", api_real(c, r->coordinate_time));
+        json_object_set_new_nocheck(o, "age_difference", api_real(c, r->age_difference));
+        json_object_set_new_nocheck(o, "distance", api_real(c, r->distance));
+        json_object_set_new_nocheck(o, "displacement", api_vec3(c, r->displacement));
+        json_object_set_new_nocheck(o, "start", api_reals(c, r->start, 4));
+        json_object_set_new_nocheck(o, "end", api_reals(c, r->end, 4));
         json_t *fv = json_object();
         api_velocity_describe(c, &r->final_velocity, fv);
-        json_object_set_new(o, "final_velocity", fv);
+        json_object_set_new_nocheck(o, "final_velocity", fv);
         double seen = r->home_clock_seen_end - r->home_clock_seen_start;
         double recv = r->home_receives_end - r->home_receives_start;
-        json_object_set_new(o, "traveller_sees_home",
-                            telescope(c, "home_clock_from", r->home_clock_seen_start,
-                                      "home_clock_to", r->home_clock_seen_end, seen / tick,
-                                      seen / r->proper_time));
-        json_object_set_new(o, "home_sees_traveller",
-                            telescope(c, "home_time_from", r->home_receives_start, "home_time_to",
-                                      r->home_receives_end, r->proper_time / tick,
-                                      r->proper_time / recv));
+        json_object_set_new_nocheck(o, "traveller_sees_home",
+                                    telescope(c, "home_clock_from", r->home_clock_seen_start,
+                                              "home_clock_to", r->home_clock_seen_end, seen / tick,
+                                              seen / r->proper_time));
+        json_object_set_new_nocheck(o, "home_sees_traveller",
+                                    telescope(c, "home_time_from", r->home_receives_start,
+                                              "home_time_to", r->home_receives_end,
+                                              r->proper_time / tick, r->proper_time / recv));
         json_array_append_new(arr, o);
     }
     free(out);
-    json_object_set_new(res, "legs", arr);
+    json_object_set_new_nocheck(res, "legs", arr);
     json_t *t = json_object();
-    json_object_set_new(t, "proper_time", api_real(c, tot.proper_time));
-    json_object_set_new(t, "coordinate_time", api_real(c, tot.coordinate_time));
-    json_object_set_new(t, "stay_at_home_time", api_real(c, tot.coordinate_time));
-    json_object_set_new(t, "age_difference", api_real(c, tot.age_difference));
-    json_object_set_new(t, "distance", api_real(c, tot.distance));
-    json_object_set_new(t, "end", api_reals(c, tot.end, 4));
+    json_object_set_new_nocheck(t, "proper_time", api_real(c, tot.proper_time));
+    json_object_set_new_nocheck(t, "coordinate_time", api_real(c, tot.coordinate_time));
+    json_object_set_new_nocheck(t, "stay_at_home_time", api_real(c, tot.coordinate_time));
+    json_object_set_new_nocheck(t, "age_difference", api_real(c, tot.age_difference));
+    json_object_set_new_nocheck(t, "distance", api_real(c, tot.distance));
+    json_object_set_new_nocheck(t, "end", api_reals(c, tot.end, 4));
     double far = mech_vec3_norm(mech_vec3_make(tot.end[1], tot.end[2], tot.end[3]));
-    json_object_set_new(t, "returned", json_boolean(far <= 1e-12 * tot.distance));
+    json_object_set_new_nocheck(t, "returned", json_boolean(far <= 1e-12 * tot.distance));
     json_t *fv = json_object();
     api_velocity_describe(c, &tot.final_velocity, fv);
-    json_object_set_new(t, "final_velocity", fv);
+    json_object_set_new_nocheck(t, "final_velocity", fv);
     json_t *ts = json_object();
-    json_object_set_new(ts, "ticks", api_real(c, tot.home_clock_seen_end / tick));
-    json_object_set_new(ts, "home_clock_to", api_real(c, tot.home_clock_seen_end));
-    json_object_set_new(t, "traveller_sees_home", ts);
+    json_object_set_new_nocheck(ts, "ticks", api_real(c, tot.home_clock_seen_end / tick));
+    json_object_set_new_nocheck(ts, "home_clock_to", api_real(c, tot.home_clock_seen_end));
+    json_object_set_new_nocheck(t, "traveller_sees_home", ts);
     json_t *hs = json_object();
-    json_object_set_new(hs, "ticks", api_real(c, tot.proper_time / tick));
-    json_object_set_new(hs, "home_time_to", api_real(c, tot.home_receives_end));
-    json_object_set_new(t, "home_sees_traveller", hs);
-    json_object_set_new(res, "total", t);
+    json_object_set_new_nocheck(hs, "ticks", api_real(c, tot.proper_time / tick));
+    json_object_set_new_nocheck(hs, "home_time_to", api_real(c, tot.home_receives_end));
+    json_object_set_new_nocheck(t, "home_sees_traveller", hs);
+    json_object_set_new_nocheck(res, "total", t);
     return res;
 }
 

@@ -173,21 +173,21 @@ static int motion_of(struct api_call *c, const json_t *obj, const char *ptr, dou
 static json_t *describe_motion(struct api_call *c, const struct mech_kin_motion *k)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "mass", api_real(c, k->mass));
-    json_object_set_new(o, "energy", api_real(c, k->energy));
-    json_object_set_new(o, "kinetic_energy", api_real(c, k->kinetic));
-    json_object_set_new(o, "momentum", api_real(c, k->momentum));
+    json_object_set_new_nocheck(o, "mass", api_real(c, k->mass));
+    json_object_set_new_nocheck(o, "energy", api_real(c, k->energy));
+    json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, k->kinetic));
+    json_object_set_new_nocheck(o, "momentum", api_real(c, k->momentum));
     struct mech_boost b;
     if (k->mass > 0 && mech_kin_motion_boost(k, mech_vec3_make(0, 0, 1), &b, NULL) == MECH_OK) {
-        json_object_set_new(o, "gamma", api_real(c, b.gamma));
-        json_object_set_new(o, "gamma_minus_one", api_real(c, b.gamma_minus_one));
-        json_object_set_new(o, "beta", api_real(c, b.beta));
-        json_object_set_new(o, "one_minus_beta", api_real(c, b.one_minus_beta));
-        json_object_set_new(o, "beta_gamma", api_real(c, b.beta_gamma));
-        json_object_set_new(o, "rapidity", api_real(c, b.rapidity));
+        json_object_set_new_nocheck(o, "gamma", api_real(c, b.gamma));
+        json_object_set_new_nocheck(o, "gamma_minus_one", api_real(c, b.gamma_minus_one));
+        json_object_set_new_nocheck(o, "beta", api_real(c, b.beta));
+        json_object_set_new_nocheck(o, "one_minus_beta", api_real(c, b.one_minus_beta));
+        json_object_set_new_nocheck(o, "beta_gamma", api_real(c, b.beta_gamma));
+        json_object_set_new_nocheck(o, "rapidity", api_real(c, b.rapidity));
     } else if (k->mass == 0) {
-        json_object_set_new(o, "beta", json_real(1.0));
-        json_object_set_new(o, "one_minus_beta", json_real(0.0));
+        json_object_set_new_nocheck(o, "beta", json_real(1.0));
+        json_object_set_new_nocheck(o, "one_minus_beta", json_real(0.0));
     }
     return o;
 }
@@ -197,12 +197,12 @@ static json_t *describe_cm(struct api_call *c, const struct mech_kin_system *s)
 {
     if (!s->has_rest_frame) return json_null();
     json_t *o = json_object();
-    json_object_set_new(o, "gamma", api_real(c, s->gamma));
-    json_object_set_new(o, "gamma_minus_one", api_real(c, s->gamma_minus_one));
-    json_object_set_new(o, "beta", api_vec3(c, s->beta));
-    json_object_set_new(o, "rapidity", api_real(c, s->rapidity));
-    json_object_set_new(o, "one_minus_beta", api_real(c, s->one_minus_beta));
-    json_object_set_new(o, "beta_gamma", api_real(c, s->beta_gamma));
+    json_object_set_new_nocheck(o, "gamma", api_real(c, s->gamma));
+    json_object_set_new_nocheck(o, "gamma_minus_one", api_real(c, s->gamma_minus_one));
+    json_object_set_new_nocheck(o, "beta", api_vec3(c, s->beta));
+    json_object_set_new_nocheck(o, "rapidity", api_real(c, s->rapidity));
+    json_object_set_new_nocheck(o, "one_minus_beta", api_real(c, s->one_minus_beta));
+    json_object_set_new_nocheck(o, "beta_gamma", api_real(c, s->beta_gamma));
     return o;
 }
 
@@ -306,18 +306,19 @@ static json_t *invariant_mass_op(struct api_call *c, const json_t *body)
         return api_call_fail_core(c, st, &e, "");
     }
     json_t *res = json_object();
-    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new(res, "invariant_mass", api_real(c, s.mass));
-    json_object_set_new(res, "invariant_mass_squared", api_real(c, s.mass_squared));
-    json_object_set_new(res, "total_energy", api_real(c, s.energy));
-    json_object_set_new(res, "total_momentum", api_vec3(c, s.momentum));
-    json_object_set_new(res, "center_of_momentum", describe_cm(c, &s));
+    json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new_nocheck(res, "invariant_mass", api_real(c, s.mass));
+    json_object_set_new_nocheck(res, "invariant_mass_squared", api_real(c, s.mass_squared));
+    json_object_set_new_nocheck(res, "total_energy", api_real(c, s.energy));
+    json_object_set_new_nocheck(res, "total_momentum", api_vec3(c, s.momentum));
+    json_object_set_new_nocheck(res, "center_of_momentum", describe_cm(c, &s));
     if (!s.has_rest_frame)
-        json_object_set_new(res, "note",
-                            json_string("the total 4-momentum is light-like (M = 0): no frame "
-                                        "has zero total momentum"));
+        json_object_set_new_nocheck(
+            res, "note",
+            json_string("the total 4-momentum is light-like (M = 0): no frame "
+                        "has zero total momentum"));
     if (json_array_size(clamped))
-        json_object_set_new(res, "lightlike_clamped", clamped);
+        json_object_set_new_nocheck(res, "lightlike_clamped", clamped);
     else
         json_decref(clamped);
     return finish(c, res);
@@ -382,12 +383,12 @@ static const char decay_description[] =
 static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "energy", api_real(c, l->energy));
-    json_object_set_new(o, "kinetic_energy", api_real(c, l->kinetic));
-    json_object_set_new(o, "momentum", api_real(c, l->momentum));
-    json_object_set_new(o, "momentum_parallel", api_real(c, l->momentum_parallel));
-    json_object_set_new(o, "momentum_transverse", api_real(c, l->momentum_transverse));
-    json_object_set_new(o, "angle", api_real(c, l->angle));
+    json_object_set_new_nocheck(o, "energy", api_real(c, l->energy));
+    json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, l->kinetic));
+    json_object_set_new_nocheck(o, "momentum", api_real(c, l->momentum));
+    json_object_set_new_nocheck(o, "momentum_parallel", api_real(c, l->momentum_parallel));
+    json_object_set_new_nocheck(o, "momentum_transverse", api_real(c, l->momentum_transverse));
+    json_object_set_new_nocheck(o, "angle", api_real(c, l->angle));
     return o;
 }
 
@@ -418,12 +419,12 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
                          "angles describe a three-body decay; this one has two daughters");
     if (has_ts < 0 || has_cone < 0 || c->problem != API_PROBLEM_NONE) return NULL;
 
-    json_object_set_new(res, "q_value", api_real(c, tb.q_value));
+    json_object_set_new_nocheck(res, "q_value", api_real(c, tb.q_value));
     json_t *rf = json_object();
-    json_object_set_new(rf, "momentum", api_real(c, tb.momentum));
-    json_object_set_new(rf, "energies", api_reals(c, tb.energy, 2));
-    json_object_set_new(rf, "kinetic_energies", api_reals(c, tb.kinetic, 2));
-    json_object_set_new(res, "rest_frame", rf);
+    json_object_set_new_nocheck(rf, "momentum", api_real(c, tb.momentum));
+    json_object_set_new_nocheck(rf, "energies", api_reals(c, tb.energy, 2));
+    json_object_set_new_nocheck(rf, "kinetic_energies", api_reals(c, tb.kinetic, 2));
+    json_object_set_new_nocheck(res, "rest_frame", rf);
 
     json_t *ranges = json_array(), *maxang = json_array();
     for (int i = 0; i < 2; i++) {
@@ -437,14 +438,14 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
                                           ? api_real(c, tm)
                                           : json_null());
     }
-    json_object_set_new(res, "lab_energy_ranges", ranges);
-    json_object_set_new(res, "maximum_lab_angles", maxang);
+    json_object_set_new_nocheck(res, "lab_energy_ranges", ranges);
+    json_object_set_new_nocheck(res, "maximum_lab_angles", maxang);
     double a, at;
     mech_kin_decay_min_opening(b, m, tb.momentum, tb.energy, &a, &at);
     json_t *mo = json_object();
-    json_object_set_new(mo, "angle", api_real(c, a));
-    json_object_set_new(mo, "theta_star", api_real(c, at));
-    json_object_set_new(res, "minimum_opening_angle", mo);
+    json_object_set_new_nocheck(mo, "angle", api_real(c, a));
+    json_object_set_new_nocheck(mo, "theta_star", api_real(c, at));
+    json_object_set_new_nocheck(res, "minimum_opening_angle", mo);
 
     if (has_ts == 1) {
         struct mech_kin_lab l1, l2;
@@ -453,25 +454,25 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
         double open = l1.angle + l2.angle;
         if (open > PI) open = 2 * PI - open;
         json_t *o = json_object(), *ds = json_array();
-        json_object_set_new(o, "theta_star", api_real(c, theta_star));
+        json_object_set_new_nocheck(o, "theta_star", api_real(c, theta_star));
         json_array_append_new(ds, lab_json(c, &l1));
         json_array_append_new(ds, lab_json(c, &l2));
-        json_object_set_new(o, "daughters", ds);
-        json_object_set_new(o, "opening_angle", api_real(c, open));
-        json_object_set_new(res, "at_theta_star", o);
+        json_object_set_new_nocheck(o, "daughters", ds);
+        json_object_set_new_nocheck(o, "opening_angle", api_real(c, open));
+        json_object_set_new_nocheck(res, "at_theta_star", o);
     }
     if (has_cone == 1) {
         int i = (int)api_number(cone, "daughter", 0);
         double r[2][2], edges[2];
         int nr = mech_kin_decay_cone(b, m[i], tb.momentum, tb.energy[i], half, r, edges);
         json_t *o = json_object(), *rs = json_array();
-        json_object_set_new(o, "daughter", json_integer(i));
-        json_object_set_new(o, "half_angle", api_real(c, half));
+        json_object_set_new_nocheck(o, "daughter", json_integer(i));
+        json_object_set_new_nocheck(o, "half_angle", api_real(c, half));
         for (int k = 0; k < nr; k++)
             json_array_append_new(rs, api_reals(c, r[k], 2));
-        json_object_set_new(o, "energy_ranges", rs);
-        json_object_set_new(o, "theta_star_edges", api_reals(c, edges, (size_t)nr));
-        json_object_set_new(res, "cone", o);
+        json_object_set_new_nocheck(o, "energy_ranges", rs);
+        json_object_set_new_nocheck(o, "theta_star_edges", api_reals(c, edges, (size_t)nr));
+        json_object_set_new_nocheck(res, "cone", o);
     }
     return res;
 }
@@ -492,8 +493,8 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
     if (ar && ad) api_call_invalid(c, "/angles", "give angles or angles_deg, not both");
     if (c->problem != API_PROBLEM_NONE) return NULL;
     json_t *ends = json_array();
-    json_object_set_new(res, "q_value", api_real(c, mech_kin_q_value(mp, m, 3)));
-    json_object_set_new(res, "maximum_energies", ends);
+    json_object_set_new_nocheck(res, "q_value", api_real(c, mech_kin_q_value(mp, m, 3)));
+    json_object_set_new_nocheck(res, "maximum_energies", ends);
     json_t *labmax = b->beta > 0 ? json_array() : NULL;
     for (size_t i = 0; i < 3; i++) {
         double em, tm, pm;
@@ -505,9 +506,9 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
             return api_call_fail_core(c, st, &e, "");
         }
         json_t *o = json_object();
-        json_object_set_new(o, "energy", api_real(c, em));
-        json_object_set_new(o, "kinetic_energy", api_real(c, tm));
-        json_object_set_new(o, "momentum", api_real(c, pm));
+        json_object_set_new_nocheck(o, "energy", api_real(c, em));
+        json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, tm));
+        json_object_set_new_nocheck(o, "momentum", api_real(c, pm));
         json_array_append_new(ends, o);
         if (labmax) {
             struct mech_kin_lab l;
@@ -515,7 +516,7 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
             json_array_append_new(labmax, api_real(c, l.energy));
         }
     }
-    if (labmax) json_object_set_new(res, "lab_maximum_energies", labmax);
+    if (labmax) json_object_set_new_nocheck(res, "lab_maximum_energies", labmax);
     if (ar || ad) {
         const json_t *a = ar ? ar : ad;
         double t01 = json_number_value(json_array_get(a, 0));
@@ -531,10 +532,10 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
             return api_call_fail_core(c, st, &e, "");
         }
         json_t *o = json_object();
-        json_object_set_new(o, "momenta", api_reals(c, mom, 3));
-        json_object_set_new(o, "energies", api_reals(c, en, 3));
-        json_object_set_new(o, "kinetic_energies", api_reals(c, ke, 3));
-        json_object_set_new(res, "planar", o);
+        json_object_set_new_nocheck(o, "momenta", api_reals(c, mom, 3));
+        json_object_set_new_nocheck(o, "energies", api_reals(c, en, 3));
+        json_object_set_new_nocheck(o, "kinetic_energies", api_reals(c, ke, 3));
+        json_object_set_new_nocheck(res, "planar", o);
     }
     return res;
 }
@@ -570,8 +571,8 @@ static json_t *decay_op(struct api_call *c, const json_t *body)
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "/parent");
 
     json_t *res = json_object();
-    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new(res, "parent", describe_motion(c, &k));
+    json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new_nocheck(res, "parent", describe_motion(c, &k));
     json_t *out = n == 2 ? two_body(c, body, &b, mp, m, res) : three_body(c, body, &b, mp, m, res);
     if (!out) {
         json_decref(res);
@@ -649,23 +650,23 @@ static json_t *compton_op(struct api_call *c, const json_t *body)
     double lambda_out = jw ? lambda + dl : hc / r.energy_out;
 
     json_t *res = json_object();
-    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new(res, "target_mass", api_real(c, m));
-    json_object_set_new(res, "angle", api_real(c, theta));
+    json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new_nocheck(res, "target_mass", api_real(c, m));
+    json_object_set_new_nocheck(res, "angle", api_real(c, theta));
     json_t *in = json_object(), *sc = json_object(), *rc = json_object();
-    json_object_set_new(in, "energy", api_real(c, e));
-    json_object_set_new(in, "wavelength", api_real(c, lambda));
-    json_object_set_new(res, "incident", in);
-    json_object_set_new(sc, "energy", api_real(c, r.energy_out));
-    json_object_set_new(sc, "wavelength", api_real(c, lambda_out));
-    json_object_set_new(res, "scattered", sc);
-    json_object_set_new(res, "wavelength_shift", api_real(c, dl));
-    json_object_set_new(res, "compton_wavelength", api_real(c, lc));
-    json_object_set_new(rc, "kinetic_energy", api_real(c, r.recoil_kinetic));
-    json_object_set_new(rc, "energy", api_real(c, m + r.recoil_kinetic));
-    json_object_set_new(rc, "momentum", api_real(c, r.recoil_momentum));
-    json_object_set_new(rc, "angle", api_real(c, r.recoil_angle));
-    json_object_set_new(res, "recoil", rc);
+    json_object_set_new_nocheck(in, "energy", api_real(c, e));
+    json_object_set_new_nocheck(in, "wavelength", api_real(c, lambda));
+    json_object_set_new_nocheck(res, "incident", in);
+    json_object_set_new_nocheck(sc, "energy", api_real(c, r.energy_out));
+    json_object_set_new_nocheck(sc, "wavelength", api_real(c, lambda_out));
+    json_object_set_new_nocheck(res, "scattered", sc);
+    json_object_set_new_nocheck(res, "wavelength_shift", api_real(c, dl));
+    json_object_set_new_nocheck(res, "compton_wavelength", api_real(c, lc));
+    json_object_set_new_nocheck(rc, "kinetic_energy", api_real(c, r.recoil_kinetic));
+    json_object_set_new_nocheck(rc, "energy", api_real(c, m + r.recoil_kinetic));
+    json_object_set_new_nocheck(rc, "momentum", api_real(c, r.recoil_momentum));
+    json_object_set_new_nocheck(rc, "angle", api_real(c, r.recoil_angle));
+    json_object_set_new_nocheck(res, "recoil", rc);
     return finish(c, res);
 }
 
@@ -794,37 +795,38 @@ static json_t *collision_op(struct api_call *c, const json_t *body)
     mech_kin_system_finish(&sys);
 
     json_t *res = json_object();
-    json_object_set_new(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new(res, "sqrt_s", api_real(c, w));
-    json_object_set_new(res, "s", api_real(c, s));
-    json_object_set_new(res, "available_energy", api_real(c, d / (w + m1 + m2)));
-    json_object_set_new(res, "cm_momentum", api_real(c, mech_kin_cm_momentum(w, d, m1, m2)));
-    json_object_set_new(res, "beam", describe_motion(c, &kb));
-    json_object_set_new(res, "target", describe_motion(c, &kt));
-    json_object_set_new(res, "center_of_momentum", describe_cm(c, &sys));
+    json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, w));
+    json_object_set_new_nocheck(res, "s", api_real(c, s));
+    json_object_set_new_nocheck(res, "available_energy", api_real(c, d / (w + m1 + m2)));
+    json_object_set_new_nocheck(res, "cm_momentum",
+                                api_real(c, mech_kin_cm_momentum(w, d, m1, m2)));
+    json_object_set_new_nocheck(res, "beam", describe_motion(c, &kb));
+    json_object_set_new_nocheck(res, "target", describe_motion(c, &kt));
+    json_object_set_new_nocheck(res, "center_of_momentum", describe_cm(c, &sys));
     if (m2 > 0) {
         double t = d / (2.0 * m2); /* s − (m1 + m2)² = 2 m2 T on a fixed target */
-        json_object_set_new(res, "fixed_target_beam_energy", api_real(c, m1 + t));
-        json_object_set_new(res, "fixed_target_beam_kinetic_energy", api_real(c, t));
+        json_object_set_new_nocheck(res, "fixed_target_beam_energy", api_real(c, m1 + t));
+        json_object_set_new_nocheck(res, "fixed_target_beam_kinetic_energy", api_real(c, t));
     }
     if (m1 == m2 && w / 2 >= m1)
-        json_object_set_new(res, "symmetric_collider_beam_energy", api_real(c, w / 2));
+        json_object_set_new_nocheck(res, "symmetric_collider_beam_energy", api_real(c, w / 2));
     if (nf) {
         double sum = -mech_kin_q_value(0.0, mf, nf);
         json_t *o = json_object();
-        json_object_set_new(o, "sqrt_s", api_real(c, sum));
-        json_object_set_new(o, "reached", json_boolean(w >= sum));
+        json_object_set_new_nocheck(o, "sqrt_s", api_real(c, sum));
+        json_object_set_new_nocheck(o, "reached", json_boolean(w >= sum));
         if (m2 > 0) {
             double t = 0;
             double mi[2] = {m1, m2};
             if (mech_kin_q_value(sum, mi, 2) > 0)
                 mech_kin_fixed_target_kinetic(sum, m1, m2, &t, NULL);
-            json_object_set_new(o, "fixed_target_beam_energy", api_real(c, m1 + t));
-            json_object_set_new(o, "fixed_target_beam_kinetic_energy", api_real(c, t));
+            json_object_set_new_nocheck(o, "fixed_target_beam_energy", api_real(c, m1 + t));
+            json_object_set_new_nocheck(o, "fixed_target_beam_kinetic_energy", api_real(c, t));
         }
         if (m1 == m2 && sum / 2 >= m1)
-            json_object_set_new(o, "symmetric_collider_beam_energy", api_real(c, sum / 2));
-        json_object_set_new(res, "threshold", o);
+            json_object_set_new_nocheck(o, "symmetric_collider_beam_energy", api_real(c, sum / 2));
+        json_object_set_new_nocheck(res, "threshold", o);
     }
     free(mf);
     (void)gb;

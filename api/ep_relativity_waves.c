@@ -149,45 +149,46 @@ static json_t *doppler_op(struct api_call *c, const json_t *body)
     }
 
     json_t *res = json_object();
-    json_object_set_new(res, "case", json_string(mech_doppler_case_name(d.kind)));
-    json_object_set_new(res, "doppler_factor", api_real(c, d.factor));
-    json_object_set_new(res, "doppler_factor_minus_one", api_real(c, d.factor_minus_one));
+    json_object_set_new_nocheck(res, "case", json_string(mech_doppler_case_name(d.kind)));
+    json_object_set_new_nocheck(res, "doppler_factor", api_real(c, d.factor));
+    json_object_set_new_nocheck(res, "doppler_factor_minus_one", api_real(c, d.factor_minus_one));
     if (have_light) {
-        json_object_set_new(res, "frequency_emitted", api_real(c, f_emit));
-        json_object_set_new(res, "wavelength_emitted", api_real(c, l_emit));
-        json_object_set_new(res, "frequency_observed", api_real(c, f_obs));
-        json_object_set_new(res, "wavelength_observed", api_real(c, l_obs));
+        json_object_set_new_nocheck(res, "frequency_emitted", api_real(c, f_emit));
+        json_object_set_new_nocheck(res, "wavelength_emitted", api_real(c, l_emit));
+        json_object_set_new_nocheck(res, "frequency_observed", api_real(c, f_obs));
+        json_object_set_new_nocheck(res, "wavelength_observed", api_real(c, l_obs));
     }
-    json_object_set_new(res, "angle_source_frame_deg",
-                        angle_or_null(c, d.angle_source, 180 / M_PI));
-    json_object_set_new(res, "angle_observer_frame_deg",
-                        angle_or_null(c, d.angle_observer, 180 / M_PI));
-    json_object_set_new(res, "angle_source_frame_rad", angle_or_null(c, d.angle_source, 1));
-    json_object_set_new(res, "angle_observer_frame_rad", angle_or_null(c, d.angle_observer, 1));
-    json_object_set_new(res, "direction_source_frame", api_vec3(c, d.direction_source));
-    json_object_set_new(res, "direction_observer_frame", api_vec3(c, d.direction_observer));
+    json_object_set_new_nocheck(res, "angle_source_frame_deg",
+                                angle_or_null(c, d.angle_source, 180 / M_PI));
+    json_object_set_new_nocheck(res, "angle_observer_frame_deg",
+                                angle_or_null(c, d.angle_observer, 180 / M_PI));
+    json_object_set_new_nocheck(res, "angle_source_frame_rad", angle_or_null(c, d.angle_source, 1));
+    json_object_set_new_nocheck(res, "angle_observer_frame_rad",
+                                angle_or_null(c, d.angle_observer, 1));
+    json_object_set_new_nocheck(res, "direction_source_frame", api_vec3(c, d.direction_source));
+    json_object_set_new_nocheck(res, "direction_observer_frame", api_vec3(c, d.direction_observer));
 
     json_t *rel = json_object();
-    json_object_set_new(rel, "gamma", api_real(c, d.gamma));
-    json_object_set_new(rel, "gamma_minus_one", api_real(c, d.gamma_minus_one));
-    json_object_set_new(rel, "beta", api_real(c, d.beta));
-    json_object_set_new(rel, "rapidity", api_real(c, d.rapidity));
-    json_object_set_new(rel, "one_minus_beta", api_real(c, d.one_minus_beta));
-    json_object_set_new(rel, "beta_gamma", api_real(c, d.beta_gamma));
-    json_object_set_new(rel, "observer_beta_in_source_frame",
-                        api_vec3(c, d.observer_beta_in_source));
-    json_object_set_new(rel, "source_beta_in_observer_frame",
-                        api_vec3(c, d.source_beta_in_observer));
-    json_object_set_new(res, "relative_velocity", rel);
+    json_object_set_new_nocheck(rel, "gamma", api_real(c, d.gamma));
+    json_object_set_new_nocheck(rel, "gamma_minus_one", api_real(c, d.gamma_minus_one));
+    json_object_set_new_nocheck(rel, "beta", api_real(c, d.beta));
+    json_object_set_new_nocheck(rel, "rapidity", api_real(c, d.rapidity));
+    json_object_set_new_nocheck(rel, "one_minus_beta", api_real(c, d.one_minus_beta));
+    json_object_set_new_nocheck(rel, "beta_gamma", api_real(c, d.beta_gamma));
+    json_object_set_new_nocheck(rel, "observer_beta_in_source_frame",
+                                api_vec3(c, d.observer_beta_in_source));
+    json_object_set_new_nocheck(rel, "source_beta_in_observer_frame",
+                                api_vec3(c, d.source_beta_in_observer));
+    json_object_set_new_nocheck(res, "relative_velocity", rel);
     if (sv) {
         json_t *o = json_object();
         api_velocity_describe(c, &src, o);
-        json_object_set_new(res, "source_velocity", o);
+        json_object_set_new_nocheck(res, "source_velocity", o);
     }
     if (ov) {
         json_t *o = json_object();
         api_velocity_describe(c, &obs, o);
-        json_object_set_new(res, "observer_velocity", o);
+        json_object_set_new_nocheck(res, "observer_velocity", o);
     }
     if (!res || !rel) {
         json_decref(res);
@@ -246,8 +247,8 @@ static const char fields_description[] =
 static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "E2_minus_B2", api_real(c, v->e2_minus_b2));
-    json_object_set_new(o, "E_dot_B", api_real(c, v->e_dot_b));
+    json_object_set_new_nocheck(o, "E2_minus_B2", api_real(c, v->e2_minus_b2));
+    json_object_set_new_nocheck(o, "E_dot_B", api_real(c, v->e_dot_b));
     return o;
 }
 
@@ -267,7 +268,7 @@ static json_t *fields_op(struct api_call *c, const json_t *body)
     if (st != MECH_OK) return api_call_fail_core(c, st, &err, "");
 
     json_t *res = json_object();
-    json_object_set_new(res, "units", json_string(si ? "si" : "heaviside_lorentz"));
+    json_object_set_new_nocheck(res, "units", json_string(si ? "si" : "heaviside_lorentz"));
     json_object_set_new(
         res, "convention",
         json_string(si ? "passive boost into the frame moving with velocity v = beta c: "
@@ -276,20 +277,20 @@ static json_t *fields_op(struct api_call *c, const json_t *body)
                        : "passive boost into the frame moving with velocity beta (c = 1): "
                          "E'par = Epar, B'par = Bpar, E'perp = gamma (E + beta x B)perp, "
                          "B'perp = gamma (B - beta x E)perp"));
-    json_object_set_new(res, "E", api_vec3(c, r.e));
-    json_object_set_new(res, "B", api_vec3(c, r.b));
+    json_object_set_new_nocheck(res, "E", api_vec3(c, r.e));
+    json_object_set_new_nocheck(res, "B", api_vec3(c, r.b));
     api_velocity_describe(c, &b, res);
-    json_object_set_new(res, "invariants_before", invariants_json(c, &r.before));
-    json_object_set_new(res, "invariants_after", invariants_json(c, &r.after));
-    json_object_set_new(res, "field_scale_squared", api_real(c, r.scale2));
+    json_object_set_new_nocheck(res, "invariants_before", invariants_json(c, &r.before));
+    json_object_set_new_nocheck(res, "invariants_after", invariants_json(c, &r.after));
+    json_object_set_new_nocheck(res, "field_scale_squared", api_real(c, r.scale2));
     json_t *diff = json_object();
     const double s2 = r.scale2 > 0 ? r.scale2 : 1.0;
     const double k = si ? MECH_EM_C : 1.0;
-    json_object_set_new(diff, "E2_minus_B2",
-                        api_real(c, fabs(r.after.e2_minus_b2 - r.before.e2_minus_b2) / s2));
-    json_object_set_new(diff, "E_dot_B",
-                        api_real(c, fabs(r.after.e_dot_b - r.before.e_dot_b) * k / s2));
-    json_object_set_new(res, "invariants_difference", diff);
+    json_object_set_new_nocheck(diff, "E2_minus_B2",
+                                api_real(c, fabs(r.after.e2_minus_b2 - r.before.e2_minus_b2) / s2));
+    json_object_set_new_nocheck(diff, "E_dot_B",
+                                api_real(c, fabs(r.after.e_dot_b - r.before.e_dot_b) * k / s2));
+    json_object_set_new_nocheck(res, "invariants_difference", diff);
     if (!res || !diff) {
         json_decref(res);
         return api_call_fail_core(c, MECH_ENOMEM, NULL, "");

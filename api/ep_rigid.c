@@ -343,14 +343,14 @@ static json_t *parts_json(struct api_call *c, const struct mech_inertia_part *pa
             json_decref(arr);
             return NULL;
         }
-        json_object_set_new(o, "shape", json_string(shape_names[parts[i].shape]));
-        json_object_set_new(o, "hole", json_boolean(parts[i].hole));
-        json_object_set_new(o, "mass", api_real(c, pp[i].mass));
-        json_object_set_new(o, "center_of_mass", api_vec3(c, pp[i].center_of_mass));
-        json_object_set_new(o, "tensor", api_mat3(c, pp[i].tensor));
+        json_object_set_new_nocheck(o, "shape", json_string(shape_names[parts[i].shape]));
+        json_object_set_new_nocheck(o, "hole", json_boolean(parts[i].hole));
+        json_object_set_new_nocheck(o, "mass", api_real(c, pp[i].mass));
+        json_object_set_new_nocheck(o, "center_of_mass", api_vec3(c, pp[i].center_of_mass));
+        json_object_set_new_nocheck(o, "tensor", api_mat3(c, pp[i].tensor));
         if (parts[i].shape == MECH_SHAPE_MESH) {
-            json_object_set_new(o, "volume", api_real(c, pp[i].volume));
-            json_object_set_new(o, "inverted", json_boolean(pp[i].inverted));
+            json_object_set_new_nocheck(o, "volume", api_real(c, pp[i].volume));
+            json_object_set_new_nocheck(o, "inverted", json_boolean(pp[i].inverted));
         }
     }
     return arr;
@@ -412,20 +412,20 @@ static json_t *inertia(struct api_call *c, const json_t *body)
         mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory");
         return api_call_fail_core(c, MECH_ENOMEM, &e, "");
     }
-    json_object_set_new(out, "mass", api_real(c, res.mass));
-    json_object_set_new(out, "center_of_mass", api_vec3(c, res.center_of_mass));
-    json_object_set_new(out, "origin", api_vec3(c, res.origin));
-    json_object_set_new(out, "tensor", api_mat3(c, res.tensor));
-    json_object_set_new(out, "tensor_center_of_mass", api_mat3(c, res.tensor_cm));
-    json_object_set_new(pr, "moments", api_reals(c, res.principal.moments, 3));
-    json_object_set_new(pr, "axes", api_mat3(c, res.principal.axes));
-    json_object_set_new(pr, "degenerate", json_boolean(res.principal.degenerate));
-    json_object_set_new(out, "principal", pr);
+    json_object_set_new_nocheck(out, "mass", api_real(c, res.mass));
+    json_object_set_new_nocheck(out, "center_of_mass", api_vec3(c, res.center_of_mass));
+    json_object_set_new_nocheck(out, "origin", api_vec3(c, res.origin));
+    json_object_set_new_nocheck(out, "tensor", api_mat3(c, res.tensor));
+    json_object_set_new_nocheck(out, "tensor_center_of_mass", api_mat3(c, res.tensor_cm));
+    json_object_set_new_nocheck(pr, "moments", api_reals(c, res.principal.moments, 3));
+    json_object_set_new_nocheck(pr, "axes", api_mat3(c, res.principal.axes));
+    json_object_set_new_nocheck(pr, "degenerate", json_boolean(res.principal.degenerate));
+    json_object_set_new_nocheck(out, "principal", pr);
     if (wj) {
-        json_object_set_new(out, "angular_momentum", api_vec3(c, l));
-        json_object_set_new(out, "kinetic_energy", api_real(c, ke));
+        json_object_set_new_nocheck(out, "angular_momentum", api_vec3(c, l));
+        json_object_set_new_nocheck(out, "kinetic_energy", api_real(c, ke));
     }
-    json_object_set_new(out, "parts", pj);
+    json_object_set_new_nocheck(out, "parts", pj);
     return out;
 }
 

@@ -184,11 +184,11 @@ static json_t *invariant(struct api_call *c, const char *name, int conserved, do
                          double final, double drift)
 {
     json_t *j = json_object();
-    json_object_set_new(j, "name", json_string(name));
-    json_object_set_new(j, "conserved", json_boolean(conserved));
-    json_object_set_new(j, "initial", api_real(c, initial));
-    json_object_set_new(j, "final", api_real(c, final));
-    json_object_set_new(j, "max_relative_drift", api_real(c, drift));
+    json_object_set_new_nocheck(j, "name", json_string(name));
+    json_object_set_new_nocheck(j, "conserved", json_boolean(conserved));
+    json_object_set_new_nocheck(j, "initial", api_real(c, initial));
+    json_object_set_new_nocheck(j, "final", api_real(c, final));
+    json_object_set_new_nocheck(j, "max_relative_drift", api_real(c, drift));
     return j;
 }
 
@@ -290,20 +290,20 @@ static json_t *rotate(struct api_call *c, const json_t *body)
         goto done;
     }
     out = json_object();
-    json_object_set_new(out, "moments", api_reals(c, p.moments, 3));
-    if (ij) json_object_set_new(out, "principal_axes", api_mat3(c, P));
-    json_object_set_new(out, "t", api_reals(c, t, r.n_samples));
+    json_object_set_new_nocheck(out, "moments", api_reals(c, p.moments, 3));
+    if (ij) json_object_set_new_nocheck(out, "principal_axes", api_mat3(c, P));
+    json_object_set_new_nocheck(out, "t", api_reals(c, t, r.n_samples));
     json_t *ja = json_array(), *jq = json_array(), *jl = json_array();
     for (size_t i = 0; i < r.n_samples; i++) {
         json_array_append_new(ja, api_vec3(c, w[i]));
         json_array_append_new(jq, api_reals(c, qs + 4 * i, 4));
         json_array_append_new(jl, api_vec3(c, L[i]));
     }
-    json_object_set_new(out, "omega", ja);
-    json_object_set_new(out, "orientation", jq);
-    json_object_set_new(out, "angular_momentum", jl);
-    json_object_set_new(out, "kinetic_energy", api_reals(c, ke, r.n_samples));
-    json_object_set_new(out, "rate_scale", api_real(c, r.rate_scale));
+    json_object_set_new_nocheck(out, "omega", ja);
+    json_object_set_new_nocheck(out, "orientation", jq);
+    json_object_set_new_nocheck(out, "angular_momentum", jl);
+    json_object_set_new_nocheck(out, "kinetic_energy", api_reals(c, ke, r.n_samples));
+    json_object_set_new_nocheck(out, "rate_scale", api_real(c, r.rate_scale));
 
     const size_t last = r.n_samples - 1;
     json_t *d = json_object();
@@ -317,53 +317,57 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     if (p.torque_frame != MECH_RIGID_TORQUE_BODY || r.torque_free) {
         json_t *lv = invariant(c, "angular_momentum_vector", r.torque_free, mech_vec3_norm(r.L0),
                                mech_vec3_norm(L[last]), r.max_L_vector_drift);
-        json_object_set_new(lv, "reference",
-                            json_string(r.torque_free ? "L0 (no torque)"
-                                                      : "L0 + torque t (constant space torque)"));
-        json_object_set_new(lv, "initial_vector", api_vec3(c, r.L0));
-        json_object_set_new(lv, "final_vector", api_vec3(c, L[last]));
+        json_object_set_new_nocheck(lv, "reference",
+                                    json_string(r.torque_free
+                                                    ? "L0 (no torque)"
+                                                    : "L0 + torque t (constant space torque)"));
+        json_object_set_new_nocheck(lv, "initial_vector", api_vec3(c, r.L0));
+        json_object_set_new_nocheck(lv, "final_vector", api_vec3(c, L[last]));
         json_array_append_new(inv, lv);
     }
-    json_object_set_new(d, "invariants", inv);
-    json_object_set_new(d, "quaternion_norm_drift", api_real(c, r.max_quaternion_norm_drift));
+    json_object_set_new_nocheck(d, "invariants", inv);
+    json_object_set_new_nocheck(d, "quaternion_norm_drift",
+                                api_real(c, r.max_quaternion_norm_drift));
     if (r.has_exact) {
         const struct mech_rigid_exact *x = &r.exact;
         json_t *rf = json_object();
-        json_object_set_new(rf, "kind", json_string("exact"));
-        json_object_set_new(rf, "name", json_string("torque_free_rigid_body"));
-        json_object_set_new(rf, "solution", json_string(kind_name(x->kind)));
+        json_object_set_new_nocheck(rf, "kind", json_string("exact"));
+        json_object_set_new_nocheck(rf, "name", json_string("torque_free_rigid_body"));
+        json_object_set_new_nocheck(rf, "solution", json_string(kind_name(x->kind)));
         if (x->kind == MECH_RIGID_EXACT_SYMMETRIC) {
-            json_object_set_new(rf, "precession_rate", api_real(c, x->lambda));
-            json_object_set_new(rf, "period", api_real(c, x->period));
+            json_object_set_new_nocheck(rf, "precession_rate", api_real(c, x->lambda));
+            json_object_set_new_nocheck(rf, "period", api_real(c, x->period));
         } else if (x->kind == MECH_RIGID_EXACT_ELLIPTIC || x->kind == MECH_RIGID_EXACT_SEPARATRIX) {
-            json_object_set_new(rf, "lambda", api_real(c, x->lambda));
-            json_object_set_new(rf, "modulus_squared", api_real(c, x->m));
-            json_object_set_new(rf, "L2_greater_than_2EI2",
-                                json_boolean(x->kind == MECH_RIGID_EXACT_ELLIPTIC && x->cn_axis == 0));
+            json_object_set_new_nocheck(rf, "lambda", api_real(c, x->lambda));
+            json_object_set_new_nocheck(rf, "modulus_squared", api_real(c, x->m));
+            json_object_set_new_nocheck(
+                rf, "L2_greater_than_2EI2",
+                json_boolean(x->kind == MECH_RIGID_EXACT_ELLIPTIC && x->cn_axis == 0));
             if (x->kind == MECH_RIGID_EXACT_ELLIPTIC) {
-                json_object_set_new(rf, "K", api_real(c, x->K));
-                json_object_set_new(rf, "period", api_real(c, x->period));
+                json_object_set_new_nocheck(rf, "K", api_real(c, x->K));
+                json_object_set_new_nocheck(rf, "period", api_real(c, x->period));
             }
         }
-        json_object_set_new(rf, "max_omega_error", api_real(c, r.max_omega_error));
-        json_object_set_new(rf, "max_relative_omega_error", api_real(c, r.max_relative_omega_error));
-        json_object_set_new(rf, "final_omega_error", api_real(c, r.final_omega_error));
-        json_object_set_new(d, "reference", rf);
+        json_object_set_new_nocheck(rf, "max_omega_error", api_real(c, r.max_omega_error));
+        json_object_set_new_nocheck(rf, "max_relative_omega_error",
+                                    api_real(c, r.max_relative_omega_error));
+        json_object_set_new_nocheck(rf, "final_omega_error", api_real(c, r.final_omega_error));
+        json_object_set_new_nocheck(d, "reference", rf);
     } else {
-        json_object_set_new(d, "reference", json_null());
+        json_object_set_new_nocheck(d, "reference", json_null());
     }
-    json_object_set_new(d, "selection", api_integrator_block_selection(c, &ch));
-    json_object_set_new(out, "diagnostics", d);
+    json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new_nocheck(out, "diagnostics", d);
     if (r.has_exact && r.exact.kind == MECH_RIGID_EXACT_ELLIPTIC) {
         json_t *f = json_object();
-        json_object_set_new(f, "exact_period", api_real(c, r.exact.period));
-        json_object_set_new(f, "exact_flip_interval", api_real(c, r.exact.flip_interval));
-        json_object_set_new(f, "sign_changes_seen", json_integer(r.flips));
-        json_object_set_new(f, "measured_period",
-                            r.flips >= 2 ? api_real(c, r.measured_period) : json_null());
-        json_object_set_new(out, "flip", f);
+        json_object_set_new_nocheck(f, "exact_period", api_real(c, r.exact.period));
+        json_object_set_new_nocheck(f, "exact_flip_interval", api_real(c, r.exact.flip_interval));
+        json_object_set_new_nocheck(f, "sign_changes_seen", json_integer(r.flips));
+        json_object_set_new_nocheck(f, "measured_period",
+                                    r.flips >= 2 ? api_real(c, r.measured_period) : json_null());
+        json_object_set_new_nocheck(out, "flip", f);
     }
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(out, "cost", json_object());
 done:
     free(t);
     free(qs);

@@ -100,23 +100,26 @@ static json_t *stability(struct api_call *c, const json_t *body)
         return api_call_fail_core(c, MECH_ENOMEM, &e, "");
     }
     int stable = s.kind == MECH_STABILITY_STABLE, unstable = s.kind == MECH_STABILITY_UNSTABLE;
-    json_object_set_new(out, "k", api_real(c, s.k));
-    json_object_set_new(out, "stable", json_boolean(stable));
-    json_object_set_new(out, "classification", json_string(kinds[s.kind]));
-    json_object_set_new(out, "frequency", stable ? api_real(c, s.frequency) : json_null());
-    json_object_set_new(out, "period", stable ? api_real(c, 2 * M_PI / s.frequency) : json_null());
-    json_object_set_new(out, "growth_rate", unstable ? api_real(c, s.growth_rate) : json_null());
-    json_object_set_new(out, "e_folding_time",
-                        unstable ? api_real(c, 1 / s.growth_rate) : json_null());
-    json_object_set_new(out, "axis", json_integer(axis));
-    json_object_set_new(out, "axis_role", json_string(roles[s.role]));
-    json_object_set_new(out, "intermediate_axis",
-                        s.intermediate_axis ? json_integer(s.intermediate_axis) : json_null());
+    json_object_set_new_nocheck(out, "k", api_real(c, s.k));
+    json_object_set_new_nocheck(out, "stable", json_boolean(stable));
+    json_object_set_new_nocheck(out, "classification", json_string(kinds[s.kind]));
+    json_object_set_new_nocheck(out, "frequency", stable ? api_real(c, s.frequency) : json_null());
+    json_object_set_new_nocheck(out, "period",
+                                stable ? api_real(c, 2 * M_PI / s.frequency) : json_null());
+    json_object_set_new_nocheck(out, "growth_rate",
+                                unstable ? api_real(c, s.growth_rate) : json_null());
+    json_object_set_new_nocheck(out, "e_folding_time",
+                                unstable ? api_real(c, 1 / s.growth_rate) : json_null());
+    json_object_set_new_nocheck(out, "axis", json_integer(axis));
+    json_object_set_new_nocheck(out, "axis_role", json_string(roles[s.role]));
+    json_object_set_new_nocheck(out, "intermediate_axis",
+                                s.intermediate_axis ? json_integer(s.intermediate_axis)
+                                                    : json_null());
     json_t *pa = json_pack("[i,i]", b, cc);
-    json_object_set_new(lin, "perturbation_axes", pa ? pa : json_null());
-    json_object_set_new(lin, "coupling", api_reals(c, s.coupling, 2));
-    json_object_set_new(out, "linearised", lin);
-    json_object_set_new(out, "note", json_string(note));
+    json_object_set_new_nocheck(lin, "perturbation_axes", pa ? pa : json_null());
+    json_object_set_new_nocheck(lin, "coupling", api_reals(c, s.coupling, 2));
+    json_object_set_new_nocheck(out, "linearised", lin);
+    json_object_set_new_nocheck(out, "note", json_string(note));
     return out;
 }
 

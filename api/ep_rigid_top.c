@@ -81,9 +81,9 @@ static const char example[] =
 static json_t *quantity(struct api_call *c, double initial, double final, double drift)
 {
     json_t *j = json_object();
-    json_object_set_new(j, "initial", api_real(c, initial));
-    json_object_set_new(j, "final", api_real(c, final));
-    json_object_set_new(j, "max_relative_drift", api_real(c, drift));
+    json_object_set_new_nocheck(j, "initial", api_real(c, initial));
+    json_object_set_new_nocheck(j, "final", api_real(c, final));
+    json_object_set_new_nocheck(j, "max_relative_drift", api_real(c, drift));
     return j;
 }
 
@@ -147,56 +147,61 @@ static json_t *top(struct api_call *c, const json_t *body)
     }
     const size_t ns = r.n_samples;
     out = json_object();
-    json_object_set_new(out, "t", api_reals(c, r.t, ns));
-    json_object_set_new(out, "theta", api_reals(c, r.theta, ns));
-    json_object_set_new(out, "phi", api_reals(c, r.phi, ns));
-    json_object_set_new(out, "psi", api_reals(c, r.psi, ns));
-    json_object_set_new(out, "phi_plus_psi", api_reals(c, r.phi_plus_psi, ns));
+    json_object_set_new_nocheck(out, "t", api_reals(c, r.t, ns));
+    json_object_set_new_nocheck(out, "theta", api_reals(c, r.theta, ns));
+    json_object_set_new_nocheck(out, "phi", api_reals(c, r.phi, ns));
+    json_object_set_new_nocheck(out, "psi", api_reals(c, r.psi, ns));
+    json_object_set_new_nocheck(out, "phi_plus_psi", api_reals(c, r.phi_plus_psi, ns));
     json_t *ja = json_array(), *jp = json_array();
     for (size_t i = 0; i < ns; i++) {
         json_array_append_new(ja, api_vec3(c, ax[i]));
         if (pole[i]) json_array_append_new(jp, json_integer((json_int_t)i));
     }
-    json_object_set_new(out, "axis", ja);
-    json_object_set_new(out, "pole_samples", jp);
-    json_object_set_new(out, "omega3", api_real(c, r.omega3));
+    json_object_set_new_nocheck(out, "axis", ja);
+    json_object_set_new_nocheck(out, "pole_samples", jp);
+    json_object_set_new_nocheck(out, "omega3", api_real(c, r.omega3));
 
     json_t *nu = json_object();
-    json_object_set_new(nu, "theta_min", api_real(c, r.turning.theta_min));
-    json_object_set_new(nu, "theta_max", api_real(c, r.turning.theta_max));
-    json_object_set_new(nu, "steady", json_boolean(r.turning.steady));
-    json_object_set_new(nu, "measured_theta_min", api_real(c, r.theta_min_measured));
-    json_object_set_new(nu, "measured_theta_max", api_real(c, r.theta_max_measured));
-    json_object_set_new(nu, "cubic_roots_u", api_reals(c, r.turning.roots, (size_t)r.turning.n_roots));
-    json_object_set_new(out, "nutation", nu);
+    json_object_set_new_nocheck(nu, "theta_min", api_real(c, r.turning.theta_min));
+    json_object_set_new_nocheck(nu, "theta_max", api_real(c, r.turning.theta_max));
+    json_object_set_new_nocheck(nu, "steady", json_boolean(r.turning.steady));
+    json_object_set_new_nocheck(nu, "measured_theta_min", api_real(c, r.theta_min_measured));
+    json_object_set_new_nocheck(nu, "measured_theta_max", api_real(c, r.theta_max_measured));
+    json_object_set_new_nocheck(nu, "cubic_roots_u",
+                                api_reals(c, r.turning.roots, (size_t)r.turning.n_roots));
+    json_object_set_new_nocheck(out, "nutation", nu);
 
     json_t *co = json_object();
-    json_object_set_new(co, "p_phi", quantity(c, r.p_phi0, r.p_phi_final, r.max_p_phi_drift));
-    json_object_set_new(co, "p_psi", quantity(c, r.p_psi0, r.p_psi_final, r.max_p_psi_drift));
-    json_object_set_new(co, "energy", quantity(c, r.E0, r.E_final, r.max_E_drift));
-    json_object_set_new(out, "conserved", co);
+    json_object_set_new_nocheck(co, "p_phi",
+                                quantity(c, r.p_phi0, r.p_phi_final, r.max_p_phi_drift));
+    json_object_set_new_nocheck(co, "p_psi",
+                                quantity(c, r.p_psi0, r.p_psi_final, r.max_p_psi_drift));
+    json_object_set_new_nocheck(co, "energy", quantity(c, r.E0, r.E_final, r.max_E_drift));
+    json_object_set_new_nocheck(out, "conserved", co);
 
     json_t *sl = json_object();
-    json_object_set_new(sl, "lhs_I3sq_omega3sq", api_real(c, r.sleep_lhs));
-    json_object_set_new(sl, "rhs_4_I1_M_g_h", api_real(c, r.sleep_rhs));
-    json_object_set_new(sl, "stable", json_boolean(r.sleep_stable));
-    json_object_set_new(sl, "critical_omega3", api_real(c, r.critical_omega3));
-    json_object_set_new(out, "sleeping_top", sl);
+    json_object_set_new_nocheck(sl, "lhs_I3sq_omega3sq", api_real(c, r.sleep_lhs));
+    json_object_set_new_nocheck(sl, "rhs_4_I1_M_g_h", api_real(c, r.sleep_rhs));
+    json_object_set_new_nocheck(sl, "stable", json_boolean(r.sleep_stable));
+    json_object_set_new_nocheck(sl, "critical_omega3", api_real(c, r.critical_omega3));
+    json_object_set_new_nocheck(out, "sleeping_top", sl);
 
     json_t *pr = json_object();
-    json_object_set_new(pr, "steady_slow", real_or_null(c, r.precession_slow));
-    json_object_set_new(pr, "steady_fast", real_or_null(c, r.precession_fast));
-    json_object_set_new(pr, "gyroscopic_approximation", real_or_null(c, r.precession_gyroscopic));
-    json_object_set_new(pr, "measured_mean_rate", real_or_null(c, r.precession_measured));
-    json_object_set_new(out, "precession", pr);
-    json_object_set_new(out, "rate_scale", api_real(c, r.rate_scale));
+    json_object_set_new_nocheck(pr, "steady_slow", real_or_null(c, r.precession_slow));
+    json_object_set_new_nocheck(pr, "steady_fast", real_or_null(c, r.precession_fast));
+    json_object_set_new_nocheck(pr, "gyroscopic_approximation",
+                                real_or_null(c, r.precession_gyroscopic));
+    json_object_set_new_nocheck(pr, "measured_mean_rate", real_or_null(c, r.precession_measured));
+    json_object_set_new_nocheck(out, "precession", pr);
+    json_object_set_new_nocheck(out, "rate_scale", api_real(c, r.rate_scale));
 
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &ch, &r.stats);
-    json_object_set_new(d, "quaternion_norm_drift", api_real(c, r.max_quaternion_norm_drift));
-    json_object_set_new(d, "selection", api_integrator_block_selection(c, &ch));
-    json_object_set_new(out, "diagnostics", d);
-    json_object_set_new(out, "cost", json_object());
+    json_object_set_new_nocheck(d, "quaternion_norm_drift",
+                                api_real(c, r.max_quaternion_norm_drift));
+    json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new_nocheck(out, "diagnostics", d);
+    json_object_set_new_nocheck(out, "cost", json_object());
 done:
     free(buf);
     free(ax);

@@ -205,16 +205,16 @@ static json_t *apply(struct api_call *c, const json_t *body)
         return NULL;
     json_t *out = json_object();
     if (!out) return out_of_memory(c, NULL);
-    json_object_set_new(out, "sense",
-                        json_string(r.sense == MECH_ROTATION_ACTIVE ? "active" : "passive"));
-    json_object_set_new(out, "matrix", api_mat3(c, r.matrix));
+    json_object_set_new_nocheck(
+        out, "sense", json_string(r.sense == MECH_ROTATION_ACTIVE ? "active" : "passive"));
+    json_object_set_new_nocheck(out, "matrix", api_mat3(c, r.matrix));
     if (vj) {
         json_t *vs = json_array();
         if (!vs) return out_of_memory(c, out);
         for (size_t i = 0; i < json_array_size(vj); i++)
             json_array_append_new(
                 vs, api_vec3(c, mech_mat3_mul_vec(r.matrix, api_vec3_of(json_array_get(vj, i)))));
-        json_object_set_new(out, "vectors", vs);
+        json_object_set_new_nocheck(out, "vectors", vs);
     }
     if (tj) {
         json_t *ts = json_array();
@@ -230,7 +230,7 @@ static json_t *apply(struct api_call *c, const json_t *body)
             }
             json_array_append_new(ts, api_mat3(c, mech_rotation_apply_tensor(r.matrix, t)));
         }
-        json_object_set_new(out, "tensors", ts);
+        json_object_set_new_nocheck(out, "tensors", ts);
     }
     return out;
 }

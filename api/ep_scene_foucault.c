@@ -145,11 +145,11 @@ static json_t *fc_term(struct api_call *c, const char *name, int included, doubl
                        json_t *estimate, const char *reason)
 {
     json_t *t = json_object();
-    json_object_set_new(t, "term", json_string(name));
-    json_object_set_new(t, "included", json_boolean(included));
-    json_object_set_new(t, "max_acceleration", api_real(c, max_acc));
-    json_object_set_new(t, "estimated_effect", estimate ? estimate : json_null());
-    json_object_set_new(t, "reason", json_string(reason));
+    json_object_set_new_nocheck(t, "term", json_string(name));
+    json_object_set_new_nocheck(t, "included", json_boolean(included));
+    json_object_set_new_nocheck(t, "max_acceleration", api_real(c, max_acc));
+    json_object_set_new_nocheck(t, "estimated_effect", estimate ? estimate : json_null());
+    json_object_set_new_nocheck(t, "reason", json_string(reason));
     return t;
 }
 
@@ -304,76 +304,78 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
 
     /* ---- the answer ---- */
     json_t *res = json_object();
-    json_object_set_new(res, "scene", json_string("foucault"));
+    json_object_set_new_nocheck(res, "scene", json_string("foucault"));
 
     json_t *setup = json_object();
-    json_object_set_new(setup, "length", api_real(c, p.length));
-    json_object_set_new(setup, "g", api_real(c, p.g));
-    json_object_set_new(setup, "latitude_deg", api_real(c, p.latitude_deg));
-    json_object_set_new(setup, "omega", api_vec3(c, mech_vec3_make(0.0, W * coslat, wz)));
-    json_object_set_new(setup, "omega_sin_latitude", api_real(c, wz));
-    json_object_set_new(setup, "omega0", api_real(c, omega0));
-    json_object_set_new(setup, "amplitude_deg", api_real(c, p.amplitude_deg));
+    json_object_set_new_nocheck(setup, "length", api_real(c, p.length));
+    json_object_set_new_nocheck(setup, "g", api_real(c, p.g));
+    json_object_set_new_nocheck(setup, "latitude_deg", api_real(c, p.latitude_deg));
+    json_object_set_new_nocheck(setup, "omega", api_vec3(c, mech_vec3_make(0.0, W * coslat, wz)));
+    json_object_set_new_nocheck(setup, "omega_sin_latitude", api_real(c, wz));
+    json_object_set_new_nocheck(setup, "omega0", api_real(c, omega0));
+    json_object_set_new_nocheck(setup, "amplitude_deg", api_real(c, p.amplitude_deg));
     json_object_set_new(
         setup, "release_position",
         api_vec3(c, mech_vec3_make(a * cos(p.azimuth_deg * deg), a * sin(p.azimuth_deg * deg),
                                    2.0 * p.length * sin(0.5 * alpha) * sin(0.5 * alpha))));
-    json_object_set_new(setup, "duration", api_real(c, p.t_end));
-    json_object_set_new(res, "setup", setup);
+    json_object_set_new_nocheck(setup, "duration", api_real(c, p.t_end));
+    json_object_set_new_nocheck(res, "setup", setup);
 
     json_t *pr = json_object();
     double first = -wz;
     double expected = first + r.airy_rate_mean;
     double tol_formula = fabs(r.airy_rate_mean) * (alpha * alpha / 4.0 + W * W / (omega0 * omega0));
     double tol_fit = 3.0 * r.precession.stderr_slope;
-    json_object_set_new(pr, "measured_rate", api_real(c, r.precession.slope));
-    json_object_set_new(pr, "measured_rate_deg_per_hour",
-                        api_real(c, r.precession.slope * 3600.0 / deg));
-    json_object_set_new(pr, "first_order_rate", api_real(c, first));
-    json_object_set_new(pr, "difference", api_real(c, r.precession.slope - first));
-    json_object_set_new(pr, "airy_correction", api_real(c, r.airy_rate_mean));
-    json_object_set_new(pr, "airy_correction_release", api_real(c, r.airy_rate));
-    json_object_set_new(pr, "expected_rate", api_real(c, expected));
-    json_object_set_new(pr, "residual", api_real(c, r.precession.slope - expected));
+    json_object_set_new_nocheck(pr, "measured_rate", api_real(c, r.precession.slope));
+    json_object_set_new_nocheck(pr, "measured_rate_deg_per_hour",
+                                api_real(c, r.precession.slope * 3600.0 / deg));
+    json_object_set_new_nocheck(pr, "first_order_rate", api_real(c, first));
+    json_object_set_new_nocheck(pr, "difference", api_real(c, r.precession.slope - first));
+    json_object_set_new_nocheck(pr, "airy_correction", api_real(c, r.airy_rate_mean));
+    json_object_set_new_nocheck(pr, "airy_correction_release", api_real(c, r.airy_rate));
+    json_object_set_new_nocheck(pr, "expected_rate", api_real(c, expected));
+    json_object_set_new_nocheck(pr, "residual", api_real(c, r.precession.slope - expected));
     json_t *tol = json_object();
-    json_object_set_new(tol, "next_order", api_real(c, tol_formula));
-    json_object_set_new(tol, "fit", api_real(c, tol_fit));
-    json_object_set_new(tol, "numerical", api_real(c, num_rate));
-    json_object_set_new(tol, "total", api_real(c, tol_formula + tol_fit + num_rate));
-    json_object_set_new(pr, "tolerance", tol);
-    json_object_set_new(pr, "full_precession_hours",
-                        fabs(wz) > 0.0 ? api_real(c, 2.0 * fc_pi / fabs(wz) / 3600.0)
-                                       : json_null());
-    json_object_set_new(pr, "turning_points", json_integer(r.turning_points));
-    json_object_set_new(pr, "fit_standard_error", api_real(c, r.precession.stderr_slope));
-    json_object_set_new(pr, "fit_rms_residual", api_real(c, r.precession.rms_residual));
+    json_object_set_new_nocheck(tol, "next_order", api_real(c, tol_formula));
+    json_object_set_new_nocheck(tol, "fit", api_real(c, tol_fit));
+    json_object_set_new_nocheck(tol, "numerical", api_real(c, num_rate));
+    json_object_set_new_nocheck(tol, "total", api_real(c, tol_formula + tol_fit + num_rate));
+    json_object_set_new_nocheck(pr, "tolerance", tol);
+    json_object_set_new_nocheck(pr, "full_precession_hours",
+                                fabs(wz) > 0.0 ? api_real(c, 2.0 * fc_pi / fabs(wz) / 3600.0)
+                                               : json_null());
+    json_object_set_new_nocheck(pr, "turning_points", json_integer(r.turning_points));
+    json_object_set_new_nocheck(pr, "fit_standard_error", api_real(c, r.precession.stderr_slope));
+    json_object_set_new_nocheck(pr, "fit_rms_residual", api_real(c, r.precession.rms_residual));
     json_object_set_new(
         pr, "definition",
         json_string("slope of the least-squares line through the swing-plane azimuth (mod pi, "
                     "unwrapped, counterclockwise from east, rad) at every turning point (maximum "
                     "of the horizontal distance) against t; rad/s, negative = clockwise"));
-    json_object_set_new(res, "precession", pr);
+    json_object_set_new_nocheck(res, "precession", pr);
 
     json_t *sw = json_object();
     double tsmall = 2.0 * fc_pi / omega0;
-    json_object_set_new(sw, "period", api_real(c, r.period));
-    json_object_set_new(sw, "small_amplitude_period", api_real(c, tsmall));
-    json_object_set_new(sw, "finite_amplitude_period", api_real(c, r.finite_amplitude_period));
-    json_object_set_new(sw, "finite_amplitude_correction",
-                        api_real(c, r.finite_amplitude_period / tsmall - 1.0));
-    json_object_set_new(sw, "period_difference", api_real(c, r.period - r.finite_amplitude_period));
-    json_object_set_new(sw, "swings", api_real(c, r.swings));
-    json_object_set_new(sw, "semi_major_axis", api_real(c, r.mean_apocentre));
-    json_object_set_new(sw, "semi_minor_axis", api_real(c, r.mean_pericentre));
-    json_object_set_new(sw, "semi_minor_axis_release",
-                        api_real(c, fabs(r.h_vertical) / (omega0 * a)));
-    json_object_set_new(sw, "final_position", api_vec3(c, r.final_position));
-    json_object_set_new(sw, "final_velocity", api_vec3(c, r.final_velocity));
-    json_object_set_new(res, "swing", sw);
+    json_object_set_new_nocheck(sw, "period", api_real(c, r.period));
+    json_object_set_new_nocheck(sw, "small_amplitude_period", api_real(c, tsmall));
+    json_object_set_new_nocheck(sw, "finite_amplitude_period",
+                                api_real(c, r.finite_amplitude_period));
+    json_object_set_new_nocheck(sw, "finite_amplitude_correction",
+                                api_real(c, r.finite_amplitude_period / tsmall - 1.0));
+    json_object_set_new_nocheck(sw, "period_difference",
+                                api_real(c, r.period - r.finite_amplitude_period));
+    json_object_set_new_nocheck(sw, "swings", api_real(c, r.swings));
+    json_object_set_new_nocheck(sw, "semi_major_axis", api_real(c, r.mean_apocentre));
+    json_object_set_new_nocheck(sw, "semi_minor_axis", api_real(c, r.mean_pericentre));
+    json_object_set_new_nocheck(sw, "semi_minor_axis_release",
+                                api_real(c, fabs(r.h_vertical) / (omega0 * a)));
+    json_object_set_new_nocheck(sw, "final_position", api_vec3(c, r.final_position));
+    json_object_set_new_nocheck(sw, "final_velocity", api_vec3(c, r.final_velocity));
+    json_object_set_new_nocheck(res, "swing", sw);
 
     /* model */
     json_t *model = json_object();
-    json_object_set_new(model, "mode", json_string(auto_mode ? "auto" : "given"));
+    json_object_set_new_nocheck(model, "mode", json_string(auto_mode ? "auto" : "given"));
     json_t *terms = json_array();
     char why[320];
     json_array_append_new(terms,
@@ -384,8 +386,8 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                                   "always: the rod's constraint |r - (0,0,l)| = l, "
                                   "solved exactly each step (RATTLE)"));
     json_t *ce = json_object();
-    json_object_set_new(ce, "precession_rate", api_real(c, fabs(wz)));
-    json_object_set_new(ce, "relative", api_real(c, W > 0.0 ? 1.0 : 0.0));
+    json_object_set_new_nocheck(ce, "precession_rate", api_real(c, fabs(wz)));
+    json_object_set_new_nocheck(ce, "relative", api_real(c, W > 0.0 ? 1.0 : 0.0));
     if (W > 0.0)
         snprintf(why, sizeof why,
                  "always: the Coriolis term is the effect (it turns the swing "
@@ -395,10 +397,10 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
         snprintf(why, sizeof why, "W = 0: the frame does not rotate, the term is identically 0");
     json_array_append_new(terms, fc_term(c, "coriolis", W > 0.0, 2.0 * W * r.max_speed, ce, why));
     json_t *fe = json_object();
-    json_object_set_new(fe, "precession_rate", api_real(c, cf_rate));
-    json_object_set_new(fe, "relative_rate", api_real(c, cf_rate_rel));
-    json_object_set_new(fe, "relative_period", api_real(c, cf_period));
-    json_object_set_new(fe, "relative", api_real(c, cf_rel));
+    json_object_set_new_nocheck(fe, "precession_rate", api_real(c, cf_rate));
+    json_object_set_new_nocheck(fe, "relative_rate", api_real(c, cf_rate_rel));
+    json_object_set_new_nocheck(fe, "relative_period", api_real(c, cf_period));
+    json_object_set_new_nocheck(fe, "relative", api_real(c, cf_rel));
     if (!auto_mode)
         snprintf(why, sizeof why, "%s by the request", include_cf ? "included" : "left out");
     else if (W == 0.0)
@@ -410,11 +412,11 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                  cf_rel, include_cf ? ">" : "<=", target);
     json_array_append_new(
         terms, fc_term(c, "centrifugal", include_cf, W * W * r.max_displacement, fe, why));
-    json_object_set_new(model, "terms", terms);
+    json_object_set_new_nocheck(model, "terms", terms);
     if (auto_mode) {
         json_t *au = json_object();
-        json_object_set_new(au, "target_error", api_real(c, target));
-        json_object_set_new(au, "safety_factor", api_real(c, 10.0));
+        json_object_set_new_nocheck(au, "target_error", api_real(c, target));
+        json_object_set_new_nocheck(au, "safety_factor", api_real(c, 10.0));
         json_object_set_new(
             au, "rule",
             json_string("coriolis always; centrifugal of the displacement when max(rate effect / "
@@ -422,25 +424,26 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                         "+ (3/32) (a/l)^2 W^2 cos^2(lat) min(1 / |W sin lat|, T), period effect "
                         "W^2 (1 + sin^2 lat) / (4 omega0^2), from closed forms before the run "
                         "(the generic |a| T^2 / 2 bound would be meaningless over 10^4 swings)"));
-        json_object_set_new(model, "auto", au);
+        json_object_set_new_nocheck(model, "auto", au);
     }
     json_t *state = json_object();
-    json_object_set_new(state, "dimensions", json_integer(3));
-    json_object_set_new(state, "reason",
-                        json_string("the bob's position and velocity in 3-D Cartesian axes "
-                                    "with the constraint |u| = l held by RATTLE (no coordinate "
-                                    "singularity at the bottom or anywhere)"));
-    json_object_set_new(model, "state", state);
-    json_object_set_new(res, "model", model);
+    json_object_set_new_nocheck(state, "dimensions", json_integer(3));
+    json_object_set_new_nocheck(
+        state, "reason",
+        json_string("the bob's position and velocity in 3-D Cartesian axes "
+                    "with the constraint |u| = l held by RATTLE (no coordinate "
+                    "singularity at the bottom or anywhere)"));
+    json_object_set_new_nocheck(model, "state", state);
+    json_object_set_new_nocheck(res, "model", model);
 
     /* diagnostics */
     json_t *d = json_object();
-    json_object_set_new(d, "method", json_string(mech_pendulum_method_name(p.method)));
-    json_object_set_new(d, "order", json_integer(order));
-    json_object_set_new(d, "dt", api_real(c, p.t_end / (double)p.steps));
-    json_object_set_new(d, "steps_per_swing", api_real(c, sps));
-    json_object_set_new(d, "steps", json_integer(r.steps));
-    json_object_set_new(d, "force_evaluations", json_integer(r.force_evaluations));
+    json_object_set_new_nocheck(d, "method", json_string(mech_pendulum_method_name(p.method)));
+    json_object_set_new_nocheck(d, "order", json_integer(order));
+    json_object_set_new_nocheck(d, "dt", api_real(c, p.t_end / (double)p.steps));
+    json_object_set_new_nocheck(d, "steps_per_swing", api_real(c, sps));
+    json_object_set_new_nocheck(d, "steps", json_integer(r.steps));
+    json_object_set_new_nocheck(d, "force_evaluations", json_integer(r.force_evaluations));
     json_object_set_new(
         d, "why",
         json_string("a fixed-step symplectic, symmetric method on the exact constraint: the "
@@ -449,33 +452,33 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                     "to first order in W for any step, and the work is a fixed ~600 force "
                     "evaluations per swing (order 4: the period to ~1e-7 at 200 steps)"));
     json_t *en = json_object();
-    json_object_set_new(en, "name", json_string("jacobi_integral"));
-    json_object_set_new(en, "initial", api_real(c, r.energy_initial));
-    json_object_set_new(en, "max_relative_drift", api_real(c, r.max_relative_energy_drift));
-    json_object_set_new(d, "energy", en);
-    json_object_set_new(d, "max_constraint_error", api_real(c, r.max_constraint_error));
-    json_object_set_new(d, "max_tangency_error", api_real(c, r.max_tangency_error));
+    json_object_set_new_nocheck(en, "name", json_string("jacobi_integral"));
+    json_object_set_new_nocheck(en, "initial", api_real(c, r.energy_initial));
+    json_object_set_new_nocheck(en, "max_relative_drift", api_real(c, r.max_relative_energy_drift));
+    json_object_set_new_nocheck(d, "energy", en);
+    json_object_set_new_nocheck(d, "max_constraint_error", api_real(c, r.max_constraint_error));
+    json_object_set_new_nocheck(d, "max_tangency_error", api_real(c, r.max_tangency_error));
     if (est_done) {
         json_t *ee = json_object();
-        json_object_set_new(ee, "steps", json_integer(est.r.steps));
-        json_object_set_new(ee, "rule",
-                            json_string("same method at half the steps per swing; "
-                                        "the difference / (2^p - 1) estimates this "
-                                        "run's error (Richardson)"));
-        json_object_set_new(ee, "rate", api_real(c, num_rate));
-        json_object_set_new(ee, "period", api_real(c, num_period));
-        json_object_set_new(ee, "energy_drift_half_steps",
-                            api_real(c, est.r.max_relative_energy_drift));
-        json_object_set_new(d, "error_estimate", ee);
+        json_object_set_new_nocheck(ee, "steps", json_integer(est.r.steps));
+        json_object_set_new_nocheck(ee, "rule",
+                                    json_string("same method at half the steps per swing; "
+                                                "the difference / (2^p - 1) estimates this "
+                                                "run's error (Richardson)"));
+        json_object_set_new_nocheck(ee, "rate", api_real(c, num_rate));
+        json_object_set_new_nocheck(ee, "period", api_real(c, num_period));
+        json_object_set_new_nocheck(ee, "energy_drift_half_steps",
+                                    api_real(c, est.r.max_relative_energy_drift));
+        json_object_set_new_nocheck(d, "error_estimate", ee);
     } else {
-        json_object_set_new(d, "error_estimate", json_null());
-        json_object_set_new(d, "error_estimate_reason", json_string(est_skip));
+        json_object_set_new_nocheck(d, "error_estimate", json_null());
+        json_object_set_new_nocheck(d, "error_estimate_reason", json_string(est_skip));
     }
-    json_object_set_new(res, "diagnostics", d);
+    json_object_set_new_nocheck(res, "diagnostics", d);
 
     json_t *cost = json_object();
-    json_object_set_new(cost, "wall_seconds", json_real(wall));
-    json_object_set_new(res, "cost", cost);
+    json_object_set_new_nocheck(cost, "wall_seconds", json_real(wall));
+    json_object_set_new_nocheck(res, "cost", cost);
     return res;
 }
 

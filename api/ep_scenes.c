@@ -80,14 +80,14 @@ static json_t *landing_json(struct api_call *c, const struct mech_scene_landing 
                             const struct mech_vec3 *fwd)
 {
     json_t *j = json_object();
-    json_object_set_new(j, "t", api_real(c, l->t));
-    json_object_set_new(j, "east", api_real(c, l->r.x));
-    json_object_set_new(j, "north", api_real(c, l->r.y));
-    if (south) json_object_set_new(j, "south", api_real(c, -l->r.y));
+    json_object_set_new_nocheck(j, "t", api_real(c, l->t));
+    json_object_set_new_nocheck(j, "east", api_real(c, l->r.x));
+    json_object_set_new_nocheck(j, "north", api_real(c, l->r.y));
+    if (south) json_object_set_new_nocheck(j, "south", api_real(c, -l->r.y));
     if (fwd) {
         /* along the firing direction, and to its right (f x z) */
-        json_object_set_new(j, "range", api_real(c, l->r.x * fwd->x + l->r.y * fwd->y));
-        json_object_set_new(j, "right", api_real(c, l->r.x * fwd->y - l->r.y * fwd->x));
+        json_object_set_new_nocheck(j, "range", api_real(c, l->r.x * fwd->x + l->r.y * fwd->y));
+        json_object_set_new_nocheck(j, "right", api_real(c, l->r.x * fwd->y - l->r.y * fwd->x));
     }
     return j;
 }
@@ -98,18 +98,20 @@ static json_t *ballistic_answer(struct api_call *c, const char *scene,
                                 const char *accuracy)
 {
     json_t *res = json_object();
-    json_object_set_new(res, "scene", json_string(scene));
-    json_object_set_new(res, "parameters", parameters);
-    json_object_set_new(res, "numerical", landing_json(c, &r->numerical, south, fwd));
+    json_object_set_new_nocheck(res, "scene", json_string(scene));
+    json_object_set_new_nocheck(res, "parameters", parameters);
+    json_object_set_new_nocheck(res, "numerical", landing_json(c, &r->numerical, south, fwd));
     json_t *fo = landing_json(c, &r->first_order, south, fwd);
-    json_object_set_new(fo, "formula", formula);
-    json_object_set_new(res, "first_order", fo);
-    json_object_set_new(res, "difference", landing_json(c, &r->difference, south, fwd));
+    json_object_set_new_nocheck(fo, "formula", formula);
+    json_object_set_new_nocheck(res, "first_order", fo);
+    json_object_set_new_nocheck(res, "difference", landing_json(c, &r->difference, south, fwd));
     json_t *so = landing_json(c, &r->second_order, south, fwd);
-    json_object_set_new(so, "coriolis", landing_json(c, &r->second_coriolis, south, fwd));
-    json_object_set_new(so, "centrifugal", landing_json(c, &r->second_centrifugal, south, fwd));
-    json_object_set_new(so, "centrifugal_modelled",
-                        json_boolean((r->problem.fictitious & MECH_FICTITIOUS_CENTRIFUGAL) != 0));
+    json_object_set_new_nocheck(so, "coriolis", landing_json(c, &r->second_coriolis, south, fwd));
+    json_object_set_new_nocheck(so, "centrifugal",
+                                landing_json(c, &r->second_centrifugal, south, fwd));
+    json_object_set_new_nocheck(
+        so, "centrifugal_modelled",
+        json_boolean((r->problem.fictitious & MECH_FICTITIOUS_CENTRIFUGAL) != 0));
     json_object_set_new(
         so, "derivation",
         json_string(
@@ -117,28 +119,29 @@ static json_t *ballistic_answer(struct api_call *c, const char *scene,
             "from Coriolis acting on the first-order velocity, and - w x (w x (r0 t^2/2 + "
             "v0 t^3/6 + g t^4/24)) from the centrifugal term of the displacement when it "
             "is modelled), its landing time solved exactly, minus the first-order landing"));
-    json_object_set_new(res, "second_order", so);
-    json_object_set_new(res, "unexplained", landing_json(c, &r->unexplained, south, fwd));
+    json_object_set_new_nocheck(res, "second_order", so);
+    json_object_set_new_nocheck(res, "unexplained", landing_json(c, &r->unexplained, south, fwd));
     const double dh = hypot(r->difference.r.x, r->difference.r.y);
     const double sh = hypot(r->second_order.r.x, r->second_order.r.y);
     const double uh = hypot(r->unexplained.r.x, r->unexplained.r.y);
     json_t *q = json_object();
-    json_object_set_new(q, "difference_horizontal", api_real(c, dh));
-    json_object_set_new(q, "second_order_horizontal", api_real(c, sh));
-    json_object_set_new(q, "unexplained_horizontal", api_real(c, uh));
-    json_object_set_new(q, "integration_tolerance", api_real(c, r->integration_tolerance));
-    json_object_set_new(q, "within_second_order",
-                        json_boolean(dh <= 2.0 * sh + r->integration_tolerance));
-    json_object_set_new(q, "rule",
-                        json_string("within_second_order: |numerical - first_order| <= 2 "
-                                    "|second_order| + integration_tolerance (horizontal); "
-                                    "unexplained = difference - second_order is third order in w "
-                                    "plus the integration error"));
-    json_object_set_new(res, "agreement", q);
+    json_object_set_new_nocheck(q, "difference_horizontal", api_real(c, dh));
+    json_object_set_new_nocheck(q, "second_order_horizontal", api_real(c, sh));
+    json_object_set_new_nocheck(q, "unexplained_horizontal", api_real(c, uh));
+    json_object_set_new_nocheck(q, "integration_tolerance", api_real(c, r->integration_tolerance));
+    json_object_set_new_nocheck(q, "within_second_order",
+                                json_boolean(dh <= 2.0 * sh + r->integration_tolerance));
+    json_object_set_new_nocheck(
+        q, "rule",
+        json_string("within_second_order: |numerical - first_order| <= 2 "
+                    "|second_order| + integration_tolerance (horizontal); "
+                    "unexplained = difference - second_order is third order in w "
+                    "plus the integration error"));
+    json_object_set_new_nocheck(res, "agreement", q);
     struct api_traj_request rq;
     scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy);
-    json_object_set_new(res, "model", api_traj_model(c, &rq, &r->run));
-    json_object_set_new(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
+    json_object_set_new_nocheck(res, "model", api_traj_model(c, &rq, &r->run));
+    json_object_set_new_nocheck(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
     return res;
 }
 
@@ -219,11 +222,11 @@ static json_t *falling_op(struct api_call *c, const json_t *body)
     const double h = api_number(body, "height", 0);
     s.r0 = mech_vec3_make(0, 0, h);
     json_t *par = json_object();
-    json_object_set_new(par, "height", api_real(c, h));
-    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
-    json_object_set_new(par, "g", api_real(c, s.g));
-    json_object_set_new(par, "omega_magnitude", api_real(c, s.omega));
-    json_object_set_new(par, "target_error", api_real(c, target));
+    json_object_set_new_nocheck(par, "height", api_real(c, h));
+    json_object_set_new_nocheck(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new_nocheck(par, "g", api_real(c, s.g));
+    json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, s.omega));
+    json_object_set_new_nocheck(par, "target_error", api_real(c, target));
     json_t *f = json_string("x_east = (W cos(lat) / 3) sqrt(8 h^3 / g), t = sqrt(2 h / g), no "
                             "north-south deflection (notes §1.3)");
     return run_ballistic(c, body, "falling-object", &s, par, f, 1, NULL, target);
@@ -269,15 +272,15 @@ static json_t *shot_op(struct api_call *c, const json_t *body)
     const double h = v0 * v0 / (2.0 * s.g);
     s.v0 = mech_vec3_make(0, 0, v0);
     json_t *par = json_object();
-    json_object_set_new(par, "speed", api_real(c, v0));
-    json_object_set_new(par, "height", api_real(c, h));
-    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
-    json_object_set_new(par, "g", api_real(c, s.g));
-    json_object_set_new(par, "omega_magnitude", api_real(c, s.omega));
-    json_object_set_new(par, "target_error", api_real(c, target));
+    json_object_set_new_nocheck(par, "speed", api_real(c, v0));
+    json_object_set_new_nocheck(par, "height", api_real(c, h));
+    json_object_set_new_nocheck(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new_nocheck(par, "g", api_real(c, s.g));
+    json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, s.omega));
+    json_object_set_new_nocheck(par, "target_error", api_real(c, target));
     const double lat = s.latitude_deg * ep_pi / 180.0;
     const double drop = s.omega * cos(lat) / 3.0 * sqrt(8.0 * h * h * h / s.g);
-    json_object_set_new(par, "drop_deflection_east", api_real(c, drop));
+    json_object_set_new_nocheck(par, "drop_deflection_east", api_real(c, drop));
     json_t *f = json_string("x_west = (4/3) W cos(lat) sqrt(8 h^3 / g), t = 2 v0 / g (notes §1.5 "
                             "problem 3): 4 x the drop's eastward deflection for the same height");
     return run_ballistic(c, body, "vertical-shot", &s, par, f, 0, NULL, target);
@@ -326,14 +329,14 @@ static json_t *cannon_op(struct api_call *c, const json_t *body)
     s.v0 = mech_vec3_make(v0 * cos(al) * cos(ph), v0 * cos(al) * sin(ph), v0 * sin(al));
     const double lat = s.latitude_deg * ep_pi / 180.0, g = s.g, W = s.omega;
     json_t *par = json_object();
-    json_object_set_new(par, "speed", api_real(c, v0));
-    json_object_set_new(par, "elevation_deg", api_real(c, al * 180.0 / ep_pi));
-    json_object_set_new(par, "azimuth_deg", api_real(c, ph * 180.0 / ep_pi));
-    json_object_set_new(par, "latitude_deg", api_real(c, s.latitude_deg));
-    json_object_set_new(par, "g", api_real(c, g));
-    json_object_set_new(par, "omega_magnitude", api_real(c, W));
-    json_object_set_new(par, "target_error", api_real(c, target));
-    json_object_set_new(par, "velocity", api_vec3(c, s.v0));
+    json_object_set_new_nocheck(par, "speed", api_real(c, v0));
+    json_object_set_new_nocheck(par, "elevation_deg", api_real(c, al * 180.0 / ep_pi));
+    json_object_set_new_nocheck(par, "azimuth_deg", api_real(c, ph * 180.0 / ep_pi));
+    json_object_set_new_nocheck(par, "latitude_deg", api_real(c, s.latitude_deg));
+    json_object_set_new_nocheck(par, "g", api_real(c, g));
+    json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, W));
+    json_object_set_new_nocheck(par, "target_error", api_real(c, target));
+    json_object_set_new_nocheck(par, "velocity", api_vec3(c, s.v0));
     json_t *f = json_string("r_1(T0) - v_h z_1(T0) / z_0'(T0) with r_1 = -w x (v0 t^2 + g t^3/3), "
                             "T0 = 2 v0 sin(alpha) / g (notes §1.3-1.4, problems 4-5)");
     json_t *res = run_ballistic(c, body, "cannonball", &s, par, f, 0, &fwd, target);
@@ -341,21 +344,23 @@ static json_t *cannon_op(struct api_call *c, const json_t *body)
     /* the no-rotation landing and the notes' due-east formulas */
     const double T0 = 2.0 * v0 * sin(al) / g, R = v0 * v0 * sin(2.0 * al) / g;
     json_t *z = json_object();
-    json_object_set_new(z, "t", api_real(c, T0));
-    json_object_set_new(z, "range", api_real(c, R));
-    json_object_set_new(res, "zeroth_order", z);
+    json_object_set_new_nocheck(z, "t", api_real(c, T0));
+    json_object_set_new_nocheck(z, "range", api_real(c, R));
+    json_object_set_new_nocheck(res, "zeroth_order", z);
     json_t *ne = json_object();
     const double sa = sin(al), ca = cos(al);
-    json_object_set_new(ne, "south_deflection",
-                        api_real(c, 4.0 * v0 * v0 * v0 * W * sin(lat) * sa * sa * ca / (g * g)));
-    json_object_set_new(ne, "range_increase",
-                        api_real(c, W * cos(lat) * sqrt(2.0 * R * R * R / g) *
-                                        (sqrt(ca / sa) - sa * sqrt(sa / ca) / (3.0 * ca))));
-    json_object_set_new(ne, "formula",
-                        json_string("notes §1.5 problems 4-5 (firing due east): d = 4 v0^3 W "
-                                    "sin(lat) sin^2(alpha) cos(alpha) / g^2 south; dR = W cos(lat) "
-                                    "sqrt(2 R^3 / g) (cot^1/2 alpha - tan^3/2 alpha / 3)"));
-    json_object_set_new(res, "notes_due_east", ne);
+    json_object_set_new_nocheck(
+        ne, "south_deflection",
+        api_real(c, 4.0 * v0 * v0 * v0 * W * sin(lat) * sa * sa * ca / (g * g)));
+    json_object_set_new_nocheck(ne, "range_increase",
+                                api_real(c, W * cos(lat) * sqrt(2.0 * R * R * R / g) *
+                                                (sqrt(ca / sa) - sa * sqrt(sa / ca) / (3.0 * ca))));
+    json_object_set_new_nocheck(
+        ne, "formula",
+        json_string("notes §1.5 problems 4-5 (firing due east): d = 4 v0^3 W "
+                    "sin(lat) sin^2(alpha) cos(alpha) / g^2 south; dR = W cos(lat) "
+                    "sqrt(2 R^3 / g) (cot^1/2 alpha - tan^3/2 alpha / 3)"));
+    json_object_set_new_nocheck(res, "notes_due_east", ne);
     return res;
 }
 
@@ -478,40 +483,40 @@ static json_t *table_op(struct api_call *c, const json_t *body)
     json_t *res = NULL;
     if (st == MECH_OK) {
         res = json_object();
-        json_object_set_new(res, "scene", json_string("rotating-table"));
+        json_object_set_new_nocheck(res, "scene", json_string("rotating-table"));
         json_t *par = json_object();
-        json_object_set_new(par, "experiment", json_string(ex));
-        json_object_set_new(par, "omega", api_real(c, s.omega));
-        json_object_set_new(par, "mass", api_real(c, s.mass));
+        json_object_set_new_nocheck(par, "experiment", json_string(ex));
+        json_object_set_new_nocheck(par, "omega", api_real(c, s.omega));
+        json_object_set_new_nocheck(par, "mass", api_real(c, s.mass));
         if (s.experiment != MECH_TABLE_CUSTOM)
-            json_object_set_new(par, "radius", api_real(c, s.radius));
-        json_object_set_new(par, "t_end", api_real(c, r->t_end));
-        json_object_set_new(par, "target_error", api_real(c, target));
-        json_object_set_new(res, "parameters", par);
+            json_object_set_new_nocheck(par, "radius", api_real(c, s.radius));
+        json_object_set_new_nocheck(par, "t_end", api_real(c, r->t_end));
+        json_object_set_new_nocheck(par, "target_error", api_real(c, target));
+        json_object_set_new_nocheck(res, "parameters", par);
         json_t *init = json_object();
-        json_object_set_new(init, "position", api_vec3(c, r->r0_inertial));
-        json_object_set_new(init, "velocity_inertial", api_vec3(c, r->v0_inertial));
-        json_object_set_new(init, "velocity_rotating", api_vec3(c, r->v0_rotating));
-        json_object_set_new(res, "initial", init);
+        json_object_set_new_nocheck(init, "position", api_vec3(c, r->r0_inertial));
+        json_object_set_new_nocheck(init, "velocity_inertial", api_vec3(c, r->v0_inertial));
+        json_object_set_new_nocheck(init, "velocity_rotating", api_vec3(c, r->v0_rotating));
+        json_object_set_new_nocheck(res, "initial", init);
         json_t *f = json_object();
-        json_object_set_new(f, "centrifugal", api_vec3(c, r->centrifugal));
-        json_object_set_new(f, "coriolis", api_vec3(c, r->coriolis));
-        json_object_set_new(f, "total", api_vec3(c, r->total));
-        json_object_set_new(res, "effective_force_at_start", f);
-        json_object_set_new(res, "t", api_reals(c, t, r->n_samples));
-        json_object_set_new(res, "inertial", vecs_json(c, a, r->n_samples));
-        json_object_set_new(res, "rotating", vecs_json(c, b, r->n_samples));
-        json_object_set_new(res, "rotating_exact", vecs_json(c, x, r->n_samples));
-        json_object_set_new(res, "end_rotating", api_vec3(c, r->end_rotating));
+        json_object_set_new_nocheck(f, "centrifugal", api_vec3(c, r->centrifugal));
+        json_object_set_new_nocheck(f, "coriolis", api_vec3(c, r->coriolis));
+        json_object_set_new_nocheck(f, "total", api_vec3(c, r->total));
+        json_object_set_new_nocheck(res, "effective_force_at_start", f);
+        json_object_set_new_nocheck(res, "t", api_reals(c, t, r->n_samples));
+        json_object_set_new_nocheck(res, "inertial", vecs_json(c, a, r->n_samples));
+        json_object_set_new_nocheck(res, "rotating", vecs_json(c, b, r->n_samples));
+        json_object_set_new_nocheck(res, "rotating_exact", vecs_json(c, x, r->n_samples));
+        json_object_set_new_nocheck(res, "end_rotating", api_vec3(c, r->end_rotating));
         json_t *err = json_object();
-        json_object_set_new(err, "max_position_error", api_real(c, r->max_position_error));
-        json_object_set_new(err, "max_relative_position_error",
-                            api_real(c, r->max_relative_position_error));
-        json_object_set_new(res, "rotating_vs_exact", err);
+        json_object_set_new_nocheck(err, "max_position_error", api_real(c, r->max_position_error));
+        json_object_set_new_nocheck(err, "max_relative_position_error",
+                                    api_real(c, r->max_relative_position_error));
+        json_object_set_new_nocheck(res, "rotating_vs_exact", err);
         struct api_traj_request rq;
         scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy_name(body));
-        json_object_set_new(res, "model", api_traj_model(c, &rq, &r->run));
-        json_object_set_new(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
+        json_object_set_new_nocheck(res, "model", api_traj_model(c, &rq, &r->run));
+        json_object_set_new_nocheck(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
     }
     free(r);
     free(t);

@@ -104,32 +104,32 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
 
     json_t *res = json_object();
     json_t *jp = json_array(), *jv = json_array();
-    json_object_set_new(res, "t", api_reals(c, t, r.n_samples));
+    json_object_set_new_nocheck(res, "t", api_reals(c, t, r.n_samples));
     for (size_t i = 0; jp && jv && i < r.n_samples; i++) {
         json_array_append_new(jp, api_vec3(c, pos[i]));
         json_array_append_new(jv, api_vec3(c, vel[i]));
     }
-    json_object_set_new(res, "position", jp);
-    json_object_set_new(res, "velocity", jv);
+    json_object_set_new_nocheck(res, "position", jp);
+    json_object_set_new_nocheck(res, "velocity", jv);
     free(t);
     free(pos);
     free(vel);
 
     if (r.stopped) {
         json_t *s = json_object();
-        json_object_set_new(s, "t", api_real(c, r.t_stop));
-        json_object_set_new(s, "position", api_vec3(c, r.stop_position));
-        json_object_set_new(s, "velocity", api_vec3(c, r.stop_velocity));
-        json_object_set_new(res, "stopped", s);
+        json_object_set_new_nocheck(s, "t", api_real(c, r.t_stop));
+        json_object_set_new_nocheck(s, "position", api_vec3(c, r.stop_position));
+        json_object_set_new_nocheck(s, "velocity", api_vec3(c, r.stop_velocity));
+        json_object_set_new_nocheck(res, "stopped", s);
     } else {
-        json_object_set_new(res, "stopped", json_null());
+        json_object_set_new_nocheck(res, "stopped", json_null());
     }
 
     json_t *model = api_traj_model(c, &rq, &r);
-    json_object_set_new(res, "model", model);
+    json_object_set_new_nocheck(res, "model", model);
 
     json_t *d = api_traj_diagnostics(c, &rq, &r);
-    json_object_set_new(res, "diagnostics", d);
+    json_object_set_new_nocheck(res, "diagnostics", d);
 
     if (!res || !jp || !jv || !model || !d ||
         json_array_size(jp) != r.n_samples) {

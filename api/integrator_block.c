@@ -83,12 +83,12 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
 static void settings(struct api_call *c, json_t *o, const struct api_integrator_choice *ch)
 {
     const struct mech_integrator *m = mech_ode_method_find(ch->method);
-    json_object_set_new(o, "method", json_string(ch->method));
+    json_object_set_new_nocheck(o, "method", json_string(ch->method));
     if (m && mech_ode_method_describe(m).adaptive) {
-        json_object_set_new(o, "rtol", api_real(c, ch->opt.rtol));
-        json_object_set_new(o, "atol", api_real(c, ch->opt.atol));
+        json_object_set_new_nocheck(o, "rtol", api_real(c, ch->opt.rtol));
+        json_object_set_new_nocheck(o, "atol", api_real(c, ch->opt.atol));
     } else {
-        json_object_set_new(o, "dt", api_real(c, ch->opt.dt));
+        json_object_set_new_nocheck(o, "dt", api_real(c, ch->opt.dt));
     }
 }
 
@@ -96,14 +96,15 @@ json_t *api_integrator_block_selection(struct api_call *c, const struct api_inte
 {
     json_t *sel = json_object();
     if (!sel) return NULL;
-    json_object_set_new(sel, "requested",
-                        ch->requested ? json_deep_copy(ch->requested) : json_null());
+    json_object_set_new_nocheck(sel, "requested",
+                                ch->requested ? json_deep_copy(ch->requested) : json_null());
     settings(c, sel, ch);
     if (ch->chosen) {
-        json_object_set_new(sel, "target_error", api_real(c, ch->target));
-        json_object_set_new(sel, "reason", json_string(ch->reason));
+        json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
+        json_object_set_new_nocheck(sel, "reason", json_string(ch->reason));
     } else {
-        json_object_set_new(sel, "reason", json_string("method and settings given in the request"));
+        json_object_set_new_nocheck(sel, "reason",
+                                    json_string("method and settings given in the request"));
     }
     return sel;
 }
@@ -114,8 +115,9 @@ void api_integrator_block_stats(struct api_call *c, json_t *d,
 {
     settings(c, d, ch);
     const struct mech_integrator *m = mech_ode_method_find(ch->method);
-    json_object_set_new(d, "order", json_integer(m ? mech_ode_method_describe(m).order : 0));
-    json_object_set_new(d, "steps", json_integer(stats->steps));
-    json_object_set_new(d, "rejected_steps", json_integer(stats->rejected_steps));
-    json_object_set_new(d, "rhs_evaluations", json_integer(stats->rhs_evaluations));
+    json_object_set_new_nocheck(d, "order",
+                                json_integer(m ? mech_ode_method_describe(m).order : 0));
+    json_object_set_new_nocheck(d, "steps", json_integer(stats->steps));
+    json_object_set_new_nocheck(d, "rejected_steps", json_integer(stats->rejected_steps));
+    json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(stats->rhs_evaluations));
 }

@@ -90,12 +90,11 @@ json_t *api_problem_object(enum api_problem kind, const char *detail)
     if ((int)kind <= 0 || kind >= API_PROBLEM_COUNT) kind = API_PROBLEM_INTERNAL;
     json_t *p = json_object();
     if (!p) return NULL;
-    json_object_set_new(p, "type", json_string(problems[kind].type));
-    json_object_set_new(p, "title", json_string(problems[kind].title));
-    json_object_set_new(p, "status", json_integer(problems[kind].status));
-    json_object_set_new(p, "detail", api_json_text(detail && *detail
-                                                       ? detail
-                                                       : problems[kind].description));
+    json_object_set_new_nocheck(p, "type", json_string(problems[kind].type));
+    json_object_set_new_nocheck(p, "title", json_string(problems[kind].title));
+    json_object_set_new_nocheck(p, "status", json_integer(problems[kind].status));
+    json_object_set_new_nocheck(
+        p, "detail", api_json_text(detail && *detail ? detail : problems[kind].description));
     return p;
 }
 

@@ -78,7 +78,7 @@ json_t *api_error_entry(const char *pointer, const char *detail)
 {
     json_t *e = json_object();
     if (!e) return NULL;
-    json_object_set_new(e, "pointer", api_json_text(pointer));
-    json_object_set_new(e, "detail", api_json_text(detail));
+    json_object_set_new_nocheck(e, "pointer", api_json_text(pointer));
+    json_object_set_new_nocheck(e, "detail", api_json_text(detail));
     return e;
 }

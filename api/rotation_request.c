@@ -161,21 +161,22 @@ int api_rotation_encode(struct api_call *c, json_t *out, const struct api_rotati
                                 euler_entry(c, &ea));
         }
     }
-    json_object_set_new(out, "sense",
-                        json_string(r->sense == MECH_ROTATION_ACTIVE ? "active" : "passive"));
-    json_object_set_new(out, "matrix", api_mat3(c, r->matrix));
-    json_object_set_new(out, "quaternion", api_reals(c, r->q, 4));
+    json_object_set_new_nocheck(
+        out, "sense", json_string(r->sense == MECH_ROTATION_ACTIVE ? "active" : "passive"));
+    json_object_set_new_nocheck(out, "matrix", api_mat3(c, r->matrix));
+    json_object_set_new_nocheck(out, "quaternion", api_reals(c, r->q, 4));
     json_object_set_new(
         out, "axis_angle",
         json_pack("{s:o,s:o}", "axis", api_vec3(c, axis), "angle", api_real(c, angle)));
-    json_object_set_new(out, "rotation_vector", api_vec3(c, mech_vec3_scale(axis, angle)));
-    json_object_set_new(out, "euler_zxz", api_reals(c, zxz.angles, 3));
-    json_object_set_new(out, "gimbal_lock", json_boolean(zxz.gimbal_lock));
-    json_object_set_new(out, "gimbal",
-                        json_pack("{s:o,s:s,s:o}", "lock_distance", api_real(c, zxz.lock_distance),
-                                  "combination", zxz.combination_sign > 0 ? "phi+psi" : "phi-psi",
-                                  "value", api_real(c, zxz.combination)));
-    json_object_set_new(out, "euler", euler);
+    json_object_set_new_nocheck(out, "rotation_vector", api_vec3(c, mech_vec3_scale(axis, angle)));
+    json_object_set_new_nocheck(out, "euler_zxz", api_reals(c, zxz.angles, 3));
+    json_object_set_new_nocheck(out, "gimbal_lock", json_boolean(zxz.gimbal_lock));
+    json_object_set_new_nocheck(out, "gimbal",
+                                json_pack("{s:o,s:s,s:o}", "lock_distance",
+                                          api_real(c, zxz.lock_distance), "combination",
+                                          zxz.combination_sign > 0 ? "phi+psi" : "phi-psi", "value",
+                                          api_real(c, zxz.combination)));
+    json_object_set_new_nocheck(out, "euler", euler);
     json_object_set_new(
         out, "residuals",
         json_pack("{s:o,s:o}", "orthonormality", api_real(c, r->orth), "det", api_real(c, r->det)));
@@ -195,6 +196,6 @@ int api_rotation_encode(struct api_call *c, json_t *out, const struct api_rotati
                  zxz.combination_sign > 0 ? "phi + psi" : "phi - psi");
         json_array_append_new(notes, json_string(txt));
     }
-    json_object_set_new(out, "notes", notes);
+    json_object_set_new_nocheck(out, "notes", notes);
     return 0;
 }

@@ -239,76 +239,78 @@ json_t *api_traj_model(struct api_call *c, const struct api_traj_request *rq,
         json_decref(terms);
         return NULL;
     }
-    json_object_set_new(model, "mode", json_string(rq->auto_model ? "auto" : "given"));
+    json_object_set_new_nocheck(model, "mode", json_string(rq->auto_model ? "auto" : "given"));
     const size_t nf = rq->p.n_forces;
     for (size_t i = 0; i < r->n_terms; i++) {
         json_t *tm = json_object();
-        json_object_set_new(tm, "term", json_string(r->terms[i].term));
+        json_object_set_new_nocheck(tm, "term", json_string(r->terms[i].term));
         if (r->terms[i].force_index >= 0)
-            json_object_set_new(tm, "force_index", json_integer(r->terms[i].force_index));
-        json_object_set_new(tm, "included", json_boolean(r->terms[i].included));
-        json_object_set_new(tm, "max_acceleration", api_real(c, r->terms[i].max_acceleration));
+            json_object_set_new_nocheck(tm, "force_index", json_integer(r->terms[i].force_index));
+        json_object_set_new_nocheck(tm, "included", json_boolean(r->terms[i].included));
+        json_object_set_new_nocheck(tm, "max_acceleration",
+                                    api_real(c, r->terms[i].max_acceleration));
         if (rq->auto_model && i >= nf && i - nf < MECH_TRAJECTORY_N_FICTITIOUS) {
             const struct mech_term_estimate *te = &rq->model.terms[i - nf];
             if (te->applicable) {
                 json_t *ee = json_object();
-                json_object_set_new(ee, "acceleration_bound", api_real(c, te->accel_bound));
-                json_object_set_new(ee, "position", api_real(c, te->position_effect));
-                json_object_set_new(ee, "velocity", api_real(c, te->velocity_effect));
-                json_object_set_new(ee, "relative", api_real(c, te->relative_effect));
-                json_object_set_new(tm, "estimated_effect", ee);
+                json_object_set_new_nocheck(ee, "acceleration_bound", api_real(c, te->accel_bound));
+                json_object_set_new_nocheck(ee, "position", api_real(c, te->position_effect));
+                json_object_set_new_nocheck(ee, "velocity", api_real(c, te->velocity_effect));
+                json_object_set_new_nocheck(ee, "relative", api_real(c, te->relative_effect));
+                json_object_set_new_nocheck(tm, "estimated_effect", ee);
             } else {
-                json_object_set_new(tm, "estimated_effect", json_null());
+                json_object_set_new_nocheck(tm, "estimated_effect", json_null());
             }
-            json_object_set_new(tm, "reason", json_string(te->reason));
+            json_object_set_new_nocheck(tm, "reason", json_string(te->reason));
         }
         json_array_append_new(terms, tm);
     }
-    json_object_set_new(model, "terms", terms);
+    json_object_set_new_nocheck(model, "terms", terms);
     if (rq->auto_model) {
         const struct mech_trajectory_model *m = &rq->model;
         json_t *a = json_object();
-        json_object_set_new(a, "target_error", api_real(c, m->target));
-        json_object_set_new(a, "safety_factor", api_real(c, m->safety));
+        json_object_set_new_nocheck(a, "target_error", api_real(c, m->target));
+        json_object_set_new_nocheck(a, "safety_factor", api_real(c, m->safety));
         json_object_set_new(
             a, "rule",
             json_string("a term is included when max(|a| T^2/2 / L, |a| T / V) > target / "
                         "safety, with |a| the term's largest acceleration, L and V the largest "
                         "|r| and |v|, T the duration, all from a first pass with every term at "
                         "draft accuracy (1e-3 relative: the bounds are good to ~1e-3)"));
-        json_object_set_new(a, "time_scale", api_real(c, m->time_scale));
-        json_object_set_new(a, "position_scale", api_real(c, m->position_scale));
-        json_object_set_new(a, "velocity_scale", api_real(c, m->velocity_scale));
+        json_object_set_new_nocheck(a, "time_scale", api_real(c, m->time_scale));
+        json_object_set_new_nocheck(a, "position_scale", api_real(c, m->position_scale));
+        json_object_set_new_nocheck(a, "velocity_scale", api_real(c, m->velocity_scale));
         if (m->first_pass_done) {
             json_t *fp = json_object();
-            json_object_set_new(fp, "method", json_string(m->first_pass_method));
-            json_object_set_new(fp, "rtol", api_real(c, m->first_pass_opt.rtol));
-            json_object_set_new(fp, "atol", api_real(c, m->first_pass_opt.atol));
-            json_object_set_new(fp, "steps", json_integer(m->first_pass_stats.steps));
-            json_object_set_new(fp, "rhs_evaluations",
-                                json_integer(m->first_pass_stats.rhs_evaluations));
-            json_object_set_new(a, "first_pass", fp);
+            json_object_set_new_nocheck(fp, "method", json_string(m->first_pass_method));
+            json_object_set_new_nocheck(fp, "rtol", api_real(c, m->first_pass_opt.rtol));
+            json_object_set_new_nocheck(fp, "atol", api_real(c, m->first_pass_opt.atol));
+            json_object_set_new_nocheck(fp, "steps", json_integer(m->first_pass_stats.steps));
+            json_object_set_new_nocheck(fp, "rhs_evaluations",
+                                        json_integer(m->first_pass_stats.rhs_evaluations));
+            json_object_set_new_nocheck(a, "first_pass", fp);
         } else {
-            json_object_set_new(a, "first_pass", json_null());
+            json_object_set_new_nocheck(a, "first_pass", json_null());
         }
-        json_object_set_new(model, "auto", a);
+        json_object_set_new_nocheck(model, "auto", a);
     }
     json_t *state = json_object();
-    json_object_set_new(state, "dimensions", json_integer(r->dimensions));
+    json_object_set_new_nocheck(state, "dimensions", json_integer(r->dimensions));
     if (r->dimensions == 2) {
-        json_object_set_new(state, "plane_normal", api_vec3(c, r->plane_normal));
-        json_object_set_new(state, "reason",
-                            json_string("planar scene: r0, v0 and every force and modelled term "
-                                        "keep the motion in the plane through the origin normal "
-                                        "to plane_normal; integrated in its two coordinates"));
+        json_object_set_new_nocheck(state, "plane_normal", api_vec3(c, r->plane_normal));
+        json_object_set_new_nocheck(
+            state, "reason",
+            json_string("planar scene: r0, v0 and every force and modelled term "
+                        "keep the motion in the plane through the origin normal "
+                        "to plane_normal; integrated in its two coordinates"));
     } else {
-        json_object_set_new(state, "plane_normal", json_null());
+        json_object_set_new_nocheck(state, "plane_normal", json_null());
         json_object_set_new(
             state, "reason",
             json_string("not planar (or a Boris run with velocity-dependent forces): three "
                         "dimensions"));
     }
-    json_object_set_new(model, "state", state);
+    json_object_set_new_nocheck(model, "state", state);
     return model;
 }
 
@@ -316,12 +318,12 @@ json_t *api_traj_settings(struct api_call *c, const struct mech_trajectory_probl
 {
     json_t *s = json_object();
     const struct mech_integrator *m = mech_ode_method_find(p->method);
-    json_object_set_new(s, "method", json_string(p->method));
+    json_object_set_new_nocheck(s, "method", json_string(p->method));
     if (m && mech_ode_method_describe(m).adaptive) {
-        json_object_set_new(s, "rtol", api_real(c, p->opt.rtol));
-        json_object_set_new(s, "atol", api_real(c, p->opt.atol));
+        json_object_set_new_nocheck(s, "rtol", api_real(c, p->opt.rtol));
+        json_object_set_new_nocheck(s, "atol", api_real(c, p->opt.atol));
     } else {
-        json_object_set_new(s, "dt", api_real(c, p->opt.dt));
+        json_object_set_new_nocheck(s, "dt", api_real(c, p->opt.dt));
     }
     return s;
 }
@@ -329,15 +331,15 @@ json_t *api_traj_settings(struct api_call *c, const struct mech_trajectory_probl
 json_t *api_traj_invariant(struct api_call *c, const struct mech_trajectory_invariant *inv)
 {
     json_t *j = json_object();
-    json_object_set_new(j, "name", json_string(inv->name));
-    json_object_set_new(j, "conserved", json_boolean(inv->conserved));
-    if (inv->note) json_object_set_new(j, "note", json_string(inv->note));
-    json_object_set_new(j, "initial", api_real(c, inv->initial));
-    json_object_set_new(j, "final", api_real(c, inv->final));
-    json_object_set_new(j, "max_relative_drift", api_real(c, inv->max_relative_drift));
+    json_object_set_new_nocheck(j, "name", json_string(inv->name));
+    json_object_set_new_nocheck(j, "conserved", json_boolean(inv->conserved));
+    if (inv->note) json_object_set_new_nocheck(j, "note", json_string(inv->note));
+    json_object_set_new_nocheck(j, "initial", api_real(c, inv->initial));
+    json_object_set_new_nocheck(j, "final", api_real(c, inv->final));
+    json_object_set_new_nocheck(j, "max_relative_drift", api_real(c, inv->max_relative_drift));
     if (inv->is_vector) {
-        json_object_set_new(j, "initial_vector", api_vec3(c, inv->initial_vector));
-        json_object_set_new(j, "final_vector", api_vec3(c, inv->final_vector));
+        json_object_set_new_nocheck(j, "initial_vector", api_vec3(c, inv->initial_vector));
+        json_object_set_new_nocheck(j, "final_vector", api_vec3(c, inv->final_vector));
     }
     return j;
 }
@@ -346,18 +348,18 @@ static json_t *reference_json(struct api_call *c, const struct mech_trajectory_r
 {
     if (rf->kind == MECH_REFERENCE_NONE) return json_null();
     json_t *j = json_object();
-    json_object_set_new(j, "kind",
-                        json_string(rf->kind == MECH_REFERENCE_EXACT ? "exact" : "first_order"));
-    json_object_set_new(j, "name", json_string(rf->name));
-    json_object_set_new(j, "max_position_error", api_real(c, rf->max_position_error));
-    json_object_set_new(j, "final_position_error", api_real(c, rf->final_position_error));
-    json_object_set_new(j, "max_velocity_error", api_real(c, rf->max_velocity_error));
-    json_object_set_new(j, "max_relative_position_error",
-                        api_real(c, rf->max_relative_position_error));
-    json_object_set_new(j, "max_relative_velocity_error",
-                        api_real(c, rf->max_relative_velocity_error));
+    json_object_set_new_nocheck(
+        j, "kind", json_string(rf->kind == MECH_REFERENCE_EXACT ? "exact" : "first_order"));
+    json_object_set_new_nocheck(j, "name", json_string(rf->name));
+    json_object_set_new_nocheck(j, "max_position_error", api_real(c, rf->max_position_error));
+    json_object_set_new_nocheck(j, "final_position_error", api_real(c, rf->final_position_error));
+    json_object_set_new_nocheck(j, "max_velocity_error", api_real(c, rf->max_velocity_error));
+    json_object_set_new_nocheck(j, "max_relative_position_error",
+                                api_real(c, rf->max_relative_position_error));
+    json_object_set_new_nocheck(j, "max_relative_velocity_error",
+                                api_real(c, rf->max_relative_velocity_error));
     if (rf->kind == MECH_REFERENCE_FIRST_ORDER)
-        json_object_set_new(j, "truncation_estimate", api_real(c, rf->truncation_estimate));
+        json_object_set_new_nocheck(j, "truncation_estimate", api_real(c, rf->truncation_estimate));
     return j;
 }
 
@@ -368,23 +370,23 @@ json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *
     json_t *d = json_object();
     if (!d) return NULL;
     struct mech_ode_method_info mi = mech_ode_method_describe(mech_ode_method_find(r->method));
-    json_object_set_new(d, "method", json_string(r->method));
+    json_object_set_new_nocheck(d, "method", json_string(r->method));
     if (mi.adaptive) {
-        json_object_set_new(d, "rtol", api_real(c, p->opt.rtol));
-        json_object_set_new(d, "atol", api_real(c, p->opt.atol));
+        json_object_set_new_nocheck(d, "rtol", api_real(c, p->opt.rtol));
+        json_object_set_new_nocheck(d, "atol", api_real(c, p->opt.atol));
     } else {
-        json_object_set_new(d, "dt", api_real(c, p->opt.dt));
+        json_object_set_new_nocheck(d, "dt", api_real(c, p->opt.dt));
     }
-    json_object_set_new(d, "order", json_integer(mi.order));
-    json_object_set_new(d, "steps", json_integer(r->stats.steps));
-    json_object_set_new(d, "rejected_steps", json_integer(r->stats.rejected_steps));
-    json_object_set_new(d, "rhs_evaluations", json_integer(r->stats.rhs_evaluations));
-    json_object_set_new(d, "invariant", api_traj_invariant(c, &r->invariant));
+    json_object_set_new_nocheck(d, "order", json_integer(mi.order));
+    json_object_set_new_nocheck(d, "steps", json_integer(r->stats.steps));
+    json_object_set_new_nocheck(d, "rejected_steps", json_integer(r->stats.rejected_steps));
+    json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(r->stats.rhs_evaluations));
+    json_object_set_new_nocheck(d, "invariant", api_traj_invariant(c, &r->invariant));
     json_t *invs = json_array();
     for (size_t i = 0; invs && i < r->n_invariants; i++)
         json_array_append_new(invs, api_traj_invariant(c, &r->invariants[i]));
-    json_object_set_new(d, "invariants", invs);
-    json_object_set_new(d, "reference", reference_json(c, &r->reference));
+    json_object_set_new_nocheck(d, "invariants", invs);
+    json_object_set_new_nocheck(d, "reference", reference_json(c, &r->reference));
     if (p->error_estimate) {
         const struct mech_trajectory_error_estimate *ee = &r->error_estimate;
         json_t *j = json_object();
@@ -392,40 +394,42 @@ json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *
             struct mech_trajectory_problem p2 = *p;
             p2.method = ee->method;
             p2.opt = ee->opt;
-            json_object_set_new(j, "settings", api_traj_settings(c, &p2));
-            json_object_set_new(j, "rule", json_string(ee->rule));
-            json_object_set_new(j, "max_position_difference",
-                                api_real(c, ee->max_position_difference));
-            json_object_set_new(j, "final_position_difference",
-                                api_real(c, ee->final_position_difference));
-            json_object_set_new(j, "max_velocity_difference",
-                                api_real(c, ee->max_velocity_difference));
-            json_object_set_new(j, "max_position_error_estimate",
-                                api_real(c, ee->max_position_error_estimate));
-            json_object_set_new(j, "steps", json_integer(ee->stats.steps));
-            json_object_set_new(j, "rhs_evaluations", json_integer(ee->stats.rhs_evaluations));
+            json_object_set_new_nocheck(j, "settings", api_traj_settings(c, &p2));
+            json_object_set_new_nocheck(j, "rule", json_string(ee->rule));
+            json_object_set_new_nocheck(j, "max_position_difference",
+                                        api_real(c, ee->max_position_difference));
+            json_object_set_new_nocheck(j, "final_position_difference",
+                                        api_real(c, ee->final_position_difference));
+            json_object_set_new_nocheck(j, "max_velocity_difference",
+                                        api_real(c, ee->max_velocity_difference));
+            json_object_set_new_nocheck(j, "max_position_error_estimate",
+                                        api_real(c, ee->max_position_error_estimate));
+            json_object_set_new_nocheck(j, "steps", json_integer(ee->stats.steps));
+            json_object_set_new_nocheck(j, "rhs_evaluations",
+                                        json_integer(ee->stats.rhs_evaluations));
         } else {
-            json_object_set_new(j, "skipped",
-                                json_string("the scene has a reference solution: see reference"));
+            json_object_set_new_nocheck(
+                j, "skipped", json_string("the scene has a reference solution: see reference"));
         }
-        json_object_set_new(d, "error_estimate", j);
+        json_object_set_new_nocheck(d, "error_estimate", j);
     }
     json_t *sel = json_object();
-    json_object_set_new(sel, "requested", rq->requested ? json_deep_copy(rq->requested)
-                                                        : json_null());
+    json_object_set_new_nocheck(sel, "requested",
+                                rq->requested ? json_deep_copy(rq->requested) : json_null());
     json_t *set = api_traj_settings(c, p);
     json_object_update(sel, set);
     json_decref(set);
     if (rq->chosen) {
-        json_object_set_new(sel, "target_error", api_real(c, rq->choice.target));
+        json_object_set_new_nocheck(sel, "target_error", api_real(c, rq->choice.target));
         char why[sizeof rq->choice.reason + 64];
         snprintf(why, sizeof why, "%s%s",
                  rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
                  rq->choice.reason);
-        json_object_set_new(sel, "reason", json_string(why));
+        json_object_set_new_nocheck(sel, "reason", json_string(why));
     } else {
-        json_object_set_new(sel, "reason", json_string("method and settings given in the request"));
+        json_object_set_new_nocheck(sel, "reason",
+                                    json_string("method and settings given in the request"));
     }
-    json_object_set_new(d, "selection", sel);
+    json_object_set_new_nocheck(d, "selection", sel);
     return d;
 }

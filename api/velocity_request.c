@@ -27,9 +27,9 @@ int api_velocity_parse(struct api_call *c, const json_t *vel, const char *pointe
 
 void api_velocity_describe(struct api_call *c, const struct mech_boost *b, json_t *into)
 {
-    json_object_set_new(into, "gamma", api_real(c, b->gamma));
-    json_object_set_new(into, "gamma_minus_one", api_real(c, b->gamma_minus_one));
-    json_object_set_new(into, "beta", api_vec3(c, b->beta_vec));
-    json_object_set_new(into, "rapidity", api_real(c, b->rapidity));
-    json_object_set_new(into, "one_minus_beta", api_real(c, b->one_minus_beta));
+    json_object_set_new_nocheck(into, "gamma", api_real(c, b->gamma));
+    json_object_set_new_nocheck(into, "gamma_minus_one", api_real(c, b->gamma_minus_one));
+    json_object_set_new_nocheck(into, "beta", api_vec3(c, b->beta_vec));
+    json_object_set_new_nocheck(into, "rapidity", api_real(c, b->rapidity));
+    json_object_set_new_nocheck(into, "one_minus_beta", api_real(c, b->one_minus_beta));
 }
