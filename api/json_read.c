@@ -169,6 +169,22 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
 
 static enum jr_status jr_value(struct jr *r, json_t **out);
 
+/* After a member or element: 1 at the closing byte `close` (consumed), 0
+ * after a ',' (consumed, and the space after it), -1 on anything else. */
+static int jr_after_item(struct jr *r, unsigned char close)
+{
+    jr_skip_space(r);
+    if (r->p == r->end) return -1;
+    if (*r->p == close) {
+        r->p++;
+        return 1;
+    }
+    if (*r->p != ',') return -1;
+    r->p++;
+    jr_skip_space(r);
+    return 0;
+}
+
 /* An object; r->p just past its '{'. */
 static enum jr_status jr_object(struct jr *r, json_t **out)
 {
@@ -200,14 +216,10 @@ static enum jr_status jr_object(struct jr *r, json_t **out)
             goto fail;
         }
         st = JR_FALLBACK;
-        jr_skip_space(r);
-        if (r->p == r->end) goto fail;
-        if (*r->p == '}') break;
-        if (*r->p != ',') goto fail;
-        r->p++;
-        jr_skip_space(r);
+        int next = jr_after_item(r, '}');
+        if (next < 0) goto fail;
+        if (next) break;
     }
-    r->p++;
     *out = obj;
     return JR_OK;
 fail:
@@ -235,14 +247,10 @@ static enum jr_status jr_array(struct jr *r, json_t **out)
             goto fail;
         }
         st = JR_FALLBACK;
-        jr_skip_space(r);
-        if (r->p == r->end) goto fail;
-        if (*r->p == ']') break;
-        if (*r->p != ',') goto fail;
-        r->p++;
-        jr_skip_space(r);
+        int next = jr_after_item(r, ']');
+        if (next < 0) goto fail;
+        if (next) break;
     }
-    r->p++;
     *out = arr;
     return JR_OK;
 fail:
