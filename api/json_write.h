@@ -1,6 +1,7 @@
 /* json_write.h — compact serialisation of a jansson tree for responses:
- * json_dumps(JSON_COMPACT | JSON_REAL_PRECISION(17)) with reals printed by
- * api_real_format() (shortest round-trip digits) instead of %.17g. */
+ * the text json_dumps(JSON_COMPACT | JSON_REAL_PRECISION(17)) writes, byte
+ * for byte, with reals printed by api_real_format() instead of glibc's
+ * exact %.17g conversion. */
 #ifndef API_JSON_WRITE_H
 #define API_JSON_WRITE_H
 
@@ -19,12 +20,11 @@
  * a reference cycle).
  *
  * Output: byte-identical to json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY |
- * JSON_REAL_PRECISION(17)) (jansson 2.14) for every tree, except the digits
- * of reals: objects in jansson's iteration order (insertion order), strings
+ * JSON_REAL_PRECISION(17)) (jansson 2.14) for every tree: objects in jansson's iteration order (insertion order), strings
  * escaped as jansson does without JSON_ENSURE_ASCII / JSON_ESCAPE_SLASH
  * (\" \\ \b \f \n \r \t, other controls as \u00XX upper-case, UTF-8 as is),
- * integers as JSON_INTEGER_FORMAT, reals as api_real_format() (same notation
- * as jansson, shortest round-trip digits). Strings that are not valid UTF-8
+ * integers as JSON_INTEGER_FORMAT, reals as api_real_format() (jansson's
+ * %.17g text). Strings that are not valid UTF-8
  * and trees deeper than API_JSON_WRITE_MAX_DEPTH go through json_dumps().
  * The buffer grows geometrically (realloc, doubling). Thread-safe for trees
  * no other thread modifies. */

@@ -1,34 +1,31 @@
-/* real_format.c — double -> shortest round-trip decimal (Grisu2), written
- * out in jansson's notation (see real_format.h for the contract).
+/* real_format.c — double -> the text jansson's json_dumps writes with
+ * JSON_REAL_PRECISION(17) (printf %.17g plus jansson's touch-ups), fast (see
+ * real_format.h for the contract; shared/DESIGN.md: reals print with 17
+ * significant digits).
  *
- * Algorithm: Loitsch 2010, "Printing floating-point numbers quickly and
- * accurately with integers" (PLDI), §5 "Grisu2", with the exponent window
- * alpha = -60, gamma = -32 so that the integral part of the scaled upper
- * boundary fits 32 bits and ten times its fraction fits 64. In short:
- *   v = f·2^e has the rounding interval [m-, m+] (the midpoints to its
- *   neighbours; m- is closer when f is a power of two above the smallest
- *   normal). Multiply w = v, m- and m+ by a cached c ~= 10^-k (64-bit,
- *   rounded; error < 1/2 unit of the last place each multiplication, so the
- *   products are off by < 1 unit): then narrow [m-·c, m+·c] by one unit on
- *   each side, so every number in the narrowed interval is strictly inside
- *   v's true rounding interval and reads back as v. Generate digits of the
- *   scaled m+ until the remainder falls within the interval (the fewest
- *   digits inside it), then step the last digit down towards w while that
- *   stays inside and gets closer ("round weed").
- * Why it is not always shortest: the narrowing by one unit can exclude the
- * only shortest candidate (Loitsch reports ~99.9 % shortest for Grisu2; the
- * test measures ours).
+ * printf's %.17g converts exactly with multi-precision arithmetic (glibc's
+ * __printf_fp): ~0.5-1 µs per real, the largest cost of a small answer. Here
+ * the 17 digits come from one 64-bit product instead, in the manner of
+ * Loitsch 2010 ("Printing floating-point numbers quickly and accurately with
+ * integers", PLDI; the diy-fp product and cached powers of ten): with v =
+ * w·2^e (w exact, 64 bits) and c ~= 10^(16-X) (64 bits, within one unit),
+ * N = round(v·10^(16-X)) is the 17-digit integer printf rounds to, unless the
+ * discarded part lies within the product's error bound of one half: then
+ * (a few per cent of values, and subnormals) snprintf decides. The result is
+ * therefore always printf's own, byte for byte (tests/api/test_json_write.c
+ * checks millions of values against json_dumps).
  *
  * The cached powers are exact-rounded from big-integer arithmetic at build
  * time (scripts/gen_pow10_table.py -> real_format_pow10.h, committed): a
- * table generated once and checked for every reachable exponent is easier to
- * audit than big-number code in C run at first use, costs no start-up work
- * or thread synchronisation, and keeps this file free of allocation.
- * All arithmetic is on unsigned 64-bit integers (no overflow, no signed
- * shifts); no floating-point arithmetic after the bit decomposition. */
+ * table generated once and checked is easier to audit than big-number code
+ * in C run at first use, costs no start-up work or thread synchronisation,
+ * and keeps this file free of allocation. The fast path is integer
+ * arithmetic only (64-bit, and one 128-bit product by 10^j, j < 8). */
 #include "real_format.h"
 
 #include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "real_format_pow10.h"
@@ -67,130 +64,113 @@ static struct diyfp diyfp_mul(struct diyfp x, struct diyfp y)
     return r;
 }
 
-/* Index into pow10_cache of the power that brings a number with binary
- * exponent e (of a 64-bit normalised significand) into [alpha, gamma]:
- * k = ceil((alpha - e - 1)·log10 2), 78913/2^18 ~= log10 2, C division
- * truncating toward zero (= ceil for negative x, floor + 1 for positive x).
- * The generator replicated this formula and checked it for every e the
- * formatter meets (-1137..960): always in range, product in the window. */
-static int pow10_index(int e)
+/* floor(a / b) for b > 0 (C's '/' truncates toward zero). */
+static int floor_div(int a, int b)
 {
-    int x = POW10_ALPHA - e - 1;
-    int k = x * 78913 / (1 << 18) + (x > 0);
-    return (-POW10_K_MIN + k + (POW10_K_STEP - 1)) / POW10_K_STEP;
+    return a >= 0 ? a / b : -((-a + b - 1) / b);
 }
 
-/* Step the last digit down while the candidate stays in the interval
- * (rest + ten_k <= delta) and gets closer to w (Loitsch §5, "round_weed"
- * without the safety margin of Grisu3). dist = M+ - w, rest = M+ - candidate,
- * all in units of the scaled interval. */
-static void round_weed(char *digits, int len, uint64_t dist, uint64_t delta, uint64_t rest,
-                       uint64_t ten_k)
+__extension__ typedef unsigned __int128 u128;
+
+static const uint64_t pow10_u64[] = {
+    UINT64_C(1),           UINT64_C(10),           UINT64_C(100),
+    UINT64_C(1000),        UINT64_C(10000),        UINT64_C(100000),
+    UINT64_C(1000000),     UINT64_C(10000000),     UINT64_C(100000000),
+    UINT64_C(1000000000),  UINT64_C(10000000000),  UINT64_C(100000000000),
+    UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
+    UINT64_C(1000000000000000), UINT64_C(10000000000000000), UINT64_C(100000000000000000),
+};
+
+/* 10^s (POW10_K_MIN <= s < POW10_K_MIN + 8·POW10_COUNT) as a 64-bit
+ * significand rounded to nearest-ish: the cached power at or below s times
+ * the exact 10^j, j < 8, renormalised with rounding. Error < 1 unit of the
+ * last place (1/2 from the table, 1/2 from the renormalisation). */
+static struct diyfp pow10_diyfp(int s)
 {
-    while (rest < dist && delta - rest >= ten_k &&
-           (rest + ten_k < dist || dist - rest > rest + ten_k - dist)) {
-        digits[len - 1]--;
-        rest += ten_k;
+    const int i = floor_div(s - POW10_K_MIN, POW10_K_STEP);
+    const struct pow10_cached *cp = &pow10_cache[i];
+    const int j = s - cp->k; /* 0..7 */
+    struct diyfp c = {cp->f, cp->e};
+    if (j == 0) return c;
+    u128 p = (u128)c.f * pow10_u64[j]; /* < 2^88 */
+    int sh = 64 - leading_zeros64((uint64_t)(p >> 64)); /* 1..24 bits above 64 */
+    u128 r = (p + ((u128)1 << (sh - 1))) >> sh;
+    if (r >> 64) { /* rounding carried into a new bit */
+        r >>= 1;
+        sh++;
     }
+    c.f = (uint64_t)r;
+    c.e += sh;
+    return c;
 }
 
-/* Digits of the scaled upper boundary mp, stopping as soon as the rest is
- * within delta = mp - mm (Loitsch §5, DigitGen). Writes 1..17 digits, sets
- * *len and adds the decimal exponent of the last digit to *dexp. */
-static void digit_gen(char *digits, int *len, int *dexp, struct diyfp mm, struct diyfp w,
-                      struct diyfp mp)
+/* The 17 significant digits of finite positive normal v correctly rounded,
+ * as printf's %.16e writes them, and the decimal exponent X of the first:
+ * v ~= d.dddddddddddddddd·10^X. N = round(v·10^(16-X)) comes from one 64-bit
+ * product w·c (w exact, c = 10^(16-X) within 1 unit, the product rounded:
+ * within 2 units of the true value); when the part below N is within that
+ * error of one half, the product cannot decide the rounding and 0 is
+ * returned (the caller asks snprintf; a few per cent of values). 1 on
+ * success. */
+static int digits17_fast(uint64_t f, int e, char digits[17], int *X)
 {
-    static const uint32_t pow10_32[] = {1u,      10u,      100u,      1000u,      10000u,
-                                        100000u, 1000000u, 10000000u, 100000000u, 1000000000u};
-    uint64_t delta = mp.f - mm.f;
-    uint64_t dist = mp.f - w.f;
-    const int shift = -mp.e; /* 32..60 */
-    const uint64_t one = UINT64_C(1) << shift, mask = one - 1;
-    uint32_t p1 = (uint32_t)(mp.f >> shift); /* integral part, > 0, < 2^32 */
-    uint64_t p2 = mp.f & mask;               /* fractional part */
-    int n = 0;
-
-    int kappa = 1; /* number of decimal digits in p1 */
-    while (kappa < 10 && p1 >= pow10_32[kappa])
-        kappa++;
-
-    while (kappa > 0) {
-        uint32_t p = pow10_32[kappa - 1];
-        uint32_t d = p1 / p;
-        p1 %= p;
-        digits[n++] = (char)('0' + d);
-        kappa--;
-        uint64_t rest = ((uint64_t)p1 << shift) + p2;
-        if (rest <= delta) {
-            *len = n;
-            *dexp += kappa;
-            round_weed(digits, n, dist, delta, rest, (uint64_t)pow10_32[kappa] << shift);
-            return;
+    const int lz = leading_zeros64(f);
+    const struct diyfp w = {f << lz, e - lz}; /* v = w.f·2^w.e, 2^63 <= w.f */
+    /* floor(log10 v) within one: v in [2^(w.e+63), 2^(w.e+64)) */
+    int k = floor_div((w.e + 63) * 78913, 1 << 18);
+    for (int attempt = 0; attempt < 3; attempt++) {
+        const int s = 16 - k;
+        if (s < POW10_K_MIN || s >= POW10_K_MIN + POW10_K_STEP * POW10_COUNT) return 0;
+        const struct diyfp p = diyfp_mul(w, pow10_diyfp(s));
+        const int sh = -p.e; /* N ~ 2^54..2^57: sh ~ 7..10 */
+        if (sh < 2 || sh > 62) return 0;
+        uint64_t n = p.f >> sh;
+        const uint64_t frac = p.f & ((UINT64_C(1) << sh) - 1), half = UINT64_C(1) << (sh - 1);
+        if (n >= pow10_u64[17]) {
+            k++;
+            continue;
         }
+        if (n < pow10_u64[16]) {
+            k--;
+            continue;
+        }
+        const uint64_t err = 4; /* > the 2-unit bound: a margin */
+        if (frac + err >= half && frac <= half + err) return 0;
+        if (frac > half) n++;
+        if (n == pow10_u64[17]) {
+            n = pow10_u64[16];
+            k++;
+        }
+        for (int d = 16; d >= 0; d--) {
+            digits[d] = (char)('0' + n % 10);
+            n /= 10;
+        }
+        *X = k;
+        return 1;
     }
-    /* The fraction: p2 < 2^60, so 10·p2 < 2^64; delta and dist stay below
-     * p2 (else the loop has stopped), so they do not overflow either. */
-    for (;;) {
-        p2 *= 10;
-        delta *= 10;
-        dist *= 10;
-        digits[n++] = (char)('0' + (p2 >> shift));
-        p2 &= mask;
-        kappa--;
-        if (p2 <= delta) break;
-    }
-    *len = n;
-    *dexp += kappa;
-    round_weed(digits, n, dist, delta, p2, one);
+    return 0;
 }
 
-/* Shortest (nearly always) digits of finite positive v: value = digits·10^dexp. */
-static int grisu2(double v, char *digits, int *dexp)
+/* As digits17_fast for any finite positive v, through snprintf("%.16e")
+ * (exact, locale-independent for this conversion's digits and exponent)
+ * where the fast path cannot decide or v is subnormal. */
+static void digits17(double v, char digits[17], int *X)
 {
     uint64_t bits;
     memcpy(&bits, &v, sizeof bits);
-    const uint64_t frac = bits & (DBL_HIDDEN - 1);
     const int biased = (int)((bits >> DBL_SIG_BITS) & 0x7FF);
-    struct diyfp w;
-    if (biased == 0) { /* subnormal */
-        w.f = frac;
-        w.e = 1 - DBL_EXP_BIAS;
-    } else {
-        w.f = frac | DBL_HIDDEN;
-        w.e = biased - DBL_EXP_BIAS;
-    }
-
-    /* Boundaries: midpoints to the neighbours. The lower neighbour is half
-     * as far when frac == 0 (a power of two), except at the smallest normal
-     * whose lower neighbour is the largest subnormal at the same spacing. */
-    struct diyfp mp = {(w.f << 1) + 1, w.e - 1}, mm;
-    if (frac == 0 && biased > 1) {
-        mm.f = (w.f << 2) - 1;
-        mm.e = w.e - 2;
-    } else {
-        mm.f = (w.f << 1) - 1;
-        mm.e = w.e - 1;
-    }
-    const int lz = leading_zeros64(mp.f);
-    mp.f <<= lz;
-    mp.e -= lz;
-    mm.f <<= mm.e - mp.e; /* 0..63: mm < mp at the same scale */
-    mm.e = mp.e;
-    /* w normalised: 2f+1 has exactly one bit more than f, so w lands on mp.e */
-    w.f <<= w.e - mp.e;
-    w.e = mp.e;
-
-    const struct pow10_cached *cp = &pow10_cache[pow10_index(mp.e)];
-    const struct diyfp c = {cp->f, cp->e};
-    struct diyfp W = diyfp_mul(w, c), Mm = diyfp_mul(mm, c), Mp = diyfp_mul(mp, c);
-    /* Each product is within 1/2 unit; with c's own rounding, within 1 unit:
-     * shrink the interval so everything inside reads back as v. */
-    Mm.f += 1;
-    Mp.f -= 1;
-    int len = 0;
-    *dexp = -cp->k;
-    digit_gen(digits, &len, dexp, Mm, W, Mp);
-    return len;
+    if (biased != 0 &&
+        digits17_fast((bits & (DBL_HIDDEN - 1)) | DBL_HIDDEN, biased - DBL_EXP_BIAS, digits, X))
+        return;
+    char t[48]; /* d.dddddddddddddddde-308, the point in the locale's spelling */
+    snprintf(t, sizeof t, "%.16e", v);
+    const char *ex = strchr(t, 'e');
+    int m = 0;
+    for (const char *q = t; ex && q < ex && m < 17; q++)
+        if (*q >= '0' && *q <= '9') digits[m++] = *q;
+    while (m < 17)
+        digits[m++] = '0';
+    *X = ex ? atoi(ex + 1) : 0;
 }
 
 static char *write_exponent(char *p, int x) /* |x| <= 324 */
@@ -227,11 +207,13 @@ size_t api_real_format(double x, char buf[API_REAL_FORMAT_SIZE])
     }
     if (bits >> 63) x = -x;
 
-    char digits[32]; /* at most 17 are written (checked by the test) */
-    int dexp;
-    const int n = grisu2(x, digits, &dexp); /* 1..17 digits */
-    const int decpt = n + dexp;             /* digits before the point */
-    const int X = decpt - 1;                /* decimal exponent of the first digit */
+    char digits[17];
+    int X; /* decimal exponent of the first digit */
+    digits17(x, digits, &X);
+    int n = 17; /* %g drops trailing zeros */
+    while (n > 1 && digits[n - 1] == '0')
+        n--;
+    const int decpt = X + 1; /* digits before the point */
 
     if (X < -4 || X >= 17) { /* %g with P = 17 */
         *p++ = digits[0];
