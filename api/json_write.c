@@ -49,10 +49,14 @@ static inline int jw_reserve(struct jw *w, size_t need)
     return w->cap - w->len >= need ? JW_OK : jw_grow(w, need);
 }
 
-static inline void jw_put(struct jw *w, const char *s, size_t n) /* room reserved */
+/* Append n bytes of s, growing the buffer as needed. */
+static inline int jw_append(struct jw *w, const char *s, size_t n)
 {
+    int st = jw_reserve(w, n);
+    if (st) return st;
     memcpy(w->buf + w->len, s, n);
     w->len += n;
+    return JW_OK;
 }
 
 /* Length of the UTF-8 sequence at s (n bytes left, n >= 1, s[0] >= 0x80),
@@ -165,10 +169,7 @@ static int jw_integer(struct jw *w, json_int_t v)
         m /= 10;
     } while (m);
     if (v < 0) *--p = '-';
-    int st = jw_reserve(w, (size_t)(end - p));
-    if (st) return st;
-    jw_put(w, p, (size_t)(end - p));
-    return JW_OK;
+    return jw_append(w, p, (size_t)(end - p));
 }
 
 static int jw_value(struct jw *w, const json_t *j, int depth)
@@ -177,17 +178,11 @@ static int jw_value(struct jw *w, const json_t *j, int depth)
     if (!j) return JW_FALLBACK; /* json_dumps fails on a NULL member */
     switch (json_typeof(j)) {
     case JSON_NULL:
-        if ((st = jw_reserve(w, 4))) return st;
-        jw_put(w, "null", 4);
-        return JW_OK;
+        return jw_append(w, "null", 4);
     case JSON_TRUE:
-        if ((st = jw_reserve(w, 4))) return st;
-        jw_put(w, "true", 4);
-        return JW_OK;
+        return jw_append(w, "true", 4);
     case JSON_FALSE:
-        if ((st = jw_reserve(w, 5))) return st;
-        jw_put(w, "false", 5);
-        return JW_OK;
+        return jw_append(w, "false", 5);
     case JSON_INTEGER:
         return jw_integer(w, json_integer_value(j));
     case JSON_REAL:
@@ -199,39 +194,32 @@ static int jw_value(struct jw *w, const json_t *j, int depth)
     case JSON_ARRAY: {
         if (depth >= API_JSON_WRITE_MAX_DEPTH) return JW_FALLBACK;
         size_t n = json_array_size(j);
-        if ((st = jw_reserve(w, 1))) return st;
-        w->buf[w->len++] = '[';
+        if ((st = jw_append(w, "[", 1))) return st;
         for (size_t i = 0; i < n; i++) {
             if (i) {
-                if ((st = jw_reserve(w, 1))) return st;
-                w->buf[w->len++] = ',';
+                if ((st = jw_append(w, ",", 1))) return st;
             }
             if ((st = jw_value(w, json_array_get(j, i), depth + 1))) return st;
         }
-        if ((st = jw_reserve(w, 1))) return st;
-        w->buf[w->len++] = ']';
+        if ((st = jw_append(w, "]", 1))) return st;
         return JW_OK;
     }
     case JSON_OBJECT: {
         if (depth >= API_JSON_WRITE_MAX_DEPTH) return JW_FALLBACK;
-        if ((st = jw_reserve(w, 1))) return st;
-        w->buf[w->len++] = '{';
+        if ((st = jw_append(w, "{", 1))) return st;
         int first = 1;
         for (void *it = json_object_iter((json_t *)j); it;
              it = json_object_iter_next((json_t *)j, it)) {
             if (!first) {
-                if ((st = jw_reserve(w, 1))) return st;
-                w->buf[w->len++] = ',';
+                if ((st = jw_append(w, ",", 1))) return st;
             }
             first = 0;
             if ((st = jw_string(w, json_object_iter_key(it), json_object_iter_key_len(it))))
                 return st;
-            if ((st = jw_reserve(w, 1))) return st;
-            w->buf[w->len++] = ':';
+            if ((st = jw_append(w, ":", 1))) return st;
             if ((st = jw_value(w, json_object_iter_value(it), depth + 1))) return st;
         }
-        if ((st = jw_reserve(w, 1))) return st;
-        w->buf[w->len++] = '}';
+        if ((st = jw_append(w, "}", 1))) return st;
         return JW_OK;
     }
     default:
@@ -265,10 +253,9 @@ char *api_json_write_compact(const json_t *j, const char *suffix, size_t *len)
     struct jw w = {NULL, 0, 0};
     size_t m = suffix ? strlen(suffix) : 0;
     int st = j ? jw_value(&w, j, 0) : JW_FALLBACK;
-    if (st == JW_OK) st = jw_reserve(&w, m + 1);
+    if (st == JW_OK) st = jw_append(&w, suffix ? suffix : "", m + 1); /* with its NUL */
     if (st == JW_OK) {
-        jw_put(&w, suffix ? suffix : "", m);
-        w.buf[w.len] = '\0';
+        w.len--; /* the NUL is not part of the text */
         if (len) *len = w.len;
         return w.buf;
     }

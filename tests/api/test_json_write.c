@@ -110,6 +110,19 @@ static void check_pm(double x)
     check_one(-x);
 }
 
+/* x and its 8 neighbours on each side, both signs. */
+static void check_neighbours(double x)
+{
+    double lo = x, hi = x;
+    check_pm(x);
+    for (int k = 0; k < 8; k++) {
+        lo = nextafter(lo, 0.0);
+        hi = nextafter(hi, INFINITY);
+        check_pm(lo);
+        if (isfinite(hi)) check_pm(hi);
+    }
+}
+
 /* ---- (a) round trip ---------------------------------------------------------- */
 
 static void test_round_trip(void)
@@ -158,25 +171,10 @@ static void test_round_trip(void)
         snprintf(t, sizeof t, "1e%d", e);
         double x = strtod(t, NULL);
         if (!isfinite(x)) continue;
-        double lo = x, hi = x;
-        check_pm(x);
-        for (int k = 0; k < 8; k++) {
-            lo = nextafter(lo, 0.0);
-            hi = nextafter(hi, INFINITY);
-            check_pm(lo);
-            if (isfinite(hi)) check_pm(hi);
-        }
+        check_neighbours(x);
     }
-    for (int e = -1074; e <= 1023; e++) {
-        double x = ldexp(1.0, e), lo = x, hi = x;
-        check_pm(x);
-        for (int k = 0; k < 8; k++) {
-            lo = nextafter(lo, 0.0);
-            hi = nextafter(hi, INFINITY);
-            check_pm(lo);
-            if (isfinite(hi)) check_pm(hi);
-        }
-    }
+    for (int e = -1074; e <= 1023; e++)
+        check_neighbours(ldexp(1.0, e));
     /* extremes: the smallest and largest subnormals, around DBL_MIN, DBL_MAX */
     for (uint64_t f = 1; f <= 20000 / SCALE; f++) {
         check_pm(of_bits(f));
