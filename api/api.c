@@ -15,6 +15,7 @@
 #include <jansson.h>
 
 #include "catalog.h"
+#include "json_arena.h"
 #include "json_read.h"
 #include "respond.h"
 #include "routes.h"
@@ -40,20 +41,27 @@ static pthread_once_t init_once = PTHREAD_ONCE_INIT;
  * a per-thread flag; api_handle_ext() clears the flag before a request and,
  * when it is raised afterwards, answers the fixed 500 out-of-memory problem
  * instead of whatever was built. The previous allocator (the C library's, or
- * one a test installed before api_init) does the allocating. */
+ * one a test installed before api_init) does the allocating — except inside
+ * an operation request (run_operation), where the per-thread arena of
+ * json_arena.c serves what fits while the previous allocator is the C
+ * library's. A test's own allocator turns the arena off, so an
+ * allocation-failure sweep still reaches every jansson allocation. */
 static _Thread_local int json_alloc_failed;
 static json_malloc_t prev_json_malloc;
 static json_free_t prev_json_free;
+static int json_arena_enabled;
 
 static void *json_malloc_checked(size_t n)
 {
-    void *p = prev_json_malloc ? prev_json_malloc(n) : malloc(n);
+    void *p = api_json_arena_alloc(n); /* NULL outside a scope or when full */
+    if (!p) p = prev_json_malloc ? prev_json_malloc(n) : malloc(n);
     if (!p) json_alloc_failed = 1;
     return p;
 }
 
 static void json_free_checked(void *p)
 {
+    if (api_json_arena_owns(p)) return; /* reclaimed when its scope ends */
     if (prev_json_free)
         prev_json_free(p);
     else
@@ -68,6 +76,7 @@ static void install_json_allocator(void)
     if (m == json_malloc_checked) return;
     prev_json_malloc = m;
     prev_json_free = f;
+    json_arena_enabled = m == malloc && f == free;
     json_set_alloc_funcs(json_malloc_checked, json_free_checked);
 }
 
@@ -404,16 +413,9 @@ static int parse_out_of_memory(const json_error_t *jerr, struct api_response *re
     return 1;
 }
 
-static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
+/* Parse, validate, run and answer an operation's JSON body. */
+static void run_body(size_t ri, const struct api_request *req, struct api_response *resp)
 {
-    if (!is_json_media_type(req->content_type)) {
-        char d[200];
-        snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
-                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
-                 req->content_type ? "'" : "");
-        api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
-        return;
-    }
     json_error_t jerr;
     json_t *body = api_json_read(req->body ? req->body : "", req->body ? req->body_len : 0, &jerr);
     if (!body) {
@@ -429,6 +431,23 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
     int status = run_parsed(ri, req, body, "", &out, note, sizeof note);
     json_decref(body);
     respond_outcome(resp, status, out, note);
+}
+
+static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
+{
+    if (!is_json_media_type(req->content_type)) {
+        char d[200];
+        snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
+                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
+                 req->content_type ? "'" : "");
+        api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
+        return;
+    }
+    /* Every tree of this request (body, answer) is built and released in
+     * this scope; the answer leaves as malloc()ed text (json_arena.c). */
+    if (json_arena_enabled) api_json_arena_begin();
+    run_body(ri, req, resp);
+    if (json_arena_enabled) api_json_arena_end();
 }
 
 /* ---- GET ?request= : determinism, ETag, 304 ------------------------------------- */
