@@ -19,17 +19,9 @@
 #include "json_arena.h"
 
 #include <pthread.h>
-#include <stdint.h>
 #include <stdlib.h>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define ARENA_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define ARENA_ASAN 1
-#endif
-#endif
-#ifdef ARENA_ASAN
+#ifdef API_JSON_ARENA_ASAN /* see json_arena.h */
 #include <sanitizer/asan_interface.h>
 #define ARENA_POISON(p, n) ASAN_POISON_MEMORY_REGION((p), (n))
 #define ARENA_UNPOISON(p, n) ASAN_UNPOISON_MEMORY_REGION((p), (n))
@@ -38,13 +30,8 @@
 #define ARENA_UNPOISON(p, n) ((void)(p), (void)(n))
 #endif
 
-struct arena {
-    char *base;   /* API_JSON_ARENA_BYTES, or NULL before the first scope */
-    size_t used;  /* bytes handed out in the current outermost scope */
-    int depth;    /* open scopes on this thread */
-};
-
-static _Thread_local struct arena arena;
+_Thread_local struct api_json_arena api_json_arena_tls;
+#define arena api_json_arena_tls
 
 /* The thread's chunk is freed when the thread exits (I/O threads and workers
  * end at shutdown; LeakSanitizer would otherwise report it). */
@@ -88,22 +75,9 @@ void api_json_arena_end(void)
     arena.used = 0;
 }
 
-void *api_json_arena_alloc(size_t n)
+#ifdef API_JSON_ARENA_ASAN
+void api_json_arena_unpoison(void *p, size_t n)
 {
-    if (arena.depth <= 0 || !arena.base) return NULL;
-    if (n > API_JSON_ARENA_BYTES) return NULL;
-    size_t need = (n + 15u) & ~(size_t)15u;
-    if (need == 0) need = 16; /* malloc(0) may return a unique pointer: so do we */
-    if (need > API_JSON_ARENA_BYTES - arena.used) return NULL;
-    char *p = arena.base + arena.used;
-    arena.used += need;
-    ARENA_UNPOISON(p, n ? n : 1);
-    return p;
+    ARENA_UNPOISON(p, n);
 }
-
-int api_json_arena_owns(const void *p)
-{
-    if (!p || !arena.base) return 0;
-    uintptr_t a = (uintptr_t)p, b = (uintptr_t)arena.base;
-    return a >= b && a - b < API_JSON_ARENA_BYTES;
-}
+#endif

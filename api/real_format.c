@@ -104,6 +104,23 @@ static struct diyfp pow10_diyfp(int s)
     return c;
 }
 
+static const char two_digits[201] = /* "00" "01" ... "99" */
+    "0001020304050607080910111213141516171819"
+    "2021222324252627282930313233343536373839"
+    "4041424344454647484950515253545556575859"
+    "6061626364656667686970717273747576777879"
+    "8081828384858687888990919293949596979899";
+
+/* x < 10^8 as exactly eight decimal digits at d (no NUL). */
+static void put8(char *d, uint32_t x)
+{
+    for (int i = 6; i >= 0; i -= 2) {
+        const uint32_t q = x / 100u;
+        memcpy(d + i, two_digits + 2u * (x - 100u * q), 2);
+        x = q;
+    }
+}
+
 /* The 17 significant digits of finite positive normal v correctly rounded,
  * as printf's %.16e writes them, and the decimal exponent X of the first:
  * v ~= d.dddddddddddddddd·10^X. N = round(v·10^(16-X)) comes from one 64-bit
@@ -141,10 +158,11 @@ static int digits17_fast(uint64_t f, int e, char digits[17], int *X)
             n = pow10_u64[16];
             k++;
         }
-        for (int d = 16; d >= 0; d--) {
-            digits[d] = (char)('0' + n % 10);
-            n /= 10;
-        }
+        /* 17 digits: one, then two groups of eight in 32-bit arithmetic. */
+        const uint32_t hi = (uint32_t)(n / UINT64_C(100000000)); /* < 10^9 */
+        digits[0] = (char)('0' + hi / 100000000u);
+        put8(digits + 1, hi % 100000000u);
+        put8(digits + 9, (uint32_t)(n % UINT64_C(100000000)));
         *X = k;
         return 1;
     }
