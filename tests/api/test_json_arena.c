@@ -9,7 +9,8 @@
  * than the arena, so it spills to malloc) and a one-vector boost answered
  * repeatedly on the same thread give the Lorentz transformation's closed form,
  * and identical requests give identical bytes (reuse after reclaim corrupts
- * nothing). Under AddressSanitizer the arena is poisoned outside live
+ * nothing); a request on a fresh thread gives it an arena and closes its
+ * scope (so the API does run on the arena). Under AddressSanitizer the arena is poisoned outside live
  * allocations, so any tree outliving its request fails this and every other
  * API test of the sanitizer run. */
 #include <gsl/gsl_errno.h>
@@ -177,6 +178,38 @@ static void check_boost(int n, double beta)
     free(body);
 }
 
+/* A fresh thread has no arena until an operation request opens a scope:
+ * afterwards it has one, and the scope is closed (the API really runs on the
+ * arena, so the sanitizer run's poisoning covers every API test). */
+struct fresh {
+    int before, after_base, after_closed, status;
+};
+
+static void *fresh_thread(void *arg)
+{
+    struct fresh *f = arg;
+    f->before = api_json_arena_tls.base == NULL;
+    struct api_response resp;
+    f->status = post("/v1/relativity/boost",
+                     "{\"vectors\":[1.0,0.5,0.25,-0.125],\"velocity\":{\"beta\":[0.6,0.0,0.0]}}", &resp);
+    api_response_free(&resp);
+    f->after_base = api_json_arena_tls.base != NULL;
+    f->after_closed = api_json_arena_tls.depth == 0 && api_json_arena_alloc(16) == NULL;
+    return NULL;
+}
+
+static void test_api_uses_arena(void)
+{
+    struct fresh f = {0, 0, 0, 0};
+    pthread_t t;
+    CHECK(pthread_create(&t, NULL, fresh_thread, &f) == 0);
+    pthread_join(t, NULL);
+    CHECK(f.before);
+    CHECK_EQ_INT(f.status, 200);
+    CHECK(f.after_base);
+    CHECK(f.after_closed);
+}
+
 static void test_through_api(void)
 {
     check_boost(2000, 0.6); /* tree far larger than the arena: spills to malloc */
@@ -213,6 +246,7 @@ int main(void)
     test_alloc_and_fill();
     test_nesting();
     test_threads();
+    test_api_uses_arena();
     test_through_api();
     TEST_MAIN_END();
 }
