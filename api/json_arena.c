@@ -31,7 +31,6 @@
 #endif
 
 _Thread_local struct api_json_arena api_json_arena_tls;
-#define arena api_json_arena_tls
 
 /* The thread's chunk is freed when the thread exits (I/O threads and workers
  * end at shutdown; LeakSanitizer would otherwise report it). */
@@ -52,9 +51,10 @@ static void arena_key_create(void)
 
 void api_json_arena_begin(void)
 {
-    if (arena.depth++ > 0) return;
-    arena.used = 0;
-    if (arena.base) return;
+    struct api_json_arena *a = &api_json_arena_tls;
+    if (a->depth++ > 0) return;
+    a->used = 0;
+    if (a->base) return;
     pthread_once(&arena_key_once, arena_key_create);
     if (!arena_key_ok) return; /* could not free it at thread exit: no arena */
     char *b = malloc(API_JSON_ARENA_BYTES);
@@ -64,15 +64,16 @@ void api_json_arena_begin(void)
         return;
     }
     ARENA_POISON(b, API_JSON_ARENA_BYTES);
-    arena.base = b;
+    a->base = b;
 }
 
 void api_json_arena_end(void)
 {
-    if (arena.depth <= 0) return; /* unbalanced end: ignore */
-    if (--arena.depth > 0) return;
-    if (arena.base) ARENA_POISON(arena.base, arena.used);
-    arena.used = 0;
+    struct api_json_arena *a = &api_json_arena_tls;
+    if (a->depth <= 0) return; /* unbalanced end: ignore */
+    if (--a->depth > 0) return;
+    if (a->base) ARENA_POISON(a->base, a->used);
+    a->used = 0;
 }
 
 #ifdef API_JSON_ARENA_ASAN
