@@ -13,7 +13,7 @@ const labs = [inertia, spacetime, earth, tops, orbits, accuracy];
 const main = document.getElementById('lab');
 const tabs = document.getElementById('tabs');
 for (const lab of labs)
-  tabs.append(el('li', {}, el('a', {href: '#' + lab.id, id: 'tab-' + lab.id}, lab.title)));
+  add(tabs, el('li', {}, el('a', {href: '#' + lab.id, id: 'tab-' + lab.id}, lab.title)));
 
 function show() {
   const id = location.hash.slice(1) || labs[0].id;

@@ -96,6 +96,16 @@ if (process.env.MECHD_WEB_PROXY === '1') {
   }
 }
 
+// --- the root of "null" on the page: the DOM's append/replaceChildren print a null
+// child as the text "null"; outside lib.js (whose put/add/el skip null) they are not used
+{
+  const files = ['app.js', ...fs.readdirSync(path.join(webRoot, 'labs')).filter(f => f.endsWith('.js')).map(f => 'labs/' + f)];
+  const raw = files.flatMap(f => fs.readFileSync(path.join(webRoot, f), 'utf8').split('\n')
+    .map((line, i) => [f, i + 1, line]).filter(([, , line]) => /\.(append|replaceChildren|prepend)\(/.test(line)));
+  check(raw.length === 0, `labs build the DOM through lib.js put/add/el, never append/replaceChildren (${raw.slice(0, 3)
+    .map(([f, n, l]) => `${f}:${n}: ${l.trim().slice(0, 60)}`).join(' | ')}${raw.length > 3 ? ` … ${raw.length} in all` : ''})`);
+}
+
 // --- the browser ---------------------------------------------------------------
 // Playwright gives every launch() a new empty profile directory of its own (the
 // fresh --user-data-dir machine.md asks for; passing one explicitly is refused).
@@ -293,10 +303,12 @@ for (const id of LABS) await lab(id, async () => {
 
 // a body whose principal moments all differ: a 1 × 2 × 3 m box of 1 kg about its
 // centre has I = M(b² + c²)/12 … = 5/12, 10/12, 13/12 kg m², no "degenerate" note
+// (whose absence left the text "null" on the page)
 await lab('inertia', async () => {
   await settled();
   await page.selectOption('#inertia-origin', 'center_of_mass');
   for (const [j, v] of [[0, 1], [1, 2], [2, 3]]) await page.fill(`#inertia-size-0-${j}`, String(v));
+  for (const [j, v] of [[0, 1], [1, 2], [2, 3]]) await page.fill(`#inertia-omega-${j}`, String(v));
   await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
   await page.click('#inertia-submit');
   await state('main form', 'done');
@@ -304,6 +316,8 @@ await lab('inertia', async () => {
   close(I[0], 5 / 12, 1e-12, 'box 1×2×3: I1 = M(a² + b²)/12 = 5/12');
   close(I[1], 10 / 12, 1e-12, 'box 1×2×3: I2 = M(a² + c²)/12 = 10/12');
   close(I[2], 13 / 12, 1e-12, 'box 1×2×3: I3 = M(b² + c²)/12 = 13/12');
+  // ω = (1, 2, 3) along the box's edges: T = ½ Σ I_k ω_k² = ½ (13/12 + 4·10/12 + 9·5/12) = 49/12
+  close(await value('#inertia-T'), 49 / 12, 1e-12, 'box 1×2×3 turning at ω = (1, 2, 3): T = ½ ω·Iω = 49/12');
   const bad = await blemishes();
   check(bad.length === 0, `inertia with distinct moments: a clean page (${bad.join(' | ')})`);
 }, 'inertia-distinct');
@@ -328,6 +342,7 @@ await lab('tops', async () => {
 await lab('earth', async () => {
   await settled();
   await page.fill('#fou-lat', '0');
+  await page.evaluate(() => { delete document.getElementById('fou-form').dataset.state; });
   await page.click('#fou-submit');
   await state('#fou-form', 'done');
   close(await value('#fou-first'), 0, 0, 'Foucault at the equator: ω sin λ = 0');

@@ -38,6 +38,9 @@ export default {
     const o = Array.isArray(state.req.origin) ? state.req.origin : [0, 0, 0];
     const ox = o.map((v, k) => field({label: 'origin ' + 'xyz'[k], pointer: `/origin/${k}`, value: v, unit: 'm', cls: 'small',
       id: `inertia-origin-${k}`}));
+    const w = Array.isArray(state.req.omega) ? state.req.omega : ['', '', ''];
+    const om = w.map((v, k) => field({label: 'ω' + 'xyz'[k], pointer: `/omega/${k}`, value: v, unit: 'rad/s', cls: 'small',
+      id: `inertia-omega-${k}`}));
     const rows = [];
     const renderParts = () => {
       rows.length = 0;
@@ -76,6 +79,8 @@ export default {
         return nb;
       });
       state.req.origin = originSel.input.value === 'point' ? ox.map(f => val(f.input)) : 'center_of_mass';
+      // ω is optional: all three empty leaves it out (then no L and T)
+      if (om.every(f => f.input.value.trim() === '')) delete state.req.omega; else state.req.omega = om.map(f => val(f.input));
     };
     add(L.form,
       examplePicker(['/v1/rigid/inertia'], BUILTIN, (ex) => {
@@ -88,6 +93,8 @@ export default {
         sync(); state.req.bodies.push({shape: 'point', mass: 1, position: [0, 0, 1]}); renderParts();
       }}, 'Add part')),
       el('fieldset', {}, el('legend', {}, 'Tensor about'), originSel.wrap, ox.map(f => f.wrap)),
+      el('fieldset', {}, el('legend', {}, 'Turning at ω (optional)'), om.map(f => f.wrap),
+        el('p', {class: 'muted'}, 'Give ω to see the angular momentum L = I ω and the kinetic energy ½ ω·L.')),
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'inertia-submit'}, 'Compute')));
     renderParts();
     const canvas = el('canvas', {class: 'plot', width: 640, height: 480, tabindex: 0, id: 'inertia-view',
@@ -112,17 +119,24 @@ export default {
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
+      // round-off next to zero (a dumbbell's 7e-17 about its axis) reads 0; data-value keeps the number
+      const scale = Math.max(...m.map(Math.abs)), zero = (v, s) => (Math.abs(v) < 1e-12 * s ? 0 : v);
       put(L.results, el('h3', {}, 'Answer'),
         el('dl', {class: 'nums'}, el('dt', {}, 'mass'), num('inertia-total-mass', a.mass, 'kg'),
           el('dt', {}, 'centre of mass'), el('dd', {}, a.center_of_mass.map(v => fmt(v)).join(', ') + ' m'),
           el('dt', {}, 'principal moments'), el('dd', {}, ''),
-          ...m.flatMap((v, k) => [el('dt', {}, `I${k + 1}`), num(`inertia-moment-${k}`, v, 'kg m²')])),
+          ...m.flatMap((v, k) => [el('dt', {}, `I${k + 1}`),
+            el('dd', {id: `inertia-moment-${k}`, 'data-value': String(v)}, fmt(zero(v, scale)) + ' kg m²')])),
         el('p', {}, 'Tensor about ', Array.isArray(a.origin) ? `(${a.origin.map(v => fmt(v)).join(', ')})` : 'the centre of mass', ' [kg m²]:'),
-        el('table', {id: 'inertia-tensor'}, a.tensor.map(r => el('tr', {}, r.map(v => el('td', {}, fmt(v)))))),
+        el('table', {id: 'inertia-tensor'}, a.tensor.map(r => el('tr', {}, r.map(v => el('td', {}, fmt(zero(v, scale))))))),
         el('p', {}, 'Principal axes (rows):'),
         el('table', {id: 'inertia-axes'}, a.principal.axes.map((r, k) => el('tr', {}, el('th', {class: 'c' + (k + 1)}, `e${k + 1}`),
           r.map(v => el('td', {}, fmt(Math.abs(v) < 1e-15 ? 0 : v)))))),
-        a.principal.degenerate ? el('p', {class: 'muted'}, 'Two or more moments are equal: any axes in that plane are principal.') : null);
+        a.principal.degenerate ? el('p', {class: 'muted'}, 'Two or more moments are equal: any axes in that plane are principal.') : null,
+        Array.isArray(a.angular_momentum) ? el('dl', {class: 'nums'},
+          el('dt', {}, 'ω'), el('dd', {}, `(${state.req.omega.map(v => fmt(v)).join(', ')}) rad/s`),
+          el('dt', {}, 'L = I ω'), el('dd', {id: 'inertia-L'}, `(${a.angular_momentum.map(v => fmt(v)).join(', ')}) kg m²/s`),
+          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null);
       draw();
     });
     draw();
