@@ -400,6 +400,7 @@ function busyUi(S, onCancel) {
   const old = S.form.querySelector('[data-role=busy], [data-role=cancelled]');
   if (old) old.remove();
   const t0 = performance.now();
+  const pressed = document.activeElement === submit; // the user pressed the button (not a load or a slider)
   S.form.dataset.state = 'busy';
   if (submit) submit.disabled = true;
   for (const e of [S.results, S.figure]) if (e) e.setAttribute('aria-busy', 'true');
@@ -409,7 +410,7 @@ function busyUi(S, onCancel) {
       shown = true;
       for (const e of [S.results, S.figure]) if (e) e.classList.add('stale');
       add(buttons, status);
-      if (document.activeElement === submit || document.activeElement === document.body) cancel.focus();
+      if (pressed && (document.activeElement === submit || document.activeElement === document.body)) cancel.focus();
     }
     const s = Math.round((performance.now() - t0) / 1000);
     secs.textContent = s ? s + ' s' : '';

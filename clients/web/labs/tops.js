@@ -12,8 +12,9 @@ export default {
   id: 'tops', title: 'Tops',
   mount(main) {
     const L = labLayout(main, {title: 'The heavy symmetric top',
-      intro: 'Released with spin ψ̇ at tilt θ0 and no precession, the top\'s axis dips and loops: θ(t) nutates between the ' +
-             'roots of the cubic, and the axis tip draws loops on the sphere (seen from above).'});
+      intro: 'Released with spin ψ̇ at tilt θ0 and no precession (φ̇0 = 0), the top\'s axis dips and loops: θ(t) nutates between the ' +
+             'roots of the cubic, and the axis tip draws loops on the sphere (seen from above). Started at the steady rate φ̇0, ' +
+             'it precesses without nodding.'});
     const f = {
       I1: field({label: 'I1', pointer: '/I1', value: 0.02, unit: 'kg m²', id: 'top-I1'}),
       I3: field({label: 'I3', pointer: '/I3', value: 0.01, unit: 'kg m²', id: 'top-I3'}),
