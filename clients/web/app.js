@@ -1,17 +1,19 @@
-// app.js — the labs' shell: tabs, hash routing (#inertia …), projector mode.
+// app.js — the labs' shell: tabs, hash routing (#inertia …), projector mode,
+// and the access token of a server started with --token-file (asked for when
+// the server answers 401, kept for this tab's session only).
 import inertia from './labs/inertia.js';
 import spacetime from './labs/spacetime.js';
 import earth from './labs/earth.js';
 import tops from './labs/tops.js';
 import orbits from './labs/orbits.js';
 import accuracy from './labs/accuracy.js';
-import {el} from './lib.js';
+import {el, add, getToken, setToken} from './lib.js';
 
 const labs = [inertia, spacetime, earth, tops, orbits, accuracy];
 const main = document.getElementById('lab');
 const tabs = document.getElementById('tabs');
 for (const lab of labs)
-  tabs.append(el('li', {}, el('a', {href: '#' + lab.id, id: 'tab-' + lab.id}, lab.title)));
+  add(tabs, el('li', {}, el('a', {href: '#' + lab.id, id: 'tab-' + lab.id}, lab.title)));
 
 function show() {
   const id = location.hash.slice(1) || labs[0].id;
@@ -30,4 +32,48 @@ proj.addEventListener('change', () => {
   document.body.classList.toggle('projector', proj.checked);
   localStorage.setItem('mechd-projector', proj.checked ? '1' : '0');
 });
+
+// --- access token ------------------------------------------------------------
+// A small panel in the header: a password field, "Use" and "Forget". It opens
+// by itself on the first 401 (every lab then shows the problem too); using a
+// token re-runs the lab. sessionStorage only: closing the tab forgets it.
+const tokenBtn = el('button', {type: 'button', class: 'secondary small-btn', id: 'token-toggle',
+  'aria-expanded': 'false', 'aria-controls': 'token-form'}, 'Access token');
+const tokenInput = el('input', {type: 'password', id: 'token-input', autocomplete: 'off', spellcheck: 'false',
+  'aria-describedby': 'token-note'});
+const tokenNote = el('p', {id: 'token-note', class: 'muted'});
+const tokenForm = el('form', {id: 'token-form', class: 'token', hidden: true, 'aria-label': 'Access token'},
+  el('label', {for: 'token-input'}, 'Access token'), tokenInput,
+  el('button', {type: 'submit', id: 'token-use'}, 'Use'),
+  el('button', {type: 'button', class: 'secondary', id: 'token-forget', onclick: () => {
+    setToken(''); tokenInput.value = ''; noteToken(); show();
+  }}, 'Forget'), tokenNote);
+function noteToken(msg) {
+  tokenNote.textContent = (msg ? msg + ' ' : '') + (getToken()
+    ? 'A token is in use for this tab (sent as Authorization: Bearer; forgotten when the tab closes).'
+    : 'Kept for this tab only, never stored on disk; sent as Authorization: Bearer.');
+}
+function openToken(open, msg) {
+  tokenForm.hidden = !open;
+  tokenBtn.setAttribute('aria-expanded', String(open));
+  if (open) { noteToken(msg); tokenInput.focus(); }
+}
+tokenBtn.addEventListener('click', () => openToken(tokenForm.hidden));
+tokenForm.addEventListener('submit', (e) => {
+  e.preventDefault();
+  setToken(tokenInput.value.trim()); tokenInput.value = '';
+  openToken(false); show();
+});
+let asked = false; // open the panel once per page load, not on every 401 of a lab
+window.addEventListener('mechd:unauthorized', (e) => {
+  if (asked && !tokenForm.hidden) return;
+  if (asked && !e.detail.hadToken) return;
+  asked = true;
+  openToken(true, e.detail.hadToken ? 'The server did not accept this token: check it and enter it again.'
+                                    : 'This server needs an access token for its API.');
+});
+window.addEventListener('mechd:token-open', () => openToken(true));
+add(document.querySelector('header'), el('div', {class: 'settings'}, tokenBtn), tokenForm);
+noteToken();
+
 show();

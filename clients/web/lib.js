@@ -1,8 +1,26 @@
-// lib.js — shared helpers of the labs: DOM building (no innerHTML), the API
-// call, problem+json errors placed next to the field they name, the curl
-// command, the notes' worked examples, and small SVG plotting.
+// lib.js — shared helpers of the labs: DOM building (no innerHTML; null and
+// undefined children are skipped everywhere, never shown as text), the API call
+// (with the session's access token, cancellable), problem+json errors placed
+// next to the field they name, the busy/cancel state of a running request, the
+// curl command, the notes' worked examples, and small SVG plotting sized to the
+// element so plot text reads at its nominal px size on a phone.
 
 export const SVGNS = 'http://www.w3.org/2000/svg';
+
+// The nodes for a list of children: arrays flattened; null, undefined and false
+// skipped (a conditional child `cond ? node : null` leaves nothing, never the
+// text "null"); anything else not a Node becomes a text node.
+export function nodes(kids) {
+  const out = [];
+  for (const kid of kids.flat(Infinity))
+    if (kid !== null && kid !== undefined && kid !== false)
+      out.push(kid instanceof Node ? kid : document.createTextNode(String(kid)));
+  return out;
+}
+// parent.replaceChildren / parent.append through nodes(): use these, never the
+// DOM methods directly (they turn null into the text "null").
+export function put(parent, ...kids) { parent.replaceChildren(...nodes(kids)); return parent; }
+export function add(parent, ...kids) { parent.append(...nodes(kids)); return parent; }
 
 // el('div', {class: 'x', onclick: f}, child, 'text', …)
 export function el(tag, attrs = {}, ...kids) {
@@ -13,28 +31,34 @@ export function el(tag, attrs = {}, ...kids) {
     else if (k === 'text') e.textContent = v;
     else e.setAttribute(k, v === true ? '' : v);
   }
-  for (const kid of kids.flat()) if (kid !== null && kid !== undefined)
-    e.append(kid instanceof Node ? kid : document.createTextNode(String(kid)));
+  e.append(...nodes(kids));
   return e;
 }
 
 export function svg(tag, attrs = {}, text) {
   const e = document.createElementNS(SVGNS, tag);
-  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
-  if (text !== undefined) e.textContent = text;
+  for (const [k, v] of Object.entries(attrs)) if (v !== undefined && v !== null) e.setAttribute(k, v);
+  if (text !== undefined && text !== null) e.textContent = text;
   return e;
 }
 
-// A number in 7 significant figures (the full value stays in data-value).
+// A number in 7 significant figures (the full value stays in data-value). A
+// value the API could not give (null: JSON has no infinity or NaN) reads "—".
 export function fmt(x, sig = 7) {
-  if (typeof x !== 'number' || !isFinite(x)) return String(x);
+  if (x === Infinity) return '∞';
+  if (x === -Infinity) return '−∞';
+  if (typeof x !== 'number' || Number.isNaN(x)) return typeof x === 'string' ? x : '—';
   if (x === 0) return '0';
   const a = Math.abs(x);
   return a >= 1e-4 && a < 1e7 ? String(Number(x.toPrecision(sig))) : x.toExponential(sig - 1);
 }
 
+// A <dd> with a number and its unit; a missing value (null, NaN) reads "—"
+// without the unit, titled "not available".
 export function num(id, x, unit = '') {
-  return el('dd', {id, 'data-value': String(x)}, fmt(x) + (unit ? ' ' + unit : ''));
+  const ok = typeof x === 'number' && !Number.isNaN(x);
+  return el('dd', {id, 'data-value': String(x), title: ok ? undefined : 'not available'},
+    fmt(x) + (ok && unit ? ' ' + unit : ''));
 }
 
 let uid = 0;
@@ -67,22 +91,51 @@ export const val = (input) => input.type === 'number' || input.type === 'range'
 export const toJSON = (body) => JSON.stringify(body, (k, v) =>
   typeof v === 'number' && !isFinite(v) ? null : v);
 
-export async function api(path, body) {
-  const init = body === undefined ? {} : {method: 'POST', headers: {'Content-Type': 'application/json'},
-    body: toJSON(body)};
+// The access token of a server started with --token-file: kept for this tab's
+// session only (sessionStorage, never localStorage), sent as
+// "Authorization: Bearer TOKEN" on every /v1 request (server/http.c token_ok).
+const TOKEN_KEY = 'mechd-token';
+export function getToken() {
+  try { return sessionStorage.getItem(TOKEN_KEY) || ''; } catch (e) { return ''; }
+}
+export function setToken(t) {
+  try { if (t) sessionStorage.setItem(TOKEN_KEY, t); else sessionStorage.removeItem(TOKEN_KEY); } catch (e) { /* private mode */ }
+  examplesPromise = null; // fetch the examples again with the new token
+}
+
+// POST body (or GET when body is undefined) to path. Never throws: answers
+// {ok, status, body}; {aborted: true} when signal aborts it (the server's
+// hang-up watcher then cancels the work); status 0 on a network error. A 401
+// also fires "mechd:unauthorized" on window (app.js offers the token field).
+export async function api(path, body, {signal} = {}) {
+  const headers = {};
+  if (body !== undefined) headers['Content-Type'] = 'application/json';
+  const token = getToken();
+  if (token) headers.Authorization = 'Bearer ' + token;
+  const init = {method: body === undefined ? 'GET' : 'POST', headers, signal,
+    body: body === undefined ? undefined : toJSON(body)};
   let res;
   try { res = await fetch(path, init); } catch (e) {
+    if (e && e.name === 'AbortError') return {ok: false, aborted: true, status: 0, body: null};
     return {ok: false, status: 0, body: {title: 'Network error', detail: String(e)}};
   }
   let json = null;
-  try { json = await res.json(); } catch (e) { json = {title: 'Not JSON', detail: String(e)}; }
+  try { json = await res.json(); } catch (e) {
+    if (e && e.name === 'AbortError') return {ok: false, aborted: true, status: 0, body: null};
+    json = {title: 'Not JSON', detail: String(e)};
+  }
+  if (res.status === 401)
+    window.dispatchEvent(new CustomEvent('mechd:unauthorized', {detail: {hadToken: !!token, problem: json}}));
   return {ok: res.ok, status: res.status, body: json};
 }
 
+// The request as a curl command; with a token in use, the header names the
+// shell variable $MECHD_TOKEN instead of showing the secret (projectors).
 export function curlCommand(path, body) {
   const q = (s) => "'" + s.replace(/'/g, "'\\''") + "'";
-  return body === undefined ? `curl -s ${q(location.origin + path)}`
-    : `curl -s --json ${q(toJSON(body))} ${q(location.origin + path)}`;
+  const auth = getToken() ? ' -H "Authorization: Bearer $MECHD_TOKEN"' : '';
+  return body === undefined ? `curl -s${auth} ${q(location.origin + path)}`
+    : `curl -s${auth} --json ${q(toJSON(body))} ${q(location.origin + path)}`;
 }
 
 // The copyable curl box: update(path, body).
@@ -124,45 +177,91 @@ export function showProblem(form, problemBox, status, prob) {
     if (!best) { left.push(e); continue; }
     best.setAttribute('aria-invalid', 'true');
     const box = document.getElementById(best.getAttribute('aria-describedby'));
-    if (box) box.textContent = (box.textContent ? box.textContent + '; ' : '') + e.detail;
+    // one control may fill several places (both legs' distance): say a message once
+    if (box && !box.textContent.split('; ').includes(e.detail))
+      box.textContent = (box.textContent ? box.textContent + '; ' : '') + e.detail;
     first = first || best;
   }
   const head = `${status} ${prob && prob.title ? prob.title : 'Error'}`;
+  const hint = status === 401 ? el('p', {}, 'This server needs an access token: ',
+    el('button', {type: 'button', class: 'secondary', onclick: () => window.dispatchEvent(new CustomEvent('mechd:token-open'))},
+      'Enter the access token')) : null;
   if (left.length || !errors.length)
-    problemBox.append(el('strong', {}, head + ': '), (prob && prob.detail) || '',
-      left.length ? el('ul', {}, left.map(e => el('li', {}, `${e.pointer || '(body)'}: ${e.detail}`))) : null);
-  else problemBox.append(el('span', {class: 'muted'}, head + ' — see the marked field' + (errors.length > 1 ? 's' : '') + '.'));
+    add(problemBox, el('strong', {}, head + ': '), (prob && prob.detail) || '',
+      left.length ? el('ul', {}, left.map(e => el('li', {}, `${e.pointer || '(body)'}: ${e.detail}`))) : null, hint);
+  else add(problemBox, el('span', {class: 'muted'}, head + ' — see the marked field' + (errors.length > 1 ? 's' : '') + '.'));
   if (first) first.focus();
 }
 
 let examplesPromise = null;
 // GET /v1/examples ({examples: [{id, title, section, operation, request, notes_answer}]}),
-// or [] when the server has none.
+// or [] when the server has none (a failure is not kept: the next call asks again).
 export function examples() {
-  if (!examplesPromise) examplesPromise = api('/v1/examples').then(r =>
-    r.ok && r.body && Array.isArray(r.body.examples) ? r.body.examples : []);
+  if (!examplesPromise) {
+    const p = api('/v1/examples').then(r => {
+      if (!(r.ok && r.body && Array.isArray(r.body.examples))) { if (examplesPromise === p) examplesPromise = null; return []; }
+      return r.body.examples;
+    });
+    examplesPromise = p;
+  }
   return examplesPromise;
 }
 
+// A request as canonical JSON (keys sorted, "cost" left out): two examples
+// asking the same thing compare equal.
+function canon(v) {
+  if (Array.isArray(v)) return '[' + v.map(canon).join(',') + ']';
+  if (v && typeof v === 'object')
+    return '{' + Object.keys(v).filter(k => k !== 'cost').sort().map(k => JSON.stringify(k) + ':' + canon(v[k])).join(',') + '}';
+  return JSON.stringify(v);
+}
+const exKey = (ex) => ex.id || ex.title;
+
 // The "worked examples" picker: the server's examples for these operations
-// plus the lab's built-in ones; onLoad(example) fills the form.
-export function examplePicker(operations, builtin, onLoad) {
+// (those fits(example) accepts: the ones the lab's forms can hold) plus the
+// lab's built-in ones not already among them, grouped by the notes' section.
+// onLoad(example) fills the form and runs it. The picker keeps showing the
+// example last loaded — `selected` (an example's id or title) on a fresh mount,
+// by default the first built-in one, which the lab's form starts with; a
+// built-in example the server also lists is shown as the server's. The notes'
+// answer of the loaded example, when it has one, is shown under the picker.
+export function examplePicker(operations, builtin, onLoad, {selected, fits = () => true} = {}) {
   const id = 'ex' + (++uid);
-  const select = el('select', {id});
-  const wrap = el('div', {class: 'examples'}, el('label', {for: id}, 'Worked example: '), select,
+  const select = el('select', {id, 'data-role': 'examples'});
+  const answer = el('p', {class: 'notes-answer muted', 'aria-live': 'polite'});
+  let list = builtin.slice();
+  let current = selected || (builtin[0] && exKey(builtin[0]));
+  const showAnswer = () => {
+    const ex = list.find(e => exKey(e) === current);
+    const t = ex && ex.notes_answer && ex.notes_answer.text;
+    put(answer, t ? [el('strong', {}, 'The notes: '), t] : null);
+  };
+  const wrap = el('div', {class: 'examples'}, el('label', {for: id}, 'Worked example'), select,
     el('button', {type: 'button', class: 'secondary', onclick: () => {
       const ex = list[Number(select.value)];
-      if (ex) onLoad(ex);
-    }}, 'Load'));
-  let list = builtin.slice();
+      if (!ex) return;
+      current = exKey(ex); showAnswer();
+      onLoad(ex);
+    }}, 'Load'), answer);
   const render = () => {
-    select.replaceChildren(...list.map((ex, i) => el('option', {value: i},
-      (ex.section ? `§${ex.section} ` : '') + ex.title)));
+    const groups = new Map();
+    list.forEach((ex, i) => {
+      const g = ex.section ? '§' + ex.section : 'More examples';
+      if (!groups.has(g)) groups.set(g, []);
+      groups.get(g).push(el('option', {value: i, selected: exKey(ex) === current}, ex.title));
+    });
+    put(select, [...groups].map(([g, opts]) => el('optgroup', {label: g}, opts)));
+    showAnswer();
   };
   render();
   examples().then(server => {
-    const mine = server.filter(ex => operations.includes(ex.operation));
-    if (mine.length) { list = mine.concat(builtin.filter(b => !mine.some(m => m.title === b.title))); render(); }
+    const mine = server.filter(ex => operations.includes(ex.operation) && fits(ex));
+    if (!mine.length) return;
+    const same = (b) => mine.find(m => m.operation === b.operation && canon(m.request) === canon(b.request));
+    const cur = builtin.find(b => exKey(b) === current);
+    if (cur && same(cur)) current = exKey(same(cur));
+    list = mine.concat(builtin.filter(b => !same(b) && !mine.some(m => m.title === b.title)));
+    render();
   });
   return wrap;
 }
@@ -173,10 +272,42 @@ export function scale(d0, d1, r0, r1) {
   return (x) => r0 + (x - d0) * k;
 }
 
-// A simple x-y line plot into an <svg class="plot">: series = [{points: [[x,y]], cls, label}].
-export function linePlot(root, series, {xlabel = '', ylabel = '', logx = false, logy = false,
-                                        width = 640, height = 400, equal = false} = {}) {
-  root.replaceChildren();
+// The width in px an <svg class="plot"> is drawn at (its viewBox width): the
+// element's laid-out width, so that one user unit is one CSS px and a
+// font-size of 13 reads as 13 px on a phone as on a desktop; `max` (the CSS
+// max-width) before layout. Plots keep their aspect ratio: H = W * h / max.
+export function plotSize(root, max = 640, h = 400) {
+  const w = Math.round(root.getBoundingClientRect().width);
+  const W = w > 0 ? Math.max(260, Math.min(max, w)) : max;
+  return [W, Math.round(W * h / max)];
+}
+
+// Draw a plot now and again whenever its width changes (a phone turned, a
+// window resized): draw() reads plotSize(root) itself.
+const redraws = new WeakMap();
+const resizeObs = typeof ResizeObserver === 'function' ? new ResizeObserver((entries) => {
+  for (const en of entries) {
+    const r = redraws.get(en.target);
+    const w = Math.round(en.contentRect.width);
+    if (r && w > 0 && Math.abs(w - r.w) >= 8) { r.w = w; r.draw(); }
+  }
+}) : null;
+export function drawPlot(root, draw) {
+  draw();
+  const prev = redraws.get(root);
+  redraws.set(root, {draw, w: prev ? prev.w : Math.round(root.getBoundingClientRect().width)});
+  if (!prev && resizeObs) resizeObs.observe(root);
+}
+
+// A simple x-y line plot into an <svg class="plot">: series = [{points: [[x,y]], cls, label}];
+// the labels are listed in the top (legend: 'top') or bottom ('bottom') left corner.
+export function linePlot(root, series, opts = {}) {
+  drawPlot(root, () => linePlotNow(root, series, opts));
+}
+function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy = false,
+                                    width = 640, height = 400, equal = false, legend = 'top'} = {}) {
+  [width, height] = plotSize(root, width, height);
+  put(root);
   root.setAttribute('viewBox', `0 0 ${width} ${height}`);
   const tx = logx ? Math.log10 : (v) => v, ty = logy ? Math.log10 : (v) => v;
   const pts = series.flatMap(s => s.points).filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
@@ -185,7 +316,22 @@ export function linePlot(root, series, {xlabel = '', ylabel = '', logx = false, 
   let [y0, y1] = [Math.min(...pts.map(p => ty(p[1]))), Math.max(...pts.map(p => ty(p[1])))];
   if (x0 === x1) { x0 -= 1; x1 += 1; }
   if (y0 === y1) { y0 -= 1; y1 += 1; }
-  const m = {l: 88, r: 38, t: 15, b: 45};
+  const narrow = width < 480;
+  // ticks: on a log axis whole decades when the range holds two or more, else n + 1 evenly spaced values
+  const ticks = (a, b, n, log) => {
+    const k0 = Math.ceil(a - 1e-9), k1 = Math.floor(b + 1e-9);
+    if (log && k1 - k0 >= 1) {
+      const step = Math.ceil((k1 - k0 + 1) / (n + 1)), out = [];
+      for (let k = k0; k <= k1; k += step) out.push(k);
+      return out;
+    }
+    return Array.from({length: n + 1}, (_, i) => { const v = a + (b - a) * i / n; return Math.abs(v) < 1e-6 * (b - a) ? 0 : v; });
+  };
+  const label = (v, log) => (log ? (Number.isInteger(v) ? '1e' + v : '1e' + v.toFixed(1)) : fmt(v, 3));
+  const textW = (s, size = 13) => s.length * size * 0.6; // a generous estimate of a label's width
+  // the left margin fits the longest y tick label beside the rotated axis label
+  const yLabels0 = ticks(y0, y1, 4, logy).map(v => label(v, logy));
+  const m = {l: Math.max(narrow ? 56 : 70, 34 + Math.max(...yLabels0.map(s => textW(s)))), r: narrow ? 16 : 38, t: 15, b: 45};
   if (equal) {
     const sx = (x1 - x0) / (width - m.l - m.r), sy = (y1 - y0) / (height - m.t - m.b), s = Math.max(sx, sy);
     const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
@@ -193,56 +339,122 @@ export function linePlot(root, series, {xlabel = '', ylabel = '', logx = false, 
     y0 = cy - s * (height - m.t - m.b) / 2; y1 = cy + s * (height - m.t - m.b) / 2;
   }
   const X = scale(x0, x1, m.l, width - m.r), Y = scale(y0, y1, height - m.b, m.t);
-  root.append(svg('rect', {x: m.l, y: m.t, width: width - m.l - m.r, height: height - m.t - m.b,
+  add(root, svg('rect', {x: m.l, y: m.t, width: width - m.l - m.r, height: height - m.t - m.b,
     fill: 'none', stroke: '#888'}));
-  for (let i = 0; i <= 4; i++) {
-    let xv = x0 + (x1 - x0) * i / 4, yv = y0 + (y1 - y0) * i / 4;
-    if (Math.abs(xv) < 1e-6 * (x1 - x0)) xv = 0; // a round-off tick next to zero reads 0
-    if (Math.abs(yv) < 1e-6 * (y1 - y0)) yv = 0;
-    root.append(svg('text', {x: X(xv), y: height - m.b + 18, 'text-anchor': 'middle', 'font-size': 13},
-      logx ? '1e' + xv.toFixed(1) : fmt(xv, 3)));
-    root.append(svg('text', {x: m.l - 6, y: Y(yv) + 4, 'text-anchor': 'end', 'font-size': 13},
-      logy ? '1e' + yv.toFixed(1) : fmt(yv, 3)));
+  for (const xv of ticks(x0, x1, narrow ? 2 : 4, logx)) { // centred under its tick, but kept inside the picture
+    const s = label(xv, logx), half = textW(s) / 2;
+    add(root, svg('line', {x1: X(xv), y1: height - m.b, x2: X(xv), y2: height - m.b + 4, stroke: '#888'}),
+      svg('text', {x: Math.max(half + 2, Math.min(width - half - 2, X(xv))), y: height - m.b + 18, 'text-anchor': 'middle',
+        'font-size': 13}, s));
   }
-  root.append(svg('text', {x: (m.l + width - m.r) / 2, y: height - 6, 'text-anchor': 'middle', 'font-size': 15}, xlabel));
-  root.append(svg('text', {x: 14, y: (m.t + height - m.b) / 2, 'text-anchor': 'middle', 'font-size': 15,
-    transform: `rotate(-90 14 ${(m.t + height - m.b) / 2})`}, ylabel));
+  for (const yv of ticks(y0, y1, 4, logy))
+    add(root, svg('line', {x1: m.l - 4, y1: Y(yv), x2: m.l, y2: Y(yv), stroke: '#888'}),
+      svg('text', {x: m.l - 6, y: Y(yv) + 4, 'text-anchor': 'end', 'font-size': 13}, label(yv, logy)));
+  add(root, svg('text', {x: (m.l + width - m.r) / 2, y: height - 6, 'text-anchor': 'middle', 'font-size': 15}, xlabel));
+  add(root, svg('text', {x: 16, y: (m.t + height - m.b) / 2, 'text-anchor': 'middle', 'font-size': 15,
+    transform: `rotate(-90 16 ${(m.t + height - m.b) / 2})`}, ylabel));
   const colors = ['#c92a2a', '#2b8a3e', '#1864ab', '#e67700', '#862e9c', '#495057'];
   series.forEach((s, i) => {
     const c = s.color || colors[i % colors.length];
     const p = s.points.filter(q => isFinite(tx(q[0])) && isFinite(ty(q[1])))
       .map(q => `${X(tx(q[0])).toFixed(2)},${Y(ty(q[1])).toFixed(2)}`);
-    if (s.dots) for (const q of p) { const [a, b] = q.split(','); root.append(svg('circle', {cx: a, cy: b, r: 4, fill: c})); }
-    else root.append(svg('polyline', {points: p.join(' '), fill: 'none', stroke: c, 'stroke-width': 2.5}));
-    if (s.label) root.append(svg('text', {x: m.l + 8, y: m.t + 18 + 18 * i, fill: c, 'font-size': 15,
+    if (s.dots) for (const q of p) { const [a, b] = q.split(','); add(root, svg('circle', {cx: a, cy: b, r: 4, fill: c})); }
+    else add(root, svg('polyline', {points: p.join(' '), fill: 'none', stroke: c, 'stroke-width': 2.5}));
+    const ly = legend === 'bottom' ? height - m.b - 8 - 18 * (series.length - 1 - i) : m.t + 18 + 18 * i;
+    if (s.label) add(root, svg('text', {x: m.l + 8, y: ly, fill: c, 'font-size': 15,
       'font-weight': 700}, s.label));
   });
 }
 
-// The common lab layout: intro, examples, a form, results, plot, curl.
-export function labLayout(main, {title, intro}) {
-  const form = el('form', {novalidate: true, 'aria-label': title + ' inputs'});
+// A section of a lab: a form, the problem box under it, the curl box; results
+// and a figure beside (one column on a phone). parent gets a heading and intro.
+export function labSection(parent, {title, intro, form, level = 'h2', id}) {
+  form = form || el('form', {novalidate: true, 'aria-label': title + ' inputs', id: id ? id + '-form' : undefined});
   const problem = el('div', {class: 'problem', role: 'alert', 'data-role': 'problem'});
-  const results = el('section', {class: 'results', 'aria-live': 'polite', 'aria-label': 'Results'});
-  const figure = el('section', {class: 'figure'});
+  const results = el('section', {class: 'results', 'aria-live': 'polite', 'aria-label': title + ': results',
+    id: id ? id + '-results' : undefined});
+  const figure = el('section', {class: 'figure', 'aria-label': title + ': figure'});
   const curl = curlBox();
-  main.replaceChildren(el('h2', {}, title), el('p', {class: 'intro'}, intro),
+  add(parent, el(level, {}, title), intro ? el('p', {class: 'intro'}, intro) : null,
     el('div', {class: 'grid'}, el('div', {}, form, problem, curl.box), el('div', {}, results, figure)));
   return {form, problem, results, figure, curl};
 }
 
-// Wire a form to one operation: build() -> body, show(body, answer) renders.
-export function runner(L, path, build, show) {
+// The common lab layout: intro, examples, a form, results, plot, curl.
+export function labLayout(main, {title, intro}) {
+  put(main);
+  return labSection(main, {title, intro});
+}
+
+// While a request runs: the form says data-state="busy", its submit button is
+// disabled, the results and figure are dimmed and marked aria-busy (they are
+// the previous answer's), and after a moment (no flicker for quick answers) a
+// "Computing… n s" status with a Cancel button shows by the button.
+function busyUi(S, onCancel) {
+  const buttons = S.form.querySelector('.buttons') || S.form;
+  const submit = S.form.querySelector('[type=submit]');
+  const secs = el('span', {});
+  const cancel = el('button', {type: 'button', class: 'secondary', 'data-role': 'cancel', onclick: onCancel}, 'Cancel');
+  const status = el('span', {class: 'busy', role: 'status', 'data-role': 'busy'},
+    el('span', {class: 'spinner', 'aria-hidden': 'true'}), 'Computing… ', secs, ' ', cancel);
+  const old = S.form.querySelector('[data-role=busy], [data-role=cancelled]');
+  if (old) old.remove();
+  const t0 = performance.now();
+  const pressed = document.activeElement === submit; // the user pressed the button (not a load or a slider)
+  S.form.dataset.state = 'busy';
+  if (submit) submit.disabled = true;
+  for (const e of [S.results, S.figure]) if (e) e.setAttribute('aria-busy', 'true');
+  let shown = false;
+  const show = () => {
+    if (!shown) {
+      shown = true;
+      for (const e of [S.results, S.figure]) if (e) e.classList.add('stale');
+      add(buttons, status);
+      if (pressed && (document.activeElement === submit || document.activeElement === document.body)) cancel.focus();
+    }
+    const s = Math.round((performance.now() - t0) / 1000);
+    secs.textContent = s ? s + ' s' : '';
+  };
+  const timer = setInterval(show, 1000);
+  const soon = setTimeout(show, 150);
+  // end(cancelled): back to idle; cancelled leaves the old results dimmed with a note
+  return (cancelled) => {
+    clearInterval(timer); clearTimeout(soon);
+    const hadFocus = document.activeElement === cancel;
+    status.remove();
+    if (submit) { submit.disabled = false; if (hadFocus) submit.focus(); }
+    for (const e of [S.results, S.figure]) if (e) { e.removeAttribute('aria-busy'); e.classList.toggle('stale', !!cancelled); }
+    if (cancelled) add(buttons, el('span', {class: 'busy', role: 'status', 'data-role': 'cancelled'},
+      'Cancelled: the results shown are from the previous request.'));
+  };
+}
+
+// Wire a section's form to one operation: build() -> body, show(answer, body)
+// renders. Returns run(); a new run cancels one still running (the slider),
+// and Cancel aborts the request (AbortController: the server's hang-up
+// watcher then stops the pooled work). data-state on the form: busy, done,
+// error or cancelled. path may be a function of nothing.
+export function runner(S, path, build, show) {
+  let ctl = null, endCur = null;
   const run = async () => {
     let body;
-    try { body = build(); } catch (e) { L.problem.textContent = String(e); return; }
-    L.curl.update(typeof path === 'function' ? path() : path, body);
-    const r = await api(typeof path === 'function' ? path() : path, body);
-    if (!r.ok) { showProblem(L.form, L.problem, r.status, r.body); L.form.dataset.state = 'error'; return; }
-    clearErrors(L.form, L.problem);
+    try { body = build(); } catch (e) { put(S.problem, String(e)); S.form.dataset.state = 'error'; return; }
+    const p = typeof path === 'function' ? path() : path;
+    S.curl.update(p, body);
+    if (ctl) { ctl.abort(); endCur(false); }
+    const mine = ctl = new AbortController();
+    let cancelled = false;
+    const end = endCur = busyUi(S, () => { cancelled = true; mine.abort(); });
+    const r = await api(p, body, {signal: mine.signal});
+    if (mine !== ctl) return; // a newer run took over (and owns the busy state)
+    ctl = null;
+    end(r.aborted && cancelled);
+    if (r.aborted) { S.form.dataset.state = 'cancelled'; return; }
+    if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
+    clearErrors(S.form, S.problem);
     show(r.body, body);
-    L.form.dataset.state = 'done';
+    S.form.dataset.state = 'done';
   };
-  L.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
+  S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;
 }

@@ -3,7 +3,15 @@
 // against a real mechd started on port 0. For each lab: the page loads, the
 // default request is submitted, the numbers the API returns are shown (checked
 // against closed forms), and an invalid input shows its error next to the
-// field it names. Screenshots go to the directory given (default
+// field it names. Then, as a user would (issue 15): every worked example in
+// every lab's picker loads, computes and leaves the picker showing it, with no
+// error box and no "null", "undefined" or "NaN" on the page; at 390 px no lab
+// scrolls sideways, plot text reads at >= 10 px and the spacetime β slider
+// sits by its diagram; the Foucault pendulum at the equator says there is no
+// precession; a request at work shows a busy state, disables its button and
+// can be cancelled; and against a mechd started with --token-file the 401
+// leads to an access-token field that makes the labs work. Screenshots of
+// every lab at 1280×800 and 390×844 go to the directory given (default
 // ./screenshots). Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
@@ -31,19 +39,25 @@ const close = (got, want, rtol, what) => check(Number.isFinite(got) && Math.abs(
 // --static-dir: the front end of this source tree (run.sh sets MECHD_WEB_ROOT),
 // whatever default the binary was compiled with.
 const webRoot = path.resolve(process.env.MECHD_WEB_ROOT || 'clients/web');
-const server = spawn(mechd, ['--port', '0', ...(process.env.MECHD_WEB_PROXY === '1' ? [] : ['--static-dir', webRoot])],
-  {stdio: ['ignore', 'pipe', 'pipe']});
-server.stderr.on('data', () => {});
-const base = await new Promise((resolve, reject) => {
-  let out = '';
-  const t = setTimeout(() => reject(new Error('mechd did not print its address: ' + out)), 10000);
-  server.stdout.on('data', (d) => {
-    out += d;
-    const m = out.match(/listening on (http:\/\/\S+)/);
-    if (m) { clearTimeout(t); resolve(m[1].replace(/\/$/, '')); }
+function startMechd(extra = []) {
+  const proc = spawn(mechd, ['--port', '0', ...(process.env.MECHD_WEB_PROXY === '1' ? [] : ['--static-dir', webRoot]), ...extra],
+    {stdio: ['ignore', 'pipe', 'pipe']});
+  proc.stderr.on('data', () => {});
+  const url = new Promise((resolve, reject) => {
+    let out = '';
+    const t = setTimeout(() => reject(new Error('mechd did not print its address: ' + out)), 10000);
+    proc.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/listening on (http:\/\/\S+)/);
+      if (m) { clearTimeout(t); resolve(m[1].replace(/\/$/, '')); }
+    });
+    proc.on('exit', (code) => reject(new Error('mechd exited with ' + code + ': ' + out)));
   });
-  server.on('exit', (code) => reject(new Error('mechd exited with ' + code + ': ' + out)));
-});
+  return {proc, url};
+}
+const mainServer = startMechd();
+const server = mainServer.proc;
+const base = await mainServer.url;
 
 let origin = base, proxy = null;
 if (process.env.MECHD_WEB_PROXY === '1') {
@@ -80,6 +94,16 @@ if (process.env.MECHD_WEB_PROXY === '1') {
     for (const bad of ['/../CMakeLists.txt', '/%2e%2e/CMakeLists.txt', '/labs/../../README.md', '/.gitignore'])
       check((await fetch(origin + bad)).status === 404, `GET ${bad} is refused with 404`);
   }
+}
+
+// --- the root of "null" on the page: the DOM's append/replaceChildren print a null
+// child as the text "null"; outside lib.js (whose put/add/el skip null) they are not used
+{
+  const files = ['app.js', ...fs.readdirSync(path.join(webRoot, 'labs')).filter(f => f.endsWith('.js')).map(f => 'labs/' + f)];
+  const raw = files.flatMap(f => fs.readFileSync(path.join(webRoot, f), 'utf8').split('\n')
+    .map((line, i) => [f, i + 1, line]).filter(([, , line]) => /\.(append|replaceChildren|prepend)\(/.test(line)));
+  check(raw.length === 0, `labs build the DOM through lib.js put/add/el, never append/replaceChildren (${raw.slice(0, 3)
+    .map(([f, n, l]) => `${f}:${n}: ${l.trim().slice(0, 60)}`).join(' | ')}${raw.length > 3 ? ` … ${raw.length} in all` : ''})`);
 }
 
 // --- the browser ---------------------------------------------------------------
@@ -223,13 +247,228 @@ await lab('accuracy', async () => {
   await invalid('main form', '#acc-t', -20, '#acc-submit', '> 0');
 });
 
-// phone width: the page reflows to one column and stays usable
-await page.setViewportSize({width: 390, height: 844});
+// --- issue 15: the labs as a user meets them ------------------------------------
+const LABS = ['inertia', 'spacetime', 'earth', 'tops', 'orbits', 'accuracy'];
+
+// Wait until every form of the lab has answered (done, error or cancelled) and
+// none is busy; forms whose state was cleared must answer again.
+const settled = () => page.waitForFunction(() => {
+  const forms = [...document.querySelectorAll('main form')];
+  return forms.length > 0 && forms.every(f => f.dataset.state && f.dataset.state !== 'busy');
+}, null, {timeout: 20000});
+
+// What a reader sees that should not be there: "null", "undefined" or "NaN"
+// (outside the curl command, whose JSON may say "kind":"null"), an error box
+// or a field error. Returns a list of findings.
+const blemishes = () => page.evaluate(() => {
+  const found = [];
+  let text = document.body.innerText;
+  for (const pre of document.querySelectorAll('.curl pre')) text = text.split(pre.innerText).join(' ');
+  // (not \b: "for /v1null" and "10000000null" have no word boundary before "null")
+  for (const m of text.matchAll(/(?<![A-Za-z])(null|undefined|NaN)(?![A-Za-z])/g))
+    found.push(`"${m[1]}" in "…${text.slice(Math.max(0, m.index - 40), m.index + 20).replace(/\s+/g, ' ')}…"`);
+  for (const b of document.querySelectorAll('.problem, .err'))
+    if (b.textContent.trim() && b.getClientRects().length) found.push(`error shown: "${b.textContent.trim().slice(0, 120)}"`);
+  return found;
+});
+
+// Every worked example in the lab's picker: load it, let it compute, look.
+async function everyExample(id) {
+  const n = await page.$$eval('.examples select option', (o) => o.length);
+  check(n >= 1, `${id}: worked examples offered (${n})`);
+  for (let i = 0; i < n; i++) {
+    const title = await page.$eval('.examples select', (s, i) => s.options[i].textContent, i);
+    await page.evaluate(() => { for (const f of document.querySelectorAll('main form')) delete f.dataset.state; });
+    await page.selectOption('.examples select', String(i));
+    await page.click('.examples button');
+    // a loaded example runs one of the lab's forms; wait for it (the others keep no state)
+    await page.waitForFunction(() => [...document.querySelectorAll('main form')].some(f => f.dataset.state &&
+      f.dataset.state !== 'busy') && ![...document.querySelectorAll('main form')].some(f => f.dataset.state === 'busy'),
+      null, {timeout: 20000}).catch(() => {});
+    const states = await page.$$eval('main form', (fs) => fs.map(f => f.dataset.state || '-').join(','));
+    check(!states.includes('error'), `${id}: example "${title}" computes (form states ${states})`);
+    const bad = await blemishes();
+    check(bad.length === 0, `${id}: example "${title}" leaves a clean page (${bad.join(' | ')})`);
+    const shown = await page.$eval('.examples select', (s) => s.selectedOptions[0] ? s.selectedOptions[0].textContent : '(none)');
+    check(shown === title, `${id}: the picker still shows the loaded example "${title}" (shows "${shown}")`);
+  }
+}
+
+for (const id of LABS) await lab(id, async () => {
+  await settled();
+  const bad = await blemishes();
+  check(bad.length === 0, `${id}: the default page is clean (${bad.join(' | ')})`);
+  await everyExample(id);
+}, `examples-${id}`);
+
+// a body whose principal moments all differ: a 1 × 2 × 3 m box of 1 kg about its
+// centre has I = M(b² + c²)/12 … = 5/12, 10/12, 13/12 kg m², no "degenerate" note
+// (whose absence left the text "null" on the page)
 await lab('inertia', async () => {
+  await settled();
+  await page.selectOption('#inertia-origin', 'center_of_mass');
+  for (const [j, v] of [[0, 1], [1, 2], [2, 3]]) await page.fill(`#inertia-size-0-${j}`, String(v));
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#inertia-submit');
   await state('main form', 'done');
-  const w = await page.evaluate(() => document.documentElement.scrollWidth);
-  check(w <= 400, `phone: no horizontal scrolling (scrollWidth ${w})`);
-}, 'phone-inertia');
+  const I = [await value('#inertia-moment-0'), await value('#inertia-moment-1'), await value('#inertia-moment-2')].sort((a, b) => a - b);
+  close(I[0], 5 / 12, 1e-12, 'box 1×2×3: I1 = M(a² + b²)/12 = 5/12');
+  close(I[1], 10 / 12, 1e-12, 'box 1×2×3: I2 = M(a² + c²)/12 = 10/12');
+  close(I[2], 13 / 12, 1e-12, 'box 1×2×3: I3 = M(b² + c²)/12 = 13/12');
+  const bad = await blemishes();
+  check(bad.length === 0, `inertia with distinct moments: a clean page (${bad.join(' | ')})`);
+  // ω = (1, 2, 3) along the box's edges: T = ½ Σ I_k ω_k² = ½ (13/12 + 4·10/12 + 9·5/12) = 49/12
+  for (const [j, v] of [[0, 1], [1, 2], [2, 3]]) await page.fill(`#inertia-omega-${j}`, String(v), {timeout: 5000});
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#inertia-submit');
+  await state('main form', 'done');
+  close(await value('#inertia-T'), 49 / 12, 1e-12, 'box 1×2×3 turning at ω = (1, 2, 3): T = ½ ω·Iω = 49/12');
+}, 'inertia-distinct');
+
+// a problem without field errors is shown as its title and detail, nothing appended: the
+// server's answer when a run exhausts its step budget (answered here by the test: a real
+// one takes seconds of CPU)
+await lab('tops', async () => {
+  await settled();
+  await page.route('**/v1/rigid/top', (route) => route.fulfill({status: 422, contentType: 'application/problem+json',
+    body: JSON.stringify({type: '/problems/compute-budget-exceeded', title: 'Compute budget exceeded', status: 422,
+      detail: 'step budget of 10000000 steps exhausted', progress: {limit: 'max_steps', steps: 10000001}})}));
+  await page.click('#top-submit');
+  await state('main form', 'error');
+  const box = (await page.textContent('main .problem')).trim();
+  check(box === '422 Compute budget exceeded: step budget of 10000000 steps exhausted',
+    `a problem's detail is shown as it is, nothing appended (got "${box}")`);
+  await page.unrouteAll({behavior: 'ignoreErrors'});
+}, 'problem-detail');
+
+// the Foucault pendulum at the equator: ω sin λ = 0, no turn and nothing exaggerated
+await lab('earth', async () => {
+  await settled();
+  await page.fill('#fou-lat', '0');
+  await page.evaluate(() => { delete document.getElementById('fou-form').dataset.state; });
+  await page.click('#fou-submit');
+  await state('#fou-form', 'done');
+  close(await value('#fou-first'), 0, 0, 'Foucault at the equator: ω sin λ = 0');
+  const bad = await blemishes();
+  check(bad.length === 0, `Foucault at the equator: a clean page (${bad.join(' | ')})`);
+  const hours = await page.textContent('#fou-hours');
+  check(/no precession/.test(hours), `Foucault at the equator: "no precession" where the full turn would be (got "${hours}")`);
+  const label = await page.$eval('#fou-plot', (s) => s.textContent);
+  check(!/×/.test(label) && /to scale/.test(label), `Foucault at the equator: the trace is drawn to scale, not exaggerated ("${label}")`);
+}, 'foucault-equator');
+
+// a request at work: busy state, disabled button, old results marked stale, Cancel aborts it.
+// The compare request is held by the test (never answered) until the page cancels it.
+await lab('accuracy', async () => {
+  await settled();
+  let held = null;
+  const failedReq = new Promise((resolve) => page.on('requestfailed', (r) => { if (r.url().endsWith('/v1/compare')) resolve(r); }));
+  await page.route('**/v1/compare', (route) => { held = route; });
+  await page.click('#acc-submit');
+  const busy = await page.waitForSelector('main form[data-state="busy"] [data-role="cancel"]', {timeout: 5000}).then(() => true, () => false);
+  check(busy, 'busy: the form shows that work is running, with a Cancel button');
+  if (busy) {
+    check(await page.isDisabled('#acc-submit'), 'busy: the Compare button is disabled while it runs');
+    const stale = await page.$eval('main .results', (r) => r.classList.contains('stale') && r.getAttribute('aria-busy') === 'true');
+    check(stale, 'busy: the previous results are dimmed and marked aria-busy');
+    await page.screenshot({path: path.join(shots, 'busy-accuracy.png')});
+    await page.click('main [data-role="cancel"]');
+    await state('main form', 'cancelled');
+    const r = await Promise.race([failedReq, new Promise((res) => setTimeout(() => res(null), 5000))]);
+    check(r !== null, 'busy: Cancel aborts the HTTP request (the server then stops the work)');
+    check(!(await page.isDisabled('#acc-submit')), 'busy: after Cancel the button works again');
+  }
+  await page.unrouteAll({behavior: 'ignoreErrors'});
+  if (held) held.abort().catch(() => {});
+  await page.click('#acc-submit');
+  await state('main form', 'done');
+  const bad = await blemishes();
+  check(bad.length === 0, `busy: after Cancel a new request computes cleanly (${bad.join(' | ')})`);
+}, 'cancel-accuracy');
+
+// phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
+await page.setViewportSize({width: 390, height: 844});
+for (const id of LABS) await lab(id, async () => {
+  await settled();
+  const [sw, cw] = await page.evaluate(() => [document.documentElement.scrollWidth, document.documentElement.clientWidth]);
+  check(sw <= cw, `phone ${id}: no horizontal scrolling (scrollWidth ${sw}, clientWidth ${cw})`);
+  const small = await page.$$eval('svg.plot text', (ts) => ts.map(t => {
+    const m = t.getScreenCTM();
+    return [t.textContent, parseFloat(getComputedStyle(t).fontSize) * (m ? Math.hypot(m.a, m.b) : 1)];
+  }).filter(([, px]) => px < 10));
+  check(small.length === 0, `phone ${id}: plot text at >= 10 px (${small.slice(0, 3).map(([t, px]) => `"${t}" ${px.toFixed(1)} px`).join(', ')})`);
+  const bad = await blemishes();
+  check(bad.length === 0, `phone ${id}: a clean page (${bad.join(' | ')})`);
+  if (id === 'spacetime') {
+    const gap = await page.evaluate(() => {
+      const s = document.getElementById('st-beta-slider').getBoundingClientRect();
+      const d = document.getElementById('st-diagram').getBoundingClientRect();
+      return Math.max(s.top - d.bottom, d.top - s.bottom);
+    });
+    check(gap < 100, `phone spacetime: the β slider sits by the diagram it moves (${Math.round(gap)} px away)`);
+  }
+}, `phone-${id}`);
+// and the screenshots at 1280×800 of every lab
+await page.setViewportSize({width: 1280, height: 800});
+for (const id of LABS) await lab(id, settled, `desktop-${id}`);
+
+// --- a server with --token-file: the 401 leads to a token field, and the token works
+{
+  const tokenDir = fs.mkdtempSync(path.join(process.env.TMPDIR || '/tmp', 'mechd-token-'));
+  const token = 'classroom-' + Math.random().toString(36).slice(2);
+  fs.writeFileSync(path.join(tokenDir, 'token'), token + '\n', {mode: 0o600});
+  const guarded = startMechd(['--token-file', path.join(tokenDir, 'token')]);
+  try {
+    const gbase = await guarded.url;
+    check((await fetch(gbase + '/app.js')).status === 200, 'token: the front end itself is served without a token');
+    check((await fetch(gbase + '/v1/examples')).status === 401, 'token: /v1 answers 401 without it');
+    const ctx = await browser.newContext({viewport: {width: 1280, height: 800}});
+    const tp = await ctx.newPage();
+    const errs = [];
+    tp.on('pageerror', (e) => errs.push(String(e)));
+    const auth = [];
+    tp.on('request', (r) => { if (r.url().includes('/v1/')) auth.push(r.headers().authorization || ''); });
+    try {
+      await tp.goto(`${gbase}/#spacetime`);
+      const asked = await tp.waitForSelector('#token-input', {state: 'visible', timeout: 5000}).then(() => true, () => false);
+      check(asked, 'token: a 401 opens an access-token field');
+      const text = await tp.evaluate(() => document.body.innerText);
+      check(!/(?<![A-Za-z])(null|undefined)(?![A-Za-z])/.test(text), `token: the 401 message has no "null" or "undefined" ("${text.slice(0, 300)}")`);
+      await tp.screenshot({path: path.join(shots, 'token-asked.png')});
+      if (asked) {
+        await tp.fill('#token-input', 'not-the-token');
+        await tp.click('#token-use');
+        await tp.waitForSelector('main form[data-state="error"]', {timeout: 10000});
+        const note = await tp.waitForSelector('#token-input', {state: 'visible', timeout: 5000}).then(() => tp.textContent('#token-note'), () => '');
+        check(/did not accept/.test(note), `token: a wrong token is refused and the field asks again ("${note}")`);
+        auth.length = 0;
+        await tp.fill('#token-input', token);
+        await tp.click('#token-use');
+        await tp.waitForFunction(() => { const f = [...document.querySelectorAll('main form')];
+          return f.length && f.every(x => x.dataset.state === 'done'); }, null, {timeout: 20000});
+        const bad = await tp.evaluate(() => [...document.querySelectorAll('.problem')].map(b => b.textContent.trim()).filter(Boolean));
+        check(bad.length === 0, `token: with the token every form of the lab computes (${bad.join(' | ')})`);
+        check(auth.length > 0 && auth.every(a => a === 'Bearer ' + token), 'token: sent as Authorization: Bearer on every /v1 request');
+        const [ss, ls] = await tp.evaluate(() => [JSON.stringify(sessionStorage), JSON.stringify(localStorage)]);
+        check(ss.includes(token) && !ls.includes(token), 'token: kept in sessionStorage, never in localStorage');
+        const curl = await tp.textContent('main .curl pre');
+        check(!curl.includes(token) && curl.includes('$MECHD_TOKEN'), 'token: the curl command names $MECHD_TOKEN, never the token');
+        await tp.goto(`${gbase}/#orbits`); // another lab, same tab: still works
+        await tp.waitForSelector('main form[data-state="done"]', {timeout: 20000});
+        check(true, 'token: kept across labs in the tab');
+      }
+      check(errs.length === 0, `token: no script errors (${errs.join(' | ')})`);
+    } catch (e) {
+      check(false, `token: ${e.message.split('\n')[0]}`);
+    } finally {
+      await tp.screenshot({path: path.join(shots, 'token-done.png')}).catch(() => {});
+      await ctx.close();
+    }
+  } finally {
+    guarded.proc.kill('SIGTERM');
+    fs.rmSync(tokenDir, {recursive: true, force: true});
+  }
+}
 
 await browser.close();
 if (proxy) proxy.close();

@@ -1,6 +1,6 @@
 // Accuracy lab: a work-precision plot from POST /v1/compare — error against
 // right-hand-side evaluations for several integrators on a Kepler orbit.
-import {el, field, val, fmt, svg, labLayout, runner, examplePicker, linePlot} from '../lib.js';
+import {el, put, add, field, val, fmt, svg, labLayout, runner, examplePicker, linePlot} from '../lib.js';
 
 const BUILTIN = [{title: 'Kepler orbit, e ≈ 0.44, 20 time units', operation: '/v1/compare',
   request: {operation: '/v1/trajectory', request: {particle: {mass: 1, position: [1, 0, 0], velocity: [0, 1.2, 0]},
@@ -15,21 +15,32 @@ export default {
              'what each digit of accuracy costs.'});
     const vy = field({label: 'initial speed', pointer: '/request/particle/velocity/1', value: 1.2, id: 'acc-v'});
     const te = field({label: 'duration', pointer: '/request/t_end', value: 20, id: 'acc-t'});
-    L.form.append(examplePicker(['/v1/compare'], BUILTIN, () => run()), vy.wrap, te.wrap,
+    let base = BUILTIN[0].request; // the example's sweep; the fields change its speed and duration
+    add(L.form, examplePicker(['/v1/compare'], BUILTIN, (ex) => {
+      base = ex.request; vy.input.value = base.request.particle.velocity[1]; te.input.value = base.request.t_end; run();
+    }, {fits: (ex) => ex.request && ex.request.request && ex.request.request.particle && typeof ex.request.request.t_end === 'number'}),
+    vy.wrap, te.wrap,
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'acc-submit'}, 'Compare')));
     const plot = svg('svg', {class: 'plot', id: 'acc-plot', role: 'img', 'aria-label': 'work-precision plot'});
-    L.figure.append(el('h3', {}, 'Work-precision'), plot);
+    add(L.figure, el('h3', {}, 'Work-precision'), plot);
     const run = runner(L, '/v1/compare', () => {
-      const b = structuredClone(BUILTIN[0].request);
+      const b = structuredClone(base);
       b.request.particle.velocity[1] = val(vy.input); b.request.t_end = val(te.input); return b;
     }, (r) => {
       const by = {};
       for (const run of r.runs) if (run.status === 'ok') (by[run.method] = by[run.method] || []).push([run.rhs_evaluations, run.max_position_error]);
-      L.results.replaceChildren(el('p', {}, `${r.runs.length} runs against the ${r.reference.kind} reference (${r.reference.name || ''}).`),
-        el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
-          r.runs.map(x => el('tr', {}, el('td', {}, x.method), el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))))));
+      const ref = r.reference || {};
+      const short = (v) => (v < 1e-3 ? v.toExponential() : String(v)); // 1e-8, 0.01: as the sweep says them
+      const setting = (x) => typeof x.dt === 'number' ? 'dt ' + short(x.dt) : typeof x.rtol === 'number' ? 'rtol ' + short(x.rtol) : '';
+      put(L.results, el('p', {}, `${r.runs.length} runs against the ${ref.kind || 'reference'} solution`,
+        ref.name ? ` (${ref.name})` : '', '.'),
+        el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'setting', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
+          r.runs.map(x => el('tr', {}, el('td', {}, x.method || (x.requested && x.requested.method) || '?'), el('td', {}, setting(x)),
+            x.status === 'ok' ? [el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))]
+              : el('td', {colspan: 2, class: 'muted'}, (x.status || 'not run').replace(/_/g, ' ') +
+                  (x.reason || x.detail ? ': ' + (x.reason || x.detail) : ''))))));
       linePlot(plot, Object.entries(by).map(([m, pts]) => ({label: m, points: pts.sort((p, q) => p[0] - q[0]), dots: false})),
-        {xlabel: 'right-hand-side evaluations', ylabel: 'max position error', logx: true, logy: true});
+        {xlabel: 'right-hand-side evaluations', ylabel: 'max position error', logx: true, logy: true, legend: 'bottom'});
     });
     run();
   },

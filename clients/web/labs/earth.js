@@ -2,7 +2,7 @@
 // (POST /v1/scenes/falling-object, /v1/scenes/cannonball): with Coriolis beside
 // without (where it would land if the Earth did not turn), the deflection
 // magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault).
-import {el, svg, field, val, fmt, num, examplePicker, showProblem, clearErrors, api, curlBox} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize} from '../lib.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -13,47 +13,38 @@ const BUILTIN = [
    request: {latitude_deg: 48.846, length: 67, release: {amplitude_deg: 3}, swings: 100}},
 ];
 
+// One scene: heading, intro, its form (fields + a button), results and a picture.
 function section(main, title, intro, fields, button, id) {
-  const form = el('form', {novalidate: true, 'aria-label': title + ' inputs', id: id + '-form'});
-  const problem = el('div', {class: 'problem', role: 'alert'});
-  const results = el('section', {class: 'results', 'aria-live': 'polite', id: id + '-results'});
-  const plot = svg('svg', {class: 'plot', id: id + '-plot', role: 'img', 'aria-label': title + ' picture'});
-  const curl = curlBox();
-  form.append(...fields.map(f => f.wrap), el('div', {class: 'buttons'}, el('button', {type: 'submit', id: id + '-submit'}, button)));
-  main.append(el('h2', {}, title), el('p', {class: 'intro'}, intro),
-    el('div', {class: 'grid'}, el('div', {}, form, problem, curl.box), el('div', {}, results, plot)));
-  return {form, problem, results, plot, curl};
-}
-
-async function call(S, path, body, show) {
-  S.curl.update(path, body);
-  const r = await api(path, body);
-  if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
-  clearErrors(S.form, S.problem); S.form.dataset.state = 'done'; show(r.body);
+  const S = labSection(main, {title, intro, id});
+  add(S.form, fields.map(f => f.wrap), el('div', {class: 'buttons'}, el('button', {type: 'submit', id: id + '-submit'}, button)));
+  S.plot = svg('svg', {class: 'plot', id: id + '-plot', role: 'img', 'aria-label': title + ' picture'});
+  add(S.figure, S.plot);
+  return S;
 }
 
 // A plan view (east right, north up): the landing point with and without the
 // Earth's rotation, the offset magnified by k and labelled with its true size.
-function planView(root, east, north, label, mag, extra = []) {
-  const W = 640, H = 360; root.replaceChildren(); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
-  const cx = W / 2, cy = H / 2;
-  root.append(svg('line', {x1: 20, y1: cy, x2: W - 20, y2: cy, stroke: '#bbb'}), svg('line', {x1: cx, y1: 20, x2: cx, y2: H - 20, stroke: '#bbb'}),
-    svg('text', {x: W - 40, y: cy - 8, 'font-size': 16}, 'east'), svg('text', {x: cx + 6, y: 34, 'font-size': 16}, 'north'));
+// The offset is drawn 0.39 W long (mag = that / its true length in m).
+function planView(root, east, north, label) {
+  const [W, H] = plotSize(root, 640, 360); put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const cx = W / 2, cy = H / 2, mag = 0.39 * W / Math.max(Math.hypot(east, north), 1e-12);
+  add(root, svg('line', {x1: 20, y1: cy, x2: W - 20, y2: cy, stroke: '#bbb'}), svg('line', {x1: cx, y1: 20, x2: cx, y2: H - 20, stroke: '#bbb'}),
+    svg('text', {x: W - 14, y: cy + 24, 'font-size': 16, 'text-anchor': 'end'}, 'east'), svg('text', {x: cx + 6, y: 34, 'font-size': 16}, 'north'));
   const px = cx + east * mag, py = cy - north * mag;
-  root.append(svg('circle', {cx, cy, r: 9, fill: 'none', stroke: '#2b8a3e', 'stroke-width': 3}),
+  add(root, svg('circle', {cx, cy, r: 9, fill: 'none', stroke: '#2b8a3e', 'stroke-width': 3}),
     svg('text', {x: cx - 8, y: cy + 30, 'font-size': 15, fill: '#2b8a3e', 'text-anchor': 'end'}, 'without Coriolis'),
     svg('line', {x1: cx, y1: cy, x2: px, y2: py, stroke: '#c92a2a', 'stroke-width': 3, 'stroke-dasharray': '8 4'}),
     svg('circle', {cx: px, cy: py, r: 9, fill: '#c92a2a'}),
     svg('text', {x: px + (east >= 0 ? -10 : 10), y: py - 16, 'font-size': 16, fill: '#c92a2a', 'font-weight': 700,
       'text-anchor': east >= 0 ? 'end' : 'start'}, label),
-    svg('text', {x: 20, y: H - 12, 'font-size': 15, fill: '#444'}, `offsets magnified ×${fmt(mag, 3)} (1 px = ${fmt(1 / mag, 3)} m)`), ...extra);
+    svg('text', {x: 12, y: H - 12, 'font-size': 14, fill: '#444'}, `offset magnified: 1 px = ${fmt(1 / mag, 3)} m`));
 }
 
 export default {
   id: 'earth', title: 'Earth',
   mount(main) {
-    main.replaceChildren();
-    main.append(examplePicker(['/v1/scenes/falling-object', '/v1/scenes/cannonball', '/v1/scenes/foucault'], BUILTIN, (ex) => {
+    put(main);
+    add(main, el('h2', {}, 'Earth: the rotating frame'), examplePicker(['/v1/scenes/falling-object', '/v1/scenes/cannonball', '/v1/scenes/foucault'], BUILTIN, (ex) => {
       const r = ex.request;
       if (ex.operation === '/v1/scenes/falling-object') { fh.input.value = r.height; fl.input.value = r.latitude_deg; fall(); fallS.form.scrollIntoView(); }
       if (ex.operation === '/v1/scenes/cannonball') { cs.input.value = r.speed; ce.input.value = r.elevation_deg;
@@ -66,18 +57,16 @@ export default {
     const fl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 32, unit: '°', id: 'fall-lat'});
     const fallS = section(main, 'Falling object', 'Dropped from rest, it lands east of the point below (and a little south). ' +
       'Without the Earth\'s rotation it would land exactly below.', [fh, fl], 'Drop', 'fall');
-    const fall = () => call(fallS, '/v1/scenes/falling-object', {height: val(fh.input), latitude_deg: val(fl.input)}, (a) => {
-      fallS.results.replaceChildren(el('dl', {class: 'nums'},
+    const fall = runner(fallS, '/v1/scenes/falling-object', () => ({height: val(fh.input), latitude_deg: val(fl.input)}), (a) => {
+      put(fallS.results, el('dl', {class: 'nums'},
         el('dt', {}, 'fall time'), num('fall-t', a.numerical.t, 's'),
         el('dt', {}, 'east (numerical)'), num('fall-east', a.numerical.east, 'm'),
         el('dt', {}, 'east (first order)'), num('fall-east-1', a.first_order.east, 'm'),
         el('dt', {}, 'south (numerical)'), num('fall-south', a.numerical.south, 'm'),
         el('dt', {}, 'numerical − first order'), num('fall-diff', a.difference.east, 'm')),
         el('p', {class: 'muted'}, a.first_order.formula || ''));
-      const mag = 250 / Math.max(Math.abs(a.numerical.east), 1e-9);
-      planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`, mag);
+      drawPlot(fallS.plot, () => planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`));
     });
-    fallS.form.addEventListener('submit', (e) => { e.preventDefault(); fall(); });
     // cannonball
     const cs = field({label: 'speed', pointer: '/speed', value: 500, unit: 'm/s', id: 'can-speed'});
     const ce = field({label: 'elevation', pointer: '/elevation_deg', value: 30, unit: '°', id: 'can-elev'});
@@ -86,9 +75,9 @@ export default {
     const canS = section(main, 'Cannonball', 'Fired over the rotating Earth it is deflected to the right in the northern ' +
       'hemisphere (to the left in the southern). The picture shows the landing point relative to where it would land on a ' +
       'non-rotating Earth.', [cs, ce, ca, cl], 'Fire', 'can');
-    const cannon = () => call(canS, '/v1/scenes/cannonball', {speed: val(cs.input), elevation_deg: val(ce.input),
-      azimuth_deg: val(ca.input), latitude_deg: val(cl.input)}, (a) => {
-      canS.results.replaceChildren(el('dl', {class: 'nums'},
+    const cannon = runner(canS, '/v1/scenes/cannonball', () => ({speed: val(cs.input), elevation_deg: val(ce.input),
+      azimuth_deg: val(ca.input), latitude_deg: val(cl.input)}), (a) => {
+      put(canS.results, el('dl', {class: 'nums'},
         el('dt', {}, 'time of flight'), num('can-t', a.numerical.t, 's'),
         el('dt', {}, 'range'), num('can-range', a.numerical.range, 'm'),
         el('dt', {}, 'deflection to the right'), num('can-right', a.numerical.right, 'm'),
@@ -97,10 +86,8 @@ export default {
       const g = a.parameters.g, v = a.parameters.speed, al = a.parameters.elevation_deg * Math.PI / 180;
       const az = a.parameters.azimuth_deg * Math.PI / 180, R0 = v * v * Math.sin(2 * al) / g;
       const de = a.numerical.east - R0 * Math.cos(az), dn = a.numerical.north - R0 * Math.sin(az);
-      const mag = 250 / Math.max(Math.hypot(de, dn), 1e-9);
-      planView(canS.plot, de, dn, `${fmt(a.numerical.right, 4)} m to the right`, mag);
+      drawPlot(canS.plot, () => planView(canS.plot, de, dn, `${fmt(a.numerical.right, 4)} m to the right`));
     });
-    canS.form.addEventListener('submit', (e) => { e.preventDefault(); cannon(); });
     // Foucault
     const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat'});
     const pL = field({label: 'length', pointer: '/length', value: 67, unit: 'm', id: 'fou-len'});
@@ -108,26 +95,42 @@ export default {
     const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings'});
     const fouS = section(main, 'Foucault pendulum', 'The swing plane turns clockwise (northern hemisphere) at ω sin λ. ' +
       'The trace is drawn from the measured rate and swing period, with the turn exaggerated so that it shows.', [pl, pL, pa, ps], 'Swing', 'fou');
-    const pend = () => call(fouS, '/v1/scenes/foucault', {latitude_deg: val(pl.input), length: val(pL.input),
-      release: {amplitude_deg: val(pa.input)}, swings: val(ps.input)}, (a) => {
+    const pend = runner(fouS, '/v1/scenes/foucault', () => ({latitude_deg: val(pl.input), length: val(pL.input),
+      release: {amplitude_deg: val(pa.input)}, swings: val(ps.input)}), (a) => {
       const p = a.precession;
-      fouS.results.replaceChildren(el('dl', {class: 'nums'},
+      // at the equator ω sin λ = 0: the swing plane does not turn (no full turn, nothing to exaggerate)
+      const still = p.first_order_rate === 0;
+      put(fouS.results, el('dl', {class: 'nums'},
         el('dt', {}, 'measured rate'), num('fou-rate', p.measured_rate_deg_per_hour, '°/h'),
         el('dt', {}, 'ω sin λ'), num('fou-first', p.first_order_rate * 180 / Math.PI * 3600, '°/h'),
-        el('dt', {}, 'full turn'), num('fou-hours', p.full_precession_hours, 'h'),
+        el('dt', {}, 'full turn'), still || p.full_precession_hours === null
+          ? el('dd', {id: 'fou-hours'}, 'none: no precession at the equator (ω sin λ = 0)')
+          : num('fou-hours', p.full_precession_hours, 'h'),
         el('dt', {}, 'swing period'), num('fou-period', a.swing.period, 's')));
-      // rosette: x along the swing, rotated by the precession; exaggerated so 12 swings turn ~60°
-      const W = 640, H = 400, root = fouS.plot; root.replaceChildren(); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
-      const n = 12, turn = Math.sign(p.measured_rate || -1) * Math.PI / 3, pts = [];
-      for (let i = 0; i <= n * 80; i++) {
-        const s = i / 80, ang = turn * s / n, x = Math.cos(Math.PI * s), y = 0.03 * Math.sin(Math.PI * s);
-        pts.push(`${(W / 2 + 170 * (x * Math.cos(ang) - y * Math.sin(ang))).toFixed(1)},${(H / 2 - 170 * (x * Math.sin(ang) + y * Math.cos(ang))).toFixed(1)}`);
-      }
-      root.append(svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#1864ab', 'stroke-width': 1.5}),
-        svg('text', {x: 12, y: H - 12, 'font-size': 15, fill: '#444'},
-          `real turn per swing ${fmt(Math.abs(p.measured_rate) * a.swing.period * 180 / Math.PI, 3)}°; drawn ×${fmt(Math.abs(turn / n) / Math.max(Math.abs(p.measured_rate) * a.swing.period, 1e-30), 3)}`));
+      const flat = a.swing.semi_major_axis > 0 ? Math.min(1, Math.abs(a.swing.semi_minor_axis / a.swing.semi_major_axis)) : 0;
+      drawPlot(fouS.plot, () => rosette(fouS.plot, p.measured_rate, a.swing.period, still, flat));
     });
-    fouS.form.addEventListener('submit', (e) => { e.preventDefault(); pend(); });
     fall(); cannon(); pend();
   },
 };
+
+// The swing traced from above over 12 swings, the plane turned at the measured
+// rate, each swing an ellipse of the measured axis ratio `flat` (minor/major).
+// The real turn per swing is tiny (~0.05°), so it is exaggerated to 60°
+// over the 12 swings and the factor is labelled; at the equator (still) there
+// is no turn and the trace is drawn to scale.
+function rosette(root, rate, period, still, flat) {
+  const [W, H] = plotSize(root, 640, 400); put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const n = 12, real = (rate || 0) * period * n; // rad over n swings, signed (negative: clockwise)
+  const turn = still || !real ? real : Math.sign(real) * Math.PI / 3, R = Math.min(W * 0.42, H * 0.4), pts = [];
+  for (let i = 0; i <= n * 80; i++) {
+    const s = i / 80, ang = turn * s / n, x = Math.cos(Math.PI * s), y = flat * Math.sin(Math.PI * s);
+    pts.push(`${(W / 2 + R * (x * Math.cos(ang) - y * Math.sin(ang))).toFixed(1)},${(H / 2 - R * (x * Math.sin(ang) + y * Math.cos(ang))).toFixed(1)}`);
+  }
+  const perSwing = Math.abs(real / n) * 180 / Math.PI;
+  add(root, svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#1864ab', 'stroke-width': 1.5}),
+    svg('text', {x: 12, y: H - 30, 'font-size': 14, fill: '#444'}, still ? 'no precession at the equator (ω sin λ = 0)'
+      : `real turn per swing ${fmt(perSwing, 3)}°`),
+    svg('text', {x: 12, y: H - 10, 'font-size': 14, fill: '#444'}, still || !real ? '12 swings, drawn to scale'
+      : `12 swings, turn drawn ×${fmt(Math.abs(turn / real), 3)}`));
+}

@@ -1,7 +1,7 @@
 // Inertia lab: build a body from parts (POST /v1/rigid/inertia), see the
 // tensor, the principal moments and the principal axes drawn over the body in
 // a small 3D view (drag or arrow keys to rotate).
-import {el, field, val, fmt, num, labLayout, runner, examplePicker} from '../lib.js';
+import {el, put, add, field, val, fmt, num, labLayout, runner, examplePicker} from '../lib.js';
 
 const SHAPES = {
   box: [['size', 'size a b c', 3, [1, 1, 1]]],
@@ -38,10 +38,13 @@ export default {
     const o = Array.isArray(state.req.origin) ? state.req.origin : [0, 0, 0];
     const ox = o.map((v, k) => field({label: 'origin ' + 'xyz'[k], pointer: `/origin/${k}`, value: v, unit: 'm', cls: 'small',
       id: `inertia-origin-${k}`}));
+    const w = Array.isArray(state.req.omega) ? state.req.omega : ['', '', ''];
+    const om = w.map((v, k) => field({label: 'ω' + 'xyz'[k], pointer: `/omega/${k}`, value: v, unit: 'rad/s', cls: 'small',
+      id: `inertia-omega-${k}`}));
     const rows = [];
     const renderParts = () => {
       rows.length = 0;
-      partsBox.replaceChildren(...state.req.bodies.map((b, i) => {
+      put(partsBox, state.req.bodies.map((b, i) => {
         const p = `/bodies/${i}`;
         const shape = field({label: `Part ${i + 1} shape`, pointer: `${p}/shape`, value: b.shape,
           options: [...new Set([...Object.keys(SHAPES), b.shape])].map(s => [s, s]), id: `inertia-shape-${i}`});
@@ -76,24 +79,31 @@ export default {
         return nb;
       });
       state.req.origin = originSel.input.value === 'point' ? ox.map(f => val(f.input)) : 'center_of_mass';
+      // ω is optional: all three empty leaves it out (then no L and T)
+      if (om.every(f => f.input.value.trim() === '')) delete state.req.omega; else state.req.omega = om.map(f => val(f.input));
     };
-    L.form.append(
+    add(L.form,
       examplePicker(['/v1/rigid/inertia'], BUILTIN, (ex) => {
-        state.req = structuredClone(ex.request); state.answer = null; this.mount(main);
-      }),
+        // the form is rebuilt for the example's parts; the picker keeps showing it
+        state.req = structuredClone(ex.request); state.answer = null; state.example = ex.id || ex.title;
+        this.mount(main);
+      }, {selected: state.example}),
       partsBox,
       el('div', {class: 'buttons'}, el('button', {type: 'button', class: 'secondary', onclick: () => {
         sync(); state.req.bodies.push({shape: 'point', mass: 1, position: [0, 0, 1]}); renderParts();
       }}, 'Add part')),
       el('fieldset', {}, el('legend', {}, 'Tensor about'), originSel.wrap, ox.map(f => f.wrap)),
+      el('fieldset', {}, el('legend', {}, 'Turning at ω (optional)'), om.map(f => f.wrap),
+        el('p', {class: 'muted'}, 'Give ω to see the angular momentum L = I ω and the kinetic energy ½ ω·L.')),
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'inertia-submit'}, 'Compute')));
     renderParts();
     const canvas = el('canvas', {class: 'plot', width: 640, height: 480, tabindex: 0, id: 'inertia-view',
       'aria-label': 'The body and its principal axes in 3D; arrow keys rotate the view'});
-    L.figure.append(el('h3', {}, 'Body and principal axes'), canvas,
+    add(L.figure, el('h3', {}, 'Body and principal axes'), canvas,
       el('p', {class: 'muted'}, 'Principal axes: ', el('span', {class: 'c1'}, 'e₁'), ', ', el('span', {class: 'c2'}, 'e₂'),
         ', ', el('span', {class: 'c3'}, 'e₃'), ' (lengths ∝ moments), from the origin of the tensor.'));
-    const draw = () => drawBody(canvas, state);
+    const draw = () => { fitCanvas(canvas); drawBody(canvas, state); };
+    if (typeof ResizeObserver === 'function') new ResizeObserver(() => draw()).observe(canvas);
     let drag = null;
     canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
     canvas.addEventListener('pointermove', (e) => {
@@ -109,17 +119,24 @@ export default {
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
-      L.results.replaceChildren(el('h3', {}, 'Answer'),
+      // round-off next to zero (a dumbbell's 7e-17 about its axis) reads 0; data-value keeps the number
+      const scale = Math.max(...m.map(Math.abs)), zero = (v, s) => (Math.abs(v) < 1e-12 * s ? 0 : v);
+      put(L.results, el('h3', {}, 'Answer'),
         el('dl', {class: 'nums'}, el('dt', {}, 'mass'), num('inertia-total-mass', a.mass, 'kg'),
           el('dt', {}, 'centre of mass'), el('dd', {}, a.center_of_mass.map(v => fmt(v)).join(', ') + ' m'),
           el('dt', {}, 'principal moments'), el('dd', {}, ''),
-          ...m.flatMap((v, k) => [el('dt', {}, `I${k + 1}`), num(`inertia-moment-${k}`, v, 'kg m²')])),
+          ...m.flatMap((v, k) => [el('dt', {}, `I${k + 1}`),
+            el('dd', {id: `inertia-moment-${k}`, 'data-value': String(v)}, fmt(zero(v, scale)) + ' kg m²')])),
         el('p', {}, 'Tensor about ', Array.isArray(a.origin) ? `(${a.origin.map(v => fmt(v)).join(', ')})` : 'the centre of mass', ' [kg m²]:'),
-        el('table', {id: 'inertia-tensor'}, a.tensor.map(r => el('tr', {}, r.map(v => el('td', {}, fmt(v)))))),
+        el('table', {id: 'inertia-tensor'}, a.tensor.map(r => el('tr', {}, r.map(v => el('td', {}, fmt(zero(v, scale))))))),
         el('p', {}, 'Principal axes (rows):'),
         el('table', {id: 'inertia-axes'}, a.principal.axes.map((r, k) => el('tr', {}, el('th', {class: 'c' + (k + 1)}, `e${k + 1}`),
           r.map(v => el('td', {}, fmt(Math.abs(v) < 1e-15 ? 0 : v)))))),
-        a.principal.degenerate ? el('p', {class: 'muted'}, 'Two or more moments are equal: any axes in that plane are principal.') : null);
+        a.principal.degenerate ? el('p', {class: 'muted'}, 'Two or more moments are equal: any axes in that plane are principal.') : null,
+        Array.isArray(a.angular_momentum) ? el('dl', {class: 'nums'},
+          el('dt', {}, 'ω'), el('dd', {}, `(${state.req.omega.map(v => fmt(v)).join(', ')}) rad/s`),
+          el('dt', {}, 'L = I ω'), el('dd', {id: 'inertia-L'}, `(${a.angular_momentum.map(v => fmt(v)).join(', ')}) kg m²/s`),
+          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null);
       draw();
     });
     draw();
@@ -128,6 +145,15 @@ export default {
 };
 
 // --- a tiny 3D wireframe renderer -------------------------------------------
+// The canvas' pixel size follows its laid-out size (× devicePixelRatio), so its
+// labels are drawn at their nominal CSS px size on a phone as on a desktop.
+function fitCanvas(canvas) {
+  const w = Math.round(canvas.getBoundingClientRect().width);
+  if (!w) return;
+  const dpr = window.devicePixelRatio || 1, W = Math.round(w * dpr), H = Math.round(w * 0.75 * dpr);
+  if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
+  canvas.dataset.px = String(dpr);
+}
 function project(p, st, W, H, s) {
   const [cy, sy, cp, sp] = [Math.cos(st.yaw), Math.sin(st.yaw), Math.cos(st.pitch), Math.sin(st.pitch)];
   const x1 = cy * p[0] - sy * p[1], y1 = sy * p[0] + cy * p[1];
@@ -144,7 +170,7 @@ function orient(b) {
     (z * x * (1 - c) - y * s) * v[0] + (z * y * (1 - c) + x * s) * v[1] + (c + z * z * (1 - c)) * v[2]];
 }
 function drawBody(canvas, st) {
-  const ctx = canvas.getContext('2d'), W = canvas.width, H = canvas.height;
+  const ctx = canvas.getContext('2d'), W = canvas.width, H = canvas.height, px = Number(canvas.dataset.px || W / 640);
   ctx.clearRect(0, 0, W, H);
   const bodies = st.req.bodies.filter(b => b.position && b.position.every(isFinite));
   const org = st.answer ? (Array.isArray(st.answer.origin) ? st.answer.origin : st.answer.center_of_mass) : [0, 0, 0];
@@ -153,11 +179,11 @@ function drawBody(canvas, st) {
     ...(b.size || [0]).map(v => v / 2 + 0.1), (b.length || 0) / 2, (b.height || 0) / 2);
   const s = Math.min(W, H) / (3.2 * ext);
   const P = (v) => project(v, st, W, H, s);
-  const line = (a, b, color, w = 2) => { const [p, q] = [P(a), P(b)]; ctx.strokeStyle = color; ctx.lineWidth = w;
+  const line = (a, b, color, w = 2) => { const [p, q] = [P(a), P(b)]; ctx.strokeStyle = color; ctx.lineWidth = w * px;
     ctx.beginPath(); ctx.moveTo(p[0], p[1]); ctx.lineTo(q[0], q[1]); ctx.stroke(); };
   // scene axes
   for (let k = 0; k < 3; k++) { const e = [0, 0, 0]; e[k] = ext * 1.2; line([0, 0, 0], e, '#aaa', 1);
-    const t = P(e); ctx.fillStyle = '#666'; ctx.font = '16px system-ui'; ctx.fillText('xyz'[k], t[0] + 4, t[1]); }
+    const t = P(e); ctx.fillStyle = '#666'; ctx.font = `${16 * px}px system-ui`; ctx.fillText('xyz'[k], t[0] + 4 * px, t[1]); }
   for (const b of bodies) {
     const R = orient(b), at = (v) => { const r = R(v); return [r[0] + b.position[0], r[1] + b.position[1], r[2] + b.position[2]]; };
     const col = '#333';
@@ -176,12 +202,12 @@ function drawBody(canvas, st) {
           const loc = pl === 'xy' ? [u, v, z0] : pl === 'xz' ? [u, 0, v] : [0, u, v];
           const q = P(at(loc)); i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1]);
         }
-        ctx.strokeStyle = col; ctx.lineWidth = 2; ctx.stroke();
+        ctx.strokeStyle = col; ctx.lineWidth = 2 * px; ctx.stroke();
       }
       if (b.shape === 'cylinder') for (const a of [0, Math.PI / 2, Math.PI, 1.5 * Math.PI])
         line(at([b.radius * Math.cos(a), b.radius * Math.sin(a), -b.height / 2]), at([b.radius * Math.cos(a), b.radius * Math.sin(a), b.height / 2]), col);
     }
-    const q = P(b.position); ctx.fillStyle = col; ctx.beginPath(); ctx.arc(q[0], q[1], b.shape === 'point' ? 7 : 3, 0, 7); ctx.fill();
+    const q = P(b.position); ctx.fillStyle = col; ctx.beginPath(); ctx.arc(q[0], q[1], (b.shape === 'point' ? 7 : 3) * px, 0, 7); ctx.fill();
   }
   if (st.answer) {
     const m = st.answer.principal.moments, mmax = Math.max(...m.map(Math.abs)) || 1;
@@ -190,9 +216,9 @@ function drawBody(canvas, st) {
       const L = ext * (0.5 + 0.9 * Math.abs(m[k]) / mmax);
       const tip = [org[0] + L * ax[0], org[1] + L * ax[1], org[2] + L * ax[2]];
       line([org[0] - L * ax[0], org[1] - L * ax[1], org[2] - L * ax[2]], tip, colors[k], 4);
-      const t = P(tip); ctx.fillStyle = colors[k]; ctx.font = 'bold 20px system-ui'; ctx.fillText('e' + (k + 1), t[0] + 5, t[1] - 5);
+      const t = P(tip); ctx.fillStyle = colors[k]; ctx.font = `bold ${20 * px}px system-ui`; ctx.fillText('e' + (k + 1), t[0] + 5 * px, t[1] - 5 * px);
     });
-    const c = P(st.answer.center_of_mass); ctx.strokeStyle = '#e67700'; ctx.lineWidth = 3;
-    ctx.beginPath(); ctx.arc(c[0], c[1], 9, 0, 7); ctx.stroke();
+    const c = P(st.answer.center_of_mass); ctx.strokeStyle = '#e67700'; ctx.lineWidth = 3 * px;
+    ctx.beginPath(); ctx.arc(c[0], c[1], 9 * px, 0, 7); ctx.stroke();
   }
 }

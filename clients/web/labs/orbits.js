@@ -1,9 +1,15 @@
 // Orbits lab: the Schwarzschild precession of Mercury and light bending by the
 // Sun (POST /v1/gr/geodesic, timelike and null).
-import {el, field, val, fmt, num, svg, labLayout, runner, examplePicker, linePlot, api, curlBox, showProblem, clearErrors} from '../lib.js';
+import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize} from '../lib.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
-  request: {M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593}, orbits: 3, samples: 5}}];
+  request: {M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593}, orbits: 3, samples: 5}},
+  {title: 'Starlight grazing the Sun: 1.75″', operation: '/v1/gr/geodesic',
+   request: {M: 'sun', kind: 'null', r0: 1e13, initial: {impact_parameter: 696340000}, samples: 200}}];
+// The forms hold the Sun's orbits (a, e) and rays past the Sun (b, r0).
+const fits = (ex) => ex.request.M === 'sun' && (ex.request.kind === 'null'
+  ? ex.request.initial && typeof ex.request.initial.impact_parameter === 'number'
+  : ex.request.initial && typeof ex.request.initial.semi_major_axis === 'number' && typeof ex.request.initial.eccentricity === 'number');
 
 export default {
   id: 'orbits', title: 'Orbits',
@@ -13,16 +19,22 @@ export default {
     const a = field({label: 'semi-major axis', pointer: '/initial/semi_major_axis', value: 57909050000, unit: 'm', id: 'orb-a'});
     const e = field({label: 'eccentricity', pointer: '/initial/eccentricity', value: 0.20563593, id: 'orb-e'});
     const n = field({label: 'orbits', pointer: '/orbits', value: 3, id: 'orb-n'});
-    L.form.append(examplePicker(['/v1/gr/geodesic'], BUILTIN, (ex) => {
-      if (ex.request.initial) { a.input.value = ex.request.initial.semi_major_axis; e.input.value = ex.request.initial.eccentricity; }
-      if (ex.request.orbits) n.input.value = ex.request.orbits; run();
-    }), a.wrap, e.wrap, n.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
+    add(L.form, examplePicker(['/v1/gr/geodesic'], BUILTIN, (ex) => {
+      const r = ex.request;
+      if (r.kind === 'null') { // a light ray: the light-bending form below
+        lb.input.value = r.initial.impact_parameter; if (typeof r.r0 === 'number') lr.input.value = r.r0;
+        lrun(); lf.scrollIntoView({block: 'nearest'}); return;
+      }
+      a.input.value = r.initial.semi_major_axis; e.input.value = r.initial.eccentricity;
+      if (r.orbits) n.input.value = r.orbits;
+      run();
+    }, {fits}), a.wrap, e.wrap, n.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
     const plot = svg('svg', {class: 'plot', id: 'orb-plot', role: 'img', 'aria-label': 'orbit'});
-    L.figure.append(el('h3', {}, 'The orbit'), plot);
+    add(L.figure, el('h3', {}, 'The orbit'), plot);
     const run = runner(L, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'timelike',
       initial: {semi_major_axis: val(a.input), eccentricity: val(e.input)}, orbits: val(n.input), samples: 600}), (r) => {
       const p = r.precession;
-      L.results.replaceChildren(el('dl', {class: 'nums'},
+      put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'advance per orbit (measured)'), num('orb-measured', p.measured_per_orbit, 'rad'),
         el('dt', {}, 'exact'), num('orb-exact', p.exact_per_orbit, 'rad'),
         el('dt', {}, '6πGM/(c²a(1−e²))'), num('orb-first', p.first_order_per_orbit, 'rad'),
@@ -37,36 +49,36 @@ export default {
     const lf = el('form', {novalidate: true, id: 'light-form', 'aria-label': 'Light bending inputs'});
     const lb = field({label: 'impact parameter b', pointer: '/initial/impact_parameter', value: 696340000, unit: 'm', id: 'light-b',
       help: 'the Sun\'s radius grazes it'});
-    const lprob = el('div', {class: 'problem', role: 'alert'}), lres = el('section', {class: 'results', 'aria-live': 'polite'});
+    const lr = field({label: 'start and end r0', pointer: '/r0', value: 1e13, unit: 'm', id: 'light-r0',
+      help: 'far from the Sun'});
+    add(lf, lb.wrap, lr.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'light-submit'}, 'Shine')));
+    const S = labSection(main, {title: 'Light bending', form: lf,
+      intro: 'Starlight passing the Sun at impact parameter b is deflected by 4GM/(c²b) to first order: 1.75″ at the limb (Eddington, 1919).'});
     const lplot = svg('svg', {class: 'plot', id: 'light-plot', role: 'img', 'aria-label': 'light ray bent by the Sun (exaggerated)'});
-    const lcurl = curlBox();
-    lf.append(lb.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'light-submit'}, 'Shine')));
-    main.append(el('h2', {}, 'Light bending'), el('p', {class: 'intro'},
-      'Starlight passing the Sun at impact parameter b is deflected by 4GM/(c²b) to first order: 1.75″ at the limb (Eddington, 1919).'),
-      el('div', {class: 'grid'}, el('div', {}, lf, lprob, lcurl.box), el('div', {}, lres, lplot)));
-    const lrun = async () => {
-      const body = {M: 'sun', kind: 'null', r0: 1e13, initial: {impact_parameter: val(lb.input)}, samples: 200};
-      lcurl.update('/v1/gr/geodesic', body);
-      const r = await api('/v1/gr/geodesic', body);
-      if (!r.ok) { showProblem(lf, lprob, r.status, r.body); lf.dataset.state = 'error'; return; }
-      clearErrors(lf, lprob); lf.dataset.state = 'done';
-      const d = r.body.deflection;
-      lres.replaceChildren(el('dl', {class: 'nums'},
+    add(S.figure, lplot);
+    const lrun = runner(S, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'null', r0: val(lr.input),
+      initial: {impact_parameter: val(lb.input)}, samples: 200}), (r) => {
+      const d = r.deflection;
+      put(S.results, el('dl', {class: 'nums'},
         el('dt', {}, 'deflection (measured)'), num('light-measured', d.arcsec.measured, '″'),
         el('dt', {}, 'exact'), num('light-exact', d.arcsec.exact, '″'),
         el('dt', {}, '4GM/(c²b)'), num('light-first', d.arcsec.first_order, '″'),
         el('dt', {}, 'closest approach'), num('light-rmin', d.closest_approach, 'm')));
-      // schematic: the ray's two asymptotes, the angle between them drawn ×(30°/deflection)
-      const W = 640, H = 300; lplot.replaceChildren(); lplot.setAttribute('viewBox', `0 0 ${W} ${H}`);
-      const shown = Math.PI / 6, cx = W / 2, cy = H / 2 + 30, y0 = cy - 40;
-      lplot.append(svg('circle', {cx, cy, r: 34, fill: '#f59f00'}),
-        svg('line', {x1: 20, y1: y0, x2: cx, y2: y0, stroke: '#1864ab', 'stroke-width': 3}),
-        svg('line', {x1: cx, y1: y0, x2: cx + 300 * Math.cos(shown), y2: y0 + 300 * Math.sin(shown), stroke: '#1864ab', 'stroke-width': 3}),
-        svg('line', {x1: cx, y1: y0, x2: W - 20, y2: y0, stroke: '#999', 'stroke-dasharray': '6 5'}),
-        svg('text', {x: cx + 120, y: y0 + 30, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, `δ = ${fmt(d.arcsec.measured, 4)}″`),
-        svg('text', {x: 14, y: H - 12, 'font-size': 14, fill: '#444'}, `angle drawn ×${fmt(shown / d.measured, 3)}`));
-    };
-    lf.addEventListener('submit', (e) => { e.preventDefault(); lrun(); });
+      drawPlot(lplot, () => rayPicture(lplot, d));
+    });
     lrun();
   },
 };
+
+// A schematic of the ray: its two asymptotes, the angle between them drawn 30°
+// (the real angle is ~1e-5 rad; the factor is labelled).
+function rayPicture(root, d) {
+  const [W, H] = plotSize(root, 640, 300); put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const k = W / 640, shown = Math.PI / 6, cx = W / 2, cy = H / 2 + 30 * k, y0 = cy - 40 * k, L = 300 * k;
+  add(root, svg('circle', {cx, cy, r: 34 * k, fill: '#f59f00'}),
+    svg('line', {x1: 12, y1: y0, x2: cx, y2: y0, stroke: '#1864ab', 'stroke-width': 3}),
+    svg('line', {x1: cx, y1: y0, x2: cx + L * Math.cos(shown), y2: y0 + L * Math.sin(shown), stroke: '#1864ab', 'stroke-width': 3}),
+    svg('line', {x1: cx, y1: y0, x2: W - 12, y2: y0, stroke: '#999', 'stroke-dasharray': '6 5'}),
+    svg('text', {x: cx + 90 * k + 10, y: y0 + 30, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, `δ = ${fmt(d.arcsec.measured, 4)}″`),
+    svg('text', {x: 12, y: H - 12, 'font-size': 14, fill: '#444'}, `angle drawn ×${fmt(shown / d.measured, 3)}`));
+}

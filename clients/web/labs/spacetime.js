@@ -1,13 +1,22 @@
 // Spacetime lab: a Minkowski diagram (events, light cone, the boosted axes
 // ct' and x' sliding with beta, the invariant hyperbola) from
 // POST /v1/relativity/boost, and the twin paradox from /v1/relativity/worldline.
-import {el, svg, field, val, fmt, num, labLayout, runner, examplePicker, showProblem, clearErrors, api, curlBox, linePlot} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot,
+        drawPlot, plotSize} from '../lib.js';
 
 const BUILTIN = [
   {title: 'Boost by β = 0.6: the event (ct, x) = (1, 0) → (1.25, −0.75)', operation: '/v1/relativity/boost',
    request: {vectors: [[1, 0, 0, 0], [1, 1, 0, 0], [2, 0.5, 0, 0]], velocity: {beta: [0.6, 0, 0]}}},
 ];
 const st = {events: '1, 0; 1, 1; 2, 0.5', beta: 0.6};
+const SLIDER_MAX = 0.99;
+
+// The events of a boost request: "vectors" is one 4-vector or a list of them.
+const eventsOf = (vectors) => (Array.isArray(vectors) && vectors.length && !Array.isArray(vectors[0]) ? [vectors] : vectors || []);
+// A worldline example the twin form can hold: out at β and back at −β over the same distance.
+const twinLike = (r) => r && Array.isArray(r.legs) && r.legs.length === 2 && r.legs.every(l =>
+  l.velocity && Array.isArray(l.velocity.beta) && typeof l.distance === 'number' && !l.velocity.beta[1] && !l.velocity.beta[2]) &&
+  r.legs[0].velocity.beta[0] === -r.legs[1].velocity.beta[0] && r.legs[0].distance === r.legs[1].distance;
 
 export default {
   id: 'spacetime', title: 'Spacetime',
@@ -16,92 +25,102 @@ export default {
       intro: 'Events (ct, x) seen from a frame moving with velocity β along x. The boosted axes ct′ and x′ close ' +
              'in on the light cone as β grows; every event stays on its hyperbola c²t² − x² = const.'});
     const ev = field({label: 'Events (ct, x; …)', pointer: '/vectors', value: st.events, type: 'text', id: 'st-events',
-      help: 'light-seconds; separate events with ;'});
+      help: 'ct and x in one unit of length (light-seconds, metres…); separate events with ;'});
     const beta = field({label: 'β = v/c', pointer: '/velocity/beta', value: st.beta, step: 0.01, id: 'st-beta'});
-    const slider = el('input', {type: 'range', min: -0.95, max: 0.95, step: 0.01, value: Math.max(-0.95, Math.min(0.95, st.beta)),
-      id: 'st-beta-slider', 'aria-label': 'β slider'});
-    L.form.append(examplePicker(['/v1/relativity/boost'], BUILTIN, (ex) => {
-      ev.input.value = ex.request.vectors.map(v => `${v[0]}, ${v[1]}`).join('; ');
-      if (ex.request.velocity && ex.request.velocity.beta) beta.input.value = ex.request.velocity.beta[0];
+    const clampB = (b) => Math.max(-SLIDER_MAX, Math.min(SLIDER_MAX, b));
+    const slider = el('input', {type: 'range', min: -SLIDER_MAX, max: SLIDER_MAX, step: 0.01, value: clampB(st.beta),
+      id: 'st-beta-slider', 'aria-label': 'β slider (moves the diagram)'});
+    const shown = el('output', {for: 'st-beta-slider', id: 'st-beta-shown'}, 'β = ' + fmt(st.beta));
+    add(L.form, examplePicker(['/v1/relativity/boost', '/v1/relativity/worldline'], BUILTIN, (ex) => {
+      if (ex.operation === '/v1/relativity/worldline') {
+        tb.input.value = ex.request.legs[0].velocity.beta[0]; td.input.value = ex.request.legs[0].distance;
+        trun(); tw.scrollIntoView({block: 'nearest'}); return;
+      }
+      ev.input.value = eventsOf(ex.request.vectors).map(v => `${v[0]}, ${v[1]}`).join('; ');
+      if (ex.request.velocity && ex.request.velocity.beta) setBeta(ex.request.velocity.beta[0]);
       run();
-    }), ev.wrap, beta.wrap, el('div', {class: 'field'}, slider),
-      el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'st-submit'}, 'Boost')));
+    }, {fits: (ex) => ex.operation !== '/v1/relativity/worldline' || (twinLike(ex.request) && ex.request.units === 'years')}),
+    ev.wrap, beta.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'st-submit'}, 'Boost')));
+    const setBeta = (b) => { beta.input.value = b; slider.value = clampB(b); shown.textContent = 'β = ' + fmt(b); };
     const parse = () => ev.input.value.split(';').map(s => s.trim()).filter(Boolean)
-      .map(s => { const [t, x] = s.split(',').map(Number); return [t, x, 0, 0]; });
+      .map(s => { const [t, x] = s.split(',').map(v => (v === undefined || v.trim() === '' ? NaN : Number(v))); return [t, x, 0, 0]; });
     const plot = svg('svg', {class: 'plot', id: 'st-diagram', role: 'img', 'aria-label': 'Minkowski diagram'});
-    L.figure.append(el('h3', {}, 'Minkowski diagram'), plot,
-      el('p', {class: 'muted'}, 'grey: light cone x = ±ct; ', el('span', {class: 'c3'}, 'blue: ct′ and x′ axes'),
-        '; ', el('span', {class: 'c1'}, 'red: events'), '; dashed: their hyperbolae'));
+    const tickNote = el('span', {id: 'st-ticks'});
+    // the slider sits right under the diagram it moves (on a phone too)
+    add(L.figure, el('h3', {}, 'Minkowski diagram'), plot,
+      el('div', {class: 'figure-control'}, el('label', {for: 'st-beta-slider'}, 'Drag β:'), slider, shown),
+      el('p', {class: 'muted'}, 'grey: light cone x = ±ct; ', el('span', {class: 'c3'}, 'blue: ct′ and x′ axes, dots evenly spaced ' +
+        'in the moving frame', tickNote), '; ', el('span', {class: 'c1'}, 'red: events'), '; dashed: their hyperbolae'));
     const run = runner(L, '/v1/relativity/boost', () => {
       st.events = ev.input.value; st.beta = val(beta.input);
       return {vectors: parse(), velocity: {beta: [val(beta.input), 0, 0]}};
     }, (a, body) => {
-      L.results.replaceChildren(el('h3', {}, 'Answer'),
+      put(L.results, el('h3', {}, 'Answer'),
         el('dl', {class: 'nums'}, el('dt', {}, 'γ'), num('st-gamma', a.gamma), el('dt', {}, 'rapidity'), num('st-rapidity', a.rapidity)),
         el('table', {id: 'st-table'}, el('tr', {}, ['event', 'ct', 'x', 'ct′', 'x′', 'c²t² − x²'].map(h => el('th', {}, h))),
           body.vectors.map((v, i) => el('tr', {}, el('td', {}, String(i + 1)), el('td', {}, fmt(v[0])), el('td', {}, fmt(v[1])),
             el('td', {id: `st-ctp-${i}`, 'data-value': a.vectors[i][0]}, fmt(a.vectors[i][0])),
             el('td', {id: `st-xp-${i}`, 'data-value': a.vectors[i][1]}, fmt(a.vectors[i][1])),
             el('td', {}, fmt(-a.invariants_after[i]))))));
-      diagram(plot, body.vectors, a.beta[0]);
+      drawPlot(plot, () => diagram(plot, body.vectors, a.beta[0], tickNote));
     });
-    slider.addEventListener('input', () => { beta.input.value = slider.value; run(); });
-    beta.input.addEventListener('change', () => { if (Math.abs(val(beta.input)) <= 0.95) slider.value = beta.input.value; });
+    slider.addEventListener('input', () => { beta.input.value = slider.value; shown.textContent = 'β = ' + fmt(Number(slider.value)); run(); });
+    beta.input.addEventListener('change', () => { const b = val(beta.input); if (isFinite(b)) { slider.value = clampB(b); shown.textContent = 'β = ' + fmt(b); } });
     run();
 
     // --- twins ---
     const tw = el('form', {novalidate: true, 'aria-label': 'Twin paradox inputs', id: 'twin-form'});
     const tb = field({label: 'β out and back', pointer: '/legs/0/velocity/beta /legs/1/velocity/beta', value: 0.8, step: 0.01, id: 'tw-beta'});
     const td = field({label: 'distance', pointer: '/legs/0/distance /legs/1/distance', value: 8, unit: 'ly', id: 'tw-dist'});
-    const tprob = el('div', {class: 'problem', role: 'alert'});
-    const tres = el('section', {class: 'results', 'aria-live': 'polite'});
+    add(tw, tb.wrap, td.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'tw-submit'}, 'Travel')));
+    const T = labSection(main, {title: 'The twin paradox', form: tw,
+      intro: 'One twin travels out at β and back; the other stays home. The traveller\'s proper time is shorter by the factor 1/γ.'});
     const tplot = svg('svg', {class: 'plot', id: 'tw-diagram', role: 'img', 'aria-label': 'Twin worldlines'});
-    const tcurl = curlBox();
-    tw.append(tb.wrap, td.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'tw-submit'}, 'Travel')));
-    main.append(el('h2', {}, 'The twin paradox'), el('p', {class: 'intro'},
-      'One twin travels out at β and back; the other stays home. The traveller\'s proper time is shorter by the factor 1/γ.'),
-      el('div', {class: 'grid'}, el('div', {}, tw, tprob, tcurl.box), el('div', {}, tres, tplot)));
-    const trun = async () => {
+    add(T.figure, tplot);
+    const trun = runner(T, '/v1/relativity/worldline', () => {
       const b = val(tb.input), d = val(td.input);
-      const body = {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
-      tcurl.update('/v1/relativity/worldline', body);
-      const r = await api('/v1/relativity/worldline', body);
-      if (!r.ok) { showProblem(tw, tprob, r.status, r.body); tw.dataset.state = 'error'; return; }
-      clearErrors(tw, tprob); tw.dataset.state = 'done';
-      const t = r.body.total;
-      tres.replaceChildren(el('dl', {class: 'nums'},
+      return {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
+    }, (r) => {
+      const t = r.total;
+      put(T.results, el('dl', {class: 'nums'},
         el('dt', {}, 'traveller ages'), num('tw-proper', t.proper_time, 'yr'),
         el('dt', {}, 'stay-at-home ages'), num('tw-home', t.stay_at_home_time, 'yr'),
         el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')));
-      const legs = r.body.legs;
-      const trav = [[0, 0], ...legs.map(l => [l.end[1], l.end[0]])];
+      const trav = [[0, 0], ...r.legs.map(l => [l.end[1], l.end[0]])];
       linePlot(tplot, [{points: [[0, 0], [0, t.coordinate_time]], label: `home: ${fmt(t.stay_at_home_time, 4)} yr`},
         {points: trav, label: `traveller: ${fmt(t.proper_time, 4)} yr`}], {xlabel: 'x [ly]', ylabel: 'ct [yr]', equal: true});
-    };
-    tw.addEventListener('submit', (e) => { e.preventDefault(); trun(); });
+    });
     trun();
   },
 };
 
-function diagram(root, vectors, b) {
-  const W = 640, H = 480, R = Math.max(2.5, ...vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])]).filter(isFinite)) * 1.2;
-  root.replaceChildren(); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+// A round step (1, 2 or 5 × 10^k) giving about n ticks over a length R.
+function niceStep(R, n) {
+  const raw = R / n, p = Math.pow(10, Math.floor(Math.log10(raw))), f = raw / p;
+  return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
+}
+
+function diagram(root, vectors, b, note) {
+  const [W, H] = plotSize(root, 640, 480), R = Math.max(2.5, ...vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])]).filter(isFinite)) * 1.2;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
   const s = (H / 2 - 10) / R, X = (x) => W / 2 + s * x, Y = (t) => H / 2 - s * t;
-  const ln = (x0, t0, x1, t1, a) => root.append(svg('line', {x1: X(x0), y1: Y(t0), x2: X(x1), y2: Y(t1), ...a}));
+  const ln = (x0, t0, x1, t1, a) => add(root, svg('line', {x1: X(x0), y1: Y(t0), x2: X(x1), y2: Y(t1), ...a}));
   ln(-R * 1.4, 0, R * 1.4, 0, {stroke: '#000', 'stroke-width': 1.5}); ln(0, -R, 0, R, {stroke: '#000', 'stroke-width': 1.5});
-  root.append(svg('text', {x: X(R * 1.3), y: Y(0) - 6, 'font-size': 18}, 'x'), svg('text', {x: X(0) + 6, y: Y(R) + 16, 'font-size': 18}, 'ct'));
+  add(root, svg('text', {x: Math.min(X(R * 1.3), W - 14), y: Y(0) - 6, 'font-size': 18}, 'x'), svg('text', {x: X(0) + 6, y: Y(R) + 16, 'font-size': 18}, 'ct'));
   ln(-R, -R, R, R, {stroke: '#999', 'stroke-width': 2}); ln(-R, R, R, -R, {stroke: '#999', 'stroke-width': 2});
   if (isFinite(b) && Math.abs(b) < 1) {
     ln(-R * b, -R, R * b, R, {stroke: '#1864ab', 'stroke-width': 3}); // ct' axis: x = beta ct
     ln(-R, -R * b, R, R * b, {stroke: '#1864ab', 'stroke-width': 3}); // x' axis: ct = beta x
-    root.append(svg('text', {x: X(R * b) + 6, y: Y(R) + 18, fill: '#1864ab', 'font-size': 18, 'font-weight': 700}, 'ct′'),
+    add(root, svg('text', {x: X(R * b) + 6, y: Y(R) + 18, fill: '#1864ab', 'font-size': 18, 'font-weight': 700}, 'ct′'),
       svg('text', {x: X(R) - 24, y: Y(R * b) - 8, fill: '#1864ab', 'font-size': 18, 'font-weight': 700}, 'x′'));
-    // tick marks of unit length on the boosted axes: (ct, x) = gamma (1, beta) and gamma (beta, 1)
-    const g = 1 / Math.sqrt(1 - b * b);
-    for (let k = -Math.floor(R); k <= Math.floor(R); k++) if (k) {
-      root.append(svg('circle', {cx: X(k * g * b), cy: Y(k * g), r: 3, fill: '#1864ab'}),
-        svg('circle', {cx: X(k * g), cy: Y(k * g * b), r: 3, fill: '#1864ab'}));
+    // tick marks every u (a round number of units) on the boosted axes, those inside the picture:
+    // (ct, x) = k u gamma (1, beta) on ct', k u gamma (beta, 1) on x'
+    const g = 1 / Math.sqrt(1 - b * b), u = niceStep(R, 3);
+    for (let k = -Math.ceil(R / u); k <= Math.ceil(R / u); k++) if (k && Math.abs(k * u * g) <= R) {
+      add(root, svg('circle', {cx: X(k * u * g * b), cy: Y(k * u * g), r: 3, fill: '#1864ab'}),
+        svg('circle', {cx: X(k * u * g), cy: Y(k * u * g * b), r: 3, fill: '#1864ab'}));
     }
+    if (note) note.textContent = ` (every ${fmt(u)} units)`;
   }
   vectors.forEach((v, i) => {
     const [t, x] = v; if (!isFinite(t) || !isFinite(x)) return;
@@ -112,9 +131,9 @@ function diagram(root, vectors, b) {
         const p = s2 > 0 ? [a * Math.sinh(u), Math.sign(t) * a * Math.cosh(u)] : [Math.sign(x) * a * Math.cosh(u), a * Math.sinh(u)];
         if (Math.abs(p[0]) <= R * 1.4 && Math.abs(p[1]) <= R) pts.push(`${X(p[0]).toFixed(1)},${Y(p[1]).toFixed(1)}`);
       }
-      root.append(svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#c92a2a', 'stroke-dasharray': '6 5', 'stroke-width': 1.5}));
+      add(root, svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#c92a2a', 'stroke-dasharray': '6 5', 'stroke-width': 1.5}));
     }
-    root.append(svg('circle', {cx: X(x), cy: Y(t), r: 7, fill: '#c92a2a'}),
+    add(root, svg('circle', {cx: X(x), cy: Y(t), r: 7, fill: '#c92a2a'}),
       svg('text', {x: X(x) + 9, y: Y(t) - 9, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, String(i + 1)));
   });
 }
