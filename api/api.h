@@ -92,8 +92,10 @@ struct json_t;
  * call's budget (deadline, steps, cancel). Pointers of every error are
  * prefixed with pointer_prefix ("/request"). Returns the HTTP status and sets
  * *out to a new reference: the answer (200) or the problem object. Returns -1
- * with *out = NULL if no POST operation has that path. */
-int api_run_operation(const struct api_call *outer, const char *path, const struct json_t *request,
+ * with *out = NULL if no POST operation has that path. The inner operation
+ * inherits the outer call's no_cost; an inner answer that must not be cached
+ * (a partial answer) sets outer->no_store. */
+int api_run_operation(struct api_call *outer, const char *path, const struct json_t *request,
                       const char *pointer_prefix, struct json_t **out);
 
 /* Fill resp with a problem+json of the given kind and detail (may be NULL).

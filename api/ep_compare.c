@@ -42,7 +42,7 @@ static const char compare_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
     "\"required\":[\"operation\",\"request\"],\"properties\":{"
     "\"operation\":{\"const\":\"/v1/trajectory\",\"description\":\"the operation compared\"},"
-    "\"request\":" API_TRAJ_REQUEST_SCHEMA ","
+    "\"request\":" API_TRAJ_REQUEST_SCHEMA_WITH(",\"cost\":" API_ENVELOPE_COST_SCHEMA) ","
     "\"runs\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":64,\"items\":"
     API_TRAJ_INTEGRATOR_SCHEMA ",\"description\":\"integrator blocks, one row each; give "
     "runs or sweep\"},"
@@ -55,9 +55,7 @@ static const char compare_schema[] =
         "every adaptive method (atol = rtol x the scene's scale)\"},"
         "\"dts\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"
         "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15},\"description\":\"dt of "
-        "every fixed-step method, s\"}") ","
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,\"description\":\"false omits every "
-    "cost block (byte-identical answers)\"}"
+        "every fixed-step method, s\"}")
     "}}";
 
 static const char compare_example[] =
