@@ -321,6 +321,34 @@ static void test_validation(void)
     }
 }
 
+/* The deadline, deterministically: already passed when the request starts,
+ * so the first run meets it at its first check and no run finished: still
+ * the 422, naming the run, with no step taken. (A partial answer under the
+ * deadline takes the same path as under the step budget, tested above; a
+ * deadline that passes between two runs is a matter of timing.) */
+static void test_deadline_nothing_finished(void)
+{
+    char *text = NULL;
+    json_t *body = json_pack("{s:s,s:o,s:[{s:s,s:f}],s:b}", "operation", "/v1/trajectory",
+                             "request", json_loads(kepler_request, JSON_DECODE_INT_AS_REAL, NULL),
+                             "runs", "method", "rk4", "dt", 0.01, "cost", 0);
+    text = json_dumps(body, JSON_COMPACT);
+    struct api_request req = {"POST", "/v1/compare", "application/json", text, strlen(text),
+                              10000000, mech_clock_seconds() - 1, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    CHECK_EQ_INT(resp.status, 422);
+    json_t *r = json_loads(resp.body ? resp.body : "", JSON_DECODE_INT_AS_REAL, NULL);
+    api_response_free(&resp);
+    free(text);
+    CHECK(!strcmp(json_string_value(json_object_get(r, "run")) ?: "", "/runs/0"));
+    json_t *prog = json_object_get(r, "progress");
+    CHECK(!strcmp(json_string_value(json_object_get(prog, "limit")) ?: "", "deadline"));
+    CHECK(json_is_number(json_object_get(prog, "steps")) && num(prog, "steps") == 0);
+    json_decref(r);
+    json_decref(body);
+}
+
 /* GET /v1/integrators: every registered method, the presets, and the method
  * lists of the request schema equal the registry's adaptive / fixed split. */
 static void test_integrators_catalog(void)
@@ -370,6 +398,7 @@ int main(void)
     test_exact_scene();
     test_numerical_reference();
     test_validation();
+    test_deadline_nothing_finished();
     test_integrators_catalog();
     TEST_MAIN_END();
 }
