@@ -78,7 +78,9 @@ void api_handle(const struct api_request *req, struct api_response *resp);
  * cost dropped; a 200 answer then carries etag = FNV-1a 64 of (build version,
  * path, canonical request: parsed JSON re-serialised compactly with sorted keys)
  * and Cache-Control "public, max-age=86400", and the same ETag always comes
- * with the same bytes. If If-None-Match matches that ETag (or is "*"), the
+ * with the same bytes; an answer that depends on the load or the deadline (a
+ * handler set call->no_store: a partial /v1/compare) gets neither ETag nor
+ * caching, only "no-store". If If-None-Match matches that ETag (or is "*"), the
  * answer is 304 with no body and the operation is not run. POST answers and
  * every problem from an operation carry Cache-Control "no-store". */
 void api_handle_ext(const struct api_request *req, const struct api_request_ext *ext,

@@ -112,7 +112,9 @@ static json_t *get_variant(size_t i, const char *opid)
     json_t *cc_hdr = json_pack("{s:s,s:{s:s}}", "description", "public, max-age=86400", "schema",
                                "type", "string");
     json_t *ok = json_pack("{s:s,s:{s:O,s:O},s:{s:{s:{s:s}}}}", "description",
-                           "The result, byte-identical to the POST answer without cost.",
+                           "The result, byte-identical to the POST answer without cost. An "
+                           "answer that depends on the load or the deadline (a partial "
+                           "/v1/compare) has no ETag and Cache-Control: no-store.",
                            "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr, "content",
                            "application/json", "schema", "type", "object");
     json_t *nm = json_pack("{s:s,s:{s:O,s:O}}", "description",
