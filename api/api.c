@@ -107,6 +107,11 @@ static int init_routes(void)
             return -1;
         }
         route_schemas[i] = s;
+        /* Every operation takes the envelope keys ("cost"): added here, once. */
+        if (api_route_schema_add_envelope(s, msg, sizeof msg)) {
+            snprintf(init_error, sizeof init_error, "%s: schema: %s", r->path, msg);
+            return -1;
+        }
         /* Checked and compiled once; requests are validated against the tree. */
         route_compiled[i] = api_schema_compile(s, msg, sizeof msg);
         if (!route_compiled[i]) {
@@ -291,9 +296,12 @@ static json_t *problem_json(enum api_problem kind, const char *detail, const jso
  * check, cost accounting. Returns the HTTP status and sets *out to the answer
  * or the problem object (new reference; NULL only when memory ran out). Error
  * pointers are prefixed with prefix ("" at top level). note gets the reason
- * of a 500 for the log. */
+ * of a 500 for the log. no_cost: an enclosing request (a batch) asked for no
+ * measured cost. *no_store is set to 1 when the answer depends on load or the
+ * deadline (never cache it), else left alone. */
 static int run_parsed(size_t ri, const struct api_request *req, const json_t *body,
-                      const char *prefix, json_t **out, char *note, size_t note_n)
+                      const char *prefix, int no_cost, json_t **out, char *note, size_t note_n,
+                      int *no_store)
 {
     const struct api_route *r = api_routes[ri];
     *out = NULL;
@@ -318,13 +326,16 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
     call.budget.max_steps = req->max_steps > 0 ? req->max_steps : 1;
     call.budget.deadline = isfinite(req->deadline) ? req->deadline : 0;
     call.budget.cancel = req->cancel;
-    int want_cost = !request_no_cost(req) && !json_is_false(json_object_get(body, "cost"));
+    int want_cost =
+        !no_cost && !request_no_cost(req) && !json_is_false(json_object_get(body, "cost"));
+    call.no_cost = !want_cost;
 
     /* The thread CPU clock is a system call, not a vDSO read: only for routes
      * that report it. */
     double cpu0 = r->reports_cost ? mech_cpu_seconds() : 0.0;
     json_t *result = r->fn(&call, body);
     double cpu = r->reports_cost ? mech_cpu_seconds() - cpu0 : 0.0;
+    if (call.no_store && no_store) *no_store = 1;
 
     if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
         call.problem = API_PROBLEM_NUMERIC;
@@ -376,7 +387,7 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
     return 200;
 }
 
-int api_run_operation(const struct api_call *outer, const char *path, const json_t *request,
+int api_run_operation(struct api_call *outer, const char *path, const json_t *request,
                       const char *pointer_prefix, json_t **out)
 {
     *out = NULL;
@@ -385,7 +396,7 @@ int api_run_operation(const struct api_call *outer, const char *path, const json
     char note[200];
     note[0] = '\0';
     int status = run_parsed((size_t)ri, outer->req, request, pointer_prefix ? pointer_prefix : "",
-                            out, note, sizeof note);
+                            outer->no_cost, out, note, sizeof note, &outer->no_store);
     if (!*out) {
         *out = problem_json(API_PROBLEM_INTERNAL, "internal error", NULL, NULL);
         status = 500;
@@ -432,7 +443,7 @@ static void run_body(size_t ri, const struct api_request *req, struct api_respon
     json_t *out = NULL;
     char note[200];
     note[0] = '\0';
-    int status = run_parsed(ri, req, body, "", &out, note, sizeof note);
+    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, NULL);
     json_decref(body);
     respond_outcome(resp, status, out, note);
 }
@@ -539,10 +550,11 @@ static void run_query(size_t ri, const struct api_request *req, const struct api
     json_t *out = NULL;
     char note[200];
     note[0] = '\0';
-    int status = run_parsed(ri, req, body, "", &out, note, sizeof note);
+    int no_store = 0; /* a partial answer (deadline, load) is never cached */
+    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &no_store);
     json_decref(body);
     respond_outcome(resp, status, out, note);
-    if (resp->status == 200 && etag[0]) {
+    if (resp->status == 200 && etag[0] && !no_store) {
         snprintf(resp->etag, sizeof resp->etag, "%s", etag);
         resp->cache_control = "public, max-age=86400";
     } else {

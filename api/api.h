@@ -78,7 +78,9 @@ void api_handle(const struct api_request *req, struct api_response *resp);
  * cost dropped; a 200 answer then carries etag = FNV-1a 64 of (build version,
  * path, canonical request: parsed JSON re-serialised compactly with sorted keys)
  * and Cache-Control "public, max-age=86400", and the same ETag always comes
- * with the same bytes. If If-None-Match matches that ETag (or is "*"), the
+ * with the same bytes; an answer that depends on the load or the deadline (a
+ * handler set call->no_store: a partial /v1/compare) gets neither ETag nor
+ * caching, only "no-store". If If-None-Match matches that ETag (or is "*"), the
  * answer is 304 with no body and the operation is not run. POST answers and
  * every problem from an operation carry Cache-Control "no-store". */
 void api_handle_ext(const struct api_request *req, const struct api_request_ext *ext,
@@ -92,8 +94,10 @@ struct json_t;
  * call's budget (deadline, steps, cancel). Pointers of every error are
  * prefixed with pointer_prefix ("/request"). Returns the HTTP status and sets
  * *out to a new reference: the answer (200) or the problem object. Returns -1
- * with *out = NULL if no POST operation has that path. */
-int api_run_operation(const struct api_call *outer, const char *path, const struct json_t *request,
+ * with *out = NULL if no POST operation has that path. The inner operation
+ * inherits the outer call's no_cost; an inner answer that must not be cached
+ * (a partial answer) sets outer->no_store. */
+int api_run_operation(struct api_call *outer, const char *path, const struct json_t *request,
                       const char *pointer_prefix, struct json_t **out);
 
 /* Fill resp with a problem+json of the given kind and detail (may be NULL).

@@ -23,7 +23,20 @@ static const char service_description[] =
     "unless a field says otherwise; 4-vectors are [ct, x, y, z] with metric (-,+,+,+); "
     "rotations are passive. Errors are application/problem+json (RFC 9457). Every POST "
     "operation also answers GET with ?request=<url-encoded JSON body>: the same bytes without "
-    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match.";
+    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match. "
+    "Every operation also takes the envelope keys (envelope in GET /v1, "
+    "#/components/schemas/Envelope in OpenAPI), whatever its own schema: \"cost\": false leaves "
+    "out measured time so that equal requests give byte-identical answers.";
+
+/* The envelope keys as a schema object (new reference, or NULL). */
+static json_t *envelope_schema(void)
+{
+    json_t *props = json_loads(api_envelope_properties, JSON_DECODE_INT_AS_REAL, NULL);
+    return json_pack("{s:s,s:s,s:o}", "type", "object", "description",
+                     "Keys every operation takes in its request body, in addition to the ones "
+                     "its own schema lists (each operation's schema shows them too).",
+                     "properties", props);
+}
 
 /* Server-level resources that are not operations of the route table. */
 static const struct {
@@ -71,8 +84,9 @@ static json_t *build_catalog(void)
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++)
         json_array_append_new(res, json_pack("{s:s,s:s,s:s}", "method", "GET", "path",
                                              resources[i].path, "summary", resources[i].summary));
-    return json_pack("{s:s,s:s,s:s,s:o,s:o}", "name", "mechd", "version", MECHD_VERSION,
-                     "description", service_description, "operations", ops, "resources", res);
+    return json_pack("{s:s,s:s,s:s,s:o,s:o,s:o}", "name", "mechd", "version", MECHD_VERSION,
+                     "description", service_description, "envelope", envelope_schema(),
+                     "operations", ops, "resources", res);
 }
 
 static json_t *problem_response(const char *description)
@@ -98,7 +112,9 @@ static json_t *get_variant(size_t i, const char *opid)
     json_t *cc_hdr = json_pack("{s:s,s:{s:s}}", "description", "public, max-age=86400", "schema",
                                "type", "string");
     json_t *ok = json_pack("{s:s,s:{s:O,s:O},s:{s:{s:{s:s}}}}", "description",
-                           "The result, byte-identical to the POST answer without cost.",
+                           "The result, byte-identical to the POST answer without cost. An "
+                           "answer that depends on the load or the deadline (a partial "
+                           "/v1/compare) has no ETag and Cache-Control: no-store.",
                            "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr, "content",
                            "application/json", "schema", "type", "object");
     json_t *nm = json_pack("{s:s,s:{s:O,s:O}}", "description",
@@ -171,10 +187,10 @@ static json_t *build_openapi(void)
         "type", "string", "title", "type", "string", "status", "type", "integer", "detail",
         "type", "string", "errors", "type", "array", "items", "type", "object", "properties",
         "pointer", "type", "string", "detail", "type", "string");
-    return json_pack("{s:s,s:{s:s,s:s,s:s},s:o,s:{s:{s:o}}}", "openapi", "3.1.0", "info",
+    return json_pack("{s:s,s:{s:s,s:s,s:s},s:o,s:{s:{s:o,s:o}}}", "openapi", "3.1.0", "info",
                      "title", "mechd", "version", MECHD_VERSION, "description",
                      service_description, "paths", paths, "components", "schemas", "Problem",
-                     problem_schema);
+                     problem_schema, "Envelope", envelope_schema());
 }
 
 int api_catalog_init(char *err, size_t n)

@@ -17,6 +17,17 @@
 #include "mech/status.h"
 #include "mech/vec.h"
 
+/* The envelope: request keys every operation takes, whatever its own schema
+ * (DESIGN.md). The route table adds them to the root of every POST route's
+ * schema (api_route_schema_add_envelope, routes.c), so a route's own schema
+ * must not declare them at its root; a schema that embeds another
+ * operation's request (/v1/compare's "request") uses these texts. */
+#define API_ENVELOPE_COST_SCHEMA                                                                \
+    "{\"type\":\"boolean\",\"default\":true,\"description\":\"envelope key, taken by "           \
+    "every operation: false leaves out the measured time (the cost block of the operations "    \
+    "that integrate), so equal requests give byte-identical answers; in a batch, false also "   \
+    "applies to every item\"}"
+
 struct api_call {
     const struct api_request *req;
     struct mech_budget budget;   /* from the request: max_steps, deadline, cancel */
@@ -25,6 +36,10 @@ struct api_call {
     char detail[256];            /* problem detail */
     json_t *extra;               /* extra members for the problem (e.g. progress), owned */
     int nonfinite;               /* set when a non-finite number was encoded */
+    int no_cost;                 /* the request asked for no measured cost ("cost": false,
+                                    or GET ?request=); inner operations inherit it */
+    int no_store;                /* the answer depends on load or the deadline (e.g. a
+                                    partial /v1/compare): never cache it, no ETag */
 };
 
 /* Handler: returns a new reference to the result object, or NULL after

@@ -17,11 +17,16 @@
  *
  * Budget: ONE step budget and deadline (the request's) shared by the
  * reference run and all runs in order; each run gets what the previous ones
- * left. A run that exhausts it fails the whole request with
- * compute-budget-exceeded naming the run (detail and "run" pointer). A run
- * that fails numerically (an unstable step, a dt that does not resolve a
- * close approach) or whose method does not apply to the scene (boris with
- * drag) is kept as a row with "status": "failed" and the reason.
+ * left. When a run exhausts it, the runs that finished are kept: the answer
+ * is 200 with "partial": true, the run that was stopped and every later one
+ * being a row {"status": "not_run", "reason": ...} (the stopped one with its
+ * progress). Such an answer depends on the load, so it is marked never to be
+ * cached (call->no_store). Only when no run finished, or the reference run
+ * itself ran out, is it compute-budget-exceeded (422) naming the run, with
+ * the steps the whole request took. A run that fails numerically (an
+ * unstable step, a dt that does not resolve a close approach) or whose method
+ * does not apply to the scene (boris with drag) is kept as a row with
+ * "status": "failed" and the reason.
  */
 #include <math.h>
 #include <stdio.h>
@@ -42,7 +47,7 @@ static const char compare_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
     "\"required\":[\"operation\",\"request\"],\"properties\":{"
     "\"operation\":{\"const\":\"/v1/trajectory\",\"description\":\"the operation compared\"},"
-    "\"request\":" API_TRAJ_REQUEST_SCHEMA ","
+    "\"request\":" API_TRAJ_REQUEST_SCHEMA_WITH(",\"cost\":" API_ENVELOPE_COST_SCHEMA) ","
     "\"runs\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":64,\"items\":"
     API_TRAJ_INTEGRATOR_SCHEMA ",\"description\":\"integrator blocks, one row each; give "
     "runs or sweep\"},"
@@ -55,9 +60,7 @@ static const char compare_schema[] =
         "every adaptive method (atol = rtol x the scene's scale)\"},"
         "\"dts\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"
         "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15},\"description\":\"dt of "
-        "every fixed-step method, s\"}") ","
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,\"description\":\"false omits every "
-    "cost block (byte-identical answers)\"}"
+        "every fixed-step method, s\"}")
     "}}";
 
 static const char compare_example[] =
@@ -81,9 +84,14 @@ static const char compare_description[] =
     "evaluations; the CPU seconds of row i are cost.runs[i].cpu_seconds (measured times "
     "live only under cost, so the rest is byte-identical; \"cost\": false drops them). "
     "One step budget and deadline cover the reference run "
-    "and all runs; a run that exhausts it fails the request (compute-budget-exceeded naming "
-    "the run); a run that fails numerically or whose method does not apply is a row with "
-    "status failed. The numbers equal those of /v1/trajectory with the same settings.";
+    "and all runs, in order. When they run out, the runs that finished are answered (200) "
+    "with \"partial\": true, and the run that was stopped and every later one are rows "
+    "{\"status\": \"not_run\", \"reason\": ...} (the stopped one with its progress); a "
+    "partial answer is never cached (no ETag on GET). Only when no run finished, or the "
+    "reference run itself ran out, is the answer compute-budget-exceeded (422, naming the run, "
+    "progress.steps counting every step of the request). A run that fails numerically or whose "
+    "method does not apply is a row with status failed. \"partial\" is false when every run "
+    "ran. The numbers equal those of /v1/trajectory with the same settings.";
 
 struct run_spec {
     const json_t *block; /* borrowed from the body or owned by `owned` */
@@ -110,7 +118,7 @@ static enum mech_status run_traj(struct api_traj_request *rq, struct mech_budget
 
 /* Fail the whole request for run k (or the reference run, k < 0). */
 static json_t *fail_run(struct api_call *c, enum mech_status st, const struct mech_error *e,
-                        long k, const char *pointer)
+                        long k, const char *pointer, long total_steps)
 {
     struct mech_error e2 = *e;
     /* Parameters of the integrator block belong to the run, others to the
@@ -128,11 +136,68 @@ static json_t *fail_run(struct api_call *c, enum mech_status st, const struct me
         snprintf(e2.text, sizeof e2.text, "reference run: %.170s", e->text);
     }
     api_call_fail_core(c, st, &e2, prefix);
-    if (k >= 0 && (st == MECH_EBUDGET || st == MECH_EDEADLINE)) {
+    if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
         if (!c->extra) c->extra = json_object();
-        if (c->extra) json_object_set_new_nocheck(c->extra, "run", json_string(pointer));
+        if (c->extra && k >= 0) json_object_set_new_nocheck(c->extra, "run", json_string(pointer));
+        /* progress.steps: every step of the request (the reference and the
+         * runs before this one too), not only those of the run that stopped,
+         * which may be 0 when the deadline had passed as it started. */
+        json_t *prog = c->extra ? json_object_get(c->extra, "progress") : NULL;
+        if (prog) {
+            json_object_set_new_nocheck(prog, "run_steps", json_integer(e->progress.steps));
+            json_object_set_new_nocheck(prog, "steps", json_integer(total_steps));
+        }
     }
     return NULL;
+}
+
+/* The reason a run was not run to its end, into buf: the budget that ran out
+ * during run k (its pointer); stop_text: the core's words when run k is the
+ * one described, NULL for a later run. */
+static void not_run_reason(char *buf, size_t n, enum mech_status st, const struct api_call *c,
+                           size_t k, const char *pointer, const char *stop_text)
+{
+    char what[96];
+    if (st == MECH_EDEADLINE)
+        snprintf(what, sizeof what, "the request's deadline passed");
+    else
+        snprintf(what, sizeof what, "the shared step budget of %ld steps ran out", c->budget.max_steps);
+    if (stop_text)
+        snprintf(buf, n, "stopped: %s during this run (%.150s)", what, stop_text);
+    else
+        snprintf(buf, n, "not started: %s during run %zu (%s)", what, k, pointer);
+}
+
+/* After run k ran out of budget (st, e; cpu its measured time): append its
+ * row (already holding its settings; consumed) as not run with its progress,
+ * then a not-run row for every later run, with the cost entries that keep
+ * cost.runs aligned with the rows. Returns 0, or -1 if memory ran out. */
+static int mark_not_run(struct api_call *c, json_t *rows, json_t *row, json_t *cost_runs,
+                        const struct run_spec *specs, size_t k, size_t n, enum mech_status st,
+                        const struct mech_error *e, double cpu)
+{
+    char reason[320];
+    not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, e->text);
+    json_object_set_new_nocheck(row, "status", json_string("not_run"));
+    json_object_set_new_nocheck(row, "reason", json_string(reason));
+    /* t_reached only when it ran: a fixed-step run refused up front reports
+     * how far the budget would have reached, which it did not. */
+    json_t *prog = json_pack("{s:I}", "steps", (json_int_t)e->progress.steps);
+    if (prog && e->progress.steps > 0 && isfinite(e->progress.t_reached))
+        json_object_set_new_nocheck(prog, "t_reached", json_real(e->progress.t_reached));
+    if (prog && isfinite(e->progress.t_target))
+        json_object_set_new_nocheck(prog, "t_target", json_real(e->progress.t_target));
+    json_object_set_new_nocheck(row, "progress", prog);
+    json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", cpu));
+    if (!row || json_array_append_new(rows, row)) return -1;
+    not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, NULL);
+    for (size_t j = k + 1; j < n; j++) {
+        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", specs[j].block, "status", "not_run",
+                              "reason", reason);
+        json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", 0.0));
+        if (!r || json_array_append_new(rows, r)) return -1;
+    }
+    return 0;
 }
 
 static json_t *compare_op(struct api_call *c, const json_t *body)
@@ -205,6 +270,17 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         }
     }
 
+    /* Every run's block is checked before anything runs: a run that the
+     * budget leaves not run must still be a valid one. */
+    for (size_t k = 0; k < n; k++) {
+        struct api_traj_request rq = base;
+        api_traj_request_fix(&rq);
+        if (!api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer)) {
+            json_decref(owned);
+            return NULL;
+        }
+    }
+
     const size_t ns = base.p.samples;
     struct mech_vec3 *buf = malloc(4 * ns * sizeof *buf);
     if (!buf) {
@@ -241,7 +317,7 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         struct mech_budget b = c->budget;
         enum mech_status st = run_traj(&rq, &b, ref_pos, ref_vel, &r, &e, &cpu);
         if (st != MECH_OK) {
-            fail_run(c, st, &e, -1, "");
+            fail_run(c, st, &e, -1, "", (long)e.progress.steps);
             goto done;
         }
         used += r.total_steps;
@@ -259,6 +335,8 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
 
     /* ---- the runs ---- */
     json_t *rows = json_array();
+    size_t finished = 0; /* rows with status ok or failed */
+    int partial = 0;
     for (size_t k = 0; rows && k < n; k++) {
         struct api_traj_request rq = base;
         api_traj_request_fix(&rq);
@@ -292,13 +370,26 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         const int row_failure =
             st == MECH_ENUMERIC ||
             ((st == MECH_EINVAL || st == MECH_EDOMAIN) && !strncmp(e.param, "integrator", 10));
-        if (st != MECH_OK && !row_failure) {
+        const int out_of_budget = st == MECH_EBUDGET || st == MECH_EDEADLINE;
+        if (st != MECH_OK && !row_failure && !(out_of_budget && finished > 0)) {
             json_decref(row);
             json_decref(rows);
             rows = NULL;
-            fail_run(c, st, &e, (long)k, specs[k].pointer);
+            fail_run(c, st, &e, (long)k, specs[k].pointer, used);
             goto done;
         }
+        if (out_of_budget) {
+            /* Keep the finished runs: this one and the rest are not run. */
+            if (mark_not_run(c, rows, row, cost_runs, specs, k, n, st, &e, cpu)) {
+                json_decref(rows);
+                rows = NULL;
+                api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+                goto done;
+            }
+            partial = 1;
+            break;
+        }
+        finished++;
         if (st != MECH_OK) {
             json_object_set_new_nocheck(row, "status", json_string("failed"));
             json_object_set_new_nocheck(row, "problem", json_string(mech_status_name(st)));
@@ -371,8 +462,11 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
         json_object_set_new_nocheck(res, "reference", jref);
         jref = NULL;
+        json_object_set_new_nocheck(res, "partial", json_boolean(partial));
         json_object_set_new_nocheck(res, "runs", rows);
         json_object_set_new_nocheck(res, "total_steps", json_integer(used));
+        /* depends on the load and the deadline: never cached */
+        if (partial) c->no_store = 1;
         /* the framework adds cost.cpu_seconds (the whole request) and drops
          * the block for "cost": false */
         json_t *jc = json_object();

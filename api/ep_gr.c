@@ -469,8 +469,7 @@ static const char geo_schema[] =
     "\"default\":1e-3,\"description\":\"stop with a numerical-failure error when the "
     "constraint g(u,u) = -1 (0 for light) drifts by more than this, relative to the size of "
     "its terms\"},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
-    "\"cost\":{\"type\":\"boolean\",\"default\":true}"
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA
     "}}";
 /* clang-format on */
 

@@ -70,7 +70,6 @@ static const double H_PI = 3.14159265358979323846;
     "]}"
 #define H_Q "\"q\":" H_ARR("1", "3", H_NUM("-1e15", "1e15", "")) 
 #define H_P "\"p\":" H_ARR("1", "3", H_NUM("-1e50", "1e50", ""))
-#define H_COST "\"cost\":{\"type\":\"boolean\",\"default\":true,\"description\":\"false omits the cost block (byte-identical answers)\"}"
 #define H_TEND "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"}"
 /* clang-format on */
 
@@ -79,7 +78,7 @@ static const char flow_schema[] =
     "\"required\":[\"system\",\"q\",\"p\",\"t_end\"],\"properties\":{"
     "\"system\":" H_SYSTEM_SCHEMA "," H_Q "," H_P "," H_TEND ","
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," H_COST "}}";
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "}}";
 
 static const char liouville_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
@@ -107,8 +106,8 @@ static const char liouville_schema[] =
     "side; default gauss4 (dt = time scale/20) and rk4 (dt = time scale/2)\"},"
     "\"tol\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.01,\"default\":1e-12,"
     "\"description\":\"relative quadrature bound on the area\"},"
-    "\"max_intervals\":{\"type\":\"integer\",\"minimum\":4,\"maximum\":4096,\"default\":256},"
-    H_COST "}}";
+    "\"max_intervals\":{\"type\":\"integer\",\"minimum\":4,\"maximum\":4096,\"default\":256}"
+    "}}";
 
 static const char poincare_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
@@ -125,7 +124,7 @@ static const char poincare_schema[] =
     "]}},"
     "\"t_max\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s, per orbit\"},"
     "\"max_crossings\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":10000,\"default\":200},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," H_COST "}}";
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "}}";
 
 /* ---- the system ---------------------------------------------------------------- */
 

@@ -53,9 +53,7 @@ static const char schema[] =
     "\"description\":\"optional constant torque; default none (torque-free)\"},"
     "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,"
-    "\"description\":\"false omits the cost block (byte-identical answers)\"}"
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA
     "}}";
 
 static const char description[] =

@@ -76,9 +76,7 @@ static const char fc_schema[] =
     "(relative to W) and the period; fictitious auto leaves out a term whose estimated effect "
     "is below target/10\"},"
     "\"error_estimate\":{\"type\":\"boolean\",\"default\":true,\"description\":\"run "
-    "again with half the steps per swing and report the Richardson estimate of the error\"},"
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,"
-    "\"description\":\"false omits the cost block (byte-identical answers)\"}"
+    "again with half the steps per swing and report the Richardson estimate of the error\"}"
     "}}";
 /* clang-format on */
 

@@ -37,8 +37,7 @@ static const double ep_pi = 3.14159265358979323846;
     "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
     "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \
     "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"                     \
-    "\"description\":\"relative error on positions and velocities (not with accuracy)\"},"         \
-    "\"cost\":{\"type\":\"boolean\",\"default\":true}"
+    "\"description\":\"relative error on positions and velocities (not with accuracy)\"}"
 
 /* The relative accuracy asked for; 0 after recording an error. */
 static double scene_target(struct api_call *c, const json_t *body)

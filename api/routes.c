@@ -1,7 +1,10 @@
 /* routes.c — the route table: every operation mechd serves. The catalog
  * (GET /v1), the OpenAPI document and the README's endpoint table all come
- * from these entries. Add a route here and nowhere else. */
+ * from these entries. Add a route here and nowhere else. The envelope keys
+ * (api_envelope_properties) are added here to every POST route's schema. */
 #include "routes.h"
+
+#include <stdio.h>
 
 extern const struct api_route api_route_rigid_inertia;
 extern const struct api_route api_route_relativity_boost;
@@ -81,3 +84,36 @@ const struct api_route *const api_routes[] = {
     &api_route_examples,
 };
 const size_t api_route_count = sizeof api_routes / sizeof api_routes[0];
+
+const char api_envelope_properties[] = "{\"cost\":" API_ENVELOPE_COST_SCHEMA "}";
+
+int api_route_schema_add_envelope(json_t *schema, char *msg, size_t n)
+{
+    json_t *props = json_object_get(schema, "properties");
+    if (!json_is_object(props)) {
+        snprintf(msg, n, "the root schema has no properties to add the envelope keys to");
+        return -1;
+    }
+    json_t *env = json_loads(api_envelope_properties, JSON_DECODE_INT_AS_REAL, NULL);
+    if (!env) {
+        snprintf(msg, n, "out of memory (or a broken envelope text)");
+        return -1;
+    }
+    const char *key;
+    json_t *val;
+    json_object_foreach(env, key, val) {
+        if (json_object_get(props, key)) {
+            snprintf(msg, n, "declares the envelope key '%s' at its root; the route table adds it",
+                     key);
+            json_decref(env);
+            return -1;
+        }
+        if (json_object_set(props, key, val)) {
+            snprintf(msg, n, "out of memory");
+            json_decref(env);
+            return -1;
+        }
+    }
+    json_decref(env);
+    return 0;
+}

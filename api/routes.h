@@ -4,9 +4,21 @@
 
 #include <stddef.h>
 
+#include <jansson.h>
+
 #include "endpoint.h"
 
 extern const struct api_route *const api_routes[];
 extern const size_t api_route_count;
+
+/* The envelope keys (JSON text of a "properties" object: {"cost": {...}}),
+ * documented once in the catalog and the OpenAPI document. */
+extern const char api_envelope_properties[];
+
+/* Add the envelope keys to the root "properties" of a POST route's parsed
+ * schema (modified in place; jansson's allocator). Returns 0, or -1 with a
+ * message in msg (n bytes) when the root is not an object schema with
+ * properties, declares an envelope key itself, or memory ran out. */
+int api_route_schema_add_envelope(json_t *schema, char *msg, size_t n);
 
 #endif

@@ -3,9 +3,10 @@
  * validation of a request against that tree.
  *
  * Every message, pointer and the order of the errors are those of the
- * interpreter this replaced (it walked the schema's jansson objects on every
- * request); tests/api/test_schema.c keeps that interpreter as its reference
- * and compares the two over every route schema. */
+ * reference interpreter in tests/api/test_schema.c (it walks the schema's
+ * jansson objects on every call, the way mechd validated before schemas were
+ * compiled, and chooses the branch of a oneOf that matched none by the same
+ * rules, written again), which compares the two over every route schema. */
 #include "schema.h"
 #include "respond.h"
 
@@ -27,6 +28,7 @@ enum {
     T_BOOLEAN = 1u << 5,
     T_NULL = 1u << 6,
 };
+#define T_ANY (T_OBJECT | T_ARRAY | T_STRING | T_NUMBER | T_BOOLEAN | T_NULL)
 
 /* Which numeric keywords a node has. */
 enum {
@@ -56,10 +58,24 @@ struct sdisc {
     const json_t *value;
 };
 
+/* A property name (borrowed from the schema) and its length. */
+struct skey {
+    const char *key;
+    size_t len;
+};
+
+/* One oneOf branch and what tells it apart from its siblings when an instance
+ * matches none of them (see choose_branch): its const properties, the JSON
+ * types it admits and those of its items, and every key it knows (its own
+ * properties and, recursively, those of its own oneOf branches). */
 struct sbranch {
     struct snode *node;
     struct sdisc *disc;
     size_t ndisc;
+    unsigned tmask;    /* coarse T_* (integer counted as number); T_ANY if untyped */
+    unsigned imask;    /* the same for its items; T_ANY without items */
+    struct skey *keys;
+    size_t nkeys;
 };
 
 /* One compiled schema object. Texts are formatted at compile time exactly as
@@ -331,40 +347,311 @@ static int discriminator_mismatch(const struct sbranch *b, const json_t *inst)
     return 0;
 }
 
+/* Short text form of a value for a message, into buf (n bytes, truncated);
+ * returns buf. */
+static char *value_text_tmp(const json_t *j, char *buf, size_t n)
+{
+    /* json_dumps allocates with jansson's allocator (during a request, the
+     * per-thread arena of json_arena.c): free it with jansson's free. */
+    json_malloc_t m;
+    json_free_t f;
+    json_get_alloc_funcs(&m, &f);
+    char *t = json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(15));
+    snprintf(buf, n, "%s", t ? t : "?");
+    if (t) f(t);
+    return buf;
+}
+
+/* The coarse type bit of an instance (an integer counts as a number). */
+static unsigned coarse_type(const json_t *j)
+{
+    switch (json_typeof(j)) {
+    case JSON_OBJECT: return T_OBJECT;
+    case JSON_ARRAY: return T_ARRAY;
+    case JSON_STRING: return T_STRING;
+    case JSON_INTEGER:
+    case JSON_REAL: return T_NUMBER;
+    case JSON_TRUE:
+    case JSON_FALSE: return T_BOOLEAN;
+    case JSON_NULL: return T_NULL;
+    }
+    return 0;
+}
+
+static int branch_has_key(const struct sbranch *b, const char *key, size_t len)
+{
+    for (size_t i = 0; i < b->nkeys; i++)
+        if (b->keys[i].len == len && !memcmp(b->keys[i].key, key, len)) return 1;
+    return 0;
+}
+
+/* The const that branch b requires of property key, or NULL. */
+static const json_t *branch_const(const struct sbranch *b, const char *key)
+{
+    for (size_t i = 0; i < b->ndisc; i++)
+        if (!strcmp(b->disc[i].key, key)) return b->disc[i].value;
+    return NULL;
+}
+
+/* What a branch's JSON type is, for "must be X or Y": its type message
+ * without "must be ", its const, or its enum. */
+static void branch_type_text(const struct sbranch *b, char *buf, size_t n)
+{
+    const struct snode *s = b->node;
+    if (s->has_type) snprintf(buf, n, "%s", s->type_msg + strlen("must be "));
+    else if (s->cnst) snprintf(buf, n, "%s", s->cnst_text);
+    else if (s->enm) snprintf(buf, n, "one of %s", s->enum_text);
+    else snprintf(buf, n, "any value");
+}
+
+/* A branch's required keys as "{a, b}" (a key whose value is a const shown
+ * with it: {type "spring", k}); a branch that requires none by its type. */
+static void branch_form_text(const struct sbranch *b, char *buf, size_t n)
+{
+    const struct snode *s = b->node;
+    if (!s->nrequired) {
+        branch_type_text(b, buf, n);
+        return;
+    }
+    size_t len = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < s->nrequired && len + 1 < n; i++) {
+        const json_t *c = branch_const(b, s->required[i]);
+        const struct snode *ps = prop_find(s, s->required[i], strlen(s->required[i]));
+        snprintf(buf + len, n - len, "%s%s%s%s", i ? ", " : "{", s->required[i], c ? " " : "",
+                 c && ps ? ps->cnst_text : "");
+        len = strlen(buf);
+    }
+    if (len + 1 < n) snprintf(buf + len, n - len, "}");
+}
+
+/* Append to buf (capacity n, NUL-terminated) with a separator. */
+static void text_add(char *buf, size_t n, const char *sep, const char *t)
+{
+    size_t len = strlen(buf);
+    if (len + 1 < n) snprintf(buf + len, n - len, "%s%s", len ? sep : "", t);
+}
+
+/* The instance matches no branch: choose the one whose errors to report, or
+ * report what is wrong with the choice itself. cand[] (nb entries) starts as
+ * every branch. In order, each step narrowing the candidates only when it
+ * tells them apart:
+ *  1. the JSON type: the branches that admit the instance's type; none ->
+ *     "must be <each branch's type> or ..., got <type>";
+ *  2. for an object, each discriminator key (a property some candidates
+ *     require to be a const) present in the instance: the candidates whose
+ *     const it equals (or that have none there); none -> at /key
+ *     "unknown key <value>; expected one of <consts>";
+ *  3. for an array, the JSON type of its items: the candidates whose items
+ *     admit the most of them;
+ *  4. for an object, its keys that some candidates know and others do not:
+ *     the candidates that know the most of them; when it has none: a
+ *     discriminator key every candidate has is missing -> at /key "is
+ *     required: one of <consts>", else "matches none of the allowed forms;
+ *     give one of {required keys}, ...";
+ *  5. the candidate with the fewest errors (the first on a tie).
+ * Returns the branch index to validate, or -1 after reporting the error. */
+static long choose_branch(struct vctx *v, const struct snode *s, const json_t *inst,
+                          const char *ptr, size_t plen, unsigned char *cand)
+{
+    const size_t nb = s->noneof;
+    size_t nc = nb;
+    char text[400], part[200];
+    /* 1. the JSON type */
+    const unsigned ty = coarse_type(inst);
+    size_t keep = 0;
+    for (size_t i = 0; i < nb; i++) keep += (s->oneof[i].tmask & ty) != 0;
+    if (keep == 0) {
+        if (v->errors) {
+            text[0] = '\0';
+            for (size_t i = 0; i < nb; i++) {
+                branch_type_text(&s->oneof[i], part, sizeof part);
+                int dup = 0; /* sixteen object forms are "an object" once */
+                for (size_t j = 0; j < i && !dup; j++) {
+                    char prev[200];
+                    branch_type_text(&s->oneof[j], prev, sizeof prev);
+                    dup = !strcmp(prev, part);
+                }
+                if (!dup) text_add(text, sizeof text, " or ", part);
+            }
+        }
+        add_error(v, ptr, "must be %s, got %s", v->errors ? text : "", type_name(inst));
+        return -1;
+    }
+    for (size_t i = 0; i < nb; i++) cand[i] = (s->oneof[i].tmask & ty) != 0;
+    nc = keep;
+    /* 2. discriminator values, in branch and property order */
+    if (ty == T_OBJECT) {
+        for (size_t i = 0; i < nb; i++) {
+            for (size_t d = 0; d < s->oneof[i].ndisc; d++) {
+                const char *key = s->oneof[i].disc[d].key;
+                const json_t *x = json_object_get(inst, key);
+                if (!x) continue;
+                size_t m = 0;
+                for (size_t j = 0; j < nb; j++) {
+                    if (!cand[j]) continue;
+                    const json_t *c = branch_const(&s->oneof[j], key);
+                    m += !c || json_same(c, x);
+                }
+                if (m == 0) {
+                    char child[PTR_MAX];
+                    if (v->errors) {
+                        text[0] = '\0';
+                        for (size_t j = 0; j < nb; j++) {
+                            const json_t *c = cand[j] ? branch_const(&s->oneof[j], key) : NULL;
+                            int dup = 0;
+                            for (size_t k = 0; c && k < j; k++)
+                                if (cand[k] && branch_const(&s->oneof[k], key) &&
+                                    json_same(branch_const(&s->oneof[k], key), c))
+                                    dup = 1;
+                            if (!c || dup) continue;
+                            const struct snode *ps =
+                                prop_find(s->oneof[j].node, key, strlen(key));
+                            text_add(text, sizeof text, ", ", ps ? ps->cnst_text : "?");
+                        }
+                        char *got = value_text_tmp(x, part, sizeof part);
+                        pointer_key(child, ptr, plen, key);
+                        add_error(v, child, "unknown %s %s; expected one of %s", key, got, text);
+                    } else {
+                        add_error(v, ptr, "unknown");
+                    }
+                    return -1;
+                }
+                for (size_t j = 0; j < nb; j++) {
+                    if (!cand[j]) continue;
+                    const json_t *c = branch_const(&s->oneof[j], key);
+                    if (c && !json_same(c, x)) cand[j] = 0;
+                }
+                nc = m;
+            }
+        }
+    }
+    /* 3. the JSON type of an array's items */
+    if (ty == T_ARRAY && nc > 1) {
+        size_t best = 0, lo = (size_t)-1, score[API_SCHEMA_MAX_BRANCHES];
+        for (size_t i = 0; i < nb; i++) {
+            if (!cand[i]) continue;
+            size_t k = 0, n = json_array_size(inst);
+            for (size_t j = 0; j < n; j++)
+                k += (s->oneof[i].imask & coarse_type(json_array_get(inst, j))) != 0;
+            score[i] = k;
+            if (k > best) best = k;
+            if (k < lo) lo = k;
+        }
+        if (best > lo) {
+            nc = 0;
+            for (size_t i = 0; i < nb; i++)
+                if (cand[i]) nc += (cand[i] = score[i] == best);
+        }
+    }
+    /* 4. the keys that tell the candidates apart */
+    if (ty == T_OBJECT && nc > 1) {
+        size_t score[API_SCHEMA_MAX_BRANCHES] = {0}, best = 0;
+        int differ = 0;
+        for (size_t i = 0; i < nb && !differ; i++)
+            for (size_t k = 0; cand[i] && k < s->oneof[i].nkeys && !differ; k++)
+                for (size_t j = 0; j < nb; j++)
+                    if (cand[j] && !branch_has_key(&s->oneof[j], s->oneof[i].keys[k].key,
+                                                   s->oneof[i].keys[k].len)) {
+                        differ = 1;
+                        break;
+                    }
+        const char *key;
+        json_t *val;
+        json_object_foreach((json_t *)inst, key, val) {
+            size_t klen = strlen(key); /* as validate_object looks keys up */
+            size_t have = 0;
+            for (size_t i = 0; i < nb; i++)
+                have += cand[i] && branch_has_key(&s->oneof[i], key, klen);
+            if (have == 0 || have == nc) continue; /* tells nothing apart */
+            for (size_t i = 0; i < nb; i++)
+                if (cand[i] && branch_has_key(&s->oneof[i], key, klen) && ++score[i] > best)
+                    best = score[i];
+        }
+        if (best > 0) {
+            nc = 0;
+            for (size_t i = 0; i < nb; i++)
+                if (cand[i]) nc += (cand[i] = score[i] == best);
+        } else if (differ) {
+            /* a discriminator every candidate has, missing: name it */
+            const char *dkey = NULL;
+            for (size_t i = 0; i < nb && !dkey; i++)
+                for (size_t d = 0; cand[i] && d < s->oneof[i].ndisc && !dkey; d++) {
+                    const char *k = s->oneof[i].disc[d].key;
+                    int all = 1;
+                    for (size_t j = 0; j < nb && all; j++)
+                        all = !cand[j] || branch_const(&s->oneof[j], k) != NULL;
+                    if (all && !json_object_get(inst, k)) dkey = k;
+                }
+            if (dkey) {
+                char child[PTR_MAX];
+                if (v->errors) {
+                    text[0] = '\0';
+                    for (size_t j = 0; j < nb; j++) {
+                        if (!cand[j]) continue;
+                        const struct snode *ps = prop_find(s->oneof[j].node, dkey, strlen(dkey));
+                        int dup = 0;
+                        for (size_t k = 0; k < j && !dup; k++)
+                            dup = cand[k] && json_same(branch_const(&s->oneof[k], dkey),
+                                                       branch_const(&s->oneof[j], dkey));
+                        if (!dup) text_add(text, sizeof text, ", ", ps ? ps->cnst_text : "?");
+                    }
+                    pointer_key(child, ptr, plen, dkey);
+                }
+                add_error(v, v->errors ? child : ptr, "is required: one of %s",
+                          v->errors ? text : "");
+                return -1;
+            }
+            if (v->errors) {
+                text[0] = '\0';
+                for (size_t i = 0; i < nb; i++) {
+                    if (!cand[i]) continue;
+                    branch_form_text(&s->oneof[i], part, sizeof part);
+                    text_add(text, sizeof text, ", ", part);
+                }
+            }
+            add_error(v, ptr, "matches none of the allowed forms; give one of %s",
+                      v->errors ? text : "");
+            return -1;
+        }
+    }
+    /* 5. the fewest errors */
+    long best = -1;
+    size_t best_count = (size_t)-1;
+    for (size_t i = 0; i < nb; i++) {
+        if (!cand[i]) continue;
+        if (nc == 1) return (long)i;
+        struct vctx t = {NULL, 0};
+        validate(&t, s->oneof[i].node, inst, ptr, plen);
+        if (t.count < best_count) {
+            best_count = t.count;
+            best = (long)i;
+        }
+    }
+    return best;
+}
+
 static void validate_oneof(struct vctx *v, const struct snode *s, const json_t *inst,
                            const char *ptr, size_t plen)
 {
-    size_t best = 0, best_count = (size_t)-1, passes = 0, nb = s->noneof;
-    int best_mismatch = 1, any_allowed = 0;
-    unsigned char mm[64]; /* each branch's discriminator_mismatch, when nb <= 64 */
-    /* A branch whose discriminator (a const property) the instance contradicts
-     * cannot pass, and is only a candidate for the error report when every
-     * branch is contradicted: then it need not be validated at all. */
-    for (size_t i = 0; i < nb; i++) {
-        int m = discriminator_mismatch(&s->oneof[i], inst);
-        if (i < sizeof mm) mm[i] = (unsigned char)m;
-        if (!m) any_allowed = 1;
-    }
-    for (size_t i = 0; i < nb; i++) {
-        int mismatch = i < sizeof mm ? mm[i] : discriminator_mismatch(&s->oneof[i], inst);
-        if (any_allowed && mismatch) continue;
+    size_t passes = 0, nb = s->noneof;
+    /* A branch whose discriminator (a const property) the instance
+     * contradicts cannot pass: it need not be validated. */
+    for (size_t i = 0; i < nb && passes < 2; i++) {
+        if (discriminator_mismatch(&s->oneof[i], inst)) continue;
         struct vctx t = {NULL, 0};
         validate(&t, s->oneof[i].node, inst, ptr, plen);
         if (t.count == 0) passes++;
-        /* Prefer branches the discriminator allows, then fewest errors. */
-        if (mismatch < best_mismatch || (mismatch == best_mismatch && t.count < best_count)) {
-            best_mismatch = mismatch;
-            best_count = t.count;
-            best = i;
-        }
     }
     if (passes == 1) return;
     if (passes > 1) {
         add_error(v, ptr, "matches more than one of the allowed forms");
         return;
     }
-    /* None matched: report why the closest form failed. */
-    validate(v, s->oneof[best].node, inst, ptr, plen);
+    /* None matched: report why the form the instance was meant to be failed. */
+    unsigned char cand[API_SCHEMA_MAX_BRANCHES];
+    long b = choose_branch(v, s, inst, ptr, plen, cand);
+    if (b >= 0) validate(v, s->oneof[b].node, inst, ptr, plen);
 }
 
 /* Recursion follows the compiled tree, so its depth is at most the schema's
@@ -476,7 +763,9 @@ static int check(const json_t *s, const char *where, int depth, char *msg, size_
         } else if (!strcmp(key, "oneOf")) {
             size_t i;
             json_t *e;
-            if (!json_is_array(val) || json_array_size(val) == 0) goto bad;
+            if (!json_is_array(val) || json_array_size(val) == 0 ||
+                json_array_size(val) > API_SCHEMA_MAX_BRANCHES)
+                goto bad;
             json_array_foreach(val, i, e) {
                 snprintf(sub, sizeof sub, "%s/oneOf/%zu", where, i);
                 if (check(e, sub, depth + 1, msg, n)) return -1;
@@ -513,6 +802,7 @@ static void node_free(struct snode *s)
     for (size_t i = 0; i < s->noneof; i++) {
         node_free(s->oneof[i].node);
         free(s->oneof[i].disc);
+        free(s->oneof[i].keys);
     }
     node_free(s->items);
     free(s->props);
@@ -607,6 +897,57 @@ static int compile_discriminators(struct sbranch *b)
     return 0;
 }
 
+/* The coarse JSON types a compiled schema admits (see struct sbranch). */
+static unsigned node_types(const struct snode *s)
+{
+    if (s->has_type) {
+        unsigned m = s->type_mask & ~T_INTEGER;
+        return s->type_mask & T_INTEGER ? m | T_NUMBER : m;
+    }
+    if (s->cnst) return coarse_type(s->cnst);
+    if (s->enm) {
+        unsigned m = 0;
+        size_t i;
+        json_t *e;
+        json_array_foreach(s->enm, i, e) m |= coarse_type(e);
+        return m;
+    }
+    return T_ANY;
+}
+
+/* Add key (len bytes) to b's key set unless it is there. 0, or -1 on OOM. */
+static int branch_key_add(struct sbranch *b, const char *key, size_t len, size_t *cap)
+{
+    if (branch_has_key(b, key, len)) return 0;
+    if (b->nkeys == *cap) {
+        size_t nc = *cap ? 2 * *cap : 8;
+        struct skey *k = realloc(b->keys, nc * sizeof *k);
+        if (!k) return -1;
+        b->keys = k;
+        *cap = nc;
+    }
+    b->keys[b->nkeys].key = key;
+    b->keys[b->nkeys].len = len;
+    b->nkeys++;
+    return 0;
+}
+
+/* What tells branch b apart (struct sbranch): types, item types, key set. */
+static int compile_branch_info(struct sbranch *b)
+{
+    const struct snode *s = b->node;
+    b->tmask = node_types(s);
+    b->imask = s->items ? node_types(s->items) : T_ANY;
+    size_t cap = 0;
+    for (size_t i = 0; i < s->nprops; i++)
+        if (branch_key_add(b, s->props[i].key, s->props[i].len, &cap)) return -1;
+    for (size_t i = 0; i < s->noneof; i++)
+        for (size_t k = 0; k < s->oneof[i].nkeys; k++)
+            if (branch_key_add(b, s->oneof[i].keys[k].key, s->oneof[i].keys[k].len, &cap))
+                return -1;
+    return 0;
+}
+
 /* Compile one (already checked) schema object; NULL when memory ran out. */
 static struct snode *compile_node(const json_t *schema)
 {
@@ -646,7 +987,7 @@ static struct snode *compile_node(const json_t *schema)
                 struct sbranch *b = &s->oneof[s->noneof];
                 if (!(b->node = compile_node(e))) goto oom;
                 s->noneof++;
-                if (compile_discriminators(b)) goto oom;
+                if (compile_discriminators(b) || compile_branch_info(b)) goto oom;
             }
         } else {
             static const struct {

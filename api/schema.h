@@ -6,16 +6,18 @@
  * Supported keywords: type (name or array of names; "integer" means a number
  * with an integral value), properties, required, additionalProperties (false
  * only), items (one schema), minItems, maxItems, uniqueItems, minimum, maximum,
- * exclusiveMinimum, exclusiveMaximum, enum, const, oneOf, minProperties,
- * maxProperties. Annotations (title, description, default, examples) are
- * ignored. Anything else is refused by api_schema_check(), so a route cannot
- * silently rely on an unsupported keyword.
+ * exclusiveMinimum, exclusiveMaximum, enum, const, oneOf (at most
+ * API_SCHEMA_MAX_BRANCHES branches), minProperties, maxProperties.
+ * Annotations (title, description, default, examples) are ignored. Anything
+ * else is refused by api_schema_check(), so a route cannot silently rely on
+ * an unsupported keyword.
  *
  * A schema is compiled once (api_schema_compile, at api_init) into a tree of
  * C structures: keyword values as doubles and flags, property names as
  * (pointer, length) pairs, the messages that depend only on the schema (type
  * names, allowed keys, const/enum text) formatted in advance, and for each
- * oneOf branch its discriminators (the properties that hold a `const`).
+ * oneOf branch what tells it apart from its siblings (the properties that
+ * hold a `const`, the JSON types of it and of its items, the keys it knows).
  * Validating a request then walks that tree and the instance only; it never
  * looks a keyword up in the schema's jansson objects.
  */
@@ -34,6 +36,9 @@
  * the instance (whose own depth jansson's parser caps at
  * JSON_PARSER_MAX_DEPTH, 2048). mechd's deepest route schema is far below. */
 #define API_SCHEMA_MAX_DEPTH 32
+
+/* Most branches of one oneOf that api_schema_check accepts. */
+#define API_SCHEMA_MAX_BRANCHES 64
 
 /* A compiled schema (opaque). Immutable after api_schema_compile, so one tree
  * may be used by any number of threads at once. */
@@ -58,8 +63,16 @@ void api_schema_free(struct api_schema *s);
  * at most API_SCHEMA_MAX_ERRORS entries in the array in all. With errors ==
  * NULL only counts: no message or pointer is formatted. Returns the number of
  * violations found (possibly more than were appended). Reentrant; s is only
- * read. For oneOf the branch the instance's discriminators allow, then the
- * one with the fewest errors, is the one whose errors are reported. s == NULL
+ * read. When an instance matches no branch of a oneOf, the branch it was
+ * meant to be is chosen by what tells the branches apart — its JSON type, the
+ * value of a discriminator key (a property a branch requires to be a const:
+ * "type", "shape"), the JSON type of an array's items, the keys only some
+ * branches know (a velocity's "beta" or "rapidity") — then by the fewest
+ * errors, and that branch's errors are reported; when the choice itself is
+ * wrong the error says so: "must be a string or an object, got number",
+ * "unknown type \"foo\"; expected one of ...", "matches none of the allowed
+ * forms; give one of {beta}, {rapidity, direction}, ..." (schema.c,
+ * choose_branch, has the rules in order). s == NULL
  * acts as the empty schema (returns 0); callers pass a compiled route schema,
  * which every POST route has once api_init succeeded. */
 size_t api_schema_validate(const struct api_schema *s, const json_t *instance,

@@ -48,7 +48,10 @@
                  "\"description\":\"relative error on the positions and velocities\"}")          \
     "]}"
 
-#define API_TRAJ_REQUEST_SCHEMA                                                               \
+/* The trajectory request; `extra` is appended to its properties (a schema
+ * that embeds it adds the envelope keys the route table adds at the root). */
+#define API_TRAJ_REQUEST_SCHEMA API_TRAJ_REQUEST_SCHEMA_WITH("")
+#define API_TRAJ_REQUEST_SCHEMA_WITH(extra)                                                   \
     "{\"type\":\"object\",\"additionalProperties\":false,"                                     \
     "\"required\":[\"particle\",\"t_end\"],"                                                   \
     "\"properties\":{"                                                                         \
@@ -127,10 +130,8 @@
         "\"coordinate\":{\"enum\":[\"x\",\"y\",\"z\"]},"                                       \
         "\"crosses\":" API_TRAJ_NUM("-1e15", "1e15") ","                                       \
         "\"direction\":{\"enum\":[\"decreasing\",\"increasing\",\"either\"],"                 \
-        "\"default\":\"either\"}") ","                                                         \
-    "\"cost\":{\"type\":\"boolean\",\"default\":true,"                                         \
-    "\"description\":\"false omits the cost block (byte-identical answers)\"}"                \
-    "}}"
+        "\"default\":\"either\"}")                                                             \
+    extra "}}"
 
 /* A parsed trajectory request. p.forces points into forces: after copying
  * the struct, call api_traj_request_fix(). */

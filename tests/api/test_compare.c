@@ -4,8 +4,10 @@
  * corresponding single request's diagnostics.reference (exact-reference
  * scene), or as the differences recomputed here from the single requests'
  * samples and a radau15 rtol 1e-10 request (scene without a reference).
- * Also: the shared step budget (a run that exhausts it fails the request and
- * is named), a run whose method does not apply is a failed row, validation of
+ * Also: the shared step budget (the runs that finished are answered, the rest
+ * marked not run, and such a partial answer is never cached; when none
+ * finished the request fails naming the run, with the steps of the whole
+ * request), a run whose method does not apply is a failed row, validation of
  * runs/sweep, and GET /v1/integrators (api_integrators_catalog) against the
  * registry and the schema's method lists. */
 #include <gsl/gsl_errno.h>
@@ -113,14 +115,67 @@ static void test_exact_scene(void)
     CHECK(num(json_array_get(rows, 3), "max_relative_position_error") < 1e-5);
     json_decref(cmp);
 
-    /* The shared budget: enough for the first runs only. The verlet run needs
-     * 3000 steps (30 s / 0.01 s); with 3010 the rk8pd run leaves too few. */
+    /* The shared budget: enough for the first run only. The verlet run needs
+     * 3000 steps (30 s / 0.01 s); with 3010 the rk8pd run leaves too few, and
+     * verlet is refused before its first step. The finished run is answered,
+     * the rest are marked not run, and the answer says it is partial. */
+    json_t *full = post("/v1/compare", body, 10000000, &st);
+    const double rk8pd_steps = num(json_array_get(json_object_get(full, "runs"), 0), "steps");
+    CHECK(rk8pd_steps > 30 && rk8pd_steps <= 3010); /* it fits, verlet then cannot */
+    CHECK(json_is_false(json_object_get(full, "partial")));
     cmp = post("/v1/compare", body, 3010, &st);
+    CHECK_EQ_INT(st, 200);
+    CHECK(json_is_true(json_object_get(cmp, "partial")));
+    rows = json_object_get(cmp, "runs");
+    CHECK_EQ_INT(json_array_size(rows), json_array_size(runs));
+    CHECK(json_equal(json_array_get(rows, 0), json_array_get(json_object_get(full, "runs"), 0)));
+    for (size_t i = 1; i < json_array_size(rows); i++) {
+        json_t *row = json_array_get(rows, i);
+        CHECK(!strcmp(json_string_value(json_object_get(row, "status")) ?: "", "not_run"));
+        CHECK(json_equal(json_object_get(row, "requested"), json_array_get(runs, i)));
+        const char *why = json_string_value(json_object_get(row, "reason"));
+        CHECK(why && strstr(why, "step budget of 3010 steps"));
+        CHECK(why && strstr(why, i == 1 ? "stopped" : "not started"));
+        if (i > 1) CHECK(why && strstr(why, "during run 1 (/runs/1)"));
+        CHECK(json_object_get(row, "max_position_error") == NULL);
+    }
+    /* verlet was refused up front: it took no step, and reached no time */
+    json_t *prog1 = json_object_get(json_array_get(rows, 1), "progress");
+    CHECK(num(prog1, "steps") == 0);
+    CHECK(json_object_get(prog1, "t_reached") == NULL);
+    CHECK(num(cmp, "total_steps") == rk8pd_steps);
+    json_decref(cmp);
+    json_decref(full);
+
+    /* A partial answer depends on the budget: GET ?request= gives it no ETag
+     * and no-store; the full answer is cacheable. */
+    char *q = json_dumps(body, JSON_COMPACT | JSON_REAL_PRECISION(17));
+    for (int partial = 1; partial >= 0; partial--) {
+        struct api_request req = {"GET", "/v1/compare", NULL, NULL, 0, partial ? 3010 : 10000000,
+                                  mech_clock_seconds() + 120, NULL};
+        struct api_request_ext ext = {q, NULL, 0};
+        struct api_response resp;
+        api_handle_ext(&req, &ext, &resp);
+        CHECK_EQ_INT(resp.status, 200);
+        CHECK(partial == (strstr(resp.body ? resp.body : "", "\"partial\":true") != NULL));
+        CHECK(partial ? resp.etag[0] == '\0' : resp.etag[0] == '"');
+        CHECK(!strcmp(resp.cache_control ? resp.cache_control : "",
+                      partial ? "no-store" : "public, max-age=86400"));
+        api_response_free(&resp);
+    }
+    free(q);
+
+    /* Nothing finished: 30 steps cannot take the first run (rk8pd, which
+     * needs rk8pd_steps > 30) to its end: 422 naming it. */
+    cmp = post("/v1/compare", body, 30, &st);
     CHECK_EQ_INT(st, 422);
-    CHECK(!strcmp(json_string_value(json_object_get(cmp, "type")),
+    CHECK(!strcmp(json_string_value(json_object_get(cmp, "type")) ?: "",
                   "/problems/compute-budget-exceeded"));
-    CHECK(!strcmp(json_string_value(json_object_get(cmp, "run")), "/runs/1"));
-    CHECK(strstr(json_string_value(json_object_get(cmp, "detail")), "run 1") != NULL);
+    CHECK(!strcmp(json_string_value(json_object_get(cmp, "run")) ?: "", "/runs/0"));
+    CHECK(strstr(json_string_value(json_object_get(cmp, "detail")) ?: "", "run 0") != NULL);
+    json_t *prog = json_object_get(cmp, "progress");
+    CHECK(num(prog, "steps") == num(prog, "run_steps")); /* exact reference: no other steps */
+    CHECK(num(prog, "steps") >= 30);
     json_decref(cmp);
     json_decref(body);
     json_decref(runs);
@@ -186,6 +241,21 @@ static void test_numerical_reference(void)
     json_t *cost = json_object_get(cmp, "cost");
     CHECK_EQ_INT(json_array_size(json_object_get(cost, "runs")), json_array_size(rows));
     CHECK(num(cost, "reference_cpu_seconds") >= 0 && num(cost, "cpu_seconds") > 0);
+
+    /* Budget for the reference and 5 more steps: the reference finishes, the
+     * first run (rk8pd, adaptive) stops after a few steps and nothing
+     * finished: 422, and progress.steps counts the reference's steps too
+     * (it used to say only the stopped run's). */
+    const double ref_steps = num(ref, "steps");
+    CHECK(ref_steps > 5);
+    json_t *cmp2 = post("/v1/compare", body, (long)ref_steps + 5, &st);
+    CHECK_EQ_INT(st, 422);
+    CHECK(!strcmp(json_string_value(json_object_get(cmp2, "run")) ?: "", "/sweep"));
+    json_t *prog = json_object_get(cmp2, "progress");
+    CHECK(num(prog, "run_steps") > 0 && num(prog, "run_steps") <= 6);
+    CHECK(num(prog, "steps") == ref_steps + num(prog, "run_steps"));
+    json_decref(cmp2);
+
     json_decref(rt);
     json_decref(rblock);
     json_decref(cmp);
@@ -251,6 +321,34 @@ static void test_validation(void)
     }
 }
 
+/* The deadline, deterministically: already passed when the request starts,
+ * so the first run meets it at its first check and no run finished: still
+ * the 422, naming the run, with no step taken. (A partial answer under the
+ * deadline takes the same path as under the step budget, tested above; a
+ * deadline that passes between two runs is a matter of timing.) */
+static void test_deadline_nothing_finished(void)
+{
+    char *text = NULL;
+    json_t *body = json_pack("{s:s,s:o,s:[{s:s,s:f}],s:b}", "operation", "/v1/trajectory",
+                             "request", json_loads(kepler_request, JSON_DECODE_INT_AS_REAL, NULL),
+                             "runs", "method", "rk4", "dt", 0.01, "cost", 0);
+    text = json_dumps(body, JSON_COMPACT);
+    struct api_request req = {"POST", "/v1/compare", "application/json", text, strlen(text),
+                              10000000, mech_clock_seconds() - 1, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    CHECK_EQ_INT(resp.status, 422);
+    json_t *r = json_loads(resp.body ? resp.body : "", JSON_DECODE_INT_AS_REAL, NULL);
+    api_response_free(&resp);
+    free(text);
+    CHECK(!strcmp(json_string_value(json_object_get(r, "run")) ?: "", "/runs/0"));
+    json_t *prog = json_object_get(r, "progress");
+    CHECK(!strcmp(json_string_value(json_object_get(prog, "limit")) ?: "", "deadline"));
+    CHECK(json_is_number(json_object_get(prog, "steps")) && num(prog, "steps") == 0);
+    json_decref(r);
+    json_decref(body);
+}
+
 /* GET /v1/integrators: every registered method, the presets, and the method
  * lists of the request schema equal the registry's adaptive / fixed split. */
 static void test_integrators_catalog(void)
@@ -300,6 +398,7 @@ int main(void)
     test_exact_scene();
     test_numerical_reference();
     test_validation();
+    test_deadline_nothing_finished();
     test_integrators_catalog();
     TEST_MAIN_END();
 }

@@ -2,9 +2,11 @@
  * it should, rejects what it should, and names the right JSON pointer; the
  * compiled validator (api/schema.c) gives exactly the errors — count, pointer,
  * detail, order — of a reference interpreter kept below (the interpreter mechd
- * used before schemas were compiled: it walks the schema's jansson objects),
- * over every route schema with its catalog example and hundreds of mutated
- * copies each; hand-derived messages pin the texts themselves. */
+ * used before schemas were compiled: it walks the schema's jansson objects;
+ * for a oneOf that matches no branch it applies the rules of schema.h, written
+ * again from the json_t), over every route schema with its catalog example
+ * and hundreds of mutated copies each, and the comparison must meet each way
+ * of reporting such a oneOf; hand-derived messages pin the texts themselves. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
@@ -95,44 +97,325 @@ static void ref_key(char *buf, const char *base, const char *key)
 
 static void ref_validate(struct rctx *v, const json_t *s, const json_t *inst, const char *ptr);
 
-static int ref_mismatch(const json_t *branch, const json_t *inst)
+/* ---- choosing the branch to report (the rules of schema.h, written again
+ * from the schema's json_t: type names as strings, key sets by walking
+ * properties and nested oneOf on every call) ---- */
+
+static const char *const ref_kinds[] = {"object", "array", "string", "number", "boolean", "null"};
+
+/* The JSON kinds (names above, "integer" being a number) that schema s admits,
+ * as a string "|object|number|"; every kind when s says nothing about it. */
+static void ref_kinds_of(const json_t *s, char *buf, size_t n)
 {
-    const json_t *props = json_object_get(branch, "properties");
-    if (!json_is_object(inst) || !props) return 0;
-    const char *k;
-    json_t *ps;
-    json_object_foreach((json_t *)props, k, ps) {
-        const json_t *c = json_object_get(ps, "const");
-        const json_t *x = json_object_get(inst, k);
-        if (c && x && !ref_same(c, x)) return 1;
+    const json_t *t = json_object_get(s, "type"), *c = json_object_get(s, "const"),
+                 *e = json_object_get(s, "enum");
+    snprintf(buf, n, "|");
+    for (size_t i = 0; i < 6; i++) {
+        int ok = 0;
+        if (t) {
+            size_t k;
+            json_t *x;
+            if (json_is_string(t)) {
+                const char *name = json_string_value(t);
+                ok = !strcmp(name, ref_kinds[i]) ||
+                     (!strcmp(name, "integer") && !strcmp(ref_kinds[i], "number"));
+            }
+            json_array_foreach(t, k, x) {
+                const char *name = json_string_value(x);
+                if (!strcmp(name, ref_kinds[i]) ||
+                    (!strcmp(name, "integer") && !strcmp(ref_kinds[i], "number")))
+                    ok = 1;
+            }
+        } else if (c) {
+            ok = !strcmp(ref_type_name(c), ref_kinds[i]);
+        } else if (e) {
+            size_t k;
+            json_t *x;
+            json_array_foreach(e, k, x) if (!strcmp(ref_type_name(x), ref_kinds[i])) ok = 1;
+        } else {
+            ok = 1;
+        }
+        if (ok) {
+            size_t len = strlen(buf);
+            snprintf(buf + len, n - len, "%s|", ref_kinds[i]);
+        }
     }
+}
+
+static int ref_admits(const json_t *s, const json_t *inst)
+{
+    char kinds[80], want[20];
+    ref_kinds_of(s, kinds, sizeof kinds);
+    snprintf(want, sizeof want, "|%s|", ref_type_name(inst));
+    return strstr(kinds, want) != NULL;
+}
+
+/* Whether branch b knows key: a property of it or of a branch of its oneOf. */
+static int ref_knows(const json_t *b, const char *key)
+{
+    if (json_object_get(json_object_get(b, "properties"), key)) return 1;
+    size_t i;
+    json_t *x;
+    json_array_foreach(json_object_get(b, "oneOf"), i, x) if (ref_knows(x, key)) return 1;
     return 0;
+}
+
+static const json_t *ref_const_at(const json_t *b, const char *key)
+{
+    return json_object_get(json_object_get(json_object_get(b, "properties"), key), "const");
+}
+
+/* What kind of value branch b is, in words. */
+static void ref_kind_text(const json_t *b, char *buf, size_t n)
+{
+    const json_t *t = json_object_get(b, "type");
+    if (json_is_string(t)) {
+        const char *name = json_string_value(t);
+        snprintf(buf, n, "%s %s", strchr("aeiou", name[0]) ? "an" : "a", name);
+    } else if (t) {
+        buf[0] = '\0';
+        size_t i;
+        json_t *x;
+        json_array_foreach(t, i, x) {
+            size_t len = strlen(buf);
+            snprintf(buf + len, n - len, "%s%s", i ? " or " : "", json_string_value(x));
+        }
+    } else if (json_object_get(b, "const")) {
+        ref_text(json_object_get(b, "const"), buf, n < 120 ? n : 120);
+    } else if (json_object_get(b, "enum")) {
+        char t2[300];
+        ref_text(json_object_get(b, "enum"), t2, sizeof t2);
+        snprintf(buf, n, "one of ");
+        size_t len = strlen(buf); /* truncated to n - 1 bytes, as schema.c's */
+        for (size_t k = 0; t2[k] && len + 1 < n; k++) buf[len++] = t2[k];
+        buf[len] = '\0';
+    } else {
+        snprintf(buf, n, "any value");
+    }
+}
+
+/* Append item to list (n bytes) after sep, as far as it fits. */
+static void ref_list_add(char *list, size_t n, const char *sep, const char *item)
+{
+    size_t len = strlen(list);
+    if (len + 1 < n) snprintf(list + len, n - len, "%s%s", len ? sep : "", item);
+}
+
+/* The distinct consts the candidates give key, in branch order, as text. */
+static void ref_const_list(const json_t *branches, const int *cand, const char *key, char *out,
+                           size_t n)
+{
+    size_t i;
+    json_t *b;
+    out[0] = '\0';
+    json_array_foreach(branches, i, b) {
+        const json_t *c = cand[i] ? ref_const_at(b, key) : NULL;
+        if (!c) continue;
+        int seen = 0;
+        for (size_t j = 0; j < i; j++)
+            if (cand[j] && ref_const_at(json_array_get(branches, j), key) &&
+                ref_same(ref_const_at(json_array_get(branches, j), key), c))
+                seen = 1;
+        if (seen) continue;
+        char t[120];
+        ref_text(c, t, sizeof t);
+        ref_list_add(out, n, ", ", t);
+    }
+}
+
+static long ref_choose(struct rctx *v, const json_t *branches, const json_t *inst,
+                       const char *ptr)
+{
+    int cand[64];
+    size_t nb = json_array_size(branches), i, alive = 0;
+    json_t *b;
+    char list[400], child[REF_PTR_MAX];
+    /* the JSON type */
+    json_array_foreach(branches, i, b) alive += (cand[i] = ref_admits(b, inst));
+    if (!alive) {
+        list[0] = '\0';
+        json_array_foreach(branches, i, b) {
+            char t[200];
+            ref_kind_text(b, t, sizeof t);
+            int seen = 0;
+            for (size_t j = 0; j < i; j++) {
+                char u[200];
+                ref_kind_text(json_array_get(branches, j), u, sizeof u);
+                if (!strcmp(t, u)) seen = 1;
+            }
+            if (!seen) ref_list_add(list, sizeof list, " or ", t);
+        }
+        ref_error(v, ptr, "must be %s, got %s", list, ref_type_name(inst));
+        return -1;
+    }
+    /* the discriminator values */
+    if (json_is_object(inst)) {
+        json_array_foreach(branches, i, b) {
+            const char *key;
+            json_t *ps;
+            json_object_foreach(json_object_get(b, "properties"), key, ps) {
+                if (!json_object_get(ps, "const")) continue;
+                const json_t *x = json_object_get(inst, key);
+                if (!x) continue;
+                size_t left = 0;
+                for (size_t j = 0; j < nb; j++)
+                    left += cand[j] && (!ref_const_at(json_array_get(branches, j), key) ||
+                                        ref_same(ref_const_at(json_array_get(branches, j), key), x));
+                if (!left) {
+                    ref_const_list(branches, cand, key, list, sizeof list);
+                    char got[200];
+                    ref_text(x, got, sizeof got);
+                    ref_key(child, ptr, key);
+                    ref_error(v, child, "unknown %s %s; expected one of %s", key, got, list);
+                    return -1;
+                }
+                for (size_t j = 0; j < nb; j++)
+                    if (cand[j] && ref_const_at(json_array_get(branches, j), key) &&
+                        !ref_same(ref_const_at(json_array_get(branches, j), key), x))
+                        cand[j] = 0;
+                alive = left;
+            }
+        }
+    }
+    /* the JSON type of the items */
+    if (json_is_array(inst) && alive > 1) {
+        size_t score[64], top = 0, bottom = (size_t)-1;
+        json_array_foreach(branches, i, b) {
+            if (!cand[i]) continue;
+            const json_t *items = json_object_get(b, "items");
+            score[i] = 0;
+            size_t k;
+            json_t *x;
+            json_array_foreach(inst, k, x) score[i] += !items || ref_admits(items, x);
+            if (score[i] > top) top = score[i];
+            if (score[i] < bottom) bottom = score[i];
+        }
+        if (top != bottom) {
+            alive = 0;
+            for (size_t j = 0; j < nb; j++)
+                if (cand[j] && score[j] != top) cand[j] = 0;
+                else alive += cand[j];
+        }
+    }
+    /* the keys only some candidates know */
+    if (json_is_object(inst) && alive > 1) {
+        size_t score[64] = {0}, top = 0;
+        const char *key;
+        json_t *x;
+        json_object_foreach((json_t *)inst, key, x) {
+            size_t know = 0;
+            for (size_t j = 0; j < nb; j++) know += cand[j] && ref_knows(json_array_get(branches, j), key);
+            if (know == 0 || know == alive) continue;
+            for (size_t j = 0; j < nb; j++)
+                if (cand[j] && ref_knows(json_array_get(branches, j), key)) {
+                    score[j]++;
+                    if (score[j] > top) top = score[j];
+                }
+        }
+        if (top) {
+            alive = 0;
+            for (size_t j = 0; j < nb; j++)
+                if (cand[j] && score[j] != top) cand[j] = 0;
+                else alive += cand[j];
+        } else {
+            /* Do the candidates' key sets differ at all? Collect them. */
+            json_t *all = json_object();
+            for (size_t j = 0; j < nb; j++) {
+                if (!cand[j]) continue;
+                json_t *todo = json_array();
+                json_array_append(todo, json_array_get(branches, j));
+                for (size_t t = 0; t < json_array_size(todo); t++) {
+                    const json_t *node = json_array_get(todo, t);
+                    json_object_foreach(json_object_get(node, "properties"), key, x)
+                        json_object_set_new(all, key, json_true());
+                    size_t k;
+                    json_t *y;
+                    json_array_foreach(json_object_get(node, "oneOf"), k, y)
+                        json_array_append(todo, y);
+                }
+                json_decref(todo);
+            }
+            int differ = 0;
+            json_object_foreach(all, key, x)
+                for (size_t j = 0; j < nb; j++)
+                    if (cand[j] && !ref_knows(json_array_get(branches, j), key)) differ = 1;
+            json_decref(all);
+            if (differ) {
+                /* a discriminator of every candidate, missing */
+                json_array_foreach(branches, i, b) {
+                    if (!cand[i]) continue;
+                    json_object_foreach(json_object_get(b, "properties"), key, x) {
+                        if (!json_object_get(x, "const") || json_object_get(inst, key)) continue;
+                        int every = 1;
+                        for (size_t j = 0; j < nb; j++)
+                            if (cand[j] && !ref_const_at(json_array_get(branches, j), key))
+                                every = 0;
+                        if (!every) continue;
+                        ref_const_list(branches, cand, key, list, sizeof list);
+                        ref_key(child, ptr, key);
+                        ref_error(v, child, "is required: one of %s", list);
+                        return -1;
+                    }
+                }
+                list[0] = '\0';
+                json_array_foreach(branches, i, b) {
+                    if (!cand[i]) continue;
+                    char form[200] = "";
+                    const json_t *req = json_object_get(b, "required");
+                    if (!json_array_size(req)) {
+                        ref_kind_text(b, form, sizeof form);
+                    } else {
+                        size_t k;
+                        json_t *r;
+                        json_array_foreach(req, k, r) {
+                            const char *name = json_string_value(r);
+                            char c[120] = "";
+                            if (ref_const_at(b, name)) ref_text(ref_const_at(b, name), c, sizeof c);
+                            size_t len = strlen(form);
+                            snprintf(form + len, sizeof form - len, "%s%s%s%s", k ? ", " : "{",
+                                     name, c[0] ? " " : "", c);
+                        }
+                        size_t len = strlen(form);
+                        if (len + 1 < sizeof form) snprintf(form + len, sizeof form - len, "}");
+                    }
+                    ref_list_add(list, sizeof list, ", ", form);
+                }
+                ref_error(v, ptr, "matches none of the allowed forms; give one of %s", list);
+                return -1;
+            }
+        }
+    }
+    /* the fewest errors */
+    long best = -1;
+    size_t best_count = (size_t)-1;
+    json_array_foreach(branches, i, b) {
+        if (!cand[i]) continue;
+        struct rctx t = {NULL, 0};
+        ref_validate(&t, b, inst, ptr);
+        if (t.count < best_count) {
+            best_count = t.count;
+            best = (long)i;
+        }
+    }
+    return best;
 }
 
 static void ref_oneof(struct rctx *v, const json_t *branches, const json_t *inst, const char *ptr)
 {
-    size_t i, best = 0, best_count = (size_t)-1, passes = 0;
-    int best_mismatch = 1, any_allowed = 0;
+    size_t i, passes = 0;
     json_t *b;
-    json_array_foreach(branches, i, b) if (!ref_mismatch(b, inst)) any_allowed = 1;
     json_array_foreach(branches, i, b) {
-        int mismatch = ref_mismatch(b, inst);
-        if (any_allowed && mismatch) continue;
         struct rctx t = {NULL, 0};
         ref_validate(&t, b, inst, ptr);
         if (t.count == 0) passes++;
-        if (mismatch < best_mismatch || (mismatch == best_mismatch && t.count < best_count)) {
-            best_mismatch = mismatch;
-            best_count = t.count;
-            best = i;
-        }
     }
     if (passes == 1) return;
     if (passes > 1) {
         ref_error(v, ptr, "matches more than one of the allowed forms");
         return;
     }
-    ref_validate(v, json_array_get(branches, best), inst, ptr);
+    long best = ref_choose(v, branches, inst, ptr);
+    if (best >= 0) ref_validate(v, json_array_get(branches, (size_t)best), inst, ptr);
 }
 
 static void ref_validate(struct rctx *v, const json_t *s, const json_t *inst, const char *ptr)
@@ -257,6 +540,7 @@ static void ref_validate(struct rctx *v, const json_t *s, const json_t *inst, co
 /* ==== helpers ================================================================ */
 
 static long compared, mismatches;
+static long seen_unknown, seen_required_one_of, seen_forms, seen_types;
 
 /* Validate inst with both validators, full and count-only; any difference
  * is a mismatch (the first few are printed). Returns the compiled count. */
@@ -271,6 +555,17 @@ static size_t compare(const json_t *schema, const struct api_schema *c, const js
     ref_validate(&rc, schema, inst, pointer);
     size_t nc = api_schema_validate(c, inst, pointer, NULL);
     compared++;
+    /* which of choose_branch's own messages the comparison met */
+    size_t gi;
+    json_t *ge;
+    json_array_foreach(got, gi, ge) {
+        const char *d = json_string_value(json_object_get(ge, "detail"));
+        if (!d) continue;
+        if (!strncmp(d, "unknown ", 8) && strstr(d, "; expected one of ")) seen_unknown++;
+        else if (!strncmp(d, "is required: one of ", 20)) seen_required_one_of++;
+        else if (!strncmp(d, "matches none of the allowed forms", 33)) seen_forms++;
+        else if (!strncmp(d, "must be ", 8) && strstr(d, " or ") && strstr(d, ", got ")) seen_types++;
+    }
     if (n != r.count || nc != rc.count || !json_equal(ref, got)) {
         if (mismatches++ < 10) {
             char *a = json_dumps(inst, JSON_COMPACT), *b = json_dumps(ref, JSON_COMPACT),
@@ -712,9 +1007,45 @@ int main(void)
      * would report only one error (r missing is 1 for sphere; point has 1). */
     EXPECT_LIST(shapes, "{\"shape\":\"point\",\"r\":1}", "", 1,
                 "/r|unknown key; allowed here: shape, m, p");
-    /* Every branch contradicted: the fewest-errors one reports (sphere: "cube"
-     * is not "sphere" plus r, m, p missing = 4; point: 1). */
-    EXPECT_LIST(shapes, "{\"shape\":\"cube\"}", "", 1, "/shape|must be \"point\"");
+    /* No branch matches: the branch the instance was meant to be is chosen by
+     * what tells the branches apart, or the choice itself is what is wrong
+     * (hand-derived from the rules in schema.h). An unknown discriminator
+     * value is named with the values allowed (it used to be the fewest-errors
+     * branch's 'must be "point"'). */
+    EXPECT_LIST(shapes, "{\"shape\":\"cube\"}", "", 1,
+                "/shape|unknown shape \"cube\"; expected one of \"sphere\", \"point\"");
+    EXPECT_LIST(shapes, "{\"shape\":7,\"m\":1}", "/b", 1,
+                "/b/shape|unknown shape 7.0; expected one of \"sphere\", \"point\"");
+    /* the discriminator missing while nothing else tells: name it */
+    EXPECT_LIST(shapes, "{\"m\":1}", "", 1, "/shape|is required: one of \"sphere\", \"point\"");
+    /* a key only one branch knows (r: the sphere) chooses it */
+    EXPECT_LIST(shapes, "{\"r\":1}", "", 3, "/shape|is required;/m|is required;/p|is required");
+    /* the JSON type: one text per kind of value, said once */
+    EXPECT_LIST(shapes, "5", "", 1, "|must be an object, got number");
+    EXPECT_LIST("{\"oneOf\":[{\"type\":\"string\"},{\"type\":\"object\",\"required\":[\"mass\"],"
+                "\"additionalProperties\":false,\"properties\":{\"mass\":{\"type\":\"number\"}}}]}",
+                "{\"gm\":1}", "/body", 2,
+                "/body/mass|is required;/body/gm|unknown key; allowed here: mass");
+    EXPECT_LIST("{\"oneOf\":[{\"type\":\"array\"},{\"const\":\"auto\"}]}", "5", "", 1,
+                "|must be an array or \"auto\", got number");
+    EXPECT_LIST("{\"oneOf\":[{\"type\":\"number\"},{\"enum\":[\"sun\",\"earth\"]}]}", "null", "", 1,
+                "|must be a number or one of [\"sun\",\"earth\"], got null");
+    /* velocity forms: no key of any form -> what each form needs */
+    EXPECT_LIST(one, "{\"speed\":1}", "/v", 1,
+                "/v|matches none of the allowed forms; give one of {beta}, {gamma, dir}");
+    EXPECT_LIST(one, "{}", "", 1, "|matches none of the allowed forms; give one of {beta}, {gamma, dir}");
+    EXPECT_LIST(one, "{\"gamma\":2}", "", 1, "/dir|is required");
+    /* one 4-vector or a list of them: the items' JSON type chooses (a list
+     * of two used to get "must have at least 4 items, got 2") */
+    const char *vec4 =
+        "{\"oneOf\":[{\"type\":\"array\",\"minItems\":1,\"items\":{\"type\":\"array\",\"minItems\":4,"
+        "\"maxItems\":4,\"items\":{\"type\":\"number\"}}},{\"type\":\"array\",\"minItems\":4,"
+        "\"maxItems\":4,\"items\":{\"type\":\"number\"}}]}";
+    EXPECT_LIST(vec4, "[[null,null,0,0],[1,0,0,0]]", "/vectors", 2,
+                "/vectors/0/0|must be a number, got null;/vectors/0/1|must be a number, got null");
+    EXPECT_LIST(vec4, "[null,null,0,0]", "", 2,
+                "/0|must be a number, got null;/1|must be a number, got null");
+    EXPECT_LIST(vec4, "[]", "", 1, "|must have at least 1 items, got 0");
 
     /* A huge array of wrong items reports a bounded number of errors. */
     {
@@ -772,6 +1103,7 @@ int main(void)
      * errors from the compiled tree as from the reference interpreter. */
     CHECK(api_init() == 0);
     int routes = 0, deepest = 0;
+    seen_unknown = seen_required_one_of = seen_forms = seen_types = 0;
     for (size_t i = 0; i < api_route_count; i++) {
         const json_t *schema = api_route_schema(i);
         const struct api_schema *c = api_route_schema_compiled(i);
@@ -793,6 +1125,11 @@ int main(void)
     tl_passed += (int)(compared - mismatches);
     printf("%d route schemas (deepest %d levels), %ld instances compared, %ld mismatches\n",
            routes, deepest, compared, mismatches);
+    /* The comparison reached every way of reporting a oneOf that matched no
+     * branch (so the reference's rules are checked, not only its old paths). */
+    printf("oneOf reports compared: %ld unknown value, %ld missing discriminator, %ld forms, "
+           "%ld types\n", seen_unknown, seen_required_one_of, seen_forms, seen_types);
+    CHECK(seen_unknown > 0 && seen_required_one_of > 0 && seen_forms > 0 && seen_types > 0);
 
     /* Figures only (never a check): validation cost before/after compiling. */
     for (size_t i = 0; i < api_route_count; i++) {
