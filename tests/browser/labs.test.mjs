@@ -386,6 +386,37 @@ await lab('accuracy', async () => {
   check(bad.length === 0, `busy: after Cancel a new request computes cleanly (${bad.join(' | ')})`);
 }, 'cancel-accuracy');
 
+// a sweep cut short by its budget: the finished runs are shown, the rest say "not run" and why.
+// The partial answer is a real one, from a second mechd with a step budget of 3000 per run.
+{
+  const small = startMechd(['--max-steps', '3000']);
+  try {
+    const sbase = await small.url;
+    const body = {operation: '/v1/trajectory', request: {particle: {mass: 1, position: [1, 0, 0], velocity: [0, 1.2, 0]},
+      forces: [{type: 'central_gravity', gm: 1}], t_end: 20, samples: 21},
+      sweep: {methods: ['rk8pd', 'verlet'], tolerances: [1e-4], dts: [0.01, 0.001]}};
+    const res = await fetch(sbase + '/v1/compare', {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify(body)});
+    const text = await res.text();
+    const partial = res.status === 200 && JSON.parse(text).partial === true;
+    check(partial, `partial compare: a step budget of 3000 cuts the dt 0.001 run (status ${res.status})`);
+    if (partial) await lab('accuracy', async () => {
+      await settled();
+      await page.route('**/v1/compare', (route) => route.fulfill({status: 200, contentType: 'application/json', body: text}));
+      await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+      await page.click('#acc-submit');
+      await state('main form', 'done');
+      const rows = await page.$$eval('#acc-table tr', (trs) => trs.slice(1).map(tr => tr.innerText.replace(/\s+/g, ' ').trim()));
+      check(rows.length === 3 && /verlet dt 0\.01 \d/.test(rows[1]) && /^verlet dt 0\.001 not run: /.test(rows[2]),
+        `partial compare: two finished rows and one "not run" row with its setting and reason (${rows.join(' | ')})`);
+      const note = await page.textContent('main .results p');
+      check(/not run/.test(note), `partial compare: the summary says the sweep was cut short ("${note}")`);
+      const bad = await blemishes();
+      check(bad.length === 0, `partial compare: a clean page (${bad.join(' | ')})`);
+      await page.unrouteAll({behavior: 'ignoreErrors'});
+    }, 'partial-accuracy');
+  } finally { small.proc.kill(); }
+}
+
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
 await page.setViewportSize({width: 390, height: 844});
 for (const id of LABS) await lab(id, async () => {

@@ -31,9 +31,11 @@ export default {
       for (const run of r.runs) if (run.status === 'ok') (by[run.method] = by[run.method] || []).push([run.rhs_evaluations, run.max_position_error]);
       const ref = r.reference || {};
       const short = (v) => (v < 1e-3 ? v.toExponential() : String(v)); // 1e-8, 0.01: as the sweep says them
-      const setting = (x) => typeof x.dt === 'number' ? 'dt ' + short(x.dt) : typeof x.rtol === 'number' ? 'rtol ' + short(x.rtol) : '';
+      const setting1 = (x) => typeof x.dt === 'number' ? 'dt ' + short(x.dt) : typeof x.rtol === 'number' ? 'rtol ' + short(x.rtol) : '';
+      const setting = (x) => setting1(x) || (x.requested ? setting1(x.requested) : ''); // a run not run has only what was asked
       put(L.results, el('p', {}, `${r.runs.length} runs against the ${ref.kind || 'reference'} solution`,
-        ref.name ? ` (${ref.name})` : '', '.'),
+        ref.name ? ` (${ref.name})` : '', '.',
+        r.partial ? ' The budget ran out before every run finished: the rows marked "not run" say why.' : null),
         el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'setting', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
           r.runs.map(x => el('tr', {}, el('td', {}, x.method || (x.requested && x.requested.method) || '?'), el('td', {}, setting(x)),
             x.status === 'ok' ? [el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))]
