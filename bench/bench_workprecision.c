@@ -404,6 +404,7 @@ static enum mech_status solve_once(struct row *r, const struct mech_integrator *
         .flags = (sc->kind == SCENE_KEPLER || sc->kind == SCENE_OSC) ? MECH_ODE_VELOCITY_FREE : 0u,
         .params = (void *)sc,
         .lorentz = sc->kind == SCENE_STIFF ? NULL : scene_lorentz, /* drag has no Lorentz split */
+        .particle_dim = 3, /* one body in 3-D */
     };
     struct mech_ode_options opt = {0, 0, 0};
     if (r->adaptive) {

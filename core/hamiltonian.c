@@ -660,6 +660,21 @@ static enum mech_status ens_ode_accel(double t, const double *q, const double *v
     return ens_accel(params, q, a);
 }
 
+/* Components of q that are one point's Cartesian coordinates, for step-size
+ * control per particle (mech_ode_system.particle_dim): x (, y (, z)) of the
+ * oscillator, Hénon–Heiles and potential_3d; 1 for generalised coordinates
+ * (the pendulum's angle, the cylinder's z and phi), never put under one norm.
+ * Each trajectory and each tangent of the ensemble is a block of dof. */
+static size_t ham_particle_dim(const struct mech_ham_system *s)
+{
+    switch (s->kind) {
+    case MECH_HAM_OSCILLATOR:
+    case MECH_HAM_HENON_HEILES:
+    case MECH_HAM_POTENTIAL_3D: return (size_t)s->dof;
+    default: return 1;
+    }
+}
+
 enum mech_status mech_ham_ensemble_init(struct mech_ham_ensemble *e,
                                         const struct mech_ham_system *s, size_t n_traj,
                                         size_t n_tan, const struct mech_integrator *m,
@@ -685,6 +700,7 @@ enum mech_status mech_ham_ensemble_init(struct mech_ham_ensemble *e,
         e->second_order = 1;
         sys_out->accel = ens_ode_accel;
         sys_out->flags = MECH_ODE_VELOCITY_FREE;
+        sys_out->particle_dim = ham_particle_dim(s);
     }
     sys_out->dim = mech_ham_ensemble_dim(e);
     sys_out->rhs = ens_ode_rhs;

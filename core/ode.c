@@ -239,6 +239,13 @@ static enum mech_status check_problem(const struct mech_ode_problem *p,
     if ((f & MECH_INTEGRATOR_SECOND_ORDER) && (!p->sys->accel || p->sys->dim % 2 != 0))
         return mech_error_set(err, MECH_EINVAL, "integrator/method",
                               "method %s needs a second-order system", p->method->name);
+    if ((f & MECH_INTEGRATOR_SECOND_ORDER) &&
+        (p->sys->particle_dim > 3 ||
+         (p->sys->particle_dim > 0 && (p->sys->dim / 2) % p->sys->particle_dim != 0)))
+        return mech_error_set(err, MECH_EINVAL, NULL,
+                              "particle_dim %zu does not divide the %zu coordinates into "
+                              "points of 1 to 3 components",
+                              p->sys->particle_dim, p->sys->dim / 2);
     if (f & MECH_INTEGRATOR_ADAPTIVE) {
         if (!p->method->evolve)
             return mech_error_set(err, MECH_EINTERNAL, NULL, "adaptive method without evolve");

@@ -811,9 +811,10 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
 {
     const int dissipative = scene_has_drag(p);
     const int velocity_free = !scene_velocity_dependent(c);
+    /* one body: its 3 (planar: 2) coordinates are one particle */
     struct mech_ode_system sys = {6, traj_rhs, traj_accel,
                                   velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c,
-                                  dissipative ? NULL : traj_lorentz};
+                                  dissipative ? NULL : traj_lorentz, 3};
     double y0[6] = {p->position.x, p->position.y, p->position.z,
                     p->velocity.x, p->velocity.y, p->velocity.z};
     double u0[4], u_stop[4] = {0, 0, 0, 0};
@@ -821,7 +822,7 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     if (c->dim2) {
         /* planar: 4 components, r = u1 e1 + u2 e2 */
         sys = (struct mech_ode_system){4, plane_rhs, plane_accel,
-                                       velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c, NULL};
+                                       velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c, NULL, 2};
         u0[0] = mech_vec3_dot(p->position, c->e1);
         u0[1] = mech_vec3_dot(p->position, c->e2);
         u0[2] = mech_vec3_dot(p->velocity, c->e1);

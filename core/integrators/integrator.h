@@ -25,7 +25,9 @@
  * - The state vector is y = (q, v) with q' = v, v' = accel(t, q, v) when the
  *   system provides `accel` (second-order form, needed by methods flagged
  *   MECH_INTEGRATOR_SECOND_ORDER such as Störmer–Verlet, Yoshida, Boris); the
- *   first-order right-hand side `rhs` is always provided.
+ *   first-order right-hand side `rhs` is always provided. sys->particle_dim
+ *   says how q groups into points (1..3 components, checked by the driver);
+ *   step-size control that measures per body (radau15) reads it in evolve().
  * - Right-hand sides return enum mech_status: anything but MECH_OK stops the
  *   integration cleanly (a GSL stepper sees GSL_EBADFUNC) and the driver
  *   reports that status.

@@ -23,8 +23,11 @@
  * (2024) ("PRS23", REBOUND's default since 2024), which replaced the
  * original |b6|/|a| measure of IAS15 (measured here: 2.3x more steps on
  * Kepler e = 0.5 for the same energy error). From the converged polynomial,
- * per "particle" (3 components when dim/2 is a multiple of 3, else each
- * component), with n_k = |dt^k a^(k)| at the step's end:
+ * per "particle" (sys->particle_dim consecutive components of q, the
+ * coordinates of one point: 3 in space, 2 for a planar scene, 1 for
+ * unrelated coordinates; IAS15/PRS23 take the 3 of each body, and leave
+ * REBOUND's variational particles out, which we do not), with
+ * n_k = |dt^k a^(k)| at the step's end:
  *     (tau/dt)^2 = 2 n0^2 / (n1^2 + n2 n0)                       (PRS23)
  *     dt_new = min over particles of tau, times (5040 eps)^(1/7)
  * (5040 = 7!: the Taylor term a^(7) dt^7 / 7! relative to a). PRS23 alone
@@ -35,7 +38,10 @@
  * which stays at the true time scale, is used. As in IAS15, a step
  * with dt_new/dt < 1/4 is rejected and redone with dt_new, and growth is
  * limited to 4x per step. The b of the next step are predicted from the
- * last ones (IAS15's prediction from the previous step).
+ * last ones (IAS15's prediction from the previous step). Why the grouping
+ * matters (measured, Kepler e = 0.5, eps 1e-9): in the plane with x and y
+ * as separate particles, each passing through a = 0 twice per orbit, 79.6
+ * steps per orbit; as one particle of 2 components, 51.2, as in 3-D.
  *
  * rtol -> epsilon (documented mapping): eps = max(rtol, RADAU15_EPS_MIN),
  * RADAU15_EPS_MIN = 1e-9 (IAS15's default, chosen by its authors as the
@@ -340,19 +346,21 @@ static enum mech_status radau_iterate(struct radau_ws *w, struct radau_state *S,
     return MECH_OK;
 }
 
-/* Step-size time scale, in units of dt, minimum over "particles" (3
- * components when n is a multiple of 3, else each component) whose initial
- * acceleration is normal; +inf when none qualifies. With the derivatives of
- * the step's polynomial at its end, n_k = |dt^k a^(k)(1)|:
+/* Step-size time scale, in units of dt, minimum over "particles" (grp =
+ * sys->particle_dim consecutive components of q, norms over each; 0 counts
+ * as 1) whose initial acceleration is normal; +inf when none qualifies.
+ * With the derivatives of the step's polynomial at its end,
+ * n_k = |dt^k a^(k)(1)|:
  *   PRS23 (Pham, Rein & Spiegel 2024):  tau^2 = 2 n0^2 / (n1^2 + n2 n0),
  *   Aarseth (1985):                     tau^2 = (n0 n2 + n1^2) / (n1 n3 + n2^2).
  * PRS23 alone collapses where one particle's acceleration passes through 0
  * (a 1-D oscillator at x = 0: tau -> 0, the step shrinks without end);
  * Aarseth's ratio stays ~ the true time scale there (1 for x'' = -x). The
  * larger of the two is used per particle. */
-static double radau_timescale2(const struct radau_ws *w, const struct radau_state *S)
+static double radau_timescale2(const struct radau_ws *w, const struct radau_state *S,
+                               size_t grp)
 {
-    const size_t grp = w->n % 3 == 0 ? 3 : 1;
+    if (grp == 0 || grp > 3 || w->n % grp != 0) grp = 1; /* mech_ode_solve checked it */
     double best = INFINITY;
     for (size_t p0 = 0; p0 < w->n; p0 += grp) {
         double a0i = 0.0, y[4] = {0.0, 0.0, 0.0, 0.0};
@@ -552,7 +560,7 @@ static enum mech_status radau_evolve(void *ws, const struct mech_ode_system *sys
         if (!(pc <= RADAU15_PC_DIVERGED)) {
             dt_new = dt * RADAU15_SAFETY * 0.5; /* the fixed point diverged: reject */
         } else {
-            const double ts2 = radau_timescale2(w, S);
+            const double ts2 = radau_timescale2(w, S, sys->particle_dim);
             if (isnormal(ts2))
                 dt_new = sqrt(ts2) * dt * w->eps_factor; /* PRS23 */
             else

@@ -10,8 +10,9 @@
  *   - a stiff problem y' = -k (y - cos t), k = 1000, with its closed form:
  *     msbdf meets the tolerance at every sample with far fewer steps than
  *     rk8pd;
- *   - failing right-hand sides, budgets, events, determinism, and samples
- *     that do not perturb the main step sequence.
+ *   - failing right-hand sides, budgets, events, determinism, samples
+ *     that do not perturb the main step sequence, a particle_dim that does
+ *     not fit the system.
  * Measured figures are printed (steps, evaluations, errors, CPU time);
  * assertions never depend on timing.
  */
@@ -103,7 +104,7 @@ struct scene {
 static struct scene scene_ho(void)
 {
     struct scene s = {"oscillator",
-                      {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL},
+                      {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1},
                       ho_exact,
                       {1.0, 0.0},
                       2.0 * PI};
@@ -112,7 +113,7 @@ static struct scene scene_ho(void)
 static struct scene scene_kepler(void)
 {
     struct scene s = {"kepler",
-                      {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL},
+                      {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3},
                       kep_exact,
                       {1.0 - KEP_E, 0.0, 0.0, 0.0, sqrt((1.0 + KEP_E) / (1.0 - KEP_E)), 0.0},
                       2.0 * PI};
@@ -285,7 +286,8 @@ static void damped_exact(double t, double *y)
 static void test_radau15_velocity_dependent(void)
 {
     struct scene sc = {
-        "damped", {2, damped_rhs, damped_accel, 0, NULL, NULL}, damped_exact, {1.0, 0.0}, 2.0 * PI};
+        "damped", {2, damped_rhs, damped_accel, 0, NULL, NULL, 1}, damped_exact, {1.0, 0.0},
+        2.0 * PI};
     static struct run r;
     run_scene(&sc, "radau15", 1e-12, 0.0, 5.0, NS, &r);
     CHECK_EQ_INT(r.st, MECH_OK);
@@ -312,7 +314,7 @@ static void stiff_exact(double t, double *y)
 
 static void test_stiff(void)
 {
-    struct scene sc = {"stiff", {1, stiff_rhs, NULL, 0, NULL, NULL}, stiff_exact, {0.0}, 1.0};
+    struct scene sc = {"stiff", {1, stiff_rhs, NULL, 0, NULL, NULL, 0}, stiff_exact, {0.0}, 1.0};
     const double rtols[] = {1e-5, 1e-7, 1e-9};
     for (int k = 0; k < 3; k++) {
         static struct run rb, rr;
@@ -359,9 +361,10 @@ static enum mech_status nan_rhs(double t, const double *y, double *dydt, void *p
 
 static void test_failures_and_budgets(void)
 {
-    struct mech_ode_system failing = {2, fail_rhs, fail_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL};
-    struct mech_ode_system nan_sys = {2, nan_rhs, nan_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL};
-    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL};
+    struct mech_ode_system failing = {2, fail_rhs, fail_accel, MECH_ODE_VELOCITY_FREE,
+                                      NULL, NULL, 1};
+    struct mech_ode_system nan_sys = {2, nan_rhs, nan_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
+    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
     for (int m = 0; m < N_ADAPTIVE; m++) {
         double y0[2] = {1.0, 0.0}, ys[2 * 5];
         struct mech_ode_problem p = {0};
@@ -406,7 +409,7 @@ static void test_failures_and_budgets(void)
         printf("%s: failing rhs, NaN, step budget and deadline stop cleanly\n", ADAPTIVE[m]);
     }
     /* radau15 needs the second-order form */
-    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, NULL, NULL};
+    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, NULL, NULL, 0};
     double y0[2] = {1.0, 0.0};
     struct mech_ode_problem p = {0};
     p.sys = &first_order;
@@ -421,6 +424,18 @@ static void test_failures_and_budgets(void)
     mech_error_clear(&e);
     CHECK_EQ_INT(mech_ode_solve(&p, &b, &r, &e), MECH_EINVAL);
     CHECK(strcmp(e.param, "integrator/method") == 0);
+    /* particle_dim must cut q into points of 1 to 3 components: 2 does not
+     * divide Kepler's 3 coordinates, 6 is no point; 3 and 0 (= 1) run */
+    struct scene kep = scene_kepler();
+    p.sys = &kep.sys;
+    p.y0 = kep.y0;
+    const size_t pds[] = {2, 6, 3, 0};
+    for (int k = 0; k < 4; k++) {
+        kep.sys.particle_dim = pds[k];
+        mech_error_clear(&e);
+        CHECK_EQ_INT(mech_ode_solve(&p, &b, &r, &e), k < 2 ? MECH_EINVAL : MECH_OK);
+        if (k < 2) CHECK(strstr(e.text, "particle_dim") != NULL);
+    }
 }
 
 /* Samples do not perturb the main step sequence; repeated runs are
@@ -475,7 +490,7 @@ static double x_event(double t, const double *y, void *p)
 }
 static void test_event(void)
 {
-    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL};
+    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
     for (int m = 0; m < N_ADAPTIVE; m++) {
         double y0[2] = {1.0, 0.0}, ystop[2], ts[11];
         struct mech_ode_problem p = {0};
@@ -522,7 +537,7 @@ static void test_scales(void)
     for (int k = 0; k < 2; k++)
         for (int m = 0; m < 2; m++) {
             double w = ws[k];
-            struct mech_ode_system sys = {2, wo_rhs, wo_accel, MECH_ODE_VELOCITY_FREE, &w, NULL};
+            struct mech_ode_system sys = {2, wo_rhs, wo_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
             double y0[2] = {1.0, 0.0}, ys[2 * 2];
             struct mech_ode_problem p = {0};
             p.sys = &sys;

@@ -2,7 +2,8 @@
  * closed forms: oscillator, pendulum period (complete elliptic integral),
  * spherical pendulum's conical motion, the cylinder, circular Kepler and
  * power-law orbits (also at solar-system scale); the variational equations
- * against central differences; typed errors at the singularities. */
+ * against central differences; typed errors at the singularities; the
+ * second-order form's grouping of coordinates into points for radau15. */
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
@@ -275,6 +276,39 @@ static void test_tangent(void)
     }
 }
 
+/* The second-order form tells radau15 which coordinates are one point
+ * (mech_ode_system.particle_dim): x, y (, z) of the 2-D oscillator,
+ * Hénon–Heiles and potential_3d as one vector, so its step control sees |a|
+ * and not a coordinate passing through 0; the pendulum's angle and the
+ * cylinder's (z, phi), of different units, each on its own. */
+static void test_radau15_grouping(void)
+{
+    const struct {
+        struct mech_ham_system s;
+        size_t want;
+    } cases[] = {
+        {{.kind = MECH_HAM_OSCILLATOR, .dof = 2, .mass = 1.0, .k = {1.0, 1.0}}, 2},
+        {{.kind = MECH_HAM_OSCILLATOR, .dof = 1, .mass = 1.0, .k = {1.0}}, 1},
+        {{.kind = MECH_HAM_HENON_HEILES}, 2},
+        {{.kind = MECH_HAM_POTENTIAL_3D, .mass = 1.0, .potential = MECH_HAM_POT_HARMONIC,
+          .k = {1.0, 1.0, 1.0}},
+         3},
+        {{.kind = MECH_HAM_PENDULUM, .mass = 1.0, .length = 1.0, .g = 9.8}, 1},
+        {{.kind = MECH_HAM_CYLINDER, .mass = 1.0, .radius = 1.0, .strength = 1.0}, 1},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        struct mech_ham_system s = cases[i].s;
+        CHECK_EQ_INT(mech_ham_system_check(&s, NULL), MECH_OK);
+        struct mech_ham_ensemble e;
+        struct mech_ode_system ode;
+        CHECK_EQ_INT(mech_ham_ensemble_init(&e, &s, 2, 1, mech_ode_method_find("radau15"), &ode,
+                                            NULL),
+                     MECH_OK);
+        CHECK_EQ_INT((long)ode.particle_dim, (long)cases[i].want);
+        CHECK((ode.dim / 2) % ode.particle_dim == 0);
+    }
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -285,5 +319,6 @@ int main(void)
     test_central();
     test_potential_3d_and_hh();
     test_tangent();
+    test_radau15_grouping();
     TEST_MAIN_END();
 }

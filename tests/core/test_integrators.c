@@ -68,7 +68,7 @@ static double ho_error(const char *name, double dt, double rtol, double t_end,
                        struct mech_ode_stats *stats_out)
 {
     double w = 1.0;
-    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL};
+    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
     double y0[2] = {1.0, 0.0};
     double ys[2 * 11];
     struct mech_ode_problem p = {0};
@@ -177,7 +177,7 @@ static void test_oscillator(void)
 static void test_samples_do_not_perturb(void)
 {
     double w = 1.0;
-    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL};
+    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
     double y0[2] = {1.0, 0.0};
     static double ys_many[2 * 1001];
     double ys_two[4];
@@ -214,7 +214,7 @@ static void test_samples_do_not_perturb(void)
 static void test_free_fall_event(void)
 {
     const double h = 100.0, t_exact = sqrt(2.0 * h / G0);
-    struct mech_ode_system sys = {2, ff_rhs, ff_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL};
+    struct mech_ode_system sys = {2, ff_rhs, ff_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
     for (size_t i = 0; i < mech_ode_method_count(); i++) {
         const struct mech_integrator *m = mech_ode_method_at(i);
         double y0[2] = {h, 0.0}, ystop[2], ts[101];
@@ -310,7 +310,7 @@ static void test_free_fall_event(void)
 static void test_budget_and_failures(void)
 {
     double w = 1.0;
-    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL};
+    struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
     double y0[2] = {1.0, 0.0}, ys[2 * 5];
     struct mech_ode_problem p = {0};
     p.sys = &sys;
@@ -374,7 +374,7 @@ static void test_budget_and_failures(void)
     CHECK_EQ_INT(mech_ode_solve(&p, &b, &r, NULL), MECH_EINVAL);
 
     /* verlet needs the second-order form */
-    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, &w, NULL};
+    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, &w, NULL, 0};
     p.sys = &first_order;
     p.n_samples = 5;
     p.method = mech_ode_method_find("verlet");
@@ -386,7 +386,7 @@ static void test_budget_and_failures(void)
     /* a failing right-hand side stops every method with its status, through
      * GSL's GSL_EBADFUNC for the adaptive ones; the same workspace-free
      * driver then runs again cleanly */
-    struct mech_ode_system bad = {2, bad_rhs, NULL, 0, NULL, NULL};
+    struct mech_ode_system bad = {2, bad_rhs, NULL, 0, NULL, NULL, 0};
     p.sys = &bad;
     p.t_end = 1.0;
     p.opt.rtol = 1e-8;
@@ -412,7 +412,7 @@ static void test_scales(void)
     const double ws[] = {1e6, 1e-6};
     for (int k = 0; k < 2; k++) {
         double w = ws[k];
-        struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL};
+        struct mech_ode_system sys = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
         double y0[2] = {1.0, 0.0}, ys[2 * 2];
         struct mech_ode_problem p = {0};
         p.sys = &sys;

@@ -165,8 +165,9 @@ struct mech_ham_ensemble {
 };
 
 /* Set up e and sys_out for method m: second-order form when m needs it (then
- * the system must be separable: else EINVAL with param "integrator/method").
- * e must outlive sys_out. */
+ * the system must be separable: else EINVAL with param "integrator/method"),
+ * with particle_dim = dof where q are one point's Cartesian coordinates
+ * (oscillator, henon_heiles, potential_3d), else 1. e must outlive sys_out. */
 enum mech_status mech_ham_ensemble_init(struct mech_ham_ensemble *e,
                                         const struct mech_ham_system *s, size_t n_traj,
                                         size_t n_tan, const struct mech_integrator *m,

@@ -56,6 +56,17 @@ struct mech_ode_system {
     unsigned flags;          /* MECH_ODE_* */
     void *params;            /* passed to rhs/accel, borrowed */
     mech_ode_lorentz_fn lorentz; /* optional Lorentz-type split (Boris); NULL if none */
+    /* Second-order form only: q = (q_0 .. q_{nq-1}) is a sequence of
+     * "particles" of particle_dim consecutive components each, the Cartesian
+     * coordinates of one point (2 for a planar scene, 3 in space). Step-size
+     * control that measures accelerations per particle (radau15) takes the
+     * Euclidean norm over one particle's components, so it sees |a| of a body
+     * rather than a coordinate that passes through 0. 1, 2 or 3, dividing
+     * nq = dim/2; 0 means 1: each component on its own, right for unrelated
+     * or generalised coordinates (an angle and a length), which must never be
+     * put under one norm. Ignored by first-order-only methods; a value that
+     * does not fit is MECH_EINVAL from mech_ode_solve. */
+    size_t particle_dim;
 };
 
 struct mech_ode_options {
@@ -146,10 +157,11 @@ struct mech_ode_result {
  * res holds what was written so far.
  *
  * Statuses: MECH_OK; MECH_EINVAL (bad problem: NULLs, dim 0, t_end <= t0,
- * n_samples < 2, a method that needs sys->accel without it, tolerances out
- * of range: param "integrator/rtol" etc.); MECH_EBUDGET, MECH_EDEADLINE,
- * MECH_ECANCELLED; MECH_ENUMERIC (non-finite state, step size underflow,
- * implicit stage not converging); MECH_ENOMEM; whatever the rhs/observer
+ * n_samples < 2, a method that needs sys->accel without it, a
+ * sys->particle_dim that does not fit it, tolerances out of range: param
+ * "integrator/rtol" etc.); MECH_EBUDGET, MECH_EDEADLINE, MECH_ECANCELLED;
+ * MECH_ENUMERIC (non-finite state, step size underflow, implicit stage not
+ * converging); MECH_ENOMEM; whatever the rhs/observer
  * returned. Never writes a non-finite sample. */
 enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct mech_budget *budget,
                                 struct mech_ode_result *res, struct mech_error *err);
