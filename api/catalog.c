@@ -23,7 +23,11 @@ static const char service_description[] =
     "unless a field says otherwise; 4-vectors are [ct, x, y, z] with metric (-,+,+,+); "
     "rotations are passive. Errors are application/problem+json (RFC 9457). Every POST "
     "operation also answers GET with ?request=<url-encoded JSON body>: the same bytes without "
-    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match.";
+    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match "
+    "(an answer that depended on load, such as a batch item stopped by the deadline, gets "
+    "Cache-Control: no-store and no ETag). The URL and headers must fit in about 32 KB "
+    "(longer gets 414): POST longer requests. Every problem carries instance, the request "
+    "path. A request may ask for at most --max-samples samples in all (default 200000).";
 
 /* Server-level resources that are not operations of the route table. */
 static const struct {
@@ -90,7 +94,9 @@ static json_t *get_variant(size_t i, const char *opid)
     snprintf(id, sizeof id, "%s_get", opid);
     json_t *param = json_pack("{s:s,s:s,s:b,s:s,s:{s:{s:O}}}", "name", "request", "in", "query",
                               "required", 1, "description",
-                              "the request body as URL-encoded JSON", "content",
+                              "the request body as URL-encoded JSON; the URL and headers must "
+                              "fit in about 32 KB (longer gets 414 from libmicrohttpd): POST "
+                              "longer requests", "content",
                               "application/json", "schema", api_route_schema(i));
     json_t *etag_hdr = json_pack("{s:s,s:{s:s}}", "description",
                                  "strong tag of (build, path, canonical request)", "schema",

@@ -25,6 +25,10 @@ struct api_call {
     char detail[256];            /* problem detail */
     json_t *extra;               /* extra members for the problem (e.g. progress), owned */
     int nonfinite;               /* set when a non-finite number was encoded */
+    int depends_on_load;         /* set by a handler whose answer depended on load or time (an
+                                    item or run stopped by the deadline or a budget, a partial
+                                    result): the answer is then never cached and gets no ETag
+                                    (Cache-Control: no-store), whatever its status */
 };
 
 /* Handler: returns a new reference to the result object, or NULL after
