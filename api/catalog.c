@@ -86,6 +86,11 @@ static json_t *problem_response(const char *description)
                      "#/components/schemas/Problem");
 }
 
+/* What an operation's 422 may be. */
+static const char status_422[] =
+    "Validation, domain, compute-budget or answer-too-large (more samples in all than the "
+    "server's --max-samples) error.";
+
 /* The GET ?request= form of POST operation i (see api.h, api_handle_ext). */
 static json_t *get_variant(size_t i, const char *opid)
 {
@@ -114,7 +119,7 @@ static json_t *get_variant(size_t i, const char *opid)
     json_decref(cc_hdr);
     json_t *responses = json_pack("{s:o,s:o,s:o,s:o,s:o,s:o}", "200", ok, "304", nm, "400",
                                   problem_response("The request parameter is not JSON."), "422",
-                                  problem_response("Validation, domain or compute-budget error."),
+                                  problem_response(status_422),
                                   "500", problem_response("Internal error."), "503",
                                   problem_response("Queue full or shutting down; see Retry-After."));
     return json_pack("{s:s,s:s,s:s,s:[o],s:o}", "operationId", id, "summary", r->summary,
@@ -147,7 +152,7 @@ static json_t *build_openapi(void)
             "The result.", "content", "application/json", "schema", "type", "object", "400",
             problem_response("Malformed JSON."), "413", problem_response("Body too large."),
             "415", problem_response("Not application/json."), "422",
-            problem_response("Validation, domain or compute-budget error."), "500",
+            problem_response(status_422), "500",
             problem_response("Internal error."), "503",
             problem_response("Queue full or shutting down; see Retry-After."), "405",
             problem_response("Wrong method."));
