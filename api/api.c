@@ -28,8 +28,11 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
-/* Per route: its schema's default for a top-level "samples" (0 if none). */
+/* Per route: its schema's default for a top-level "samples" (0 if none), and
+ * whether its requests can ask for samples at all (its schema names samples,
+ * or it runs other operations: /v1/batch, /v1/check). */
 static double *route_default_samples;
+static unsigned char *route_counts_samples;
 static int init_status = -1;
 static char init_error[300] = "api_init not run";
 static pthread_once_t init_once = PTHREAD_ONCE_INIT;
@@ -152,7 +155,8 @@ static int init_routes(void)
     route_schemas = calloc(api_route_count, sizeof *route_schemas);
     route_compiled = calloc(api_route_count, sizeof *route_compiled);
     route_default_samples = calloc(api_route_count, sizeof *route_default_samples);
-    if (!route_schemas || !route_compiled || !route_default_samples) {
+    route_counts_samples = calloc(api_route_count, sizeof *route_counts_samples);
+    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples) {
         snprintf(init_error, sizeof init_error, "out of memory");
         return -1;
     }
@@ -178,6 +182,8 @@ static int init_routes(void)
         json_t *def = json_object_get(
             json_object_get(json_object_get(s, "properties"), "samples"), "default");
         route_default_samples[i] = json_is_number(def) ? json_number_value(def) : 0;
+        route_counts_samples[i] =
+            strstr(r->schema, "\"samples\"") != NULL || strstr(r->schema, "\"operation\"") != NULL;
         /* Checked and compiled once; requests are validated against the tree. */
         route_compiled[i] = api_schema_compile(s, msg, sizeof msg);
         if (!route_compiled[i]) {
@@ -414,6 +420,8 @@ static void samples_add(struct sample_count *sc, double n, const char *ptr)
     }
 }
 
+/* Add up the samples under v. ptr (may be NULL: count only, the fast first
+ * pass) holds v's JSON pointer in ptr[0..len) of cap bytes. */
 static void samples_walk(const json_t *v, char *ptr, size_t len, size_t cap,
                          struct sample_count *sc, int depth)
 {
@@ -422,52 +430,67 @@ static void samples_walk(const json_t *v, char *ptr, size_t len, size_t cap,
         const char *key;
         json_t *m;
         json_object_foreach((json_t *)v, key, m) {
-            size_t n = pointer_push(ptr, len, cap, key);
+            if (!json_is_object(m) && !json_is_array(m) && strcmp(key, "samples") != 0) continue;
+            size_t n = ptr ? pointer_push(ptr, len, cap, key) : 0;
             if (!strcmp(key, "samples") && json_is_number(m) && json_number_value(m) > 0)
-                samples_add(sc, json_number_value(m), ptr);
+                samples_add(sc, json_number_value(m), ptr ? ptr : "");
             else
                 samples_walk(m, ptr, n, cap, sc, depth + 1);
-            ptr[len] = '\0';
+            if (ptr) ptr[len] = '\0';
         }
         /* An item of /v1/batch or /v1/check: its operation's default samples. */
         const json_t *op = json_object_get(v, "operation"), *rq = json_object_get(v, "request");
         if (json_is_string(op) && json_is_object(rq) && !json_object_get(rq, "samples")) {
             long ri = route_index(json_string_value(op));
-            if (ri >= 0 && route_default_samples && route_default_samples[ri] > 0) {
-                size_t n = pointer_push(ptr, len, cap, "request");
-                samples_add(sc, route_default_samples[ri], ptr);
-                ptr[len] = '\0';
-                (void)n;
+            if (ri >= 0 && route_default_samples[ri] > 0) {
+                if (ptr) pointer_push(ptr, len, cap, "request");
+                samples_add(sc, route_default_samples[ri], ptr ? ptr : "");
+                if (ptr) ptr[len] = '\0';
             }
         }
     } else if (json_is_array(v)) {
         size_t i;
         json_t *m;
         json_array_foreach(v, i, m) {
-            char idx[24];
-            snprintf(idx, sizeof idx, "%zu", i);
-            size_t n = pointer_push(ptr, len, cap, idx);
+            if (!json_is_object(m) && !json_is_array(m)) continue; /* numbers: nothing under */
+            size_t n = 0;
+            if (ptr) {
+                char idx[24];
+                snprintf(idx, sizeof idx, "%zu", i);
+                n = pointer_push(ptr, len, cap, idx);
+            }
             samples_walk(m, ptr, n, cap, sc, depth + 1);
-            ptr[len] = '\0';
+            if (ptr) ptr[len] = '\0';
         }
     }
 }
 
+/* Count the samples of body for route ri; ptr as in samples_walk. */
+static void samples_count(size_t ri, const json_t *body, char *ptr, size_t len, size_t cap,
+                          struct sample_count *sc)
+{
+    if (!json_object_get(body, "samples") && route_default_samples[ri] > 0)
+        samples_add(sc, route_default_samples[ri], ptr ? ptr : "");
+    samples_walk(body, ptr, len, cap, sc, 0);
+}
+
 /* NULL if body's samples fit in cap, else the problem naming where they pass
- * it (new reference). */
+ * it (new reference). Routes whose schema has no samples and no nested
+ * operations (most closed forms: a boost, an inertia) are not walked. */
 static json_t *answer_budget_problem(size_t ri, const json_t *body, const char *prefix,
                                      long cap)
 {
+    if (!route_counts_samples[ri]) return NULL;
     struct sample_count sc;
+    memset(&sc, 0, sizeof sc);
+    sc.cap = (double)cap;
+    samples_count(ri, body, NULL, 0, 0, &sc); /* the usual case: fits, no pointers built */
+    if (!sc.passed) return NULL;
     memset(&sc, 0, sizeof sc);
     sc.cap = (double)cap;
     char ptr[300];
     snprintf(ptr, sizeof ptr, "%s", prefix ? prefix : "");
-    size_t len = strlen(ptr);
-    if (!json_object_get(body, "samples") && route_default_samples[ri] > 0)
-        samples_add(&sc, route_default_samples[ri], ptr);
-    samples_walk(body, ptr, len, sizeof ptr, &sc, 0);
-    if (!sc.passed) return NULL;
+    samples_count(ri, body, ptr, strlen(ptr), sizeof ptr, &sc);
     char d[300];
     snprintf(d, sizeof d,
              "the request asks for %.0f samples in all; this server answers at most %ld per "
@@ -740,7 +763,8 @@ static int accepts_gzip(const char *h)
             }
             while (*h && *h != ',' && *h != ';') h++;
         }
-        if ((nl == 4 && !strncasecmp(name, "gzip", 4)) || (nl == 6 && !strncasecmp(name, "x-gzip", 6)))
+        if ((nl == 4 && !strncasecmp(name, "gzip", 4)) ||
+            (nl == 6 && !strncasecmp(name, "x-gzip", 6)))
             gzip = ok;
         else if (nl == 1 && *name == '*')
             star = ok;
