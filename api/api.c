@@ -13,6 +13,7 @@
 #include <strings.h>
 
 #include <jansson.h>
+#include <zlib.h>
 
 #include "catalog.h"
 #include "json_arena.h"
@@ -27,6 +28,11 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
+/* Per route: its schema's default for a top-level "samples" (0 if none), and
+ * whether its requests can ask for samples at all (its schema names samples,
+ * or it runs other operations: /v1/batch, /v1/check). */
+static double *route_default_samples;
+static unsigned char *route_counts_samples;
 static int init_status = -1;
 static char init_error[300] = "api_init not run";
 static pthread_once_t init_once = PTHREAD_ONCE_INIT;
@@ -80,11 +86,91 @@ static void install_json_allocator(void)
     json_set_alloc_funcs(json_malloc_checked, json_free_checked);
 }
 
+/* ---- GET /v1 and /v1/openapi.json: ETag, gzip, 304 ---------------------------------
+ *
+ * Both documents are fixed for the life of the process (generated from the
+ * route table at init), 0.5 and 1.2 MB of JSON that gzip shrinks tenfold. Each
+ * is kept with a gzip copy (zlib, level 6: 55 and 89 KB, 15 ms together; made
+ * on the first request that accepts gzip, so `mechd eval` and a server that
+ * is never asked pay nothing) and a strong ETag per
+ * representation: FNV-1a 64 of (build, the identity text), with "-gz" for the
+ * gzip one. Served as static memory (no copy per request), Cache-Control
+ * "no-cache" (a cache may keep them but revalidates: they change with the
+ * build), Vary: Accept-Encoding, and 304 with the 200's Content-Length for a
+ * matching If-None-Match. */
+struct doc_cache {
+    const char *text; /* borrowed from catalog.c */
+    size_t len;
+    unsigned char *gz; /* gzip of text, or NULL (then only identity is served) */
+    size_t gz_len;
+    char etag[24], etag_gz[24];
+    pthread_once_t gz_once; /* doc_gzip runs once, on first use */
+};
+static struct doc_cache doc_catalog = {.gz_once = PTHREAD_ONCE_INIT},
+                        doc_openapi = {.gz_once = PTHREAD_ONCE_INIT};
+
+static uint64_t fnv1a(uint64_t h, const char *s);
+
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID ""
+#endif
+
+/* gzip (RFC 1952) of text into d->gz; left NULL when memory runs out. */
+static int doc_gzip(struct doc_cache *d)
+{
+    z_stream zs;
+    memset(&zs, 0, sizeof zs);
+    if (deflateInit2(&zs, 6, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK) return -1;
+    uLong cap = deflateBound(&zs, (uLong)d->len);
+    d->gz = malloc(cap);
+    if (!d->gz) {
+        deflateEnd(&zs);
+        return -1;
+    }
+    zs.next_in = (Bytef *)(uintptr_t)d->text;
+    zs.avail_in = (uInt)d->len;
+    zs.next_out = d->gz;
+    zs.avail_out = (uInt)cap;
+    int rc = deflate(&zs, Z_FINISH);
+    d->gz_len = zs.total_out;
+    deflateEnd(&zs);
+    if (rc != Z_STREAM_END) {
+        free(d->gz);
+        d->gz = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+static int doc_init(struct doc_cache *d, const char *text)
+{
+    if (!text) return -1;
+    d->text = text;
+    d->len = strlen(text);
+    uint64_t h = fnv1a(0xcbf29ce484222325ULL, "mechd " MECHD_VERSION " " MECHD_BUILD_ID);
+    h = fnv1a(h, text);
+    snprintf(d->etag, sizeof d->etag, "\"%016llx\"", (unsigned long long)h);
+    snprintf(d->etag_gz, sizeof d->etag_gz, "\"%016llx-gz\"", (unsigned long long)h);
+    return 0;
+}
+
+static void gzip_catalog(void)
+{
+    doc_gzip(&doc_catalog);
+}
+
+static void gzip_openapi(void)
+{
+    doc_gzip(&doc_openapi);
+}
+
 static int init_routes(void)
 {
     route_schemas = calloc(api_route_count, sizeof *route_schemas);
     route_compiled = calloc(api_route_count, sizeof *route_compiled);
-    if (!route_schemas || !route_compiled) {
+    route_default_samples = calloc(api_route_count, sizeof *route_default_samples);
+    route_counts_samples = calloc(api_route_count, sizeof *route_counts_samples);
+    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples) {
         snprintf(init_error, sizeof init_error, "out of memory");
         return -1;
     }
@@ -112,6 +198,11 @@ static int init_routes(void)
             snprintf(init_error, sizeof init_error, "%s: schema: %s", r->path, msg);
             return -1;
         }
+        json_t *def = json_object_get(
+            json_object_get(json_object_get(s, "properties"), "samples"), "default");
+        route_default_samples[i] = json_is_number(def) ? json_number_value(def) : 0;
+        route_counts_samples[i] =
+            strstr(r->schema, "\"samples\"") != NULL || strstr(r->schema, "\"operation\"") != NULL;
         /* Checked and compiled once; requests are validated against the tree. */
         route_compiled[i] = api_schema_compile(s, msg, sizeof msg);
         if (!route_compiled[i]) {
@@ -129,6 +220,10 @@ static int init_routes(void)
         }
     }
     if (api_catalog_init(init_error, sizeof init_error)) return -1;
+    if (doc_init(&doc_catalog, api_catalog_text()) || doc_init(&doc_openapi, api_openapi_text())) {
+        snprintf(init_error, sizeof init_error, "the catalog or OpenAPI text is missing");
+        return -1;
+    }
     return 0;
 }
 
@@ -253,11 +348,18 @@ static void method_not_allowed(struct api_response *resp, const char *want)
 struct full_request {
     struct api_request req; /* first member */
     int no_cost;
+    long max_samples; /* > 0 */
 };
 
 static int request_no_cost(const struct api_request *req)
 {
     return req ? ((const struct full_request *)(const void *)req)->no_cost : 0;
+}
+
+static long request_max_samples(const struct api_request *req)
+{
+    return req ? ((const struct full_request *)(const void *)req)->max_samples
+               : API_DEFAULT_MAX_SAMPLES;
 }
 
 /* Copy of `errors` with every pointer prefixed (new reference). */
@@ -292,16 +394,156 @@ static json_t *problem_json(enum api_problem kind, const char *detail, const jso
     return p;
 }
 
-/* The pipeline after parsing: schema validation, the handler, the non-finite
- * check, cost accounting. Returns the HTTP status and sets *out to the answer
- * or the problem object (new reference; NULL only when memory ran out). Error
- * pointers are prefixed with prefix ("" at top level). note gets the reason
- * of a 500 for the log. no_cost: an enclosing request (a batch) asked for no
- * measured cost. *no_store is set to 1 when the answer depends on load or the
- * deadline (never cache it), else left alone. */
+/* ---- the answer budget: samples, counted before computing ------------------------
+ *
+ * An answer grows with the samples it is asked for (t, position, velocity... per
+ * sample), so the samples of one request are bounded as a whole: the sum of
+ * every numeric "samples" member anywhere in the body (a batch's or check's
+ * items included: {"operation", "request"} objects whose request gives none
+ * count their operation's default) must not pass the request's max_samples.
+ * The count runs on the validated body, before the handler allocates anything. */
+struct sample_count {
+    double total, cap;
+    char where[300]; /* pointer of the member where total first passed cap */
+    int passed;
+};
+
+/* Append "/" + key (JSON-pointer escaped) to ptr[0..len); returns the new
+ * length, or len unchanged when it would not fit (the pointer is then cut). */
+static size_t pointer_push(char *ptr, size_t len, size_t cap, const char *key)
+{
+    size_t n = len;
+    if (n + 2 >= cap) return len;
+    ptr[n++] = '/';
+    for (const char *k = key; *k; k++) {
+        const char *esc = *k == '~' ? "~0" : *k == '/' ? "~1" : NULL;
+        size_t w = esc ? 2 : 1;
+        if (n + w + 1 >= cap) return len;
+        if (esc) {
+            memcpy(ptr + n, esc, 2);
+        } else {
+            ptr[n] = *k;
+        }
+        n += w;
+    }
+    ptr[n] = '\0';
+    return n;
+}
+
+static void samples_add(struct sample_count *sc, double n, const char *ptr)
+{
+    sc->total += n;
+    if (!sc->passed && sc->total > sc->cap) {
+        sc->passed = 1;
+        snprintf(sc->where, sizeof sc->where, "%s", ptr);
+    }
+}
+
+/* Add up the samples under v. ptr (may be NULL: count only, the fast first
+ * pass) holds v's JSON pointer in ptr[0..len) of cap bytes. */
+static void samples_walk(const json_t *v, char *ptr, size_t len, size_t cap,
+                         struct sample_count *sc, int depth)
+{
+    if (depth > 64) return; /* the parser caps depth well below this */
+    if (json_is_object(v)) {
+        const char *key;
+        json_t *m;
+        json_object_foreach((json_t *)v, key, m) {
+            if (!json_is_object(m) && !json_is_array(m) && strcmp(key, "samples") != 0) continue;
+            size_t n = ptr ? pointer_push(ptr, len, cap, key) : 0;
+            if (!strcmp(key, "samples") && json_is_number(m) && json_number_value(m) > 0)
+                samples_add(sc, json_number_value(m), ptr ? ptr : "");
+            else
+                samples_walk(m, ptr, n, cap, sc, depth + 1);
+            if (ptr) ptr[len] = '\0';
+        }
+        /* An item of /v1/batch or /v1/check: its operation's default samples. */
+        const json_t *op = json_object_get(v, "operation"), *rq = json_object_get(v, "request");
+        if (json_is_string(op) && json_is_object(rq) && !json_object_get(rq, "samples")) {
+            long ri = route_index(json_string_value(op));
+            if (ri >= 0 && route_default_samples[ri] > 0) {
+                if (ptr) pointer_push(ptr, len, cap, "request");
+                samples_add(sc, route_default_samples[ri], ptr ? ptr : "");
+                if (ptr) ptr[len] = '\0';
+            }
+        }
+    } else if (json_is_array(v)) {
+        size_t i;
+        json_t *m;
+        json_array_foreach(v, i, m) {
+            if (!json_is_object(m) && !json_is_array(m)) continue; /* numbers: nothing under */
+            size_t n = 0;
+            if (ptr) {
+                char idx[24];
+                snprintf(idx, sizeof idx, "%zu", i);
+                n = pointer_push(ptr, len, cap, idx);
+            }
+            samples_walk(m, ptr, n, cap, sc, depth + 1);
+            if (ptr) ptr[len] = '\0';
+        }
+    }
+}
+
+/* Count the samples of body for route ri; ptr as in samples_walk. */
+static void samples_count(size_t ri, const json_t *body, char *ptr, size_t len, size_t cap,
+                          struct sample_count *sc)
+{
+    if (!json_object_get(body, "samples") && route_default_samples[ri] > 0)
+        samples_add(sc, route_default_samples[ri], ptr ? ptr : "");
+    samples_walk(body, ptr, len, cap, sc, 0);
+}
+
+/* NULL if body's samples fit in cap, else the problem naming where they pass
+ * it (new reference). Routes whose schema has no samples and no nested
+ * operations (most closed forms: a boost, an inertia) are not walked. */
+static json_t *answer_budget_problem(size_t ri, const json_t *body, const char *prefix,
+                                     long cap)
+{
+    if (!route_counts_samples[ri]) return NULL;
+    struct sample_count sc;
+    memset(&sc, 0, sizeof sc);
+    sc.cap = (double)cap;
+    samples_count(ri, body, NULL, 0, 0, &sc); /* the usual case: fits, no pointers built */
+    if (!sc.passed) return NULL;
+    memset(&sc, 0, sizeof sc);
+    sc.cap = (double)cap;
+    char ptr[300];
+    snprintf(ptr, sizeof ptr, "%s", prefix ? prefix : "");
+    samples_count(ri, body, ptr, strlen(ptr), sizeof ptr, &sc);
+    char d[300];
+    snprintf(d, sizeof d,
+             "the request asks for %.0f samples in all; this server answers at most %ld per "
+             "request (--max-samples): ask for fewer or split the request",
+             sc.total, cap);
+    json_t *p = api_problem_object(API_PROBLEM_ANSWER_TOO_LARGE, d);
+    char e[300];
+    snprintf(e, sizeof e, "the samples up to here make more than %ld, the limit of one request",
+             cap);
+    json_t *errors = json_array();
+    json_array_append_new(errors, api_error_entry(sc.where, e));
+    json_object_set_new_nocheck(p, "errors", errors);
+    json_object_set_new_nocheck(p, "limit", json_integer((json_int_t)cap));
+    json_object_set_new_nocheck(p, "requested", json_integer((json_int_t)sc.total));
+    return p;
+}
+
+/* Whether a problem kind says the answer depended on load or time. */
+static int problem_depends_on_load(enum api_problem k)
+{
+    return k == API_PROBLEM_BUDGET || k == API_PROBLEM_CANCELLED || k == API_PROBLEM_QUEUE_FULL;
+}
+
+/* The pipeline after parsing: schema validation, the answer budget, the
+ * handler, the non-finite check, cost accounting. Returns the HTTP status and
+ * sets *out to the answer or the problem object (new reference; NULL only
+ * when memory ran out). Error pointers are prefixed with prefix ("" at top
+ * level). note gets the reason of a 500 for the log. no_cost: an enclosing
+ * request (a batch) asked for no measured cost. *dep is set to 1 when the
+ * outcome depended on load or time (the handler said so, or a budget,
+ * deadline or cancellation stopped it), else left alone. */
 static int run_parsed(size_t ri, const struct api_request *req, const json_t *body,
                       const char *prefix, int no_cost, json_t **out, char *note, size_t note_n,
-                      int *no_store)
+                      int *dep)
 {
     const struct api_route *r = api_routes[ri];
     *out = NULL;
@@ -319,6 +561,12 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
         json_decref(errors);
         return api_problem_status(API_PROBLEM_VALIDATION);
     }
+    long cap = request_max_samples(req);
+    json_t *too_large = answer_budget_problem(ri, body, prefix, cap);
+    if (too_large) {
+        *out = too_large;
+        return api_problem_status(API_PROBLEM_ANSWER_TOO_LARGE);
+    }
 
     struct api_call call;
     memset(&call, 0, sizeof call);
@@ -335,13 +583,13 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
     double cpu0 = r->reports_cost ? mech_cpu_seconds() : 0.0;
     json_t *result = r->fn(&call, body);
     double cpu = r->reports_cost ? mech_cpu_seconds() - cpu0 : 0.0;
-    if (call.no_store && no_store) *no_store = 1;
 
     if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
         call.problem = API_PROBLEM_NUMERIC;
         snprintf(call.detail, sizeof call.detail,
                  "the result is not finite for this input (overflow or a singularity)");
     }
+    if (call.depends_on_load || problem_depends_on_load(call.problem)) *dep = 1;
     if (!result || call.problem != API_PROBLEM_NONE) {
         enum api_problem k = call.problem != API_PROBLEM_NONE ? call.problem : API_PROBLEM_INTERNAL;
         char d[300];
@@ -395,8 +643,10 @@ int api_run_operation(struct api_call *outer, const char *path, const json_t *re
     if (ri < 0 || strcmp(api_routes[ri]->method, "POST") != 0 || !outer || !outer->req) return -1;
     char note[200];
     note[0] = '\0';
+    int dep = 0;
     int status = run_parsed((size_t)ri, outer->req, request, pointer_prefix ? pointer_prefix : "",
-                            outer->no_cost, out, note, sizeof note, &outer->no_store);
+                            outer->no_cost, out, note, sizeof note, &dep);
+    if (dep) outer->depends_on_load = 1;
     if (!*out) {
         *out = problem_json(API_PROBLEM_INTERNAL, "internal error", NULL, NULL);
         status = 500;
@@ -443,9 +693,11 @@ static void run_body(size_t ri, const struct api_request *req, struct api_respon
     json_t *out = NULL;
     char note[200];
     note[0] = '\0';
-    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, NULL);
+    int dep = 0;
+    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &dep);
     json_decref(body);
     respond_outcome(resp, status, out, note);
+    resp->depends_on_load = dep;
 }
 
 static void run_operation(size_t ri, const struct api_request *req, struct api_response *resp)
@@ -466,10 +718,6 @@ static void run_operation(size_t ri, const struct api_request *req, struct api_r
 }
 
 /* ---- GET ?request= : determinism, ETag, 304 ------------------------------------- */
-
-#ifndef MECHD_BUILD_ID
-#define MECHD_BUILD_ID ""
-#endif
 
 /* FNV-1a 64 over the parts, each followed by a NUL separator. */
 static uint64_t fnv1a(uint64_t h, const char *s)
@@ -519,6 +767,60 @@ static int etag_matches(const char *header, const char *etag)
     return 0;
 }
 
+/* Whether an Accept-Encoding header value admits gzip (RFC 9110 12.5.3): listed
+ * as gzip or x-gzip with q > 0, or not listed while "*" is with q > 0. */
+static int accepts_gzip(const char *h)
+{
+    int gzip = -1, star = -1;
+    while (h && *h) {
+        while (*h == ' ' || *h == '\t' || *h == ',') h++;
+        if (!*h) break;
+        const char *name = h;
+        while (*h && *h != ',' && *h != ';' && *h != ' ' && *h != '\t') h++;
+        size_t nl = (size_t)(h - name);
+        int ok = 1; /* q defaults to 1 */
+        while (*h && *h != ',') {
+            while (*h == ';' || *h == ' ' || *h == '\t') h++;
+            if ((h[0] == 'q' || h[0] == 'Q') && h[1] == '=') {
+                ok = strtod(h + 2, NULL) > 0; /* a qvalue is 0..1 with at most 3 decimals */
+            }
+            while (*h && *h != ',' && *h != ';') h++;
+        }
+        if ((nl == 4 && !strncasecmp(name, "gzip", 4)) ||
+            (nl == 6 && !strncasecmp(name, "x-gzip", 6)))
+            gzip = ok;
+        else if (nl == 1 && *name == '*')
+            star = ok;
+    }
+    return gzip >= 0 ? gzip : star == 1;
+}
+
+/* GET/HEAD of /v1 or /v1/openapi.json (see doc_cache above). */
+static void serve_doc(struct doc_cache *d, const struct api_request_ext *ext,
+                      struct api_response *resp)
+{
+    int gz = ext && accepts_gzip(ext->accept_encoding);
+    if (gz) pthread_once(&d->gz_once, d == &doc_catalog ? gzip_catalog : gzip_openapi);
+    gz = gz && d->gz;
+    const char *etag = gz ? d->etag_gz : d->etag;
+    size_t len = gz ? d->gz_len : d->len;
+    memset(resp, 0, sizeof *resp);
+    snprintf(resp->etag, sizeof resp->etag, "%s", etag);
+    resp->cache_control = "no-cache";
+    resp->vary = "Accept-Encoding";
+    if (ext && etag_matches(ext->if_none_match, etag)) {
+        resp->status = 304;
+        resp->full_length = len;
+        return;
+    }
+    resp->status = 200;
+    resp->content_type = "application/json";
+    resp->body = gz ? (char *)d->gz : (char *)(uintptr_t)d->text;
+    resp->body_len = len;
+    resp->body_static = 1;
+    resp->content_encoding = gz ? "gzip" : NULL;
+}
+
 static void run_query(size_t ri, const struct api_request *req, const struct api_request_ext *ext,
                       struct api_response *resp)
 {
@@ -550,11 +852,15 @@ static void run_query(size_t ri, const struct api_request *req, const struct api
     json_t *out = NULL;
     char note[200];
     note[0] = '\0';
-    int no_store = 0; /* a partial answer (deadline, load) is never cached */
-    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &no_store);
+    int dep = 0;
+    int status = run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &dep);
     json_decref(body);
     respond_outcome(resp, status, out, note);
-    if (resp->status == 200 && etag[0] && !no_store) {
+    /* An answer that depended on load (a batch item stopped by the deadline,
+     * a partial result) is not the answer of this request: it must neither be
+     * cached nor carry the ETag the full answer has. */
+    resp->depends_on_load = dep;
+    if (resp->status == 200 && etag[0] && !dep) {
         snprintf(resp->etag, sizeof resp->etag, "%s", etag);
         resp->cache_control = "public, max-age=86400";
     } else {
@@ -579,6 +885,9 @@ void api_handle_ext(const struct api_request *req0, const struct api_request_ext
         api_respond_out_of_memory(resp);
         snprintf(resp->note, sizeof resp->note, "out of memory while building the answer");
     }
+    /* RFC 9457 instance: the request path (the same bytes with or without a
+     * server, so `mechd eval` matches; X-Request-Id names the occurrence). */
+    api_response_set_instance(resp, req0 && req0->path ? req0->path : "");
 }
 
 static void handle(const struct api_request *req0, const struct api_request_ext *ext,
@@ -591,6 +900,7 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
     const struct api_request *req = &full.req;
     const char *query = ext ? ext->query_request : NULL;
     full.no_cost = (ext && ext->no_cost) || (query && is_get(req->method ? req->method : ""));
+    full.max_samples = ext && ext->max_samples > 0 ? ext->max_samples : API_DEFAULT_MAX_SAMPLES;
     if (api_init() != 0) {
         api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
         snprintf(resp->note, sizeof resp->note, "api_init failed: %.150s", init_error);
@@ -601,12 +911,12 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
 
     if (!strcmp(path, "/v1") || !strcmp(path, "/v1/")) {
         if (!is_get(m)) { method_not_allowed(resp, "GET"); return; }
-        api_respond_text(resp, 200, "application/json", api_catalog_text());
+        serve_doc(&doc_catalog, ext, resp);
         return;
     }
     if (!strcmp(path, "/v1/openapi.json")) {
         if (!is_get(m)) { method_not_allowed(resp, "GET"); return; }
-        api_respond_text(resp, 200, "application/json", api_openapi_text());
+        serve_doc(&doc_openapi, ext, resp);
         return;
     }
     if (!strncmp(path, "/problems/", 10)) {
@@ -624,6 +934,13 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
     const char *want = api_routes[ri]->method;
     if (!strcmp(want, "POST") && is_get(m) && query) {
         run_query((size_t)ri, req, ext, resp);
+        return;
+    }
+    if (!strcmp(want, "POST") && is_get(m)) {
+        api_response_problem(resp, API_PROBLEM_REQUEST_MISSING,
+                             "this operation needs a request: POST it as the JSON body, or GET "
+                             "this path with ?request=<the request JSON, URL-encoded>");
+        resp->cache_control = "no-store";
         return;
     }
     if (!strcmp(want, "GET") ? !is_get(m) : strcmp(m, want) != 0) {

@@ -28,6 +28,8 @@ enum api_problem {
     API_PROBLEM_CANCELLED,          /* 503, server shutting down */
     API_PROBLEM_UNAUTHORIZED,       /* 401, --token-file set and no/wrong bearer token */
     API_PROBLEM_CORS_FORBIDDEN,     /* 403, CORS preflight from an origin not allowed */
+    API_PROBLEM_REQUEST_MISSING,    /* 400, GET/HEAD of an operation without ?request= */
+    API_PROBLEM_ANSWER_TOO_LARGE,   /* 422, the request asks for more samples than --max-samples */
     API_PROBLEM_COUNT
 };
 
@@ -42,6 +44,10 @@ struct api_request {
     const volatile int *cancel;/* may be NULL; nonzero cancels running work */
 };
 
+/* Default answer budget (--max-samples): two full-size (100,000-sample)
+ * integrations per request, an answer of some 15-30 MB. */
+#define API_DEFAULT_MAX_SAMPLES 200000L
+
 struct api_response {
     int status;               /* HTTP status */
     const char *content_type; /* static string */
@@ -52,6 +58,14 @@ struct api_response {
     char etag[24];            /* "" or a strong entity tag, quoted ("\"0123456789abcdef\"") */
     const char *cache_control;/* static string for Cache-Control, or NULL for none */
     const char *allow;        /* a 405's Allow header (static string), or NULL */
+    int depends_on_load;      /* 1: the answer depended on load or time (a deadline, a budget,
+                                 a partial result): never cached, never given an ETag */
+    int body_static;          /* 1: body is static memory (not freed, not to be freed) */
+    const char *content_encoding; /* static string for Content-Encoding ("gzip"), or NULL */
+    const char *vary;         /* static string for Vary ("Accept-Encoding"), or NULL */
+    size_t full_length;       /* a 304's: the length of the 200's body when known (sent as its
+                                 Content-Length, RFC 9110 8.6), 0 for unknown: none is sent */
+    int instance_set;         /* a problem body already carries "instance" */
 };
 
 /* What only the HTTP server and `mechd eval` know about a request (all optional).
@@ -60,6 +74,10 @@ struct api_request_ext {
     const char *query_request; /* GET/HEAD: the URL-decoded ?request= value (JSON text), or NULL */
     const char *if_none_match; /* If-None-Match header, or NULL */
     int no_cost;               /* 1: drop the measured cost, so the body is byte-deterministic */
+    const char *accept_encoding; /* Accept-Encoding header, or NULL (gzip of /v1, openapi.json) */
+    long max_samples;          /* answer budget: samples one request may ask for, summed over
+                                  every "samples" of its body (and of a batch's items);
+                                  0 means API_DEFAULT_MAX_SAMPLES (--max-samples) */
 };
 
 /* One-time set-up (parses the route schemas). Called by api_handle() on first
@@ -78,11 +96,15 @@ void api_handle(const struct api_request *req, struct api_response *resp);
  * cost dropped; a 200 answer then carries etag = FNV-1a 64 of (build version,
  * path, canonical request: parsed JSON re-serialised compactly with sorted keys)
  * and Cache-Control "public, max-age=86400", and the same ETag always comes
- * with the same bytes; an answer that depends on the load or the deadline (a
- * handler set call->no_store: a partial /v1/compare) gets neither ETag nor
- * caching, only "no-store". If If-None-Match matches that ETag (or is "*"), the
- * answer is 304 with no body and the operation is not run. POST answers and
- * every problem from an operation carry Cache-Control "no-store". */
+ * with the same bytes — unless the answer depended on load or time
+ * (resp->depends_on_load: a handler set call->depends_on_load, or an item ran
+ * out of deadline or budget), which gets no ETag and "no-store". If
+ * If-None-Match matches that ETag (or is "*"), the answer is 304 with no body
+ * and the operation is not run. POST answers and every problem from an
+ * operation carry Cache-Control "no-store". Every problem+json gets "instance":
+ * the request path. GET /v1 and /v1/openapi.json are static memory
+ * (body_static), gzip when ext->accept_encoding admits it, with a strong ETag,
+ * "no-cache", Vary: Accept-Encoding and 304 (full_length set). */
 void api_handle_ext(const struct api_request *req, const struct api_request_ext *ext,
                     struct api_response *resp);
 
@@ -92,17 +114,25 @@ struct json_t;
  * `request` (borrowed) in-process, through the same pipeline as api_handle()
  * (schema validation, handler, non-finite check, cost), sharing the outer
  * call's budget (deadline, steps, cancel). Pointers of every error are
- * prefixed with pointer_prefix ("/request"). Returns the HTTP status and sets
+ * prefixed with pointer_prefix ("/request"). If the inner answer depended on
+ * load (a deadline, a budget, a partial result), outer->depends_on_load is
+ * set, so the outer answer is not cached either. Returns the HTTP status and sets
  * *out to a new reference: the answer (200) or the problem object. Returns -1
  * with *out = NULL if no POST operation has that path. The inner operation
- * inherits the outer call's no_cost; an inner answer that must not be cached
- * (a partial answer) sets outer->no_store. */
+ * inherits the outer call's no_cost. */
 int api_run_operation(struct api_call *outer, const char *path, const struct json_t *request,
                       const char *pointer_prefix, struct json_t **out);
 
 /* Fill resp with a problem+json of the given kind and detail (may be NULL).
  * Used by the server for 413, 415, 503. */
 void api_response_problem(struct api_response *resp, enum api_problem kind, const char *detail);
+
+/* Give a problem+json body in resp its RFC 9457 "instance" member (instance
+ * is copied, JSON-escaped, at most 256 bytes of it), unless it has one or resp
+ * is not a problem. Used by api_handle_ext() (the request path) and by the
+ * server for the problems it builds. When memory runs out resp becomes the
+ * fixed 500 out-of-memory problem (never a problem silently missing a member). */
+void api_response_set_instance(struct api_response *resp, const char *instance);
 
 /* Free the body of a response (safe on a zeroed or already-freed response). */
 void api_response_free(struct api_response *resp);

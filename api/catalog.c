@@ -23,7 +23,11 @@ static const char service_description[] =
     "unless a field says otherwise; 4-vectors are [ct, x, y, z] with metric (-,+,+,+); "
     "rotations are passive. Errors are application/problem+json (RFC 9457). Every POST "
     "operation also answers GET with ?request=<url-encoded JSON body>: the same bytes without "
-    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match. "
+    "the measured cost, a strong ETag and Cache-Control, and 304 for a matching If-None-Match "
+    "(an answer that depended on load, such as a batch item stopped by the deadline, gets "
+    "Cache-Control: no-store and no ETag). The URL and headers must fit in about 32 KB "
+    "(longer gets 414): POST longer requests. Every problem carries instance, the request "
+    "path. A request may ask for at most --max-samples samples in all (default 200000). "
     "Every operation also takes the envelope keys (envelope in GET /v1, "
     "#/components/schemas/Envelope in OpenAPI), whatever its own schema: \"cost\": false leaves "
     "out measured time so that equal requests give byte-identical answers.";
@@ -96,6 +100,11 @@ static json_t *problem_response(const char *description)
                      "#/components/schemas/Problem");
 }
 
+/* What an operation's 422 may be. */
+static const char status_422[] =
+    "Validation, domain, compute-budget or answer-too-large (more samples in all than the "
+    "server's --max-samples) error.";
+
 /* The GET ?request= form of POST operation i (see api.h, api_handle_ext). */
 static json_t *get_variant(size_t i, const char *opid)
 {
@@ -104,7 +113,9 @@ static json_t *get_variant(size_t i, const char *opid)
     snprintf(id, sizeof id, "%s_get", opid);
     json_t *param = json_pack("{s:s,s:s,s:b,s:s,s:{s:{s:O}}}", "name", "request", "in", "query",
                               "required", 1, "description",
-                              "the request body as URL-encoded JSON", "content",
+                              "the request body as URL-encoded JSON; the URL and headers must "
+                              "fit in about 32 KB (longer gets 414 from libmicrohttpd): POST "
+                              "longer requests", "content",
                               "application/json", "schema", api_route_schema(i));
     json_t *etag_hdr = json_pack("{s:s,s:{s:s}}", "description",
                                  "strong tag of (build, path, canonical request)", "schema",
@@ -124,7 +135,7 @@ static json_t *get_variant(size_t i, const char *opid)
     json_decref(cc_hdr);
     json_t *responses = json_pack("{s:o,s:o,s:o,s:o,s:o,s:o}", "200", ok, "304", nm, "400",
                                   problem_response("The request parameter is not JSON."), "422",
-                                  problem_response("Validation, domain or compute-budget error."),
+                                  problem_response(status_422),
                                   "500", problem_response("Internal error."), "503",
                                   problem_response("Queue full or shutting down; see Retry-After."));
     return json_pack("{s:s,s:s,s:s,s:[o],s:o}", "operationId", id, "summary", r->summary,
@@ -157,7 +168,7 @@ static json_t *build_openapi(void)
             "The result.", "content", "application/json", "schema", "type", "object", "400",
             problem_response("Malformed JSON."), "413", problem_response("Body too large."),
             "415", problem_response("Not application/json."), "422",
-            problem_response("Validation, domain or compute-budget error."), "500",
+            problem_response(status_422), "500",
             problem_response("Internal error."), "503",
             problem_response("Queue full or shutting down; see Retry-After."), "405",
             problem_response("Wrong method."));

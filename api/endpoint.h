@@ -38,8 +38,10 @@ struct api_call {
     int nonfinite;               /* set when a non-finite number was encoded */
     int no_cost;                 /* the request asked for no measured cost ("cost": false,
                                     or GET ?request=); inner operations inherit it */
-    int no_store;                /* the answer depends on load or the deadline (e.g. a
-                                    partial /v1/compare): never cache it, no ETag */
+    int depends_on_load;         /* set by a handler whose answer depended on load or time (an
+                                    item or run stopped by the deadline or a budget, a partial
+                                    result): the answer is then never cached and gets no ETag
+                                    (Cache-Control: no-store), whatever its status */
 };
 
 /* Handler: returns a new reference to the result object, or NULL after

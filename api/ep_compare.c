@@ -21,7 +21,7 @@
  * is 200 with "partial": true, the run that was stopped and every later one
  * being a row {"status": "not_run", "reason": ...} (the stopped one with its
  * progress). Such an answer depends on the load, so it is marked never to be
- * cached (call->no_store). Only when no run finished, or the reference run
+ * cached (call->depends_on_load). Only when no run finished, or the reference run
  * itself ran out, is it compute-budget-exceeded (422) naming the run, with
  * the steps the whole request took. A run that fails numerically (an
  * unstable step, a dt that does not resolve a close approach) or whose method
@@ -466,7 +466,7 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(res, "runs", rows);
         json_object_set_new_nocheck(res, "total_steps", json_integer(used));
         /* depends on the load and the deadline: never cached */
-        if (partial) c->no_store = 1;
+        if (partial) c->depends_on_load = 1;
         /* the framework adds cost.cpu_seconds (the whole request) and drops
          * the block for "cost": false */
         json_t *jc = json_object();

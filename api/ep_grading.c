@@ -514,9 +514,13 @@ static const char batch_description[] =
     "Runs up to 100 operations, each exactly as POST to its path would, and answers "
     "{\"results\": [...]} in the same order: {\"status\": 200, \"body\": answer} or "
     "{\"status\": 4xx/5xx, \"problem\": problem details}. A failing operation does not affect "
-    "the others; its error pointers are prefixed with /operations/<i>/request. All operations "
-    "share this request's deadline and step budget per integration: once the deadline has passed, "
-    "the remaining ones answer compute-budget-exceeded. /v1/check and /v1/batch cannot be "
+    "the others; its error pointers are prefixed with /operations/<i>/request and its instance is "
+    "/v1/batch#/operations/<i>. All operations share this request's deadline and step budget per "
+    "integration: an operation running when the deadline passes stops there, and the remaining "
+    "ones answer compute-budget-exceeded; such a partial answer is never cached (Cache-Control: "
+    "no-store, no ETag, also for GET ?request=). The samples of all operations together count "
+    "against the server's --max-samples (default 200000): a batch asking for more is refused "
+    "whole with answer-too-large (422) before anything runs. /v1/check and /v1/batch cannot be "
     "nested (422 for that entry). The batch itself is 200 whenever its envelope is valid.";
 
 static json_t *batch(struct api_call *c, const json_t *body)
@@ -542,6 +546,7 @@ static json_t *batch(struct api_call *c, const json_t *body)
                                                   "nested in a batch"));
             st = api_problem_status(API_PROBLEM_VALIDATION);
         } else if (c->budget.deadline > 0 && mech_clock_seconds() > c->budget.deadline) {
+            c->depends_on_load = 1; /* a partial answer: never cached (api.h) */
             res = api_problem_object(API_PROBLEM_BUDGET,
                                      "the batch's deadline passed before this operation started");
             json_object_set_new_nocheck(
@@ -562,6 +567,11 @@ static json_t *batch(struct api_call *c, const json_t *body)
         if (!res) {
             json_decref(results);
             return NULL;
+        }
+        if (st != 200) { /* RFC 9457 instance: this item of this batch */
+            char inst[96];
+            snprintf(inst, sizeof inst, "/v1/batch#/operations/%zu", i);
+            json_object_set_new_nocheck(res, "instance", json_string(inst));
         }
         json_array_append_new(results, json_pack("{s:i,s:o}", "status", st,
                                                  st == 200 ? "body" : "problem", res));

@@ -52,6 +52,13 @@ static const struct problem_row problems[API_PROBLEM_COUNT] = {
     [API_PROBLEM_CORS_FORBIDDEN] = {403, "/problems/cors-origin-not-allowed",
         "Origin not allowed", "A cross-origin request from an origin the server does not list "
         "in --cors-origin."},
+    [API_PROBLEM_REQUEST_MISSING] = {400, "/problems/request-missing", "Request missing",
+        "This path is an operation: it computes from a request. POST the request as the JSON "
+        "body, or GET the path with ?request=<the request JSON, URL-encoded>."},
+    [API_PROBLEM_ANSWER_TOO_LARGE] = {422, "/problems/answer-too-large", "Answer too large",
+        "The request asks for more samples in all (summed over its \"samples\" members and, "
+        "in a batch, over its items) than the server's --max-samples allows; errors[] names the "
+        "field where the sum passes the limit. Ask for fewer samples or split the request."},
 };
 
 int api_problem_status(enum api_problem kind)

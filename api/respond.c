@@ -13,7 +13,7 @@ static const char oom_body[] =
 
 void api_respond_out_of_memory(struct api_response *resp)
 {
-    free(resp->body);
+    if (!resp->body_static) free(resp->body);
     memset(resp, 0, sizeof *resp);
     resp->status = 500;
     resp->content_type = "application/problem+json";
@@ -53,9 +53,61 @@ void api_respond_json(struct api_response *resp, int status, const char *content
 void api_response_free(struct api_response *resp)
 {
     if (!resp) return;
-    free(resp->body);
+    if (!resp->body_static) free(resp->body);
     resp->body = NULL;
     resp->body_len = 0;
+    resp->body_static = 0;
+}
+
+/* Longest part of an instance kept (a request path is client-controlled). */
+#define INSTANCE_MAX 256
+
+void api_response_set_instance(struct api_response *resp, const char *instance)
+{
+    if (!resp || resp->instance_set || !instance || !resp->body || resp->body_static ||
+        !resp->content_type || strcmp(resp->content_type, "application/problem+json") != 0)
+        return;
+    /* The body is one compact JSON object and a newline: insert the member
+     * before its closing brace. */
+    size_t end = resp->body_len;
+    while (end > 0 && resp->body[end - 1] != '}')
+        end--;
+    if (end < 2) return;
+    char cut[INSTANCE_MAX + 1];
+    snprintf(cut, sizeof cut, "%s", instance);
+    json_t *js = api_json_text(cut);
+    char *text = js ? json_dumps(js, JSON_ENCODE_ANY | JSON_COMPACT) : NULL;
+    json_decref(js);
+    if (!text) {
+        api_respond_out_of_memory(resp);
+        resp->instance_set = 1;
+        return;
+    }
+    static const char key[] = ",\"instance\":";
+    size_t tl = strlen(text), add = sizeof key - 1 + tl;
+    char *b = malloc(resp->body_len + add + 1);
+    if (!b) {
+        free(text);
+        api_respond_out_of_memory(resp);
+        resp->instance_set = 1;
+        return;
+    }
+    size_t at = end - 1; /* the closing brace */
+    int empty = resp->body[at - 1] == '{';
+    memcpy(b, resp->body, at);
+    size_t n = at;
+    memcpy(b + n, key + empty, sizeof key - 1 - (size_t)empty);
+    n += sizeof key - 1 - (size_t)empty;
+    memcpy(b + n, text, tl);
+    n += tl;
+    memcpy(b + n, resp->body + at, resp->body_len - at);
+    n += resp->body_len - at;
+    b[n] = '\0';
+    free(text);
+    free(resp->body);
+    resp->body = b;
+    resp->body_len = n;
+    resp->instance_set = 1;
 }
 
 json_t *api_json_text(const char *text)

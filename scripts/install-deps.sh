@@ -19,7 +19,7 @@
 # registry into the build tree (no system change).
 set -eu
 
-PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev curl python3"
+PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev zlib1g-dev curl python3"
 for opt in "$@"; do
   case "$opt" in
     --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk" ;;

@@ -28,6 +28,7 @@ enum opt_id {
     OPT_REQUEST_TIMEOUT_MS,
     OPT_INLINE_MAX_US,
     OPT_WORKER_NICE,
+    OPT_MAX_SAMPLES,
     OPT_COUNT
 };
 
@@ -78,6 +79,10 @@ static const struct opt_spec {
                          "how much lower the compute workers' scheduling priority is than the "
                          "I/O threads' (nice increment; with > 0 also SCHED_BATCH), so /healthz "
                          "and quick answers win a busy core; 0: same priority"},
+    [OPT_MAX_SAMPLES] = {"--max-samples", "MECHD_MAX_SAMPLES", "200000", 1, 1000000000LL,
+                         "answer budget: the samples one request may ask for, summed over its "
+                         "\"samples\" members and a batch's items; more get 422 "
+                         "answer-too-large before anything is computed"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -256,6 +261,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_WORKER_NICE:
         cfg->worker_nice = (int)v;
+        break;
+    case OPT_MAX_SAMPLES:
+        cfg->max_samples = (long)v;
         break;
     default:
         break;

@@ -27,6 +27,7 @@ struct srv_config {
     long request_timeout_ms; /* time to receive one whole request, 100..3600000 ms */
     long inline_max_us;      /* quick operations run inline while predicted <= this, 0..1e6 µs */
     int worker_nice;         /* nice increment of the compute workers, 0..19 */
+    long max_samples;        /* answer budget: samples per request (batch items summed), 1..1e9 */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

@@ -65,6 +65,7 @@
 
 #include <arpa/inet.h>
 #include <errno.h>
+#include <malloc.h>
 #include <microhttpd.h>
 #include <netinet/in.h>
 #include <poll.h>
@@ -92,6 +93,7 @@
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
+#define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -160,6 +162,7 @@ struct srv_req {
     double t0;
     char *method, *path, *content_type;  /* owned copies */
     char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
+    char *accept_encoding;               /* owned copy of Accept-Encoding, or NULL */
     char *body;
     size_t body_len, body_cap, body_seen;
     int too_large;
@@ -226,6 +229,7 @@ static void req_free(struct srv_req *r)
     free(r->content_type);
     free(r->query_request);
     free(r->if_none_match);
+    free(r->accept_encoding);
     free(r->origin);
     free(r->body);
     free(r);
@@ -477,28 +481,79 @@ static void req_cancel(struct srv_job *job)
 /* ---- answering --------------------------------------------------------------- */
 
 /* Headers every answer built here carries: the security set, and CORS for an
- * allowed origin. */
-static void add_common_headers(struct srv_req *r, struct MHD_Response *mr)
+ * allowed origin. vary (static, or NULL) joins Origin in one Vary header. */
+static void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const char *vary)
 {
     MHD_add_response_header(mr, "X-Content-Type-Options", "nosniff");
     MHD_add_response_header(mr, "Referrer-Policy", "no-referrer");
     MHD_add_response_header(mr, "X-Frame-Options", "DENY");
     MHD_add_response_header(mr, "Content-Security-Policy", SRV_API_CSP);
-    if (r->vary_origin) MHD_add_response_header(mr, "Vary", "Origin");
+    char both[96];
+    if (vary && r->vary_origin) {
+        snprintf(both, sizeof both, "%s, Origin", vary);
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_VARY, both);
+    } else if (vary || r->vary_origin) {
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_VARY, vary ? vary : "Origin");
+    }
     if (r->cors_ok && r->origin) {
         MHD_add_response_header(mr, "Access-Control-Allow-Origin", r->origin);
         MHD_add_response_header(mr, "Access-Control-Expose-Headers", SRV_CORS_EXPOSE);
     }
 }
 
-/* Send resp (its body is handed to MHD, which frees it) with Content-Type,
- * Retry-After and X-Request-Id. resp is left empty. */
+/* MHD's free of an answer body: a large answer (a long trajectory, a batch)
+ * leaves megabytes of freed heap in the worker's and I/O thread's malloc
+ * arenas, which glibc keeps; give them back to the OS at once. */
+static void free_answer(void *body)
+{
+    size_t n = malloc_usable_size(body);
+    free(body);
+    if (n >= SRV_TRIM_BYTES) malloc_trim(0);
+}
+
+/* Never called: a 304 has no body (RFC 9110 15.4.5). */
+static ssize_t no_body(void *cls, uint64_t pos, char *buf, size_t max)
+{
+    (void)cls;
+    (void)pos;
+    (void)buf;
+    (void)max;
+    return MHD_CONTENT_READER_END_OF_STREAM;
+}
+
+/* The response object of a 304. libmicrohttpd 0.9.75 sends a 304 with the
+ * Content-Length of its response object, which RFC 9110 8.6 allows only when
+ * it equals the 200's length: so a 304 whose 200 length is known (full_len > 0)
+ * gets an object of that length whose reader is never called (no body is sent
+ * for a 304), and one whose 200 length is unknown (GET ?request=: the
+ * operation is not run) an object of unknown length in HTTP/1.0-compatible
+ * mode, which sends no Content-Length and no chunked framing, and closes the
+ * connection after the headers. */
+static struct MHD_Response *not_modified_response(size_t full_len)
+{
+    if (full_len > 0) return MHD_create_response_from_callback(full_len, 64, no_body, NULL, NULL);
+    struct MHD_Response *mr = MHD_create_response_from_callback(MHD_SIZE_UNKNOWN, 64, no_body,
+                                                                NULL, NULL);
+    if (mr) MHD_set_response_options(mr, MHD_RF_HTTP_1_0_COMPATIBLE_STRICT, MHD_RO_END);
+    return mr;
+}
+
+/* Send resp (its body is handed to MHD, which frees it, unless it is static)
+ * with Content-Type, Retry-After and X-Request-Id; a problem gets its
+ * instance (the request path) if the API layer has not given it one. resp is
+ * left empty. */
 static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
 {
     struct MHD_Response *mr;
     int status = resp->status >= 100 && resp->status <= 599 ? resp->status : 500;
-    if (resp->body) {
-        mr = MHD_create_response_from_buffer(resp->body_len, resp->body, MHD_RESPMEM_MUST_FREE);
+    api_response_set_instance(resp, r->path ? r->path : "");
+    if (status == MHD_HTTP_NOT_MODIFIED) {
+        mr = not_modified_response(resp->full_length);
+    } else if (resp->body && resp->body_static) {
+        mr = MHD_create_response_from_buffer(resp->body_len, resp->body, MHD_RESPMEM_PERSISTENT);
+    } else if (resp->body) {
+        mr = MHD_create_response_from_buffer_with_free_callback(resp->body_len, resp->body,
+                                                                 free_answer);
         if (mr) resp->body = NULL; /* MHD owns it now */
     } else {
         mr = MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
@@ -517,12 +572,17 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     }
     snprintf(buf, sizeof buf, "%lu", r->id);
     MHD_add_response_header(mr, "X-Request-Id", buf);
-    add_common_headers(r, mr);
+    add_common_headers(r, mr, resp->vary);
     if (r->www_authenticate)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_WWW_AUTHENTICATE, r->www_authenticate);
-    if (resp->etag[0]) MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
-    if (resp->cache_control)
+    if (resp->etag[0] && !resp->depends_on_load)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
+    if (resp->depends_on_load)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CACHE_CONTROL, "no-store");
+    else if (resp->cache_control)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_CACHE_CONTROL, resp->cache_control);
+    if (resp->content_encoding)
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CONTENT_ENCODING, resp->content_encoding);
     if (status == MHD_HTTP_METHOD_NOT_ALLOWED && resp->allow)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_ALLOW, resp->allow);
     else if (status == MHD_HTTP_METHOD_NOT_ALLOWED && r->path &&
@@ -643,7 +703,7 @@ static enum MHD_Result answer_preflight(struct srv_req *r)
     char buf[32];
     snprintf(buf, sizeof buf, "%lu", r->id);
     MHD_add_response_header(mr, "X-Request-Id", buf);
-    add_common_headers(r, mr);
+    add_common_headers(r, mr, NULL);
     MHD_add_response_header(mr, "Access-Control-Allow-Methods", SRV_CORS_METHODS);
     MHD_add_response_header(mr, "Access-Control-Allow-Headers", SRV_CORS_HEADERS);
     MHD_add_response_header(mr, "Access-Control-Max-Age", SRV_CORS_MAX_AGE);
@@ -670,9 +730,11 @@ static enum MHD_Result answer_static(struct srv_req *r, const struct srv_static_
 {
     int not_modified = srv_static_not_modified(f, r->if_none_match);
     r->route = "static";
-    struct MHD_Response *mr = MHD_create_response_from_buffer(
-        not_modified ? 0 : f->len, not_modified ? (void *)"" : (void *)f->body,
-        MHD_RESPMEM_PERSISTENT);
+    /* A 304 carries the 200's Content-Length, never 0 (see not_modified_response). */
+    struct MHD_Response *mr =
+        not_modified ? not_modified_response(f->len)
+                     : MHD_create_response_from_buffer(f->len, (void *)f->body,
+                                                       MHD_RESPMEM_PERSISTENT);
     r->state = REQ_ANSWERED;
     if (!mr) return MHD_NO;
     char buf[32];
@@ -755,6 +817,8 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->areq.deadline = mech_clock_seconds() + (double)h->cfg->deadline_ms / 1000.0;
     r->aext.query_request = r->query_request;
     r->aext.if_none_match = r->if_none_match;
+    r->aext.accept_encoding = r->accept_encoding;
+    r->aext.max_samples = h->cfg->max_samples;
 
     /* GET ?request= runs an operation: it goes to the pool like a POST. */
     if (strcmp(r->method, MHD_HTTP_METHOD_GET) == 0 && !r->query_request &&
@@ -866,13 +930,16 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         const char *inm =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_IF_NONE_MATCH);
         r->if_none_match = dup_str(inm);
+        const char *ae =
+            MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ACCEPT_ENCODING);
+        r->accept_encoding = dup_str(ae);
         const char *origin =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ORIGIN);
         r->origin = dup_str(origin);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
-            (inm && !r->if_none_match) || (origin && !r->origin)) {
+            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
         }

@@ -9,6 +9,7 @@
  * the daemon, exit 0.
  */
 #include <gsl/gsl_errno.h>
+#include <malloc.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdio.h>
@@ -23,6 +24,8 @@
 #include "workers.h"
 
 #define SRV_DRAIN_SECONDS 3.0 /* how long answers to cancelled work may take to go out */
+#define SRV_MMAP_THRESHOLD (1 << 20) /* blocks this large come from mmap, freed straight back */
+#define SRV_TRIM_THRESHOLD (4 << 20) /* free heap above this at an arena's top is returned */
 
 int main(int argc, char **argv)
 {
@@ -48,6 +51,14 @@ int main(int argc, char **argv)
     }
 
     gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
+    /* Return memory after large answers. glibc's default thresholds are
+     * dynamic: freeing one 16 MB answer raises the mmap threshold to 16 MB and
+     * the trim threshold to 32 MB, after which every worker's malloc arena
+     * keeps its freed answer-sized top for good (malloc_trim does not shrink
+     * a thread arena's top). Fixed thresholds keep large blocks on mmap and let
+     * arenas shrink; http.c also calls malloc_trim(0) after a large answer. */
+    mallopt(M_MMAP_THRESHOLD, SRV_MMAP_THRESHOLD);
+    mallopt(M_TRIM_THRESHOLD, SRV_TRIM_THRESHOLD);
     if (api_init() != 0) {
         srv_log_note("API initialisation failed: %s", api_init_error());
         return 1;

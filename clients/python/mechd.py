@@ -20,9 +20,10 @@ keyword arguments (merged, keywords win). call(path, body) reaches any path.
 
 Errors are problem+json (RFC 9457) turned into exceptions that carry it:
 MechdError(.status, .type, .title, .detail, .errors, .problem, .retry_after)
-  BadRequest (400 malformed JSON), NotFound (404), MethodNotAllowed (405),
+  BadRequest (400 malformed JSON, or GET without ?request=), NotFound (404), MethodNotAllowed (405),
   PayloadTooLarge (413), UnsupportedMediaType (415),
   ValidationError (422 validation-error) > DomainError (422 domain-error),
+    > AnswerTooLarge (422 answer-too-large: more samples than --max-samples; .limit, .requested),
   BudgetExceeded (422, .progress), NumericalFailure (422),
   InternalError (500), ServerBusy (503 queue full, .retry_after) > ShuttingDown (503 cancelled),
   ConnectionFailed (no HTTP answer; .status is None).
@@ -44,7 +45,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 __all__ = ["Client", "MechdError", "BadRequest", "NotFound", "MethodNotAllowed",
            "PayloadTooLarge", "UnsupportedMediaType", "ValidationError", "DomainError",
-           "BudgetExceeded", "NumericalFailure", "InternalError", "ServerBusy", "ShuttingDown",
+           "AnswerTooLarge", "BudgetExceeded", "NumericalFailure", "InternalError", "ServerBusy", "ShuttingDown",
            "ConnectionFailed", "OPERATIONS", "resolve_pointer", "check_example"]
 
 DEFAULT_URL = "http://127.0.0.1:8080"
@@ -70,7 +71,8 @@ class MechdError(Exception):
 
 
 class BadRequest(MechdError):
-    """400: the body is not valid JSON (detail has line and column)."""
+    """400: the body is not valid JSON (detail has line and column), or an operation was fetched
+    with GET without ?request= (type /problems/request-missing)."""
 
 
 class NotFound(MechdError):
@@ -95,6 +97,19 @@ class ValidationError(MechdError):
 
 class DomainError(ValidationError):
     """422: physically impossible input (beta >= 1, m <= 0, r <= 2GM/c^2)."""
+
+
+class AnswerTooLarge(ValidationError):
+    """422: the request asks for more samples in all (a batch's items summed) than the server's
+    --max-samples; .errors names the field where the sum passes .limit; nothing was computed."""
+
+    @property
+    def limit(self):
+        return self.problem.get("limit")
+
+    @property
+    def requested(self):
+        return self.problem.get("requested")
 
 
 class BudgetExceeded(MechdError):
@@ -133,6 +148,7 @@ _BY_TYPE = {
     "/problems/unsupported-media-type": UnsupportedMediaType,
     "/problems/validation-error": ValidationError,
     "/problems/domain-error": DomainError,
+    "/problems/answer-too-large": AnswerTooLarge,
     "/problems/compute-budget-exceeded": BudgetExceeded,
     "/problems/numerical-failure": NumericalFailure,
     "/problems/queue-full": ServerBusy,

@@ -105,8 +105,16 @@ int main(void)
         CHECK(a && b && !strcmp(a, b));
         free(a);
         free(b);
-        /* The wrong method on an operation's path is a 405. */
+        /* GET without ?request= is a 400 that says what is needed (GET is
+         * allowed, with ?request=); another method is a 405. */
         json_t *j = get_json("GET", api_routes[i]->path, NULL, &st);
+        CHECK_EQ_INT(st, 400);
+        const char *type = json_string_value(json_object_get(j, "type"));
+        const char *inst = json_string_value(json_object_get(j, "instance"));
+        CHECK(type && !strcmp(type, "/problems/request-missing"));
+        CHECK(inst && !strcmp(inst, api_routes[i]->path));
+        json_decref(j);
+        j = get_json("PUT", api_routes[i]->path, NULL, &st);
         CHECK_EQ_INT(st, 405);
         json_decref(j);
     }

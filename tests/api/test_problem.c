@@ -44,6 +44,8 @@ static const struct {
     {API_PROBLEM_CANCELLED, 12, 503, "/problems/cancelled"},
     {API_PROBLEM_UNAUTHORIZED, 13, 401, "/problems/unauthorized"},
     {API_PROBLEM_CORS_FORBIDDEN, 14, 403, "/problems/cors-origin-not-allowed"},
+    {API_PROBLEM_REQUEST_MISSING, 15, 400, "/problems/request-missing"},
+    {API_PROBLEM_ANSWER_TOO_LARGE, 16, 422, "/problems/answer-too-large"},
 };
 
 int main(void)

@@ -158,7 +158,10 @@ def run(s):
           st == 422 and p.get("errors", [{}])[0].get("pointer") == "/bodies/0/mass"
           and "etag" not in h and h.get("cache-control") == "no-store", (st, p))
     st, h, b = s.request("GET", "/v1/rigid/inertia")
-    check("GET of a POST operation without ?request= -> 405", st == 405, st)
+    p = json.loads(b) if b else {}
+    check("GET of a POST operation without ?request= -> 400 request-missing, not 405",
+          st == 400 and p.get("type") == "/problems/request-missing" and "?request=" in
+          p.get("detail", "") and "POST" in p.get("detail", ""), (st, p))
 
     # ---- cost: GET drops it, so the bytes are deterministic ----------------------------------
     st, h, b = s.request("GET", "/v1")

@@ -337,8 +337,11 @@ def test_main_server():
         check_problem("404 POST unknown path",
                       request(port, "POST", "/v1/no/such/thing", boost_ex), 404, "/problems/not-found")
         res = request(port, "GET", "/v1/trajectory")
-        check_problem("405 GET on a POST route", res, 405, "/problems/method-not-allowed")
-        check("405 GET on a POST route: Allow: POST, GET, HEAD (GET takes ?request=)",
+        check_problem("400 GET on a POST route without ?request=", res, 400,
+                      "/problems/request-missing")
+        res = request(port, "DELETE", "/v1/trajectory")
+        check_problem("405 DELETE on a POST route", res, 405, "/problems/method-not-allowed")
+        check("405 on a POST route: Allow: POST, GET, HEAD (GET takes ?request=)",
               res[1].get("allow") == "POST, GET, HEAD", repr(res[1].get("allow")))
         res = request(port, "POST", "/v1/integrators", b"{}")
         check_problem("405 POST on a GET resource", res, 405, "/problems/method-not-allowed")
@@ -418,7 +421,7 @@ def test_main_server():
                 sts.append(request(port, "GET", "/v1/trajectory", conn=conn)[0])
         finally:
             conn.close()
-        check("keep-alive across suspend/resume", sts == [200, 200, 405] * 3, repr(sts))
+        check("keep-alive across suspend/resume", sts == [200, 200, 400] * 3, repr(sts))
 
         # Many concurrent pooled requests all get the same answer.
         first = request(port, "POST", "/v1/relativity/boost", boost_ex)

@@ -144,6 +144,14 @@ def test_errors(m, url):
                      422, "/problems/compute-budget-exceeded")
     check("BudgetExceeded.progress says how far it got",
           isinstance(e and e.progress, dict) and "fraction_done" in e.progress, repr(e and e.progress))
+    geo = {"M": "sun", "kind": "timelike", "orbits": 3, "samples": 100000,
+           "initial": {"semi_major_axis": 5.79e10, "eccentricity": 0.2}}
+    e = expect_error("a batch over the answer budget", mechd.AnswerTooLarge,
+                     lambda: m.call("/v1/batch", {"operations": [
+                         {"operation": "/v1/gr/geodesic", "request": geo}] * 3}),
+                     422, "/problems/answer-too-large", "/operations/2/request/samples")
+    check("AnswerTooLarge says the limit and the size asked for",
+          e is not None and e.limit == 200000 and e.requested == 300000, repr(e and e.problem))
     expect_error("unknown path", mechd.NotFound, lambda: m.call("/v1/no/such", {}), 404, "/problems/not-found")
     expect_error("DELETE on a POST operation", mechd.MethodNotAllowed,
                  lambda: m.call("/v1/rigid/inertia", method="DELETE"), 405, "/problems/method-not-allowed")
