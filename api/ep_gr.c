@@ -277,9 +277,11 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(a, "circular_orbit", cj);
         json_object_set_new_nocheck(out, "at_r", a);
         if (refj) {
-            const double R = gr_len_in(&u, json_number_value(refj));
+            /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
             struct mech_schw_clock_compare cc;
-            enum mech_status st2 = mech_schw_clock_compare(R, r, &cc, &e);
+            enum mech_status st2 =
+                mech_schw_clock_compare(json_number_value(refj), json_number_value(rj),
+                                        gr_len_out(&u, 1.0), &cc, &e);
             if (st2 != MECH_OK) {
                 api_call_fail_core(c, st2, &e, "");
                 json_decref(out);
@@ -306,11 +308,9 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             json_object_set_new_nocheck(fo, "gravitational",
                                         api_real(c, cc.first_order_gravitational));
             json_object_set_new_nocheck(fo, "velocity", api_real(c, cc.first_order_velocity));
-            json_object_set_new(
-                fo, "net", api_real(c, cc.first_order_gravitational + cc.first_order_velocity));
-            json_object_set_new(
-                fo, "microseconds_per_day_net",
-                api_real(c, (cc.first_order_gravitational + cc.first_order_velocity) * day));
+            json_object_set_new(fo, "net", api_real(c, cc.first_order_net));
+            json_object_set_new(fo, "microseconds_per_day_net",
+                                api_real(c, cc.first_order_net * day));
             json_object_set_new_nocheck(k, "first_order", fo);
             json_object_set_new_nocheck(
                 k, "left_out",
