@@ -688,10 +688,20 @@ void mech_kin_collision_s(const struct mech_kin_motion *a, const struct mech_kin
         d = a->kinetic * b->energy + m1 * b->kinetic +
             a->momentum * b->momentum * (one_minus_cos - 1.0);
     } else if (m1 > 0 && m2 > 0) {
-        /* E1E2 − p1p2 − m1m2 = m1m2 (cosh(η1 − η2) − 1) = 2 m1m2 sinh²(Δη/2). */
-        double de = asinh(a->momentum / m1) - asinh(b->momentum / m2);
-        double sh = sinh(0.5 * de);
-        d = 2.0 * m1 * m2 * sh * sh + a->momentum * b->momentum * one_minus_cos;
+        /* E1E2 − p1p2 − m1m2 = m1m2 (cosh(η1 − η2) − 1), with no rapidity difference
+         * (asinh(p1/m1) − asinh(p2/m2) keeps only ε η/Δη of Δη for nearly equal
+         * velocities): with C = E1E2 − p1p2 (collinear_part) and
+         * Δ = m1m2 sinh(η1 − η2) = p1E2 − p2E1, C² − m1²m2² = Δ², so
+         * C − m1m2 = Δ²/(C + m1m2), and
+         * Δ = (p1²E2² − p2²E1²)/(p1E2 + p2E1) = (p1m2 − p2m1)(p1m2 + p2m1)/(p1E2 + p2E1),
+         * whose one difference p1m2 − p2m1 is formed with fma to one rounding. */
+        const double p1 = a->momentum, p2 = b->momentum;
+        const double c0 = collinear_part(m1, a->energy, p1, m2, b->energy, p2);
+        const double den = p1 * b->energy + p2 * a->energy;
+        const double delta = den > 0 ? mech_diff_of_products(p1, m2, p2, m1) *
+                                           ((p1 * m2 + p2 * m1) / den)
+                                     : 0.0;
+        d = delta * (delta / (c0 + m1 * m2)) + p1 * p2 * one_minus_cos;
     } else {
         d = q;
     }
