@@ -279,9 +279,8 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
         if (refj) {
             /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
             struct mech_schw_clock_compare cc;
-            enum mech_status st2 =
-                mech_schw_clock_compare(json_number_value(refj), json_number_value(rj),
-                                        gr_len_out(&u, 1.0), &cc, &e);
+            enum mech_status st2 = mech_schw_clock_compare(
+                json_number_value(refj), json_number_value(rj), gr_len_out(&u, 1.0), &cc, &e);
             if (st2 != MECH_OK) {
                 api_call_fail_core(c, st2, &e, "");
                 json_decref(out);

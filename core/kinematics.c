@@ -698,9 +698,8 @@ void mech_kin_collision_s(const struct mech_kin_motion *a, const struct mech_kin
         const double p1 = a->momentum, p2 = b->momentum;
         const double c0 = collinear_part(m1, a->energy, p1, m2, b->energy, p2);
         const double den = p1 * b->energy + p2 * a->energy;
-        const double delta = den > 0 ? mech_diff_of_products(p1, m2, p2, m1) *
-                                           ((p1 * m2 + p2 * m1) / den)
-                                     : 0.0;
+        const double delta =
+            den > 0 ? mech_diff_of_products(p1, m2, p2, m1) * ((p1 * m2 + p2 * m1) / den) : 0.0;
         d = delta * (delta / (c0 + m1 * m2)) + p1 * p2 * one_minus_cos;
     } else {
         d = q;

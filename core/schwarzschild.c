@@ -103,8 +103,7 @@ enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit, double ma
     if ((st = mech_schw_circular_orbit(xo, &co, err)) != MECH_OK) return st;
     if (co.stability == MECH_SCHW_ORBIT_NONE)
         return mech_error_set(err, MECH_EDOMAIN, "r",
-                              "no circular orbit at r = %.17g GM/c^2 <= 3 (the photon sphere)",
-                              xo);
+                              "no circular orbit at r = %.17g GM/c^2 <= 3 (the photon sphere)", xo);
     /* Rates a = sqrt(1 - u) with u = 2m/R (reference), 2m/r (static at r), 3m/r (orbit).
      * A ratio minus one, a1/a0 - 1 = (a1^2 - a0^2) / (a0 (a1 + a0)) = (u0 - u1) / (a0 (a1 + a0)),
      * and the u differences in closed form:

@@ -450,7 +450,8 @@ static void test_collisions(void)
     /* Co-moving with nearly equal velocities (issue 15 item 7): d = 2(E1E2 - p1p2 - m1m2),
      * E = sqrt(m^2 + p^2), by Python's decimal at 80 digits from the same doubles (the
      * direct form loses ~12 of the 80 digits here). The old rapidity difference
-     * asinh(p1/m1) - asinh(p2/m2) was off by 2.2e-5 relative at p2 = p1 (1 + 2^-40), 3e-10 at 1e-6. */
+     * asinh(p1/m1) - asinh(p2/m2) was off by 2.2e-5 relative at p2 = p1 (1 + 2^-40) and
+     * by 3e-10 at p2 = p1 (1 + 1e-6). */
     {
         static const struct {
             double m1, p1, m2, p2, d;

@@ -166,8 +166,9 @@ int main(void)
         CHECK_CLOSE(cc.gravitational, 2.3204248651586892e-10, 1e-14, 0);
         /* Pound-Rebka closed form: g h / c^2 with g = GM/R^2, to O(h/R) ~ 3.5e-6 */
         CHECK(mech_schw_clock_compare(6371000.0, 6371022.5, mE, &cc, NULL) == MECH_OK);
-        CHECK_CLOSE(cc.gravitational, 3.986004418e14 / (6371000.0 * 6371000.0) * 22.5 /
-                                          (299792458.0 * 299792458.0), 1e-5, 0);
+        CHECK_CLOSE(cc.gravitational,
+                    3.986004418e14 / (6371000.0 * 6371000.0) * 22.5 / (299792458.0 * 299792458.0),
+                    1e-5, 0);
     }
     TEST_MAIN_END();
 }
