@@ -111,11 +111,11 @@ enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit, double ma
      *   2m/r - 3m/r = -m/r
      *   2m/R - 3m/r = m (2r - 3R)/(r R)      (2r - 3R by one fma: net ~ 0 at r = 1.5 R)
      * so no result is a difference of two nearly equal computed numbers. */
-    const double m = mass_length, rR = r_orbit * r_ref;
+    const double m = mass_length, m_R = m / r_ref; /* m/R < 1/2: r R itself could underflow */
     const double a_ref = g.rate, a_static = so.rate, a_orbit = co.rate;
-    const double du_grav = 2.0 * m * ((r_orbit - r_ref) / rR);
-    const double du_vel = -m / r_orbit;
-    const double du_net = m * (fma(-3.0, r_ref, 2.0 * r_orbit) / rR);
+    const double du_grav = 2.0 * ((r_orbit - r_ref) / r_orbit) * m_R;
+    const double du_vel = -(m / r_orbit);
+    const double du_net = (fma(-3.0, r_ref, 2.0 * r_orbit) / r_orbit) * m_R;
     out->gravitational = du_grav / (a_ref * (a_static + a_ref));
     out->velocity = du_vel / (a_ref * (a_orbit + a_static));
     out->net = du_net / (a_ref * (a_orbit + a_ref));

@@ -122,6 +122,15 @@ int main(void)
     /* the same radii in metres and in GM/c^2 (m = 2, lengths doubled) agree */
     CHECK(mech_schw_clock_compare(20.0, 21.0, 2.0, &cc, NULL) == MECH_OK);
     CHECK_CLOSE(cc.net, sqrt(1.0 - 3.0 / 10.5) / sqrt(1.0 - 2.0 / 10.0) - 1.0, 1e-14, 0);
+    /* ... and at the ends of the double range, where r R would underflow or overflow */
+    struct mech_schw_clock_compare c1, c2, c3;
+    CHECK(mech_schw_clock_compare(10.0, 21.0, 1.0, &c1, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(10e-300, 21e-300, 1e-300, &c2, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(10e300, 21e300, 1e300, &c3, NULL) == MECH_OK);
+    CHECK_CLOSE(c2.gravitational, c1.gravitational, 1e-15, 0);
+    CHECK_CLOSE(c3.gravitational, c1.gravitational, 1e-15, 0);
+    CHECK_CLOSE(c2.net, c1.net, 1e-15, 0);
+    CHECK_CLOSE(c3.net, c1.net, 1e-15, 0);
 
     /* Clocks near the reference (issue 15 item 6): the tower and the ground.
      * R = 6371000 m, m = GM_earth/c^2 as the API forms it (the double 0x1.22a76c6285c0bp-8),
