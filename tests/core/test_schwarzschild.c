@@ -107,6 +107,9 @@ int main(void)
     /* first order agrees to O(x^2) ~ 1e-9 relative */
     CHECK_CLOSE(cc.first_order_gravitational, cc.gravitational, 2e-9, 0);
     CHECK_CLOSE(cc.first_order_velocity, cc.velocity, 2e-9, 0);
+    /* net in closed form to first order: GM/c^2 (1/R - 3/(2r)) = 4.4567174476e-10 */
+    CHECK_CLOSE(cc.net, GMe / (c * c) * (1.0 / 6371000.0 - 1.5 / 26561750.0), 2e-9, 0);
+    CHECK_CLOSE(cc.first_order_net, GMe / (c * c) * (1.0 / 6371000.0 - 1.5 / 26561750.0), 1e-15, 0);
     /* equatorial radius: 38.438737351513172 us/day */
     CHECK(mech_schw_clock_compare(6378137.0, 26561750.0, m, &cc, NULL) == MECH_OK);
     CHECK_CLOSE(cc.net * day, 38.438737351513172, 1e-13, 0);
