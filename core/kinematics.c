@@ -205,7 +205,7 @@ double mech_kin_momentum_difference(const struct mech_kin_motion *a,
     int n = add_momentum_squared(t, 0, 1.0, a, e);
     n = add_momentum_squared(t, n, -1.0, b, e);
     double d2 = sum_k(t, n, 3); /* (p_a² − p_b²) 2^-2e */
-    return ldexp(d2 / ldexp(den, -e), e);
+    return ldexp(d2 / (ldexp(a->momentum, -e) + ldexp(b->momentum, -e)), e); /* den may overflow */
 }
 
 static int unit_direction(struct mech_vec3 d, struct mech_vec3 *n)

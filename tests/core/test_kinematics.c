@@ -507,7 +507,8 @@ static void test_momentum_difference(void)
         {M_E, E, 104000.0, M_E, T, 103999.48900105, 5.15976150700769833e-12},
         {M_P, E, 1000.0, M_PIC, P, 345.0, 8.98089876011422983e-01},
         {M_P, P, 1000.0, M_P, P, 1000.0000001, -9.99999656414729543e-08},
-        /* scaled by a power of two: E² would overflow */
+        /* scaled by a power of two: E², and p_a + p_b for the second, would overflow */
+        {1e307, P, 1e308, 1e307, P, 9e307, 9.999999999999996e+306}, /* exact difference */
         {1e200, E, 3e200, 1e200, E, 3.0000000030000002e+200, -3.18198082846005358e+191},
     };
     double worst = 0;
