@@ -449,7 +449,9 @@ static const char wl_description[] =
     "traveller time: sqrt((1-beta)/(1+beta)) receding radially); `home_sees_traveller` gives "
     "the home times when the leg's start and end are seen, the leg's ticks, and the rate "
     "(traveller time seen per home time). These differences are computed in light-cone form "
-    "(c dt (1 - beta), never t - |x|/c of large numbers), so 1 - beta = 1e-15 keeps its digits.";
+    "(c dt (1 - beta), never t - |x|/c of large numbers), so 1 - beta = 1e-15 keeps its digits, "
+    "and each leg's from the leg itself (never the difference of the running readings), so a "
+    "day's leg after years keeps its digits too.";
 
 static const double G_STANDARD = 9.80665;     /* m/s², exact by definition */
 static const double JULIAN_YEAR = 31557600.0; /* s */
@@ -560,8 +562,7 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
         json_t *fv = json_object();
         api_velocity_describe(c, &r->final_velocity, fv);
         json_object_set_new_nocheck(o, "final_velocity", fv);
-        double seen = r->home_clock_seen_end - r->home_clock_seen_start;
-        double recv = r->home_receives_end - r->home_receives_start;
+        double seen = r->home_clock_seen, recv = r->home_receives; /* the leg's own intervals */
         json_object_set_new_nocheck(o, "traveller_sees_home",
                                     telescope(c, "home_clock_from", r->home_clock_seen_start,
                                               "home_clock_to", r->home_clock_seen_end, seen / tick,

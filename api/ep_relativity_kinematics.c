@@ -703,7 +703,8 @@ static const char collision_description[] =
     "s - (m1 + m2)^2 too, so available_energy = sqrt_s - m1 - m2 and the CM momentum "
     "p* = sqrt(lambda(s, m1^2, m2^2))/(2 sqrt_s) are exact for slow collisions. Also: each "
     "particle's energy, momentum and precise speed (gamma - 1, 1 - beta, rapidity), the CM "
-    "velocity, the beam energy a fixed target of the same mass would need for the same sqrt_s "
+    "velocity (with p1 - p2 = (p1^2 - p2^2)/(p1 + p2) formed from the beams' own inputs, so "
+    "nearly symmetric beams keep its digits), the beam energy a fixed target of the same mass would need for the same sqrt_s "
     "(T = (s - (m1 + m2)^2)/(2 m2)), and for equal masses the beam energy of a symmetric "
     "head-on collider (sqrt_s/2). Inverse: give sqrt_s (and no beam energy) with the target "
     "at rest to get the beam energy E = (s - m1^2 - m2^2)/(2 m2). final_state gives the "
@@ -789,9 +790,12 @@ static json_t *collision_op(struct api_call *c, const json_t *body)
     sys.mass = w;
     sys.mass_squared = s;
     sys.energy = kb.energy + kt.energy;
-    /* P_z = p1 − p2 cos χ = (p1 − p2) + p2 · 2 sin²(χ/2) */
+    /* P_z = p1 − p2 cos χ = (p1 − p2) + p2 · 2 sin²(χ/2), p1 − p2 from the beams'
+     * own inputs (not of the rounded momenta: nearly symmetric beams keep the
+     * CM velocity's digits). */
     sys.momentum = mech_vec3_make(kt.momentum * sin(chi), 0,
-                                  (kb.momentum - kt.momentum) + kt.momentum * 2.0 * sh * sh);
+                                  mech_kin_momentum_difference(&kb, &kt) +
+                                      kt.momentum * 2.0 * sh * sh);
     mech_kin_system_finish(&sys);
 
     json_t *res = json_object();

@@ -359,7 +359,7 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(sw, "finite_amplitude_period",
                                 api_real(c, r.finite_amplitude_period));
     json_object_set_new_nocheck(sw, "finite_amplitude_correction",
-                                api_real(c, r.finite_amplitude_period / tsmall - 1.0));
+                                api_real(c, mech_pendulum_period_correction(alpha)));
     json_object_set_new_nocheck(sw, "period_difference",
                                 api_real(c, r.period - r.finite_amplitude_period));
     json_object_set_new_nocheck(sw, "swings", api_real(c, r.swings));

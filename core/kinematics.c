@@ -60,6 +60,7 @@ enum mech_status mech_kin_motion_from_momentum(double m, double p, struct mech_k
     k.momentum = p;
     k.energy = hypot(m, p);
     k.kinetic = p == 0 ? 0.0 : p * (p / (k.energy + m)); /* T = p²/(E + m) */
+    k.given = MECH_KIN_GIVEN_MOMENTUM;
     *out = k;
     return MECH_OK;
 }
@@ -81,6 +82,7 @@ enum mech_status mech_kin_motion_from_energy(double m, double e, struct mech_kin
     k.energy = e;
     k.kinetic = e - m; /* exact for e ≤ 2m (Sterbenz), relative ε above */
     k.momentum = sqrt(k.kinetic) * sqrt(k.kinetic + 2.0 * m);
+    k.given = MECH_KIN_GIVEN_ENERGY;
     *out = k;
     return MECH_OK;
 }
@@ -99,6 +101,7 @@ enum mech_status mech_kin_motion_from_kinetic(double m, double t, struct mech_ki
     k.kinetic = t;
     k.energy = m + t;
     k.momentum = sqrt(t) * sqrt(t + 2.0 * m); /* p² = T(T + 2m) */
+    k.given = MECH_KIN_GIVEN_KINETIC;
     *out = k;
     return MECH_OK;
 }
@@ -109,7 +112,7 @@ enum mech_status mech_kin_motion_at_rest(double m, struct mech_kin_motion *out,
     enum mech_status st = check_mass(m, err);
     if (st != MECH_OK) return st;
     if (m == 0) return massless_at_rest("mass", err);
-    struct mech_kin_motion k = {m, 0.0, m, 0.0};
+    struct mech_kin_motion k = {m, 0.0, m, 0.0, MECH_KIN_GIVEN_MOMENTUM};
     *out = k;
     return MECH_OK;
 }
@@ -128,11 +131,81 @@ enum mech_status mech_kin_motion_from_boost(double m, const struct mech_boost *b
     k.kinetic = m * b->gamma_minus_one;
     k.momentum = m * b->beta_gamma;
     k.energy = b->gamma_minus_one < 1.0 ? m + k.kinetic : m * b->gamma;
+    k.given = MECH_KIN_GIVEN_MOMENTUM;
     if (!isfinite(k.energy) || !isfinite(k.momentum))
         return mech_error_set(err, MECH_ENUMERIC, "velocity",
                               "energy overflows (mass %.3g, gamma %.3g)", m, b->gamma);
     *out = k;
     return MECH_OK;
+}
+
+/* ---- difference of two momenta --------------------------------------------- */
+
+/* x + y = *s + *e exactly (Knuth's TwoSum). */
+static void two_sum(double x, double y, double *s, double *e)
+{
+    double t = x + y, z = t - x;
+    *e = (x - (t - z)) + (y - z);
+    *s = t;
+}
+
+/* Σ t[0..n-1] as if in K-fold precision, then rounded (Ogita, Rump & Oishi 2005,
+ * SumK: K − 1 error-free sweeps, then a plain sum). t is overwritten. */
+static double sum_k(double *t, int n, int k)
+{
+    for (int pass = 1; pass < k; pass++)
+        for (int i = 1; i < n; i++) two_sum(t[i], t[i - 1], &t[i], &t[i - 1]);
+    double s = 0;
+    for (int i = 0; i < n - 1; i++) s += t[i];
+    return s + t[n - 1];
+}
+
+/* Append ±x·y as two exact terms. */
+static int add_product(double *t, int n, double sign, double x, double y)
+{
+    double p = x * y;
+    t[n] = sign * p;
+    t[n + 1] = sign * fma(x, y, -p);
+    return n + 2;
+}
+
+/* Append ±p² (scaled by 2^-2e) as exact terms of the motion's own input. */
+static int add_momentum_squared(double *t, int n, double sign, const struct mech_kin_motion *k,
+                                int e)
+{
+    double m = ldexp(k->mass, -e);
+    switch (k->given) {
+    case MECH_KIN_GIVEN_ENERGY: {
+        double en = ldexp(k->energy, -e);
+        n = add_product(t, n, sign, en, en);
+        return add_product(t, n, -sign, m, m);
+    }
+    case MECH_KIN_GIVEN_KINETIC: {
+        double tk = ldexp(k->kinetic, -e);
+        n = add_product(t, n, sign, tk, tk);
+        return add_product(t, n, sign, 2.0 * m, tk);
+    }
+    default: {
+        double p = ldexp(k->momentum, -e);
+        return add_product(t, n, sign, p, p);
+    }
+    }
+}
+
+double mech_kin_momentum_difference(const struct mech_kin_motion *a,
+                                    const struct mech_kin_motion *b)
+{
+    double den = a->momentum + b->momentum;
+    if (!(den > 0)) return 0.0;
+    double big = fmax(fmax(fmax(a->energy, b->energy), fmax(a->momentum, b->momentum)),
+                      fmax(a->mass, b->mass));
+    int e;
+    frexp(big, &e); /* big < 2^e: the scaled inputs are below 1, their squares below 4 */
+    double t[8];
+    int n = add_momentum_squared(t, 0, 1.0, a, e);
+    n = add_momentum_squared(t, n, -1.0, b, e);
+    double d2 = sum_k(t, n, 3); /* (p_a² − p_b²) 2^-2e */
+    return ldexp(d2 / (ldexp(a->momentum, -e) + ldexp(b->momentum, -e)), e); /* den may overflow */
 }
 
 static int unit_direction(struct mech_vec3 d, struct mech_vec3 *n)
@@ -688,10 +761,19 @@ void mech_kin_collision_s(const struct mech_kin_motion *a, const struct mech_kin
         d = a->kinetic * b->energy + m1 * b->kinetic +
             a->momentum * b->momentum * (one_minus_cos - 1.0);
     } else if (m1 > 0 && m2 > 0) {
-        /* E1E2 − p1p2 − m1m2 = m1m2 (cosh(η1 − η2) − 1) = 2 m1m2 sinh²(Δη/2). */
-        double de = asinh(a->momentum / m1) - asinh(b->momentum / m2);
-        double sh = sinh(0.5 * de);
-        d = 2.0 * m1 * m2 * sh * sh + a->momentum * b->momentum * one_minus_cos;
+        /* E1E2 − p1p2 − m1m2 = m1m2 (cosh(η1 − η2) − 1), with no rapidity difference
+         * (asinh(p1/m1) − asinh(p2/m2) keeps only ε η/Δη of Δη for nearly equal
+         * velocities): with C = E1E2 − p1p2 (collinear_part) and
+         * Δ = m1m2 sinh(η1 − η2) = p1E2 − p2E1, C² − m1²m2² = Δ², so
+         * C − m1m2 = Δ²/(C + m1m2), and
+         * Δ = (p1²E2² − p2²E1²)/(p1E2 + p2E1) = (p1m2 − p2m1)(p1m2 + p2m1)/(p1E2 + p2E1),
+         * whose one difference p1m2 − p2m1 is formed with fma to one rounding. */
+        const double p1 = a->momentum, p2 = b->momentum;
+        const double c0 = collinear_part(m1, a->energy, p1, m2, b->energy, p2);
+        const double den = p1 * b->energy + p2 * a->energy;
+        const double delta =
+            den > 0 ? mech_diff_of_products(p1, m2, p2, m1) * ((p1 * m2 + p2 * m1) / den) : 0.0;
+        d = delta * (delta / (c0 + m1 * m2)) + p1 * p2 * one_minus_cos;
     } else {
         d = q;
     }

@@ -73,6 +73,21 @@ double mech_pendulum_period(double length, double g, double alpha)
     return 2.0 * pend_pi * sqrt(length / g) / (0.5 * (a + b));
 }
 
+double mech_pendulum_period_correction(double alpha)
+{
+    const double sq = sin(0.25 * alpha);
+    double a = 1.0, b = cos(0.5 * alpha), d = 2.0 * sq * sq; /* d = a - b, exactly formed */
+    double s = 0.0;                                          /* 1 - AGM = sum of d_n / 2 */
+    for (int i = 0; i < 40 && d > 1e-17 * s; i++) {
+        s += 0.5 * d;
+        const double ra = sqrt(a), rb = sqrt(b), an = 0.5 * (a + b);
+        b = sqrt(a * b);
+        a = an;
+        d = 0.5 * (d / (ra + rb)) * (d / (ra + rb)); /* (sqrt a - sqrt b)^2 / 2 */
+    }
+    return s / (0.5 * (a + b)); /* 1/AGM - 1 = (1 - AGM)/AGM */
+}
+
 /* ---- the system ------------------------------------------------------------ */
 
 struct pend {

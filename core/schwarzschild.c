@@ -82,29 +82,47 @@ int mech_schw_veff_extrema(double L, double *r_unstable, double *r_stable)
     return L2 == 12.0 ? 1 : 2;
 }
 
-enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit,
+enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit, double mass_length,
                                          struct mech_schw_clock_compare *out,
                                          struct mech_error *err)
 {
+    if (!isfinite(mass_length) || !(mass_length > 0.0))
+        return mech_error_set(err, MECH_EDOMAIN, "M",
+                              "the clock comparison needs GM/c^2 > 0; got %.17g", mass_length);
+    /* the checks (and the rates) on the radii in GM/c^2; the differences below on the
+     * radii as given, so r - R is exact (Sterbenz) and not the difference of two
+     * rounded quotients */
+    const double xr = r_ref / mass_length, xo = r_orbit / mass_length;
     struct mech_schw_static g = {0}, so = {0}; /* zeroed: GCC -O3 cannot see every path sets them */
     struct mech_schw_circular co = {0};
-    enum mech_status st = mech_schw_static_clock(r_ref, &g, NULL);
+    enum mech_status st = mech_schw_static_clock(xr, &g, NULL);
     if (st != MECH_OK)
         return mech_error_set(err, st, "reference_r",
-                              "the reference clock needs r > r_s; got %.17g GM/c^2", r_ref);
-    if ((st = mech_schw_static_clock(r_orbit, &so, err)) != MECH_OK) return st;
-    if ((st = mech_schw_circular_orbit(r_orbit, &co, err)) != MECH_OK) return st;
+                              "the reference clock needs r > r_s; got %.17g GM/c^2", xr);
+    if ((st = mech_schw_static_clock(xo, &so, err)) != MECH_OK) return st;
+    if ((st = mech_schw_circular_orbit(xo, &co, err)) != MECH_OK) return st;
     if (co.stability == MECH_SCHW_ORBIT_NONE)
         return mech_error_set(err, MECH_EDOMAIN, "r",
-                              "no circular orbit at r = %.17g GM/c^2 <= 3 (the photon sphere)",
-                              r_orbit);
-    /* rates are 1 - deficit; differences of rates are differences of deficits */
-    out->gravitational = (g.rate_deficit - so.rate_deficit) / g.rate;
-    out->velocity = (so.rate_deficit - co.rate_deficit) / g.rate;
-    out->net = (g.rate_deficit - co.rate_deficit) / g.rate;
-    out->first_order_gravitational = 1.0 / r_ref - 1.0 / r_orbit;
-    out->first_order_velocity = -0.5 / r_orbit;
-    if (!isfinite(out->net))
+                              "no circular orbit at r = %.17g GM/c^2 <= 3 (the photon sphere)", xo);
+    /* Rates a = sqrt(1 - u) with u = 2m/R (reference), 2m/r (static at r), 3m/r (orbit).
+     * A ratio minus one, a1/a0 - 1 = (a1^2 - a0^2) / (a0 (a1 + a0)) = (u0 - u1) / (a0 (a1 + a0)),
+     * and the u differences in closed form:
+     *   2m/R - 2m/r = 2m (r - R)/(r R)       (r - R exact for r near R: the tower, the ground)
+     *   2m/r - 3m/r = -m/r
+     *   2m/R - 3m/r = m (2r - 3R)/(r R)      (2r - 3R by one fma: net ~ 0 at r = 1.5 R)
+     * so no result is a difference of two nearly equal computed numbers. */
+    const double m = mass_length, m_R = m / r_ref; /* m/R < 1/2: r R itself could underflow */
+    const double a_ref = g.rate, a_static = so.rate, a_orbit = co.rate;
+    const double du_grav = 2.0 * ((r_orbit - r_ref) / r_orbit) * m_R;
+    const double du_vel = -(m / r_orbit);
+    const double du_net = (fma(-3.0, r_ref, 2.0 * r_orbit) / r_orbit) * m_R;
+    out->gravitational = du_grav / (a_ref * (a_static + a_ref));
+    out->velocity = du_vel / (a_ref * (a_orbit + a_static));
+    out->net = du_net / (a_ref * (a_orbit + a_ref));
+    out->first_order_gravitational = 0.5 * du_grav; /* GM/c^2 (1/R - 1/r) */
+    out->first_order_velocity = 0.5 * du_vel;       /* -GM/(2 c^2 r) */
+    out->first_order_net = 0.5 * du_net;            /* GM/c^2 (1/R - 3/(2r)) */
+    if (!isfinite(out->net) || !isfinite(out->gravitational) || !isfinite(out->velocity))
         return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite clock comparison");
     return MECH_OK;
 }

@@ -208,6 +208,8 @@ enum mech_status mech_worldline_run(const struct mech_leg *legs, size_t n, doubl
         o->start[3] = x.z;
         o->home_clock_seen_start = mech_csum_value(&te);
         o->home_receives_start = mech_csum_value(&tr);
+        o->home_clock_seen = dte;
+        o->home_receives = dtr;
         mech_csum_add(&t, T);
         mech_csum_add(&tau, ptau);
         mech_csum_add(&age, agek);

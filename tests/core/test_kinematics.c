@@ -447,6 +447,33 @@ static void test_collisions(void)
     mech_kin_collision_s(&a, &b, 0.0, &s, &d);
     double de = asinh(2.0) - asinh(3.0);
     CHECK_CLOSE(d, 4 * M_P * M_P * sinh(de / 2) * sinh(de / 2), 1e-14, 0);
+    /* Co-moving with nearly equal velocities (issue 15 item 7): d = 2(E1E2 - p1p2 - m1m2),
+     * E = sqrt(m^2 + p^2), by Python's decimal at 80 digits from the same doubles (the
+     * direct form loses ~12 of the 80 digits here). The old rapidity difference
+     * asinh(p1/m1) - asinh(p2/m2) was off by 2.2e-5 relative at p2 = p1 (1 + 2^-40) and
+     * by 3e-10 at p2 = p1 (1 + 1e-6). */
+    {
+        static const struct {
+            double m1, p1, m2, p2, d;
+        } co[] = {
+            {M_P, 1000.0, M_P, 1000.001, 4.6818514160311871e-07},
+            {M_P, 1000.0, M_P, 1000.0000000009095, 3.8727387819544282e-19},
+            {M_P, 1876.54417632, 139.57039, 279.1407802791408, 1.0476402080115861e-13},
+            {M_P, 1000000.0, M_P, 1000001.0, 8.803528560446622e-07},
+        };
+        for (size_t i = 0; i < sizeof co / sizeof co[0]; i++) {
+            CHECK_EQ_INT(mech_kin_motion_from_momentum(co[i].m1, co[i].p1, &a, NULL), MECH_OK);
+            CHECK_EQ_INT(mech_kin_motion_from_momentum(co[i].m2, co[i].p2, &b, NULL), MECH_OK);
+            mech_kin_collision_s(&a, &b, 0.0, &s, &d);
+            CHECK_CLOSE(d, co[i].d, 1e-14, 0);
+            mech_kin_collision_s(&b, &a, 0.0, &s, &d); /* symmetric in the two */
+            CHECK_CLOSE(d, co[i].d, 1e-14, 0);
+        }
+        /* the same velocity: exactly at threshold */
+        CHECK_EQ_INT(mech_kin_motion_from_momentum(M_P, 1000.0, &a, NULL), MECH_OK);
+        mech_kin_collision_s(&a, &a, 0.0, &s, &d);
+        CHECK(d == 0.0);
+    }
     /* Errors */
     CHECK_EQ_INT(mech_kin_fixed_target_kinetic(1000, M_P, M_P, &t, NULL), MECH_EDOMAIN);
     CHECK_EQ_INT(mech_kin_fixed_target_kinetic(1000, M_P, 0, &t, NULL), MECH_EDOMAIN);
@@ -454,6 +481,61 @@ static void test_collisions(void)
     CHECK_EQ_INT(mech_kin_motion_from_kinetic(-1, 900, &a, NULL), MECH_EDOMAIN);
     CHECK_EQ_INT(mech_kin_motion_from_momentum(0, 0, &a, NULL), MECH_EDOMAIN);
     CHECK_EQ_INT(mech_kin_motion_at_rest(0, &a, NULL), MECH_EDOMAIN);
+}
+
+/* p_a − p_b of nearly equal beams (issue 15 item 7; the CM velocity of nearly
+ * symmetric head-on beams): expected values by Python's decimal at 80 digits
+ * from the same doubles, sqrt(E² − m²), sqrt(T² + 2mT) or p for each beam, then
+ * subtracted (the direct form loses at most 14 of the 80 digits here). The
+ * difference of the two rounded momenta is off by up to ε p/|p_a − p_b|:
+ * 1e-9 for 7 TeV beams 1 part in 1e7 apart, 1e-3 at 1 + 2^-40. */
+static void test_momentum_difference(void)
+{
+    enum { E, T, P };
+    static const struct {
+        double ma;
+        int fa;
+        double xa, mb;
+        int fb;
+        double xb, want;
+    } cs[] = {
+        {M_P, E, 7e6, M_P, E, 7000000.7, -7.00000006474510439e-01},
+        {M_P, E, 7e6, M_P, E, 7000000.0000063665, -6.36652117726320363e-06},
+        {M_P, T, 1000.0, M_P, T, 1000.0001, -1.14282363680820622e-04},
+        {M_P, T, 1e-3, M_P, T, 1.000000001e-3, -6.84935610182744775e-10},
+        /* LEP's 104 GeV electron by E against one by T: p differs by 5e-17 relative */
+        {M_E, E, 104000.0, M_E, T, 103999.48900105, 5.15976150700769833e-12},
+        {M_P, E, 1000.0, M_PIC, P, 345.0, 8.98089876011422983e-01},
+        {M_P, P, 1000.0, M_P, P, 1000.0000001, -9.99999656414729543e-08},
+        /* scaled by a power of two: E², and p_a + p_b for the second, would overflow */
+        {1e307, P, 1e308, 1e307, P, 9e307, 9.999999999999996e+306}, /* exact difference */
+        {1e200, E, 3e200, 1e200, E, 3.0000000030000002e+200, -3.18198082846005358e+191},
+    };
+    double worst = 0;
+    for (size_t i = 0; i < sizeof cs / sizeof cs[0]; i++) {
+        struct mech_kin_motion k[2];
+        for (int j = 0; j < 2; j++) {
+            double m = j ? cs[i].mb : cs[i].ma, x = j ? cs[i].xb : cs[i].xa;
+            int f = j ? cs[i].fb : cs[i].fa;
+            enum mech_status st = f == E   ? mech_kin_motion_from_energy(m, x, &k[j], NULL)
+                                  : f == T ? mech_kin_motion_from_kinetic(m, x, &k[j], NULL)
+                                           : mech_kin_motion_from_momentum(m, x, &k[j], NULL);
+            CHECK_EQ_INT(st, MECH_OK);
+        }
+        double d = mech_kin_momentum_difference(&k[0], &k[1]);
+        CHECK_CLOSE(d, cs[i].want, 1e-14, 0);
+        CHECK_CLOSE(mech_kin_momentum_difference(&k[1], &k[0]), -cs[i].want, 1e-14, 0);
+        if (rel(d, cs[i].want) > worst) worst = rel(d, cs[i].want);
+    }
+    printf("momentum difference: worst relative error %.3g\n", worst);
+    /* At rest: 0, and p_a against a particle at rest. */
+    struct mech_kin_motion a, b;
+    CHECK_EQ_INT(mech_kin_motion_at_rest(M_P, &a, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_motion_at_rest(M_E, &b, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_momentum_difference(&a, &b) == 0.0, 1);
+    CHECK_EQ_INT(mech_kin_motion_from_energy(M_E, 104000, &b, NULL), MECH_OK);
+    /* sqrt(104000² − m_e²) by decimal at 80 digits */
+    CHECK_CLOSE(mech_kin_momentum_difference(&b, &a), 1.03999999998744621e+05, 1e-15, 0);
 }
 
 int main(void)
@@ -467,6 +549,7 @@ int main(void)
     test_boost_invariance();
     test_compton();
     test_collisions();
+    test_momentum_difference();
     printf("worst relative errors: invariant mass %.3g, decays %.3g, Compton %.3g, "
            "collisions %.3g\n",
            worst_invariant, worst_decay, worst_compton, worst_collision);

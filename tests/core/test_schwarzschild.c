@@ -98,7 +98,7 @@ int main(void)
      * -7.2131245668393341, +38.506038792245501 us/day */
     const double c = 299792458.0, GMe = 3.986004418e14, m = GMe / (c * c);
     struct mech_schw_clock_compare cc;
-    CHECK(mech_schw_clock_compare(6371000.0 / m, 26561750.0 / m, &cc, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(6371000.0, 26561750.0, m, &cc, NULL) == MECH_OK);
     const double day = 86400e6;
     CHECK_CLOSE(cc.gravitational * day, 45.719163359084836, 1e-13, 0);
     CHECK_CLOSE(cc.velocity * day, -7.2131245668393341, 1e-13, 0);
@@ -107,14 +107,80 @@ int main(void)
     /* first order agrees to O(x^2) ~ 1e-9 relative */
     CHECK_CLOSE(cc.first_order_gravitational, cc.gravitational, 2e-9, 0);
     CHECK_CLOSE(cc.first_order_velocity, cc.velocity, 2e-9, 0);
+    /* net in closed form to first order: GM/c^2 (1/R - 3/(2r)) = 4.4567174476e-10 */
+    CHECK_CLOSE(cc.net, GMe / (c * c) * (1.0 / 6371000.0 - 1.5 / 26561750.0), 2e-9, 0);
+    CHECK_CLOSE(cc.first_order_net, GMe / (c * c) * (1.0 / 6371000.0 - 1.5 / 26561750.0), 1e-15, 0);
     /* equatorial radius: 38.438737351513172 us/day */
-    CHECK(mech_schw_clock_compare(6378137.0 / m, 26561750.0 / m, &cc, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(6378137.0, 26561750.0, m, &cc, NULL) == MECH_OK);
     CHECK_CLOSE(cc.net * day, 38.438737351513172, 1e-13, 0);
     mech_error_clear(&e);
-    CHECK(mech_schw_clock_compare(1.0, 100.0, &cc, &e) == MECH_EDOMAIN);
+    CHECK(mech_schw_clock_compare(1.0, 100.0, 1.0, &cc, &e) == MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "reference_r"));
     mech_error_clear(&e);
-    CHECK(mech_schw_clock_compare(100.0, 2.9, &cc, &e) == MECH_EDOMAIN);
+    CHECK(mech_schw_clock_compare(100.0, 2.9, 1.0, &cc, &e) == MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "r"));
+    mech_error_clear(&e);
+    CHECK(mech_schw_clock_compare(100.0, 200.0, 0.0, &cc, &e) == MECH_EDOMAIN);
+    CHECK(!strcmp(e.param, "M"));
+    /* the same radii in metres and in GM/c^2 (m = 2, lengths doubled) agree */
+    CHECK(mech_schw_clock_compare(20.0, 21.0, 2.0, &cc, NULL) == MECH_OK);
+    CHECK_CLOSE(cc.net, sqrt(1.0 - 3.0 / 10.5) / sqrt(1.0 - 2.0 / 10.0) - 1.0, 1e-14, 0);
+    /* ... and at the ends of the double range, where r R would underflow or overflow */
+    struct mech_schw_clock_compare c1, c2, c3;
+    CHECK(mech_schw_clock_compare(10.0, 21.0, 1.0, &c1, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(10e-300, 21e-300, 1e-300, &c2, NULL) == MECH_OK);
+    CHECK(mech_schw_clock_compare(10e300, 21e300, 1e300, &c3, NULL) == MECH_OK);
+    CHECK_CLOSE(c2.gravitational, c1.gravitational, 1e-15, 0);
+    CHECK_CLOSE(c3.gravitational, c1.gravitational, 1e-15, 0);
+    CHECK_CLOSE(c2.net, c1.net, 1e-15, 0);
+    CHECK_CLOSE(c3.net, c1.net, 1e-15, 0);
+
+    /* Clocks near the reference (issue 15 item 6): the tower and the ground.
+     * R = 6371000 m, m = GM_earth/c^2 as the API forms it (the double 0x1.22a76c6285c0bp-8),
+     * r = R + 1 cm, 1 m, 22.5 m (Pound-Rebka), 1 km, the GPS orbit, and r = 1.5 R + 1 m and
+     * 1.5 R where net changes sign. Expected values: Python's decimal at 80 digits from the
+     * same input doubles, by the definitions themselves (cancellation costs ~18 of the 80
+     * digits): a = sqrt(1 - u), gravitational = a(2m/r)/a(2m/R) - 1, velocity =
+     * (a(3m/r) - a(2m/r))/a(2m/R), net = a(3m/r)/a(2m/R) - 1, first-order gravitational
+     * m (1/R - 1/r) and net m (1/R - 3/(2r)). The old code (rates of radii already
+     * divided by m, subtracted) was off by 6.5e-8 relative at 1 cm, 1.5e-9 at 1 m,
+     * 7.2e-11 at 22.5 m, and got a net of ~1e-22 instead of 0 at r = 1.5 R. */
+    {
+        const double mE = 0x1.22a76c6285c0bp-8;
+        CHECK(mE == m);
+        static const struct {
+            double r, grav, vel, net, fo_grav, fo_net;
+        } near[] = {
+            {6371000.01, 1.0926502008728e-18, -3.4806372932843523e-10, -3.4806372823578506e-10,
+             1.0926501993515525e-18, -3.4806372769061746e-10},
+            {6371001, 1.0926500555067757e-16, -3.4806367524225754e-10, -3.4806356597725195e-10,
+             1.0926500539855283e-16, -3.4806356543208461e-10},
+            {6371022.5, 2.4584543284281855e-15, -3.4806250064759485e-10, -3.480600421932664e-10,
+             2.4584543250053934e-15, -3.4806004164810521e-10},
+            {6372000, 1.0924787502014035e-13, -3.4800910593719327e-10, -3.4789985806217313e-10,
+             1.0924787486804543e-13, -3.4789985751729065e-10},
+            {26561750, 5.2915698332274115e-10, -8.3485238042121916e-11, 4.456717452806192e-10,
+             5.2915698272602329e-10, 4.4567174475944222e-10},
+            {9556501, 2.3204253507809614e-10, -2.320424622347553e-10, 7.2843340844977913e-17,
+             2.3204253478195566e-10, 7.2843340743561425e-17},
+        };
+        for (size_t i = 0; i < sizeof near / sizeof near[0]; i++) {
+            CHECK(mech_schw_clock_compare(6371000.0, near[i].r, mE, &cc, NULL) == MECH_OK);
+            CHECK_CLOSE(cc.gravitational, near[i].grav, 1e-14, 0);
+            CHECK_CLOSE(cc.velocity, near[i].vel, 1e-14, 0);
+            CHECK_CLOSE(cc.net, near[i].net, 1e-14, 0);
+            CHECK_CLOSE(cc.first_order_gravitational, near[i].fo_grav, 1e-14, 0);
+            CHECK_CLOSE(cc.first_order_net, near[i].fo_net, 1e-14, 0);
+        }
+        /* r = 1.5 R: the orbit's time dilation cancels the height gain exactly */
+        CHECK(mech_schw_clock_compare(6371000.0, 9556500.0, mE, &cc, NULL) == MECH_OK);
+        CHECK(cc.net == 0.0 && cc.first_order_net == 0.0);
+        CHECK_CLOSE(cc.gravitational, 2.3204248651586892e-10, 1e-14, 0);
+        /* Pound-Rebka closed form: g h / c^2 with g = GM/R^2, to O(h/R) ~ 3.5e-6 */
+        CHECK(mech_schw_clock_compare(6371000.0, 6371022.5, mE, &cc, NULL) == MECH_OK);
+        CHECK_CLOSE(cc.gravitational,
+                    3.986004418e14 / (6371000.0 * 6371000.0) * 22.5 / (299792458.0 * 299792458.0),
+                    1e-5, 0);
+    }
     TEST_MAIN_END();
 }

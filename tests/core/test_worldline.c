@@ -211,11 +211,39 @@ static void test_errors(void)
     CHECK_EQ_INT(mech_worldline_run(two, 2, 1.0, &one, r, &tot, NULL), MECH_EBUDGET);
 }
 
+/* Per-leg telescope intervals of a short leg late in a long trip (issue 15
+ * item 7): 10 years out at 0.6c, then one day (1/365.25 yr) further out and one
+ * day back. Radially receding the traveller sees home time T(1 − β) pass and
+ * home sees the leg over T(1 + β); approaching, the other way round. Exact
+ * rationals of the same doubles (Python fractions): T(1 − β) =
+ * 0.0010951403148528405, T(1 + β) = 0.004380561259411362. The differences of
+ * the running totals (≈ 4 and 16 years) were off by 2e-13 relative. */
+static void test_short_leg_late(void)
+{
+    const double day = 1 / 365.25, lo = 0.0010951403148528405, hi = 0.004380561259411362;
+    struct mech_leg legs[3] = {coast(MECH_LEG_COAST_TIME, 0.6, 10),
+                               coast(MECH_LEG_COAST_TIME, 0.6, day),
+                               coast(MECH_LEG_COAST_TIME, -0.6, day)};
+    struct mech_leg_result r[3];
+    struct mech_worldline_total tot;
+    CHECK_EQ_INT(mech_worldline_run(legs, 3, 1.0, &bud, r, &tot, NULL), MECH_OK);
+    CHECK_CLOSE(r[1].home_clock_seen, lo, 1e-15, 0);
+    CHECK_CLOSE(r[1].home_receives, hi, 1e-15, 0);
+    CHECK_CLOSE(r[2].home_clock_seen, hi, 1e-15, 0);
+    CHECK_CLOSE(r[2].home_receives, lo, 1e-15, 0);
+    /* The first leg's intervals, and the totals 10 (1 ∓ β) + T(1 − β) + T(1 + β). */
+    CHECK_CLOSE(r[0].home_clock_seen, 4, 2e-16, 0);
+    CHECK_CLOSE(r[0].home_receives, 16, 2e-16, 0);
+    CHECK_CLOSE(tot.home_clock_seen_end, 4.005475701574264, 4e-16, 0);
+    CHECK_CLOSE(tot.home_receives_end, 16.005475701574262, 4e-16, 0);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
     bud = mech_budget_make(1000, 10);
     test_notes_twins();
+    test_short_leg_late();
     test_muon();
     test_hyperbolic();
     test_accelerated_round_trip();

@@ -25,12 +25,22 @@
 #include "mech/status.h"
 #include "mech/vec.h"
 
+/* Which member of a motion is the caller's own number (exact), the others
+ * being computed from it and the mass. A motion at rest or from a velocity
+ * counts as given by its momentum (0, or m βγ of the boost). */
+enum mech_kin_given {
+    MECH_KIN_GIVEN_MOMENTUM = 0,
+    MECH_KIN_GIVEN_ENERGY = 1,
+    MECH_KIN_GIVEN_KINETIC = 2,
+};
+
 /* A free particle's energy bookkeeping (c = 1): mass m ≥ 0, momentum
  * magnitude p ≥ 0, energy E = hypot(m, p), kinetic energy T = E − m computed
  * as p²/(E + m) or taken from the caller's T (never E − m of a rounded E when
- * T was given). */
+ * T was given). `given` records which of p, E, T was the input. */
 struct mech_kin_motion {
     double mass, momentum, energy, kinetic;
+    enum mech_kin_given given;
 };
 
 /* Build a motion from the mass and one of: momentum p ≥ 0, total energy
@@ -53,6 +63,20 @@ enum mech_status mech_kin_motion_at_rest(double m, struct mech_kin_motion *out,
  * (m ≤ 0: a massless particle has no velocity below c). */
 enum mech_status mech_kin_motion_from_boost(double m, const struct mech_boost *b,
                                             struct mech_kin_motion *out, struct mech_error *err);
+
+/* p_a − p_b of two motions along one line (e.g. the total momentum of two
+ * head-on beams), formed from the numbers the motions were built from rather
+ * than from the two rounded momenta: (p_a² − p_b²)/(p_a + p_b) with each p²
+ * an exact sum of products of its inputs (p·p; E·E − m·m; T·T + 2m·T, split
+ * by fma) and the difference summed in about triple precision (Ogita–Rump–
+ * Oishi SumK, K = 3). Relative error a few ε even when p_a and p_b agree to
+ * 1e-12 and beyond; a − b of the rounded momenta is off by ε p/(p_a − p_b).
+ * A motion from a velocity is as exact as its m βγ. Inputs are scaled by one
+ * power of two, so any finite motions work; squares more than 2^-1000 below
+ * the largest underflow (their contribution is then below ε of the result's
+ * scale). Both at rest: 0. Pure; cannot fail. */
+double mech_kin_momentum_difference(const struct mech_kin_motion *a,
+                                    const struct mech_kin_motion *b);
 
 /* The boost to the particle's rest frame (its velocity p/E along direction):
  * γ = E/m, γ − 1 = T/m, βγ = p/m, 1 − β = m²/(E(E + p)), η = log1p(βγ + γ − 1).

@@ -86,17 +86,25 @@ int mech_schw_veff_extrema(double L, double *r_unstable, double *r_stable);
  * t and expressed relative to the reference clock:
  *   net = rate_orbit / rate_ref - 1 = gravitational + velocity, with
  *   gravitational = (rate_static(r_orbit) - rate_ref) / rate_ref,
- *   velocity      = (rate_orbit - rate_static(r_orbit)) / rate_ref,
- * each formed from the deficits (no cancellation). first_order_*: the weak-
- * field expansion 1/r_ref - 1/r_orbit and -1/(2 r_orbit). */
+ *   velocity      = (rate_orbit - rate_static(r_orbit)) / rate_ref.
+ * Each is formed as (u0 - u1) / (a0 (a1 + a0)) with rates a = sqrt(1 - u) and
+ * the differences u0 - u1 in closed form on the radii as given (2m (r - R)/(r R),
+ * -m/r, m (2r - 3R)/(r R)), so a tower (r - R = 22.5 m on the Earth: 2.5e-15)
+ * or a 1 cm step keeps full relative precision, as does net near r = 1.5 R
+ * where it changes sign. first_order_*: the weak-field forms m (1/R - 1/r),
+ * -m/(2r) and their sum m (1/R - 3/(2r)), formed the same way. */
 struct mech_schw_clock_compare {
     double gravitational, velocity, net;
-    double first_order_gravitational, first_order_velocity;
+    double first_order_gravitational, first_order_velocity, first_order_net;
 };
 
-/* Statuses: MECH_OK; MECH_EDOMAIN with param "reference_r" (r_ref <= 2) or
- * "r" (r_orbit <= 3: no circular orbit). */
-enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit,
+/* r_ref and r_orbit in any length unit, mass_length = GM/c^2 in that unit (1 for
+ * geometric radii; 4.435e-3 for the Earth in metres). The radii are passed
+ * unscaled so their difference is formed before any rounding.
+ * Statuses: MECH_OK; MECH_EDOMAIN with param "reference_r" (r_ref <= 2 GM/c^2),
+ * "r" (r_orbit <= 3 GM/c^2: no circular orbit) or "M" (mass_length not > 0 or
+ * not finite); MECH_ENUMERIC for a non-finite result. */
+enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit, double mass_length,
                                          struct mech_schw_clock_compare *out,
                                          struct mech_error *err);
 

@@ -51,6 +51,11 @@ struct mech_leg_result {
                                    traveller sees at the leg's start and end (T) */
     double home_receives_start, home_receives_end;     /* home times when the leg's start
                                    and end are seen at home (T) */
+    /* The same intervals from the leg itself, not as end − start of the running
+     * totals (which would lose ε·(trip so far)/(leg): 1e-12 for a day after 10
+     * years): home time the traveller sees pass during the leg, and home time
+     * over which home sees the leg (T, both ≥ 0). */
+    double home_clock_seen, home_receives;
 };
 
 struct mech_worldline_total {
