@@ -72,7 +72,7 @@ static const struct opt_spec {
                                 "answer); slower connections are closed"},
     [OPT_INLINE_MAX_US] = {"--inline-max-us", "MECHD_INLINE_MAX_US", "100", 0, 1000000,
                            "a quick operation (closed form, small body) is answered on an I/O "
-                           "thread while its measured cost predicts at most this many µs; "
+                           "thread while its measured CPU cost predicts at most this many µs; "
                            "0: every operation goes to the workers"},
     [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "10", 0, 19,
                          "how much lower the compute workers' scheduling priority is than the "

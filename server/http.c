@@ -28,12 +28,24 @@
  * request: the suspend -> worker -> resume hand-off (two context switches, a
  * futex wake-up and an eventfd write) costs more than such an operation. It is
  * logged and counted in /metrics like any other request. The choice is
- * measured, not assumed (DESIGN.md): every run of a quick route, inline or on
- * a worker, updates a moving average of its wall time per byte of request
- * (plus SRV_QUICK_BASE_BYTES for the fixed costs), and a request runs inline
- * only while its predicted time is at most --inline-max-us, so a route that
- * turns out slow (or a large body) goes to the pool and never holds an I/O
- * thread, and /healthz, for long. The first request of a route runs inline.
+ * measured, not assumed (DESIGN.md): runs of a quick route, inline or on a
+ * worker, update a moving average of the route's *thread CPU time*
+ * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
+ * the fixed costs), and a request runs inline only while its predicted time is
+ * at most --inline-max-us, so a route that turns out slow (or a large body)
+ * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
+ * time, not wall time: a thread preempted for a millisecond during a 5 µs
+ * boost (the rule on a machine whose cores also run the clients) would
+ * otherwise look 200 times slower, and one such run sent every later boost to
+ * the niced workers, whose small queue then refused cheap requests with 503
+ * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
+ * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of
+ * a route always; one measurement moves the average by at most a factor of
+ * 1 + (SRV_QUICK_CAP - 1) / 8. The decision recovers: the average decays with
+ * every measured run, and a route predicted too slow still runs inline (and
+ * is measured) once in SRV_QUICK_REPROBE requests, so a full pool that
+ * refuses it cannot freeze a stale estimate. The first request of a route runs
+ * inline.
  *
  * I/O THREADS. libmicrohttpd runs a pool of --io-threads epoll threads (its
  * MHD_OPTION_THREAD_POOL_SIZE; default 2, the machine's cores), each with its
@@ -92,6 +104,9 @@
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
+#define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
+#define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
+#define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -105,6 +120,16 @@
 #define SRV_CORS_MAX_AGE "600"
 
 struct srv_req;
+
+/* Per quick route (api_routes index). Relaxed atomics: a lost update only
+ * delays the average or shifts a sample by one request. */
+struct srv_quick_stat {
+    atomic_llong cost;   /* moving average of thread CPU ns per KiB of (body +
+                            SRV_QUICK_BASE_BYTES); 0 = not measured yet */
+    atomic_uint runs;    /* runs so far: every SRV_QUICK_SAMPLE-th is measured */
+    atomic_uint too_slow; /* requests predicted over --inline-max-us: every
+                             SRV_QUICK_REPROBE-th runs inline anyway */
+};
 
 /* Receive state of a connection (struct srv_conn.rx), switched by CAS. */
 enum conn_rx {
@@ -140,10 +165,9 @@ struct srv_http {
     /* Open connections, for the receive time limit. Guarded by conn_mu. */
     pthread_mutex_t conn_mu;
     struct srv_conn *conns;
-    /* Per route (api_routes index): moving average of a quick route's wall
-     * time in ns per KiB of (body + SRV_QUICK_BASE_BYTES); 0 = not measured.
-     * Relaxed atomics: a lost update only delays the average. */
-    atomic_llong *quick_cost;
+    /* Per route (api_routes index): the measured cost of quick routes (see
+     * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
+    struct srv_quick_stat *quick;
 };
 
 enum req_state {
@@ -185,6 +209,7 @@ struct srv_req {
     struct srv_conn *sc; /* the connection's registration, or NULL */
     long route_index;    /* index in api_routes of a POST to an operation, else -1 */
     int quick_route;     /* route is quick and the body small enough (api_quick_route) */
+    int quick_probe;     /* runs inline although predicted too slow: measure it */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
     int watching;
 };
@@ -421,29 +446,57 @@ static unsigned long long quick_units(size_t body_len)
     return (unsigned long long)body_len + SRV_QUICK_BASE_BYTES;
 }
 
-/* Run the API on r, timing it for the quick-route average when it is one. */
-static void run_api(struct srv_req *r)
+/* CPU time this thread has used, in ns; -1 if the clock cannot be read. */
+static long long thread_cpu_ns(void)
 {
-    if (!r->quick_route || !r->http->quick_cost) {
-        api_handle_ext(&r->areq, &r->aext, &r->aresp);
-        return;
-    }
-    double t0 = mech_clock_seconds();
-    api_handle_ext(&r->areq, &r->aext, &r->aresp);
-    double ns = (mech_clock_seconds() - t0) * 1e9;
-    long long per_kib = (long long)(ns * 1024.0 / (double)quick_units(r->body_len)) + 1;
-    atomic_llong *avg = &r->http->quick_cost[r->route_index];
-    long long old = atomic_load_explicit(avg, memory_order_relaxed);
-    atomic_store_explicit(avg, old ? old + (per_kib - old) / 8 : per_kib, memory_order_relaxed);
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return -1;
+    return (long long)ts.tv_sec * 1000000000LL + ts.tv_nsec;
 }
 
-/* Whether the quick request r is predicted to finish within --inline-max-us. */
-static int quick_inline(const struct srv_http *h, const struct srv_req *r)
+/* Fold one measured run (cpu_ns of thread CPU time for a body of body_len
+ * bytes) into the route's moving average: weight 1/8, the measurement capped
+ * at SRV_QUICK_CAP times the average, so one outlier (a page fault, a cold
+ * cache) cannot send a route to the pool on its own. */
+static void quick_record(struct srv_quick_stat *q, long long cpu_ns, size_t body_len)
 {
-    if (!r->quick_route || !h->quick_cost || h->cfg->inline_max_us <= 0) return 0;
-    long long per_kib = atomic_load_explicit(&h->quick_cost[r->route_index], memory_order_relaxed);
+    long long per_kib = (long long)((double)cpu_ns * 1024.0 / (double)quick_units(body_len)) + 1;
+    long long old = atomic_load_explicit(&q->cost, memory_order_relaxed);
+    if (old > 0 && per_kib > SRV_QUICK_CAP * old) per_kib = SRV_QUICK_CAP * old;
+    atomic_store_explicit(&q->cost, old ? old + (per_kib - old) / 8 : per_kib,
+                          memory_order_relaxed);
+}
+
+/* Run the API on r; for a quick route, measure the run's thread CPU time on
+ * one run in SRV_QUICK_SAMPLE (and on every probe) for the route's average. */
+static void run_api(struct srv_req *r)
+{
+    struct srv_quick_stat *q =
+        r->quick_route && r->http->quick ? &r->http->quick[r->route_index] : NULL;
+    int measure =
+        q && (r->quick_probe ||
+              atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
+    long long c0 = measure ? thread_cpu_ns() : -1;
+    api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    if (c0 < 0) return;
+    long long c1 = thread_cpu_ns();
+    if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);
+}
+
+/* Whether the quick request r runs inline: predicted to finish within
+ * --inline-max-us, or (once in SRV_QUICK_REPROBE requests predicted over it)
+ * a probe that re-measures the route, so the estimate can come back down. */
+static int quick_inline(struct srv_http *h, struct srv_req *r)
+{
+    if (!r->quick_route || !h->quick || h->cfg->inline_max_us <= 0) return 0;
+    struct srv_quick_stat *q = &h->quick[r->route_index];
+    long long per_kib = atomic_load_explicit(&q->cost, memory_order_relaxed);
     double predicted_ns = (double)per_kib * (double)quick_units(r->body_len) / 1024.0;
-    return predicted_ns <= (double)h->cfg->inline_max_us * 1000.0;
+    if (predicted_ns <= (double)h->cfg->inline_max_us * 1000.0) return 1;
+    unsigned n = atomic_fetch_add_explicit(&q->too_slow, 1, memory_order_relaxed);
+    if (n % SRV_QUICK_REPROBE != SRV_QUICK_REPROBE - 1) return 0;
+    r->quick_probe = 1;
+    return 1;
 }
 
 /* Worker side: cannot fail; the outcome is stored in the request. After
@@ -1000,9 +1053,12 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->listen_fd = -1;
     pthread_mutex_init(&h->watch_mu, NULL);
     pthread_mutex_init(&h->conn_mu, NULL);
-    h->quick_cost = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick_cost);
-    for (size_t i = 0; h->quick_cost && i < api_route_count; i++)
-        atomic_init(&h->quick_cost[i], 0);
+    h->quick = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick);
+    for (size_t i = 0; h->quick && i < api_route_count; i++) {
+        atomic_init(&h->quick[i].cost, 0);
+        atomic_init(&h->quick[i].runs, 0);
+        atomic_init(&h->quick[i].too_slow, 0);
+    }
     atomic_init(&h->next_id, 0);
     atomic_init(&h->inflight, 0);
 
@@ -1026,7 +1082,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         srv_log_note("cannot parse bind address '%s'", cfg->bind);
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
-        free(h->quick_cost);
+        free(h->quick);
         free(h);
         return NULL;
     }
@@ -1046,7 +1102,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
-        free(h->quick_cost);
+        free(h->quick);
         free(h);
         return NULL;
     }
@@ -1100,6 +1156,6 @@ void srv_http_stop(struct srv_http *h)
     if (h->listen_fd >= 0) close(h->listen_fd);
     pthread_mutex_destroy(&h->watch_mu);
     pthread_mutex_destroy(&h->conn_mu);
-    free(h->quick_cost);
+    free(h->quick);
     free(h);
 }
