@@ -28,6 +28,7 @@ enum opt_id {
     OPT_REQUEST_TIMEOUT_MS,
     OPT_INLINE_MAX_US,
     OPT_WORKER_NICE,
+    OPT_MAX_CONNECTIONS,
     OPT_COUNT
 };
 
@@ -78,6 +79,10 @@ static const struct opt_spec {
                          "how much lower the compute workers' scheduling priority is than the "
                          "I/O threads' (nice increment; with > 0 also SCHED_BATCH), so /healthz "
                          "and quick answers win a busy core; 0: same priority"},
+    [OPT_MAX_CONNECTIONS] = {"--max-connections", "MECHD_MAX_CONNECTIONS", "512", 8, 100000,
+                             "connections held open at once; a new one beyond it closes the "
+                             "connection that has waited longest without sending a whole "
+                             "request, so /healthz stays reachable under a connection flood"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -256,6 +261,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_WORKER_NICE:
         cfg->worker_nice = (int)v;
+        break;
+    case OPT_MAX_CONNECTIONS:
+        cfg->max_connections = (int)v;
         break;
     default:
         break;

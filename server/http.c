@@ -72,7 +72,28 @@
  * the socket). The socket stays open while registered (libmicrohttpd notifies
  * CLOSED before it closes the descriptor), so the watcher never touches a
  * reused descriptor. Keep-alive idle time counts towards the limit.
+ *
+ * CONNECTION FLOODS. Connections are counted as they register. When a new one
+ * takes the count (not counting those already shutting) over
+ * --max-connections, the registered connection that has waited longest for a
+ * whole request (CONN_RX with the oldest ready time: idle keep-alive, connected
+ * and silent, or trickling) is shut down the same way, so a health probe or a
+ * real client always gets a slot: 600 idle connections against 512 used to
+ * make most /healthz probes fail. Connections with a request queued, running
+ * or being answered are never chosen. libmicrohttpd's own limit sits above
+ * --max-connections (conn_hard_limit) to absorb connections accepted before
+ * the shut ones have closed. Every SRV_REAP_PERIOD_MS the watcher also polls
+ * the sockets of waiting connections and shuts down those whose client has
+ * gone (end-of-file with nothing left to read, or an error, seen on two sweeps
+ * in a row): libmicrohttpd's edge-triggered epoll misses a FIN that arrived
+ * before it accepted the connection, and 1,500 half-sent, closed requests
+ * otherwise sat in CLOSE-WAIT, holding every slot, until the idle timeout.
+ * Both are counted in /metrics (mechd_connections_evicted_total,
+ * mechd_connections_reaped_total) next to mechd_connections_open.
  */
+#ifdef __linux__
+#define _GNU_SOURCE /* POLLRDHUP */
+#endif
 #include "http.h"
 
 #include <arpa/inet.h>
@@ -86,6 +107,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
@@ -96,13 +118,17 @@
 #include "static.h"
 #include "mech/budget.h"
 
+#ifndef POLLRDHUP
+#define POLLRDHUP 0 /* not Linux: a gone client is seen by POLLHUP/POLLERR only */
+#endif
+
 #define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
-#define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
 #define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
 #define SRV_BODY_SMALL 512u          /* ... unless its first piece fits in this (a quick request):
                                         glibc serves < 1 KiB from its small bins, while every
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
+#define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
 #define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
@@ -135,7 +161,8 @@ struct srv_quick_stat {
 enum conn_rx {
     CONN_RX = 0,    /* waiting for or receiving a request: the receive limit runs */
     CONN_BUSY,      /* claimed by the I/O thread: request queued, running or answering */
-    CONN_TIMED_OUT, /* claimed by the watcher: the socket was shut down */
+    CONN_SHUT,      /* the server shut the socket down (receive limit, room for a new
+                       connection, client gone); libmicrohttpd closes it. Final. */
 };
 
 /* One per open connection (libmicrohttpd's socket context), in http->conns
@@ -144,6 +171,7 @@ struct srv_conn {
     int fd;
     atomic_int rx;         /* enum conn_rx */
     atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
+    int eof_sweeps;        /* consecutive reaper sweeps that found the client gone (conn_mu) */
     struct srv_conn *prev, *next;
 };
 
@@ -162,9 +190,16 @@ struct srv_http {
     int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
     atomic_ulong next_id;
     atomic_int inflight; /* requests between first callback and completion */
-    /* Open connections, for the receive time limit. Guarded by conn_mu. */
+    /* Open connections, for the receive time limit, room for new ones and
+     * reaping dead peers. Guarded by conn_mu. */
     pthread_mutex_t conn_mu;
     struct srv_conn *conns;
+    int n_conns; /* registered connections */
+    int n_shut;  /* ... of which CONN_SHUT (closing, no longer counted against the limit) */
+    /* The reaper's poll set (watcher thread only), grown as needed. */
+    struct pollfd *reap_pfd;
+    struct srv_conn **reap_conn;
+    size_t reap_cap;
     /* Per route (api_routes index): the measured cost of quick routes (see
      * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
     struct srv_quick_stat *quick;
@@ -318,6 +353,22 @@ static long long now_ms(void)
     return (long long)(mech_clock_seconds() * 1000.0);
 }
 
+/* Shut down connection c if it is still waiting for or receiving a request
+ * (CONN_RX -> CONN_SHUT; conn_mu held), counting it with count(1) in /metrics
+ * before the client can see the close: libmicrohttpd then sees end-of-file
+ * and closes it on its own thread. Registered, so the descriptor is still
+ * libmicrohttpd's open socket. Returns 1 if this call shut it down, 0 if the
+ * I/O thread had claimed it (or it was already shut). */
+static int conn_shut_down(struct srv_http *h, struct srv_conn *c, void (*count)(unsigned long))
+{
+    int expected = CONN_RX;
+    if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_SHUT)) return 0;
+    h->n_shut++;
+    count(1);
+    if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
+    return 1;
+}
+
 /* Close every connection that has been receiving one request for longer than
  * --request-timeout-ms (see SLOW CLIENTS above) and count it in /metrics.
  * Returns how many. Lock order: conn_mu, then log.c's counters. */
@@ -329,13 +380,87 @@ static int close_slow_connections(struct srv_http *h)
     pthread_mutex_lock(&h->conn_mu);
     for (struct srv_conn *c = h->conns; c; c = c->next) {
         if (atomic_load(&c->rx) != CONN_RX || now - atomic_load(&c->ready_ms) <= limit) continue;
-        int expected = CONN_RX;
-        if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_TIMED_OUT)) continue;
-        /* Counted before the client can see the close. Registered, so the
-         * descriptor is still libmicrohttpd's open socket. */
-        srv_metrics_count_timeouts(1);
-        if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
-        n++;
+        n += conn_shut_down(h, c, srv_metrics_count_timeouts);
+    }
+    pthread_mutex_unlock(&h->conn_mu);
+    return n;
+}
+
+/* Make room for a new connection beyond --max-connections (conn_mu held):
+ * shut down the connection that has waited longest for a whole request
+ * (CONN_RX with the oldest ready_ms: an idle keep-alive connection, a client
+ * that connected and sent nothing, or a slow sender), other than `fresh`.
+ * Connections whose request is queued, running or being answered are never
+ * chosen. Returns 1 if one was shut down. */
+static int evict_longest_waiting(struct srv_http *h, const struct srv_conn *fresh)
+{
+    struct srv_conn *victim = NULL;
+    long long oldest = 0;
+    for (struct srv_conn *c = h->conns; c; c = c->next) {
+        if (c == fresh || atomic_load(&c->rx) != CONN_RX) continue;
+        long long t = atomic_load(&c->ready_ms);
+        if (!victim || t < oldest) {
+            victim = c;
+            oldest = t;
+        }
+    }
+    return victim ? conn_shut_down(h, victim, srv_metrics_count_evictions) : 0;
+}
+
+/* Did the client go away, given poll()'s revents for its socket? An error or
+ * a hang-up, or end-of-file (POLLRDHUP) with nothing left to read: a request
+ * whose bytes are still in the socket is left for libmicrohttpd to read. */
+static int peer_gone(int fd, short revents)
+{
+    if (revents & (POLLERR | POLLHUP | POLLNVAL)) return 1;
+    if (!(revents & POLLRDHUP)) return 0;
+    char c;
+    ssize_t n = recv(fd, &c, 1, MSG_PEEK | MSG_DONTWAIT);
+    if (n == 0) return 1;
+    return n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR;
+}
+
+/* Close connections waiting for a request whose client has gone (closed its
+ * socket, or half-closed it after a partial request). libmicrohttpd's epoll
+ * loop misses such a FIN when it arrived before the connection was accepted
+ * (edge-triggered: the one readiness event is spent reading the partial
+ * request), and the socket would sit in CLOSE-WAIT, holding a connection slot,
+ * until the idle timeout. One poll() over every CONN_RX socket; a connection
+ * is shut down when two sweeps in a row (SRV_REAP_PERIOD_MS apart) find its
+ * client gone, so a request that arrived with its FIN and is being read
+ * (bytes already consumed, not yet claimed) is not cut. Returns how many.
+ * Watcher thread only. Lock order: conn_mu, then log.c's counters. */
+static int reap_dead_peers(struct srv_http *h)
+{
+    int n = 0;
+    pthread_mutex_lock(&h->conn_mu);
+    size_t want = (size_t)(h->n_conns > 0 ? h->n_conns : 0);
+    if (want > h->reap_cap) {
+        size_t cap = want + want / 2 + 16;
+        struct pollfd *p = realloc(h->reap_pfd, cap * sizeof *p);
+        if (p) h->reap_pfd = p;
+        struct srv_conn **c = p ? realloc(h->reap_conn, cap * sizeof *c) : NULL;
+        if (c) h->reap_conn = c;
+        if (p && c) h->reap_cap = cap;
+    }
+    size_t k = 0;
+    for (struct srv_conn *c = h->conns; c && k < h->reap_cap; c = c->next) {
+        if (c->fd < 0 || atomic_load(&c->rx) != CONN_RX) continue;
+        h->reap_pfd[k] = (struct pollfd){c->fd, POLLRDHUP, 0};
+        h->reap_conn[k++] = c;
+    }
+    if (k > 0 && poll(h->reap_pfd, (nfds_t)k, 0) > 0) {
+        for (size_t i = 0; i < k; i++) {
+            struct srv_conn *c = h->reap_conn[i];
+            if (!h->reap_pfd[i].revents || !peer_gone(c->fd, h->reap_pfd[i].revents)) {
+                c->eof_sweeps = 0;
+                continue;
+            }
+            if (++c->eof_sweeps >= 2) n += conn_shut_down(h, c, srv_metrics_count_reaped);
+        }
+    } else {
+        for (size_t i = 0; i < k; i++)
+            h->reap_conn[i]->eof_sweeps = 0;
     }
     pthread_mutex_unlock(&h->conn_mu);
     return n;
@@ -346,11 +471,13 @@ static int close_slow_connections(struct srv_http *h)
  * check: mech_budget_check reads the flag every 256 steps); take such a
  * request out of the queue if it is still waiting there, answer it 503 and
  * resume its connection (the slot frees at once); close connections that
- * are too slow to send their request. Lock order: watch_mu, then the pool's. */
+ * are too slow to send their request; every SRV_REAP_PERIOD_MS, close
+ * waiting connections whose client has gone. Lock order: watch_mu, then the
+ * pool's. */
 static void *watcher_main(void *arg)
 {
     struct srv_http *h = arg;
-    for (;;) {
+    for (unsigned round = 1;; round++) {
         pthread_mutex_lock(&h->watch_mu);
         if (h->watch_stop) {
             pthread_mutex_unlock(&h->watch_mu);
@@ -381,6 +508,12 @@ static void *watcher_main(void *arg)
             srv_log_note("closed %d connection%s that sent no whole request within %ld ms", closed,
                          closed == 1 ? "" : "s", h->cfg->request_timeout_ms);
         }
+        if (round % (SRV_REAP_PERIOD_MS / SRV_WATCH_PERIOD_MS) == 0) {
+            int reaped = reap_dead_peers(h);
+            if (reaped > 0)
+                srv_log_note("closed %d waiting connection%s whose client had gone", reaped,
+                             reaped == 1 ? "" : "s");
+        }
         struct timespec ts = {0, SRV_WATCH_PERIOD_MS * 1000L * 1000L};
         nanosleep(&ts, NULL);
     }
@@ -395,12 +528,12 @@ static int conn_claim(struct srv_req *r)
     if (!r->sc) return 1;
     int expected = CONN_RX;
     if (atomic_compare_exchange_strong(&r->sc->rx, &expected, CONN_BUSY)) return 1;
-    return expected != CONN_TIMED_OUT;
+    return expected != CONN_SHUT;
 }
 
-static int conn_timed_out(const struct srv_conn *c)
+static int conn_shut(const struct srv_conn *c)
 {
-    return c && atomic_load(&c->rx) == CONN_TIMED_OUT;
+    return c && atomic_load(&c->rx) == CONN_SHUT;
 }
 
 /* NOTIFY_CONNECTION: register a new connection, unregister a closing one (on
@@ -423,6 +556,10 @@ static void on_connection(void *cls, struct MHD_Connection *conn, void **socket_
         c->next = h->conns;
         if (h->conns) h->conns->prev = c;
         h->conns = c;
+        h->n_conns++;
+        /* Over --max-connections (not counting those already closing): make
+         * room, so a health probe or a real client gets in during a flood. */
+        if (h->n_conns - h->n_shut > h->cfg->max_connections) evict_longest_waiting(h, c);
         pthread_mutex_unlock(&h->conn_mu);
     } else if (code == MHD_CONNECTION_NOTIFY_CLOSED) {
         struct srv_conn *c = *socket_context;
@@ -434,6 +571,8 @@ static void on_connection(void *cls, struct MHD_Connection *conn, void **socket_
         else
             h->conns = c->next;
         if (c->next) c->next->prev = c->prev;
+        h->n_conns--;
+        if (atomic_load(&c->rx) == CONN_SHUT) h->n_shut--;
         pthread_mutex_unlock(&h->conn_mu);
         free(c);
     }
@@ -771,7 +910,11 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
         double busy_s = 0;
         unsigned long len = 0;
         srv_pool_stats(h->pool, &queued, &busy, &busy_s);
-        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s, &len);
+        pthread_mutex_lock(&h->conn_mu);
+        int open_conns = h->n_conns;
+        pthread_mutex_unlock(&h->conn_mu);
+        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s,
+                                      open_conns, h->cfg->max_connections, &len);
         *ret = answer_text(r, 200, "text/plain; version=0.0.4; charset=utf-8", text, len);
     } else {
         *ret = answer_text(r, 200, "text/html; charset=utf-8", dup_str(index_html),
@@ -894,7 +1037,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         const union MHD_ConnectionInfo *sci =
             MHD_get_connection_info(conn, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
         struct srv_conn *sc = sci ? sci->socket_context : NULL;
-        if (conn_timed_out(sc)) return MHD_NO;
+        if (conn_shut(sc)) return MHD_NO;
         r = calloc(1, sizeof *r);
         if (!r) return MHD_NO;
         r->conn = conn;
@@ -971,7 +1114,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
     }
 
     if (*upload_data_size) {
-        if (conn_timed_out(r->sc)) return MHD_NO; /* closed by the receive limit */
+        if (conn_shut(r->sc)) return MHD_NO; /* closed by the receive limit */
         if (r->state == REQ_RECEIVING) take_body(h, r, upload_data, *upload_data_size);
         *upload_data_size = 0;
         return MHD_YES;
@@ -1044,6 +1187,35 @@ static size_t unescape_no_nul(void *cls, struct MHD_Connection *c, char *s)
 
 /* ---- lifecycle ------------------------------------------------------------------ */
 
+/* libmicrohttpd's own connection limit: --max-connections plus headroom for
+ * connections accepted before the ones shut down to make room have closed
+ * (libmicrohttpd accepts up to 10 at a time per I/O thread, and splits its
+ * limit evenly between the threads). A connection over this limit is closed
+ * by libmicrohttpd at once, unanswered. */
+static unsigned int conn_hard_limit(const struct srv_config *cfg)
+{
+    unsigned int n = (unsigned int)cfg->max_connections;
+    unsigned int threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
+    return n + n / 8u + 16u * threads;
+}
+
+/* Raise the soft descriptor limit to what hard_limit connections need (plus
+ * the listening socket, epoll, eventfds, log and static files), up to the
+ * hard limit; say so if that is not enough (accept() then fails beyond it). */
+static void ensure_descriptors(const struct srv_config *cfg, unsigned int hard_limit)
+{
+    struct rlimit rl;
+    rlim_t need = (rlim_t)hard_limit + 64u;
+    if (getrlimit(RLIMIT_NOFILE, &rl) != 0 || rl.rlim_cur >= need) return;
+    rlim_t old = rl.rlim_cur;
+    rl.rlim_cur = rl.rlim_max == RLIM_INFINITY || rl.rlim_max >= need ? need : rl.rlim_max;
+    if (setrlimit(RLIMIT_NOFILE, &rl) != 0) rl.rlim_cur = old;
+    if (rl.rlim_cur < need)
+        srv_log_note("--max-connections %d needs about %lu file descriptors but the limit is "
+                     "%lu: connections beyond it are refused",
+                     cfg->max_connections, (unsigned long)need, (unsigned long)rl.rlim_cur);
+}
+
 struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool)
 {
     struct srv_http *h = calloc(1, sizeof *h);
@@ -1091,10 +1263,12 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
      * is replaced by the end marker (libmicrohttpd warns about a size of 0 or 1). */
     unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 0u;
     enum MHD_OPTION pool_opt = io_threads > 1 ? MHD_OPTION_THREAD_POOL_SIZE : MHD_OPTION_END;
+    unsigned int hard_limit = conn_hard_limit(cfg);
+    ensure_descriptors(cfg, hard_limit);
     h->daemon = MHD_start_daemon(
         flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, sa,
         MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
-        SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
+        hard_limit, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
         MHD_OPTION_NOTIFY_CONNECTION, on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK,
         unescape_no_nul, NULL, pool_opt, io_threads, MHD_OPTION_END);
     if (!h->daemon) {
@@ -1157,5 +1331,7 @@ void srv_http_stop(struct srv_http *h)
     pthread_mutex_destroy(&h->watch_mu);
     pthread_mutex_destroy(&h->conn_mu);
     free(h->quick);
+    free(h->reap_pfd);
+    free(h->reap_conn);
     free(h);
 }
