@@ -28,6 +28,7 @@ enum api_problem {
     API_PROBLEM_CANCELLED,          /* 503, server shutting down */
     API_PROBLEM_UNAUTHORIZED,       /* 401, --token-file set and no/wrong bearer token */
     API_PROBLEM_CORS_FORBIDDEN,     /* 403, CORS preflight from an origin not allowed */
+    API_PROBLEM_BAD_FRAMING,        /* 400, ambiguous or unsupported body framing (server) */
     API_PROBLEM_COUNT
 };
 

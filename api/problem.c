@@ -52,6 +52,11 @@ static const struct problem_row problems[API_PROBLEM_COUNT] = {
     [API_PROBLEM_CORS_FORBIDDEN] = {403, "/problems/cors-origin-not-allowed",
         "Origin not allowed", "A cross-origin request from an origin the server does not list "
         "in --cors-origin."},
+    [API_PROBLEM_BAD_FRAMING] = {400, "/problems/bad-framing", "Bad request framing",
+        "The length of the request cannot be read safely: it has both Content-Length and "
+        "Transfer-Encoding, Content-Length headers that disagree, or a Transfer-Encoding other "
+        "than chunked (RFC 9112 section 6). Send the body with one Content-Length, or with "
+        "Transfer-Encoding: chunked alone. The server closes the connection."},
 };
 
 int api_problem_status(enum api_problem kind)

@@ -44,6 +44,7 @@ static const struct {
     {API_PROBLEM_CANCELLED, 12, 503, "/problems/cancelled"},
     {API_PROBLEM_UNAUTHORIZED, 13, 401, "/problems/unauthorized"},
     {API_PROBLEM_CORS_FORBIDDEN, 14, 403, "/problems/cors-origin-not-allowed"},
+    {API_PROBLEM_BAD_FRAMING, 15, 400, "/problems/bad-framing"},
 };
 
 int main(void)
