@@ -4,10 +4,12 @@
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED. A request body is
  * buffered up to --max-body: a Content-Length over the limit is answered 413
  * on the first callback, before any byte of the body is read; a chunked body
- * is answered 413 and its connection closed as soon as it passes the limit
- * (refuse_mid_body: libmicrohttpd only queues a response before the body or
- * after all of it, and reading on to the end let one client stream 11.5 GB in
- * 5 s).
+ * that passes the limit is read on (and dropped) for at most
+ * SRV_CHUNKED_GRACE more bytes, so that a client sending all of a slightly
+ * too large body before reading gets its 413; past that it is answered 413
+ * and its connection closed at once (refuse_mid_body: libmicrohttpd only
+ * queues a response before the body or after all of it, and reading on to the
+ * end let one client stream 11.5 GB in 5 s).
  *
  * FRAMING. libmicrohttpd frames a body by Transfer-Encoding if present, else
  * by the first Content-Length, and accepts what RFC 9112 section 6 says to
@@ -147,6 +149,7 @@
 #define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
+#define SRV_CHUNKED_GRACE (1u << 20) /* a chunked body is read this far past --max-body */
 #define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
 #define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
 #define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
@@ -1093,7 +1096,7 @@ static void send_some(int fd, const char *buf, size_t len)
     }
 }
 
-/* A chunked body has just passed --max-body while arriving. libmicrohttpd
+/* A chunked body has just passed --max-body + SRV_CHUNKED_GRACE while arriving. libmicrohttpd
  * queues a response only before the body or after all of it
  * (MHD_queue_response), and reading on to the end is what a client streaming
  * gigabytes wants. So the 413 problem+json (with the headers answer() sends
@@ -1290,8 +1293,13 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         if (r->state == REQ_RECEIVING) take_body(h, r, upload_data, *upload_data_size);
         *upload_data_size = 0;
         /* Only a chunked body gets here past the limit (a Content-Length over
-         * it was answered on the first call): stop reading it now. */
-        if (r->too_large && r->state == REQ_RECEIVING) return refuse_mid_body(h, r);
+         * it was answered on the first call). Within SRV_CHUNKED_GRACE of it,
+         * it is still read (and dropped) to its end, then answered 413 the
+         * usual way: a client that sends its whole body before reading gets
+         * that answer instead of a broken pipe. Beyond it, stop now. */
+        if (r->too_large && r->state == REQ_RECEIVING &&
+            r->body_seen > h->cfg->max_body + (size_t)SRV_CHUNKED_GRACE)
+            return refuse_mid_body(h, r);
         return MHD_YES;
     }
 

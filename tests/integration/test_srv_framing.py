@@ -23,9 +23,11 @@ mechd answered them. Checked, against mechd --max-body 1024:
   a 400 status line and the connection closes, and the operation never runs
   (libmicrohttpd 0.9.75 writes that answer's header block twice; no hook of
   it comes earlier, so that is not checked);
-- a chunked body that passes --max-body gets 413 /problems/body-too-large
-  with Connection: close and the connection is closed at once: a client that
-  sends 3 KiB and waits gets the answer (before the fix: nothing until the
+- a chunked body that passes --max-body is read on for at most 1 MiB (so a
+  client that sends a slightly too large body whole, then reads, gets its
+  413: 3 KiB here); past that it gets 413 /problems/body-too-large with
+  Connection: close and the connection is closed at once: a client that
+  sends 2 MiB and waits gets the answer (before the fix: nothing until the
   body ended), and one that streams without end is stopped (send fails)
   before 64 MiB (before the fix the server read all of it);
 - /healthz still answers afterwards.
@@ -170,13 +172,23 @@ def main():
                   data.startswith(b"HTTP/1.1 400 ") and closed and b'"vectors"' not in data, repr(data[:200]))
         check("... and none of them ran the boost", boosts_counted(port) == before)
 
-        # A chunked body over --max-body (1024): 3 KiB in 512-byte chunks, then wait.
+        # A chunked body a little over --max-body (1024), sent whole before
+        # reading (as Python's http.client does): read to its end (within the
+        # server's 1 MiB grace) and answered 413 the usual way.
+        data, closed = exchange(port, HEAD + b"Connection: close\r\nTransfer-Encoding: chunked\r\n\r\n"
+                                + chunked(b" " * 3072, 512))
+        got = answers(data)
+        check("a whole chunked body of 3 KiB over --max-body 1024: 413 /problems/body-too-large",
+              len(got) == 1 and got[0][0] == 413 and b"/problems/body-too-large" in got[0][2], repr(data[:300]))
+
+        # A chunked body far over --max-body (1024): 2 MiB in 16 KiB chunks,
+        # then the client waits without ending it.
         s = socket.create_connection(("127.0.0.1", port), timeout=10)
         try:
             s.sendall(HEAD + b"Transfer-Encoding: chunked\r\n\r\n")
             try:
-                for _ in range(6):
-                    s.sendall(b"200\r\n" + b" " * 512 + b"\r\n")
+                for _ in range(128):
+                    s.sendall(b"4000\r\n" + b" " * 16384 + b"\r\n")
             except OSError:
                 pass  # the server may already have closed: what it answered is checked below
             data = b""
@@ -200,8 +212,8 @@ def main():
         if ok:
             p = json.loads(got[0][2])
             ok = p.get("type") == "/problems/body-too-large" and "1024" in p.get("detail", "")
-        check("a chunked body passing --max-body 1024 (3 KiB sent, then the client waits): 413 "
-              "/problems/body-too-large with Connection: close", ok, repr(data[:400]))
+        check("a chunked body passing --max-body 1024 by more than the 1 MiB grace (2 MiB sent, then the "
+              "client waits): 413 /problems/body-too-large with Connection: close", ok, repr(data[:400]))
         check("... and the server closes the connection", closed, repr(data[-100:]))
 
         # A chunked body that never ends: the server must stop reading it.
@@ -225,7 +237,7 @@ def main():
         check("/healthz answers 200 afterwards", data.startswith(b"HTTP/1.1 200"), repr(data[:100]))
         data, _ = exchange(port, b"GET /metrics HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n")
         n413 = re.search(rb'(?m)^mechd_requests_total\{route="/v1/relativity/boost",status="413"\} (\d+)$', data)
-        check("/metrics counts the two cut-off chunked bodies as 413", n413 is not None and int(n413.group(1)) == 2,
+        check("/metrics counts the three over-long chunked bodies as 413", n413 is not None and int(n413.group(1)) == 3,
               repr(n413 and n413.group(0)))
     finally:
         proc.terminate()
