@@ -52,7 +52,7 @@ FUZZ_SECONDS ?= 60
 fuzz: deps
 	./tests/fuzz/run.sh $(BUILD) $(FUZZ_SECONDS)
 
-# Load scenarios (tests/load/): ~2 min, 127.0.0.1 only; print figures and
+# Load scenarios (tests/load/): ~3 min, 127.0.0.1 only; print figures and
 # fail only on errors, lost answers or leaks, never on timing.
 load: all
 	./scripts/install-deps.sh --bench

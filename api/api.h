@@ -30,6 +30,7 @@ enum api_problem {
     API_PROBLEM_CORS_FORBIDDEN,     /* 403, CORS preflight from an origin not allowed */
     API_PROBLEM_REQUEST_MISSING,    /* 400, GET/HEAD of an operation without ?request= */
     API_PROBLEM_ANSWER_TOO_LARGE,   /* 422, the request asks for more samples than --max-samples */
+    API_PROBLEM_BAD_FRAMING,        /* 400, ambiguous or unsupported body framing (server) */
     API_PROBLEM_COUNT
 };
 

@@ -59,6 +59,11 @@ static const struct problem_row problems[API_PROBLEM_COUNT] = {
         "The request asks for more samples in all (summed over its \"samples\" members and, "
         "in a batch, over its items) than the server's --max-samples allows; errors[] names the "
         "field where the sum passes the limit. Ask for fewer samples or split the request."},
+    [API_PROBLEM_BAD_FRAMING] = {400, "/problems/bad-framing", "Bad request framing",
+        "The length of the request cannot be read safely: it has both Content-Length and "
+        "Transfer-Encoding, Content-Length headers that disagree, or a Transfer-Encoding other "
+        "than chunked (RFC 9112 section 6). Send the body with one Content-Length, or with "
+        "Transfer-Encoding: chunked alone. The server closes the connection."},
 };
 
 int api_problem_status(enum api_problem kind)

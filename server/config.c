@@ -29,6 +29,7 @@ enum opt_id {
     OPT_INLINE_MAX_US,
     OPT_WORKER_NICE,
     OPT_MAX_SAMPLES,
+    OPT_MAX_CONNECTIONS,
     OPT_COUNT
 };
 
@@ -73,7 +74,7 @@ static const struct opt_spec {
                                 "answer); slower connections are closed"},
     [OPT_INLINE_MAX_US] = {"--inline-max-us", "MECHD_INLINE_MAX_US", "100", 0, 1000000,
                            "a quick operation (closed form, small body) is answered on an I/O "
-                           "thread while its measured cost predicts at most this many µs; "
+                           "thread while its measured CPU cost predicts at most this many µs; "
                            "0: every operation goes to the workers"},
     [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "10", 0, 19,
                          "how much lower the compute workers' scheduling priority is than the "
@@ -83,6 +84,10 @@ static const struct opt_spec {
                          "answer budget: the samples one request may ask for, summed over its "
                          "\"samples\" members and a batch's items; more get 422 "
                          "answer-too-large before anything is computed"},
+    [OPT_MAX_CONNECTIONS] = {"--max-connections", "MECHD_MAX_CONNECTIONS", "512", 8, 100000,
+                             "connections held open at once; a new one beyond it closes the "
+                             "connection that has waited longest without sending a whole "
+                             "request, so /healthz stays reachable under a connection flood"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -264,6 +269,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_MAX_SAMPLES:
         cfg->max_samples = (long)v;
+        break;
+    case OPT_MAX_CONNECTIONS:
+        cfg->max_connections = (int)v;
         break;
     default:
         break;

@@ -28,6 +28,8 @@ struct srv_config {
     long inline_max_us;      /* quick operations run inline while predicted <= this, 0..1e6 µs */
     int worker_nice;         /* nice increment of the compute workers, 0..19 */
     long max_samples;        /* answer budget: samples per request (batch items summed), 1..1e9 */
+    int max_connections;     /* connections held open at once before the longest-waiting
+                                idle one is closed to make room, 8..100000 */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

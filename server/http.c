@@ -4,7 +4,24 @@
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED. A request body is
  * buffered up to --max-body: a Content-Length over the limit is answered 413
  * on the first callback, before any byte of the body is read; a chunked body
- * is counted and discarded once it passes the limit, then answered 413.
+ * that passes the limit is read on (and dropped) for at most
+ * SRV_CHUNKED_GRACE more bytes, so that a client sending all of a slightly
+ * too large body before reading gets its 413; past that it is answered 413
+ * and its connection closed at once (refuse_mid_body: libmicrohttpd only
+ * queues a response before the body or after all of it, and reading on to the
+ * end let one client stream 11.5 GB in 5 s).
+ *
+ * FRAMING. libmicrohttpd frames a body by Transfer-Encoding if present, else
+ * by the first Content-Length, and accepts what RFC 9112 section 6 says to
+ * refuse. On the first callback (headers only) a request with both
+ * Content-Length and Transfer-Encoding, with Content-Length headers that
+ * disagree, with a Transfer-Encoding other than exactly "chunked" (which
+ * libmicrohttpd would read to end-of-connection) or with Transfer-Encoding on
+ * HTTP/1.0 is answered 400 /problems/bad-framing with Connection: close, before
+ * any body byte reaches the API: behind a proxy that frames differently such a
+ * request is a smuggling vector. An unparsable Content-Length is refused by
+ * libmicrohttpd itself before any callback (its 400 page, whose header block
+ * libmicrohttpd 0.9.75 writes twice; no hook comes earlier).
  * Server routes and inline GETs are answered on the I/O thread. Everything
  * else reserves a queue slot, suspends the connection and is submitted to the
  * pool; the worker runs api_handle() (which cannot fail) and resumes the
@@ -28,12 +45,24 @@
  * request: the suspend -> worker -> resume hand-off (two context switches, a
  * futex wake-up and an eventfd write) costs more than such an operation. It is
  * logged and counted in /metrics like any other request. The choice is
- * measured, not assumed (DESIGN.md): every run of a quick route, inline or on
- * a worker, updates a moving average of its wall time per byte of request
- * (plus SRV_QUICK_BASE_BYTES for the fixed costs), and a request runs inline
- * only while its predicted time is at most --inline-max-us, so a route that
- * turns out slow (or a large body) goes to the pool and never holds an I/O
- * thread, and /healthz, for long. The first request of a route runs inline.
+ * measured, not assumed (DESIGN.md): runs of a quick route, inline or on a
+ * worker, update a moving average of the route's *thread CPU time*
+ * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
+ * the fixed costs), and a request runs inline only while its predicted time is
+ * at most --inline-max-us, so a route that turns out slow (or a large body)
+ * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
+ * time, not wall time: a thread preempted for a millisecond during a 5 µs
+ * boost (the rule on a machine whose cores also run the clients) would
+ * otherwise look 200 times slower, and one such run sent every later boost to
+ * the niced workers, whose small queue then refused cheap requests with 503
+ * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
+ * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of
+ * a route always; one measurement moves the average by at most a factor of
+ * 1 + (SRV_QUICK_CAP - 1) / 8. The decision recovers: the average decays with
+ * every measured run, and a route predicted too slow still runs inline (and
+ * is measured) once in SRV_QUICK_REPROBE requests, so a full pool that
+ * refuses it cannot freeze a stale estimate. The first request of a route runs
+ * inline.
  *
  * I/O THREADS. libmicrohttpd runs a pool of --io-threads epoll threads (its
  * MHD_OPTION_THREAD_POOL_SIZE; default 2, the machine's cores), each with its
@@ -60,7 +89,28 @@
  * the socket). The socket stays open while registered (libmicrohttpd notifies
  * CLOSED before it closes the descriptor), so the watcher never touches a
  * reused descriptor. Keep-alive idle time counts towards the limit.
+ *
+ * CONNECTION FLOODS. Connections are counted as they register. When a new one
+ * takes the count (not counting those already shutting) over
+ * --max-connections, the registered connection that has waited longest for a
+ * whole request (CONN_RX with the oldest ready time: idle keep-alive, connected
+ * and silent, or trickling) is shut down the same way, so a health probe or a
+ * real client always gets a slot: 600 idle connections against 512 used to
+ * make most /healthz probes fail. Connections with a request queued, running
+ * or being answered are never chosen. libmicrohttpd's own limit sits above
+ * --max-connections (conn_hard_limit) to absorb connections accepted before
+ * the shut ones have closed. Every SRV_REAP_PERIOD_MS the watcher also polls
+ * the sockets of waiting connections and shuts down those whose client has
+ * gone (end-of-file with nothing left to read, or an error, seen on two sweeps
+ * in a row): libmicrohttpd's edge-triggered epoll misses a FIN that arrived
+ * before it accepted the connection, and 1,500 half-sent, closed requests
+ * otherwise sat in CLOSE-WAIT, holding every slot, until the idle timeout.
+ * Both are counted in /metrics (mechd_connections_evicted_total,
+ * mechd_connections_reaped_total) next to mechd_connections_open.
  */
+#ifdef __linux__
+#define _GNU_SOURCE /* POLLRDHUP */
+#endif
 #include "http.h"
 
 #include <arpa/inet.h>
@@ -70,11 +120,13 @@
 #include <netinet/in.h>
 #include <poll.h>
 #include <pthread.h>
+#include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
@@ -85,15 +137,24 @@
 #include "static.h"
 #include "mech/budget.h"
 
+#ifndef POLLRDHUP
+#define POLLRDHUP 0 /* not Linux: a gone client is seen by POLLHUP/POLLERR only */
+#endif
+
 #define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
-#define SRV_CONNECTION_LIMIT 512u    /* concurrent connections (suspended ones count) */
 #define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
 #define SRV_BODY_SMALL 512u          /* ... unless its first piece fits in this (a quick request):
                                         glibc serves < 1 KiB from its small bins, while every
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
+#define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
+#define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
+#define SRV_CHUNKED_GRACE (1u << 20) /* a chunked body is read this far past --max-body */
+#define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
+#define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
+#define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -108,11 +169,22 @@
 
 struct srv_req;
 
+/* Per quick route (api_routes index). Relaxed atomics: a lost update only
+ * delays the average or shifts a sample by one request. */
+struct srv_quick_stat {
+    atomic_llong cost;   /* moving average of thread CPU ns per KiB of (body +
+                            SRV_QUICK_BASE_BYTES); 0 = not measured yet */
+    atomic_uint runs;    /* runs so far: every SRV_QUICK_SAMPLE-th is measured */
+    atomic_uint too_slow; /* requests predicted over --inline-max-us: every
+                             SRV_QUICK_REPROBE-th runs inline anyway */
+};
+
 /* Receive state of a connection (struct srv_conn.rx), switched by CAS. */
 enum conn_rx {
     CONN_RX = 0,    /* waiting for or receiving a request: the receive limit runs */
     CONN_BUSY,      /* claimed by the I/O thread: request queued, running or answering */
-    CONN_TIMED_OUT, /* claimed by the watcher: the socket was shut down */
+    CONN_SHUT,      /* the server shut the socket down (receive limit, room for a new
+                       connection, client gone); libmicrohttpd closes it. Final. */
 };
 
 /* One per open connection (libmicrohttpd's socket context), in http->conns
@@ -121,6 +193,7 @@ struct srv_conn {
     int fd;
     atomic_int rx;         /* enum conn_rx */
     atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
+    int eof_sweeps;        /* consecutive reaper sweeps that found the client gone (conn_mu) */
     struct srv_conn *prev, *next;
 };
 
@@ -139,13 +212,19 @@ struct srv_http {
     int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
     atomic_ulong next_id;
     atomic_int inflight; /* requests between first callback and completion */
-    /* Open connections, for the receive time limit. Guarded by conn_mu. */
+    /* Open connections, for the receive time limit, room for new ones and
+     * reaping dead peers. Guarded by conn_mu. */
     pthread_mutex_t conn_mu;
     struct srv_conn *conns;
-    /* Per route (api_routes index): moving average of a quick route's wall
-     * time in ns per KiB of (body + SRV_QUICK_BASE_BYTES); 0 = not measured.
-     * Relaxed atomics: a lost update only delays the average. */
-    atomic_llong *quick_cost;
+    int n_conns; /* registered connections */
+    int n_shut;  /* ... of which CONN_SHUT (closing, no longer counted against the limit) */
+    /* The reaper's poll set (watcher thread only), grown as needed. */
+    struct pollfd *reap_pfd;
+    struct srv_conn **reap_conn;
+    size_t reap_cap;
+    /* Per route (api_routes index): the measured cost of quick routes (see
+     * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
+    struct srv_quick_stat *quick;
 };
 
 enum req_state {
@@ -167,6 +246,8 @@ struct srv_req {
     size_t body_len, body_cap, body_seen;
     int too_large;
     int oom;
+    const char *bad_framing; /* why the body's framing is refused (static text), or NULL */
+    int close_conn;          /* answer with Connection: close */
     int cors_ok;       /* Origin is in --cors-origin: send Access-Control-Allow-Origin */
     int vary_origin;   /* a /v1 answer while CORS is on: send Vary: Origin */
     int preflight;     /* a CORS preflight: answered in dispatch (keeps the connection) */
@@ -188,6 +269,7 @@ struct srv_req {
     struct srv_conn *sc; /* the connection's registration, or NULL */
     long route_index;    /* index in api_routes of a POST to an operation, else -1 */
     int quick_route;     /* route is quick and the body small enough (api_quick_route) */
+    int quick_probe;     /* runs inline although predicted too slow: measure it */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
     int watching;
 };
@@ -297,6 +379,22 @@ static long long now_ms(void)
     return (long long)(mech_clock_seconds() * 1000.0);
 }
 
+/* Shut down connection c if it is still waiting for or receiving a request
+ * (CONN_RX -> CONN_SHUT; conn_mu held), counting it with count(1) in /metrics
+ * before the client can see the close: libmicrohttpd then sees end-of-file
+ * and closes it on its own thread. Registered, so the descriptor is still
+ * libmicrohttpd's open socket. Returns 1 if this call shut it down, 0 if the
+ * I/O thread had claimed it (or it was already shut). */
+static int conn_shut_down(struct srv_http *h, struct srv_conn *c, void (*count)(unsigned long))
+{
+    int expected = CONN_RX;
+    if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_SHUT)) return 0;
+    h->n_shut++;
+    count(1);
+    if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
+    return 1;
+}
+
 /* Close every connection that has been receiving one request for longer than
  * --request-timeout-ms (see SLOW CLIENTS above) and count it in /metrics.
  * Returns how many. Lock order: conn_mu, then log.c's counters. */
@@ -308,13 +406,87 @@ static int close_slow_connections(struct srv_http *h)
     pthread_mutex_lock(&h->conn_mu);
     for (struct srv_conn *c = h->conns; c; c = c->next) {
         if (atomic_load(&c->rx) != CONN_RX || now - atomic_load(&c->ready_ms) <= limit) continue;
-        int expected = CONN_RX;
-        if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_TIMED_OUT)) continue;
-        /* Counted before the client can see the close. Registered, so the
-         * descriptor is still libmicrohttpd's open socket. */
-        srv_metrics_count_timeouts(1);
-        if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
-        n++;
+        n += conn_shut_down(h, c, srv_metrics_count_timeouts);
+    }
+    pthread_mutex_unlock(&h->conn_mu);
+    return n;
+}
+
+/* Make room for a new connection beyond --max-connections (conn_mu held):
+ * shut down the connection that has waited longest for a whole request
+ * (CONN_RX with the oldest ready_ms: an idle keep-alive connection, a client
+ * that connected and sent nothing, or a slow sender), other than `fresh`.
+ * Connections whose request is queued, running or being answered are never
+ * chosen. Returns 1 if one was shut down. */
+static int evict_longest_waiting(struct srv_http *h, const struct srv_conn *fresh)
+{
+    struct srv_conn *victim = NULL;
+    long long oldest = 0;
+    for (struct srv_conn *c = h->conns; c; c = c->next) {
+        if (c == fresh || atomic_load(&c->rx) != CONN_RX) continue;
+        long long t = atomic_load(&c->ready_ms);
+        if (!victim || t < oldest) {
+            victim = c;
+            oldest = t;
+        }
+    }
+    return victim ? conn_shut_down(h, victim, srv_metrics_count_evictions) : 0;
+}
+
+/* Did the client go away, given poll()'s revents for its socket? An error or
+ * a hang-up, or end-of-file (POLLRDHUP) with nothing left to read: a request
+ * whose bytes are still in the socket is left for libmicrohttpd to read. */
+static int peer_gone(int fd, short revents)
+{
+    if (revents & (POLLERR | POLLHUP | POLLNVAL)) return 1;
+    if (!(revents & POLLRDHUP)) return 0;
+    char c;
+    ssize_t n = recv(fd, &c, 1, MSG_PEEK | MSG_DONTWAIT);
+    if (n == 0) return 1;
+    return n < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR;
+}
+
+/* Close connections waiting for a request whose client has gone (closed its
+ * socket, or half-closed it after a partial request). libmicrohttpd's epoll
+ * loop misses such a FIN when it arrived before the connection was accepted
+ * (edge-triggered: the one readiness event is spent reading the partial
+ * request), and the socket would sit in CLOSE-WAIT, holding a connection slot,
+ * until the idle timeout. One poll() over every CONN_RX socket; a connection
+ * is shut down when two sweeps in a row (SRV_REAP_PERIOD_MS apart) find its
+ * client gone, so a request that arrived with its FIN and is being read
+ * (bytes already consumed, not yet claimed) is not cut. Returns how many.
+ * Watcher thread only. Lock order: conn_mu, then log.c's counters. */
+static int reap_dead_peers(struct srv_http *h)
+{
+    int n = 0;
+    pthread_mutex_lock(&h->conn_mu);
+    size_t want = (size_t)(h->n_conns > 0 ? h->n_conns : 0);
+    if (want > h->reap_cap) {
+        size_t cap = want + want / 2 + 16;
+        struct pollfd *p = realloc(h->reap_pfd, cap * sizeof *p);
+        if (p) h->reap_pfd = p;
+        struct srv_conn **c = p ? realloc(h->reap_conn, cap * sizeof *c) : NULL;
+        if (c) h->reap_conn = c;
+        if (p && c) h->reap_cap = cap;
+    }
+    size_t k = 0;
+    for (struct srv_conn *c = h->conns; c && k < h->reap_cap; c = c->next) {
+        if (c->fd < 0 || atomic_load(&c->rx) != CONN_RX) continue;
+        h->reap_pfd[k] = (struct pollfd){c->fd, POLLRDHUP, 0};
+        h->reap_conn[k++] = c;
+    }
+    if (k > 0 && poll(h->reap_pfd, (nfds_t)k, 0) > 0) {
+        for (size_t i = 0; i < k; i++) {
+            struct srv_conn *c = h->reap_conn[i];
+            if (!h->reap_pfd[i].revents || !peer_gone(c->fd, h->reap_pfd[i].revents)) {
+                c->eof_sweeps = 0;
+                continue;
+            }
+            if (++c->eof_sweeps >= 2) n += conn_shut_down(h, c, srv_metrics_count_reaped);
+        }
+    } else {
+        for (size_t i = 0; i < k; i++)
+            h->reap_conn[i]->eof_sweeps = 0;
     }
     pthread_mutex_unlock(&h->conn_mu);
     return n;
@@ -325,11 +497,13 @@ static int close_slow_connections(struct srv_http *h)
  * check: mech_budget_check reads the flag every 256 steps); take such a
  * request out of the queue if it is still waiting there, answer it 503 and
  * resume its connection (the slot frees at once); close connections that
- * are too slow to send their request. Lock order: watch_mu, then the pool's. */
+ * are too slow to send their request; every SRV_REAP_PERIOD_MS, close
+ * waiting connections whose client has gone. Lock order: watch_mu, then the
+ * pool's. */
 static void *watcher_main(void *arg)
 {
     struct srv_http *h = arg;
-    for (;;) {
+    for (unsigned round = 1;; round++) {
         pthread_mutex_lock(&h->watch_mu);
         if (h->watch_stop) {
             pthread_mutex_unlock(&h->watch_mu);
@@ -360,6 +534,12 @@ static void *watcher_main(void *arg)
             srv_log_note("closed %d connection%s that sent no whole request within %ld ms", closed,
                          closed == 1 ? "" : "s", h->cfg->request_timeout_ms);
         }
+        if (round % (SRV_REAP_PERIOD_MS / SRV_WATCH_PERIOD_MS) == 0) {
+            int reaped = reap_dead_peers(h);
+            if (reaped > 0)
+                srv_log_note("closed %d waiting connection%s whose client had gone", reaped,
+                             reaped == 1 ? "" : "s");
+        }
         struct timespec ts = {0, SRV_WATCH_PERIOD_MS * 1000L * 1000L};
         nanosleep(&ts, NULL);
     }
@@ -374,12 +554,12 @@ static int conn_claim(struct srv_req *r)
     if (!r->sc) return 1;
     int expected = CONN_RX;
     if (atomic_compare_exchange_strong(&r->sc->rx, &expected, CONN_BUSY)) return 1;
-    return expected != CONN_TIMED_OUT;
+    return expected != CONN_SHUT;
 }
 
-static int conn_timed_out(const struct srv_conn *c)
+static int conn_shut(const struct srv_conn *c)
 {
-    return c && atomic_load(&c->rx) == CONN_TIMED_OUT;
+    return c && atomic_load(&c->rx) == CONN_SHUT;
 }
 
 /* NOTIFY_CONNECTION: register a new connection, unregister a closing one (on
@@ -402,6 +582,10 @@ static void on_connection(void *cls, struct MHD_Connection *conn, void **socket_
         c->next = h->conns;
         if (h->conns) h->conns->prev = c;
         h->conns = c;
+        h->n_conns++;
+        /* Over --max-connections (not counting those already closing): make
+         * room, so a health probe or a real client gets in during a flood. */
+        if (h->n_conns - h->n_shut > h->cfg->max_connections) evict_longest_waiting(h, c);
         pthread_mutex_unlock(&h->conn_mu);
     } else if (code == MHD_CONNECTION_NOTIFY_CLOSED) {
         struct srv_conn *c = *socket_context;
@@ -413,6 +597,8 @@ static void on_connection(void *cls, struct MHD_Connection *conn, void **socket_
         else
             h->conns = c->next;
         if (c->next) c->next->prev = c->prev;
+        h->n_conns--;
+        if (atomic_load(&c->rx) == CONN_SHUT) h->n_shut--;
         pthread_mutex_unlock(&h->conn_mu);
         free(c);
     }
@@ -425,29 +611,57 @@ static unsigned long long quick_units(size_t body_len)
     return (unsigned long long)body_len + SRV_QUICK_BASE_BYTES;
 }
 
-/* Run the API on r, timing it for the quick-route average when it is one. */
-static void run_api(struct srv_req *r)
+/* CPU time this thread has used, in ns; -1 if the clock cannot be read. */
+static long long thread_cpu_ns(void)
 {
-    if (!r->quick_route || !r->http->quick_cost) {
-        api_handle_ext(&r->areq, &r->aext, &r->aresp);
-        return;
-    }
-    double t0 = mech_clock_seconds();
-    api_handle_ext(&r->areq, &r->aext, &r->aresp);
-    double ns = (mech_clock_seconds() - t0) * 1e9;
-    long long per_kib = (long long)(ns * 1024.0 / (double)quick_units(r->body_len)) + 1;
-    atomic_llong *avg = &r->http->quick_cost[r->route_index];
-    long long old = atomic_load_explicit(avg, memory_order_relaxed);
-    atomic_store_explicit(avg, old ? old + (per_kib - old) / 8 : per_kib, memory_order_relaxed);
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return -1;
+    return (long long)ts.tv_sec * 1000000000LL + ts.tv_nsec;
 }
 
-/* Whether the quick request r is predicted to finish within --inline-max-us. */
-static int quick_inline(const struct srv_http *h, const struct srv_req *r)
+/* Fold one measured run (cpu_ns of thread CPU time for a body of body_len
+ * bytes) into the route's moving average: weight 1/8, the measurement capped
+ * at SRV_QUICK_CAP times the average, so one outlier (a page fault, a cold
+ * cache) cannot send a route to the pool on its own. */
+static void quick_record(struct srv_quick_stat *q, long long cpu_ns, size_t body_len)
 {
-    if (!r->quick_route || !h->quick_cost || h->cfg->inline_max_us <= 0) return 0;
-    long long per_kib = atomic_load_explicit(&h->quick_cost[r->route_index], memory_order_relaxed);
+    long long per_kib = (long long)((double)cpu_ns * 1024.0 / (double)quick_units(body_len)) + 1;
+    long long old = atomic_load_explicit(&q->cost, memory_order_relaxed);
+    if (old > 0 && per_kib > SRV_QUICK_CAP * old) per_kib = SRV_QUICK_CAP * old;
+    atomic_store_explicit(&q->cost, old ? old + (per_kib - old) / 8 : per_kib,
+                          memory_order_relaxed);
+}
+
+/* Run the API on r; for a quick route, measure the run's thread CPU time on
+ * one run in SRV_QUICK_SAMPLE (and on every probe) for the route's average. */
+static void run_api(struct srv_req *r)
+{
+    struct srv_quick_stat *q =
+        r->quick_route && r->http->quick ? &r->http->quick[r->route_index] : NULL;
+    int measure =
+        q && (r->quick_probe ||
+              atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
+    long long c0 = measure ? thread_cpu_ns() : -1;
+    api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    if (c0 < 0) return;
+    long long c1 = thread_cpu_ns();
+    if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);
+}
+
+/* Whether the quick request r runs inline: predicted to finish within
+ * --inline-max-us, or (once in SRV_QUICK_REPROBE requests predicted over it)
+ * a probe that re-measures the route, so the estimate can come back down. */
+static int quick_inline(struct srv_http *h, struct srv_req *r)
+{
+    if (!r->quick_route || !h->quick || h->cfg->inline_max_us <= 0) return 0;
+    struct srv_quick_stat *q = &h->quick[r->route_index];
+    long long per_kib = atomic_load_explicit(&q->cost, memory_order_relaxed);
     double predicted_ns = (double)per_kib * (double)quick_units(r->body_len) / 1024.0;
-    return predicted_ns <= (double)h->cfg->inline_max_us * 1000.0;
+    if (predicted_ns <= (double)h->cfg->inline_max_us * 1000.0) return 1;
+    unsigned n = atomic_fetch_add_explicit(&q->too_slow, 1, memory_order_relaxed);
+    if (n % SRV_QUICK_REPROBE != SRV_QUICK_REPROBE - 1) return 0;
+    r->quick_probe = 1;
+    return 1;
 }
 
 /* Worker side: cannot fail; the outcome is stored in the request. After
@@ -575,6 +789,7 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     add_common_headers(r, mr, resp->vary);
     if (r->www_authenticate)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_WWW_AUTHENTICATE, r->www_authenticate);
+    if (r->close_conn) MHD_add_response_header(mr, MHD_HTTP_HEADER_CONNECTION, "close");
     if (resp->etag[0] && !resp->depends_on_load)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
     if (resp->depends_on_load)
@@ -780,7 +995,11 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
         double busy_s = 0;
         unsigned long len = 0;
         srv_pool_stats(h->pool, &queued, &busy, &busy_s);
-        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s, &len);
+        pthread_mutex_lock(&h->conn_mu);
+        int open_conns = h->n_conns;
+        pthread_mutex_unlock(&h->conn_mu);
+        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s,
+                                      open_conns, h->cfg->max_connections, &len);
         *ret = answer_text(r, 200, "text/plain; version=0.0.4; charset=utf-8", text, len);
     } else {
         *ret = answer_text(r, 200, "text/html; charset=utf-8", dup_str(index_html),
@@ -798,6 +1017,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         return MHD_NO; /* the receive limit passed: the watcher closed the connection */
     }
     if (r->oom) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    if (r->bad_framing) return answer_problem(r, API_PROBLEM_BAD_FRAMING, r->bad_framing);
     if (r->too_large) {
         snprintf(detail, sizeof detail, "the request body exceeds the limit of %zu bytes",
                  h->cfg->max_body);
@@ -858,6 +1078,152 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     return MHD_YES;
 }
 
+/* Header iterator of framing_problem: counts Content-Length and
+ * Transfer-Encoding headers, notes whether the Content-Lengths differ. */
+struct framing_scan {
+    int n_cl, n_te, cl_differ;
+    const char *cl, *te;
+};
+
+static enum MHD_Result framing_header(void *cls, enum MHD_ValueKind kind, const char *key,
+                                      const char *value)
+{
+    struct framing_scan *f = cls;
+    (void)kind;
+    if (!key) return MHD_YES;
+    if (strcasecmp(key, MHD_HTTP_HEADER_CONTENT_LENGTH) == 0) {
+        if (f->n_cl++ == 0)
+            f->cl = value;
+        else if (!value || !f->cl || strcmp(value, f->cl) != 0)
+            f->cl_differ = 1;
+    } else if (strcasecmp(key, MHD_HTTP_HEADER_TRANSFER_ENCODING) == 0) {
+        if (f->n_te++ == 0) f->te = value;
+    }
+    return MHD_YES;
+}
+
+/* Why the request's body framing is refused (see FRAMING above), as the
+ * problem detail (static text: nothing from the request is echoed), or NULL
+ * when it is unambiguous. version is the request's HTTP version. */
+static const char *framing_problem(struct MHD_Connection *conn, const char *version)
+{
+    struct framing_scan f = {0, 0, 0, NULL, NULL};
+    MHD_get_connection_values(conn, MHD_HEADER_KIND, framing_header, &f);
+    if (f.n_te > 0 && f.n_cl > 0)
+        return "the request has both Content-Length and Transfer-Encoding; send exactly one "
+               "of them (RFC 9112 section 6.3)";
+    if (f.cl_differ)
+        return "the request has Content-Length headers with different values; send one "
+               "Content-Length (RFC 9112 section 6.3)";
+    if (f.n_te > 1 || (f.n_te == 1 && (!f.te || strcasecmp(f.te, "chunked") != 0)))
+        return "Transfer-Encoding must be exactly \"chunked\", the only transfer coding this "
+               "server reads; or send the body with Content-Length";
+    if (f.n_te > 0 && version && strcmp(version, MHD_HTTP_VERSION_1_0) == 0)
+        return "Transfer-Encoding is not defined in HTTP/1.0; send the body with Content-Length "
+               "(RFC 9112 section 6.1)";
+    return NULL;
+}
+
+/* Set on an I/O thread just before on_request returns MHD_NO on purpose (the
+ * answer is already on the socket): libmicrohttpd then logs "Application
+ * reported internal error, closing connection.", which is not true, and
+ * mhd_logger drops that one line. Cleared at every on_request entry. */
+static _Thread_local int tl_closing_on_purpose;
+
+/* libmicrohttpd's error log (MHD_OPTION_EXTERNAL_LOGGER): its messages as it
+ * would print them on stderr, minus the false alarm above. */
+static void mhd_logger(void *cls, const char *fmt, va_list ap)
+{
+    (void)cls;
+    char line[512];
+    int n = vsnprintf(line, sizeof line, fmt, ap);
+    if (n < 0) return;
+    if (tl_closing_on_purpose && strstr(line, "reported internal error")) {
+        tl_closing_on_purpose = 0;
+        return;
+    }
+    fputs(line, stderr);
+}
+
+/* send() all of buf on a non-blocking socket without SIGPIPE; stops at the
+ * first error or full buffer (the connection is closed next anyway). */
+static void send_some(int fd, const char *buf, size_t len)
+{
+    while (len > 0) {
+        ssize_t n = send(fd, buf, len, MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (n <= 0) {
+            if (n < 0 && errno == EINTR) continue;
+            return;
+        }
+        buf += n;
+        len -= (size_t)n;
+    }
+}
+
+/* A chunked body has just passed --max-body + SRV_CHUNKED_GRACE while arriving. libmicrohttpd
+ * queues a response only before the body or after all of it
+ * (MHD_queue_response), and reading on to the end is what a client streaming
+ * gigabytes wants. So the 413 problem+json (with the headers answer() sends
+ * and Connection: close) is written on the socket here, on the I/O thread
+ * that owns the connection, which has written nothing for this request (no
+ * response was queued; libmicrohttpd answers one request at a time); the
+ * write side is shut, what the client has already sent is drained (bounded),
+ * so that the close is less likely to reset the answer away, and MHD_NO makes
+ * libmicrohttpd close the connection. The request is logged as 413. */
+static enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r)
+{
+    r->state = REQ_ANSWERED;
+    if (!conn_claim(r) || r->fd < 0) return MHD_NO;
+    char detail[160];
+    snprintf(detail, sizeof detail, "the request body exceeds the limit of %zu bytes",
+             h->cfg->max_body);
+    struct api_response resp;
+    memset(&resp, 0, sizeof resp);
+    api_response_problem(&resp, API_PROBLEM_BODY_TOO_LARGE, detail);
+    if (!resp.body) return MHD_NO; /* out of memory: just close */
+    char date[64] = "";
+    time_t now = time(NULL);
+    struct tm tm;
+    if (gmtime_r(&now, &tm)) strftime(date, sizeof date, "%a, %d %b %Y %H:%M:%S GMT", &tm);
+    char head[2048];
+    size_t k = 0;
+#define HEAD_ADD(...)                                                                              \
+    do {                                                                                           \
+        int n_ = snprintf(head + k, sizeof head - k, __VA_ARGS__);                                 \
+        k = n_ < 0 || (size_t)n_ >= sizeof head - k ? sizeof head : k + (size_t)n_;                \
+    } while (0)
+    HEAD_ADD("HTTP/1.1 413 %s\r\nDate: %s\r\nConnection: close\r\n",
+             MHD_get_reason_phrase_for(MHD_HTTP_CONTENT_TOO_LARGE), date);
+    HEAD_ADD("Content-Type: %s\r\nContent-Length: %zu\r\nX-Request-Id: %lu\r\n",
+             resp.content_type ? resp.content_type : "application/problem+json", resp.body_len,
+             r->id);
+    HEAD_ADD("X-Content-Type-Options: nosniff\r\nReferrer-Policy: no-referrer\r\n"
+             "X-Frame-Options: DENY\r\nContent-Security-Policy: %s\r\n",
+             SRV_API_CSP);
+    if (resp.cache_control) HEAD_ADD("Cache-Control: %s\r\n", resp.cache_control);
+    if (r->vary_origin) HEAD_ADD("Vary: Origin\r\n");
+    if (r->cors_ok && r->origin) /* a listed origin: printable, no CR/LF (origin_allowed) */
+        HEAD_ADD("Access-Control-Allow-Origin: %s\r\nAccess-Control-Expose-Headers: %s\r\n",
+                 r->origin, SRV_CORS_EXPOSE);
+    HEAD_ADD("\r\n");
+#undef HEAD_ADD
+    if (k < sizeof head) {
+        send_some(r->fd, head, k);
+        send_some(r->fd, resp.body, resp.body_len);
+        r->status = 413;
+    }
+    api_response_free(&resp);
+    shutdown(r->fd, SHUT_WR);
+    char sink[16384];
+    for (size_t drained = 0; drained < SRV_DRAIN_MAX;) {
+        ssize_t n = recv(r->fd, sink, sizeof sink, MSG_DONTWAIT);
+        if (n <= 0) break;
+        drained += (size_t)n;
+    }
+    tl_closing_on_purpose = 1;
+    return MHD_NO;
+}
+
 /* Take a chunk of body: buffer it while under the limit, else count and drop it. */
 static void take_body(struct srv_http *h, struct srv_req *r, const char *data, size_t n)
 {
@@ -899,13 +1265,13 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
 {
     struct srv_http *h = cls;
     struct srv_req *r = *con_cls;
-    (void)version;
+    tl_closing_on_purpose = 0;
 
     if (!r) { /* first call: headers only */
         const union MHD_ConnectionInfo *sci =
             MHD_get_connection_info(conn, MHD_CONNECTION_INFO_SOCKET_CONTEXT);
         struct srv_conn *sc = sci ? sci->socket_context : NULL;
-        if (conn_timed_out(sc)) return MHD_NO;
+        if (conn_shut(sc)) return MHD_NO;
         r = calloc(1, sizeof *r);
         if (!r) return MHD_NO;
         r->conn = conn;
@@ -942,6 +1308,11 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
             (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
+        }
+        r->bad_framing = framing_problem(conn, version);
+        if (r->bad_framing) {
+            r->close_conn = 1;
+            return dispatch(h, r); /* answers 400, before any body byte is read */
         }
         if (is_v1_path(r->path)) {
             int cors_on = h->cfg->cors_origins[0] != '\0';
@@ -985,9 +1356,17 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
     }
 
     if (*upload_data_size) {
-        if (conn_timed_out(r->sc)) return MHD_NO; /* closed by the receive limit */
+        if (conn_shut(r->sc)) return MHD_NO; /* closed by the receive limit */
         if (r->state == REQ_RECEIVING) take_body(h, r, upload_data, *upload_data_size);
         *upload_data_size = 0;
+        /* Only a chunked body gets here past the limit (a Content-Length over
+         * it was answered on the first call). Within SRV_CHUNKED_GRACE of it,
+         * it is still read (and dropped) to its end, then answered 413 the
+         * usual way: a client that sends its whole body before reading gets
+         * that answer instead of a broken pipe. Beyond it, stop now. */
+        if (r->too_large && r->state == REQ_RECEIVING &&
+            r->body_seen > h->cfg->max_body + (size_t)SRV_CHUNKED_GRACE)
+            return refuse_mid_body(h, r);
         return MHD_YES;
     }
 
@@ -1058,6 +1437,35 @@ static size_t unescape_no_nul(void *cls, struct MHD_Connection *c, char *s)
 
 /* ---- lifecycle ------------------------------------------------------------------ */
 
+/* libmicrohttpd's own connection limit: --max-connections plus headroom for
+ * connections accepted before the ones shut down to make room have closed
+ * (libmicrohttpd accepts up to 10 at a time per I/O thread, and splits its
+ * limit evenly between the threads). A connection over this limit is closed
+ * by libmicrohttpd at once, unanswered. */
+static unsigned int conn_hard_limit(const struct srv_config *cfg)
+{
+    unsigned int n = (unsigned int)cfg->max_connections;
+    unsigned int threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
+    return n + n / 8u + 16u * threads;
+}
+
+/* Raise the soft descriptor limit to what hard_limit connections need (plus
+ * the listening socket, epoll, eventfds, log and static files), up to the
+ * hard limit; say so if that is not enough (accept() then fails beyond it). */
+static void ensure_descriptors(const struct srv_config *cfg, unsigned int hard_limit)
+{
+    struct rlimit rl;
+    rlim_t need = (rlim_t)hard_limit + 64u;
+    if (getrlimit(RLIMIT_NOFILE, &rl) != 0 || rl.rlim_cur >= need) return;
+    rlim_t old = rl.rlim_cur;
+    rl.rlim_cur = rl.rlim_max == RLIM_INFINITY || rl.rlim_max >= need ? need : rl.rlim_max;
+    if (setrlimit(RLIMIT_NOFILE, &rl) != 0) rl.rlim_cur = old;
+    if (rl.rlim_cur < need)
+        srv_log_note("--max-connections %d needs about %lu file descriptors but the limit is "
+                     "%lu: connections beyond it are refused",
+                     cfg->max_connections, (unsigned long)need, (unsigned long)rl.rlim_cur);
+}
+
 struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool)
 {
     struct srv_http *h = calloc(1, sizeof *h);
@@ -1067,9 +1475,12 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->listen_fd = -1;
     pthread_mutex_init(&h->watch_mu, NULL);
     pthread_mutex_init(&h->conn_mu, NULL);
-    h->quick_cost = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick_cost);
-    for (size_t i = 0; h->quick_cost && i < api_route_count; i++)
-        atomic_init(&h->quick_cost[i], 0);
+    h->quick = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick);
+    for (size_t i = 0; h->quick && i < api_route_count; i++) {
+        atomic_init(&h->quick[i].cost, 0);
+        atomic_init(&h->quick[i].runs, 0);
+        atomic_init(&h->quick[i].too_slow, 0);
+    }
     atomic_init(&h->next_id, 0);
     atomic_init(&h->inflight, 0);
 
@@ -1093,7 +1504,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         srv_log_note("cannot parse bind address '%s'", cfg->bind);
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
-        free(h->quick_cost);
+        free(h->quick);
         free(h);
         return NULL;
     }
@@ -1102,10 +1513,13 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
      * is replaced by the end marker (libmicrohttpd warns about a size of 0 or 1). */
     unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 0u;
     enum MHD_OPTION pool_opt = io_threads > 1 ? MHD_OPTION_THREAD_POOL_SIZE : MHD_OPTION_END;
+    unsigned int hard_limit = conn_hard_limit(cfg);
+    ensure_descriptors(cfg, hard_limit);
     h->daemon = MHD_start_daemon(
-        flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_SOCK_ADDR, sa,
+        flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER,
+        mhd_logger, NULL, MHD_OPTION_SOCK_ADDR, sa,
         MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
-        SRV_CONNECTION_LIMIT, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
+        hard_limit, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
         MHD_OPTION_NOTIFY_CONNECTION, on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK,
         unescape_no_nul, NULL, pool_opt, io_threads, MHD_OPTION_END);
     if (!h->daemon) {
@@ -1113,7 +1527,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
-        free(h->quick_cost);
+        free(h->quick);
         free(h);
         return NULL;
     }
@@ -1167,6 +1581,8 @@ void srv_http_stop(struct srv_http *h)
     if (h->listen_fd >= 0) close(h->listen_fd);
     pthread_mutex_destroy(&h->watch_mu);
     pthread_mutex_destroy(&h->conn_mu);
-    free(h->quick_cost);
+    free(h->quick);
+    free(h->reap_pfd);
+    free(h->reap_conn);
     free(h);
 }

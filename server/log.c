@@ -44,6 +44,8 @@ static unsigned long duration_buckets[N_BUCKETS + 1]; /* last: over the largest 
 static double duration_sum;                           /* seconds */
 static unsigned long duration_count;
 static unsigned long request_timeouts; /* connections closed by --request-timeout-ms */
+static unsigned long conns_evicted;    /* closed to make room (--max-connections) */
+static unsigned long conns_reaped;     /* closed because the client had gone */
 
 /* A label value is safe in the exposition format without escaping when it has
  * only these characters (no quote, backslash or newline). */
@@ -181,6 +183,20 @@ void srv_metrics_count_timeouts(unsigned long n)
     pthread_mutex_unlock(&stats_mu);
 }
 
+void srv_metrics_count_evictions(unsigned long n)
+{
+    pthread_mutex_lock(&stats_mu);
+    conns_evicted += n;
+    pthread_mutex_unlock(&stats_mu);
+}
+
+void srv_metrics_count_reaped(unsigned long n)
+{
+    pthread_mutex_lock(&stats_mu);
+    conns_reaped += n;
+    pthread_mutex_unlock(&stats_mu);
+}
+
 void srv_log_note(const char *fmt, ...)
 {
     char line[512];
@@ -231,7 +247,8 @@ static void text_add(struct text *t, const char *fmt, ...)
 }
 
 char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue_capacity,
-                       double worker_busy_seconds, unsigned long *len_out)
+                       double worker_busy_seconds, int connections_open, int connections_max,
+                       unsigned long *len_out)
 {
     struct text t = {malloc(4096), 0, 4096, 0};
     if (!t.s) return NULL;
@@ -271,6 +288,16 @@ char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue
              "# TYPE mechd_request_timeouts_total counter\n"
              "mechd_request_timeouts_total %lu\n",
              request_timeouts);
+    text_add(&t,
+             "# HELP mechd_connections_evicted_total Connections closed to make room for a new "
+             "one beyond --max-connections (the one that had waited longest for a request).\n"
+             "# TYPE mechd_connections_evicted_total counter\n"
+             "mechd_connections_evicted_total %lu\n"
+             "# HELP mechd_connections_reaped_total Connections closed because the client had "
+             "gone while they waited for a request.\n"
+             "# TYPE mechd_connections_reaped_total counter\n"
+             "mechd_connections_reaped_total %lu\n",
+             conns_evicted, conns_reaped);
     pthread_mutex_unlock(&stats_mu);
 
     text_add(&t,
@@ -289,8 +316,16 @@ char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue
              "# HELP mechd_worker_busy_seconds_total Time compute workers spent running jobs "
              "(summed over workers; counted when a job ends).\n"
              "# TYPE mechd_worker_busy_seconds_total counter\n"
-             "mechd_worker_busy_seconds_total %.9g\n",
-             queue_depth, queue_capacity, workers_busy, workers, worker_busy_seconds);
+             "mechd_worker_busy_seconds_total %.9g\n"
+             "# HELP mechd_connections_open Client connections open now.\n"
+             "# TYPE mechd_connections_open gauge\n"
+             "mechd_connections_open %d\n"
+             "# HELP mechd_connections_max Connections held open before the longest-waiting "
+             "idle one is closed (--max-connections).\n"
+             "# TYPE mechd_connections_max gauge\n"
+             "mechd_connections_max %d\n",
+             queue_depth, queue_capacity, workers_busy, workers, worker_busy_seconds,
+             connections_open, connections_max);
     if (t.oom) {
         free(t.s);
         return NULL;

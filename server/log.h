@@ -17,13 +17,21 @@ void srv_log_request(unsigned long id, const char *method, const char *path, con
  * --request-timeout-ms (mechd_request_timeouts_total). */
 void srv_metrics_count_timeouts(unsigned long n);
 
+/* Count connections closed to make room for a new one beyond --max-connections
+ * (mechd_connections_evicted_total), and connections closed because their
+ * client had gone while they waited for a request (mechd_connections_reaped_total). */
+void srv_metrics_count_evictions(unsigned long n);
+void srv_metrics_count_reaped(unsigned long n);
+
 /* Write a free-form line "mechd: TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* Prometheus text exposition (version 0.0.4) of the counters plus the given
- * gauges. Returns a malloc'd NUL-terminated string (caller frees) and its
- * length in *len, or NULL when out of memory. */
+ * gauges (connections_open: connections registered now; connections_max:
+ * --max-connections). Returns a malloc'd NUL-terminated string (caller frees)
+ * and its length in *len, or NULL when out of memory. */
 char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue_capacity,
-                       double worker_busy_seconds, unsigned long *len_out);
+                       double worker_busy_seconds, int connections_open, int connections_max,
+                       unsigned long *len_out);
 
 #endif

@@ -46,6 +46,7 @@ static const struct {
     {API_PROBLEM_CORS_FORBIDDEN, 14, 403, "/problems/cors-origin-not-allowed"},
     {API_PROBLEM_REQUEST_MISSING, 15, 400, "/problems/request-missing"},
     {API_PROBLEM_ANSWER_TOO_LARGE, 16, 422, "/problems/answer-too-large"},
+    {API_PROBLEM_BAD_FRAMING, 17, 400, "/problems/bad-framing"},
 };
 
 int main(void)

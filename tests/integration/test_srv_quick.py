@@ -20,7 +20,9 @@ a second one fills the queue, so any request handed to the pool is refused
 - malformed and invalid quick requests get their 400/422 problem+json;
 - the measured guard: with --inline-max-us 1 the first boost runs inline
   (no measurement yet), the next is predicted slower than 1 µs and goes to
-  the full pool: 503; with --inline-max-us 0 every boost goes to the pool;
+  the full pool: 503, and so do the next 62, but the 64th predicted too slow
+  runs inline as a probe that re-measures the route (the decision can
+  recover); with --inline-max-us 0 every boost goes to the pool;
 - --io-threads 1 and 4 both serve; --worker-nice 7 gives exactly the
   --workers threads nice 7 above mechd's own (SCHED_BATCH), --worker-nice 0
   leaves all at mechd's own nice (read from /proc on Linux); invalid values of --io-threads,
@@ -197,6 +199,15 @@ def test_guard():
             fill_pool(port, socks, "--inline-max-us %s" % limit)
             sts = [call(port, "POST", "/v1/relativity/boost", BOOST)[0] for _ in range(2)]
             check("--inline-max-us %s: %s (%s)" % (limit, what, expect), sts == expect, repr(sts))
+            if limit == "1":
+                # The decision recovers: a route predicted too slow is still run
+                # inline, and re-measured, once in 64 such requests
+                # (SRV_QUICK_REPROBE), so the one above (too_slow #1) and the
+                # next 62 go to the full pool and the 64th runs inline: 200.
+                sts = [call(port, "POST", "/v1/relativity/boost", BOOST)[0] for _ in range(63)]
+                check("--inline-max-us 1: 62 more boosts go to the full pool (503), the 64th predicted "
+                      "too slow is a re-measuring probe run inline (200)",
+                      sts == [503] * 62 + [200], repr(sts))
         finally:
             for s in socks:
                 s.close()

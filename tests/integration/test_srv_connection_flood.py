@@ -1,0 +1,305 @@
+#!/usr/bin/python3
+"""Connection floods do not take /healthz down (issue 15, item 5c; Python 3
+stdlib only).
+
+Usage: /usr/bin/python3 test_srv_connection_flood.py PATH/TO/mechd
+
+Before the fix, 520 idle connections against the limit of 512 made most
+/healthz probes fail, and 1,500 half-sent requests closed by their clients
+left the sockets in CLOSE-WAIT and /healthz unanswered for about a minute
+(libmicrohttpd's epoll loop misses a FIN that arrived before the connection
+was accepted, and nothing else looked). Checked here:
+
+- default --max-connections (512): 600 idle connections, then 30 /healthz
+  probes on new connections: every probe is answered 200; the server closes
+  the longest-waiting idle connections to make room (at least 600 - 512 of
+  them, none of the 300 newest), and /metrics counts them
+  (mechd_connections_evicted_total) and shows at most 512 open;
+- --max-connections 16: 40 idle connections, /healthz and /metrics answer,
+  mechd_connections_max is 16 and mechd_connections_open at most 16;
+- 300 connections that each send part of a request and close at once
+  (below the limit; their FIN mostly arrives before the server accepts
+  them): every socket is closed within 10 s (old build: CLOSE-WAIT until
+  the 30 s idle timeout);
+- 1,500 connections that each send part of a request, then all close: /healthz
+  answers within 10 s (old build: not within a minute), the server's sockets
+  are closed (mechd_connections_open back to 1, the probe itself; no socket
+  left in /proc/PID/fd but the listener); /metrics has
+  mechd_connections_reaped_total and mechd_connections_evicted_total;
+- a whole request followed by a half-close (shutdown(SHUT_WR), as `nc -N`
+  sends) is still answered: the reaper closes only connections whose client
+  has gone and left nothing to read, seen twice 100 ms apart;
+- --max-connections outside [8, 100000] is refused with exit status 2, and
+  --help lists it with its default and environment variable.
+Bounds are generous (seconds where the server needs milliseconds); only
+127.0.0.1 is contacted; every socket has a timeout.
+"""
+import json
+import math
+import os
+import re
+import socket
+import subprocess
+import sys
+import time
+
+from mechdtest import check, metric_value, start_mechd, summary, wait_for
+
+if len(sys.argv) < 2:
+    sys.stderr.write("usage: test_srv_connection_flood.py PATH/TO/mechd\n")
+    sys.exit(2)
+MECHD = os.path.abspath(sys.argv[1])
+# Boost of (ct, x, y, z) = (1, 0, 0, 0) by beta = 0.6 along x: gamma = 1.25,
+# ct' = gamma (ct - beta x) = 1.25, x' = gamma (x - beta ct) = -0.75.
+BOOST = json.dumps({"vectors": [1, 0, 0, 0], "velocity": {"beta": [0.6, 0, 0]}}).encode()
+
+
+def read_all(s):
+    data = b""
+    while True:
+        try:
+            c = s.recv(65536)
+        except OSError:
+            break
+        if not c:
+            break
+        data += c
+    return data
+
+
+def get(port, path, timeout=5.0):
+    """GET path on a new connection: (status or an error text, body)."""
+    try:
+        s = socket.create_connection(("127.0.0.1", port), timeout=timeout)
+        try:
+            s.sendall(b"GET " + path.encode() + b" HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n")
+            data = read_all(s)
+        finally:
+            s.close()
+    except OSError as e:
+        return repr(e), b""
+    m = re.match(rb"HTTP/1\.[01] (\d{3})", data)
+    return (int(m.group(1)) if m else repr(data[:40])), data.partition(b"\r\n\r\n")[2]
+
+
+def metrics(port):
+    st, body = get(port, "/metrics")
+    return body.decode(errors="replace") if st == 200 else ""
+
+
+def is_closed(s):
+    """Has the server closed this (idle, non-blocking) client socket?"""
+    try:
+        return s.recv(1, socket.MSG_PEEK | socket.MSG_DONTWAIT) == b""
+    except BlockingIOError:
+        return False
+    except OSError:
+        return True
+
+
+def server_sockets(pid):
+    n = 0
+    for fd in os.listdir("/proc/%d/fd" % pid):
+        try:
+            if os.readlink("/proc/%d/fd/%s" % (pid, fd)).startswith("socket:"):
+                n += 1
+        except OSError:
+            pass
+    return n
+
+
+def stop(proc):
+    proc.terminate()
+    try:
+        return proc.wait(20)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        return proc.wait(20)
+
+
+def test_idle_flood():
+    proc, port = start_mechd(MECHD, stderr=subprocess.DEVNULL)
+    socks = []
+    try:
+        for _ in range(600):
+            socks.append(socket.create_connection(("127.0.0.1", port), timeout=10))
+        sts = [get(port, "/healthz")[0] for _ in range(30)]
+        check("600 idle connections (limit 512): all 30 /healthz probes answered 200",
+              sts == [200] * 30, repr(sts))
+        text = metrics(port)
+        check("... and /metrics answers", "mechd_connections_open" in text, text[-300:])
+        evicted = metric_value(text, "mechd_connections_evicted_total")
+        check("... mechd_connections_max 512", metric_value(text, "mechd_connections_max") == 512, text[-300:])
+        # The ones shut down to make room count until libmicrohttpd has closed them.
+        opened = [None]
+
+        def settled(limit):
+            opened[0] = metric_value(metrics(port), "mechd_connections_open")
+            return opened[0] is not None and opened[0] <= limit
+
+        check("... at most 512 connections open once the shut ones have closed",
+              wait_for(lambda: settled(512), 10, period=0.1), repr(opened[0]))
+        check("... at least 600 - 512 = 88 idle connections closed to make room (%r)" % evicted,
+              evicted is not None and evicted >= 88, repr(evicted))
+        for s in socks:
+            s.setblocking(False)
+        closed = [0]
+
+        def count_closed():
+            closed[0] = sum(1 for s in socks if is_closed(s))
+            return closed[0] >= 88
+
+        check("... the clients see at least 88 of them closed", wait_for(count_closed, 10), repr(closed[0]))
+        newest = sum(1 for s in socks[300:] if is_closed(s))
+        check("... the longest-waiting ones: none of the 300 newest is closed", newest == 0, repr(newest))
+    finally:
+        for s in socks:
+            s.close()
+        rc = stop(proc)
+    check("idle flood: mechd exits 0 on SIGTERM", rc == 0, repr(rc))
+
+    proc, port = start_mechd(MECHD, ["--max-connections", "16"], stderr=subprocess.DEVNULL)
+    socks = []
+    try:
+        for _ in range(40):
+            socks.append(socket.create_connection(("127.0.0.1", port), timeout=10))
+        st, _ = get(port, "/healthz")
+        text = metrics(port)
+        check("--max-connections 16, 40 idle connections: /healthz 200, /metrics shows max 16",
+              st == 200 and metric_value(text, "mechd_connections_max") == 16, repr((st, text[-400:])))
+        opened = [None]
+
+        def settled():
+            opened[0] = metric_value(metrics(port), "mechd_connections_open")
+            return opened[0] is not None and opened[0] <= 16
+
+        check("... and at most 16 open once the shut ones have closed", wait_for(settled, 10, period=0.1),
+              repr(opened[0]))
+        s = socket.create_connection(("127.0.0.1", port), timeout=10)
+        s.sendall(b"POST /v1/relativity/boost HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n"
+                  b"Content-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(BOOST) + BOOST)
+        data = read_all(s)
+        s.close()
+        ok = data.startswith(b"HTTP/1.1 200")
+        if ok:
+            v = json.loads(data.partition(b"\r\n\r\n")[2])["vectors"]
+            v = v[0] if isinstance(v[0], list) else v
+            ok = math.isclose(v[0], 1.25, rel_tol=1e-15) and math.isclose(v[1], -0.75, rel_tol=1e-15)
+        check("... a boost is answered 200 with (1.25, -0.75, 0, 0)", ok, repr(data[:200]))
+    finally:
+        for s in socks:
+            s.close()
+        rc = stop(proc)
+    check("--max-connections 16: mechd exits 0 on SIGTERM", rc == 0, repr(rc))
+
+
+def test_dead_peers_reaped():
+    proc, port = start_mechd(MECHD, stderr=subprocess.DEVNULL)
+    try:
+        listeners = server_sockets(proc.pid)
+        t0 = time.monotonic()
+        for _ in range(300):
+            s = socket.create_connection(("127.0.0.1", port), timeout=10)
+            s.sendall(b"POST /v1/relativity/boost HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Le")
+            s.close()
+        left = [None]
+
+        def reaped():
+            left[0] = server_sockets(proc.pid)
+            return left[0] <= listeners
+
+        ok = wait_for(reaped, 10, period=0.1)
+        print("300 connections, each a partial request and a close at once (most FINs arrive before "
+              "the server accepts): %r server sockets left after %.2f s" % (left[0], time.monotonic() - t0))
+        check("300 half-sent requests closed at once (below the limit): the server closes every socket "
+              "within 10 s (not after the 30 s idle timeout)", ok, "%r left" % left[0])
+        text = metrics(port)
+        print("mechd_connections_reaped_total %r" % metric_value(text, "mechd_connections_reaped_total"))
+        check("... /healthz answers", get(port, "/healthz")[0] == 200)
+    finally:
+        rc = stop(proc)
+    check("dead peers: mechd exits 0 on SIGTERM", rc == 0, repr(rc))
+
+
+def test_half_sent_flood():
+    proc, port = start_mechd(MECHD, stderr=subprocess.DEVNULL)
+    try:
+        listeners = server_sockets(proc.pid)
+        socks = []
+        for _ in range(1500):
+            s = socket.create_connection(("127.0.0.1", port), timeout=10)
+            s.sendall(b"POST /v1/relativity/boost HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Le")
+            socks.append(s)
+        for s in socks:
+            s.close()
+        t0 = time.monotonic()
+        st = [None]
+
+        def healthy():
+            st[0] = get(port, "/healthz", timeout=2.0)[0]
+            return st[0] == 200
+
+        ok = wait_for(healthy, 10, period=0.1)
+        print("1500 half-sent requests closed by their clients: /healthz %r after %.2f s"
+              % (st[0], time.monotonic() - t0))
+        check("1500 half-sent requests closed by their clients: /healthz answers 200 within 10 s", ok,
+              repr(st[0]))
+        left = [None]
+
+        def reaped():
+            left[0] = server_sockets(proc.pid)
+            return left[0] <= listeners
+
+        ok = wait_for(reaped, 10, period=0.1)
+        print("server sockets %r (listening: %d) after %.2f s" % (left[0], listeners, time.monotonic() - t0))
+        check("... every one of their sockets is closed by the server within 10 s", ok,
+              "%r sockets left, %d listening" % (left[0], listeners))
+        text = metrics(port)
+        opened = metric_value(text, "mechd_connections_open")
+        reaped = metric_value(text, "mechd_connections_reaped_total")
+        evicted = metric_value(text, "mechd_connections_evicted_total")
+        print("closed by the server: %r reaped (client gone), %r evicted (room for new ones); "
+              "the rest libmicrohttpd saw close itself" % (reaped, evicted))
+        check("... /metrics: 1 connection open (this probe), reaped and evicted counted",
+              opened == 1 and reaped is not None and evicted is not None, repr((opened, reaped, evicted)))
+
+        # A whole request, then a half-close: still answered (not reaped).
+        sts = []
+        for i in range(50):
+            s = socket.create_connection(("127.0.0.1", port), timeout=10)
+            if i % 2:
+                s.sendall(b"GET /healthz HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n")
+            else:
+                s.sendall(b"POST /v1/relativity/boost HTTP/1.1\r\nHost: 127.0.0.1\r\n"
+                          b"Content-Type: application/json\r\nContent-Length: %d\r\n\r\n" % len(BOOST) + BOOST)
+            s.shutdown(socket.SHUT_WR)
+            data = read_all(s)
+            s.close()
+            m = re.match(rb"HTTP/1\.1 (\d{3})", data)
+            sts.append(int(m.group(1)) if m else repr(data[:40]))
+        check("50 whole requests followed by a half-close (shutdown(SHUT_WR)) are all answered 200",
+              sts == [200] * 50, repr(sts))
+    finally:
+        rc = stop(proc)
+    check("half-sent flood: mechd exits 0 on SIGTERM", rc == 0, repr(rc))
+
+
+def test_option():
+    env = {k: v for k, v in os.environ.items() if not k.startswith("MECHD_")}
+    for v in ("7", "100001", "abc"):
+        p = subprocess.run([MECHD, "--port", "0", "--max-connections", v], capture_output=True, timeout=20,
+                           env=env)
+        check("--max-connections %s is refused with exit status 2 and a message" % v,
+              p.returncode == 2 and b"--max-connections" in p.stderr, repr((p.returncode, p.stderr[:200])))
+    out = subprocess.run([MECHD, "--help"], capture_output=True, timeout=20, env=env).stdout.decode()
+    check("--help lists --max-connections, its default 512 and MECHD_MAX_CONNECTIONS",
+          re.search(r"--max-connections=VALUE.*\n.*default 512, env MECHD_MAX_CONNECTIONS", out) is not None,
+          out[-600:])
+
+
+if __name__ == "__main__":
+    test_idle_flood()
+    test_dead_peers_reaped()
+    test_half_sent_flood()
+    test_option()
+    sys.exit(summary())
