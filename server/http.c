@@ -37,7 +37,8 @@
  * answer built here carries nosniff, Referrer-Policy, X-Frame-Options and a
  * CSP of default-src 'none' (static files carry static.c's own set).
  * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
- * request line) carry none of these: it offers no hook for them.
+ * request line or an unparsable Content-Length) carry none of these: it
+ * offers no hook for them.
  *
  * QUICK OPERATIONS. A POST that api_quick_route() accepts (a closed-form
  * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
@@ -52,8 +53,8 @@
  * at most --inline-max-us, so a route that turns out slow (or a large body)
  * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
  * time, not wall time: a thread preempted for a millisecond during a 5 µs
- * boost (the rule on a machine whose cores also run the clients) would
- * otherwise look 200 times slower, and one such run sent every later boost to
+ * boost (common when the clients run on the same cores) would otherwise look
+ * 200 times slower, and one such run sent every later boost to
  * the niced workers, whose small queue then refused cheap requests with 503
  * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
  * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of

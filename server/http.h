@@ -1,9 +1,12 @@
 /* http.h — mechd's HTTP front: libmicrohttpd (epoll, a pool of
- * cfg->io_threads internal polling threads) that reads requests, enforces the
- * body limit and the total receive time (cfg->request_timeout_ms), answers the
- * server-owned routes (/healthz, /metrics, /), cheap GETs and quick POSTs
- * (api_quick_route) inline, and hands everything else to the worker pool with
- * suspend/resume; a queued job whose client hangs up leaves the queue at once.
+ * cfg->io_threads internal polling threads) that reads requests, refuses
+ * ambiguous body framing, enforces the body limit, the total receive time
+ * (cfg->request_timeout_ms) and the connection limit (cfg->max_connections:
+ * the longest-waiting idle connection makes room; connections whose client
+ * has gone are reaped), answers the server-owned routes (/healthz, /metrics,
+ * /), cheap GETs and quick POSTs (api_quick_route) inline, and hands
+ * everything else to the worker pool with suspend/resume; a queued job whose
+ * client hangs up leaves the queue at once.
  *
  * Shutdown order (main.c): srv_http_quiesce, srv_pool_stop, srv_http_drain,
  * srv_http_stop, srv_pool_free. Not thread-safe: call from main only.
