@@ -25,8 +25,8 @@ SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-poin
 CFLAGS="-std=c11 -O1 -g -D_POSIX_C_SOURCE=200809L -Wall -Wno-unused-parameter $SAN \
  -I$SRC/core/include -I$SRC/core -I$SRC/api -I$SRC/server -I$SRC/tests/fuzz \
  -DMECHD_VERSION=\"0.1.0\" -DMECHD_BUILD_ID=\"fuzz\" -DMECHD_STATIC_DIR=\"$SRC/clients/web\" \
- $(pkg-config --cflags jansson gsl libmicrohttpd)"
-LIBS="$(pkg-config --libs jansson gsl) -lm -lpthread"
+ $(pkg-config --cflags jansson gsl zlib libmicrohttpd)"
+LIBS="$(pkg-config --libs jansson gsl zlib) -lm -lpthread"
 export CFLAGS
 
 # Objects of the program under test, instrumented for coverage (fuzzer-no-link).
