@@ -27,6 +27,12 @@ struct traj_ctx {
     /* planar integration: r = u1 e1 + u2 e2 (dim2 = 1) */
     int dim2;
     struct mech_vec3 e1, e2;
+    /* fast path (simple_accel): every force is central gravity, uniform
+     * gravity, a spring or drag and no fictitious term is modelled; fvec[i]
+     * is force i's centre / g / anchor in the integration's coordinates
+     * (projected on e1, e2 when dim2) */
+    int simple;
+    double fvec[MECH_TRAJECTORY_MAX_FORCES][3];
     double fixed_dt;      /* step of a fixed-step method, 0 for adaptive ones */
     struct mech_error *err;
     /* observer accumulators */
@@ -82,8 +88,8 @@ struct mech_vec3 mech_frame_omega(const struct mech_frame *frame)
  *   q - s = (q^2 - s^2)/(q + s) = (2 d.r - r.r)/(q + s),
  * so nothing cancels when |r| << |d| (the direct difference loses
  * log10(|d|/|r|) digits: 2 at the Earth-Moon ratio 60, all of them at 1 m). */
-static enum mech_status tide_accel(const struct traj_ctx *c, size_t i, struct mech_vec3 r,
-                                   double t, struct mech_vec3 *a)
+static __attribute__((noinline)) enum mech_status
+tide_accel(const struct traj_ctx *c, size_t i, struct mech_vec3 r, double t, struct mech_vec3 *a)
 {
     const struct mech_force *f = &c->p->forces[i];
     const struct mech_vec3 d = f->u.third_body_tide.position;
@@ -116,9 +122,25 @@ static double tide_potential(const struct mech_force *f, struct mech_vec3 r)
     return -f->u.third_body_tide.gm * (qms / (q * s) - mech_vec3_dot(d, r) / (q * q * q));
 }
 
-/* Acceleration of force i at (r, v). MECH_ENUMERIC at the centre of a central mass. */
-static enum mech_status force_accel(const struct traj_ctx *c, size_t i, struct mech_vec3 r,
-                                    struct mech_vec3 v, double t, struct mech_vec3 *a)
+/* The typed error of force_accel at the centre of central_gravity force i.
+ * Kept out of line (cold): its message buffer would otherwise sit in the
+ * frame of the hot force loop (issue 16: trajectory overhead). */
+static __attribute__((noinline, cold)) enum mech_status
+central_gravity_error(const struct traj_ctx *c, size_t i, double dn, double t)
+{
+    char param[32];
+    snprintf(param, sizeof param, "forces/%zu", i);
+    return mech_error_set(c->err, MECH_ENUMERIC, param,
+                          "the particle reached the centre of central_gravity force %zu "
+                          "(distance %.3g m) at t = %.9g s",
+                          i, dn, t);
+}
+
+/* Acceleration of force i at (r, v). MECH_ENUMERIC at the centre of a central mass.
+ * Inlined into the right-hand sides (called 13 times per rk8pd step). */
+static inline enum mech_status force_accel(const struct traj_ctx *c, size_t i,
+                                           struct mech_vec3 r, struct mech_vec3 v, double t,
+                                           struct mech_vec3 *a)
 {
     const struct mech_force *f = &c->p->forces[i];
     const double m = c->p->mass;
@@ -132,14 +154,7 @@ static enum mech_status force_accel(const struct traj_ctx *c, size_t i, struct m
         /* a = -gm d / |d|^3, written as (gm / |d|^2)(d / |d|) so |d|^3 cannot
          * underflow first; |d| -> 0 gives a typed error, never a NaN. */
         double s = f->u.central_gravity.gm / (dn * dn);
-        if (!(dn > 0.0) || !isfinite(s)) {
-            char param[32];
-            snprintf(param, sizeof param, "forces/%zu", i);
-            return mech_error_set(c->err, MECH_ENUMERIC, param,
-                                  "the particle reached the centre of central_gravity force %zu "
-                                  "(distance %.3g m) at t = %.9g s",
-                                  i, dn, t);
-        }
+        if (!(dn > 0.0) || !isfinite(s)) return central_gravity_error(c, i, dn, t);
         *a = mech_vec3_scale(d, -s / dn);
         return MECH_OK;
     }
@@ -199,10 +214,117 @@ static enum mech_status nonfinite_error(const struct traj_ctx *c, double t, stru
                           t, c->t_last, c->r_last.x, c->r_last.y, c->r_last.z);
 }
 
+/* ---- the force loop's fast path (issue 16: trajectory overhead) -------------
+ * Scenes whose acceleration is a sum of central gravity, uniform gravity,
+ * springs and linear drag with no fictitious term (every Kepler, oscillator
+ * and falling-object scene of an inertial frame) are evaluated straight from
+ * the state's components in the integration's own dimension nd (3, or 2 for a
+ * planar scene: the force vectors were projected on e1, e2 once, so nothing
+ * is expanded to 3-D per evaluation). Term by term the arithmetic is
+ * force_accel's (same operations in the same order), so in 3-D the result is
+ * bit-identical to the generic loop; in 2-D it differs from expand-evaluate-
+ * project by round-off only (exactly equal when e1, e2 are signed axes). */
+
+/* Whether c qualifies for simple_accel, and its force vectors. Called after
+ * ctx_init and again after ctx_plane sets up (or declines) the plane. */
+static void ctx_fast_setup(struct traj_ctx *c)
+{
+    const struct mech_trajectory_problem *p = c->p;
+    c->simple = !c->coriolis && !c->centrifugal && !c->euler && !c->translational &&
+                p->n_forces <= MECH_TRAJECTORY_MAX_FORCES;
+    for (size_t i = 0; i < p->n_forces && c->simple; i++) {
+        const struct mech_force *f = &p->forces[i];
+        struct mech_vec3 u;
+        switch (f->type) {
+        case MECH_FORCE_CENTRAL_GRAVITY: u = f->u.central_gravity.center; break;
+        case MECH_FORCE_UNIFORM_GRAVITY: u = f->u.uniform_gravity.g; break;
+        case MECH_FORCE_SPRING: u = f->u.spring.anchor; break;
+        case MECH_FORCE_LINEAR_DRAG: u = mech_vec3_make(0, 0, 0); break;
+        default: c->simple = 0; continue;
+        }
+        if (c->dim2) {
+            c->fvec[i][0] = mech_vec3_dot(u, c->e1);
+            c->fvec[i][1] = mech_vec3_dot(u, c->e2);
+            c->fvec[i][2] = 0.0;
+        } else {
+            c->fvec[i][0] = u.x;
+            c->fvec[i][1] = u.y;
+            c->fvec[i][2] = u.z;
+        }
+    }
+}
+
+static enum mech_status nonfinite_error(const struct traj_ctx *c, double t, struct mech_vec3 r,
+                                        struct mech_vec3 v);
+
+/* |x| of nd <= 3 components: mech_vec3_norm with the missing one 0. */
+static inline double norm_n(const double *x, int nd)
+{
+    return mech_vec3_norm(mech_vec3_make(x[0], x[1], nd == 3 ? x[2] : 0.0));
+}
+
+/* a(t, q, v) of a `simple` scene in nd = 2 or 3 components (see above). */
+static inline enum mech_status simple_accel(const struct traj_ctx *c, double t, const double *q,
+                                            const double *v, double *a, int nd)
+{
+    const struct mech_trajectory_problem *p = c->p;
+    const double m = p->mass;
+    double acc[3] = {0.0, 0.0, 0.0}, d[3];
+    int finite = 1;
+    for (int k = 0; k < nd; k++) finite &= isfinite(q[k]) && isfinite(v[k]);
+    for (size_t i = 0; i < p->n_forces; i++) {
+        const struct mech_force *f = &p->forces[i];
+        const double *u = c->fvec[i];
+        double s;
+        switch (f->type) {
+        case MECH_FORCE_CENTRAL_GRAVITY: {
+            for (int k = 0; k < nd; k++) d[k] = q[k] - u[k];
+            const double dn = norm_n(d, nd);
+            s = f->u.central_gravity.gm / (dn * dn);
+            if (!(dn > 0.0) || !isfinite(s)) return central_gravity_error(c, i, dn, t);
+            s = -s / dn;
+            for (int k = 0; k < nd; k++) acc[k] += d[k] * s;
+            break;
+        }
+        case MECH_FORCE_UNIFORM_GRAVITY:
+            for (int k = 0; k < nd; k++) acc[k] += u[k];
+            break;
+        case MECH_FORCE_SPRING: {
+            for (int k = 0; k < nd; k++) d[k] = q[k] - u[k];
+            const double dn = norm_n(d, nd);
+            s = dn > 0.0 ? f->u.spring.k * (1.0 - f->u.spring.rest_length / dn) : 0.0;
+            s = -s / m;
+            for (int k = 0; k < nd; k++) acc[k] += d[k] * s;
+            break;
+        }
+        case MECH_FORCE_LINEAR_DRAG:
+            s = -f->u.linear_drag.b / m;
+            for (int k = 0; k < nd; k++) acc[k] += v[k] * s;
+            break;
+        default:
+            return mech_error_set(c->err, MECH_EINTERNAL, NULL, "force outside the fast path");
+        }
+    }
+    for (int k = 0; k < nd; k++) finite &= isfinite(acc[k]);
+    if (!finite) {
+        /* rare: rebuild the 3-D state for the message */
+        double y[6] = {q[0], q[1], nd == 3 ? q[2] : 0.0, v[0], v[1], nd == 3 ? v[2] : 0.0};
+        struct mech_vec3 r = mech_vec3_make(y[0], y[1], y[2]), w = mech_vec3_make(y[3], y[4], y[5]);
+        if (nd == 2) {
+            r = mech_vec3_add(mech_vec3_scale(c->e1, q[0]), mech_vec3_scale(c->e2, q[1]));
+            w = mech_vec3_add(mech_vec3_scale(c->e1, v[0]), mech_vec3_scale(c->e2, v[1]));
+        }
+        return nonfinite_error(c, t, r, w);
+    }
+    for (int k = 0; k < nd; k++) a[k] = acc[k];
+    return MECH_OK;
+}
+
 static enum mech_status traj_accel(double t, const double *q, const double *v, double *a,
                                    void *params)
 {
     const struct traj_ctx *c = params;
+    if (c->simple && !c->dim2) return simple_accel(c, t, q, v, a, 3);
     struct mech_vec3 r = mech_vec3_make(q[0], q[1], q[2]);
     struct mech_vec3 vv = mech_vec3_make(v[0], v[1], v[2]);
     struct mech_vec3 acc = mech_vec3_make(0.0, 0.0, 0.0);
@@ -212,9 +334,11 @@ static enum mech_status traj_accel(double t, const double *q, const double *v, d
         if (st != MECH_OK) return st;
         acc = mech_vec3_add(acc, ai);
     }
-    const struct mech_vec3 w = omega_at(c, t);
-    if (c->coriolis) acc = mech_vec3_add(acc, coriolis_accel(w, vv));
-    if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(w, r));
+    if (c->coriolis || c->centrifugal) { /* W(t) only when a rotation term needs it */
+        const struct mech_vec3 w = omega_at(c, t);
+        if (c->coriolis) acc = mech_vec3_add(acc, coriolis_accel(w, vv));
+        if (c->centrifugal) acc = mech_vec3_add(acc, centrifugal_accel(w, r));
+    }
     if (c->euler) acc = mech_vec3_sub(acc, mech_vec3_cross(c->wdot, r));
     if (c->translational) acc = mech_vec3_sub(acc, c->A);
     if (!mech_vec3_isfinite(acc) || !mech_vec3_isfinite(r) || !mech_vec3_isfinite(vv))
@@ -368,12 +492,16 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
         c->term_max[i] = fmax(c->term_max[i], mech_vec3_norm(ai));
     }
     /* Fictitious terms are sized even when omitted (DESIGN: say what was
-     * left out, with its size); both are 0 in an inertial frame. */
-    const struct mech_vec3 wt = omega_at(c, t);
-    c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
-    c->term_max[n + 1] = fmax(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(wt, r)));
-    c->term_max[n + 2] = fmax(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
-    c->term_max[n + 3] = fmax(c->term_max[n + 3], mech_vec3_norm(c->A));
+     * left out, with its size); all four are exactly 0 in an inertial frame
+     * (w = dw/dt = A = 0 there, ctx_init), where term_max keeps its 0. */
+    if (c->noninertial) {
+        const struct mech_vec3 wt = omega_at(c, t);
+        c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
+        c->term_max[n + 1] = fmax(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(wt, r)));
+        c->term_max[n + 2] =
+            fmax(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
+        c->term_max[n + 3] = fmax(c->term_max[n + 3], mech_vec3_norm(c->A));
+    }
     c->rmax = fmax(c->rmax, mech_vec3_norm(r));
     c->vmax = fmax(c->vmax, mech_vec3_norm(v));
 
@@ -429,6 +557,7 @@ static enum mech_status plane_accel(double t, const double *q, const double *v, 
                                     void *params)
 {
     const struct traj_ctx *c = params;
+    if (c->simple) return simple_accel(c, t, q, v, a, 2); /* no 3-D expansion */
     double u[4] = {q[0], q[1], v[0], v[1]}, y[6], a3[3];
     plane_expand(c, u, y);
     enum mech_status st = traj_accel(t, y, y + 3, a3, params);
@@ -648,6 +777,7 @@ static void ctx_init(struct traj_ctx *c, const struct mech_trajectory_problem *p
     c->fixed_dt = fixed_dt;
     c->track_l = angular_momentum_center(c, &c->lcenter);
     c->r_last = p->position;
+    ctx_fast_setup(c);
 }
 
 static int scene_has_drag(const struct mech_trajectory_problem *p)
@@ -793,6 +923,7 @@ static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
     c->dim2 = 1;
     c->e1 = perpendicular_to(n);
     c->e2 = mech_vec3_cross(n, c->e1);
+    ctx_fast_setup(c); /* the force vectors in plane coordinates */
 }
 
 /* Buffers of one run: samples (t, y) and the stop state. */
