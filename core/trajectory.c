@@ -281,13 +281,13 @@ simple_accel(const struct traj_ctx *c, double t, const double *q, const double *
             s = -s / dn;
             ax += dx * s;
             ay += dy * s;
-            az += dz * s;
+            if (nd == 3) az += dz * s; /* 2-D: no third component */
             break;
         }
         case MECH_FORCE_UNIFORM_GRAVITY:
             ax += u[0];
             ay += u[1];
-            az += u[2];
+            if (nd == 3) az += u[2];
             break;
         case MECH_FORCE_SPRING: {
             const double dx = q[0] - u[0], dy = q[1] - u[1], dz = nd == 3 ? qz - u[2] : 0.0;
@@ -296,14 +296,14 @@ simple_accel(const struct traj_ctx *c, double t, const double *q, const double *
             s = -s / m;
             ax += dx * s;
             ay += dy * s;
-            az += dz * s;
+            if (nd == 3) az += dz * s; /* 2-D: no third component */
             break;
         }
         case MECH_FORCE_LINEAR_DRAG: {
             const double s = -f->u.linear_drag.b / m;
             ax += v[0] * s;
             ay += v[1] * s;
-            az += vz * s;
+            if (nd == 3) az += vz * s;
             break;
         }
         default:
@@ -314,7 +314,8 @@ simple_accel(const struct traj_ctx *c, double t, const double *q, const double *
      * sum times 0 is 0 when every term is finite and the sum does not
      * overflow, NaN otherwise; only then the exact test (callgrind: an
      * isfinite chain was a third of this function's instructions) */
-    const double z = ((q[0] + q[1] + qz) + (v[0] + v[1] + vz) + (ax + ay + az)) * 0.0;
+    const double z = nd == 3 ? ((q[0] + q[1] + qz) + (v[0] + v[1] + vz) + (ax + ay + az)) * 0.0
+                             : ((q[0] + q[1]) + (v[0] + v[1]) + (ax + ay)) * 0.0;
     if (!(z == 0.0) &&
         !(isfinite(q[0]) && isfinite(q[1]) && isfinite(qz) && isfinite(v[0]) && isfinite(v[1]) &&
           isfinite(vz) && isfinite(ax) && isfinite(ay) && isfinite(az))) {
@@ -540,8 +541,9 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
             fmax(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
         c->term_max[n + 3] = fmax(c->term_max[n + 3], mech_vec3_norm(c->A));
     }
-    c->rmax = fmax(c->rmax, mech_vec3_norm(r));
-    c->vmax = fmax(c->vmax, mech_vec3_norm(v));
+    const double rn = mech_vec3_norm(r), vn = mech_vec3_norm(v); /* reused below */
+    c->rmax = fmax(c->rmax, rn);
+    c->vmax = fmax(c->vmax, vn);
 
     double inv, scale;
     invariant_at(c, t, r, v, &inv, &scale);
@@ -562,7 +564,11 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
         if (t == 0.0 && c->n_observed == 0) c->l0 = l;
         c->l_last = l;
         c->ldrift_max = fmax(c->ldrift_max, mech_vec3_norm(mech_vec3_sub(l, c->l0)));
-        c->lscale_max = fmax(c->lscale_max, c->p->mass * mech_vec3_norm(d) * mech_vec3_norm(v));
+        /* |d| = |r| exactly when the centre is the origin (r - 0 = r) */
+        const double dn = c->lcenter.x == 0.0 && c->lcenter.y == 0.0 && c->lcenter.z == 0.0
+                              ? rn
+                              : mech_vec3_norm(d);
+        c->lscale_max = fmax(c->lscale_max, c->p->mass * dn * vn);
     }
     c->n_observed++;
     c->t_last = t;
