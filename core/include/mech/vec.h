@@ -23,9 +23,24 @@ static inline double mech_vec3_dot(struct mech_vec3 a, struct mech_vec3 b)
 { return a.x * b.x + a.y * b.y + a.z * b.z; }
 static inline struct mech_vec3 mech_vec3_cross(struct mech_vec3 a, struct mech_vec3 b)
 { return mech_vec3_make(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x); }
-/* Euclidean norm without overflow or underflow for any finite components. */
+/* Euclidean norm without overflow or underflow for any finite components
+ * (correct to ~1 ulp; +inf if a component is infinite, NaN if one is NaN and
+ * none infinite, as hypot).
+ *
+ * Fast path: sqrt(x^2 + y^2 + z^2) when the sum of squares lies in
+ * [2^-968, DBL_MAX]: no square overflowed (the sum is finite), and a square
+ * that underflowed (to a subnormal or 0, absolute error <= 2^-1075) is
+ * below 2^-107 of the sum, so the result is as good as hypot's (3 roundings
+ * in the sum, 1 in sqrt: < 2 ulp). Otherwise (tiny or huge vectors, 0,
+ * inf, NaN) the scaled hypot(hypot(x, y), z), exact at the extremes. The
+ * fast path is ~10x cheaper than two hypot calls: this norm is in the
+ * innermost loop of every trajectory (issue 16). */
 static inline double mech_vec3_norm(struct mech_vec3 a)
-{ return hypot(hypot(a.x, a.y), a.z); }
+{
+    const double s = a.x * a.x + a.y * a.y + a.z * a.z;
+    if (s >= 0x1p-968 && s <= 0x1.fffffffffffffp+1023) return sqrt(s);
+    return hypot(hypot(a.x, a.y), a.z);
+}
 static inline int mech_vec3_isfinite(struct mech_vec3 a)
 { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 static inline double mech_vec3_get(struct mech_vec3 a, int i)
