@@ -55,6 +55,17 @@ def start_mechd(binary, args=(), stderr=None, timeout=20):
     return proc, int(m.group(1))
 
 
+def stop_mechd(proc):
+    """SIGTERM proc and return its exit status; SIGKILL it if it has not
+    exited within 20 s."""
+    proc.terminate()
+    try:
+        return proc.wait(20)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        return proc.wait(20)
+
+
 def wait_for(pred, timeout, period=0.02):
     """Poll pred() every `period` s until it is true (return True) or `timeout`
     s have passed (return False)."""

@@ -43,7 +43,7 @@ import subprocess
 import sys
 import time
 
-from mechdtest import check, metric_value, start_mechd, summary, wait_for
+from mechdtest import check, metric_value, start_mechd, stop_mechd, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_srv_connection_flood.py PATH/TO/mechd\n")
@@ -108,13 +108,7 @@ def server_sockets(pid):
     return n
 
 
-def stop(proc):
-    proc.terminate()
-    try:
-        return proc.wait(20)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        return proc.wait(20)
+stop = stop_mechd
 
 
 def test_idle_flood():

@@ -41,7 +41,7 @@ import sys
 import tempfile
 import time
 
-from mechdtest import check, metric_value, start_mechd, summary, wait_for
+from mechdtest import check, metric_value, start_mechd, stop_mechd, summary, wait_for
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_srv_quick.py PATH/TO/mechd\n")
@@ -102,13 +102,7 @@ def gauge(text, name):
 
 
 
-def stop(proc):
-    proc.terminate()
-    try:
-        return proc.wait(20)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        return proc.wait(20)
+stop = stop_mechd
 
 
 POOL_ARGS = ["--workers", "1", "--queue", "1", "--deadline-ms", "60000", "--max-steps", "1000000000000"]
