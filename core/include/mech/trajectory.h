@@ -244,7 +244,7 @@ struct mech_trajectory_choice {
     const char *method;          /* static */
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
-    char reason[480];            /* why: scene class, scale, tolerance mapping */
+    char reason[640];            /* why: scene class, scale, tolerance mapping */
 };
 
 /* Choose a method and tolerances for p (its method/opt are ignored) so that
