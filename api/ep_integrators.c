@@ -10,9 +10,13 @@
 
 static const char target_doc[] =
     "{\"target_error\": x} (relative error on positions and velocities, 1e-15..0.1) takes the "
-    "loosest preset whose promise is <= x and scales its rtol by x / promise (at most 10x); "
-    "velocity-free scenes (no drag, no Coriolis) get the preset's velocity_free method, others "
-    "its velocity_dependent method. atol = rtol x the smaller of the scene's position scale "
+    "loosest preset whose promise is <= x and scales its rtol by x / promise (at most 10x; "
+    "radau15's eps is not loosened); velocity-free scenes (no drag, no Coriolis) get the "
+    "preset's velocity_free method, others its velocity_dependent method. The rtol shown is for "
+    "runs of up to 20 pi dynamical times sqrt(|r0| / |a0|); a longer run of span dynamical times "
+    "gets it times 20 pi / span (squared for rk8pd on central-gravity scenes), and "
+    "diagnostics.selection says when a target may be beyond the round-off floor of a long run "
+    "(about 1.5e-16 x span^1.5 relative). atol = rtol x the smaller of the scene's position scale "
     "max(|r0|, |v0| T, |a0| T^2/2) and velocity scale max(|v0|, |a0| T), with T the smaller "
     "of t_end and sqrt(|r0| / |a0|).";
 

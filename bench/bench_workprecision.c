@@ -46,7 +46,9 @@
  * OUT_DIR/workprecision.png (bench/workprecision.gp). The bench/ directory
  * is found from this file's path (__FILE__) or $MECHD_BENCH_DIR.
  * Environment: MECHD_BENCH_CAP (seconds, default 0.5): a sweep stops after
- * a run costing more than this.
+ * a run costing more than this; MECHD_BENCH_PRESETS_ONLY (any value): print
+ * only issue 16's presets table (every preset's CPU, error and method on the
+ * issue's trajectory scenes, machine/draft and machine/balanced ratios).
  */
 #include <errno.h>
 #include <float.h>
@@ -786,6 +788,133 @@ static void presets_section(const struct scene *scenes, size_t n_scenes)
     }
 }
 
+/* ---- issue 16: the presets on the issue's trajectory scenes -------------------
+ * Through mech_trajectory_integrate (what a request gets: 201 samples, the
+ * observer, the reference), each preset's method, rtol, error against the
+ * exact reference (the falling object: a radau15 run at its round-off floor),
+ * rhs evaluations and thread CPU (best of 3), the machine/draft and
+ * machine/balanced ratios per scene and their geometric means. */
+enum { IS_NS = 201 };
+static double is_t[IS_NS];
+static struct mech_vec3 is_pos[IS_NS], is_vel[IS_NS], is_rp[IS_NS], is_rv[IS_NS];
+
+static enum mech_status issue_run(const struct mech_trajectory_problem *p,
+                                  struct mech_trajectory_result *r, double *cpu)
+{
+    enum mech_status st = MECH_OK;
+    *cpu = INFINITY;
+    for (int k = 0; k < 3; k++) {
+        struct mech_budget b = mech_budget_make(200000000, 60.0);
+        memset(r, 0, sizeof *r);
+        r->t = is_t;
+        r->position = is_pos;
+        r->velocity = is_vel;
+        double t0 = mech_cpu_seconds();
+        st = mech_trajectory_integrate(p, &b, r, NULL);
+        *cpu = fmin(*cpu, mech_cpu_seconds() - t0);
+        if (st != MECH_OK) break;
+    }
+    return st;
+}
+
+static void issue_presets_section(void)
+{
+    printf("\n## Issue 16: the presets on the trajectory scenes (through mech_trajectory_integrate, "
+           "201 samples, CPU best of 3)\n");
+    printf("%-22s %-9s %8s %-8s %9s %10s %-6s %10s %9s\n", "scene", "preset", "promise", "method",
+           "rtol", "rel_err", "kept?", "rhs_evals", "cpu_s");
+    const double PI = WP_PI, gm = 3.986004418e14;
+    double log_md = 0, log_mb = 0;
+    int n_sc = 0;
+    for (int sc = 0; sc < 6; sc++) {
+        struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
+        struct mech_trajectory_problem p;
+        memset(&p, 0, sizeof p);
+        p.mass = 1000;
+        p.forces = &f;
+        p.n_forces = 1;
+        p.samples = IS_NS;
+        char name[40];
+        if (sc < 4) {
+            const double e = sc < 2 ? 0.5 : 0.9, n = sc % 2 ? 1000 : 10, q = 7e6, a = q / (1 - e);
+            f.u.central_gravity.gm = gm;
+            p.position = mech_vec3_make(q, 0, 0);
+            p.velocity = mech_vec3_make(0, sqrt(gm * (1 + e) / q), 0);
+            p.t_end = n * 2 * PI * sqrt(a * a * a / gm);
+            snprintf(name, sizeof name, "kepler e=%.1f %.0f orb", e, n);
+        } else if (sc == 4) {
+            f.type = MECH_FORCE_SPRING;
+            f.u.spring.k = 50;
+            p.mass = 2;
+            p.position = mech_vec3_make(0.1, 0, 0);
+            p.velocity = mech_vec3_make(0, 0.2, 0);
+            p.t_end = 1e4 * 2 * PI / 5;
+            snprintf(name, sizeof name, "oscillator 1e4 per");
+        } else {
+            f.type = MECH_FORCE_UNIFORM_GRAVITY;
+            f.u.uniform_gravity.g = mech_vec3_make(0, 0, -9.80665);
+            p.mass = 1;
+            p.frame.type = MECH_FRAME_EARTH;
+            p.frame.latitude_deg = 32;
+            p.frame.omega_magnitude = 7.2921159e-5;
+            p.fictitious = MECH_FICTITIOUS_CORIOLIS;
+            p.position = mech_vec3_make(0, 0, 100);
+            p.t_end = sqrt(2 * 100 / 9.80665);
+            p.method = "radau15";
+            p.opt.rtol = 1e-9;
+            p.opt.atol = 1e-14;
+            struct mech_trajectory_result r;
+            double c;
+            if (issue_run(&p, &r, &c) != MECH_OK) continue;
+            memcpy(is_rp, is_pos, sizeof is_rp);
+            memcpy(is_rv, is_vel, sizeof is_rv);
+            snprintf(name, sizeof name, "falling 100m Coriolis");
+        }
+        double cpu[MECH_ACCURACY_COUNT] = {0};
+        int ok = 1;
+        for (int a = 0; a < MECH_ACCURACY_COUNT; a++) {
+            const struct mech_accuracy_preset *pr = mech_accuracy_preset_at((enum mech_accuracy)a);
+            struct mech_trajectory_choice ch;
+            if (mech_trajectory_choose(&p, pr->promise, &ch, NULL) != MECH_OK) { ok = 0; break; }
+            p.method = ch.method;
+            p.opt = ch.opt;
+            struct mech_trajectory_result r;
+            if (issue_run(&p, &r, &cpu[a]) != MECH_OK) { ok = 0; break; }
+            double er = 0;
+            if (sc < 5) {
+                er = fmax(r.reference.max_relative_position_error,
+                          r.reference.max_relative_velocity_error);
+            } else {
+                for (int k = 0; k < IS_NS; k++) {
+                    er = fmax(er, mech_vec3_norm(mech_vec3_sub(is_pos[k], is_rp[k])) / 100);
+                    er = fmax(er, mech_vec3_norm(mech_vec3_sub(is_vel[k], is_rv[k])) /
+                                      (9.80665 * p.t_end));
+                }
+            }
+            printf("%-22s %-9s %8.0e %-8s %9.2e %10.2e %-6s %10ld %9.5f%s\n", name, pr->name,
+                   pr->promise, ch.method, ch.opt.rtol, er,
+                   er <= pr->promise ? "yes" : "NO", r.stats.rhs_evaluations, cpu[a],
+                   strstr(ch.reason, "beyond what the preset") ? "  (selection: may be beyond)"
+                                                                : "");
+        }
+        if (!ok) {
+            printf("%-22s FAILED\n", name);
+            continue;
+        }
+        const double md = cpu[MECH_ACCURACY_MACHINE] / cpu[MECH_ACCURACY_DRAFT];
+        const double mb = cpu[MECH_ACCURACY_MACHINE] / cpu[MECH_ACCURACY_BALANCED];
+        printf("%-22s machine/draft %.2fx, machine/balanced %.2fx\n", name, md, mb);
+        log_md += log(md);
+        log_mb += log(mb);
+        n_sc++;
+    }
+    if (n_sc)
+        printf("geometric mean over %d scenes: machine/draft %.2fx (issue: >= 10), "
+               "machine/balanced %.2fx (issue: >= 3 where the physics allows)\n",
+               n_sc, exp(log_md / n_sc), exp(log_mb / n_sc));
+    fflush(stdout);
+}
+
 /* ---- output files ------------------------------------------------------------ */
 
 static int mkdir_p(const char *path)
@@ -1055,6 +1184,10 @@ int main(int argc, char **argv)
            "accepted step;\n# cpu_s = thread CPU seconds per run (runs < 2 ms repeated, mean); "
            "sweeps stop after a run > %.2g s\n", cap);
 
+    if (getenv("MECHD_BENCH_PRESETS_ONLY")) { /* only the issue-16 presets table */
+        issue_presets_section();
+        return 0;
+    }
     static struct scene scenes[5];
     scenes_make(scenes);
     methods_probe(&scenes[0]);
@@ -1185,6 +1318,7 @@ int main(int argc, char **argv)
     fflush(stdout);
 
     presets_section(scenes, 5);
+    issue_presets_section();
 
     /* Target 2. */
     run_seconds = 60.0;

@@ -244,14 +244,19 @@ struct mech_trajectory_choice {
     const char *method;          /* static */
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
-    char reason[480];            /* why: scene class, scale, tolerance mapping */
+    char reason[640];            /* why: scene class, scale, tolerance mapping */
 };
 
 /* Choose a method and tolerances for p (its method/opt are ignored) so that
  * positions and velocities are accurate to `target` relative (target in
  * [1e-15, 0.1]; use mech_accuracy_preset_at(a)->promise for a preset).
  * Velocity-free conservative scenes (no drag, no Coriolis) get the preset's
- * `method`, others `method_other`. The absolute tolerance is rtol times the
+ * `method`, others `method_other` (draft on a central-gravity run so long that
+ * rk8pd's rtol would fall below 1e-12 gets radau15 instead). rtol is the
+ * preset's, tightened for runs longer than 20 pi dynamical times by
+ * 20 pi / span (squared for rk8pd on central gravity); the reason says when
+ * the target may be below the round-off floor of the run (~1.5e-16 span^1.5).
+ * The absolute tolerance is rtol times the
  * scene's smallest characteristic size of positions and velocities (from r0,
  * v0, the initial acceleration a0 and T = min(t_end, sqrt(|r0| / |a0|)):
  * max(|r0|, |v0| T, |a0| T^2/2) and max(|v0|, |a0| T)), so the choice does not
