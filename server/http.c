@@ -74,7 +74,12 @@
  * the request's own cancel flag when the client has hung up: a running request
  * stops at its next budget check; a request still waiting in the queue is
  * taken out of it at once (srv_pool_remove), so its slot frees, and is
- * answered 503 cancelled and resumed by the watcher itself.
+ * answered 503 cancelled and resumed by the watcher itself. A close and a
+ * half-close (shutdown(SHUT_WR), as `nc -N` and some scripts send after a
+ * whole request) are the same FIN on the wire, so a hang-up counts only once
+ * it has been seen for SRV_HANGUP_GRACE_MS: a cheap request from a
+ * half-closing client is answered (it used to be answered 503 cancelled
+ * whenever it was pooled rather than run inline), a long one is cancelled.
  *
  * SLOW CLIENTS. libmicrohttpd's connection timeout counts idle time only, so a
  * client sending a byte a second is never timed out by it. Every connection
@@ -149,6 +154,7 @@
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
+#define SRV_HANGUP_GRACE_MS 500      /* end-of-file seen this long before a pooled request is cancelled */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
 #define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
@@ -265,6 +271,7 @@ struct srv_req {
      * srv_http_quiesce when the server stops. Written with __atomic stores. */
     volatile int cancel;
     int client_gone;
+    long long eof_since_ms; /* when the watcher first saw end-of-file in a row, 0 if not */
     int fd; /* the connection's socket, -1 if unknown */
     struct srv_http *http;
     struct srv_conn *sc; /* the connection's registration, or NULL */
@@ -513,9 +520,15 @@ static void *watcher_main(void *arg)
         struct srv_req *next;
         for (struct srv_req *r = h->watched; r; r = next) {
             next = r->watch_next;
-            if (r->fd >= 0 && !r->client_gone && peer_closed(r->fd)) {
-                r->client_gone = 1;
-                __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
+            if (r->fd >= 0 && !r->client_gone) {
+                if (!peer_closed(r->fd)) {
+                    r->eof_since_ms = 0;
+                } else if (!r->eof_since_ms) {
+                    r->eof_since_ms = now_ms();
+                } else if (now_ms() - r->eof_since_ms >= SRV_HANGUP_GRACE_MS) {
+                    r->client_gone = 1;
+                    __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
+                }
             }
             /* Not found when a worker has it (it sees client_gone), when it is
              * not submitted yet (tried again next round) or when the pool
