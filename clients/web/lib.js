@@ -402,6 +402,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 4, fill: c}));
     else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
+    if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
     const ly = legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
     if (s.label) add(root, svg('line', {x1: m.l + 8, y1: ly - 5, x2: m.l + 26, y2: ly - 5, stroke: c, 'stroke-width': 3,
       'stroke-dasharray': s.dash || null}), svg('text', {x: m.l + 32, y: ly, fill: c, 'font-size': 15, 'font-weight': 700}, s.label));
