@@ -359,8 +359,15 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   }
   const textW = (s, size = 13) => s.length * size * 0.6; // a generous estimate of a label's width
   // the left margin fits the longest y tick label beside the rotated axis label
+  // on a phone (or when asked) the legend goes under the plot, one row per series, not over the data
+  const below = legend === 'below' || (narrow && series.filter(s => s.label).length > 1);
+  const nLeg = below ? series.filter(s => s.label).length : 0;
+  // a phone's plot is taller for its width (the axis label fits beside it), and the legend rows add to it
+  if (narrow) height = Math.max(height, Math.round(width * 0.75));
+  height += 20 * nLeg;
+  root.setAttribute('viewBox', `0 0 ${width} ${height}`);
   const m = {l: Math.max(narrow ? 50 : 60, 34 + Math.max(...roundTicks(y0, y1, ny, logy).labels.map(s => textW(s)))),
-    r: narrow ? 14 : 30, t: 15, b: 48};
+    r: narrow ? 14 : 30, t: 15, b: 48 + 20 * nLeg};
   if (equal) { // one unit is as long across as up: widen the shorter range about its middle
     const sx = (x1 - x0) / (width - m.l - m.r), sy = (y1 - y0) / (height - m.t - m.b), s = Math.max(sx, sy) * 1.04;
     const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
@@ -386,7 +393,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     svg('line', {x1: m.l, y1: Y(yv), x2: width - m.r, y2: Y(yv), stroke: '#e4e4e4', class: 'grid'}),
     svg('line', {x1: m.l - 5, y1: Y(yv), x2: m.l, y2: Y(yv), stroke: '#666'}),
     svg('text', {x: m.l - 7, y: Y(yv) + 4, 'text-anchor': 'end', 'font-size': 13, class: 'tick-y'}, yt.labels[i])));
-  add(root, svg('text', {x: (m.l + width - m.r) / 2, y: height - 8, 'text-anchor': 'middle', 'font-size': 15},
+  add(root, svg('text', {x: (m.l + width - m.r) / 2, y: height - 8 - 20 * nLeg, 'text-anchor': 'middle', 'font-size': 15},
     withFactor(xlabel, xt.factor)));
   add(root, svg('text', {x: 16, y: (m.t + height - m.b) / 2, 'text-anchor': 'middle', 'font-size': 15,
     transform: `rotate(-90 16 ${(m.t + height - m.b) / 2})`}, withFactor(ylabel, yt.factor)));
@@ -403,11 +410,13 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
     if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
-    const ly = legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
-    if (s.label) add(root, svg('line', {x1: m.l + 8, y1: ly - 5, x2: m.l + 26, y2: ly - 5, stroke: c, 'stroke-width': 3,
-      'stroke-dasharray': s.dash || null}), svg('text', {x: m.l + 32, y: ly, fill: c, 'font-size': 15, 'font-weight': 700}, s.label));
+    const k = series.slice(0, i).filter(q => q.label).length, lx = below ? 12 : m.l + 8;
+    const ly = below ? height - 8 - 20 * (nLeg - 1 - k) : legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
+    if (s.label) add(root, s.dots ? svg('circle', {cx: lx + 9, cy: ly - 5, r: 4, fill: c})
+      : svg('line', {x1: lx, y1: ly - 5, x2: lx + 18, y2: ly - 5, stroke: c, 'stroke-width': 3, 'stroke-dasharray': s.dash || null}),
+      svg('text', {x: lx + 24, y: ly, fill: c, 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
-  for (const mk of marks) add(root, mk({X, Y, tx, ty}));
+  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b}));
   // hover / touch read-out: the nearest sample's values
   const dot = svg('circle', {r: 6, fill: 'none', stroke: '#111', 'stroke-width': 2, visibility: 'hidden'});
   const tip = svg('text', {'font-size': 14, 'font-weight': 700, class: 'readout', visibility: 'hidden'});

@@ -108,7 +108,7 @@ export default {
     V.view.yaw = state.yaw - Math.PI / 2; V.view.pitch = state.pitch;
     const world = new THREE.Group();
     V.scene.add(world);
-    const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.1); };
+    const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
@@ -168,10 +168,11 @@ function drawBody(world, st) {
     if (b.shape === 'box' && Array.isArray(b.size) && b.size.every(pos)) geo = new THREE.BoxGeometry(...b.size);
     else if (b.shape === 'sphere' && pos(b.radius)) geo = new THREE.SphereGeometry(b.radius, 32, 16);
     else if (b.shape === 'cylinder' && pos(b.radius) && pos(b.height)) { geo = new THREE.CylinderGeometry(b.radius, b.radius, b.height, 40); turn = true; }
-    else if (b.shape === 'rod' && pos(b.length)) { geo = new THREE.CylinderGeometry(ext * 0.02, ext * 0.02, b.length, 12); turn = true; }
-    else geo = new THREE.SphereGeometry(ext * 0.05, 16, 8); // a point mass
+    else if (b.shape === 'rod' && pos(b.length)) { geo = new THREE.CylinderGeometry(ext * 0.025, ext * 0.025, b.length, 12); turn = true; }
+    else geo = new THREE.SphereGeometry(ext * 0.07, 16, 8); // a point mass
     const g = new THREE.Group();
-    const mesh = new THREE.Mesh(geo, mat());
+    const solid = b.shape === 'point' || b.shape === 'rod';
+    const mesh = new THREE.Mesh(geo, solid ? new THREE.MeshStandardMaterial({color: 0x495057}) : mat());
     if (turn) mesh.rotation.x = Math.PI / 2; // three.js cylinders run along y; the API's along z
     g.add(mesh);
     if (b.shape === 'box' || b.shape === 'cylinder') {

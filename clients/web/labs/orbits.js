@@ -37,7 +37,7 @@ export default {
     const play = player({label: 'The orbit'});
     add(L.figure, el('h3', {}, 'The orbit'),
       el('div', {class: 'exaggerate'}, el('label', {for: exId}, 'Precession drawn'), exSel, exNote), plot, play.root,
-      el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked ●. With the precession exaggerated, each ',
+      el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked in red. With the precession exaggerated, each ',
         'sample\'s angle φ is drawn as φ (2π + kδ)/(2π + δ), δ the measured advance per orbit: the perihelion then moves kδ ',
         'per orbit while r(φ) is the API\'s.'));
     let last = null;
@@ -55,7 +55,7 @@ export default {
       let XY = null;
       linePlot(plot, [{points: xy, label: k === 1 ? 'orbit' : `orbit, precession ×${exLabel(k)}`},
         {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}],
-        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', marks: [({X, Y}) => {
+        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', marks: [({X, Y}) => {
           XY = [X, Y];
           const g = svg('g', {});
           add(g, svg('circle', {cx: X(0), cy: Y(0), r: 9, fill: '#f59f00'}));

@@ -60,9 +60,10 @@ export default {
         el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
       const d = req.distance > 0 ? req.distance : 0.1, Lx = d * 1.5;
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
-      let Xs = null;
+      let Xs = null, tCur = 0;
       linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ'}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
-        marks: [({X}) => { Xs = X; return cursor; }]});
+        marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
       // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
       world.clear();
       world.add(sceneAxes(Lx * 0.9));
@@ -94,8 +95,7 @@ export default {
         topGroup.quaternion.copy(qz(at(a.phi)).multiply(qx(at(a.theta))).multiply(qz(at(a.psi))));
         trace.geometry.setDrawRange(0, i + 1);
         V.render();
-        if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); cursor.setAttribute('y1', 15);
-          cursor.setAttribute('y2', theta.viewBox.baseVal.height - 48); }
+        tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
       });
     });
     run();
@@ -132,9 +132,10 @@ export default {
         el('dt', {}, 'flips seen'), el('dd', {id: 'dz-seen'}, String(a.flip.sign_changes_seen))]
         : [el('dt', {}, 'flips'), el('dd', {id: 'dz-seen'}, 'none: not spun near the middle axis')]));
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
-      let Xs = null;
+      let Xs = null, tCur = 0;
       if (t.length && om.length) linePlot(dplot, [0, 1, 2].map(k => ({points: t.map((tt, i) => [tt, om[i][k]]), label: `ω${k + 1}`})),
-        {xlabel: 't [s]', ylabel: 'ω (body) [rad/s]', name: 'free-body-omega', marks: [({X}) => { Xs = X; return cursor; }]});
+        {xlabel: 't [s]', ylabel: 'ω (body) [rad/s]', name: 'free-body-omega', marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
       // a box with these principal moments: side² ∝ I_j + I_k − I_i
       const I = a.moments || dm.map(c => val(c.input));
       const side = [0, 1, 2].map(k => Math.sqrt(Math.max(0, I[(k + 1) % 3] + I[(k + 2) % 3] - I[k])));
@@ -155,8 +156,7 @@ export default {
         qa.set(q[i][1], q[i][2], q[i][3], q[i][0]); qb.set(q[j][1], q[j][2], q[j][3], q[j][0]);
         body.quaternion.slerpQuaternions(qa, qb, fr);
         DV.render();
-        if (Xs) { cursor.setAttribute('x1', Xs(tt)); cursor.setAttribute('x2', Xs(tt)); cursor.setAttribute('y1', 15);
-          cursor.setAttribute('y2', dplot.viewBox.baseVal.height - 48); }
+        tCur = tt; if (Xs) { cursor.setAttribute('x1', Xs(tt)); cursor.setAttribute('x2', Xs(tt)); }
       });
     });
     drun();
