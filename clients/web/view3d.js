@@ -9,28 +9,44 @@ import {el, put, plotTools} from './lib.js';
 
 export {THREE};
 
-// view3d(container, {label, extent}) -> {scene, camera, canvas, render(), frame(extent), ok}
+// view3d(container, {label, extent, id}) -> {scene, camera, canvas, view, render(), frame(extent), ok}
 //   container: an element the canvas (4:3, its laid-out width) is put into;
-//   extent: the scene's radius in its units, for the camera distance.
-export function view3d(container, {label = '3-D view', extent = 1, id} = {}) {
-  let renderer;
-  try {
-    renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
-  } catch (e) {
-    put(container, el('p', {class: 'problem'}, 'This 3-D view needs WebGL, which this browser does not offer. ' +
-      'The numbers beside it are unaffected.'));
-    return {ok: false, scene: new THREE.Scene(), camera: new THREE.PerspectiveCamera(), render() {}, frame() {}, canvas: null};
+//   extent: the scene's radius in its units, for the camera distance;
+//   id: the canvas' id (one renderer per id, reused when the lab is mounted again).
+// One WebGL renderer per view id, kept across re-mounts of a lab (a browser
+// allows only a few WebGL contexts at once; a lab is re-mounted on every tab
+// change and example load). Its canvas' listeners act on the view last made.
+const renderers = new Map();
+
+export function view3d(container, {label = '3-D view', extent = 1, id = 'view3d'} = {}) {
+  let entry = renderers.get(id);
+  if (!entry) {
+    let renderer;
+    try {
+      renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+    } catch (e) {
+      put(container, el('p', {class: 'problem'}, 'This 3-D view needs WebGL, which this browser does not offer. ' +
+        'The numbers beside it are unaffected.'));
+      return {ok: false, scene: new THREE.Scene(), camera: new THREE.PerspectiveCamera(), view: {}, render() {}, frame() {}, canvas: null};
+    }
+    entry = {renderer, cur: null};
+    renderers.set(id, entry);
+    renderer.setClearColor(0xffffff, 1);
+    const canvas = renderer.domElement;
+    canvas.className = 'plot view3d';
+    canvas.tabIndex = 0;
+    canvas.id = id;
+    canvas.setAttribute('role', 'img');
+    canvas.dataset.render = '1';
+    listen(canvas, () => entry.cur);
+    // export (lib.js plotTools) asks for a fresh frame before reading the pixels
+    window.addEventListener('mechd:render', (e) => { if (e.detail === canvas && entry.cur) entry.cur.draw(); });
+    if (typeof ResizeObserver === 'function') new ResizeObserver(() => entry.cur && entry.cur.render()).observe(canvas);
   }
-  renderer.setClearColor(0xffffff, 1);
-  const canvas = renderer.domElement;
-  canvas.className = 'plot view3d';
-  canvas.tabIndex = 0;
-  if (id) canvas.id = id;
-  canvas.setAttribute('role', 'img');
+  const {renderer} = entry, canvas = renderer.domElement;
   canvas.setAttribute('aria-label', label + ' (drag, or focus and use the arrow keys, to turn; + and − zoom)');
-  canvas.dataset.render = '1';
   put(container, canvas);
-  plotTools(canvas, {name: id || 'view-3d'});
+  plotTools(canvas, {name: id});
 
   const scene = new THREE.Scene();
   scene.add(new THREE.AmbientLight(0xffffff, 1.1));
@@ -38,7 +54,7 @@ export function view3d(container, {label = '3-D view', extent = 1, id} = {}) {
   const fill = new THREE.DirectionalLight(0xffffff, 0.8); fill.position.set(-4, 3, -2); scene.add(fill);
   const camera = new THREE.PerspectiveCamera(35, 4 / 3, 0.01, 1000);
   camera.up.set(0, 0, 1);
-  const view = {yaw: -0.9, pitch: 0.45, dist: 4 * extent, target: new THREE.Vector3()};
+  const view = {yaw: -0.9, pitch: 0.45, dist: 4 * extent, min: extent, target: new THREE.Vector3()};
   let pending = false;
   const place = () => {
     const c = Math.cos(view.pitch);
@@ -51,22 +67,34 @@ export function view3d(container, {label = '3-D view', extent = 1, id} = {}) {
     const dpr = Math.min(2, window.devicePixelRatio || 1);
     if (canvas.width !== Math.round(w * dpr) || canvas.height !== Math.round(h * dpr)) {
       renderer.setPixelRatio(dpr); renderer.setSize(w, h, false);
-      camera.aspect = w / h; camera.updateProjectionMatrix();
     }
+    camera.aspect = w / h; camera.updateProjectionMatrix();
   };
-  const draw = () => { pending = false; size(); place(); renderer.render(scene, camera); };
-  const render = () => { if (!pending) { pending = true; requestAnimationFrame(draw); } };
-  // export (lib.js plotTools) asks for a fresh frame before reading the pixels
-  window.addEventListener('mechd:render', (e) => { if (e.detail === canvas) draw(); });
-  if (typeof ResizeObserver === 'function') new ResizeObserver(render).observe(canvas);
+  const cur = {
+    view,
+    draw() { pending = false; if (entry.cur !== cur) return; size(); place(); renderer.render(scene, camera); canvas.dataset.yaw = view.yaw.toFixed(3); },
+    render() { if (!pending) { pending = true; requestAnimationFrame(() => cur.draw()); } },
+  };
+  entry.cur = cur;
+  cur.render();
+  return {
+    ok: true, scene, camera, canvas, view, render: cur.render,
+    // aim at a scene of this radius around target
+    frame(extent2, target = [0, 0, 0]) { view.dist = 4 * extent2; view.min = extent2; view.target.set(...target); cur.render(); },
+  };
+}
 
-  // --- controls: pointer (mouse, pen, one finger) turns; two fingers / wheel zoom; keys
+// The controls, attached once per canvas: pointer (mouse, pen, one finger)
+// turns; two fingers or the wheel zoom; arrow keys turn and + / − zoom.
+function listen(canvas, current) {
   const turn = (dyaw, dpitch) => {
-    view.yaw += dyaw; view.pitch = Math.max(-1.5, Math.min(1.5, view.pitch + dpitch));
-    canvas.dataset.yaw = view.yaw.toFixed(3); render();
+    const c = current(); if (!c) return;
+    c.view.yaw += dyaw; c.view.pitch = Math.max(-1.5, Math.min(1.5, c.view.pitch + dpitch)); c.render();
   };
-  const zoom = (k) => { view.dist = Math.max(0.5 * view.min, Math.min(20 * view.min, view.dist * k)); render(); };
-  view.min = view.dist / 4;
+  const zoom = (k) => {
+    const c = current(); if (!c) return;
+    c.view.dist = Math.max(2 * c.view.min, Math.min(20 * c.view.min, c.view.dist * k)); c.render();
+  };
   const pts = new Map();
   let pinch = 0;
   canvas.addEventListener('pointerdown', (e) => { pts.set(e.pointerId, [e.clientX, e.clientY]); canvas.setPointerCapture(e.pointerId); });
@@ -77,7 +105,7 @@ export function view3d(container, {label = '3-D view', extent = 1, id} = {}) {
     pts.set(e.pointerId, [e.clientX, e.clientY]);
     if (pts.size === 2) {
       const [a, b] = [...pts.values()], d = Math.hypot(a[0] - b[0], a[1] - b[1]);
-      if (pinch) zoom(pinch / d);
+      if (pinch && d) zoom(pinch / d);
       pinch = d;
     }
   });
@@ -90,13 +118,6 @@ export function view3d(container, {label = '3-D view', extent = 1, id} = {}) {
     else if (e.key === '+' || e.key === '=') { e.preventDefault(); zoom(1 / 1.15); }
     else if (e.key === '-' || e.key === '_') { e.preventDefault(); zoom(1.15); }
   });
-  canvas.dataset.yaw = view.yaw.toFixed(3);
-  render();
-  return {
-    ok: true, scene, camera, canvas, render, view,
-    // aim at a scene of this radius around target
-    frame(extent2, target = [0, 0, 0]) { view.dist = 4 * extent2; view.min = extent2; view.target.set(...target); render(); },
-  };
 }
 
 // Coloured principal-axis arrows from origin o (arrays), lengths L[k]; returns a Group.

@@ -124,6 +124,8 @@ page.on('console', (m) => {
     consoleErrors.push(m.text());
 });
 page.on('pageerror', (e) => consoleErrors.push(String(e)));
+// too many WebGL contexts (a 3-D view made anew on every visit) is only a warning in the console: count it
+page.on('console', (m) => { if (m.type() === 'warning' && /WebGL context/.test(m.text())) consoleErrors.push(m.text()); });
 
 const value = async (sel) => Number(await page.getAttribute(sel, 'data-value', {timeout: 15000}));
 const state = (form, s) => page.waitForSelector(`${form}[data-state="${s}"]`, {timeout: 20000});
@@ -510,6 +512,15 @@ await lab('tops', async () => {
   const ro = await page.getAttribute('#top-theta-plot', 'data-readout');
   check(/^θ: t = [\d.]+ s, θ = [\d.]+ rad$/.test(ro || ''), `plots: hovering reads out the nearest sample ("${ro}")`);
   check((await blemishes()).length === 0, `tops: a clean page after playing (${(await blemishes()).join(' | ')})`);
+  // back and forth between labs 20 times: the WebGL renderers are reused (a browser allows only ~16 contexts)
+  for (let i = 0; i < 20; i++) {
+    await page.evaluate(() => { location.hash = '#inertia'; }); await page.waitForSelector('main[data-lab="inertia"]');
+    await page.evaluate(() => { location.hash = '#tops'; }); await page.waitForSelector('main[data-lab="tops"]');
+  }
+  await settled(); await frameAfter();
+  const again = await pixels('#dz-view');
+  check(again.ink > 0.02, `3-D: after 20 visits the free body is still drawn (${(again.ink * 100).toFixed(1)} % inked)`);
+  check(!consoleErrors.some(e => /WebGL context/.test(e)), `3-D: no WebGL context lost over 20 visits (${consoleErrors.join(' | ')})`);
 }, 'anim-tops');
 
 await lab('orbits', async () => {

@@ -32,7 +32,7 @@ export default {
     const L = labLayout(main, {title: 'Inertia tensor and principal axes',
       intro: 'Build a rigid body from parts. mechd returns the inertia tensor about the origin you choose, ' +
              'the principal moments and the principal axes, drawn over the body (drag or use the arrow keys to turn it).'});
-    state = state || {req: structuredClone(BUILTIN[0].request), yaw: 0.6, pitch: 0.35, answer: null};
+    state = state || {req: structuredClone(BUILTIN[0].request), answer: null};
     const partsBox = el('div', {id: 'parts'});
     const originSel = field({label: 'Origin', pointer: '/origin', value: Array.isArray(state.req.origin) ? 'point' : 'center_of_mass',
       options: [['center_of_mass', 'centre of mass'], ['point', 'a point']], id: 'inertia-origin'});
@@ -105,7 +105,8 @@ export default {
         ' from the origin of the tensor (lengths ∝ moments); the grey ellipsoid of inertia x·I x = const has semi-axes ∝ 1/√Iₖ ',
         '(longest along the smallest moment; capped at 3× the shortest where a moment is near zero). Drag, or focus it and use the arrow keys, to turn it.'));
     const V = view3d(box3d, {label: 'The body, its principal axes and ellipsoid of inertia in 3-D', id: 'inertia-view'});
-    V.view.yaw = state.yaw - Math.PI / 2; V.view.pitch = state.pitch;
+    if (state.cam) { V.view.yaw = state.cam.yaw; V.view.pitch = state.cam.pitch; } // the view as it was turned
+    state.cam = V.view;
     const world = new THREE.Group();
     V.scene.add(world);
     const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
