@@ -588,6 +588,16 @@ await lab('earth', async () => {
   await page.click('#fou-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
   await page.click('#fou-plot ~ .player [data-role=play]');
   check(await page.getAttribute('#fou-bob', 'cx') !== cx0, 'animation: the Foucault bob swings when played');
+  // the falling object falls when played (from /v1/trajectory's samples), and lands where the scene says
+  await page.waitForSelector('#fall-dot', {timeout: 15000});
+  const cy0 = Number(await page.getAttribute('#fall-dot', 'cy'));
+  await page.click('#fall-path ~ .player [data-role=play]'); await page.waitForTimeout(700);
+  check(Number(await page.getAttribute('#fall-dot', 'cy')) > cy0, 'animation: the falling object falls when played');
+  const [dl] = await Promise.all([page.waitForEvent('download', {timeout: 10000}),
+    page.click('#fall-path + .plot-tools [data-export=csv]')]);
+  const last = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n').filter(l => l.startsWith('with Coriolis')).pop().split(',');
+  close(Number(last[1]) / 100, await value('#fall-east'), 1e-6, 'falling object: the animated path lands where the scene says (east)');
+  check(Math.abs(Number(last[2])) < 1e-9, `falling object: the animated path ends on the ground (z = ${last[2]})`);
 }, 'anim-earth');
 
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram

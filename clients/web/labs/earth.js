@@ -2,7 +2,7 @@
 // (POST /v1/scenes/falling-object, /v1/scenes/cannonball): with Coriolis beside
 // without (where it would land if the Earth did not turn), the deflection
 // magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault).
-import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot} from '../lib.js';
 import {player} from '../anim.js';
 
 const BUILTIN = [
@@ -67,7 +67,47 @@ export default {
         el('dt', {}, 'numerical − first order'), num('fall-diff', a.difference.east, 'm')),
         el('p', {class: 'muted'}, a.first_order.formula || ''));
       drawPlot(fallS.plot, () => planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`));
+      fallPath(a);
     });
+    // the fall itself, animated: the same drop as a trajectory in the Earth's frame (POST /v1/trajectory,
+    // gravity and Coriolis, 121 samples up to the scene's fall time), height against the eastward drift
+    const pathPlot = svg('svg', {class: 'plot', id: 'fall-path', role: 'img', 'aria-label': 'the fall: height against eastward drift'});
+    const pathNote = el('p', {class: 'muted', id: 'fall-path-note'});
+    const pathCurl = curlBox();
+    put(pathCurl.box.querySelector('h3'), 'The animation\'s request');
+    const fallPlay = player({label: 'The falling object'});
+    add(fallS.figure, el('h3', {}, 'The fall'), pathPlot, fallPlay.root, pathNote, pathCurl.box);
+    let pathCtl = null;
+    const fallPath = async (a) => {
+      const h = a.parameters.height, lat = a.parameters.latitude_deg, T = a.numerical.t;
+      const body = {particle: {mass: 1, position: [0, 0, h], velocity: [0, 0, 0]}, frame: {type: 'earth', latitude_deg: lat},
+        forces: [{type: 'uniform_gravity', g: [0, 0, -a.parameters.g]}], fictitious: ['coriolis'], t_end: T, samples: 121,
+        stop: {coordinate: 'z', crosses: 0, direction: 'decreasing'}};
+      pathCurl.update('/v1/trajectory', body);
+      if (pathCtl) pathCtl.abort();
+      const mine = pathCtl = new AbortController();
+      const r = await api('/v1/trajectory', body, {signal: mine.signal});
+      if (mine !== pathCtl || r.aborted) return;
+      if (!r.ok || !r.body || !Array.isArray(r.body.t)) { pathNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
+      const t = r.body.t.slice(), pos = r.body.position.slice();
+      if (r.body.stopped && r.body.stopped.t > t[t.length - 1]) { t.push(r.body.stopped.t); pos.push(r.body.stopped.position); }
+      const pts = pos.map(p => [p[0] * 100, p[2]]);
+      const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
+      let XY = null, cur = pts[0];
+      linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
+        {xlabel: 'east [cm]', ylabel: 'height [m]', name: 'falling-object-path', legend: 'below', marks: [({X, Y}) => {
+          XY = [X, Y]; dot.setAttribute('cx', X(cur[0])); dot.setAttribute('cy', Y(cur[1]));
+          // px per metre across (X counts cm) over px per metre up: how much the drift is magnified
+          const k = Math.abs(X(1) - X(0)) * 100 / Math.abs(Y(1) - Y(0));
+          pathNote.textContent = `East in cm, height in m: the drift (${fmt(pos[pos.length - 1][0] * 100, 4)} cm at the ground) ` +
+            `is drawn ${fmt(Number(k.toPrecision(2)))} times larger than the height's scale.`;
+          return dot; }]});
+      fallPlay.set(t, (i, f) => {
+        const j = Math.min(i + 1, pts.length - 1);
+        cur = [pts[i][0] + (pts[j][0] - pts[i][0]) * f, pts[i][1] + (pts[j][1] - pts[i][1]) * f];
+        if (XY) { dot.setAttribute('cx', XY[0](cur[0])); dot.setAttribute('cy', XY[1](cur[1])); }
+      });
+    };
     // cannonball
     const cs = field({label: 'speed', pointer: '/speed', value: 500, unit: 'm/s', id: 'can-speed'});
     const ce = field({label: 'elevation', pointer: '/elevation_deg', value: 30, unit: '°', id: 'can-elev'});
