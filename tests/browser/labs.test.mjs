@@ -12,7 +12,11 @@
 // can be cancelled; and against a mechd started with --token-file the 401
 // leads to an access-token field that makes the labs work. Screenshots of
 // every lab at 1280×800 and 390×844 go to the directory given (default
-// ./screenshots). Prints "N passed, M failed"; exits non-zero on a failure.
+// ./screenshots). Issue 19: animations play and pause, the time slider moves
+// the time, 3-D views are drawn and turn on drag and keys (and keep their
+// WebGL context over many visits), ticks are round, the orbit has equal
+// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers.
+// Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
 // env:   MECHD_WEB_PROXY=1   serve clients/web (MECHD_WEB_ROOT) from a small
