@@ -279,8 +279,11 @@ export function scale(d0, d1, r0, r1) {
 // element's laid-out width, so that one user unit is one CSS px and a
 // font-size of 13 reads as 13 px on a phone as on a desktop; `max` (the CSS
 // max-width) before layout. Plots keep their aspect ratio: H = W * h / max.
+// In projector mode (larger type) a plot is laid out 4/3 narrower in user
+// units, so its text, lines and marks show 4/3 larger, like the page's text.
 export function plotSize(root, max = 640, h = 400) {
-  const w = Math.round(root.getBoundingClientRect().width);
+  const k = document.body.classList.contains('projector') ? 4 / 3 : 1;
+  const w = Math.round(root.getBoundingClientRect().width / k);
   const W = w > 0 ? Math.max(260, Math.min(max, w)) : max;
   return [W, Math.round(W * h / max)];
 }
@@ -295,10 +298,17 @@ const resizeObs = typeof ResizeObserver === 'function' ? new ResizeObserver((ent
     if (r && w > 0 && Math.abs(w - r.w) >= 8) { r.w = w; r.draw(); }
   }
 }) : null;
+// Plots on the page, drawn again when projector mode changes (app.js fires
+// "mechd:redraw"); those no longer in the document are dropped.
+const livePlots = new Set();
+window.addEventListener('mechd:redraw', () => {
+  for (const root of livePlots) if (!root.isConnected) livePlots.delete(root); else redraws.get(root).draw();
+});
 export function drawPlot(root, draw) {
   draw();
   const prev = redraws.get(root);
   redraws.set(root, {draw, w: prev ? prev.w : Math.round(root.getBoundingClientRect().width)});
+  livePlots.add(root);
   if (!prev && resizeObs) resizeObs.observe(root);
 }
 

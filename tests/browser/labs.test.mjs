@@ -551,6 +551,13 @@ await lab('orbits', async () => {
   await page.click('#orb-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
   await page.click('#orb-plot ~ .player [data-role=play]');
   check(await page.getAttribute('#orb-planet', 'cx') !== cx0, 'animation: Mercury moves along its orbit when played');
+  // projector mode: the plot's text grows with the page's (4/3), redrawn at once
+  const tickPx = () => page.$eval('#orb-plot text.tick-x', (t) => parseFloat(getComputedStyle(t).fontSize) * t.getScreenCTM().a);
+  const before = await tickPx();
+  await page.check('#projector');
+  const big = await tickPx();
+  await page.uncheck('#projector');
+  check(big >= before * 1.3 && big >= 17, `projector mode: plot ticks grow with the page (${before.toFixed(1)} px -> ${big.toFixed(1)} px)`);
 }, 'anim-orbits');
 
 await lab('accuracy', async () => {
