@@ -31,6 +31,7 @@ document.body.classList.toggle('projector', proj.checked);
 proj.addEventListener('change', () => {
   document.body.classList.toggle('projector', proj.checked);
   localStorage.setItem('mechd-projector', proj.checked ? '1' : '0');
+  window.dispatchEvent(new CustomEvent('mechd:redraw')); // plots redraw their text at the new size
 });
 
 // --- access token ------------------------------------------------------------

@@ -5,6 +5,9 @@
 // curl command, the notes' worked examples, and small SVG plotting sized to the
 // element so plot text reads at its nominal px size on a phone.
 
+import './vendor/d3-7.9.0/d3.min.js'; // d3 (UMD) sets globalThis.d3: ticks, nice, formats
+const d3 = globalThis.d3;
+
 export const SVGNS = 'http://www.w3.org/2000/svg';
 
 // The nodes for a list of children: arrays flattened; null, undefined and false
@@ -276,8 +279,11 @@ export function scale(d0, d1, r0, r1) {
 // element's laid-out width, so that one user unit is one CSS px and a
 // font-size of 13 reads as 13 px on a phone as on a desktop; `max` (the CSS
 // max-width) before layout. Plots keep their aspect ratio: H = W * h / max.
+// In projector mode (larger type) a plot is laid out 4/3 narrower in user
+// units, so its text, lines and marks show 4/3 larger, like the page's text.
 export function plotSize(root, max = 640, h = 400) {
-  const w = Math.round(root.getBoundingClientRect().width);
+  const k = document.body.classList.contains('projector') ? 4 / 3 : 1;
+  const w = Math.round(root.getBoundingClientRect().width / k);
   const W = w > 0 ? Math.max(260, Math.min(max, w)) : max;
   return [W, Math.round(W * h / max)];
 }
@@ -292,48 +298,88 @@ const resizeObs = typeof ResizeObserver === 'function' ? new ResizeObserver((ent
     if (r && w > 0 && Math.abs(w - r.w) >= 8) { r.w = w; r.draw(); }
   }
 }) : null;
+// Plots on the page, drawn again when projector mode changes (app.js fires
+// "mechd:redraw"); those no longer in the document are dropped.
+const livePlots = new Set();
+window.addEventListener('mechd:redraw', () => {
+  for (const root of livePlots) if (!root.isConnected) livePlots.delete(root); else redraws.get(root).draw();
+});
 export function drawPlot(root, draw) {
   draw();
   const prev = redraws.get(root);
   redraws.set(root, {draw, w: prev ? prev.w : Math.round(root.getBoundingClientRect().width)});
+  livePlots.add(root);
   if (!prev && resizeObs) resizeObs.observe(root);
 }
 
 // A simple x-y line plot into an <svg class="plot">: series = [{points: [[x,y]], cls, label}];
 // the labels are listed in the top (legend: 'top') or bottom ('bottom') left corner.
+// Ticks at round numbers (d3's 1-2-5 steps; an axis of large or small numbers
+// says "×10ⁿ" once in its label instead of on every tick), log axes at whole
+// decades labelled 10ⁿ, equal aspect on request (space drawn as space), a hover
+// (and touch) read-out of the nearest sample, and PNG/SVG/CSV export under it.
 export function linePlot(root, series, opts = {}) {
   drawPlot(root, () => linePlotNow(root, series, opts));
+  plotTools(root, {name: opts.name || root.id || 'plot', csv: () => seriesCsv(series, opts)});
 }
+const SUP = {'-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹'};
+export const pow10 = (k) => '10' + String(k).split('').map(c => SUP[c]).join('');
+// Round ticks over [a, b] (about n of them) and their labels. A log axis (a, b
+// in decades) gets whole decades, thinned to about n, labelled 10ⁿ; a linear
+// axis d3's 1-2-5 ticks; when they are all large (≥ 10⁴) or small (< 10⁻²) they
+// are divided by a common 10ᵉ, which the axis label then states once.
+export function roundTicks(a, b, n, log, exp) {
+  if (log) {
+    const k0 = Math.ceil(a - 1e-9), k1 = Math.floor(b + 1e-9);
+    if (k1 - k0 >= 1) {
+      const step = Math.max(1, Math.ceil((k1 - k0) / n)), out = [];
+      for (let k = k0; k <= k1; k += step) out.push(k);
+      return {ticks: out, labels: out.map(pow10), factor: ''};
+    }
+    // less than two decades: 1-2-5 values in linear space, placed at their logs
+    const v = d3.ticks(10 ** a, 10 ** b, n), f = d3.format('~r');
+    return {ticks: v.map(Math.log10), labels: v.map(x => f(Number(x.toPrecision(6)))), factor: ''};
+  }
+  const v = d3.ticks(a, b, n);
+  const big = Math.max(...v.map(Math.abs));
+  const e = exp !== undefined ? exp : big >= 1e4 || (big > 0 && big < 1e-2) ? Math.floor(Math.log10(big)) : 0;
+  const step = v.length > 1 ? (v[1] - v[0]) / 10 ** e : 1;
+  const f = d3.format('.' + d3.precisionFixed(step) + 'f');
+  return {ticks: v, labels: v.map(x => f(x / 10 ** e).replace('-', '−')), factor: e ? '×' + pow10(e) : ''};
+}
+// The axis label with its common factor: "x [m]" + "×10¹⁰" -> "x [×10¹⁰ m]".
+const withFactor = (label, factor) => !factor ? label
+  : /\[.*\]$/.test(label) ? label.replace(/\[(.*)\]$/, `[${factor} $1]`) : `${label} [${factor}]`;
+
 function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy = false,
-                                    width = 640, height = 400, equal = false, legend = 'top'} = {}) {
+                                    width = 640, height = 400, equal = false, legend = 'top', marks = []} = {}) {
   [width, height] = plotSize(root, width, height);
   put(root);
   root.setAttribute('viewBox', `0 0 ${width} ${height}`);
   const tx = logx ? Math.log10 : (v) => v, ty = logy ? Math.log10 : (v) => v;
   const pts = series.flatMap(s => s.points).filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
   if (!pts.length) return;
-  let [x0, x1] = [Math.min(...pts.map(p => tx(p[0]))), Math.max(...pts.map(p => tx(p[0])))];
-  let [y0, y1] = [Math.min(...pts.map(p => ty(p[1]))), Math.max(...pts.map(p => ty(p[1])))];
+  let [x0, x1] = d3.extent(pts, p => tx(p[0])), [y0, y1] = d3.extent(pts, p => ty(p[1]));
   if (x0 === x1) { x0 -= 1; x1 += 1; }
   if (y0 === y1) { y0 -= 1; y1 += 1; }
-  const narrow = width < 480;
-  // ticks: on a log axis whole decades when the range holds two or more, else n + 1 evenly spaced values
-  const ticks = (a, b, n, log) => {
-    const k0 = Math.ceil(a - 1e-9), k1 = Math.floor(b + 1e-9);
-    if (log && k1 - k0 >= 1) {
-      const step = Math.ceil((k1 - k0 + 1) / (n + 1)), out = [];
-      for (let k = k0; k <= k1; k += step) out.push(k);
-      return out;
-    }
-    return Array.from({length: n + 1}, (_, i) => { const v = a + (b - a) * i / n; return Math.abs(v) < 1e-6 * (b - a) ? 0 : v; });
-  };
-  const label = (v, log) => (log ? (Number.isInteger(v) ? '1e' + v : '1e' + v.toFixed(1)) : fmt(v, 3));
+  const narrow = width < 480, nx = narrow ? 4 : 6, ny = 5;
+  if (!equal) { // frame ends on round values (whole decades on a log axis)
+    if (logx) { x0 = Math.floor(x0); x1 = Math.ceil(x1); } else [x0, x1] = d3.nice(x0, x1, nx);
+    if (logy) { y0 = Math.floor(y0); y1 = Math.ceil(y1); } else [y0, y1] = d3.nice(y0, y1, ny);
+  }
   const textW = (s, size = 13) => s.length * size * 0.6; // a generous estimate of a label's width
   // the left margin fits the longest y tick label beside the rotated axis label
-  const yLabels0 = ticks(y0, y1, 4, logy).map(v => label(v, logy));
-  const m = {l: Math.max(narrow ? 56 : 70, 34 + Math.max(...yLabels0.map(s => textW(s)))), r: narrow ? 16 : 38, t: 15, b: 45};
-  if (equal) {
-    const sx = (x1 - x0) / (width - m.l - m.r), sy = (y1 - y0) / (height - m.t - m.b), s = Math.max(sx, sy);
+  // on a phone (or when asked) the legend goes under the plot, one row per series, not over the data
+  const below = legend === 'below' || (narrow && series.filter(s => s.label).length > 1);
+  const nLeg = below ? series.filter(s => s.label).length : 0;
+  // a phone's plot is taller for its width (the axis label fits beside it), and the legend rows add to it
+  if (narrow) height = Math.max(height, Math.round(width * 0.75));
+  height += 20 * nLeg;
+  root.setAttribute('viewBox', `0 0 ${width} ${height}`);
+  const m = {l: Math.max(narrow ? 50 : 60, 34 + Math.max(...roundTicks(y0, y1, ny, logy).labels.map(s => textW(s)))),
+    r: narrow ? 14 : 30, t: 15, b: 48 + 20 * nLeg};
+  if (equal) { // one unit is as long across as up: widen the shorter range about its middle
+    const sx = (x1 - x0) / (width - m.l - m.r), sy = (y1 - y0) / (height - m.t - m.b), s = Math.max(sx, sy) * 1.04;
     const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
     x0 = cx - s * (width - m.l - m.r) / 2; x1 = cx + s * (width - m.l - m.r) / 2;
     y0 = cy - s * (height - m.t - m.b) / 2; y1 = cy + s * (height - m.t - m.b) / 2;
@@ -341,29 +387,130 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   const X = scale(x0, x1, m.l, width - m.r), Y = scale(y0, y1, height - m.b, m.t);
   add(root, svg('rect', {x: m.l, y: m.t, width: width - m.l - m.r, height: height - m.t - m.b,
     fill: 'none', stroke: '#888'}));
-  for (const xv of ticks(x0, x1, narrow ? 2 : 4, logx)) { // centred under its tick, but kept inside the picture
-    const s = label(xv, logx), half = textW(s) / 2;
-    add(root, svg('line', {x1: X(xv), y1: height - m.b, x2: X(xv), y2: height - m.b + 4, stroke: '#888'}),
-      svg('text', {x: Math.max(half + 2, Math.min(width - half - 2, X(xv))), y: height - m.b + 18, 'text-anchor': 'middle',
-        'font-size': 13}, s));
+  let xt = roundTicks(x0, x1, nx, logx), yt = roundTicks(y0, y1, ny, logy);
+  if (equal && xt.factor !== yt.factor) { // space drawn as space: one power of ten on both axes
+    const big = Math.max(...[x0, x1, y0, y1].map(Math.abs)), e = big >= 1e4 || big < 1e-2 ? Math.floor(Math.log10(big)) : 0;
+    xt = roundTicks(x0, x1, nx, logx, e); yt = roundTicks(y0, y1, ny, logy, e);
   }
-  for (const yv of ticks(y0, y1, 4, logy))
-    add(root, svg('line', {x1: m.l - 4, y1: Y(yv), x2: m.l, y2: Y(yv), stroke: '#888'}),
-      svg('text', {x: m.l - 6, y: Y(yv) + 4, 'text-anchor': 'end', 'font-size': 13}, label(yv, logy)));
-  add(root, svg('text', {x: (m.l + width - m.r) / 2, y: height - 6, 'text-anchor': 'middle', 'font-size': 15}, xlabel));
+  xt.ticks.forEach((xv, i) => { // centred under its tick, but kept inside the picture
+    const s = xt.labels[i], half = textW(s) / 2;
+    add(root, svg('line', {x1: X(xv), y1: m.t, x2: X(xv), y2: height - m.b, stroke: '#e4e4e4', class: 'grid'}),
+      svg('line', {x1: X(xv), y1: height - m.b, x2: X(xv), y2: height - m.b + 5, stroke: '#666'}),
+      svg('text', {x: Math.max(half + 2, Math.min(width - half - 2, X(xv))), y: height - m.b + 19, 'text-anchor': 'middle',
+        'font-size': 13, class: 'tick-x'}, s));
+  });
+  yt.ticks.forEach((yv, i) => add(root,
+    svg('line', {x1: m.l, y1: Y(yv), x2: width - m.r, y2: Y(yv), stroke: '#e4e4e4', class: 'grid'}),
+    svg('line', {x1: m.l - 5, y1: Y(yv), x2: m.l, y2: Y(yv), stroke: '#666'}),
+    svg('text', {x: m.l - 7, y: Y(yv) + 4, 'text-anchor': 'end', 'font-size': 13, class: 'tick-y'}, yt.labels[i])));
+  add(root, svg('text', {x: (m.l + width - m.r) / 2, y: height - 8 - 20 * nLeg, 'text-anchor': 'middle', 'font-size': 15},
+    withFactor(xlabel, xt.factor)));
   add(root, svg('text', {x: 16, y: (m.t + height - m.b) / 2, 'text-anchor': 'middle', 'font-size': 15,
-    transform: `rotate(-90 16 ${(m.t + height - m.b) / 2})`}, ylabel));
+    transform: `rotate(-90 16 ${(m.t + height - m.b) / 2})`}, withFactor(ylabel, yt.factor)));
   const colors = ['#c92a2a', '#2b8a3e', '#1864ab', '#e67700', '#862e9c', '#495057'];
+  const hover = []; // [px, py, x, y, series label, colour] of every drawn sample
+  const data = svg('g', {class: 'data'});
+  add(root, data);
   series.forEach((s, i) => {
     const c = s.color || colors[i % colors.length];
-    const p = s.points.filter(q => isFinite(tx(q[0])) && isFinite(ty(q[1])))
-      .map(q => `${X(tx(q[0])).toFixed(2)},${Y(ty(q[1])).toFixed(2)}`);
-    if (s.dots) for (const q of p) { const [a, b] = q.split(','); add(root, svg('circle', {cx: a, cy: b, r: 4, fill: c})); }
-    else add(root, svg('polyline', {points: p.join(' '), fill: 'none', stroke: c, 'stroke-width': 2.5}));
-    const ly = legend === 'bottom' ? height - m.b - 8 - 18 * (series.length - 1 - i) : m.t + 18 + 18 * i;
-    if (s.label) add(root, svg('text', {x: m.l + 8, y: ly, fill: c, 'font-size': 15,
-      'font-weight': 700}, s.label));
+    const q = s.points.filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
+    const p = q.map(r => [X(tx(r[0])), Y(ty(r[1]))]);
+    p.forEach((r, k) => hover.push([r[0], r[1], q[k][0], q[k][1], s.label || '', c]));
+    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 4, fill: c}));
+    else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
+      'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
+    if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
+    const k = series.slice(0, i).filter(q => q.label).length, lx = below ? 12 : m.l + 8;
+    const ly = below ? height - 8 - 20 * (nLeg - 1 - k) : legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
+    if (s.label) add(root, s.dots ? svg('circle', {cx: lx + 9, cy: ly - 5, r: 4, fill: c})
+      : svg('line', {x1: lx, y1: ly - 5, x2: lx + 18, y2: ly - 5, stroke: c, 'stroke-width': 3, 'stroke-dasharray': s.dash || null}),
+      svg('text', {x: lx + 24, y: ly, fill: c, 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
+  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b}));
+  // hover / touch read-out: the nearest sample's values
+  const dot = svg('circle', {r: 6, fill: 'none', stroke: '#111', 'stroke-width': 2, visibility: 'hidden'});
+  const tip = svg('text', {'font-size': 14, 'font-weight': 700, class: 'readout', visibility: 'hidden'});
+  add(root, dot, tip);
+  const xname = xlabel.replace(/\s*\[.*\]$/, ''), yname = ylabel.replace(/\s*\[.*\]$/, '');
+  const unit = (l) => { const u = /\[(.*)\]$/.exec(l); return u ? ' ' + u[1] : ''; };
+  root.onpointermove = (e) => {
+    const r = root.getBoundingClientRect(), k = width / (r.width || width);
+    const px = (e.clientX - r.left) * k, py = (e.clientY - r.top) * k;
+    let best = null, bd = Infinity;
+    for (const h of hover) { const d = (h[0] - px) ** 2 + (h[1] - py) ** 2; if (d < bd) { bd = d; best = h; } }
+    if (!best || bd > 60 * 60) { root.onpointerleave(); return; }
+    dot.setAttribute('cx', best[0]); dot.setAttribute('cy', best[1]); dot.setAttribute('stroke', best[5]);
+    dot.setAttribute('visibility', 'visible');
+    tip.textContent = `${best[4] ? best[4] + ': ' : ''}${xname} = ${fmt(best[2], 4)}${unit(xlabel)}, ${yname} = ${fmt(best[3], 4)}${unit(ylabel)}`;
+    const w = textW(tip.textContent, 14), left = best[0] + 10 + w < width - 4;
+    tip.setAttribute('x', left ? best[0] + 10 : Math.max(4, best[0] - 10 - w));
+    tip.setAttribute('y', Math.max(m.t + 16, best[1] - 10));
+    tip.setAttribute('visibility', 'visible');
+    root.dataset.readout = tip.textContent;
+  };
+  root.onpointerleave = () => { dot.setAttribute('visibility', 'hidden'); tip.setAttribute('visibility', 'hidden'); };
+}
+
+// The data of a line plot as CSV: one block per series ("series,x,y" rows),
+// numbers as the API gave them (full precision).
+function seriesCsv(series, {xlabel = 'x', ylabel = 'y'} = {}) {
+  const q = (s) => /[",\n]/.test(s) ? '"' + s.replace(/"/g, '""') + '"' : s;
+  const rows = [['series', xlabel, ylabel].map(q).join(',')];
+  series.forEach((s, i) => { for (const p of s.points) rows.push([q(s.label || 'series ' + (i + 1)), String(p[0]), String(p[1])].join(',')); });
+  return rows.join('\n') + '\n';
+}
+
+// Save a Blob under a file name (an <a download> click; no popup, no server).
+function save(blob, name) {
+  const a = el('a', {href: URL.createObjectURL(blob), download: name});
+  document.body.appendChild(a); a.click(); a.remove();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+// The SVG as a stand-alone file: the page's text style inlined as attributes.
+function svgText(root) {
+  const c = root.cloneNode(true);
+  c.setAttribute('xmlns', SVGNS);
+  const [, , w, h] = (root.getAttribute('viewBox') || '0 0 640 400').split(' ').map(Number);
+  c.setAttribute('width', w); c.setAttribute('height', h);
+  for (const t of c.querySelectorAll('text')) {
+    t.setAttribute('font-family', 'system-ui, sans-serif');
+    t.setAttribute('paint-order', 'stroke'); t.setAttribute('stroke', '#fff'); t.setAttribute('stroke-width', '3');
+  }
+  for (const t of c.querySelectorAll('[visibility=hidden]')) t.remove();
+  c.insertBefore(svg('rect', {width: '100%', height: '100%', fill: '#fff'}), c.firstChild);
+  return new XMLSerializer().serializeToString(c);
+}
+// A PNG of an <svg> (drawn at twice its size) or of a <canvas>.
+async function pngOf(root) {
+  if (root instanceof HTMLCanvasElement) {
+    if (root.dataset.render) window.dispatchEvent(new CustomEvent('mechd:render', {detail: root}));
+    return new Promise(r => root.toBlob(r, 'image/png'));
+  }
+  const src = 'data:image/svg+xml;base64,' + btoa(unescape(encodeURIComponent(svgText(root))));
+  const img = new Image(); img.src = src; await img.decode();
+  const cv = document.createElement('canvas'); cv.width = img.width * 2; cv.height = img.height * 2;
+  const g = cv.getContext('2d'); g.scale(2, 2); g.drawImage(img, 0, 0);
+  return new Promise(r => cv.toBlob(r, 'image/png'));
+}
+// The export buttons under a figure (once per figure): PNG, SVG (an <svg>
+// only) and, when csv() gives the data, CSV.
+export function plotTools(root, {name = 'plot', csv} = {}) {
+  let bar = root.nextElementSibling;
+  if (bar && bar.dataset.role === 'plot-tools') {
+    bar._csv = csv; bar.querySelector('[data-export=csv]').hidden = !csv; return bar;
+  }
+  const label = root.getAttribute('aria-label') || name;
+  bar = el('div', {class: 'plot-tools', 'data-role': 'plot-tools', role: 'group', 'aria-label': 'Export ' + label},
+    el('span', {class: 'muted'}, 'Export:'),
+    el('button', {type: 'button', class: 'secondary small-btn', 'data-export': 'png', 'aria-label': `Save ${label} as PNG`,
+      onclick: async () => save(await pngOf(root), name + '.png')}, 'PNG'),
+    root instanceof SVGElement ? el('button', {type: 'button', class: 'secondary small-btn', 'data-export': 'svg',
+      'aria-label': `Save ${label} as SVG`, onclick: () => save(new Blob([svgText(root)], {type: 'image/svg+xml'}), name + '.svg')}, 'SVG') : null,
+    el('button', {type: 'button', class: 'secondary small-btn', 'data-export': 'csv', 'aria-label': `Save the data of ${label} as CSV`,
+      hidden: !csv, onclick: () => { if (bar._csv) save(new Blob([bar._csv()], {type: 'text/csv'}), name + '.csv'); }}, 'CSV'));
+  bar._csv = csv;
+  root.after(bar);
+  return bar;
 }
 
 // A section of a lab: a form, the problem box under it, the curl box; results

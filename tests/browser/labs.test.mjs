@@ -12,7 +12,11 @@
 // can be cancelled; and against a mechd started with --token-file the 401
 // leads to an access-token field that makes the labs work. Screenshots of
 // every lab at 1280×800 and 390×844 go to the directory given (default
-// ./screenshots). Prints "N passed, M failed"; exits non-zero on a failure.
+// ./screenshots). Issue 19: animations play and pause, the time slider moves
+// the time, 3-D views are drawn and turn on drag and keys (and keep their
+// WebGL context over many visits), ticks are round, the orbit has equal
+// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers.
+// Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
 // env:   MECHD_WEB_PROXY=1   serve clients/web (MECHD_WEB_ROOT) from a small
@@ -124,6 +128,8 @@ page.on('console', (m) => {
     consoleErrors.push(m.text());
 });
 page.on('pageerror', (e) => consoleErrors.push(String(e)));
+// too many WebGL contexts (a 3-D view made anew on every visit) is only a warning in the console: count it
+page.on('console', (m) => { if (m.type() === 'warning' && /WebGL context/.test(m.text())) consoleErrors.push(m.text()); });
 
 const value = async (sel) => Number(await page.getAttribute(sel, 'data-value', {timeout: 15000}));
 const state = (form, s) => page.waitForSelector(`${form}[data-state="${s}"]`, {timeout: 20000});
@@ -417,6 +423,194 @@ await lab('accuracy', async () => {
   } finally { small.proc.kill(); }
 }
 
+// --- issue 19: motion you can watch, 3-D you can turn, plots that read -----------
+// A 3-D canvas' pixels: how many are not the white background, and a digest
+// to tell two frames apart (WebGL with preserveDrawingBuffer: readable).
+const pixels = (sel) => page.$eval(sel, (c) => {
+  const g = document.createElement('canvas'); g.width = c.width; g.height = c.height;
+  const x = g.getContext('2d'); x.drawImage(c, 0, 0);
+  const d = x.getImageData(0, 0, g.width, g.height).data;
+  let ink = 0, h = 0;
+  for (let i = 0; i < d.length; i += 4) {
+    if (d[i] < 235 || d[i + 1] < 235 || d[i + 2] < 235) ink++;
+    h = (h * 31 + d[i] + 7 * d[i + 1] + 13 * d[i + 2]) % 1000000007;
+  }
+  return {ink: ink / (d.length / 4), h, w: g.width};
+});
+const frameAfter = () => page.evaluate(() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(r))));
+// Are these tick labels round numbers, evenly spaced by 1, 2 or 5 × 10^k?
+function roundTicks(labels) {
+  const v = labels.map(s => Number(s.replace('−', '-')));
+  if (v.length < 2 || v.some(x => !Number.isFinite(x))) return false;
+  const step = v[1] - v[0], e = Math.floor(Math.log10(Math.abs(step))), m = Math.abs(step) / 10 ** e;
+  return [1, 2, 5, 10].some(k => Math.abs(m - k) < 1e-9) &&
+    v.every((x, i) => i === 0 || Math.abs(x - v[i - 1] - step) < 1e-9 * Math.abs(step) * 10) &&
+    v.every(x => Math.abs(x / step - Math.round(x / step)) < 1e-6);
+}
+const tickLabels = (plot, axis) => page.$$eval(`${plot} text.tick-${axis}`, (ts) => ts.map(t => t.textContent));
+
+await lab('tops', async () => {
+  await settled();
+  // the animation: Play advances the time shown, Pause stops it
+  const player = '#top-3d-box ~ .player';
+  const time = async () => Number(await page.getAttribute(player, 'data-time'));
+  check(await page.$(player + ' [data-role=play]') !== null, 'animation: the top has a Play button');
+  const t0 = await time();
+  const before = await pixels('#top-view');
+  await page.click(player + ' [data-role=play]');
+  await page.waitForTimeout(700);
+  const t1 = await time();
+  check(t1 > t0, `animation: Play advances the top's time (${t0} -> ${t1})`);
+  await page.click(player + ' [data-role=play]');
+  check(await page.getAttribute(player, 'data-playing') === 'false', 'animation: Pause stops it');
+  const t2 = await time(); await page.waitForTimeout(500);
+  check(await time() === t2, `animation: paused, the time stays (${t2} -> ${await time()})`);
+  await frameAfter();
+  check((await pixels('#top-view')).h !== before.h, 'animation: the top in 3-D moved while playing');
+  // the slider moves the time: End goes to the last sample (t_end = 2 s), Home back to 0
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('End');
+  close(await time(), 2, 1e-12, 'animation: the time slider\'s End shows t = t_end');
+  check((await page.textContent(player + ' [data-role=now]')).includes('t = 2 s'), 'animation: the time is written beside the slider');
+  await page.keyboard.press('Home');
+  check(await time() === 0, 'animation: Home goes back to t = 0');
+  // 3-D: non-blank, turns on drag and on the arrow keys
+  const p0 = await pixels('#top-view');
+  check(p0.ink > 0.02, `3-D: the top's canvas shows something (${(p0.ink * 100).toFixed(1)} % inked)`);
+  const box = await page.$eval('#top-view', (c) => { const r = c.getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; });
+  const yaw0 = await page.getAttribute('#top-view', 'data-yaw');
+  await page.mouse.move(box[0] + box[2] / 2, box[1] + box[3] / 2); await page.mouse.down();
+  await page.mouse.move(box[0] + box[2] / 2 + 120, box[1] + box[3] / 2 + 20, {steps: 6}); await page.mouse.up();
+  await frameAfter();
+  const p1 = await pixels('#top-view');
+  check(await page.getAttribute('#top-view', 'data-yaw') !== yaw0 && p1.h !== p0.h, '3-D: dragging turns the view of the top');
+  await page.focus('#top-view'); await page.keyboard.press('ArrowRight'); await frameAfter();
+  check((await pixels('#top-view')).h !== p1.h, '3-D: the arrow keys turn the view of the top');
+  // the free body in 3-D, animated from the attitude quaternions
+  const d0 = await pixels('#dz-view');
+  check(d0.ink > 0.02, `3-D: the free body's canvas shows something (${(d0.ink * 100).toFixed(1)} % inked)`);
+  await page.focus('#dz-3d-box ~ .player [data-role=time]'); await page.keyboard.press('End'); await frameAfter();
+  check((await pixels('#dz-view')).h !== d0.h, '3-D: the free body turns when the time slider moves');
+  // plots that read: round ticks with units; export of the data as CSV holds the API's numbers
+  const xt = await tickLabels('#top-theta-plot', 'x'), yt = await tickLabels('#top-theta-plot', 'y');
+  check(roundTicks(xt) && roundTicks(yt), `plots: θ(t) ticks are round numbers (x: ${xt.join(' ')}; y: ${yt.join(' ')})`);
+  const axis = await page.$$eval('#top-theta-plot text', (ts) => ts.map(t => t.textContent));
+  check(axis.includes('t [s]') && axis.includes('θ [rad]'), 'plots: the axes carry their units');
+  const [dl] = await Promise.all([page.waitForEvent('download', {timeout: 10000}),
+    page.click('#top-theta-plot + .plot-tools [data-export=csv]')]);
+  const csv = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n');
+  const req = {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, phi_dot: 0, psi_dot: 60, t_end: 2, samples: 801};
+  const api = await (await fetch(base + '/v1/rigid/top', {method: 'POST', headers: {'Content-Type': 'application/json'},
+    body: JSON.stringify(req)})).json();
+  const rows = csv.slice(1).map(l => l.split(','));
+  check(csv[0] === 'series,t [s],θ [rad]' && rows.length === api.t.length &&
+    rows.every((r, i) => Number(r[1]) === api.t[i] && Number(r[2]) === api.theta[i]),
+    `export: the θ(t) CSV holds the API's ${api.t.length} samples exactly (${csv.length - 1} rows; ${csv.slice(0, 2).join(' | ')})`);
+  const [png] = await Promise.all([page.waitForEvent('download', {timeout: 10000}),
+    page.click('#top-theta-plot + .plot-tools [data-export=png]')]);
+  const head = fs.readFileSync(await png.path()).subarray(0, 8);
+  check(head.toString('latin1', 1, 4) === 'PNG', 'export: PNG of the θ(t) plot is a PNG file');
+  // hover read-out
+  const pb = await page.$eval('#top-theta-plot', (c) => { const r = c.getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; });
+  await page.mouse.move(pb[0] + pb[2] * 0.5, pb[1] + pb[3] * 0.5);
+  await page.mouse.move(pb[0] + pb[2] * 0.52, pb[1] + pb[3] * 0.3, {steps: 3});
+  const ro = await page.getAttribute('#top-theta-plot', 'data-readout');
+  check(/^θ: t = [\d.]+ s, θ = [\d.]+ rad$/.test(ro || ''), `plots: hovering reads out the nearest sample ("${ro}")`);
+  check((await blemishes()).length === 0, `tops: a clean page after playing (${(await blemishes()).join(' | ')})`);
+  // back and forth between labs 20 times: the WebGL renderers are reused (a browser allows only ~16 contexts)
+  for (let i = 0; i < 20; i++) {
+    await page.evaluate(() => { location.hash = '#inertia'; }); await page.waitForSelector('main[data-lab="inertia"]');
+    await page.evaluate(() => { location.hash = '#tops'; }); await page.waitForSelector('main[data-lab="tops"]');
+  }
+  await settled(); await frameAfter();
+  const again = await pixels('#dz-view');
+  check(again.ink > 0.02, `3-D: after 20 visits the free body is still drawn (${(again.ink * 100).toFixed(1)} % inked)`);
+  check(!consoleErrors.some(e => /WebGL context/.test(e)), `3-D: no WebGL context lost over 20 visits (${consoleErrors.join(' | ')})`);
+}, 'anim-tops');
+
+await lab('orbits', async () => {
+  await settled();
+  // equal aspect: one metre across is one metre up, and both axes share their power of ten
+  const aspect = await page.$eval('#orb-plot', (svg) => {
+    const num = (t) => Number(t.textContent.replace('−', '-'));
+    const xs = [...svg.querySelectorAll('text.tick-x')], ys = [...svg.querySelectorAll('text.tick-y')];
+    const kx = (Number(xs[1].getAttribute('x')) - Number(xs[0].getAttribute('x'))) / (num(xs[1]) - num(xs[0]));
+    const ky = (Number(ys[0].getAttribute('y')) - Number(ys[1].getAttribute('y'))) / (num(ys[1]) - num(ys[0]));
+    return [kx, ky, [...svg.querySelectorAll('text')].map(t => t.textContent).filter(t => /\[/.test(t))];
+  });
+  check(Math.abs(aspect[0] / aspect[1] - 1) < 0.02, `plots: the orbit is drawn with equal aspect (px per unit ${aspect[0].toFixed(3)} across, ${aspect[1].toFixed(3)} up)`);
+  check(aspect[2].length === 2 && aspect[2][0].replace(/^x/, '') === aspect[2][1].replace(/^y/, '') && /×10/.test(aspect[2][0]),
+    `plots: both orbit axes say the same power of ten once (${aspect[2].join(', ')})`);
+  check(roundTicks(await tickLabels('#orb-plot', 'x')) && roundTicks(await tickLabels('#orb-plot', 'y')), 'plots: the orbit\'s ticks are round numbers');
+  // the precession made visible: the exaggeration says by how much, and ×1 is offered
+  const opts = await page.$$eval('#orb-exaggerate option', (o) => o.map(x => x.textContent));
+  check(opts.some(o => /×1\)/.test(o)) && opts.some(o => /^×10[⁰-⁹]+$/.test(o)), `orbit: exaggeration choices say the factor (${opts.join(', ')})`);
+  const note = await page.textContent('#orb-ex-note');
+  check(/real advance 0\.10\d″ per orbit, drawn \d/.test(note), `orbit: the real advance and the drawn angle are written ("${note}")`);
+  // the planet moves when played
+  const cx0 = await page.getAttribute('#orb-planet', 'cx');
+  await page.click('#orb-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
+  await page.click('#orb-plot ~ .player [data-role=play]');
+  check(await page.getAttribute('#orb-planet', 'cx') !== cx0, 'animation: Mercury moves along its orbit when played');
+  // projector mode: the plot's text grows with the page's (4/3), redrawn at once
+  const tickPx = () => page.$eval('#orb-plot text.tick-x', (t) => parseFloat(getComputedStyle(t).fontSize) * t.getScreenCTM().a);
+  const before = await tickPx();
+  await page.check('#projector');
+  const big = await tickPx();
+  await page.uncheck('#projector');
+  check(big >= before * 1.3 && big >= 17, `projector mode: plot ticks grow with the page (${before.toFixed(1)} px -> ${big.toFixed(1)} px)`);
+}, 'anim-orbits');
+
+await lab('accuracy', async () => {
+  await settled();
+  const xt = await tickLabels('#acc-plot', 'x'), yt = await tickLabels('#acc-plot', 'y');
+  check([...xt, ...yt].every(t => /^10[⁻]?[⁰¹²³⁴⁵⁶⁷⁸⁹]+$/.test(t)) && yt.length >= 2,
+    `plots: log axes are labelled as powers of ten (x: ${xt.join(' ')}; y: ${yt.join(' ')})`);
+}, 'ticks-accuracy');
+
+await lab('spacetime', async () => {
+  await settled();
+  // the Minkowski diagram has tick values: round numbers on x and ct, the boosted axes numbered too
+  const xt = await tickLabels('#st-diagram', 'x'), yt = await tickLabels('#st-diagram', 'y');
+  const and0 = (l) => [...l, '0'].sort((a, b) => Number(a.replace('−', '-')) - Number(b.replace('−', '-'))); // the origin is not labelled
+  check(roundTicks(and0(xt)) && roundTicks(and0(yt)) && xt.includes('1') && yt.includes('1'), `Minkowski: x and ct carry round tick values (x: ${xt.join(' ')}; ct: ${yt.join(' ')})`);
+  const bt = await page.$$eval('#st-diagram text.tick-ctp, #st-diagram text.tick-xp', (ts) => ts.map(t => t.textContent));
+  check(bt.includes('1') && bt.includes('−1'), `Minkowski: the boosted axes' marks are numbered (${bt.join(' ')})`);
+  const [dl] = await Promise.all([page.waitForEvent('download', {timeout: 10000}),
+    page.click('#st-diagram + .plot-tools [data-export=csv]')]);
+  const rows = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n');
+  // beta = 0.6: (ct, x) = (1, 0) -> (1.25, -0.75), the numbers exactly as the API gave them (the table's data-value)
+  const r1 = rows[1].split(','), api = [await page.getAttribute('#st-ctp-0', 'data-value'), await page.getAttribute('#st-xp-0', 'data-value')];
+  check(r1[0] === '1' && r1[1] === '1' && r1[2] === '0' && r1[3] === api[0] && r1[4] === api[1] && r1[5] === '0.6',
+    `export: the Minkowski CSV holds the events and the API's boosted values ("${rows[1]}", API ${api.join(', ')})`);
+  close(Number(r1[3]), 1.25, 1e-14, "export: the CSV's ct' = 1.25"); close(Number(r1[4]), -0.75, 1e-14, "export: the CSV's x' = -0.75");
+}, 'ticks-spacetime');
+
+await lab('inertia', async () => {
+  await settled();
+  const p0 = await pixels('#inertia-view');
+  check(p0.ink > 0.02, `3-D: the inertia body is drawn (${(p0.ink * 100).toFixed(1)} % inked)`);
+  await page.focus('#inertia-view'); await page.keyboard.press('ArrowLeft'); await page.keyboard.press('ArrowUp'); await frameAfter();
+  check((await pixels('#inertia-view')).h !== p0.h, '3-D: the arrow keys turn the inertia body');
+}, 'turn-inertia');
+
+await lab('earth', async () => {
+  await settled();
+  const cx0 = await page.getAttribute('#fou-bob', 'cx');
+  await page.click('#fou-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
+  await page.click('#fou-plot ~ .player [data-role=play]');
+  check(await page.getAttribute('#fou-bob', 'cx') !== cx0, 'animation: the Foucault bob swings when played');
+  // the falling object falls when played (from /v1/trajectory's samples), and lands where the scene says
+  await page.waitForSelector('#fall-dot', {timeout: 15000});
+  const cy0 = Number(await page.getAttribute('#fall-dot', 'cy'));
+  await page.click('#fall-path ~ .player [data-role=play]'); await page.waitForTimeout(700);
+  check(Number(await page.getAttribute('#fall-dot', 'cy')) > cy0, 'animation: the falling object falls when played');
+  const [dl] = await Promise.all([page.waitForEvent('download', {timeout: 10000}),
+    page.click('#fall-path + .plot-tools [data-export=csv]')]);
+  const last = fs.readFileSync(await dl.path(), 'utf8').trim().split('\n').filter(l => l.startsWith('with Coriolis')).pop().split(',');
+  close(Number(last[1]) / 100, await value('#fall-east'), 1e-6, 'falling object: the animated path lands where the scene says (east)');
+  check(Math.abs(Number(last[2])) < 1e-9, `falling object: the animated path ends on the ground (z = ${last[2]})`);
+}, 'anim-earth');
+
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
 await page.setViewportSize({width: 390, height: 844});
 for (const id of LABS) await lab(id, async () => {
@@ -430,6 +624,10 @@ for (const id of LABS) await lab(id, async () => {
   check(small.length === 0, `phone ${id}: plot text at >= 10 px (${small.slice(0, 3).map(([t, px]) => `"${t}" ${px.toFixed(1)} px`).join(', ')})`);
   const bad = await blemishes();
   check(bad.length === 0, `phone ${id}: a clean page (${bad.join(' | ')})`);
+  for (const v of await page.$$eval('canvas.view3d', (cs) => cs.map(c => '#' + c.id))) {
+    const p = await pixels(v);
+    check(p.ink > 0.02 && p.w >= 300, `phone ${id}: the 3-D view ${v} is drawn (${(p.ink * 100).toFixed(1)} % inked, ${p.w} px wide)`);
+  }
   if (id === 'spacetime') {
     const gap = await page.evaluate(() => {
       const s = document.getElementById('st-beta-slider').getBoundingClientRect();

@@ -1,6 +1,6 @@
 // Accuracy lab: a work-precision plot from POST /v1/compare — error against
 // right-hand-side evaluations for several integrators on a Kepler orbit.
-import {el, put, add, field, val, fmt, svg, labLayout, runner, examplePicker, linePlot} from '../lib.js';
+import {el, put, add, field, val, fmt, svg, labLayout, runner, examplePicker, linePlot, plotTools} from '../lib.js';
 
 const BUILTIN = [{title: 'Kepler orbit, e ≈ 0.44, 20 time units', operation: '/v1/compare',
   request: {operation: '/v1/trajectory', request: {particle: {mass: 1, position: [1, 0, 0], velocity: [0, 1.2, 0]},
@@ -36,13 +36,18 @@ export default {
       put(L.results, el('p', {}, `${r.runs.length} runs against the ${ref.kind || 'reference'} solution`,
         ref.name ? ` (${ref.name})` : '', '.',
         r.partial ? ' The budget ran out before every run finished: the rows marked "not run" say why.' : null),
-        el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'setting', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
+        el('table', {id: 'acc-table'}, el('tr', {}, ['method', 'tolerance or step', 'evaluations', 'max position error'].map(h => el('th', {}, h))),
           r.runs.map(x => el('tr', {}, el('td', {}, x.method || (x.requested && x.requested.method) || '?'), el('td', {}, setting(x)),
             x.status === 'ok' ? [el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))]
               : el('td', {colspan: 2, class: 'muted'}, (x.status || 'not run').replace(/_/g, ' ') +
                   (x.reason || x.detail ? ': ' + (x.reason || x.detail) : ''))))));
-      linePlot(plot, Object.entries(by).map(([m, pts]) => ({label: m, points: pts.sort((p, q) => p[0] - q[0]), dots: false})),
-        {xlabel: 'right-hand-side evaluations', ylabel: 'max position error', logx: true, logy: true, legend: 'bottom'});
+      linePlot(plot, Object.entries(by).map(([m, pts]) => ({label: m, points: pts.sort((p, q) => p[0] - q[0]), markers: true})),
+        {xlabel: 'right-hand-side evaluations', ylabel: 'max position error', logx: true, logy: true, legend: 'bottom', name: 'work-precision'});
+      // the CSV of every run, with the tolerance or step it used
+      plotTools(plot, {name: 'work-precision', csv: () => 'method,rtol,dt,status,rhs_evaluations,max_position_error\n' +
+        r.runs.map(x => { const q = x.requested || {};
+          return [x.method || q.method || '', x.rtol ?? q.rtol ?? '', x.dt ?? q.dt ?? '', x.status || '',
+            x.status === 'ok' ? x.rhs_evaluations : '', x.status === 'ok' ? x.max_position_error : ''].join(','); }).join('\n') + '\n'});
     });
     run();
   },

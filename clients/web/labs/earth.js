@@ -2,7 +2,8 @@
 // (POST /v1/scenes/falling-object, /v1/scenes/cannonball): with Coriolis beside
 // without (where it would land if the Earth did not turn), the deflection
 // magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault).
-import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot} from '../lib.js';
+import {player} from '../anim.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -66,7 +67,47 @@ export default {
         el('dt', {}, 'numerical − first order'), num('fall-diff', a.difference.east, 'm')),
         el('p', {class: 'muted'}, a.first_order.formula || ''));
       drawPlot(fallS.plot, () => planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`));
+      fallPath(a);
     });
+    // the fall itself, animated: the same drop as a trajectory in the Earth's frame (POST /v1/trajectory,
+    // gravity and Coriolis, 121 samples up to the scene's fall time), height against the eastward drift
+    const pathPlot = svg('svg', {class: 'plot', id: 'fall-path', role: 'img', 'aria-label': 'the fall: height against eastward drift'});
+    const pathNote = el('p', {class: 'muted', id: 'fall-path-note'});
+    const pathCurl = curlBox();
+    put(pathCurl.box.querySelector('h3'), 'The animation\'s request');
+    const fallPlay = player({label: 'The falling object'});
+    add(fallS.figure, el('h3', {}, 'The fall'), pathPlot, fallPlay.root, pathNote, pathCurl.box);
+    let pathCtl = null;
+    const fallPath = async (a) => {
+      const h = a.parameters.height, lat = a.parameters.latitude_deg, T = a.numerical.t;
+      const body = {particle: {mass: 1, position: [0, 0, h], velocity: [0, 0, 0]}, frame: {type: 'earth', latitude_deg: lat},
+        forces: [{type: 'uniform_gravity', g: [0, 0, -a.parameters.g]}], fictitious: ['coriolis'], t_end: T, samples: 121,
+        stop: {coordinate: 'z', crosses: 0, direction: 'decreasing'}};
+      pathCurl.update('/v1/trajectory', body);
+      if (pathCtl) pathCtl.abort();
+      const mine = pathCtl = new AbortController();
+      const r = await api('/v1/trajectory', body, {signal: mine.signal});
+      if (mine !== pathCtl || r.aborted) return;
+      if (!r.ok || !r.body || !Array.isArray(r.body.t)) { pathNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
+      const t = r.body.t.slice(), pos = r.body.position.slice();
+      if (r.body.stopped && r.body.stopped.t > t[t.length - 1]) { t.push(r.body.stopped.t); pos.push(r.body.stopped.position); }
+      const pts = pos.map(p => [p[0] * 100, p[2]]);
+      const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
+      let XY = null, cur = pts[0];
+      linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
+        {xlabel: 'east [cm]', ylabel: 'height [m]', name: 'falling-object-path', legend: 'below', marks: [({X, Y}) => {
+          XY = [X, Y]; dot.setAttribute('cx', X(cur[0])); dot.setAttribute('cy', Y(cur[1]));
+          // px per metre across (X counts cm) over px per metre up: how much the drift is magnified
+          const k = Math.abs(X(1) - X(0)) * 100 / Math.abs(Y(1) - Y(0));
+          pathNote.textContent = `East in cm, height in m: the drift (${fmt(pos[pos.length - 1][0] * 100, 4)} cm at the ground) ` +
+            `is drawn ${fmt(Number(k.toPrecision(2)))} times larger than the height's scale.`;
+          return dot; }]});
+      fallPlay.set(t, (i, f) => {
+        const j = Math.min(i + 1, pts.length - 1);
+        cur = [pts[i][0] + (pts[j][0] - pts[i][0]) * f, pts[i][1] + (pts[j][1] - pts[i][1]) * f];
+        if (XY) { dot.setAttribute('cx', XY[0](cur[0])); dot.setAttribute('cy', XY[1](cur[1])); }
+      });
+    };
     // cannonball
     const cs = field({label: 'speed', pointer: '/speed', value: 500, unit: 'm/s', id: 'can-speed'});
     const ce = field({label: 'elevation', pointer: '/elevation_deg', value: 30, unit: '°', id: 'can-elev'});
@@ -94,7 +135,7 @@ export default {
     const pa = field({label: 'amplitude', pointer: '/release/amplitude_deg', value: 3, unit: '°', id: 'fou-amp'});
     const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings'});
     const fouS = section(main, 'Foucault pendulum', 'The swing plane turns clockwise (northern hemisphere) at ω sin λ. ' +
-      'The trace is drawn from the measured rate and swing period, with the turn exaggerated so that it shows.', [pl, pL, pa, ps], 'Swing', 'fou');
+      'The trace (and the bob when played) is drawn from the measured rate and swing period, with the turn exaggerated so that it shows; the exaggeration is written under it.', [pl, pL, pa, ps], 'Swing', 'fou');
     const pend = runner(fouS, '/v1/scenes/foucault', () => ({latitude_deg: val(pl.input), length: val(pL.input),
       release: {amplitude_deg: val(pa.input)}, swings: val(ps.input)}), (a) => {
       const p = a.precession;
@@ -108,8 +149,16 @@ export default {
           : num('fou-hours', p.full_precession_hours, 'h'),
         el('dt', {}, 'swing period'), num('fou-period', a.swing.period, 's')));
       const flat = a.swing.semi_major_axis > 0 ? Math.min(1, Math.abs(a.swing.semi_minor_axis / a.swing.semi_major_axis)) : 0;
-      drawPlot(fouS.plot, () => rosette(fouS.plot, p.measured_rate, a.swing.period, still, flat));
+      let bob = null;
+      drawPlot(fouS.plot, () => { bob = rosette(fouS.plot, p.measured_rate, a.swing.period, still, flat); });
+      // 12 swings, 40 frames a swing: the bob on the (exaggerated) trace
+      const T = a.swing.period, times = Array.from({length: 12 * 40 + 1}, (_, i) => i * T / 40);
+      fouPlay.set(times, (i, f, t) => { if (bob) bob(t / T); });
     });
+    plotTools(fallS.plot, {name: 'falling-object'}); plotTools(canS.plot, {name: 'cannonball'});
+    const fouPlay = player({label: 'The Foucault pendulum'});
+    fouS.plot.after(fouPlay.root);
+    plotTools(fouS.plot, {name: 'foucault'});
     fall(); cannon(); pend();
   },
 };
@@ -128,9 +177,20 @@ function rosette(root, rate, period, still, flat) {
     pts.push(`${(W / 2 + R * (x * Math.cos(ang) - y * Math.sin(ang))).toFixed(1)},${(H / 2 - R * (x * Math.sin(ang) + y * Math.cos(ang))).toFixed(1)}`);
   }
   const perSwing = Math.abs(real / n) * 180 / Math.PI;
-  add(root, svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#1864ab', 'stroke-width': 1.5}),
+  // played: the trace so far drawn bold over the whole (faint) one, the bob at its end
+  const bob = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fou-bob'});
+  const sofar = svg('polyline', {fill: 'none', stroke: '#1864ab', 'stroke-width': 2.5});
+  const at = (s) => { const ang = turn * s / n, x = Math.cos(Math.PI * s), y = flat * Math.sin(Math.PI * s);
+    bob.setAttribute('cx', (W / 2 + R * (x * Math.cos(ang) - y * Math.sin(ang))).toFixed(1));
+    bob.setAttribute('cy', (H / 2 - R * (x * Math.sin(ang) + y * Math.cos(ang))).toFixed(1));
+    sofar.setAttribute('points', pts.slice(0, Math.floor(s * 80) + 1).join(' ') + ' ' + bob.getAttribute('cx') + ',' + bob.getAttribute('cy')); };
+  at(0);
+  add(root, svg('text', {x: W / 2, y: 22, 'font-size': 15, 'text-anchor': 'middle', fill: '#444'}, 'N'),
+    svg('text', {x: W - 16, y: H / 2 + 5, 'font-size': 15, 'text-anchor': 'middle', fill: '#444'}, 'E'),
+    svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#a5c8ec', 'stroke-width': 1.5}), sofar,
     svg('text', {x: 12, y: H - 30, 'font-size': 14, fill: '#444'}, still ? 'no precession at the equator (ω sin λ = 0)'
       : `real turn per swing ${fmt(perSwing, 3)}°`),
     svg('text', {x: 12, y: H - 10, 'font-size': 14, fill: '#444'}, still || !real ? '12 swings, drawn to scale'
-      : `12 swings, turn drawn ×${fmt(Math.abs(turn / real), 3)}`));
+      : `12 swings, turn drawn ×${fmt(Math.abs(turn / real), 3)}`), bob);
+  return at;
 }

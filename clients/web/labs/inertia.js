@@ -2,6 +2,7 @@
 // tensor, the principal moments and the principal axes drawn over the body in
 // a small 3D view (drag or arrow keys to rotate).
 import {el, put, add, field, val, fmt, num, labLayout, runner, examplePicker} from '../lib.js';
+import {THREE, view3d, axesArrows, sceneAxes, label as tag} from '../view3d.js';
 
 const SHAPES = {
   box: [['size', 'size a b c', 3, [1, 1, 1]]],
@@ -31,7 +32,7 @@ export default {
     const L = labLayout(main, {title: 'Inertia tensor and principal axes',
       intro: 'Build a rigid body from parts. mechd returns the inertia tensor about the origin you choose, ' +
              'the principal moments and the principal axes, drawn over the body (drag or use the arrow keys to turn it).'});
-    state = state || {req: structuredClone(BUILTIN[0].request), yaw: 0.6, pitch: 0.35, answer: null};
+    state = state || {req: structuredClone(BUILTIN[0].request), answer: null};
     const partsBox = el('div', {id: 'parts'});
     const originSel = field({label: 'Origin', pointer: '/origin', value: Array.isArray(state.req.origin) ? 'point' : 'center_of_mass',
       options: [['center_of_mass', 'centre of mass'], ['point', 'a point']], id: 'inertia-origin'});
@@ -97,25 +98,18 @@ export default {
         el('p', {class: 'muted'}, 'Give ω to see the angular momentum L = I ω and the kinetic energy ½ ω·L.')),
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'inertia-submit'}, 'Compute')));
     renderParts();
-    const canvas = el('canvas', {class: 'plot', width: 640, height: 480, tabindex: 0, id: 'inertia-view',
-      'aria-label': 'The body and its principal axes in 3D; arrow keys rotate the view'});
-    add(L.figure, el('h3', {}, 'Body and principal axes'), canvas,
-      el('p', {class: 'muted'}, 'Principal axes: ', el('span', {class: 'c1'}, 'e₁'), ', ', el('span', {class: 'c2'}, 'e₂'),
-        ', ', el('span', {class: 'c3'}, 'e₃'), ' (lengths ∝ moments), from the origin of the tensor.'));
-    const draw = () => { fitCanvas(canvas); drawBody(canvas, state); };
-    if (typeof ResizeObserver === 'function') new ResizeObserver(() => draw()).observe(canvas);
-    let drag = null;
-    canvas.addEventListener('pointerdown', (e) => { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
-    canvas.addEventListener('pointermove', (e) => {
-      if (!drag) return;
-      state.yaw += (e.clientX - drag[0]) * 0.01; state.pitch += (e.clientY - drag[1]) * 0.01;
-      drag = [e.clientX, e.clientY]; draw();
-    });
-    canvas.addEventListener('pointerup', () => { drag = null; });
-    canvas.addEventListener('keydown', (e) => {
-      const d = {ArrowLeft: [-0.1, 0], ArrowRight: [0.1, 0], ArrowUp: [0, -0.1], ArrowDown: [0, 0.1]}[e.key];
-      if (d) { e.preventDefault(); state.yaw += d[0]; state.pitch += d[1]; draw(); }
-    });
+    const box3d = el('div', {class: 'view3d-box'});
+    add(L.figure, el('h3', {}, 'Body, principal axes and ellipsoid of inertia'), box3d,
+      el('p', {class: 'muted'}, 'The parts as solids (the centre of mass ', el('span', {class: 'c4'}, '○'), '); principal axes ',
+        el('span', {class: 'c1'}, 'e₁'), ', ', el('span', {class: 'c2'}, 'e₂'), ', ', el('span', {class: 'c3'}, 'e₃'),
+        ' from the origin of the tensor (lengths ∝ moments); the grey ellipsoid of inertia x·I x = const has semi-axes ∝ 1/√Iₖ ',
+        '(longest along the smallest moment; capped at 3× the shortest where a moment is near zero). Drag, or focus it and use the arrow keys, to turn it.'));
+    const V = view3d(box3d, {label: 'The body, its principal axes and ellipsoid of inertia in 3-D', id: 'inertia-view'});
+    if (state.cam) { V.view.yaw = state.cam.yaw; V.view.pitch = state.cam.pitch; } // the view as it was turned
+    state.cam = V.view;
+    const world = new THREE.Group();
+    V.scene.add(world);
+    const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
@@ -144,81 +138,75 @@ export default {
   },
 };
 
-// --- a tiny 3D wireframe renderer -------------------------------------------
-// The canvas' pixel size follows its laid-out size (× devicePixelRatio), so its
-// labels are drawn at their nominal CSS px size on a phone as on a desktop.
-function fitCanvas(canvas) {
-  const w = Math.round(canvas.getBoundingClientRect().width);
-  if (!w) return;
-  const dpr = window.devicePixelRatio || 1, W = Math.round(w * dpr), H = Math.round(w * 0.75 * dpr);
-  if (canvas.width !== W || canvas.height !== H) { canvas.width = W; canvas.height = H; }
-  canvas.dataset.px = String(dpr);
-}
-function project(p, st, W, H, s) {
-  const [cy, sy, cp, sp] = [Math.cos(st.yaw), Math.sin(st.yaw), Math.cos(st.pitch), Math.sin(st.pitch)];
-  const x1 = cy * p[0] - sy * p[1], y1 = sy * p[0] + cy * p[1];
-  const z2 = cp * p[2] - sp * y1, y2 = sp * p[2] + cp * y1;
-  return [W / 2 + s * x1, H / 2 - s * z2, y2];
-}
+// --- the body in 3-D (three.js) -------------------------------------------------
+// A part's rotation from its orientation.axis_angle (identity without one).
 function orient(b) {
-  const aa = b.orientation && b.orientation.axis_angle;
-  if (!aa) return (v) => v;
-  const n = Math.hypot(...aa.axis) || 1, [x, y, z] = aa.axis.map(c => c / n), c = Math.cos(aa.angle), s = Math.sin(aa.angle);
-  return (v) => [
-    (c + x * x * (1 - c)) * v[0] + (x * y * (1 - c) - z * s) * v[1] + (x * z * (1 - c) + y * s) * v[2],
-    (y * x * (1 - c) + z * s) * v[0] + (c + y * y * (1 - c)) * v[1] + (y * z * (1 - c) - x * s) * v[2],
-    (z * x * (1 - c) - y * s) * v[0] + (z * y * (1 - c) + x * s) * v[1] + (c + z * z * (1 - c)) * v[2]];
+  const aa = b.orientation && b.orientation.axis_angle, q = new THREE.Quaternion();
+  if (aa && Array.isArray(aa.axis) && Math.hypot(...aa.axis) > 0)
+    q.setFromAxisAngle(new THREE.Vector3(...aa.axis).normalize(), aa.angle || 0);
+  return q;
 }
-function drawBody(canvas, st) {
-  const ctx = canvas.getContext('2d'), W = canvas.width, H = canvas.height, px = Number(canvas.dataset.px || W / 640);
-  ctx.clearRect(0, 0, W, H);
-  const bodies = st.req.bodies.filter(b => b.position && b.position.every(isFinite));
-  const org = st.answer ? (Array.isArray(st.answer.origin) ? st.answer.origin : st.answer.center_of_mass) : [0, 0, 0];
+const okPart = (b) => Array.isArray(b.position) && b.position.length === 3 && b.position.every(Number.isFinite);
+// The scene's radius: every part's reach from the origin.
+function extentOf(st) {
   let ext = 0.5;
-  for (const b of bodies) ext = Math.max(ext, ...b.position.map(v => Math.abs(v - 0)) , (b.radius || 0) + 0.1,
-    ...(b.size || [0]).map(v => v / 2 + 0.1), (b.length || 0) / 2, (b.height || 0) / 2);
-  const s = Math.min(W, H) / (3.2 * ext);
-  const P = (v) => project(v, st, W, H, s);
-  const line = (a, b, color, w = 2) => { const [p, q] = [P(a), P(b)]; ctx.strokeStyle = color; ctx.lineWidth = w * px;
-    ctx.beginPath(); ctx.moveTo(p[0], p[1]); ctx.lineTo(q[0], q[1]); ctx.stroke(); };
-  // scene axes
-  for (let k = 0; k < 3; k++) { const e = [0, 0, 0]; e[k] = ext * 1.2; line([0, 0, 0], e, '#aaa', 1);
-    const t = P(e); ctx.fillStyle = '#666'; ctx.font = `${16 * px}px system-ui`; ctx.fillText('xyz'[k], t[0] + 4 * px, t[1]); }
-  for (const b of bodies) {
-    const R = orient(b), at = (v) => { const r = R(v); return [r[0] + b.position[0], r[1] + b.position[1], r[2] + b.position[2]]; };
-    const col = '#333';
-    if (b.shape === 'box' && b.size) {
-      const h = b.size.map(v => v / 2), c = [];
-      for (let i = 0; i < 8; i++) c.push(at([(i & 1 ? 1 : -1) * h[0], (i & 2 ? 1 : -1) * h[1], (i & 4 ? 1 : -1) * h[2]]));
-      for (let i = 0; i < 8; i++) for (const bit of [1, 2, 4]) if (!(i & bit)) line(c[i], c[i | bit], col);
-    } else if (b.shape === 'rod') {
-      line(at([0, 0, -b.length / 2]), at([0, 0, b.length / 2]), col, 4);
-    } else if (b.shape === 'cylinder' || b.shape === 'sphere') {
-      const rings = b.shape === 'sphere' ? [[0, 'xy'], [0, 'xz'], [0, 'yz']] : [[-b.height / 2, 'xy'], [b.height / 2, 'xy']];
-      for (const [z0, pl] of rings) {
-        ctx.beginPath();
-        for (let i = 0; i <= 48; i++) {
-          const a = 2 * Math.PI * i / 48, u = b.radius * Math.cos(a), v = b.radius * Math.sin(a);
-          const loc = pl === 'xy' ? [u, v, z0] : pl === 'xz' ? [u, 0, v] : [0, u, v];
-          const q = P(at(loc)); i ? ctx.lineTo(q[0], q[1]) : ctx.moveTo(q[0], q[1]);
-        }
-        ctx.strokeStyle = col; ctx.lineWidth = 2 * px; ctx.stroke();
-      }
-      if (b.shape === 'cylinder') for (const a of [0, Math.PI / 2, Math.PI, 1.5 * Math.PI])
-        line(at([b.radius * Math.cos(a), b.radius * Math.sin(a), -b.height / 2]), at([b.radius * Math.cos(a), b.radius * Math.sin(a), b.height / 2]), col);
+  for (const b of st.req.bodies.filter(okPart)) {
+    const r = Math.max((b.radius || 0), ...(Array.isArray(b.size) ? b.size.map(v => (v || 0) / 2) : [0]),
+      (b.length || 0) / 2, (b.height || 0) / 2);
+    ext = Math.max(ext, Math.hypot(...b.position) + (Number.isFinite(r) ? r : 0));
+  }
+  return ext;
+}
+function drawBody(world, st) {
+  world.clear();
+  const ext = extentOf(st);
+  world.add(sceneAxes(ext * 1.2));
+  const mat = () => new THREE.MeshStandardMaterial({color: 0x8c98a8, transparent: true, opacity: 0.55, depthWrite: false});
+  const edge = new THREE.LineBasicMaterial({color: 0x333333});
+  for (const b of st.req.bodies.filter(okPart)) {
+    let geo = null, turn = null;
+    const pos = (v) => Number.isFinite(v) && v > 0;
+    if (b.shape === 'box' && Array.isArray(b.size) && b.size.every(pos)) geo = new THREE.BoxGeometry(...b.size);
+    else if (b.shape === 'sphere' && pos(b.radius)) geo = new THREE.SphereGeometry(b.radius, 32, 16);
+    else if (b.shape === 'cylinder' && pos(b.radius) && pos(b.height)) { geo = new THREE.CylinderGeometry(b.radius, b.radius, b.height, 40); turn = true; }
+    else if (b.shape === 'rod' && pos(b.length)) { geo = new THREE.CylinderGeometry(ext * 0.025, ext * 0.025, b.length, 12); turn = true; }
+    else geo = new THREE.SphereGeometry(ext * 0.07, 16, 8); // a point mass
+    const g = new THREE.Group();
+    const solid = b.shape === 'point' || b.shape === 'rod';
+    const mesh = new THREE.Mesh(geo, solid ? new THREE.MeshStandardMaterial({color: 0x495057}) : mat());
+    if (turn) mesh.rotation.x = Math.PI / 2; // three.js cylinders run along y; the API's along z
+    g.add(mesh);
+    if (b.shape === 'box' || b.shape === 'cylinder') {
+      const lines = new THREE.LineSegments(new THREE.EdgesGeometry(geo, 30), edge);
+      lines.rotation.copy(mesh.rotation); g.add(lines);
     }
-    const q = P(b.position); ctx.fillStyle = col; ctx.beginPath(); ctx.arc(q[0], q[1], (b.shape === 'point' ? 7 : 3) * px, 0, 7); ctx.fill();
+    g.quaternion.copy(orient(b)); g.position.set(...b.position);
+    world.add(g);
   }
-  if (st.answer) {
-    const m = st.answer.principal.moments, mmax = Math.max(...m.map(Math.abs)) || 1;
-    const colors = ['#c92a2a', '#2b8a3e', '#1864ab'];
-    st.answer.principal.axes.forEach((ax, k) => {
-      const L = ext * (0.5 + 0.9 * Math.abs(m[k]) / mmax);
-      const tip = [org[0] + L * ax[0], org[1] + L * ax[1], org[2] + L * ax[2]];
-      line([org[0] - L * ax[0], org[1] - L * ax[1], org[2] - L * ax[2]], tip, colors[k], 4);
-      const t = P(tip); ctx.fillStyle = colors[k]; ctx.font = `bold ${20 * px}px system-ui`; ctx.fillText('e' + (k + 1), t[0] + 5 * px, t[1] - 5 * px);
-    });
-    const c = P(st.answer.center_of_mass); ctx.strokeStyle = '#e67700'; ctx.lineWidth = 3 * px;
-    ctx.beginPath(); ctx.arc(c[0], c[1], 9 * px, 0, 7); ctx.stroke();
-  }
+  const a = st.answer;
+  if (!a) return;
+  const org = Array.isArray(a.origin) ? a.origin : a.center_of_mass;
+  const m = a.principal.moments, mmax = Math.max(...m.map(Math.abs)) || 1;
+  world.add(axesArrows(a.principal.axes, m.map(v => ext * (0.5 + 0.9 * Math.abs(v) / mmax)), org));
+  a.principal.axes.forEach((ax, k) => {
+    const L = ext * (0.5 + 0.9 * Math.abs(m[k]) / mmax), s = tag('e' + (k + 1), ['#c92a2a', '#2b8a3e', '#1864ab'][k]);
+    s.position.set(org[0] + L * 1.12 * ax[0], org[1] + L * 1.12 * ax[1], org[2] + L * 1.12 * ax[2]);
+    s.scale.set(ext * 0.3, ext * 0.15, 1); world.add(s);
+  });
+  // ellipsoid of inertia: semi-axes ∝ 1/√I_k, the longest at 0.8 ext, none longer than 3× the shortest
+  const inv = m.map(v => 1 / Math.sqrt(Math.max(Math.abs(v), 1e-300)));
+  const lo = Math.min(...inv), semi = inv.map(v => Math.min(v, 3 * lo)), top = Math.max(...semi);
+  const ell = new THREE.Mesh(new THREE.SphereGeometry(1, 48, 24),
+    new THREE.MeshStandardMaterial({color: 0x868e96, transparent: true, opacity: 0.22, depthWrite: false}));
+  ell.scale.set(...semi.map(v => 0.8 * ext * v / top));
+  const ax = a.principal.axes.map(r => r.slice()); // rows: e1, e2, e3 -> the columns of the rotation
+  const det = ax[0][0] * (ax[1][1] * ax[2][2] - ax[1][2] * ax[2][1]) - ax[0][1] * (ax[1][0] * ax[2][2] - ax[1][2] * ax[2][0]) +
+    ax[0][2] * (ax[1][0] * ax[2][1] - ax[1][1] * ax[2][0]);
+  if (det < 0) ax[2] = ax[2].map(v => -v); // a proper rotation (the ellipsoid is symmetric about each axis)
+  ell.quaternion.setFromRotationMatrix(new THREE.Matrix4().set(
+    ax[0][0], ax[1][0], ax[2][0], 0, ax[0][1], ax[1][1], ax[2][1], 0, ax[0][2], ax[1][2], ax[2][2], 0, 0, 0, 0, 1));
+  ell.position.set(...org);
+  world.add(ell);
+  const cm = new THREE.Mesh(new THREE.TorusGeometry(ext * 0.06, ext * 0.012, 8, 24), new THREE.MeshBasicMaterial({color: 0xe67700}));
+  cm.position.set(...a.center_of_mass); world.add(cm);
 }

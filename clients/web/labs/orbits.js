@@ -1,6 +1,7 @@
 // Orbits lab: the Schwarzschild precession of Mercury and light bending by the
 // Sun (POST /v1/gr/geodesic, timelike and null).
-import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize} from '../lib.js';
+import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize, pow10, plotTools} from '../lib.js';
+import {player} from '../anim.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
   request: {M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593}, orbits: 3, samples: 5}},
@@ -30,7 +31,45 @@ export default {
       run();
     }, {fits}), a.wrap, e.wrap, n.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
     const plot = svg('svg', {class: 'plot', id: 'orb-plot', role: 'img', 'aria-label': 'orbit'});
-    add(L.figure, el('h3', {}, 'The orbit'), plot);
+    const exId = 'orb-exaggerate';
+    const exSel = el('select', {id: exId, 'data-role': 'exaggerate'});
+    const exNote = el('span', {class: 'muted', id: 'orb-ex-note'});
+    const play = player({label: 'The orbit'});
+    add(L.figure, el('h3', {}, 'The orbit'),
+      el('div', {class: 'exaggerate'}, el('label', {for: exId}, 'Precession drawn'), exSel, exNote), plot, play.root,
+      el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked in red. With the precession exaggerated, each ',
+        'sample\'s angle φ is drawn as φ (2π + kδ)/(2π + δ), δ the measured advance per orbit: the perihelion then moves kδ ',
+        'per orbit while r(φ) is the API\'s.'));
+    let last = null;
+    const drawOrbit = () => {
+      const r = last;
+      if (!r) return;
+      const s = r.samples, d = r.precession.measured_per_orbit, k = Number(exSel.value) || 1;
+      const warp = (phi) => typeof d === 'number' ? phi * (2 * Math.PI + k * d) / (2 * Math.PI + d) : phi;
+      const xy = s.r.map((rr, i) => [rr * Math.cos(warp(s.phi[i])), rr * Math.sin(warp(s.phi[i]))]);
+      // perihelia: local minima of r
+      const peri = [];
+      for (let i = 0; i < s.r.length; i++)
+        if ((i === 0 || s.r[i] <= s.r[i - 1]) && (i === s.r.length - 1 || s.r[i] < s.r[i + 1])) peri.push(xy[i]);
+      const planet = svg('circle', {r: 7, fill: '#1864ab', stroke: '#fff', 'stroke-width': 2, id: 'orb-planet'});
+      let XY = null;
+      linePlot(plot, [{points: xy, label: k === 1 ? 'orbit' : `orbit, precession ×${exLabel(k)}`},
+        {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}],
+        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', marks: [({X, Y}) => {
+          XY = [X, Y];
+          const g = svg('g', {});
+          add(g, svg('circle', {cx: X(0), cy: Y(0), r: 9, fill: '#f59f00'}));
+          for (const p of peri) add(g, svg('line', {x1: X(0), y1: Y(0), x2: X(p[0]), y2: Y(p[1]), stroke: '#c92a2a', 'stroke-dasharray': '5 4'}));
+          add(g, planet);
+          return g;
+        }]});
+      play.set(s.t, (i, f) => {
+        const j = Math.min(i + 1, xy.length - 1), x = xy[i][0] + (xy[j][0] - xy[i][0]) * f, y = xy[i][1] + (xy[j][1] - xy[i][1]) * f;
+        if (XY) { planet.setAttribute('cx', XY[0](x)); planet.setAttribute('cy', XY[1](y)); }
+      });
+    };
+    exSel.addEventListener('change', drawOrbit);
+    const exLabel = (k) => k >= 1e4 ? pow10(Math.round(Math.log10(k))) : String(k);
     const run = runner(L, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'timelike',
       initial: {semi_major_axis: val(a.input), eccentricity: val(e.input)}, orbits: val(n.input), samples: 600}), (r) => {
       const p = r.precession;
@@ -39,9 +78,19 @@ export default {
         el('dt', {}, 'exact'), num('orb-exact', p.exact_per_orbit, 'rad'),
         el('dt', {}, '6πGM/(c²a(1−e²))'), num('orb-first', p.first_order_per_orbit, 'rad'),
         el('dt', {}, 'per century'), num('orb-century', p.arcsec_per_century.measured, '″')));
-      const s = r.samples;
-      linePlot(plot, [{points: s.r.map((rr, i) => [rr * Math.cos(s.phi[i]), rr * Math.sin(s.phi[i])]), label: 'orbit (m)'}],
-        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true});
+      // exaggeration factors that make the advance about 0.3 rad (17°) and a tenth of that per orbit
+      const d = Math.abs(p.measured_per_orbit) || 0, prev = Number(exSel.value);
+      const top = d > 0 ? 10 ** Math.max(0, Math.round(Math.log10(0.3 / d))) : 1;
+      const opts = [...new Set([1, Math.max(1, top / 10), top])];
+      put(exSel, opts.map(k => el('option', {value: k, selected: k === (opts.includes(prev) ? prev : top)},
+        k === 1 ? 'true to scale (×1)' : `×${exLabel(k)}`)));
+      const kk = Number(exSel.value);
+      exNote.textContent = d > 0 ? `real advance ${fmt(d * 180 / Math.PI * 3600, 3)}″ per orbit` +
+        (kk > 1 ? `, drawn ${fmt(kk * d * 180 / Math.PI, 3)}°` : '') : '';
+      exSel.onchange = () => { const k2 = Number(exSel.value); exNote.textContent = `real advance ${fmt(d * 180 / Math.PI * 3600, 3)}″ per orbit` +
+        (k2 > 1 ? `, drawn ${fmt(k2 * d * 180 / Math.PI, 3)}°` : ''); };
+      last = r;
+      drawOrbit();
     });
     run();
 
@@ -65,6 +114,7 @@ export default {
         el('dt', {}, '4GM/(c²b)'), num('light-first', d.arcsec.first_order, '″'),
         el('dt', {}, 'closest approach'), num('light-rmin', d.closest_approach, 'm')));
       drawPlot(lplot, () => rayPicture(lplot, d));
+      plotTools(lplot, {name: 'light-bending'});
     });
     lrun();
   },

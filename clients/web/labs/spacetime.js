@@ -2,7 +2,7 @@
 // ct' and x' sliding with beta, the invariant hyperbola) from
 // POST /v1/relativity/boost, and the twin paradox from /v1/relativity/worldline.
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot,
-        drawPlot, plotSize} from '../lib.js';
+        drawPlot, plotSize, plotTools} from '../lib.js';
 
 const BUILTIN = [
   {title: 'Boost by β = 0.6: the event (ct, x) = (1, 0) → (1.25, −0.75)', operation: '/v1/relativity/boost',
@@ -63,6 +63,8 @@ export default {
             el('td', {id: `st-xp-${i}`, 'data-value': a.vectors[i][1]}, fmt(a.vectors[i][1])),
             el('td', {}, fmt(-a.invariants_after[i]))))));
       drawPlot(plot, () => diagram(plot, body.vectors, a.beta[0], tickNote));
+      plotTools(plot, {name: 'minkowski', csv: () => 'event,ct,x,ct_boosted,x_boosted,beta\n' +
+        body.vectors.map((v, i) => [i + 1, v[0], v[1], a.vectors[i][0], a.vectors[i][1], a.beta[0]].join(',')).join('\n') + '\n'});
     });
     slider.addEventListener('input', () => { beta.input.value = slider.value; shown.textContent = 'β = ' + fmt(Number(slider.value)); run(); });
     beta.input.addEventListener('change', () => { const b = val(beta.input); if (isFinite(b)) { slider.value = clampB(b); shown.textContent = 'β = ' + fmt(b); } });
@@ -108,6 +110,16 @@ function diagram(root, vectors, b, note) {
   ln(-R * 1.4, 0, R * 1.4, 0, {stroke: '#000', 'stroke-width': 1.5}); ln(0, -R, 0, R, {stroke: '#000', 'stroke-width': 1.5});
   add(root, svg('text', {x: Math.min(X(R * 1.3), W - 14), y: Y(0) - 6, 'font-size': 18}, 'x'), svg('text', {x: X(0) + 6, y: Y(R) + 16, 'font-size': 18}, 'ct'));
   ln(-R, -R, R, R, {stroke: '#999', 'stroke-width': 2}); ln(-R, R, R, -R, {stroke: '#999', 'stroke-width': 2});
+  // tick values every u (a round number) on x and ct, the same u as the boosted axes' marks
+  const u0 = niceStep(R, 3), lab = (v) => fmt(v).replace('-', '−');
+  for (let k = -Math.floor(R * 1.4 / u0); k <= Math.floor(R * 1.4 / u0); k++) if (k && X(k * u0) > 14 && X(k * u0) < W - 14) {
+    ln(k * u0, -4 / s, k * u0, 4 / s, {stroke: '#000', 'stroke-width': 1.5});
+    add(root, svg('text', {x: X(k * u0), y: Y(0) + 20, 'text-anchor': 'middle', 'font-size': 14, class: 'tick-x'}, lab(k * u0)));
+  }
+  for (let k = -Math.floor(R / u0); k <= Math.floor(R / u0); k++) if (k && Y(k * u0) > 14 && Y(k * u0) < H - 8) {
+    ln(-4 / s, k * u0, 4 / s, k * u0, {stroke: '#000', 'stroke-width': 1.5});
+    add(root, svg('text', {x: X(0) - 7, y: Y(k * u0) + 5, 'text-anchor': 'end', 'font-size': 14, class: 'tick-y'}, lab(k * u0)));
+  }
   if (isFinite(b) && Math.abs(b) < 1) {
     ln(-R * b, -R, R * b, R, {stroke: '#1864ab', 'stroke-width': 3}); // ct' axis: x = beta ct
     ln(-R, -R * b, R, R * b, {stroke: '#1864ab', 'stroke-width': 3}); // x' axis: ct = beta x
@@ -118,7 +130,9 @@ function diagram(root, vectors, b, note) {
     const g = 1 / Math.sqrt(1 - b * b), u = niceStep(R, 3);
     for (let k = -Math.ceil(R / u); k <= Math.ceil(R / u); k++) if (k && Math.abs(k * u * g) <= R) {
       add(root, svg('circle', {cx: X(k * u * g * b), cy: Y(k * u * g), r: 3, fill: '#1864ab'}),
-        svg('circle', {cx: X(k * u * g), cy: Y(k * u * g * b), r: 3, fill: '#1864ab'}));
+        svg('circle', {cx: X(k * u * g), cy: Y(k * u * g * b), r: 3, fill: '#1864ab'}),
+        svg('text', {x: X(k * u * g * b) + 7, y: Y(k * u * g) + 5, 'font-size': 13, fill: '#1864ab', class: 'tick-ctp'}, lab(k * u)),
+        svg('text', {x: X(k * u * g), y: Y(k * u * g * b) + 19, 'font-size': 13, fill: '#1864ab', 'text-anchor': 'middle', class: 'tick-xp'}, lab(k * u)));
     }
     if (note) note.textContent = ` (every ${fmt(u)} units)`;
   }

@@ -1,7 +1,9 @@
 // Tops lab: the heavy symmetric top (POST /v1/rigid/top): the symmetry axis
 // tracing nutation loops on the unit sphere and θ(t); and the Dzhanibekov flip
 // of an asymmetric free body (POST /v1/rigid/rotate).
-import {el, svg, put, add, field, val, num, labLayout, labSection, runner, examplePicker, linePlot} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot} from '../lib.js';
+import {player} from '../anim.js';
+import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
 
 const BUILTIN = [{title: 'Fast top: I1 = 0.02, I3 = 0.01, θ0 = 0.5, ψ̇ = 60 rad/s', operation: '/v1/rigid/top',
   request: {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, psi_dot: 60, t_end: 2, samples: 801}},
@@ -36,20 +38,65 @@ export default {
     }, {fits: (ex) => ex.operation !== '/v1/rigid/rotate' || (Array.isArray(ex.request.moments) && Array.isArray(ex.request.omega) &&
         typeof ex.request.t_end === 'number' && !ex.request.orientation)}),
     Object.values(f).map(c => c.wrap), el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
-    const sphere = svg('svg', {class: 'plot', id: 'top-sphere', role: 'img', 'aria-label': 'axis tip seen from above'});
+    const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
-    add(L.figure, el('h3', {}, 'Axis tip on the sphere (top view)'), sphere, el('h3', {}, 'θ(t)'), theta);
+    const play = player({label: 'The top'});
+    add(L.figure, el('h3', {}, 'The top in 3-D'), box3d, play.root,
+      el('p', {class: 'muted'}, 'Tip fixed at the origin, z up. The blue curve is the path of the symmetry axis\' end ',
+        '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
+      el('h3', {}, 'θ(t)'), theta);
+    const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
+    const topGroup = new THREE.Group(), world = new THREE.Group();
+    V.scene.add(world);
+    let trace = null;
     const run = runner(L, '/v1/rigid/top', () => {
       const b = {}; for (const [k, c] of Object.entries(f)) b[k] = val(c.input); b.samples = 801; return b;
-    }, (a) => {
+    }, (a, req) => {
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'θ min'), num('top-thmin', a.nutation.theta_min, 'rad'),
         el('dt', {}, 'θ max'), num('top-thmax', a.nutation.theta_max, 'rad'),
         el('dt', {}, 'mean precession'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
         el('dt', {}, 'sleeping top stable'), el('dd', {id: 'top-sleeping'}, String(a.sleeping_top.stable)),
         el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
-      linePlot(sphere, [{points: a.axis.map(v => [v[0], v[1]]), label: 'axis tip (x, y)'}], {xlabel: 'x', ylabel: 'y', equal: true});
-      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ'}], {xlabel: 't [s]', ylabel: 'θ [rad]'});
+      const d = req.distance > 0 ? req.distance : 0.1, Lx = d * 1.5;
+      const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
+      let Xs = null, tCur = 0;
+      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ'}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
+        marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
+      // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
+      world.clear();
+      world.add(sceneAxes(Lx * 0.9));
+      topGroup.clear();
+      const r = d * 0.55;
+      const cone = new THREE.Mesh(new THREE.ConeGeometry(r * 0.35, d, 32), new THREE.MeshStandardMaterial({color: 0xb08d57}));
+      cone.rotation.x = -Math.PI / 2; cone.position.z = d / 2; // apex at the tip (origin), base up the axis
+      const disc = new THREE.Mesh(new THREE.CylinderGeometry(r, r, d * 0.12, 48), new THREE.MeshStandardMaterial({color: 0x1864ab}));
+      disc.rotation.x = Math.PI / 2; disc.position.z = d;
+      topGroup.add(cone, disc);
+      for (let k = 0; k < 4; k++) { // stripes across the disc: the spin shows
+        const st = new THREE.Mesh(new THREE.BoxGeometry(r * 2.02, r * 0.16, d * 0.13),
+          new THREE.MeshStandardMaterial({color: k % 2 ? 0xffd43b : 0xc92a2a}));
+        st.rotation.z = k * Math.PI / 4; st.position.z = d; topGroup.add(st);
+      }
+      const stem = new THREE.Mesh(new THREE.CylinderGeometry(r * 0.06, r * 0.06, d * 0.5, 12), new THREE.MeshStandardMaterial({color: 0x444444}));
+      stem.rotation.x = Math.PI / 2; stem.position.z = d * 1.25; topGroup.add(stem);
+      world.add(topGroup);
+      trace = polyline(a.axis.map(v => v.map(c => c * d * 1.5)), 0x1864ab);
+      world.add(trace);
+      const floor = new THREE.Mesh(new THREE.CircleGeometry(Lx, 64), new THREE.MeshBasicMaterial({color: 0xeeeeee, side: THREE.DoubleSide}));
+      floor.position.z = -0.001; world.add(floor);
+      V.frame(Lx * 0.8, [0, 0, d * 0.6]);
+      const qz = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(0, 0, 1), ang);
+      const qx = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(1, 0, 0), ang);
+      play.set(a.t, (i, fr, t) => {
+        const j = Math.min(i + 1, a.t.length - 1), at = (arr) => arr[i] + (arr[j] - arr[i]) * fr;
+        // z-x-z Euler angles: R = Rz(φ) Rx(θ) Rz(ψ) (symmetry axis (sin θ sin φ, −sin θ cos φ, cos θ), as the API's axis samples)
+        topGroup.quaternion.copy(qz(at(a.phi)).multiply(qx(at(a.theta))).multiply(qz(at(a.psi))));
+        trace.geometry.setDrawRange(0, i + 1);
+        V.render();
+        tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
+      });
     });
     run();
 
@@ -63,19 +110,54 @@ export default {
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dz-submit'}, 'Spin')));
     const D = labSection(main, {title: 'The Dzhanibekov flip', form: df,
       intro: 'Spun about the middle principal axis with a small wobble (ω₁, ω₃), a free body flips over again and again.'});
+    const dbox = el('div', {class: 'view3d-box', id: 'dz-3d-box'});
     const dplot = svg('svg', {class: 'plot', id: 'dz-plot', role: 'img', 'aria-label': 'omega components against time'});
-    add(D.figure, dplot);
+    const dplay = player({label: 'The free body'});
+    add(D.figure, el('h3', {}, 'The body in 3-D'), dbox, dplay.root,
+      el('p', {class: 'muted'}, 'A uniform box with the same principal moments (thickness kept visible), its axes ',
+        el('span', {class: 'c1'}, 'e₁'), ', ', el('span', {class: 'c2'}, 'e₂ (the middle one, spun about)'), ', ',
+        el('span', {class: 'c3'}, 'e₃'), '; grey: the angular momentum L, fixed in space. Drawn from the API\'s attitude quaternions.'),
+      el('h3', {}, 'ω in the body frame'), dplot);
+    const DV = view3d(dbox, {label: 'The free rigid body in 3-D', id: 'dz-view'});
+    const body = new THREE.Group(), dworld = new THREE.Group();
+    DV.scene.add(dworld);
     const drun = runner(D, '/v1/rigid/rotate', () => ({moments: dm.map(c => val(c.input)), omega: dw.map(c => val(c.input)),
       t_end: val(dt.input), samples: 601}), (a) => {
       const om = a.omega || (a.samples && a.samples.omega) || [];
       const t = a.t || (a.samples && a.samples.t) || [];
+      const q = a.orientation || (a.samples && a.samples.orientation) || [];
       put(D.results, el('dl', {class: 'nums'}, a.flip ? [
         el('dt', {}, 'flip interval (exact)'), num('dz-flip', a.flip.exact_flip_interval, 's'),
         el('dt', {}, 'period (exact, elliptic)'), num('dz-period', a.flip.exact_period, 's'),
         el('dt', {}, 'flips seen'), el('dd', {id: 'dz-seen'}, String(a.flip.sign_changes_seen))]
         : [el('dt', {}, 'flips'), el('dd', {id: 'dz-seen'}, 'none: not spun near the middle axis')]));
+      const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
+      let Xs = null, tCur = 0;
       if (t.length && om.length) linePlot(dplot, [0, 1, 2].map(k => ({points: t.map((tt, i) => [tt, om[i][k]]), label: `ω${k + 1}`})),
-        {xlabel: 't [s]', ylabel: 'ω (body) [rad/s]'});
+        {xlabel: 't [s]', ylabel: 'ω (body) [rad/s]', name: 'free-body-omega', marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
+      // a box with these principal moments: side² ∝ I_j + I_k − I_i
+      const I = a.moments || dm.map(c => val(c.input));
+      const side = [0, 1, 2].map(k => Math.sqrt(Math.max(0, I[(k + 1) % 3] + I[(k + 2) % 3] - I[k])));
+      const big = Math.max(...side) || 1, dims = side.map(v => Math.max(v / big, 0.12));
+      dworld.clear(); body.clear();
+      const faces = [0xf08c00, 0xf08c00, 0x74b816, 0x74b816, 0x4dabf7, 0x4dabf7]
+        .map(c => new THREE.MeshStandardMaterial({color: c, transparent: true, opacity: 0.85}));
+      body.add(new THREE.Mesh(new THREE.BoxGeometry(...dims), faces));
+      body.add(axesArrows([[1, 0, 0], [0, 1, 0], [0, 0, 1]], [0.9, 0.9, 0.9], [0, 0, 0], undefined, false));
+      dworld.add(body);
+      const Ls = a.angular_momentum && a.angular_momentum[0];
+      if (Ls && Math.hypot(...Ls) > 0)
+        dworld.add(new THREE.ArrowHelper(new THREE.Vector3(...Ls).normalize(), new THREE.Vector3(), 1.3, 0x555555, 0.15, 0.07));
+      DV.frame(0.9);
+      const qa = new THREE.Quaternion(), qb = new THREE.Quaternion();
+      if (q.length === t.length) dplay.set(t, (i, fr, tt) => {
+        const j = Math.min(i + 1, q.length - 1); // API: [w, x, y, z], body to space
+        qa.set(q[i][1], q[i][2], q[i][3], q[i][0]); qb.set(q[j][1], q[j][2], q[j][3], q[j][0]);
+        body.quaternion.slerpQuaternions(qa, qb, fr);
+        DV.render();
+        tCur = tt; if (Xs) { cursor.setAttribute('x1', Xs(tt)); cursor.setAttribute('x2', Xs(tt)); }
+      });
     });
     drun();
   },
