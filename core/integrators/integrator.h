@@ -125,6 +125,7 @@ extern const struct mech_integrator mech_integrator_boris;            /* boris.c
 extern const struct mech_integrator mech_integrator_radau15;          /* radau15.c */
 extern const struct mech_integrator mech_integrator_msbdf;            /* gsl_msbdf.c */
 extern const struct mech_integrator mech_integrator_wisdom_holman;    /* wisdom_holman.c */
+extern const struct mech_integrator mech_integrator_wisdom_holman_corrected; /* wisdom_holman.c */
 
 /* Evaluate the first-order right-hand side, counting one evaluation and
  * checking the result is finite (MECH_ENUMERIC otherwise). */

@@ -24,6 +24,7 @@ const struct mech_integrator *const mech_integrator_table[] = {
     &mech_integrator_gauss6,
     &mech_integrator_boris,
     &mech_integrator_wisdom_holman,
+    &mech_integrator_wisdom_holman_corrected,
 };
 const size_t mech_integrator_count = sizeof mech_integrator_table / sizeof mech_integrator_table[0];
 

@@ -103,13 +103,14 @@ static double ho_error(const char *name, double dt, double rtol, double t_end,
 static void test_registry(void)
 {
     /* issue 3: 5 adaptive + 9 fixed-step methods, in catalog order; issue
-     * 16: wisdom_holman */
+     * 16: wisdom_holman and wisdom_holman_corrected */
     static const char *const names[] = {"rk8pd",  "rkck",     "rkf45",   "radau15",
                                         "msbdf",  "euler",    "symplectic_euler",
                                         "rk4",    "verlet",   "yoshida4", "yoshida6",
-                                        "gauss4", "gauss6",   "boris",   "wisdom_holman"};
-    static const int orders[] = {8, 5, 5, -1, -1, 1, 1, 4, 2, 4, 6, 4, 6, 2, 2};
-    CHECK_EQ_INT(mech_ode_method_count(), 15);
+                                        "gauss4", "gauss6",   "boris",   "wisdom_holman",
+                                        "wisdom_holman_corrected"};
+    static const int orders[] = {8, 5, 5, -1, -1, 1, 1, 4, 2, 4, 6, 4, 6, 2, 2, 2};
+    CHECK_EQ_INT(mech_ode_method_count(), 16);
     for (size_t i = 0; i < mech_ode_method_count(); i++) {
         const struct mech_integrator *m = mech_ode_method_at(i);
         CHECK(m != NULL && m->name && m->doc && strlen(m->doc) > 40);
