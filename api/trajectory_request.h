@@ -24,7 +24,7 @@
 /* The method lists must match the registry (checked by tests/api/test_integrators_catalog.c). */
 #define API_TRAJ_ADAPTIVE_METHODS "\"rk8pd\",\"rkck\",\"rkf45\",\"radau15\",\"msbdf\""
 #define API_TRAJ_FIXED_METHODS \
-    "\"euler\",\"symplectic_euler\",\"rk4\",\"verlet\",\"yoshida4\",\"yoshida6\",\"gauss4\",\"gauss6\",\"boris\""
+    "\"euler\",\"symplectic_euler\",\"rk4\",\"verlet\",\"yoshida4\",\"yoshida6\",\"gauss4\",\"gauss6\",\"boris\",\"wisdom_holman\",\"wisdom_holman_corrected\""
 #define API_TRAJ_ACCURACIES "\"draft\",\"balanced\",\"precise\",\"machine\""
 
 #define API_TRAJ_RTOL \

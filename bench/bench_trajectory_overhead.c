@@ -179,10 +179,10 @@ static int run_ode(const struct config *c, long orbits, struct outcome *o)
     double y0[6], u0[4], ys[2 * 6];
     initial_3d(y0);
     to_plane(y0, u0);
-    struct mech_ode_system sys = {6, ode_rhs3, ode_accel3, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3};
+    struct mech_ode_system sys = {6, ode_rhs3, ode_accel3, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3, NULL};
     if (c->planar)
         sys = (struct mech_ode_system){4, ode_rhs2, ode_accel2, MECH_ODE_VELOCITY_FREE,
-                                       NULL, NULL, 2};
+                                       NULL, NULL, 2, NULL};
     struct mech_ode_problem p = {
         .sys = &sys,
         .method = mech_ode_method_find(c->method),

@@ -241,6 +241,15 @@ static enum mech_status check_problem(const struct mech_ode_problem *p,
     if ((f & MECH_INTEGRATOR_SECOND_ORDER) && (!p->sys->accel || p->sys->dim % 2 != 0))
         return mech_error_set(err, MECH_EINVAL, "integrator/method",
                               "method %s needs a second-order system", p->method->name);
+    if ((f & MECH_INTEGRATOR_KEPLER_SPLIT) &&
+        (!p->sys->kepler || !p->sys->kepler->perturbation || !(p->sys->kepler->gm > 0.0) ||
+         !isfinite(p->sys->kepler->gm) || p->sys->particle_dim < 2 ||
+         p->sys->dim != 2 * p->sys->particle_dim))
+        return mech_error_set(err, MECH_EINVAL, "integrator/method",
+                              "method %s needs one body about one central mass with small "
+                              "perturbations (a Kepler split: exactly one central_gravity in "
+                              "an inertial frame); this system has none",
+                              p->method->name);
     if ((f & MECH_INTEGRATOR_SECOND_ORDER) &&
         (p->sys->particle_dim > 3 ||
          (p->sys->particle_dim > 0 && (p->sys->dim / 2) % p->sys->particle_dim != 0)))

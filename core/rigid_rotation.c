@@ -368,7 +368,7 @@ enum mech_status mech_rigid_rotate(const struct mech_rigid_problem *p,
         c.Lscale = fmax(c.Lscale, mech_vec3_norm(p->torque) * p->t_end);
     if (c.tf == MECH_RIGID_TORQUE_BODY) res->max_L_vector_drift = NAN;
 
-    struct mech_ode_system sys = {dim, rr_rhs, NULL, 0, &c, NULL, 0};
+    struct mech_ode_system sys = {dim, rr_rhs, NULL, 0, &c, NULL, 0, NULL};
     struct mech_ode_problem op;
     memset(&op, 0, sizeof op);
     op.sys = &sys;

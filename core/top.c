@@ -356,7 +356,7 @@ enum mech_status mech_top_integrate(const struct mech_top_problem *p,
         free(c.have);
         return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory for %zu samples", n);
     }
-    struct mech_ode_system sys = {dim, top_rhs, NULL, 0, &c, NULL, 0};
+    struct mech_ode_system sys = {dim, top_rhs, NULL, 0, &c, NULL, 0, NULL};
     struct mech_ode_problem op;
     memset(&op, 0, sizeof op);
     op.sys = &sys;

@@ -34,6 +34,10 @@ struct traj_ctx {
     int simple;
     double fvec[MECH_TRAJECTORY_MAX_FORCES][3];
     double fixed_dt;      /* step of a fixed-step method, 0 for adaptive ones */
+    /* Kepler split (wisdom_holman): index of the one central_gravity force
+     * in an inertial frame, -1 if the scene has no split; kepler_exact when
+     * the method moves that force's part exactly (no resolution check) */
+    int kepler_index, kepler_exact;
     struct mech_error *err;
     /* observer accumulators */
     double term_max[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
@@ -503,6 +507,7 @@ static enum mech_status check_resolution(const struct traj_ctx *c, struct mech_v
     for (size_t i = 0; i < c->p->n_forces; i++) {
         const struct mech_force *f = &c->p->forces[i];
         if (f->type != MECH_FORCE_CENTRAL_GRAVITY) continue;
+        if (c->kepler_exact && (int)i == c->kepler_index) continue; /* exact Kepler drift */
         double d = mech_vec3_norm(mech_vec3_sub(r, f->u.central_gravity.center));
         if (dt * speed > d || dt * dt * f->u.central_gravity.gm > d * d * d)
             return mech_error_set(c->err, MECH_ENUMERIC, "integrator/dt",
@@ -632,6 +637,68 @@ static double plane_event(double t, const double *u, void *params)
     double y[6];
     plane_expand(params, u, y);
     return traj_event(t, y, params);
+}
+
+/* ---- the Kepler split's perturbation (wisdom_holman) -------------------------
+ * Every force but the one central_gravity (inertial frame: no fictitious
+ * term), so accel = Kepler term + perturbation term by term. */
+static enum mech_status kepler_perturbation3(double t, const double *q, const double *v,
+                                             double *a, void *params)
+{
+    const struct traj_ctx *c = params;
+    const struct mech_vec3 r = mech_vec3_make(q[0], q[1], q[2]);
+    const struct mech_vec3 vv = mech_vec3_make(v[0], v[1], v[2]);
+    struct mech_vec3 acc = mech_vec3_make(0.0, 0.0, 0.0);
+    for (size_t i = 0; i < c->p->n_forces; i++) {
+        if ((int)i == c->kepler_index) continue;
+        struct mech_vec3 ai;
+        enum mech_status st = force_accel(c, i, r, vv, t, &ai);
+        if (st != MECH_OK) return st;
+        acc = mech_vec3_add(acc, ai);
+    }
+    if (!mech_vec3_isfinite(acc) || !mech_vec3_isfinite(r) || !mech_vec3_isfinite(vv))
+        return nonfinite_error(c, t, r, vv);
+    a[0] = acc.x;
+    a[1] = acc.y;
+    a[2] = acc.z;
+    return MECH_OK;
+}
+
+static enum mech_status kepler_perturbation2(double t, const double *q, const double *v,
+                                             double *a, void *params)
+{
+    const struct traj_ctx *c = params;
+    double u[4] = {q[0], q[1], v[0], v[1]}, y[6], a3[3];
+    plane_expand(c, u, y);
+    enum mech_status st = kepler_perturbation3(t, y, y + 3, a3, params);
+    if (st != MECH_OK) return st;
+    const struct mech_vec3 av = mech_vec3_make(a3[0], a3[1], a3[2]);
+    a[0] = mech_vec3_dot(av, c->e1);
+    a[1] = mech_vec3_dot(av, c->e2);
+    return MECH_OK;
+}
+
+static int scene_velocity_dependent(const struct traj_ctx *c);
+
+/* Fill ks with c's Kepler split in the integration's coordinates (2-D: the
+ * centre projected on e1, e2). c->kepler_index >= 0. */
+static void kepler_split_fill(const struct traj_ctx *c, struct mech_ode_kepler_split *ks)
+{
+    const struct mech_force *f = &c->p->forces[c->kepler_index];
+    const struct mech_vec3 ctr = f->u.central_gravity.center;
+    memset(ks, 0, sizeof *ks);
+    ks->gm = f->u.central_gravity.gm;
+    if (c->dim2) {
+        ks->center[0] = mech_vec3_dot(ctr, c->e1);
+        ks->center[1] = mech_vec3_dot(ctr, c->e2);
+        ks->perturbation = kepler_perturbation2;
+    } else {
+        ks->center[0] = ctr.x;
+        ks->center[1] = ctr.y;
+        ks->center[2] = ctr.z;
+        ks->perturbation = kepler_perturbation3;
+    }
+    ks->velocity_dependent = scene_velocity_dependent(c);
 }
 
 static enum mech_status check_vec(struct mech_vec3 v, const char *param, struct mech_error *err)
@@ -802,6 +869,26 @@ static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *c
     return have;
 }
 
+/* The Kepler split of a scene (wisdom_holman, mech/ode.h): the index of its
+ * one central_gravity force when the frame is inertial and exactly one
+ * central_gravity acts (the other forces are the perturbation), else -1 with
+ * *why (may be NULL) saying what is missing. */
+static int kepler_split_index(const struct mech_trajectory_problem *p, const char **why)
+{
+    int idx = -1, n = 0;
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) {
+            idx = (int)i;
+            n++;
+        }
+    const char *w = NULL;
+    if (p->frame.type != MECH_FRAME_INERTIAL) w = "the frame is not inertial";
+    else if (n == 0) w = "the scene has no central_gravity force";
+    else if (n > 1) w = "the scene has more than one";
+    if (why) *why = w;
+    return w ? -1 : idx;
+}
+
 static void ctx_init(struct traj_ctx *c, const struct mech_trajectory_problem *p, double fixed_dt,
                      struct mech_error *err)
 {
@@ -819,6 +906,7 @@ static void ctx_init(struct traj_ctx *c, const struct mech_trajectory_problem *p
     c->euler = c->noninertial && (p->fictitious & MECH_FICTITIOUS_EULER);
     c->translational = c->noninertial && (p->fictitious & MECH_FICTITIOUS_TRANSLATIONAL);
     c->fixed_dt = fixed_dt;
+    c->kepler_index = kepler_split_index(p, NULL);
     c->track_l = angular_momentum_center(c, &c->lcenter);
     c->r_last = p->position;
     ctx_fast_setup(c);
@@ -989,7 +1077,7 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     /* one body: its 3 (planar: 2) coordinates are one particle */
     struct mech_ode_system sys = {6, traj_rhs, traj_accel,
                                   velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c,
-                                  dissipative ? NULL : traj_lorentz, 3};
+                                  dissipative ? NULL : traj_lorentz, 3, NULL};
     double y0[6] = {p->position.x, p->position.y, p->position.z,
                     p->velocity.x, p->velocity.y, p->velocity.z};
     double u0[4], u_stop[4] = {0, 0, 0, 0};
@@ -997,7 +1085,8 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     if (c->dim2) {
         /* planar: 4 components, r = u1 e1 + u2 e2 */
         sys = (struct mech_ode_system){4, plane_rhs, plane_accel,
-                                       velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c, NULL, 2};
+                                       velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c, NULL, 2,
+                                       NULL};
         u0[0] = mech_vec3_dot(p->position, c->e1);
         u0[1] = mech_vec3_dot(p->position, c->e2);
         u0[2] = mech_vec3_dot(p->velocity, c->e1);
@@ -1008,6 +1097,12 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     if (c->simple) { /* the force loop's fast path, called directly (issue 16) */
         sys.rhs = c->dim2 ? simple_rhs2 : simple_rhs3;
         sys.accel = c->dim2 ? simple_accel2 : simple_accel3;
+    }
+    struct mech_ode_kepler_split ks;
+    if (c->kepler_index >= 0) { /* one central body: offer the Kepler split */
+        kepler_split_fill(c, &ks);
+        sys.kepler = &ks;
+        c->kepler_exact = mech_ode_method_describe(method).kepler_split;
     }
     struct mech_ode_problem op = {
         .sys = &sys,
@@ -1131,6 +1226,12 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                               p->method ? p->method : "(null)");
     if (!budget) return mech_error_set(err, MECH_EINVAL, NULL, "no compute budget given");
     const struct mech_ode_method_info mi = mech_ode_method_describe(method);
+    const char *no_split = NULL;
+    if (mi.kepler_split && kepler_split_index(p, &no_split) < 0)
+        return mech_error_set(err, MECH_EINVAL, "integrator/method",
+                              "%s needs exactly one central_gravity force in an inertial "
+                              "frame, the other forces being small perturbations; %s",
+                              mi.name, no_split);
 
     struct traj_ctx c;
     ctx_init(&c, p, mi.adaptive ? 0.0 : p->opt.dt, err);

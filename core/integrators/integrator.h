@@ -66,6 +66,7 @@
 #define MECH_INTEGRATOR_SYMMETRIC 0x8u    /* time-reversible (symmetric) method */
 #define MECH_INTEGRATOR_SECOND_ORDER 0x10u/* needs sys->accel (y = (q, v) layout) */
 #define MECH_INTEGRATOR_EXPLICIT 0x20u    /* no implicit stage equations */
+#define MECH_INTEGRATOR_KEPLER_SPLIT 0x40u/* needs sys->kepler (one central body) */
 
 struct mech_integrator {
     const char *name;  /* stable API name: "rk8pd", "verlet", ... */
@@ -123,6 +124,8 @@ extern const struct mech_integrator mech_integrator_gauss6;           /* gauss_l
 extern const struct mech_integrator mech_integrator_boris;            /* boris.c */
 extern const struct mech_integrator mech_integrator_radau15;          /* radau15.c */
 extern const struct mech_integrator mech_integrator_msbdf;            /* gsl_msbdf.c */
+extern const struct mech_integrator mech_integrator_wisdom_holman;    /* wisdom_holman.c */
+extern const struct mech_integrator mech_integrator_wisdom_holman_corrected; /* wisdom_holman.c */
 
 /* Evaluate the first-order right-hand side, counting one evaluation and
  * checking the result is finite (MECH_ENUMERIC otherwise). */

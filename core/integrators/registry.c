@@ -23,6 +23,8 @@ const struct mech_integrator *const mech_integrator_table[] = {
     &mech_integrator_gauss4,
     &mech_integrator_gauss6,
     &mech_integrator_boris,
+    &mech_integrator_wisdom_holman,
+    &mech_integrator_wisdom_holman_corrected,
 };
 const size_t mech_integrator_count = sizeof mech_integrator_table / sizeof mech_integrator_table[0];
 
@@ -51,6 +53,7 @@ struct mech_ode_method_info mech_ode_method_describe(const struct mech_integrato
         .implicit = (m->flags & MECH_INTEGRATOR_EXPLICIT) == 0,
         .symmetric = (m->flags & MECH_INTEGRATOR_SYMMETRIC) != 0,
         .second_order = (m->flags & MECH_INTEGRATOR_SECOND_ORDER) != 0,
+        .kepler_split = (m->flags & MECH_INTEGRATOR_KEPLER_SPLIT) != 0,
         .doc = m->doc,
         .reference = m->reference ? m->reference : "",
     };

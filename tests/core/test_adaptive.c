@@ -104,7 +104,7 @@ struct scene {
 static struct scene scene_ho(void)
 {
     struct scene s = {"oscillator",
-                      {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1},
+                      {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1, NULL},
                       ho_exact,
                       {1.0, 0.0},
                       2.0 * PI};
@@ -113,7 +113,7 @@ static struct scene scene_ho(void)
 static struct scene scene_kepler(void)
 {
     struct scene s = {"kepler",
-                      {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3},
+                      {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3, NULL},
                       kep_exact,
                       {1.0 - KEP_E, 0.0, 0.0, 0.0, sqrt((1.0 + KEP_E) / (1.0 - KEP_E)), 0.0},
                       2.0 * PI};
@@ -286,7 +286,7 @@ static void damped_exact(double t, double *y)
 static void test_radau15_velocity_dependent(void)
 {
     struct scene sc = {
-        "damped", {2, damped_rhs, damped_accel, 0, NULL, NULL, 1}, damped_exact, {1.0, 0.0},
+        "damped", {2, damped_rhs, damped_accel, 0, NULL, NULL, 1, NULL}, damped_exact, {1.0, 0.0},
         2.0 * PI};
     static struct run r;
     run_scene(&sc, "radau15", 1e-12, 0.0, 5.0, NS, &r);
@@ -314,7 +314,7 @@ static void stiff_exact(double t, double *y)
 
 static void test_stiff(void)
 {
-    struct scene sc = {"stiff", {1, stiff_rhs, NULL, 0, NULL, NULL, 0}, stiff_exact, {0.0}, 1.0};
+    struct scene sc = {"stiff", {1, stiff_rhs, NULL, 0, NULL, NULL, 0, NULL}, stiff_exact, {0.0}, 1.0};
     const double rtols[] = {1e-5, 1e-7, 1e-9};
     for (int k = 0; k < 3; k++) {
         static struct run rb, rr;
@@ -362,9 +362,9 @@ static enum mech_status nan_rhs(double t, const double *y, double *dydt, void *p
 static void test_failures_and_budgets(void)
 {
     struct mech_ode_system failing = {2, fail_rhs, fail_accel, MECH_ODE_VELOCITY_FREE,
-                                      NULL, NULL, 1};
-    struct mech_ode_system nan_sys = {2, nan_rhs, nan_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
-    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
+                                      NULL, NULL, 1, NULL};
+    struct mech_ode_system nan_sys = {2, nan_rhs, nan_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1, NULL};
+    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1, NULL};
     for (int m = 0; m < N_ADAPTIVE; m++) {
         double y0[2] = {1.0, 0.0}, ys[2 * 5];
         struct mech_ode_problem p = {0};
@@ -409,7 +409,7 @@ static void test_failures_and_budgets(void)
         printf("%s: failing rhs, NaN, step budget and deadline stop cleanly\n", ADAPTIVE[m]);
     }
     /* radau15 needs the second-order form */
-    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, NULL, NULL, 0};
+    struct mech_ode_system first_order = {2, ho_rhs, NULL, 0, NULL, NULL, 0, NULL};
     double y0[2] = {1.0, 0.0};
     struct mech_ode_problem p = {0};
     p.sys = &first_order;
@@ -490,7 +490,7 @@ static double x_event(double t, const double *y, void *p)
 }
 static void test_event(void)
 {
-    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1};
+    struct mech_ode_system ho = {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1, NULL};
     for (int m = 0; m < N_ADAPTIVE; m++) {
         double y0[2] = {1.0, 0.0}, ystop[2], ts[11];
         struct mech_ode_problem p = {0};
@@ -537,7 +537,7 @@ static void test_scales(void)
     for (int k = 0; k < 2; k++)
         for (int m = 0; m < 2; m++) {
             double w = ws[k];
-            struct mech_ode_system sys = {2, wo_rhs, wo_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1};
+            struct mech_ode_system sys = {2, wo_rhs, wo_accel, MECH_ODE_VELOCITY_FREE, &w, NULL, 1, NULL};
             double y0[2] = {1.0, 0.0}, ys[2 * 2];
             struct mech_ode_problem p = {0};
             p.sys = &sys;

@@ -150,7 +150,7 @@ static void test_against_rk8pd(void)
     struct ir P = {{0.0, p.omega_magnitude * cos(lat), p.omega_magnitude * sin(lat)}, 67.0, G0, 1};
     double y0[6] = {67.0 * sin(al) * cos(az), 67.0 * sin(al) * sin(az), -67.0 * cos(al),
                     -0.05 * sin(az),          0.05 * cos(az),           0.0};
-    struct mech_ode_system sys = {6, ir_rhs, NULL, 0, &P, NULL, 0};
+    struct mech_ode_system sys = {6, ir_rhs, NULL, 0, &P, NULL, 0, NULL};
     double sy[2 * 6];
     struct mech_ode_problem op;
     memset(&op, 0, sizeof op);

@@ -39,7 +39,7 @@ static int integrate(const double I[3], int axis, double spin, double delta, dou
     y0[b] = delta;
     double *ys = malloc(n * 3 * sizeof *ys);
     if (!ys) return -1;
-    struct mech_ode_system sys = {3, euler_rhs, NULL, 0, (void *)I, NULL, 0};
+    struct mech_ode_system sys = {3, euler_rhs, NULL, 0, (void *)I, NULL, 0, NULL};
     struct mech_ode_problem p = {0};
     p.sys = &sys;
     p.method = mech_ode_method_find("rk8pd");

@@ -46,6 +46,24 @@ typedef enum mech_status (*mech_ode_accel_fn)(double t, const double *q, const d
 typedef enum mech_status (*mech_ode_lorentz_fn)(double t, const double *q, double *e, double *w,
                                                 void *params);
 
+/* Optional Kepler split of the second-order form, for Wisdom–Holman methods
+ * (a scene dominated by one central body): with x = (q_0 .. q_{nd-1}),
+ * nd = particle_dim (2 or 3) and nq = dim/2 = nd (ONE particle),
+ *   a(t, q, v) = -gm (x - center) / |x - center|^3 + perturbation(t, q, v)
+ * exactly. `perturbation` writes the other forces' acceleration (nd
+ * components, same units as accel) and returns a status like accel; it must
+ * agree with accel minus the Kepler term. velocity_dependent != 0 when the
+ * perturbation depends on v (drag, a magnetic field). center[2] is ignored
+ * when nd = 2. Owned by whoever builds the system (mech_ode_solve borrows). */
+typedef enum mech_status (*mech_ode_perturbation_fn)(double t, const double *q, const double *v,
+                                                     double *a, void *params);
+struct mech_ode_kepler_split {
+    double gm;        /* > 0, finite: G M of the central body (m^3 s^-2) */
+    double center[3]; /* the fixed centre, in the system's coordinates */
+    mech_ode_perturbation_fn perturbation; /* required */
+    int velocity_dependent;
+};
+
 /* mech_ode_system.flags */
 #define MECH_ODE_VELOCITY_FREE 0x1u /* accel does not depend on v (lets Verlet be explicit) */
 
@@ -67,6 +85,8 @@ struct mech_ode_system {
      * put under one norm. Ignored by first-order-only methods; a value that
      * does not fit is MECH_EINVAL from mech_ode_solve. */
     size_t particle_dim;
+    /* optional Kepler split (wisdom_holman); NULL if none, borrowed */
+    const struct mech_ode_kepler_split *kepler;
 };
 
 struct mech_ode_options {
@@ -105,6 +125,7 @@ struct mech_ode_method_info {
     int implicit;     /* 1: solves implicit stage equations */
     int symmetric;    /* 1: time-reversible */
     int second_order; /* 1: needs the second-order form q' = v, v' = a(t, q, v) */
+    int kepler_split; /* 1: needs the Kepler split (one body about one central mass) */
     const char *doc;
     const char *reference;
 };

@@ -38,6 +38,27 @@ enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0, struct me
                                        double t, struct mech_vec3 *r, struct mech_vec3 *v,
                                        struct mech_error *err);
 
+/* Kepler drift for splitting methods (integrators/wisdom_holman.c): the
+ * same motion as mech_kepler_propagate (centre at the origin of r0; r0, v0,
+ * r, v are 3-arrays; r, v may not alias r0, v0 partially but may be the same
+ * arrays), built for one call per step of a small fraction of an orbit:
+ * Stumpff c2, c3 by series (Horner), a second-order series first guess of
+ * the universal anomaly s ~ dt/r0 - (r0.v0) dt^2/(2 r0^3), Halley's method
+ * until a correction is below 1e-7 |s| (the next would be below round-off),
+ * at most 12 evaluations (3 for a step of 1/100 orbit). A step that does not
+ * settle (a long step, a near-radial pericentre passage) is handed to
+ * mech_kepler_propagate's bracketed solver, so any dt, any conic gets the
+ * round-off answer or a status, never an unconverged one. A radial orbit
+ * (no angular momentum) that reaches the centre within dt is MECH_ENUMERIC
+ * (not continued as the universal variables' reflection). The result
+ * depends on (gm, r0, v0, dt) only. *newton_iterations (may be NULL) gets
+ * the evaluations used (bookkeeping for tests and benches).
+ * Statuses: MECH_OK; those of mech_kepler_propagate (MECH_EINVAL bad
+ * arguments, MECH_ENUMERIC radial orbit through the centre / non-finite). */
+enum mech_status mech_kepler_drift(double gm, const double r0[3], const double v0[3], double dt,
+                                   double r[3], double v[3], int *newton_iterations,
+                                   struct mech_error *err);
+
 /* Isotropic harmonic oscillator about `anchor` with uniform acceleration g:
  * r'' = -omega^2 (r - anchor) + g, omega >= 0 (omega = 0: free fall). Exact:
  *   r - a = (r0 - a) cos wt + v0 sin(wt)/w + g (1 - cos wt)/w^2,
