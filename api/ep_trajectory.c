@@ -94,7 +94,9 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st =
-        (t && pos && vel) ? mech_trajectory_integrate(&rq.p, &c->budget, &r, &e) : MECH_ENOMEM;
+        !(t && pos && vel) ? MECH_ENOMEM
+        : rq.closed_form   ? mech_trajectory_closed_form_ex(&rq.p, &r, &rq.evidence, &e)
+                           : mech_trajectory_integrate(&rq.p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         free(t);
         free(pos);
