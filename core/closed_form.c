@@ -469,7 +469,8 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     if (c.kepler) {
         t_collide = kepler_collision_time(c.ref.gm, mech_vec3_sub(c.ref.r0, c.ref.center),
                                           c.ref.v0);
-        if (t_collide < t_hi) t_hi = t_collide;
+        /* the scan stops just short of the centre, where the solution is singular */
+        if (t_collide <= t_hi) t_hi = t_collide * (1.0 - 1e-9);
     }
 
     /* The stop event, before any sample is written. */
@@ -478,8 +479,10 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
         double grid[CF_GRID_MAX];
         const size_t ng = cf_grid(&c, t_hi, grid);
         int found = 0;
-        if ((st = cf_scan(&c, grid, ng, &found, &t_stop)) != MECH_OK) return st;
-        if (!found) t_stop = INFINITY;
+        st = cf_scan(&c, grid, ng, &found, &t_stop);
+        if (st != MECH_OK && !(isfinite(t_collide) && t_collide <= p->t_end)) return st;
+        if (st != MECH_OK || !found) t_stop = INFINITY;
+        if (err && st != MECH_OK) mech_error_clear(err); /* replaced by the message below */
     }
     if (t_collide <= p->t_end && !(t_stop < t_collide))
         return mech_error_set(err, MECH_ENUMERIC, "particle/velocity",

@@ -155,7 +155,8 @@ static struct mech_mat3 rcf_euler(const struct rcf_ctx *c, const double u[3], do
     const double lc = c->J[2] * u[2] / c->Lmag;
     const double st = hypot(la, lb);
     const double ct = lc;
-    const double sp = la / st, cp = lb / st;
+    /* st > 0 whenever L is not along c (steady rotations take another path) */
+    const double sp = st > 0.0 ? la / st : 0.0, cp = st > 0.0 ? lb / st : 1.0;
     return mech_mat3_mul(mech_mat3_mul(rot_z(cp, sp), rot_x(ct, st)), rot_z(cos(phi), sin(phi)));
 }
 
