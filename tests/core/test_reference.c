@@ -484,6 +484,38 @@ static void test_recognition_issue6(void)
     CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_NONE);
 }
 
+/* 1e4 periods of the oscillator through the reference (issue 16): the phase
+ * omega t must not lose n eps over n periods (the old cos(sqrt(k/m) t) was off
+ * by 4e-13 here); against cos/sin in long double. */
+static void test_harmonic_long(void)
+{
+    const double k = 3.7, m = 1.3;
+    struct mech_force f = {.type = MECH_FORCE_SPRING};
+    f.u.spring.k = k;
+    struct mech_trajectory_problem p;
+    memset(&p, 0, sizeof p);
+    p.mass = m;
+    p.position = mech_vec3_make(0.8, 0, 0);
+    p.velocity = mech_vec3_make(0.1, 0, 0);
+    p.forces = &f;
+    p.n_forces = 1;
+    struct mech_trajectory_reference ref;
+    CHECK(mech_trajectory_reference_find(&p, &ref) == MECH_REFERENCE_EXACT);
+    const long double w = sqrtl((long double)k / (long double)m);
+    const double T = (double)(2 * 3.14159265358979323846264338327950288L / w);
+    double worst = 0.0;
+    for (int i = 0; i <= 200; i++) {
+        const double t = 1e4 * T * i / 200.0;
+        struct mech_vec3 r, v;
+        struct mech_error err;
+        CHECK(mech_trajectory_reference_eval(&ref, t, &r, &v, NULL, &err) == MECH_OK);
+        const long double x = 0.8L * cosl(w * t) + 0.1L * sinl(w * t) / w;
+        worst = fmax(worst, fabs(r.x - (double)x));
+    }
+    printf("harmonic reference over 1e4 periods: max error %.3g\n", worst);
+    CHECK(worst < 2e-15);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -495,6 +527,7 @@ int main(void)
     test_kepler_vs_rk8pd();
     test_kepler_near_parabolic();
     test_harmonic();
+    test_harmonic_long();
     test_drag();
     test_coriolis();
     TEST_MAIN_END();
