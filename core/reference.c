@@ -47,6 +47,47 @@ static void stumpff(double z, double c[4])
     }
 }
 
+/* ---- double-double helpers (Dekker, Knuth; fma for the products) ---------- */
+
+/* a + b = s + e exactly */
+static void two_sum(double a, double b, double *s, double *e)
+{
+    *s = a + b;
+    const double bb = *s - a;
+    *e = (a - (*s - bb)) + (b - bb);
+}
+
+/* |u|^2 as hi + lo (the rounding errors of the squares and sums kept) */
+static void sum_squares_dd(struct mech_vec3 u, double *hi, double *lo)
+{
+    const double px = u.x * u.x, py = u.y * u.y, pz = u.z * u.z;
+    const double ex = fma(u.x, u.x, -px), ey = fma(u.y, u.y, -py), ez = fma(u.z, u.z, -pz);
+    double s1, e1, s2, e2;
+    two_sum(px, py, &s1, &e1);
+    two_sum(s1, pz, &s2, &e2);
+    *hi = s2;
+    *lo = ex + ey + ez + e1 + e2;
+}
+
+/* beta = 2 gm / |r0| - |v0|^2 (Danby's alpha; gm / a). Near parabolic the two
+ * terms nearly cancel (beta / (2 gm / r0) ~ 1 - e), so each is formed in
+ * double-double and the difference is taken on the high parts (exact by
+ * Sterbenz when they are within a factor 2) plus the low parts: beta to a few
+ * eps relative instead of eps / (1 - e) (at e = 0.99999 the period was off by
+ * ~5e-11 relative, its position near periapsis by as much). */
+static double kepler_beta(double gm, struct mech_vec3 r0v, struct mech_vec3 v0v)
+{
+    double r2, r2_lo, v2, v2_lo;
+    sum_squares_dd(r0v, &r2, &r2_lo);
+    sum_squares_dd(v0v, &v2, &v2_lo);
+    const double r0 = sqrt(r2);
+    const double r0_lo = (fma(-r0, r0, r2) + r2_lo) / (2.0 * r0);
+    const double g2 = 2.0 * gm; /* exact */
+    const double q = g2 / r0;
+    const double q_lo = (fma(-q, r0, g2) - q * r0_lo) / r0;
+    return (q - v2) + (q_lo - v2_lo);
+}
+
 struct kepler_eq {
     double r0, sigma0, gm, beta, t; /* sigma0 = r0.v0, beta = gm (2/r0 - v0^2/gm) */
 };
@@ -88,7 +129,7 @@ enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0v,
     k.sigma0 = mech_vec3_dot(r0v, v0v);
     k.gm = gm;
     /* beta = gm / a = 2 gm / r0 - v^2 (Danby's alpha), > 0 bound, 0 parabolic. */
-    k.beta = 2.0 * gm / r0 - mech_vec3_dot(v0v, v0v);
+    k.beta = kepler_beta(gm, r0v, v0v);
     k.t = t;
 
     double lo, hi;

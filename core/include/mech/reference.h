@@ -29,8 +29,8 @@
  * (its derivative is r(s) > 0, so it is monotonic), to round-off. Bound
  * orbits are first reduced by whole periods (fmod, exact), so 1e5 orbits cost
  * the same as one; the reduction's error is that of the period computed from
- * the initial state (~1.5 |de/a|/a relative per orbit, i.e. ~n eps for n
- * orbits away from e = 1).
+ * the initial state (~n eps for n orbits; beta = 2 gm/r0 - v0^2 is formed in
+ * double-double, so near e = 1 its cancellation costs no digits).
  * gm > 0 finite; r0 != 0 finite; v0 finite; t finite (either sign).
  * Statuses: MECH_OK; MECH_EINVAL (bad arguments); MECH_ENUMERIC (a radial
  * orbit through the centre before t, or a non-finite result). */
