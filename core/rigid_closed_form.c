@@ -11,7 +11,8 @@
  * elliptic solution (largest moment when L^2 > 2 E I2, smallest otherwise),
  * the symmetry axis of a symmetric body. phi is integrated by adaptive
  * Gauss–Legendre quadrature over one period of phi' (once) and the remainder,
- * to round-off; a symmetric body has phi' = |L| / J_a exactly (regular
+ * to round-off (its values at 16 points of the period tabulated once, so a
+ * sample costs at most one piece's quadrature); a symmetric body has phi' = |L| / J_a exactly (regular
  * precession), a steady rotation the elementary rotation about omega.
  */
 #include "mech/closed_form.h"
@@ -33,6 +34,7 @@ struct rcf_ctx {
     double T;            /* period of phi' (s); 0: phi' constant */
     double phidot_const; /* symmetric: |L| / J_a */
     double x[RCF_GL_N], w[RCF_GL_N];
+    double table[RCF_PIECES_PER_PERIOD + 1]; /* integral of phi' over [0, j T / 16] */
     int evaluations;
     struct mech_error *err;
 };
@@ -267,7 +269,17 @@ enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
             c.phidot_const = c.Lmag / c.J[0];
         } else {
             c.T = c.ex.flip_interval; /* phi' depends on squares: period 2K / lambda */
-            if ((st = phi_integral(&c, 0.0, c.T, &Phi)) != MECH_OK) return st;
+            /* the integral at the 16 piece boundaries of one period, once */
+            c.table[0] = 0.0;
+            for (int j = 0; j < RCF_PIECES_PER_PERIOD; j++) {
+                double d;
+                const double a = c.T * j / RCF_PIECES_PER_PERIOD;
+                const double b = j + 1 == RCF_PIECES_PER_PERIOD ? c.T
+                                                                : c.T * (j + 1) / RCF_PIECES_PER_PERIOD;
+                if ((st = phi_integral(&c, a, b, &d)) != MECH_OK) return st;
+                c.table[j + 1] = c.table[j] + d;
+            }
+            Phi = c.table[RCF_PIECES_PER_PERIOD];
         }
     }
 
@@ -327,8 +339,16 @@ enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
                     double d;
                     if ((st = phi_integral(&c, r_prev, r, &d)) != MECH_OK) return st;
                     Ir = I_prev + d;
-                } else if ((st = phi_integral(&c, 0.0, r, &Ir)) != MECH_OK) {
-                    return st;
+                } else {
+                    /* from the nearest table boundary below r: one piece at most */
+                    int j = (int)floor(r / c.T * RCF_PIECES_PER_PERIOD);
+                    if (j < 0) j = 0;
+                    if (j > RCF_PIECES_PER_PERIOD) j = RCF_PIECES_PER_PERIOD;
+                    const double rj = j == RCF_PIECES_PER_PERIOD ? c.T
+                                                                 : c.T * j / RCF_PIECES_PER_PERIOD;
+                    double d = 0.0;
+                    if (r > rj && (st = phi_integral(&c, rj, r, &d)) != MECH_OK) return st;
+                    Ir = c.table[j] + d;
                 }
                 n_prev = (long)kk;
                 r_prev = r;
