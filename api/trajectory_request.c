@@ -396,7 +396,8 @@ static json_t *closed_form_selection(struct api_call *c, const struct api_traj_r
              !strcmp(ev->solution, "kepler") ? "universal variables, time reduced by whole periods"
              : !strcmp(ev->solution, "harmonic_oscillator")
                  ? "cos/sin with the phase in double-double"
-                 : "expm1 forms, series at small gamma t");
+             : !strcmp(ev->solution, "uniform_gravity") ? "r0 + v0 t + g t^2/2"
+                                                        : "expm1 forms, series at small gamma t");
     json_object_set_new_nocheck(cf, "why", json_string(why));
     json_array_append_new(cands, cf);
     json_t *in = json_object();
