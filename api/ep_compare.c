@@ -73,7 +73,9 @@ static const char compare_example[] =
 static const char compare_description[] =
     "Runs one /v1/trajectory scene (request) with several integrator settings - runs: a list "
     "of integrator blocks as in /v1/trajectory (a method, an accuracy preset or a "
-    "target_error), or sweep: methods x tolerances (rtol of the adaptive methods, atol = rtol "
+    "target_error; a preset or target_error on a scene with an exact solution is answered "
+    "from it, method closed_form with 0 steps, unless the block says \"closed_form\": false), "
+    "or sweep: methods x tolerances (rtol of the adaptive methods, atol = rtol "
     "x the scene's scale as for target_error) and methods x dts (the fixed-step methods) - "
     "at most 64 runs (the request's own integrator, error_estimate and cost are ignored). Every run is compared with the best reference available: the scene's "
     "exact solution (kepler, harmonic_oscillator, uniform_gravity[_linear_drag]) or else a "
@@ -111,7 +113,10 @@ static enum mech_status run_traj(struct api_traj_request *rq, struct mech_budget
     r->velocity = vel;
     mech_error_clear(e);
     double c0 = mech_cpu_seconds();
-    enum mech_status st = mech_trajectory_integrate(&rq->p, b, r, e);
+    /* a row that selects by accuracy on a scene with a closed form is answered
+     * from it, as /v1/trajectory would (0 steps) */
+    enum mech_status st = rq->closed_form ? mech_trajectory_closed_form_ex(&rq->p, r, &rq->evidence, e)
+                                          : mech_trajectory_integrate(&rq->p, b, r, e);
     *cpu = mech_cpu_seconds() - c0;
     return st;
 }
@@ -347,12 +352,17 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         }
         json_t *row = json_object();
         json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
-        json_t *set = api_traj_settings(c, &rq.p);
-        json_object_update(row, set);
-        json_decref(set);
-        const struct mech_integrator *mm = mech_ode_method_find(rq.p.method);
-        json_object_set_new_nocheck(row, "order",
-                                    json_integer(mm ? mech_ode_method_describe(mm).order : 0));
+        if (rq.closed_form) {
+            json_object_set_new_nocheck(row, "method", json_string("closed_form"));
+            json_object_set_new_nocheck(row, "order", json_null());
+        } else {
+            json_t *set = api_traj_settings(c, &rq.p);
+            json_object_update(row, set);
+            json_decref(set);
+            const struct mech_integrator *mm = mech_ode_method_find(rq.p.method);
+            json_object_set_new_nocheck(row, "order",
+                                        json_integer(mm ? mech_ode_method_describe(mm).order : 0));
+        }
         struct mech_budget b = c->budget;
         b.max_steps = c->budget.max_steps - used;
         enum mech_status st;

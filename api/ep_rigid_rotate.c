@@ -11,6 +11,7 @@
 
 #include "catalog.h"
 #include "integrator_block.h"
+#include "mech/closed_form.h"
 #include "mech/attitude.h"
 #include "mech/rigid_rotation.h"
 #include "mech/rotation.h"
@@ -78,6 +79,16 @@ static const char description[] =
     "/v1/integrators); methods for second-order systems (verlet, yoshida4/6, "
     "symplectic_euler, boris, radau15) do not apply and are refused; accuracy presets pick "
     "rk8pd (rkf45 for draft) at the preset's tolerance, tightened for runs of many rotations. "
+    "Closed form: a torque-free body selected by accuracy (not an explicit method) and off the "
+    "separatrix is answered from its exact solution, attitude included, nothing integrated "
+    "(diagnostics.method and selection.method closed_form, steps 0): omega in Jacobi elliptic "
+    "functions, and since L is fixed in space, in the frame with z along L the body's Euler "
+    "angles are cos theta = I_c w_c / |L|, tan psi = I_a w_a / (I_b w_b) and phi' = |L| (I_a "
+    "w_a^2 + I_b w_b^2) / (I_a^2 w_a^2 + I_b^2 w_b^2) (c the dn axis: the largest- or smallest-"
+    "moment axis, both modes), phi by adaptive Gauss-Legendre quadrature to round-off; a "
+    "symmetric top precesses regularly about L at |L| / I_perp, a sphere turns about omega. The "
+    "cost grows with the samples, not with t_end; selection.achieved states the drift of T, |L| "
+    "and the L vector; {\"closed_form\": false} integrates instead. "
     "Answers t, omega (body, rad/s), orientation, angular_momentum (space axes, kg m^2/s), "
     "kinetic_energy (J) per sample; diagnostics with steps and evaluations, the drift of "
     "|L| and T (conserved when torque-free), of the L vector against L0 (torque-free) or "
@@ -200,6 +211,57 @@ static const char *kind_name(enum mech_rigid_exact_kind k)
     }
 }
 
+/* diagnostics.selection of an answer from the closed form (SELECTION.md shape). */
+static json_t *closed_form_selection(struct api_call *c, const struct api_integrator_choice *ch,
+                                     const struct mech_rigid_closed_form_evidence *ev)
+{
+    json_t *sel = json_object();
+    json_object_set_new_nocheck(sel, "requested",
+                                ch->requested ? json_deep_copy(ch->requested) : json_null());
+    json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
+    json_t *cands = json_array();
+    json_array_append_new(
+        cands,
+        json_pack("{s:s,s:s,s:s}", "method", "closed_form", "verdict", "chosen", "why",
+                  !strcmp(ev->solution, "elliptic")
+                      ? "exact torque-free solution: omega in Jacobi elliptic functions, the "
+                        "attitude from L fixed in space (Euler angles about L, the precession "
+                        "angle by Gauss-Legendre quadrature to round-off); cost grows with the "
+                        "samples, not with t_end"
+                  : !strcmp(ev->solution, "symmetric")
+                      ? "symmetric top: regular precession about L at |L|/I_perp, elementary; "
+                        "cost grows with the samples"
+                      : "steady rotation about a constant omega (a sphere or a principal axis)"));
+    json_t *in = json_pack("{s:s,s:s,s:s}", "method", ch->method, "verdict", "costlier", "why",
+                           "integrates Euler's equations and the quaternion: cost grows with "
+                           "t_end, truncation error added; {\"closed_form\": false} runs it");
+    json_object_set_new_nocheck(in, "settings",
+                                json_pack("{s:o,s:o}", "rtol", api_real(c, ch->opt.rtol), "atol",
+                                          api_real(c, ch->opt.atol)));
+    json_array_append_new(cands, in);
+    json_object_set_new_nocheck(sel, "candidates", cands);
+    json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
+    char reason[200];
+    snprintf(reason, sizeof reason,
+             "%sselected by accuracy, torque-free, off the separatrix: answered from the closed "
+             "form (%s), nothing integrated",
+             ch->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+             ev->solution);
+    json_object_set_new_nocheck(sel, "reason", json_string(reason));
+    char evid[200];
+    snprintf(evid, sizeof evid,
+             "closed form: kinetic energy, |L| and the L vector in space drift %.2g relative over "
+             "the samples",
+             ev->max_invariant_drift);
+    json_t *ach = json_object();
+    json_object_set_new_nocheck(ach, "error", api_real(c, ev->error_bound));
+    json_object_set_new_nocheck(ach, "evidence", json_string(evid));
+    json_object_set_new_nocheck(ach, "met_target", json_boolean(ev->error_bound <= ch->target));
+    json_object_set_new_nocheck(ach, "evaluations", json_integer(ev->evaluations));
+    json_object_set_new_nocheck(sel, "achieved", ach);
+    return sel;
+}
+
 /* ---- handler ---------------------------------------------------------------------- */
 
 static json_t *rotate(struct api_call *c, const json_t *body)
@@ -277,7 +339,14 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     r.quaternion = qs;
     r.angular_momentum = L;
     r.kinetic_energy = ke;
-    enum mech_status st = mech_rigid_rotate(&p, &c->budget, &r, &e);
+    /* by accuracy, torque-free and off the separatrix: the closed form (issue 16) */
+    const json_t *blk = json_object_get(body, "integrator");
+    const int closed = ch.chosen && !(blk && json_is_false(json_object_get(blk, "closed_form"))) &&
+                       mech_rigid_has_closed_form(&p);
+    struct mech_rigid_closed_form_evidence ev;
+    memset(&ev, 0, sizeof ev);
+    enum mech_status st = closed ? mech_rigid_closed_form(&p, &r, &ev, &e)
+                                 : mech_rigid_rotate(&p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         if (ij && !strcmp(e.param, "moments")) {
             e.param[0] = 0;
@@ -305,7 +374,16 @@ static json_t *rotate(struct api_call *c, const json_t *body)
 
     const size_t last = r.n_samples - 1;
     json_t *d = json_object();
-    api_integrator_block_stats(c, d, &ch, &r.stats);
+    if (closed) {
+        json_object_set_new_nocheck(d, "method", json_string("closed_form"));
+        json_object_set_new_nocheck(d, "order", json_null());
+        json_object_set_new_nocheck(d, "steps", json_integer(0));
+        json_object_set_new_nocheck(d, "rejected_steps", json_integer(0));
+        json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(0));
+        json_object_set_new_nocheck(d, "evaluations", json_integer(ev.evaluations));
+    } else {
+        api_integrator_block_stats(c, d, &ch, &r.stats);
+    }
     json_t *inv = json_array();
     json_array_append_new(inv, invariant(c, "kinetic_energy", r.torque_free, r.T0, ke[last],
                                          r.max_T_drift));
@@ -350,11 +428,17 @@ static json_t *rotate(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(rf, "max_relative_omega_error",
                                     api_real(c, r.max_relative_omega_error));
         json_object_set_new_nocheck(rf, "final_omega_error", api_real(c, r.final_omega_error));
+        if (closed)
+            json_object_set_new_nocheck(
+                rf, "note",
+                json_string("the answer is this exact solution (omega and the attitude) evaluated "
+                            "at each sample: its error is round-off, see selection.achieved"));
         json_object_set_new_nocheck(d, "reference", rf);
     } else {
         json_object_set_new_nocheck(d, "reference", json_null());
     }
-    json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
+    json_object_set_new_nocheck(d, "selection", closed ? closed_form_selection(c, &ch, &ev)
+                                                       : api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     if (r.has_exact && r.exact.kind == MECH_RIGID_EXACT_ELLIPTIC) {
         json_t *f = json_object();

@@ -51,7 +51,14 @@ static const char traj_description[] =
     "\"precise\"|\"machine\"} (relative error 1e-3, 1e-8, 1e-10, 1e-11 promised), or "
     "{\"target_error\": x} (relative, positions and velocities); the default is balanced. mechd "
     "picks rk8pd (draft) or radau15 for velocity-free scenes and rk8pd/rkf45 with drag, Coriolis "
-    "or a magnetic field, with atol scaled to the scene; diagnostics.selection says what it picked and why. A "
+    "or a magnetic field, with atol scaled to the scene; diagnostics.selection says what it picked and why. "
+    "Closed form: when the request selects by accuracy (not an explicit method) and the scene "
+    "has an exact solution (kepler, harmonic_oscillator, uniform_gravity[_linear_drag], the free "
+    "particle), the answer is evaluated from it, nothing integrated: diagnostics.method and "
+    "selection.method closed_form, steps 0, evaluations = the samples (+ the stop search), the "
+    "stop crossing located on the closed form to round-off, selection.achieved the evidence "
+    "(invariant drift, universal Kepler equation residual); {\"closed_form\": false} in the "
+    "integrator block integrates instead. A "
     "fixed-step run needing more steps than the budget is refused up front. Samples are evenly "
     "spaced in 0..t_end, each computed by a sub-step of the method from the start of its step "
     "(as accurate as the steps). stop: the first crossing of a coordinate value, located by "
@@ -94,7 +101,9 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st =
-        (t && pos && vel) ? mech_trajectory_integrate(&rq.p, &c->budget, &r, &e) : MECH_ENOMEM;
+        !(t && pos && vel) ? MECH_ENOMEM
+        : rq.closed_form   ? mech_trajectory_closed_form_ex(&rq.p, &r, &rq.evidence, &e)
+                           : mech_trajectory_integrate(&rq.p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         free(t);
         free(pos);

@@ -31,6 +31,7 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
     struct mech_trajectory_problem *p = &rq->p;
     rq->requested = in;
     rq->chosen = 0;
+    rq->closed_form = 0;
     rq->accuracy = NULL;
     memset(&rq->choice, 0, sizeof rq->choice);
     const char *method = in ? api_string(in, "method", NULL) : NULL;
@@ -64,6 +65,9 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
     rq->chosen = 1;
     p->method = rq->choice.method;
     p->opt = rq->choice.opt;
+    /* by accuracy: the closed form is a candidate unless the block says no */
+    rq->closed_form = !(in && json_is_false(json_object_get(in, "closed_form"))) &&
+                      mech_trajectory_has_closed_form(p);
     return 1;
 }
 
@@ -296,7 +300,13 @@ json_t *api_traj_model(struct api_call *c, const struct api_traj_request *rq,
     }
     json_t *state = json_object();
     json_object_set_new_nocheck(state, "dimensions", json_integer(r->dimensions));
-    if (r->dimensions == 2) {
+    if (r->method && !strcmp(r->method, "closed_form")) {
+        json_object_set_new_nocheck(state, "plane_normal", json_null());
+        json_object_set_new_nocheck(
+            state, "reason",
+            json_string("closed form: the exact solution evaluated in three dimensions at each "
+                        "sample; nothing integrated"));
+    } else if (r->dimensions == 2) {
         json_object_set_new_nocheck(state, "plane_normal", api_vec3(c, r->plane_normal));
         json_object_set_new_nocheck(
             state, "reason",
@@ -363,10 +373,116 @@ static json_t *reference_json(struct api_call *c, const struct mech_trajectory_r
     return j;
 }
 
+/* The selection block of an answer from the closed form (issue 16,
+ * /work SELECTION.md shape): the closed form chosen, the integrator the
+ * accuracy would have chosen passed over, and the achieved evidence. */
+static json_t *closed_form_selection(struct api_call *c, const struct api_traj_request *rq)
+{
+    const struct mech_closed_form_evidence *ev = &rq->evidence;
+    const double target = rq->choice.target;
+    json_t *sel = json_object();
+    json_object_set_new_nocheck(sel, "requested",
+                                rq->requested ? json_deep_copy(rq->requested) : json_null());
+    json_object_set_new_nocheck(sel, "target_error", api_real(c, target));
+    json_t *cands = json_array();
+    json_t *cf = json_object();
+    json_object_set_new_nocheck(cf, "method", json_string("closed_form"));
+    json_object_set_new_nocheck(cf, "verdict", json_string("chosen"));
+    char why[320];
+    snprintf(why, sizeof why,
+             "exact %s solution (%s): no truncation error, round-off only; cost grows with the "
+             "samples, not with the simulated time",
+             ev->solution,
+             !strcmp(ev->solution, "kepler") ? "universal variables, time reduced by whole periods"
+             : !strcmp(ev->solution, "harmonic_oscillator")
+                 ? "cos/sin with the phase in double-double"
+             : !strcmp(ev->solution, "uniform_gravity") ? "r0 + v0 t + g t^2/2"
+                                                        : "expm1 forms, series at small gamma t");
+    json_object_set_new_nocheck(cf, "why", json_string(why));
+    json_array_append_new(cands, cf);
+    json_t *in = json_object();
+    json_object_set_new_nocheck(in, "method", json_string(rq->choice.method));
+    json_t *set = json_object();
+    json_object_set_new_nocheck(set, "rtol", api_real(c, rq->choice.opt.rtol));
+    json_object_set_new_nocheck(set, "atol", api_real(c, rq->choice.opt.atol));
+    json_object_set_new_nocheck(in, "settings", set);
+    json_object_set_new_nocheck(in, "verdict", json_string("costlier"));
+    json_object_set_new_nocheck(
+        in, "why",
+        json_string("integrates: its cost grows with the simulated time and it adds truncation "
+                    "error; {\"closed_form\": false} in the integrator block runs it"));
+    json_array_append_new(cands, in);
+    json_object_set_new_nocheck(sel, "candidates", cands);
+    json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
+    char reason[sizeof rq->choice.reason + 200];
+    snprintf(reason, sizeof reason,
+             "%sselected by accuracy and the scene has a closed form (%s): answered from it, "
+             "nothing integrated",
+             rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+             ev->solution);
+    json_object_set_new_nocheck(sel, "reason", json_string(reason));
+    json_t *ach = json_object();
+    json_object_set_new_nocheck(ach, "error", api_real(c, ev->error_bound));
+    char evid[240];
+    if (!strcmp(ev->solution, "kepler"))
+        snprintf(evid, sizeof evid,
+                 "closed form: conserved invariants drift %.2g relative over the samples, "
+                 "universal Kepler equation residual %.2g relative",
+                 ev->max_invariant_drift, ev->max_kepler_residual);
+    else if (ev->max_invariant_drift > 0.0 || strcmp(ev->solution, "uniform_gravity_linear_drag"))
+        snprintf(evid, sizeof evid,
+                 "closed form: conserved invariants drift %.2g relative over the samples",
+                 ev->max_invariant_drift);
+    else
+        snprintf(evid, sizeof evid,
+                 "closed form with drag (nothing conserved): round-off of the expm1 forms, a few "
+                 "ulps");
+    json_object_set_new_nocheck(ach, "evidence", json_string(evid));
+    json_object_set_new_nocheck(ach, "met_target", json_boolean(ev->error_bound <= target));
+    json_object_set_new_nocheck(ach, "evaluations", json_integer(ev->evaluations));
+    json_object_set_new_nocheck(sel, "achieved", ach);
+    return sel;
+}
+
+/* diagnostics of an answer from the closed form: no integrator settings, 0
+ * steps, the invariants and the selection. */
+static json_t *closed_form_diagnostics(struct api_call *c, const struct api_traj_request *rq,
+                                       const struct mech_trajectory_result *r)
+{
+    json_t *d = json_object();
+    if (!d) return NULL;
+    json_object_set_new_nocheck(d, "method", json_string("closed_form"));
+    json_object_set_new_nocheck(d, "order", json_null());
+    json_object_set_new_nocheck(d, "steps", json_integer(0));
+    json_object_set_new_nocheck(d, "rejected_steps", json_integer(0));
+    json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(0));
+    json_object_set_new_nocheck(d, "evaluations", json_integer(rq->evidence.evaluations));
+    json_object_set_new_nocheck(d, "invariant", api_traj_invariant(c, &r->invariant));
+    json_t *invs = json_array();
+    for (size_t i = 0; invs && i < r->n_invariants; i++)
+        json_array_append_new(invs, api_traj_invariant(c, &r->invariants[i]));
+    json_object_set_new_nocheck(d, "invariants", invs);
+    json_t *ref = json_object();
+    json_object_set_new_nocheck(ref, "kind", json_string("exact"));
+    json_object_set_new_nocheck(ref, "name", json_string(r->reference.name));
+    json_object_set_new_nocheck(
+        ref, "note",
+        json_string("the answer is this exact solution evaluated at each sample: its error is "
+                    "round-off, see selection.achieved"));
+    json_object_set_new_nocheck(d, "reference", ref);
+    if (rq->p.error_estimate)
+        json_object_set_new_nocheck(
+            d, "error_estimate",
+            json_pack("{s:s}", "skipped", "answered from the closed form: see reference"));
+    json_object_set_new_nocheck(d, "selection", closed_form_selection(c, rq));
+    return d;
+}
+
 json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *rq,
                              const struct mech_trajectory_result *r)
 {
     const struct mech_trajectory_problem *p = &rq->p;
+    if (r->method && !strcmp(r->method, "closed_form")) return closed_form_diagnostics(c, rq, r);
     json_t *d = json_object();
     if (!d) return NULL;
     struct mech_ode_method_info mi = mech_ode_method_describe(mech_ode_method_find(r->method));

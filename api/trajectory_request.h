@@ -8,6 +8,7 @@
 #define API_TRAJECTORY_REQUEST_H
 
 #include "endpoint.h"
+#include "mech/closed_form.h"
 #include "mech/trajectory.h"
 
 /* ---- schema fragments -------------------------------------------------------
@@ -33,6 +34,14 @@
 #define API_TRAJ_DT \
     "\"dt\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"fixed step, s\"}"
 
+/* With an accuracy or a target error: may the answer come from the scene's
+ * closed form (where it has one: /v1/trajectory, /v1/rigid/rotate)? */
+#define API_TRAJ_CLOSED_FORM                                                                   \
+    "\"closed_form\":{\"type\":\"boolean\",\"default\":true,\"description\":\"true: when the " \
+    "scene has an exact solution (Kepler, harmonic oscillator, uniform gravity with or without " \
+    "linear drag, free particle; torque-free rigid body) the answer is evaluated from it, "      \
+    "nothing integrated (diagnostics.selection.method closed_form); false: always integrate\"}"
+
 /* One integrator block: a method with its settings, an accuracy preset or a target error. */
 #define API_TRAJ_INTEGRATOR_SCHEMA                                                               \
     "{\"description\":\"a method (adaptive: rtol/atol; fixed-step: dt), or {\\\"accuracy\\\": "  \
@@ -42,10 +51,12 @@
                  API_TRAJ_RTOL "," API_TRAJ_ATOL) ","                                            \
     API_TRAJ_OBJ("\"method\",\"dt\"", "\"method\":{\"enum\":[" API_TRAJ_FIXED_METHODS "]},"     \
                  API_TRAJ_DT) ","                                                                \
-    API_TRAJ_OBJ("\"accuracy\"", "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "]}") ","        \
+    API_TRAJ_OBJ("\"accuracy\"", "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "]},"        \
+                 API_TRAJ_CLOSED_FORM) ","                                                       \
     API_TRAJ_OBJ("\"target_error\"",                                                            \
                  "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"      \
-                 "\"description\":\"relative error on the positions and velocities\"}")          \
+                 "\"description\":\"relative error on the positions and velocities\"},"          \
+                 API_TRAJ_CLOSED_FORM)                                                           \
     "]}"
 
 /* The trajectory request; `extra` is appended to its properties (a schema
@@ -143,6 +154,10 @@ struct api_traj_request {
     int chosen;              /* 1: by an accuracy preset, a target error or the default */
     const char *accuracy;    /* preset name, or NULL */
     struct mech_trajectory_choice choice; /* when chosen */
+    /* chosen, the block does not say "closed_form": false, and the scene has a
+     * closed form (mech/closed_form.h): answer from it, integrate nothing */
+    int closed_form;
+    struct mech_closed_form_evidence evidence; /* filled by the closed-form run */
     /* "fictitious": "auto" */
     int auto_model;                       /* 1: the terms were chosen by the estimate */
     struct mech_trajectory_model model;   /* its evidence (when auto_model) */

@@ -47,6 +47,47 @@ static void stumpff(double z, double c[4])
     }
 }
 
+/* ---- double-double helpers (Dekker, Knuth; fma for the products) ---------- */
+
+/* a + b = s + e exactly */
+static void two_sum(double a, double b, double *s, double *e)
+{
+    *s = a + b;
+    const double bb = *s - a;
+    *e = (a - (*s - bb)) + (b - bb);
+}
+
+/* |u|^2 as hi + lo (the rounding errors of the squares and sums kept) */
+static void sum_squares_dd(struct mech_vec3 u, double *hi, double *lo)
+{
+    const double px = u.x * u.x, py = u.y * u.y, pz = u.z * u.z;
+    const double ex = fma(u.x, u.x, -px), ey = fma(u.y, u.y, -py), ez = fma(u.z, u.z, -pz);
+    double s1, e1, s2, e2;
+    two_sum(px, py, &s1, &e1);
+    two_sum(s1, pz, &s2, &e2);
+    *hi = s2;
+    *lo = ex + ey + ez + e1 + e2;
+}
+
+/* beta = 2 gm / |r0| - |v0|^2 (Danby's alpha; gm / a). Near parabolic the two
+ * terms nearly cancel (beta / (2 gm / r0) ~ 1 - e), so each is formed in
+ * double-double and the difference is taken on the high parts (exact by
+ * Sterbenz when they are within a factor 2) plus the low parts: beta to a few
+ * eps relative instead of eps / (1 - e) (at e = 0.99999 the period was off by
+ * ~5e-11 relative, its position near periapsis by as much). */
+static double kepler_beta(double gm, struct mech_vec3 r0v, struct mech_vec3 v0v)
+{
+    double r2, r2_lo, v2, v2_lo;
+    sum_squares_dd(r0v, &r2, &r2_lo);
+    sum_squares_dd(v0v, &v2, &v2_lo);
+    const double r0 = sqrt(r2);
+    const double r0_lo = (fma(-r0, r0, r2) + r2_lo) / (2.0 * r0);
+    const double g2 = 2.0 * gm; /* exact */
+    const double q = g2 / r0;
+    const double q_lo = (fma(-q, r0, g2) - q * r0_lo) / r0;
+    return (q - v2) + (q_lo - v2_lo);
+}
+
 struct kepler_eq {
     double r0, sigma0, gm, beta, t; /* sigma0 = r0.v0, beta = gm (2/r0 - v0^2/gm) */
 };
@@ -69,6 +110,15 @@ enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0v, struct m
                                        double t, struct mech_vec3 *r, struct mech_vec3 *v,
                                        struct mech_error *err)
 {
+    return mech_kepler_propagate_residual(gm, r0v, v0v, t, r, v, NULL, err);
+}
+
+enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0v,
+                                                struct mech_vec3 v0v, double t,
+                                                struct mech_vec3 *r, struct mech_vec3 *v,
+                                                double *residual, struct mech_error *err)
+{
+    if (residual) *residual = 0.0;
     if (!r || !v) return mech_error_set(err, MECH_EINVAL, NULL, "NULL output");
     const double r0 = mech_vec3_norm(r0v);
     if (!(isfinite(gm) && gm > 0.0) || !(r0 > 0.0 && isfinite(r0)) ||
@@ -79,7 +129,7 @@ enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0v, struct m
     k.sigma0 = mech_vec3_dot(r0v, v0v);
     k.gm = gm;
     /* beta = gm / a = 2 gm / r0 - v^2 (Danby's alpha), > 0 bound, 0 parabolic. */
-    k.beta = 2.0 * gm / r0 - mech_vec3_dot(v0v, v0v);
+    k.beta = kepler_beta(gm, r0v, v0v);
     k.t = t;
 
     double lo, hi;
@@ -132,6 +182,12 @@ enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0v, struct m
         s = sn;
     }
     kepler_eval(&k, s, G, &F, &rr);
+    if (residual) {
+        /* |F(s)| relative to the size of the terms it balances */
+        const double scale = fabs(k.r0 * G[1]) + fabs(k.sigma0 * G[2]) + fabs(k.gm * G[3]) +
+                             fabs(k.t);
+        *residual = scale > 0.0 ? fabs(F) / scale : 0.0;
+    }
     if (!(rr > 0.0) || !isfinite(rr))
         return mech_error_set(err, MECH_ENUMERIC, NULL,
                               "the Kepler orbit passes through the centre (radial orbit)");
@@ -341,11 +397,36 @@ void mech_harmonic_propagate(double omega, struct mech_vec3 anchor, struct mech_
                              struct mech_vec3 r0, struct mech_vec3 v0, double t,
                              struct mech_vec3 *r, struct mech_vec3 *v)
 {
-    const double wt = omega * t, c = cos(wt);
-    const double s_w = t * sinc(wt);                      /* sin(wt)/w */
+    mech_harmonic_propagate_dd(omega, 0.0, anchor, g, r0, v0, t, r, v);
+}
+
+void mech_harmonic_omega_dd(double k, double m, double *omega, double *omega_lo)
+{
+    /* q = k/m to double-double, then sqrt by one Newton correction */
+    const double q = k / m;
+    const double q_lo = fma(-q, m, k) / m;
+    const double w = sqrt(q);
+    *omega = w;
+    *omega_lo = w > 0.0 ? (fma(-w, w, q) + q_lo) / (2.0 * w) : 0.0;
+}
+
+void mech_harmonic_propagate_dd(double omega, double omega_lo, struct mech_vec3 anchor,
+                                struct mech_vec3 g, struct mech_vec3 r0, struct mech_vec3 v0,
+                                double t, struct mech_vec3 *r, struct mech_vec3 *v)
+{
+    const double wt = omega * t;
+    /* the phase's rounding error (fma) and omega's low part: cos(wt + d) =
+     * cos wt - d sin wt to round-off, since |d| ~ 1e-16 |wt| */
+    const double d = fma(omega, t, -wt) + omega_lo * t;
+    const double c0 = cos(wt), s0 = sin(wt);
+    const double c = c0 - d * s0, sn = s0 + d * c0;
+    const double s_w = fabs(wt) < 1.0 ? t * sinc(wt) : sn / omega; /* sin(wt)/w */
     const double sh = sinc(0.5 * wt);
-    const double one_minus_c_w2 = 0.5 * t * t * sh * sh; /* (1 - cos wt)/w^2 */
-    const double ws = omega * sin(wt);                     /* w sin(wt) */
+    /* (1 - cos)/w^2 = 2 sin^2(wt/2)/w^2: no cancellation near whole periods */
+    const double sh2 = sin(0.5 * wt) + 0.5 * d * cos(0.5 * wt);
+    const double one_minus_c_w2 =
+        fabs(wt) < 1.0 ? 0.5 * t * t * sh * sh : 2.0 * sh2 * sh2 / (omega * omega);
+    const double ws = omega * sn;                          /* w sin(wt) */
     struct mech_vec3 d0 = mech_vec3_sub(r0, anchor);
     /* r - a = d0 cos + v0 sin/w + g (1 - cos)/w^2; v = -d0 w sin + v0 cos + g sin/w */
     *r = mech_vec3_add(anchor, mech_vec3_add(mech_vec3_add(mech_vec3_scale(d0, c),
@@ -493,7 +574,7 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
         } else if (n_spring == 1 && spring->u.spring.rest_length == 0.0 && n_central + n_drag == 0) {
             ref->kind = MECH_REFERENCE_EXACT;
             ref->name = "harmonic_oscillator";
-            ref->omega = sqrt(spring->u.spring.k / p->mass);
+            mech_harmonic_omega_dd(spring->u.spring.k, p->mass, &ref->omega, &ref->omega_lo);
             ref->center = spring->u.spring.anchor;
         } else if (n_central + n_spring == 0) {
             ref->kind = MECH_REFERENCE_EXACT;
@@ -525,7 +606,8 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
         *r = mech_vec3_add(rr, ref->center);
         *v = vv;
     } else if (!strcmp(ref->name, "harmonic_oscillator")) {
-        mech_harmonic_propagate(ref->omega, ref->center, ref->g, ref->r0, ref->v0, t, r, v);
+        mech_harmonic_propagate_dd(ref->omega, ref->omega_lo, ref->center, ref->g, ref->r0,
+                                   ref->v0, t, r, v);
     } else if (!strcmp(ref->name, "coriolis_first_order")) {
         struct mech_vec3 s;
         mech_coriolis_first_order(ref->w, ref->g, ref->centrifugal, ref->r0, ref->v0, t, r, v,

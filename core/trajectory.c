@@ -708,8 +708,8 @@ static enum mech_status check_vec(struct mech_vec3 v, const char *param, struct 
     return MECH_OK;
 }
 
-static enum mech_status check_problem(const struct mech_trajectory_problem *p,
-                                      struct mech_error *err)
+enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
+                                       struct mech_error *err)
 {
     enum mech_status st;
     char param[64];
@@ -1218,7 +1218,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
     res->n_samples = 0;
     res->stopped = 0;
     res->t_stop = NAN;
-    enum mech_status st = check_problem(p, err);
+    enum mech_status st = mech_trajectory_check(p, err);
     if (st != MECH_OK) return st;
     const struct mech_integrator *method = mech_ode_method_find(p->method);
     if (!method)
@@ -1594,7 +1594,7 @@ enum mech_status mech_trajectory_model_select(const struct mech_trajectory_probl
     if (!(target >= 1e-15 && target <= 0.1))
         return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
                               "target_error must be in [1e-15, 0.1], got %.17g", target);
-    enum mech_status st = check_problem(p, err);
+    enum mech_status st = mech_trajectory_check(p, err);
     if (st != MECH_OK) return st;
     m->target = target;
     m->safety = MECH_TRAJECTORY_AUTO_SAFETY;

@@ -484,6 +484,79 @@ static void test_recognition_issue6(void)
     CHECK_EQ_INT(mech_trajectory_reference_find(&p, &ref), MECH_REFERENCE_NONE);
 }
 
+/* Near-parabolic ellipses (e = 0.999, 0.99999) over 1.5 periods against
+ * Kepler's equation solved in long double for the state as given (issue 16):
+ * beta = 2 gm / r0 - v^2 cancels to 1 - e, and formed in plain double it cost
+ * the period ~eps / (1 - e) (1.2e-10 relative in position at e = 0.99999). */
+static void test_kepler_near_parabolic_digits(void)
+{
+    const long double PI_L = 3.14159265358979323846264338327950288L;
+    const double gm = 3.986004418e14, q = 7e6;
+    for (int k = 0; k < 2; k++) {
+        const double e = k ? 0.99999 : 0.999, v = sqrt(gm * (1 + e) / q);
+        const long double al = 1.0L / (2.0L / q - (long double)v * v / gm);
+        const long double el = 1 - q / al, n = sqrtl(gm / (al * al * al));
+        const long double P = 2 * PI_L / n;
+        double worst = 0.0;
+        for (int i = 1; i <= 200; i++) {
+            const double t = (double)(1.5L * P * i / 200);
+            const long double M = fmodl(n * t, 2 * PI_L);
+            long double lo = 0, hi = 2 * PI_L, E = M;
+            for (int j = 0; j < 400; j++) { /* Newton safeguarded by bisection */
+                const long double f = E - el * sinl(E) - M;
+                if (f > 0) hi = E;
+                else lo = E;
+                long double En = E - f / (1 - el * cosl(E));
+                if (!(En > lo && En < hi)) En = 0.5L * (lo + hi);
+                const int done = fabsl(En - E) < 1e-19L * fabsl(E);
+                E = En;
+                if (done) break;
+            }
+            const long double b = al * sqrtl(1 - el * el);
+            const long double x = al * (cosl(E) - el), y = b * sinl(E);
+            struct mech_vec3 r, w;
+            struct mech_error err;
+            CHECK(mech_kepler_propagate(gm, mech_vec3_make(q, 0, 0), mech_vec3_make(0, v, 0), t,
+                                        &r, &w, &err) == MECH_OK);
+            worst = fmax(worst, hypot(r.x - (double)x, r.y - (double)y) / (double)(al * (1 + el)));
+        }
+        printf("near-parabolic e = %g: max relative position error %.3g\n", e, worst);
+        CHECK(worst < (k ? 2e-12 : 2e-14));
+    }
+}
+
+/* 1e4 periods of the oscillator through the reference (issue 16): the phase
+ * omega t must not lose n eps over n periods (the old cos(sqrt(k/m) t) was off
+ * by 4e-13 here); against cos/sin in long double. */
+static void test_harmonic_long(void)
+{
+    const double k = 3.7, m = 1.3;
+    struct mech_force f = {.type = MECH_FORCE_SPRING};
+    f.u.spring.k = k;
+    struct mech_trajectory_problem p;
+    memset(&p, 0, sizeof p);
+    p.mass = m;
+    p.position = mech_vec3_make(0.8, 0, 0);
+    p.velocity = mech_vec3_make(0.1, 0, 0);
+    p.forces = &f;
+    p.n_forces = 1;
+    struct mech_trajectory_reference ref;
+    CHECK(mech_trajectory_reference_find(&p, &ref) == MECH_REFERENCE_EXACT);
+    const long double w = sqrtl((long double)k / (long double)m);
+    const double T = (double)(2 * 3.14159265358979323846264338327950288L / w);
+    double worst = 0.0;
+    for (int i = 0; i <= 200; i++) {
+        const double t = 1e4 * T * i / 200.0;
+        struct mech_vec3 r, v;
+        struct mech_error err;
+        CHECK(mech_trajectory_reference_eval(&ref, t, &r, &v, NULL, &err) == MECH_OK);
+        const long double x = 0.8L * cosl(w * t) + 0.1L * sinl(w * t) / w;
+        worst = fmax(worst, fabs(r.x - (double)x));
+    }
+    printf("harmonic reference over 1e4 periods: max error %.3g\n", worst);
+    CHECK(worst < 2e-15);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -495,6 +568,8 @@ int main(void)
     test_kepler_vs_rk8pd();
     test_kepler_near_parabolic();
     test_harmonic();
+    test_harmonic_long();
+    test_kepler_near_parabolic_digits();
     test_drag();
     test_coriolis();
     TEST_MAIN_END();

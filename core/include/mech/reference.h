@@ -29,14 +29,23 @@
  * (its derivative is r(s) > 0, so it is monotonic), to round-off. Bound
  * orbits are first reduced by whole periods (fmod, exact), so 1e5 orbits cost
  * the same as one; the reduction's error is that of the period computed from
- * the initial state (~1.5 |de/a|/a relative per orbit, i.e. ~n eps for n
- * orbits away from e = 1).
+ * the initial state (~n eps for n orbits; beta = 2 gm/r0 - v0^2 is formed in
+ * double-double, so near e = 1 its cancellation costs no digits).
  * gm > 0 finite; r0 != 0 finite; v0 finite; t finite (either sign).
  * Statuses: MECH_OK; MECH_EINVAL (bad arguments); MECH_ENUMERIC (a radial
  * orbit through the centre before t, or a non-finite result). */
 enum mech_status mech_kepler_propagate(double gm, struct mech_vec3 r0, struct mech_vec3 v0,
                                        double t, struct mech_vec3 *r, struct mech_vec3 *v,
                                        struct mech_error *err);
+
+/* The same, and *residual (may be NULL) = |F(s)| / (|r0 G1| + |r0.v0 G2| +
+ * |gm G3| + |t'|): the relative residual of the universal Kepler equation at
+ * the solution s (t' the time after the reduction by whole periods), the
+ * evidence that the equation was solved to round-off. */
+enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0,
+                                                struct mech_vec3 v0, double t,
+                                                struct mech_vec3 *r, struct mech_vec3 *v,
+                                                double *residual, struct mech_error *err);
 
 /* Kepler drift for splitting methods (integrators/wisdom_holman.c): the
  * same motion as mech_kepler_propagate (centre at the origin of r0; r0, v0,
@@ -67,6 +76,18 @@ enum mech_status mech_kepler_drift(double gm, const double r0[3], const double v
 void mech_harmonic_propagate(double omega, struct mech_vec3 anchor, struct mech_vec3 g,
                              struct mech_vec3 r0, struct mech_vec3 v0, double t,
                              struct mech_vec3 *r, struct mech_vec3 *v);
+
+/* omega = sqrt(k/m) as a double-double: omega + omega_lo to ~1e-32 relative
+ * (k > 0, m > 0 finite). Cannot fail. */
+void mech_harmonic_omega_dd(double k, double m, double *omega, double *omega_lo);
+
+/* mech_harmonic_propagate with omega given as omega + omega_lo (a double-
+ * double, mech_harmonic_omega_dd): the phase omega t is carried with its
+ * rounding error (fma) and omega_lo t, so after n periods the phase error is
+ * ~eps, not ~n eps (1e4 periods: 1e-16 instead of 1e-11 relative). */
+void mech_harmonic_propagate_dd(double omega, double omega_lo, struct mech_vec3 anchor,
+                                struct mech_vec3 g, struct mech_vec3 r0, struct mech_vec3 v0,
+                                double t, struct mech_vec3 *r, struct mech_vec3 *v);
 
 /* Uniform gravity g with linear drag F = -b v (gamma = b/m >= 0), exact:
  *   v = v0 e^{-x} + g t E1(x),  r = r0 + v0 t E1(x) + g t^2 E2(x),  x = gamma t,
@@ -108,7 +129,7 @@ struct mech_trajectory_reference {
     const char *name; /* "kepler", "harmonic_oscillator", "uniform_gravity",
                          "uniform_gravity_linear_drag", "coriolis_first_order" (static) */
     /* parameters (internal) */
-    double gm, omega, gamma;
+    double gm, omega, omega_lo, gamma; /* omega + omega_lo: double-double */
     struct mech_vec3 center, g, w;
     int centrifugal;
     struct mech_vec3 r0, v0;

@@ -266,6 +266,12 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
                                         struct mech_trajectory_choice *out,
                                         struct mech_error *err);
 
+/* Validate p as mech_trajectory_integrate does (everything but the method
+ * and its settings): MECH_OK, or MECH_EINVAL / MECH_EDOMAIN with err->param
+ * the API path of the offending field ("particle/mass", "forces/1/gm", ...). */
+enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
+                                       struct mech_error *err);
+
 /* Integrate the particle's motion from t = 0 to t_end (or the stop event).
  *
  * Invariant: E = 1/2 m |v|^2 + U(r) with U = -m g.r (uniform gravity),

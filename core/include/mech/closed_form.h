@@ -1,0 +1,127 @@
+/* mech/closed_form.h — trajectories answered from their exact solution
+ * instead of an integrator (issue 16: "the closed form, when the scene has
+ * one and the user asked by accuracy"): Kepler two-body motion (universal
+ * variables, any eccentricity, radial orbits included), the isotropic
+ * harmonic oscillator (with uniform gravity), uniform gravity with or
+ * without linear drag, the free particle — the scenes for which
+ * mech_trajectory_reference_find() gives MECH_REFERENCE_EXACT.
+ *
+ * The cost grows with the samples, not with the simulated time: each sample
+ * is one evaluation of the solution (Kepler: one solve of the universal
+ * Kepler equation, after reducing the time by whole periods).
+ *
+ * Units: SI. Thread-safety: reentrant, no globals, no allocation.
+ */
+#ifndef MECH_CLOSED_FORM_H
+#define MECH_CLOSED_FORM_H
+
+#include "mech/rigid_rotation.h"
+#include "mech/status.h"
+#include "mech/trajectory.h"
+
+/* The closed form's own error evidence (it has no integration error; what
+ * remains is the round-off of the evaluation). */
+struct mech_closed_form_evidence {
+    const char *solution;        /* "kepler", "harmonic_oscillator", "uniform_gravity",
+                                    "uniform_gravity_linear_drag" (static) */
+    double max_invariant_drift;  /* max over the conserved invariants of their
+                                    max_relative_drift over the samples (0 if none is
+                                    conserved, e.g. with drag) */
+    double max_kepler_residual;  /* Kepler: max relative residual of the universal Kepler
+                                    equation over the samples (mech_kepler_propagate_residual);
+                                    0 otherwise */
+    double error_bound;          /* the relative error stated for the answer:
+                                    max(drift, residual, 4 eps) */
+    int evaluations;             /* evaluations of the solution (samples + event search) */
+};
+
+/* Whether p has a closed form served here (mech_trajectory_reference_find()
+ * is MECH_REFERENCE_EXACT). p must be valid (mech_trajectory_check). */
+int mech_trajectory_has_closed_form(const struct mech_trajectory_problem *p);
+
+/* Evaluate the exact solution of p at its samples (t_i = t_end i/(samples-1),
+ * as mech_trajectory_integrate places them), with the same result contract as
+ * mech_trajectory_integrate: samples written to the caller's buffers
+ * (res->t, position, velocity, each may be NULL), the stop event if p has
+ * one, terms (max |a| of each force over the samples and the stop point),
+ * max_radius / max_speed, invariants (energy or Jacobi integral; angular
+ * momentum about the centre of a central scene) evaluated at the samples,
+ * res->reference (kind exact, name, errors 0: the samples ARE the reference),
+ * res->method = "closed_form", res->stats all 0 (nothing is integrated),
+ * res->dimensions = 3, no error_estimate. p->method, p->opt, p->error_estimate
+ * and p->reduce_planar are ignored.
+ *
+ * Stop event: the first time the coordinate stop_axis crosses stop_value in
+ * stop_direction (crossing as the integrator defines it: from a strictly
+ * positive to a non-positive value of r[axis] - value for "decreasing", and so
+ * on; a start exactly on the value is no crossing). The run is cut into
+ * pieces on which the coordinate is monotonic (a grid of 16 per period —
+ * in the eccentric anomaly for Kepler ellipses, in t for the oscillator — and
+ * the zeros of the velocity component found by bisection), the crossing is
+ * bracketed on them and located by bisection with secant steps (Illinois) to
+ * round-off on the closed form. Periodic motions are scanned over one period
+ * at most (a crossing that never happens in one period never happens).
+ *
+ * Radial Kepler orbits (r0 x v0 = 0) that reach the centre before t_end (and
+ * before the stop event): MECH_ENUMERIC naming the time, as the integrator.
+ *
+ * evidence (may be NULL) receives the answer's error evidence.
+ * Statuses: MECH_OK; those of mech_trajectory_check (with err->param);
+ * MECH_EINVAL (p has no closed form: not an exact-reference scene; NULL
+ * arguments); MECH_ENUMERIC (radial orbit through the centre; a non-finite
+ * value). On failure res->n_samples says how many samples were written. */
+enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_problem *p,
+                                                struct mech_trajectory_result *res,
+                                                struct mech_closed_form_evidence *evidence,
+                                                struct mech_error *err);
+
+/* mech_trajectory_closed_form_ex without the evidence. */
+enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_problem *p,
+                                             struct mech_trajectory_result *res,
+                                             struct mech_error *err);
+
+/* ---- the torque-free rigid body --------------------------------------------- */
+
+struct mech_rigid_closed_form_evidence {
+    const char *solution;       /* "steady", "symmetric", "elliptic" (static) */
+    double max_invariant_drift; /* max of the drifts of T, |L| and the L vector in space
+                                   over the samples (all conserved) */
+    double error_bound;         /* max(drift, 4 eps) */
+    int evaluations;            /* evaluations of omega(t) (samples and quadrature nodes) */
+};
+
+/* Whether p (torque-free, valid moments and omega) has the closed form below:
+ * not on the separatrix (L^2 = 2 E I2 of an asymmetric body). */
+int mech_rigid_has_closed_form(const struct mech_rigid_problem *p);
+
+/* The torque-free body from its exact solution, with the same result
+ * contract as mech_rigid_rotate (samples t_i = t_end i/(samples-1) of omega
+ * (body), the passive quaternion (continuous in sign from q0/|q0|), L in space
+ * axes, T; drifts; exact (the solution used); max_omega_error 0 (omega IS the
+ * exact solution); flips and measured_period from the samples; stats all 0;
+ * p->method and p->opt ignored).
+ * Attitude (Landau & Lifshitz §37): L is fixed in space; in the frame with z
+ * along L the body's passive ZXZ Euler angles are cos theta = J_c w_c/|L|,
+ * tan psi = J_a w_a/(J_b w_b) and phi' = |L| (J_a w_a^2 + J_b w_b^2) /
+ * (J_a^2 w_a^2 + J_b^2 w_b^2) for a cyclic relabelling (a, b, c) of the sorted
+ * axes with c the dn axis (elliptic: the largest-moment axis when
+ * L^2 > 2 E I2, the smallest when L^2 < 2 E I2 — both modes) or the symmetry
+ * axis (symmetric top: phi' = |L|/J_a, regular precession); phi by adaptive
+ * 16-point Gauss–Legendre quadrature over one period of phi' (2K/lambda),
+ * reused for whole periods, plus the remainder, pieces accepted when their
+ * halves agree to 1e-15. Steady rotations (a sphere, omega = 0, omega along a
+ * principal axis): the rotation about the constant omega by |omega| t.
+ * Cost: per sample one omega evaluation and at most one sixteenth of a
+ * period's quadrature (the integral is tabulated at 16 points of the period
+ * once), independent of t_end: ~50 evaluations of omega per sample.
+ * Statuses: MECH_OK; MECH_EDOMAIN / MECH_EINVAL with param ("moments",
+ * "omega", "orientation", "t_end", "samples"); MECH_EINVAL "torque/value" for a
+ * non-zero torque (no closed form); MECH_EDOMAIN "omega" on the separatrix
+ * (use an integrator); MECH_ENUMERIC (GSL's elliptic functions failed).
+ * evidence may be NULL. */
+enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
+                                        struct mech_rigid_result *res,
+                                        struct mech_rigid_closed_form_evidence *evidence,
+                                        struct mech_error *err);
+
+#endif
