@@ -48,10 +48,14 @@ int mech_gsl_rhs_numeric(struct mech_gsl_rhs *c, double t, const double *y, cons
 
 int mech_gsl_rhs_eval(struct mech_gsl_rhs *c, double t, const double *y, double *dydt)
 {
+    /* the hot path records nothing (no error struct to clear per stage) */
+    enum mech_status st = mech_ode_eval(c->sys, t, y, dydt, c->stats, NULL);
+    if (st == MECH_OK) return GSL_SUCCESS;
+    /* a failure: evaluate again, uncounted, for its explanation */
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_ode_eval(c->sys, t, y, dydt, c->stats, &e);
-    if (st == MECH_OK) return GSL_SUCCESS;
+    if (mech_ode_eval(c->sys, t, y, dydt, NULL, &e) == MECH_OK || e.code != st)
+        snprintf(e.text, sizeof e.text, "the right-hand side failed at t = %.9g s", t);
     if (st == MECH_ENUMERIC) return mech_gsl_rhs_numeric(c, t, y, e.text);
     return hard_failure(c, st, e.param, e.text);
 }
