@@ -14,6 +14,19 @@ program), t from 0 to T_END, rtol = atol = RTOL. One output line per RTOL:
 
     dop853 rtol=<r> steps=<n> nfev=<n> cpu=<s> max_rel_dE=<x> final=<6 reals>
 
+Issue 16's scene set (bench_workprecision's "scene set" section):
+
+    workprecision_scipy.py --scene NAME T_END CAP_S Y0_1 .. Y0_n -- RTOL [RTOL ...]
+
+NAME: kepler (GM = 1, y = (q, v) in 3-D), oscillator (q'' = -q in 3-D),
+rigid (Euler's equations, moments 1, 2, 3, y = omega), henon_heiles (y =
+(x, y, p_x, p_y)). One line per RTOL (rtol = atol), loose to tight,
+stopping after a run costing more than CAP_S seconds:
+
+    dop853 rtol=<r> nfev=<n> cpu=<s> final=<n reals>
+
+The C program computes the error of `final` against its reference.
+
 cpu is the minimum over REPEATS runs (the runs are deterministic, so every
 repeat gives the same numbers). max_rel_dE is max |E - E0| / |E0| over every
 accepted step (solve_ivp returns them all without t_eval); the C program
@@ -24,11 +37,63 @@ import math
 import sys
 import time
 
+import warnings
+
 import numpy as np
 from scipy.integrate import solve_ivp
 
 
+def rhs_of(name):
+    if name == "kepler":
+        def f(t, y):
+            x, yy, z, vx, vy, vz = y
+            r2 = x * x + yy * yy + z * z
+            k = -1.0 / (r2 * math.sqrt(r2))
+            return [vx, vy, vz, k * x, k * yy, k * z]
+    elif name == "oscillator":
+        def f(t, y):
+            return [y[3], y[4], y[5], -y[0], -y[1], -y[2]]
+    elif name == "rigid":
+        def f(t, w):
+            return [(2.0 - 3.0) / 1.0 * w[1] * w[2], (3.0 - 1.0) / 2.0 * w[2] * w[0],
+                    (1.0 - 2.0) / 3.0 * w[0] * w[1]]
+    elif name == "henon_heiles":
+        def f(t, y):
+            x, yy, px, py = y
+            return [px, py, -x - 2.0 * x * yy, -yy - x * x + yy * yy]
+    else:
+        return None
+    return f
+
+
+def scene_main(argv):
+    warnings.filterwarnings("ignore", message="At least one element of `rtol` is too small")
+    sep = argv.index("--")
+    name, t_end, cap = argv[2], float(argv[3]), float(argv[4])
+    y0 = [float(a) for a in argv[5:sep]]
+    rtols = [float(a) for a in argv[sep + 1:]]
+    f = rhs_of(name)
+    if f is None:
+        print("unknown scene %s" % name)
+        return 2
+    for rtol in rtols:
+        c0 = time.process_time()
+        sol = solve_ivp(f, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=rtol)
+        cpu = time.process_time() - c0
+        if sol.status != 0:
+            print("dop853 rtol=%.3g failed: %s" % (rtol, sol.message), flush=True)
+            break
+        final = " ".join(repr(float(v)) for v in sol.y[:, -1])
+        print("dop853 rtol=%.17g nfev=%d cpu=%.6f final=%s" % (rtol, sol.nfev, cpu, final),
+              flush=True)
+        if cpu > cap:
+            break
+    return 0
+
+
 def main(argv):
+    if len(argv) > 1 and argv[1] == "--scene":
+        return scene_main(argv)
     if len(argv) < 11:
         sys.stderr.write(__doc__)
         return 2

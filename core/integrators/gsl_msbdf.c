@@ -16,7 +16,8 @@
  * Optimization and Nonlinear Equations, 1983, §5.4):
  *     d_j = sqrt(DBL_EPSILON) max(|y_j|, s),   s = max(1e-3 max_k |y_k|, atol)
  *     (s = 1 when the state and atol are all 0),
- * rounded so that y_j + d_j - y_j == d_j exactly; df/dt likewise with
+ * rounded so that y_j + d_j - y_j == d_j exactly (the backward point
+ * y_j - d_j when f is non-finite at the forward one); df/dt likewise with
  * d_t = sqrt(DBL_EPSILON) max(|t|, |h|). Each Jacobian costs dim + 2
  * right-hand-side evaluations, counted in stats->rhs_evaluations. The
  * Jacobian only steers the Newton iteration of the BDF corrector (and the
@@ -36,9 +37,15 @@
  * component at 0 would give 0/0; atol = 0 is replaced by MSBDF_ATOL_MIN
  * (~1e-292), a pure relative tolerance in practice.
  *
+ * The right-hand side goes through the wrapper shared with gsl_rk.c
+ * (gsl_rhs.h): a non-finite derivative or Jacobian on a trial state (a
+ * predicted or Newton iterate, a bsimp stage) is a rejected trial (GSL
+ * halves the step), only one at the accepted state stops the run.
  * GSL statuses, all mapped (the rhs's own status wins when it failed):
  *   GSL_SUCCESS -> MECH_OK; GSL_EBADFUNC -> the right-hand side's status
- *   (MECH_ENUMERIC for a non-finite value); GSL_FAILURE (Newton iteration
+ *   (MECH_ENUMERIC for a non-finite value at the accepted state);
+ *   MECH_GSL_TRIAL_REJECT (no smaller step avoids a non-finite trial) ->
+ *   MECH_ENUMERIC; GSL_FAILURE (Newton iteration
  *   diverging or tolerance unreachable with the smallest step),
  *   GSL_ENOPROG / GSL_ENOPROGJ (no progress), GSL_ESING / GSL_EDOM (singular
  *   iteration matrix) -> MECH_ENUMERIC; GSL_EMAXITER (an iteration limit)
@@ -53,12 +60,14 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "integrators/gsl_rhs.h"
 #include "integrators/integrator.h"
 
 #define MSBDF_SUB_MAX_STEPS 100000L /* internal bsimp steps per sub-step */
@@ -80,21 +89,13 @@ struct msbdf_ws {
     int cont;
     /* per-call context seen by the GSL callbacks */
     double h_scale;
-    const struct mech_ode_system *sys;
-    struct mech_ode_stats *stats;
-    struct mech_error *err;
-    enum mech_status rhs_status;
+    struct mech_gsl_rhs rhs;
 };
 
 static int msbdf_rhs(double t, const double y[], double dydt[], void *params)
 {
     struct msbdf_ws *w = params;
-    enum mech_status st = mech_ode_eval(w->sys, t, y, dydt, w->stats, w->err);
-    if (st != MECH_OK) {
-        w->rhs_status = st;
-        return GSL_EBADFUNC; /* stops the integration at once (STYLE.md §6) */
-    }
-    return GSL_SUCCESS;
+    return mech_gsl_rhs_eval(&w->rhs, t, y, dydt);
 }
 
 /* Forward-difference Jacobian (header): dfdy[i dim + j] = df_i/dy_j. */
@@ -114,9 +115,16 @@ static int msbdf_jac(double t, const double y[], double *dfdy, double dfdt[], vo
     for (size_t j = 0; j < n; j++) {
         const double yj = y[j];
         const double yp = yj + sq * fmax(fabs(yj), s);
-        const double d = yp - yj;
+        double d = yp - yj;
         w->ytmp[j] = yp;
         gs = msbdf_rhs(t, w->ytmp, w->f1, w);
+        if (gs == MECH_GSL_TRIAL_REJECT) {
+            /* the forward point is where f is undefined (a boundary the
+             * state is close to): the backward difference instead */
+            w->ytmp[j] = yj - d;
+            d = w->ytmp[j] - yj;
+            gs = msbdf_rhs(t, w->ytmp, w->f1, w);
+        }
         w->ytmp[j] = yj;
         if (gs != GSL_SUCCESS) return gs;
         for (size_t i = 0; i < n; i++)
@@ -135,9 +143,9 @@ static int msbdf_jac(double t, const double y[], double *dfdy, double dfdt[], vo
     }
     for (size_t i = 0; i < n * n; i++)
         if (!isfinite(dfdy[i])) {
-            w->rhs_status = mech_error_set(w->err, MECH_ENUMERIC, NULL,
-                                           "msbdf: non-finite Jacobian at t = %.9g s", t);
-            return GSL_EBADFUNC;
+            char text[80];
+            snprintf(text, sizeof text, "msbdf: non-finite Jacobian at t = %.9g s", t);
+            return mech_gsl_rhs_numeric(&w->rhs, t, y, text);
         }
     return GSL_SUCCESS;
 }
@@ -182,7 +190,7 @@ static enum mech_status msbdf_alloc(void **ws, size_t dim, const struct mech_ode
     w->aux = gsl_odeiv2_step_alloc(gsl_odeiv2_step_bsimp, dim);
     w->aux_con = gsl_odeiv2_control_y_new(w->atol, w->rtol);
     w->aux_ev = gsl_odeiv2_evolve_alloc(dim);
-    w->f0 = malloc(4 * dim * sizeof *w->f0);
+    w->f0 = malloc(5 * dim * sizeof *w->f0);
     if (!w->drv || !w->aux || !w->aux_con || !w->aux_ev || !w->f0) {
         msbdf_free(w);
         return mech_error_set(err, MECH_ENOMEM, NULL, "msbdf: out of memory");
@@ -190,6 +198,8 @@ static enum mech_status msbdf_alloc(void **ws, size_t dim, const struct mech_ode
     w->f1 = w->f0 + dim;
     w->ytmp = w->f0 + 2 * dim;
     w->y_out = w->f0 + 3 * dim;
+    w->rhs.dim = dim;
+    w->rhs.y_acc = w->f0 + 4 * dim;
     gsl_odeiv2_driver_set_nmax(w->drv, MSBDF_NMAX);
     *ws = w;
     return MECH_OK;
@@ -202,9 +212,11 @@ static enum mech_status msbdf_map(struct msbdf_ws *w, int gs, double t, double h
     switch (gs) {
     case GSL_SUCCESS:
         return MECH_OK;
+    case MECH_GSL_TRIAL_REJECT:
+        return mech_gsl_rhs_unavoidable(&w->rhs, "msbdf", t, err);
     case GSL_EBADFUNC:
-        if (w->rhs_status != MECH_OK)
-            return mech_error_set(err, w->rhs_status, NULL,
+        if (w->rhs.status != MECH_OK)
+            return mech_error_set(err, w->rhs.status, NULL,
                                   "msbdf: the right-hand side failed at t = %.9g s", t);
         return mech_error_set(err, MECH_ENUMERIC, NULL, "msbdf: bad function value at t = %.9g s",
                               t);
@@ -243,11 +255,8 @@ static enum mech_status msbdf_map(struct msbdf_ws *w, int gs, double t, double h
 static void msbdf_context(struct msbdf_ws *w, const struct mech_ode_system *sys, double h,
                           struct mech_ode_stats *stats, struct mech_error *err)
 {
-    w->sys = sys;
-    w->stats = stats;
-    w->err = err;
+    mech_gsl_rhs_begin(&w->rhs, sys, stats, err, 0);
     w->h_scale = h;
-    w->rhs_status = MECH_OK;
 }
 
 static enum mech_status msbdf_step(void *ws, const struct mech_ode_system *sys, double t, double h,
@@ -267,6 +276,7 @@ static enum mech_status msbdf_step(void *ws, const struct mech_ode_system *sys, 
                                   "internal steps",
                                   t, MSBDF_SUB_MAX_STEPS);
         const double tb = tc;
+        mech_gsl_rhs_accepted(&w->rhs, tc, y);
         int gs =
             gsl_odeiv2_evolve_apply(w->aux_ev, w->aux_con, w->aux, &w->gsys, &tc, t_end, &hc, y);
         enum mech_status st = msbdf_map(w, gs, tc, hc, "a sub-step (bsimp)", err);
@@ -290,6 +300,7 @@ static enum mech_status msbdf_evolve(void *ws, const struct mech_ode_system *sys
     gsl_odeiv2_evolve *ev = w->drv->e;
     const unsigned long failed_before = ev->failed_steps;
     const double t_before = *t;
+    mech_gsl_rhs_accepted(&w->rhs, *t, y);
     int gs = gsl_odeiv2_evolve_apply(ev, w->drv->c, w->drv->s, &w->gsys, t, t1, h, y);
     stats->rejected_steps += (long)(ev->failed_steps - failed_before);
     enum mech_status st = msbdf_map(w, gs, *t, *h, "a step", err);

@@ -7,9 +7,14 @@
  * event location) never disturb the main stepper's state. GSL's driver
  * (and its fixed-step driver, which fails when the error estimate is large)
  * is not used; the step budget is libmech's (ode.c), so GSL's nmax does not
- * apply. Every GSL status is mapped:
+ * apply. The right-hand side goes through the wrapper shared with msbdf
+ * (gsl_rhs.h): a non-finite derivative on a trial stage is a rejected trial
+ * (GSL halves the step), only one at the accepted state stops the run.
+ * Every GSL status is mapped:
  *   GSL_SUCCESS -> MECH_OK; GSL_EBADFUNC -> the status the right-hand side
- *   returned (MECH_ENUMERIC for a non-finite value); GSL_FAILURE (tolerance
+ *   returned (MECH_ENUMERIC for a non-finite value at the accepted state);
+ *   MECH_GSL_TRIAL_REJECT (no smaller step avoids a non-finite trial) ->
+ *   MECH_ENUMERIC; GSL_FAILURE (tolerance
  *   unreachable, step cannot shrink further) -> MECH_ENUMERIC;
  *   GSL_ENOMEM -> MECH_ENOMEM; GSL_EINVAL / GSL_EFAULT (a libmech bug) ->
  *   MECH_EINTERNAL; anything else -> MECH_ENUMERIC with gsl_strerror().
@@ -27,6 +32,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "integrators/gsl_rhs.h"
 #include "integrators/integrator.h"
 
 struct gsl_rk_ws {
@@ -37,23 +43,8 @@ struct gsl_rk_ws {
     double *yerr, *dydt_out;  /* scratch for step() */
     size_t dim;
     const char *name;
-    /* Per-call context seen by the GSL right-hand side. */
-    const struct mech_ode_system *sys;
-    struct mech_ode_stats *stats;
-    struct mech_error *err;
-    enum mech_status rhs_status;
+    struct mech_gsl_rhs rhs; /* per-call context seen by the GSL callback */
 };
-
-static int gsl_rk_rhs(double t, const double y[], double dydt[], void *params)
-{
-    struct gsl_rk_ws *w = params;
-    enum mech_status st = mech_ode_eval(w->sys, t, y, dydt, w->stats, w->err);
-    if (st != MECH_OK) {
-        w->rhs_status = st;
-        return GSL_EBADFUNC; /* stops the integration at once (STYLE.md §6) */
-    }
-    return GSL_SUCCESS;
-}
 
 static void gsl_rk_free(void *ws)
 {
@@ -65,6 +56,7 @@ static void gsl_rk_free(void *ws)
     if (w->ev) gsl_odeiv2_evolve_free(w->ev);
     free(w->yerr);
     free(w->dydt_out);
+    free(w->rhs.y_acc);
     free(w);
 }
 
@@ -82,7 +74,9 @@ static enum mech_status gsl_rk_alloc_type(void **ws, size_t dim, const struct me
     w->ev = gsl_odeiv2_evolve_alloc(dim);
     w->yerr = malloc(dim * sizeof *w->yerr);
     w->dydt_out = malloc(dim * sizeof *w->dydt_out);
-    if (!w->main || !w->aux || !w->con || !w->ev || !w->yerr || !w->dydt_out) {
+    w->rhs.dim = dim;
+    w->rhs.y_acc = malloc(dim * sizeof *w->rhs.y_acc);
+    if (!w->main || !w->aux || !w->con || !w->ev || !w->yerr || !w->dydt_out || !w->rhs.y_acc) {
         gsl_rk_free(w);
         return mech_error_set(err, MECH_ENOMEM, NULL, "%s: out of memory", name);
     }
@@ -106,9 +100,11 @@ static enum mech_status gsl_rk_map(struct gsl_rk_ws *w, int gs, double t, double
     switch (gs) {
     case GSL_SUCCESS:
         return MECH_OK;
+    case MECH_GSL_TRIAL_REJECT:
+        return mech_gsl_rhs_unavoidable(&w->rhs, w->name, t, err);
     case GSL_EBADFUNC:
-        if (w->rhs_status != MECH_OK)
-            return mech_error_set(err, w->rhs_status, NULL,
+        if (w->rhs.status != MECH_OK)
+            return mech_error_set(err, w->rhs.status, NULL,
                                   "%s: the right-hand side failed at t = %.9g s", w->name, t);
         return mech_error_set(err, MECH_ENUMERIC, NULL, "%s: bad function value at t = %.9g s",
                               w->name, t);
@@ -134,11 +130,8 @@ static enum mech_status gsl_rk_step(void *ws, const struct mech_ode_system *sys,
                                     struct mech_error *err)
 {
     struct gsl_rk_ws *w = ws;
-    w->sys = sys;
-    w->stats = stats;
-    w->err = err;
-    w->rhs_status = MECH_OK;
-    gsl_odeiv2_system gsys = {gsl_rk_rhs, NULL, w->dim, w};
+    mech_gsl_rhs_begin(&w->rhs, sys, stats, err, 1); /* one fixed step: no retry */
+    gsl_odeiv2_system gsys = {mech_gsl_rhs_fn, NULL, w->dim, &w->rhs};
     gsl_odeiv2_step_reset(w->aux);
     int gs = gsl_odeiv2_step_apply(w->aux, t, h, y, w->yerr, NULL, w->dydt_out, &gsys);
     return gsl_rk_map(w, gs, t, h, err);
@@ -149,11 +142,9 @@ static enum mech_status gsl_rk_evolve(void *ws, const struct mech_ode_system *sy
                                       struct mech_ode_stats *stats, struct mech_error *err)
 {
     struct gsl_rk_ws *w = ws;
-    w->sys = sys;
-    w->stats = stats;
-    w->err = err;
-    w->rhs_status = MECH_OK;
-    gsl_odeiv2_system gsys = {gsl_rk_rhs, NULL, w->dim, w};
+    mech_gsl_rhs_begin(&w->rhs, sys, stats, err, 0);
+    mech_gsl_rhs_accepted(&w->rhs, *t, y);
+    gsl_odeiv2_system gsys = {mech_gsl_rhs_fn, NULL, w->dim, &w->rhs};
     const unsigned long failed_before = w->ev->failed_steps;
     const double t_before = *t;
     int gs = gsl_odeiv2_evolve_apply(w->ev, w->con, w->main, &gsys, t, t1, h, y);

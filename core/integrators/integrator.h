@@ -30,7 +30,10 @@
  *   step-size control that measures per body (radau15) reads it in evolve().
  * - Right-hand sides return enum mech_status: anything but MECH_OK stops the
  *   integration cleanly (a GSL stepper sees GSL_EBADFUNC) and the driver
- *   reports that status.
+ *   reports that status. One exception in the GSL adapters (gsl_rhs.h): a
+ *   numerical failure (a non-finite derivative) on a TRIAL state of an
+ *   adaptive step is a rejected trial and the step shrinks; only one at the
+ *   accepted state, or one no smaller step avoids, stops the run.
  * - Statistics (steps, rejected steps, right-hand-side evaluations) are
  *   counted by the caller-owned struct mech_ode_stats passed to each call;
  *   methods count every evaluation through mech_ode_eval()/mech_ode_accel().

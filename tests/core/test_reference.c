@@ -89,6 +89,52 @@ static void test_kepler_ellipse(void)
     printf("kepler ellipse vs Kepler's equation: max |dr|/a (1 - e) = %.3e\n", worst);
 }
 
+/* The orbit through the pericentre state (q, 0, 0), (0, u, 0) (gm = 1),
+ * elements formed from those doubles in long double, at time t. */
+static void kepler_pericentre_ld(double q, double u, double t, double r[2], double v[2])
+{
+    const long double two_pi = 6.283185307179586476925286766559L;
+    long double a = 1.0L / (2.0L / q - (long double)u * u), e = 1.0L - q / a;
+    long double n = 1.0L / (a * sqrtl(a));
+    long double M = fmodl(n * (long double)t, two_pi), E = M + e * sinl(M);
+    for (int i = 0; i < 60; i++) {
+        long double d = (E - e * sinl(E) - M) / (1 - e * cosl(E));
+        E -= d;
+        if (fabsl(d) < 1e-19L) break;
+    }
+    long double b = sqrtl(1 - e * e), den = 1 - e * cosl(E);
+    r[0] = (double)(a * (cosl(E) - e));
+    r[1] = (double)(a * b * sinl(E));
+    v[0] = (double)(-a * n * sinl(E) / den);
+    v[1] = (double)(a * n * b * cosl(E) / den);
+}
+
+/* 1000 periods of e = 0.5 and e = 0.9 from their pericentre doubles: the
+ * reduction by whole periods must not multiply P's rounding by 1000 (with P
+ * in double the velocity at e = 0.9 was off by 1.5e-10 at t = 1000 x 2 pi,
+ * 5.6e-12 at e = 0.5). Against Kepler's equation in long double: 1e-13. */
+static void test_kepler_period_reduction(void)
+{
+    const double qs[2] = {0.5, 0.09999999999999998}, us[2] = {1.7320508075688772, 4.358898943540674};
+    const double ts[3] = {6283.1853071795862, 628.31853071795862, 6000.5};
+    double worst = 0;
+    for (int k = 0; k < 2; k++)
+        for (int j = 0; j < 3; j++) {
+            struct mech_vec3 r, v;
+            CHECK_EQ_INT(mech_kepler_propagate(1.0, mech_vec3_make(qs[k], 0, 0),
+                                               mech_vec3_make(0, us[k], 0), ts[j], &r, &v, NULL),
+                         MECH_OK);
+            double rw[2], vw[2];
+            kepler_pericentre_ld(qs[k], us[k], ts[j], rw, vw);
+            const double vn = hypot(vw[0], vw[1]);
+            const double d = fmax(hypot(r.x - rw[0], r.y - rw[1]) / hypot(rw[0], rw[1]),
+                                  hypot(v.x - vw[0], v.y - vw[1]) / vn);
+            if (d > worst) worst = d;
+        }
+    printf("kepler 1000 periods of e = 0.5, 0.9 vs long double: worst relative %.3e\n", worst);
+    CHECK(worst < 1e-13);
+}
+
 static void test_kepler_many_periods(void)
 {
     /* Circular orbit: r(t) = (cos t, sin t, 0) exactly; after 1e5 periods the
@@ -563,6 +609,7 @@ int main(void)
     test_recognition_issue6();
     test_kepler_ellipse();
     test_kepler_many_periods();
+    test_kepler_period_reduction();
     test_kepler_hyperbola_parabola();
     test_kepler_scales();
     test_kepler_vs_rk8pd();

@@ -1,0 +1,108 @@
+/* test_preset_scenes.c — issue 16: every accuracy preset keeps its promise
+ * (draft 1e-3, balanced 1e-8, precise 1e-10, machine 1e-11) on every scene
+ * of the issue's set, measured through the API (api_handle, JSON requests:
+ * what a user gets), never a timing.
+ *
+ * The scenes and references live in scene_set.h (shared with the bench).
+ * Error = max over the answer's samples and the listed arrays of
+ * |got - ref| / max(|ref|, floor) (floor: the scene's natural scale, so a
+ * component passing through 0 is measured against the motion's size).
+ * References, never the program's answer to the same request:
+ *   Kepler e = 0.5, 0.9 (10 and 1000 orbits; GM = a = 1, from pericentre):
+ *     Kepler's equation solved here in long double at the answer's times;
+ *   oscillator (k = m = 1, 1e4 periods, an ellipse): cos / sin;
+ *   torque-free asymmetric rigid body (moments 1, 2, 3, 100 s): the Jacobi
+ *     elliptic closed form omega(t) (mech_rigid_exact_omega, GSL's elliptic
+ *     functions: an independent method);
+ *   falling object 100 m at 32 deg N with Coriolis, heavy top 5 s, Mercury's
+ *     geodesic 10 orbits, Hénon–Heiles 1000 time units: an independent run
+ *     of a DIFFERENT method than the preset chose (radau15, rk8pd or rkck,
+ *     the first the operation accepts) at rtol = 1e-14.
+ * The Foucault pendulum (/v1/scenes/foucault) takes no "integrator" block,
+ * so it has no presets to test (said in the report and docs/accuracy.md).
+ *
+ * A promise the answer itself re-states as beyond the preset's reach (the
+ * selection's reason: "beyond what the preset can keep ... about X
+ * relative") is checked against X instead, and printed "re-stated".
+ *
+ * Modes: no argument — every scene but the known misses; "--known-misses"
+ * — only those (registered in CMakeLists.txt with WILL_FAIL, issue 16: the
+ * presets' promise is not yet kept there; the chooser rewrite must turn
+ * them green, then they move back to the main list).
+ */
+#include "scene_set.h"
+#include "testlib.h"
+
+/* Scenes where a preset misses its promise on today's code (issue 16, the
+ * chooser rewrite): "scene/preset". Filled from the measured run; empty
+ * when every promise is kept. */
+static const char *const KNOWN_MISSES[] = {
+    /* rkf45 at rtol 5.7e-7: 1.26e-3 relative after 1000 time units */
+    "Henon-Heiles 1000/draft",
+    /* 5.2e-11: rk8pd, rkck and radau15 at their tightest settings disagree
+     * by 5e-11 .. 1.4e-10 over 1000 time units (round-off), yet the answer
+     * does not re-state the promise */
+    "Henon-Heiles 1000/machine",
+    NULL};
+
+static int known_miss(const char *scene, const char *preset)
+{
+    char key[96];
+    snprintf(key, sizeof key, "%s/%s", scene, preset);
+    for (size_t i = 0; KNOWN_MISSES[i]; i++)
+        if (strcmp(KNOWN_MISSES[i], key) == 0) return 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const int misses_mode = argc > 1 && strcmp(argv[1], "--known-misses") == 0;
+    static const char *const presets[] = {"draft", "balanced", "precise", "machine"};
+    static const double promise[] = {1e-3, 1e-8, 1e-10, 1e-11};
+    CHECK(api_init() == 0);
+    for (size_t s = 0; s < N_SCENES; s++) {
+        const struct scene_def *sc = &SCENES[s];
+        for (int p = 0; p < 4; p++) {
+            if (known_miss(sc->name, presets[p]) != misses_mode) continue;
+            json_t *b = with_integrator(sc->body, json_pack("{ss}", "accuracy", presets[p]));
+            int st;
+            json_t *ans = post(sc->path, b, &st);
+            json_decref(b);
+            CHECK(st == 200);
+            if (st != 200 || !ans) {
+                json_decref(ans);
+                continue;
+            }
+            const char *method =
+                json_string_value(json_object_get(json_object_get(ans, "diagnostics"), "method"));
+            if (!method) method = "?";
+            json_t *ref = NULL;
+            const char *evidence = "exact";
+            switch (sc->ref) {
+            case REF_KEPLER: ref = exact_trajectory(ans, 1, sc->body); break;
+            case REF_OSC: ref = exact_trajectory(ans, 0, sc->body); break;
+            case REF_RIGID: ref = exact_rigid(ans); break;
+            case REF_RUN: ref = reference_run(sc, method, &evidence); break;
+            }
+            CHECK(ref != NULL);
+            double err = ref ? 0 : INFINITY;
+            for (int k = 0; ref && k < 3 && sc->arrays[k]; k++)
+                err = fmax(err, tree_err(at(ans, sc->arrays[k]), at(ref, sc->arrays[k]),
+                                         sc->floor_));
+            /* A promise round-off makes unreachable is re-stated in the answer:
+             * "... beyond what the preset can keep: ... can reach about X
+             * relative". Then the run must keep X instead (and say so). */
+            const double restated = ss_restated(ans, promise[p]);
+            printf("%-36s %-9s promise %.0e  method %-8s error %.3e (ref: %s)  %s", sc->name,
+                   presets[p], promise[p], method, err, evidence,
+                   err <= promise[p] ? "kept" : err <= restated ? "re-stated" : "MISSED");
+            if (restated > promise[p]) printf(" (answer re-states it: %.0e)", restated);
+            printf("\n");
+            fflush(stdout);
+            CHECK(err <= restated);
+            json_decref(ref);
+            json_decref(ans);
+        }
+    }
+    TEST_MAIN_END();
+}
