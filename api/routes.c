@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 extern const struct api_route api_route_rigid_inertia;
+extern const struct api_route api_route_vectors;
 extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
@@ -45,6 +46,7 @@ extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
 
 const struct api_route *const api_routes[] = {
+    &api_route_vectors,
     &api_route_rotation_convert,
     &api_route_rotation_compose,
     &api_route_rotation_apply,

@@ -169,6 +169,7 @@ def error_for(status, problem, retry_after=None, message=None):
 # Every POST operation of mechd v1: method name -> path (GET /v1 is the source of truth;
 # call(path, body) reaches paths added later).
 OPERATIONS = {
+    "vectors": "/v1/vectors",
     "rotation_convert": "/v1/rotation/convert",
     "rotation_compose": "/v1/rotation/compose",
     "rotation_apply": "/v1/rotation/apply",
