@@ -8,6 +8,7 @@
 
 extern const struct api_route api_route_rigid_inertia;
 extern const struct api_route api_route_vectors;
+extern const struct api_route api_route_tensor_symmetric;
 extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
@@ -47,6 +48,7 @@ extern const struct api_route api_route_hamiltonian_poincare;
 
 const struct api_route *const api_routes[] = {
     &api_route_vectors,
+    &api_route_tensor_symmetric,
     &api_route_rotation_convert,
     &api_route_rotation_compose,
     &api_route_rotation_apply,

@@ -170,6 +170,7 @@ def error_for(status, problem, retry_after=None, message=None):
 # call(path, body) reaches paths added later).
 OPERATIONS = {
     "vectors": "/v1/vectors",
+    "tensor_symmetric": "/v1/tensor/symmetric",
     "rotation_convert": "/v1/rotation/convert",
     "rotation_compose": "/v1/rotation/compose",
     "rotation_apply": "/v1/rotation/apply",
