@@ -27,6 +27,7 @@ extern const struct api_route api_route_examples;
 extern const struct api_route api_route_rotation_convert;
 extern const struct api_route api_route_rotation_compose;
 extern const struct api_route api_route_rotation_apply;
+extern const struct api_route api_route_rotation_euler_rates;
 extern const struct api_route api_route_rigid_rotate;
 extern const struct api_route api_route_rigid_top;
 extern const struct api_route api_route_rigid_stability;
@@ -52,6 +53,7 @@ const struct api_route *const api_routes[] = {
     &api_route_rotation_convert,
     &api_route_rotation_compose,
     &api_route_rotation_apply,
+    &api_route_rotation_euler_rates,
     &api_route_rigid_inertia,
     &api_route_rigid_rotate,
     &api_route_rigid_top,

@@ -174,6 +174,7 @@ OPERATIONS = {
     "rotation_convert": "/v1/rotation/convert",
     "rotation_compose": "/v1/rotation/compose",
     "rotation_apply": "/v1/rotation/apply",
+    "rotation_euler_rates": "/v1/rotation/euler-rates",
     "rigid_inertia": "/v1/rigid/inertia",
     "rigid_rotate": "/v1/rigid/rotate",
     "rigid_top": "/v1/rigid/top",
