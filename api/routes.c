@@ -31,6 +31,7 @@ extern const struct api_route api_route_rotation_euler_rates;
 extern const struct api_route api_route_rigid_rotate;
 extern const struct api_route api_route_rigid_top;
 extern const struct api_route api_route_rigid_stability;
+extern const struct api_route api_route_small_oscillations;
 extern const struct api_route api_route_relativity_velocity_addition;
 extern const struct api_route api_route_relativity_interval;
 extern const struct api_route api_route_relativity_worldline;
@@ -58,6 +59,7 @@ const struct api_route *const api_routes[] = {
     &api_route_rigid_rotate,
     &api_route_rigid_top,
     &api_route_rigid_stability,
+    &api_route_small_oscillations,
     &api_route_relativity_boost,
     &api_route_relativity_velocity_addition,
     &api_route_relativity_interval,

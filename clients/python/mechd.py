@@ -179,6 +179,7 @@ OPERATIONS = {
     "rigid_rotate": "/v1/rigid/rotate",
     "rigid_top": "/v1/rigid/top",
     "rigid_stability": "/v1/rigid/stability",
+    "small_oscillations": "/v1/small-oscillations",
     "relativity_boost": "/v1/relativity/boost",
     "relativity_velocity_addition": "/v1/relativity/velocity-addition",
     "relativity_interval": "/v1/relativity/interval",
