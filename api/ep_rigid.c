@@ -113,6 +113,16 @@
                           ",\"vertices\":" S_MESH_VERTICES ",\"faces\":" S_MESH_FACES,     \
                           ",\"vertices\",\"faces\"")
 #define S_POINT    S_SHAPE("point", "point mass", "", "")
+#define S_TENSOR_ROW                                                                    \
+    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"                       \
+    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60}}"
+#define S_TENSOR   S_SHAPE("tensor", "a part known by its mass, its own tensor about its " \
+                           "centre of mass and that centre (position)",                   \
+                           ",\"tensor\":{\"type\":\"array\",\"minItems\":3,"            \
+                           "\"maxItems\":3,\"items\":" S_TENSOR_ROW ",\"description\":"    \
+                           "\"kg m^2, about the part's centre of mass, in its body axes "  \
+                           "(scene axes without orientation); symmetric\"}" S_ORIENT_PROP, \
+                           ",\"tensor\"")
 
 /* The point branch comes last: when a part fails two branches with the same
  * number of errors (a sphere missing its radius fails "sphere" by the missing
@@ -121,7 +131,7 @@
 #define S_BODY                                                                          \
     "{\"oneOf\":[" S_ROD "," S_BOX "," S_SPHERE "," S_SHELL "," S_CYLINDER "," S_CONE    \
     "," S_HEMI "," S_TUBE "," S_DISC "," S_RING "," S_PLATE "," S_TRIANGLE ","           \
-    S_ELLIPSOID "," S_TORUS "," S_MESH "," S_POINT "]}"
+    S_ELLIPSOID "," S_TORUS "," S_MESH "," S_TENSOR "," S_POINT "]}"
 
 static const char schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"bodies\"],"
@@ -159,7 +169,12 @@ static const char description[] =
     "at /bodies/i/faces saying which edge is open, shared by more faces or inconsistently "
     "oriented; a mesh oriented all inwards is accepted and reported as inverted; volume "
     "integrals by the divergence theorem over signed tetrahedra, in coordinates centred "
-    "on the mesh; at most 100000 vertices and 200000 faces, three budget steps per face). "
+    "on the mesh; at most 100000 vertices and 200000 faces, three budget steps per face); "
+    "tensor (a part known by its mass, its own tensor about its centre of mass, kg m^2, in "
+    "its body axes, and position = that centre: the parallel-axis theorem on a tensor the "
+    "user has; refused at /bodies/i/tensor when not symmetric within 1e-12 of its largest "
+    "entry or when no mass distribution has it: a principal moment < 0 or larger than the "
+    "sum of the other two). "
     "Any part may be \"hole\": true: it is removed material, entering every sum with "
     "negative mass; its mass is the mass its volume would have at the surrounding "
     "material's density (the caller's job), and the total mass must stay > 0. A part's "
@@ -203,6 +218,7 @@ static const char *const shape_names[MECH_SHAPE_COUNT] = {
     [MECH_SHAPE_RING] = "ring",         [MECH_SHAPE_PLATE] = "plate",
     [MECH_SHAPE_TRIANGLE] = "triangle", [MECH_SHAPE_ELLIPSOID] = "ellipsoid",
     [MECH_SHAPE_TORUS] = "torus",       [MECH_SHAPE_MESH] = "mesh",
+    [MECH_SHAPE_TENSOR] = "tensor",
 };
 
 /* Read body i's orientation (any form of api/rotation_request.h; passive by
@@ -309,6 +325,13 @@ static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
         const json_t *vj = json_object_get(b, "vertices");
         for (size_t k = 0; k < 3; k++)
             p->vertices[k] = api_vec3_of(json_array_get(vj, k));
+        break;
+    }
+    case MECH_SHAPE_TENSOR: {
+        const json_t *tj = json_object_get(b, "tensor");
+        for (size_t r = 0; r < 3; r++)
+            for (size_t q = 0; q < 3; q++)
+                p->tensor.a[r][q] = json_number_value(json_array_get(json_array_get(tj, r), q));
         break;
     }
     case MECH_SHAPE_MESH: {
