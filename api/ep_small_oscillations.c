@@ -1,8 +1,10 @@
 /* ep_small_oscillations.c — POST /v1/small-oscillations: small oscillations
  * about an equilibrium or a steady motion, for one system per request:
- * a near-circular orbit in a central potential, the conical pendulum, and a
- * physical pendulum (a body from /v1/rigid/inertia about any pivot and axis).
+ * a near-circular orbit in a central potential, the conical pendulum, a
+ * physical pendulum (a body from /v1/rigid/inertia about any pivot and axis)
+ * and the normal modes of the linearised Foucault pendulum.
  * JSON <-> core only; the physics is core/small_oscillations.c. */
+#include <math.h>
 #include <string.h>
 
 #include "endpoint.h"
@@ -51,9 +53,20 @@
     "\"offset\":" S_V3("m, centre of mass minus pivot") ","                                 \
     "\"axis\":" S_V3("the horizontal hinge axis through the pivot, any length") ","        \
     "\"g\":" S_G "}}"
+#define S_FOUCAULT                                                                       \
+    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
+    "\"required\":[\"name\",\"length\",\"latitude_deg\"],\"properties\":{"                \
+    "\"name\":{\"const\":\"foucault_pendulum\"},"                                          \
+    "\"length\":" S_POS("m") ",\"g\":" S_G ","                                             \
+    "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90,"              \
+    "\"description\":\"deg, north positive\"},"                                             \
+    "\"omega_earth\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e3,"                \
+    "\"default\":7.2921159e-5,\"description\":\"rad/s, the Earth's rotation rate (the "   \
+    "default of /v1/scenes/foucault)\"}}}"
 static const char schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"system\"],"
-    "\"properties\":{\"system\":{\"oneOf\":[" S_CENTRAL "," S_CONICAL "," S_PHYSICAL "]}}}";
+    "\"properties\":{\"system\":{\"oneOf\":[" S_CENTRAL "," S_CONICAL "," S_PHYSICAL ","
+    S_FOUCAULT "]}}}";
 /* clang-format on */
 
 static const char description[] =
@@ -77,7 +90,18 @@ static const char description[] =
     "tensor_pivot = I_cm + m(d^2 1 - d d^T) (parallel axis), moment_axis = n.I_pivot.n, arm "
     "= distance of the centre of mass from the axis, omega = sqrt(m g arm / moment_axis), "
     "period and equivalent_length = moment_axis/(m arm); swing in the body's plane or out of "
-    "it by choosing the axis; a centre of mass on the axis is refused at /system/offset.";
+    "it by choosing the axis; a centre of mass on the axis is refused at /system/offset. "
+    "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.2921159e-5): the "
+    "linearised equations with the vertical rotation omega_z = Omega sin(latitude) (notes "
+    "§1.3: x'' = -omega0^2 x + 2 omega_z y', y'' = -omega0^2 y - 2 omega_z x'; x east, y "
+    "north) have two circular normal modes, answered as modes [{sense: counterclockwise, "
+    "omega: sqrt(omega0^2 + omega_z^2) - omega_z}, {sense: clockwise, omega: sqrt(...) + "
+    "omega_z}] (seen from above), with omega0 = sqrt(g/l), omega_z, swing_omega = "
+    "sqrt(omega0^2 + omega_z^2), swing_period, precession_rate = |omega_z| with "
+    "precession_sense (clockwise in the north, counterclockwise in the south, none on the "
+    "equator) and precession_period = 2 pi/|omega_z| (null on the equator): the plane of "
+    "a planar swing turns at the mean of the two modes, exactly -omega_z in this "
+    "linearised model (finite-amplitude corrections: /v1/scenes/foucault).";
 
 static const char example[] =
     "{\"system\":{\"name\":\"central_orbit\",\"mass\":1,\"r0\":1,\"terms\":[{\"k\":1,\"n\":1}]}}";
@@ -186,6 +210,48 @@ static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
     return out;
 }
 
+static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
+{
+    struct mech_foucault_modes f;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_foucault_modes(
+        api_number(s, "length", 1), api_number(s, "g", 9.80665),
+        api_number(s, "omega_earth", 7.2921159e-5),
+        api_number(s, "latitude_deg", 0) * (M_PI / 180), &f, &e);
+    if (st != MECH_OK) {
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    json_t *modes = json_array(), *m1 = json_object(), *m2 = json_object();
+    if (!modes || !m1 || !m2) {
+        json_decref(modes);
+        json_decref(m1);
+        json_decref(m2);
+        return nomem(c, out);
+    }
+    SET(m1, "sense", json_string("counterclockwise"));
+    SET(m1, "omega", api_real(c, f.ccw));
+    SET(m1, "period", api_real(c, 2 * M_PI / f.ccw));
+    SET(m2, "sense", json_string("clockwise"));
+    SET(m2, "omega", api_real(c, f.cw));
+    SET(m2, "period", api_real(c, 2 * M_PI / f.cw));
+    json_array_append_new(modes, m1);
+    json_array_append_new(modes, m2);
+    SET(out, "omega0", api_real(c, f.omega0));
+    SET(out, "omega_z", api_real(c, f.omega_z));
+    SET(out, "swing_omega", api_real(c, f.swing));
+    SET(out, "swing_period", api_real(c, 2 * M_PI / f.swing));
+    SET(out, "modes", modes);
+    SET(out, "precession_rate", api_real(c, fabs(f.omega_z)));
+    SET(out, "precession_sense", json_string(f.omega_z > 0   ? "clockwise"
+                                             : f.omega_z < 0 ? "counterclockwise"
+                                                             : "none"));
+    SET(out, "precession_period",
+        f.omega_z != 0 ? api_real(c, 2 * M_PI / fabs(f.omega_z)) : json_null());
+    return out;
+}
+
 static json_t *small_oscillations(struct api_call *c, const json_t *body)
 {
     const json_t *s = json_object_get(body, "system");
@@ -195,6 +261,7 @@ static json_t *small_oscillations(struct api_call *c, const json_t *body)
     SET(out, "system", json_string(name));
     if (!strcmp(name, "central_orbit")) return central(c, s, out);
     if (!strcmp(name, "conical_pendulum")) return conical(c, s, out);
+    if (!strcmp(name, "foucault_pendulum")) return foucault(c, s, out);
     return physical(c, s, out);
 }
 
@@ -203,7 +270,7 @@ const struct api_route api_route_small_oscillations = {
     "/v1/small-oscillations",
     "Small oscillations about a steady motion: near-circular orbits in a central potential "
     "(radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical "
-    "pendulum about any pivot and axis",
+    "pendulum about any pivot and axis, the Foucault pendulum's normal modes",
     description,
     schema,
     example,

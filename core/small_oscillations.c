@@ -128,3 +128,26 @@ enum mech_status mech_physical_pendulum(double mass, struct mech_mat3 i_cm, stru
     *out = r;
     return MECH_OK;
 }
+
+enum mech_status mech_foucault_modes(double length, double g, double omega, double latitude,
+                                     struct mech_foucault_modes *out, struct mech_error *err)
+{
+    if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output given");
+    if (!pos(length)) return mech_error_set(err, MECH_EINVAL, "length", "must be finite and > 0");
+    if (!pos(g)) return mech_error_set(err, MECH_EINVAL, "g", "must be finite and > 0");
+    if (!(isfinite(omega) && omega >= 0))
+        return mech_error_set(err, MECH_EINVAL, "omega_earth", "must be finite and >= 0");
+    if (!(fabs(latitude) <= PI / 2))
+        return mech_error_set(err, MECH_EINVAL, "latitude_deg", "must lie in [-90, 90] deg");
+    struct mech_foucault_modes r;
+    r.omega0 = sqrt(g / length);
+    r.omega_z = omega * sin(latitude);
+    r.swing = hypot(r.omega0, r.omega_z);
+    r.ccw = r.swing - r.omega_z;
+    r.cw = r.swing + r.omega_z;
+    r.precession = -r.omega_z;
+    if (!isfinite(r.swing) || !isfinite(r.cw))
+        return mech_error_set(err, MECH_ENUMERIC, "length", "a result is not finite");
+    *out = r;
+    return MECH_OK;
+}

@@ -151,6 +151,50 @@ static void test_physical(void)
     CHECK(!strcmp(e.param, "axis"));
 }
 
+/* Foucault: the modes solve -a^2 - 2 omega_z a + omega0^2 = 0 (a = ccw, -cw);
+ * and a second method: integrate the linear equations (RK4, small step) from a
+ * planar release and read the plane's turn after a number of swings. */
+static void test_foucault(void)
+{
+    struct mech_foucault_modes f;
+    struct mech_error e;
+    mech_error_clear(&e);
+    const double l = 67, g = 9.80665, w = 7.2921159e-5, lat = 32 * M_PI / 180;
+    CHECK(mech_foucault_modes(l, g, w, lat, &f, &e) == MECH_OK);
+    CHECK_CLOSE(f.omega_z, w * sin(lat), 1e-15, 0);
+    double a1 = f.ccw, a2 = -f.cw;
+    CHECK_CLOSE(-a1 * a1 - 2 * f.omega_z * a1 + g / l, 0, 0, 1e-15);
+    CHECK_CLOSE(-a2 * a2 - 2 * f.omega_z * a2 + g / l, 0, 0, 1e-15);
+    CHECK_CLOSE(f.precession, (a1 + a2) / 2, 1e-12, 0);
+    /* exaggerated rotation so the turn is visible in a short run: omega_z = 0.05 omega0 */
+    double om = 0.05 * sqrt(g / l) / sin(lat);
+    CHECK(mech_foucault_modes(l, g, om, lat, &f, &e) == MECH_OK);
+    double s[4] = {1, 0, 0, 0}, h = 1e-3, oz = f.omega_z, w0 = g / l, t = 0;
+    int n = (int)(2 * M_PI / f.swing * 10 / h); /* ten swing periods */
+    for (int k = 0; k < n; k++, t += h) {
+        double k1[4], k2[4], k3[4], k4[4], y[4];
+#define RHS(o, q) (o[0] = q[2], o[1] = q[3], o[2] = -w0 * q[0] + 2 * oz * q[3], \
+                   o[3] = -w0 * q[1] - 2 * oz * q[2])
+        RHS(k1, s);
+        for (int i = 0; i < 4; i++) y[i] = s[i] + h / 2 * k1[i];
+        RHS(k2, y);
+        for (int i = 0; i < 4; i++) y[i] = s[i] + h / 2 * k2[i];
+        RHS(k3, y);
+        for (int i = 0; i < 4; i++) y[i] = s[i] + h * k3[i];
+        RHS(k4, y);
+#undef RHS
+        for (int i = 0; i < 4; i++) s[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+    }
+    /* closed form of this release: q = e^{-i oz t} (cos W t + i (oz/W) sin W t) */
+    double W = f.swing, ph = -oz * t;
+    double re = cos(W * t), im = oz / W * sin(W * t);
+    CHECK_CLOSE(s[0], cos(ph) * re - sin(ph) * im, 0, 1e-9);
+    CHECK_CLOSE(s[1], sin(ph) * re + cos(ph) * im, 0, 1e-9);
+    mech_error_clear(&e);
+    CHECK(mech_foucault_modes(l, g, w, 2, &f, &e) == MECH_EINVAL);
+    CHECK(!strcmp(e.param, "latitude_deg"));
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -159,5 +203,6 @@ int main(void)
     test_orbit_errors();
     test_conical();
     test_physical();
+    test_foucault();
     TEST_MAIN_END();
 }

@@ -97,4 +97,27 @@ enum mech_status mech_physical_pendulum(double mass, struct mech_mat3 i_cm, stru
                                         struct mech_physical_pendulum *out,
                                         struct mech_error *err);
 
+struct mech_foucault_modes {
+    double omega0;          /* sqrt(g/l), rad/s */
+    double omega_z;         /* Omega sin(latitude), rad/s: the local vertical rotation */
+    double swing;           /* sqrt(omega0^2 + omega_z^2), rad/s: the swing frequency */
+    double ccw, cw;         /* the two circular normal modes' angular frequencies, rad/s,
+                               counterclockwise and clockwise seen from above:
+                               swing - omega_z and swing + omega_z */
+    double precession;      /* rad/s, counterclockwise positive: -omega_z (clockwise in the
+                               north), exact in the linearised equations */
+};
+
+/* Normal modes of the linearised Foucault pendulum (notes §1.3 "Example: The
+ * Foucault Pendulum"; x east, y north, z up, Coriolis with the vertical
+ * component of Omega only):
+ *   x'' = -omega0^2 x + 2 omega_z y',  y'' = -omega0^2 y - 2 omega_z x';
+ * with q = x + i y, q'' + 2i omega_z q' + omega0^2 q = 0 and q = e^{i a t}:
+ * a = -omega_z +- sqrt(omega0^2 + omega_z^2). length (m, > 0), g (m/s^2, > 0),
+ * omega (rad/s, finite, >= 0), latitude (rad, in [-pi/2, pi/2]).
+ * Returns MECH_OK; MECH_EINVAL with param "length", "g", "omega_earth" or
+ * "latitude_deg" (the API's name). */
+enum mech_status mech_foucault_modes(double length, double g, double omega, double latitude,
+                                     struct mech_foucault_modes *out, struct mech_error *err);
+
 #endif
