@@ -10,6 +10,7 @@
 #include "rotation_request.h"
 #include "mech/inertia.h"
 #include "mech/rotation.h"
+#include "mech/vector_algebra.h"
 
 /* ---- schema ------------------------------------------------------------------ */
 
@@ -188,7 +189,10 @@ static const char description[] =
     "positive, row 2 = row 0 x row 1), degenerate = two moments agree within 1e-10 of the "
     "largest (then the axes are one orthonormal basis of the degenerate subspace: the scene "
     "axes if all three agree). With omega (rad/s, rotation about the origin held at rest): "
-    "angular_momentum = I omega and kinetic_energy = omega.I.omega/2. parts lists, per part "
+    "angular_momentum = I omega and kinetic_energy = omega.I.omega/2, angle_L_omega (rad, "
+    "atan2(|omega x L|, omega.L); null when omega or L is zero) and torque_to_hold_axis = "
+    "omega x L (N m: the torque that keeps the body turning steadily at omega about that "
+    "axis, dL/dt of L carried round with the body). parts lists, per part "
     "in order, its shape, hole flag, mass (negative for a hole), center_of_mass (scene) "
     "and tensor about its own centre of mass in scene axes (negative for a hole), plus "
     "volume and inverted for a mesh: tensor_center_of_mass = sum over parts of tensor + "
@@ -447,6 +451,15 @@ static json_t *inertia(struct api_call *c, const json_t *body)
     if (wj) {
         json_object_set_new_nocheck(out, "angular_momentum", api_vec3(c, l));
         json_object_set_new_nocheck(out, "kinetic_energy", api_real(c, ke));
+        /* angle between L and omega (atan2, core/vector_algebra.c) and omega x L */
+        struct mech_vector_pair vp;
+        struct mech_error e2;
+        mech_error_clear(&e2);
+        int ok = mech_vector_pair(api_vec3_of(wj), l, &vp, &e2) == MECH_OK;
+        json_object_set_new_nocheck(out, "angle_L_omega",
+                                    ok && vp.has_angle ? api_real(c, vp.angle) : json_null());
+        json_object_set_new_nocheck(out, "torque_to_hold_axis",
+                                    ok ? api_vec3(c, vp.cross) : json_null());
     }
     json_object_set_new_nocheck(out, "parts", pj);
     return out;
