@@ -44,14 +44,15 @@
     "\"description\":\"rad, cone half-angle from the downward vertical\"}}}"
 #define S_PHYSICAL                                                                       \
     "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
-    "\"required\":[\"name\",\"mass\",\"tensor_center_of_mass\",\"offset\",\"axis\"],"      \
+    "\"required\":[\"name\",\"mass\",\"tensor_center_of_mass\",\"offset\"],"      \
     "\"properties\":{\"name\":{\"const\":\"physical_pendulum\"},"                          \
     "\"mass\":" S_POS("kg (as /v1/rigid/inertia's mass)") ","                              \
     "\"tensor_center_of_mass\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"          \
     "\"items\":" S_V3("row") ",\"description\":\"kg m^2, about the centre of mass (as "    \
     "/v1/rigid/inertia's tensor_center_of_mass)\"},"                                        \
     "\"offset\":" S_V3("m, centre of mass minus pivot") ","                                 \
-    "\"axis\":" S_V3("the horizontal hinge axis through the pivot, any length") ","        \
+    "\"axis\":" S_V3("the horizontal hinge axis through the pivot, any length; leave it " \
+    "out for a ball joint (both modes)") ","        \
     "\"g\":" S_G "}}"
 #define S_FOUCAULT                                                                       \
     "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
@@ -91,6 +92,11 @@ static const char description[] =
     "= distance of the centre of mass from the axis, omega = sqrt(m g arm / moment_axis), "
     "period and equivalent_length = moment_axis/(m arm); swing in the body's plane or out of "
     "it by choosing the axis; a centre of mass on the axis is refused at /system/offset. "
+    "Without axis the pivot is a ball joint (offset points down): the turn about the "
+    "vertical is free (its momentum zero), the horizontal motion has the inertia M = I_hh - "
+    "I_he I_eh / I_ee, and modes lists the two normal modes, fastest first, each {axis "
+    "(unit, horizontal: the body swings about it), moment (M's eigenvalue), omega = sqrt(m "
+    "g |d| / moment), period, equivalent_length}; arm = |offset|. "
     "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.2921159e-5): the "
     "linearised equations with the vertical rotation omega_z = Omega sin(latitude) (notes "
     "§1.3: x'' = -omega0^2 x + 2 omega_z y', y'' = -omega0^2 y - 2 omega_z x'; x east, y "
@@ -183,6 +189,42 @@ static json_t *conical(struct api_call *c, const json_t *s, json_t *out)
     return out;
 }
 
+static json_t *ball(struct api_call *c, const json_t *s, json_t *out, struct mech_mat3 t)
+{
+    struct mech_ball_pendulum b;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st =
+        mech_ball_pendulum(api_number(s, "mass", 1), t,
+                           api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
+                           api_number(s, "g", 9.80665), &b, &e);
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "tensor")) strcpy(e.param, "tensor_center_of_mass");
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    json_t *modes = json_array();
+    if (!modes) return nomem(c, out);
+    for (int k = 0; k < 2; k++) {
+        json_t *m = json_object();
+        if (!m) {
+            json_decref(modes);
+            return nomem(c, out);
+        }
+        SET(m, "axis", api_vec3(c, b.axis[k]));
+        SET(m, "moment", api_real(c, b.moment[k]));
+        SET(m, "omega", api_real(c, b.omega[k]));
+        SET(m, "period", api_real(c, 2 * M_PI / b.omega[k]));
+        SET(m, "equivalent_length", api_real(c, b.moment[k] / (api_number(s, "mass", 1) * b.arm)));
+        json_array_append_new(modes, m);
+    }
+    SET(out, "pivot", json_string("ball_joint"));
+    SET(out, "tensor_pivot", api_mat3(c, b.tensor_pivot));
+    SET(out, "arm", api_real(c, b.arm));
+    SET(out, "modes", modes);
+    return out;
+}
+
 static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
 {
     const json_t *tj = json_object_get(s, "tensor_center_of_mass");
@@ -190,6 +232,7 @@ static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             t.a[i][j] = json_number_value(json_array_get(json_array_get(tj, i), j));
+    if (!json_object_get(s, "axis")) return ball(c, s, out, t);
     struct mech_physical_pendulum p;
     struct mech_error e;
     mech_error_clear(&e);
@@ -201,6 +244,7 @@ static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
         json_decref(out);
         return api_call_fail_core(c, st, &e, "/system");
     }
+    SET(out, "pivot", json_string("hinge"));
     SET(out, "tensor_pivot", api_mat3(c, p.tensor_pivot));
     SET(out, "moment_axis", api_real(c, p.moment_axis));
     SET(out, "arm", api_real(c, p.arm));

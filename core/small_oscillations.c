@@ -151,3 +151,71 @@ enum mech_status mech_foucault_modes(double length, double g, double omega, doub
     *out = r;
     return MECH_OK;
 }
+
+/* Largest-magnitude component positive (the first of near-ties). */
+static struct mech_vec3 sign_rule(struct mech_vec3 v)
+{
+    double c[3] = {v.x, v.y, v.z};
+    double mx = fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
+    for (int i = 0; i < 3; i++)
+        if (fabs(c[i]) >= mx * (1 - 1e-12)) return c[i] < 0 ? mech_vec3_scale(v, -1) : v;
+    return v;
+}
+
+enum mech_status mech_ball_pendulum(double mass, struct mech_mat3 i_cm, struct mech_vec3 d,
+                                    double g, struct mech_ball_pendulum *out,
+                                    struct mech_error *err)
+{
+    if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output given");
+    /* the tensor about the pivot and the checks: through the hinge version, about an
+     * axis normal to d (any; only tensor_pivot is used from it) */
+    struct mech_vec3 a = fabs(d.x) <= fabs(d.y) && fabs(d.x) <= fabs(d.z)
+                             ? mech_vec3_make(1, 0, 0)
+                             : (fabs(d.y) <= fabs(d.z) ? mech_vec3_make(0, 1, 0)
+                                                       : mech_vec3_make(0, 0, 1));
+    double dn = mech_vec3_norm(d);
+    if (!(dn > 0) && mech_vec3_isfinite(d))
+        return mech_error_set(err, MECH_EDOMAIN, "offset",
+                              "the centre of mass is at the pivot: no restoring torque");
+    struct mech_physical_pendulum h;
+    enum mech_status st = mech_physical_pendulum(mass, i_cm, d, mech_vec3_cross(d, a), g, &h, err);
+    if (st != MECH_OK) return st;
+    struct mech_vec3 e = mech_vec3_scale(d, -1 / dn);
+    struct mech_vec3 u = mech_vec3_cross(d, a);
+    u = mech_vec3_scale(u, 1 / mech_vec3_norm(u));
+    struct mech_vec3 v = mech_vec3_cross(e, u);
+    const struct mech_mat3 ip = h.tensor_pivot;
+#define Q(x, y) mech_vec3_dot((x), mech_mat3_mul_vec(ip, (y)))
+    double iuu = Q(u, u), ivv = Q(v, v), iuv = Q(u, v), iee = Q(e, e), iue = Q(u, e),
+           ive = Q(v, e);
+#undef Q
+    double tr = ip.a[0][0] + ip.a[1][1] + ip.a[2][2];
+    if (iee > 1e-12 * tr) {
+        iuu -= iue * iue / iee;
+        ivv -= ive * ive / iee;
+        iuv -= iue * ive / iee;
+    }
+    double mean = 0.5 * (iuu + ivv), half = 0.5 * (iuu - ivv), r = hypot(half, iuv);
+    double m0 = mean - r, m1 = mean + r;
+    if (!(m0 > 0))
+        return mech_error_set(err, MECH_EDOMAIN, "tensor",
+                              "a reduced moment about a horizontal axis is %.6g kg m^2, not > 0",
+                              m0);
+    /* eigenvector of [[iuu, iuv], [iuv, ivv]] for m1: angle t with tan 2t = 2 iuv/(iuu - ivv) */
+    double t = 0.5 * atan2(iuv, half);
+    struct mech_vec3 w1 = mech_vec3_add(mech_vec3_scale(u, cos(t)), mech_vec3_scale(v, sin(t)));
+    struct mech_vec3 w0 = mech_vec3_cross(e, w1);
+    struct mech_ball_pendulum b;
+    b.tensor_pivot = ip;
+    b.arm = dn;
+    b.moment[0] = m0;
+    b.moment[1] = m1;
+    b.axis[0] = sign_rule(w0);
+    b.axis[1] = sign_rule(w1);
+    b.omega[0] = sqrt(mass * g * dn / m0);
+    b.omega[1] = sqrt(mass * g * dn / m1);
+    if (!isfinite(b.omega[0]) || !isfinite(b.omega[1]))
+        return mech_error_set(err, MECH_ENUMERIC, "tensor", "a result is not finite");
+    *out = b;
+    return MECH_OK;
+}

@@ -195,6 +195,50 @@ static void test_foucault(void)
     CHECK(!strcmp(e.param, "latitude_deg"));
 }
 
+static double det3(struct mech_mat3 m)
+{
+    return m.a[0][0] * (m.a[1][1] * m.a[2][2] - m.a[1][2] * m.a[2][1]) -
+           m.a[0][1] * (m.a[1][0] * m.a[2][2] - m.a[1][2] * m.a[2][0]) +
+           m.a[0][2] * (m.a[1][0] * m.a[2][1] - m.a[1][1] * m.a[2][0]);
+}
+
+/* Ball joint: the disc hung from its rim has the two hinge frequencies as its
+ * modes; for a body with products of inertia coupling the yaw, each omega^2
+ * solves det(K - omega^2 I_pivot) = 0 with K = m g |d| (1 - e e^T) (the full
+ * 3-D linearisation, an independent route from the reduced 2x2 one). */
+static void test_ball(void)
+{
+    struct mech_error e;
+    struct mech_ball_pendulum b;
+    const double m = 2, g = 9.81, R = 0.3;
+    struct mech_mat3 disc = {{{m * R * R / 4, 0, 0}, {0, m * R * R / 2, 0}, {0, 0, m * R * R / 4}}};
+    mech_error_clear(&e);
+    CHECK(mech_ball_pendulum(m, disc, mech_vec3_make(0, 0, -R), g, &b, &e) == MECH_OK);
+    CHECK_CLOSE(b.omega[0], sqrt(4 * g / (5 * R)), 1e-15, 0);
+    CHECK_CLOSE(b.omega[1], sqrt(2 * g / (3 * R)), 1e-15, 0);
+    CHECK_CLOSE(b.axis[0].x, 1, 0, 1e-15);
+    CHECK_CLOSE(b.axis[1].y, 1, 0, 1e-15);
+    struct mech_mat3 body = {{{0.3, 0.05, -0.08}, {0.05, 0.4, 0.06}, {-0.08, 0.06, 0.5}}};
+    struct mech_vec3 d = mech_vec3_make(0.1, -0.2, -0.7);
+    CHECK(mech_ball_pendulum(m, body, d, g, &b, &e) == MECH_OK);
+    double dn = mech_vec3_norm(d), ev[3] = {-d.x / dn, -d.y / dn, -d.z / dn};
+    for (int k = 0; k < 2; k++) {
+        struct mech_mat3 a;
+        double w2 = b.omega[k] * b.omega[k], scale = 0;
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++) {
+                a.a[i][j] = m * g * dn * ((i == j) - ev[i] * ev[j]) - w2 * b.tensor_pivot.a[i][j];
+                scale = fmax(scale, fabs(a.a[i][j]));
+            }
+        CHECK(fabs(det3(a)) <= 1e-13 * scale * scale * scale);
+        CHECK_CLOSE(mech_vec3_dot(b.axis[k], d), 0, 0, 1e-15);
+    }
+    CHECK(b.omega[0] > b.omega[1]);
+    mech_error_clear(&e);
+    CHECK(mech_ball_pendulum(m, body, mech_vec3_make(0, 0, 0), g, &b, &e) == MECH_EDOMAIN);
+    CHECK(!strcmp(e.param, "offset"));
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -204,5 +248,6 @@ int main(void)
     test_conical();
     test_physical();
     test_foucault();
+    test_ball();
     TEST_MAIN_END();
 }

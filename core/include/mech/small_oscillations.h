@@ -97,6 +97,31 @@ enum mech_status mech_physical_pendulum(double mass, struct mech_mat3 i_cm, stru
                                         struct mech_physical_pendulum *out,
                                         struct mech_error *err);
 
+struct mech_ball_pendulum {
+    struct mech_mat3 tensor_pivot;  /* kg m^2, about the pivot */
+    double arm;                     /* |d|, m */
+    double moment[2];               /* kg m^2, ascending: eigenvalues of the reduced
+                                       horizontal inertia M (below) */
+    struct mech_vec3 axis[2];       /* unit horizontal axes of the two modes (the body
+                                       swings ABOUT axis[k]), largest component positive */
+    double omega[2];                /* sqrt(m g |d| / moment[k]), rad/s, descending */
+};
+
+/* A rigid body hanging from a ball joint (free to turn about any axis through
+ * the pivot): small oscillations about the hanging equilibrium, d = centre of
+ * mass - pivot pointing down. With a small rotation vector (t_u, t_v, t_e)
+ * (u, v horizontal, e = -d/|d| up), T = t'.I_pivot.t'/2 and V = m g |d|
+ * (t_u^2 + t_v^2)/2: the turn t_e about the vertical is cyclic, and with its
+ * momentum zero the horizontal motion has the inertia M = I_hh - I_he I_eh /
+ * I_ee (M = I_hh when I_ee = 0, a body on the vertical line through the
+ * pivot); the two normal modes swing about M's eigenvectors at omega_k =
+ * sqrt(m g |d| / M_k). (For a flat body these are the swings in and out of its
+ * plane.) Arguments and errors as mech_physical_pendulum without the axis;
+ * MECH_EDOMAIN "offset" for d = 0, "tensor" when a reduced moment is <= 0. */
+enum mech_status mech_ball_pendulum(double mass, struct mech_mat3 i_cm, struct mech_vec3 d,
+                                    double g, struct mech_ball_pendulum *out,
+                                    struct mech_error *err);
+
 struct mech_foucault_modes {
     double omega0;          /* sqrt(g/l), rad/s */
     double omega_z;         /* Omega sin(latitude), rad/s: the local vertical rotation */
