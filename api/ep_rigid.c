@@ -10,6 +10,7 @@
 #include "rotation_request.h"
 #include "mech/inertia.h"
 #include "mech/rotation.h"
+#include "mech/vector_algebra.h"
 
 /* ---- schema ------------------------------------------------------------------ */
 
@@ -113,6 +114,16 @@
                           ",\"vertices\":" S_MESH_VERTICES ",\"faces\":" S_MESH_FACES,     \
                           ",\"vertices\",\"faces\"")
 #define S_POINT    S_SHAPE("point", "point mass", "", "")
+#define S_TENSOR_ROW                                                                    \
+    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"                       \
+    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60}}"
+#define S_TENSOR   S_SHAPE("tensor", "a part known by its mass, its own tensor about its " \
+                           "centre of mass and that centre (position)",                   \
+                           ",\"tensor\":{\"type\":\"array\",\"minItems\":3,"            \
+                           "\"maxItems\":3,\"items\":" S_TENSOR_ROW ",\"description\":"    \
+                           "\"kg m^2, about the part's centre of mass, in its body axes "  \
+                           "(scene axes without orientation); symmetric\"}" S_ORIENT_PROP, \
+                           ",\"tensor\"")
 
 /* The point branch comes last: when a part fails two branches with the same
  * number of errors (a sphere missing its radius fails "sphere" by the missing
@@ -121,7 +132,7 @@
 #define S_BODY                                                                          \
     "{\"oneOf\":[" S_ROD "," S_BOX "," S_SPHERE "," S_SHELL "," S_CYLINDER "," S_CONE    \
     "," S_HEMI "," S_TUBE "," S_DISC "," S_RING "," S_PLATE "," S_TRIANGLE ","           \
-    S_ELLIPSOID "," S_TORUS "," S_MESH "," S_POINT "]}"
+    S_ELLIPSOID "," S_TORUS "," S_MESH "," S_TENSOR "," S_POINT "]}"
 
 static const char schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"bodies\"],"
@@ -159,7 +170,12 @@ static const char description[] =
     "at /bodies/i/faces saying which edge is open, shared by more faces or inconsistently "
     "oriented; a mesh oriented all inwards is accepted and reported as inverted; volume "
     "integrals by the divergence theorem over signed tetrahedra, in coordinates centred "
-    "on the mesh; at most 100000 vertices and 200000 faces, three budget steps per face). "
+    "on the mesh; at most 100000 vertices and 200000 faces, three budget steps per face); "
+    "tensor (a part known by its mass, its own tensor about its centre of mass, kg m^2, in "
+    "its body axes, and position = that centre: the parallel-axis theorem on a tensor the "
+    "user has; refused at /bodies/i/tensor when not symmetric within 1e-12 of its largest "
+    "entry or when no mass distribution has it: a principal moment < 0 or larger than the "
+    "sum of the other two). "
     "Any part may be \"hole\": true: it is removed material, entering every sum with "
     "negative mass; its mass is the mass its volume would have at the surrounding "
     "material's density (the caller's job), and the total mass must stay > 0. A part's "
@@ -173,7 +189,10 @@ static const char description[] =
     "positive, row 2 = row 0 x row 1), degenerate = two moments agree within 1e-10 of the "
     "largest (then the axes are one orthonormal basis of the degenerate subspace: the scene "
     "axes if all three agree). With omega (rad/s, rotation about the origin held at rest): "
-    "angular_momentum = I omega and kinetic_energy = omega.I.omega/2. parts lists, per part "
+    "angular_momentum = I omega and kinetic_energy = omega.I.omega/2, angle_L_omega (rad, "
+    "atan2(|omega x L|, omega.L); null when omega or L is zero) and torque_to_hold_axis = "
+    "omega x L (N m: the torque that keeps the body turning steadily at omega about that "
+    "axis, dL/dt of L carried round with the body). parts lists, per part "
     "in order, its shape, hole flag, mass (negative for a hole), center_of_mass (scene) "
     "and tensor about its own centre of mass in scene axes (negative for a hole), plus "
     "volume and inverted for a mesh: tensor_center_of_mass = sum over parts of tensor + "
@@ -203,6 +222,7 @@ static const char *const shape_names[MECH_SHAPE_COUNT] = {
     [MECH_SHAPE_RING] = "ring",         [MECH_SHAPE_PLATE] = "plate",
     [MECH_SHAPE_TRIANGLE] = "triangle", [MECH_SHAPE_ELLIPSOID] = "ellipsoid",
     [MECH_SHAPE_TORUS] = "torus",       [MECH_SHAPE_MESH] = "mesh",
+    [MECH_SHAPE_TENSOR] = "tensor",
 };
 
 /* Read body i's orientation (any form of api/rotation_request.h; passive by
@@ -309,6 +329,13 @@ static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
         const json_t *vj = json_object_get(b, "vertices");
         for (size_t k = 0; k < 3; k++)
             p->vertices[k] = api_vec3_of(json_array_get(vj, k));
+        break;
+    }
+    case MECH_SHAPE_TENSOR: {
+        const json_t *tj = json_object_get(b, "tensor");
+        for (size_t r = 0; r < 3; r++)
+            for (size_t q = 0; q < 3; q++)
+                p->tensor.a[r][q] = json_number_value(json_array_get(json_array_get(tj, r), q));
         break;
     }
     case MECH_SHAPE_MESH: {
@@ -424,6 +451,15 @@ static json_t *inertia(struct api_call *c, const json_t *body)
     if (wj) {
         json_object_set_new_nocheck(out, "angular_momentum", api_vec3(c, l));
         json_object_set_new_nocheck(out, "kinetic_energy", api_real(c, ke));
+        /* angle between L and omega (atan2, core/vector_algebra.c) and omega x L */
+        struct mech_vector_pair vp;
+        struct mech_error e2;
+        mech_error_clear(&e2);
+        int ok = mech_vector_pair(api_vec3_of(wj), l, &vp, &e2) == MECH_OK;
+        json_object_set_new_nocheck(out, "angle_L_omega",
+                                    ok && vp.has_angle ? api_real(c, vp.angle) : json_null());
+        json_object_set_new_nocheck(out, "torque_to_hold_axis",
+                                    ok ? api_vec3(c, vp.cross) : json_null());
     }
     json_object_set_new_nocheck(out, "parts", pj);
     return out;

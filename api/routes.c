@@ -7,6 +7,8 @@
 #include <stdio.h>
 
 extern const struct api_route api_route_rigid_inertia;
+extern const struct api_route api_route_vectors;
+extern const struct api_route api_route_tensor_symmetric;
 extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
@@ -25,9 +27,11 @@ extern const struct api_route api_route_examples;
 extern const struct api_route api_route_rotation_convert;
 extern const struct api_route api_route_rotation_compose;
 extern const struct api_route api_route_rotation_apply;
+extern const struct api_route api_route_rotation_euler_rates;
 extern const struct api_route api_route_rigid_rotate;
 extern const struct api_route api_route_rigid_top;
 extern const struct api_route api_route_rigid_stability;
+extern const struct api_route api_route_small_oscillations;
 extern const struct api_route api_route_relativity_velocity_addition;
 extern const struct api_route api_route_relativity_interval;
 extern const struct api_route api_route_relativity_worldline;
@@ -45,13 +49,17 @@ extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
 
 const struct api_route *const api_routes[] = {
+    &api_route_vectors,
+    &api_route_tensor_symmetric,
     &api_route_rotation_convert,
     &api_route_rotation_compose,
     &api_route_rotation_apply,
+    &api_route_rotation_euler_rates,
     &api_route_rigid_inertia,
     &api_route_rigid_rotate,
     &api_route_rigid_top,
     &api_route_rigid_stability,
+    &api_route_small_oscillations,
     &api_route_relativity_boost,
     &api_route_relativity_velocity_addition,
     &api_route_relativity_interval,

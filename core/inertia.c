@@ -256,6 +256,44 @@ static enum mech_status triangle_props(const struct mech_inertia_part *p, struct
     return MECH_OK;
 }
 
+/* A tensor part's own tensor (body axes), checked: finite, symmetric within
+ * 1e-12 of its largest entry (then symmetrised), and realisable by a mass
+ * distribution (principal moments >= 0 and each at most the sum of the other
+ * two, within 1e-9 of the trace). */
+static enum mech_status tensor_part(const struct mech_inertia_part *p, struct mech_mat3 *out,
+                                    struct mech_error *err)
+{
+    const struct mech_mat3 t = p->tensor;
+    if (!mech_mat3_isfinite(t))
+        return mech_error_set(err, MECH_EINVAL, "tensor", "entries must be finite");
+    double big = 0;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) big = fmax(big, fabs(t.a[i][j]));
+    struct mech_mat3 s;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            if (fabs(t.a[i][j] - t.a[j][i]) > 1e-12 * big)
+                return mech_error_set(err, MECH_EINVAL, "tensor",
+                                      "not symmetric: [%d][%d] = %.17g but [%d][%d] = %.17g", i,
+                                      j, t.a[i][j], j, i, t.a[j][i]);
+            s.a[i][j] = 0.5 * (t.a[i][j] + t.a[j][i]);
+        }
+    struct mech_inertia_principal pc;
+    enum mech_status st = mech_inertia_principal(s, &pc, err);
+    if (st != MECH_OK) return st;
+    const double *l = pc.moments;
+    double tr = l[0] + l[1] + l[2];
+    double worst = fmax(l[2] - l[0] - l[1], -l[0]);
+    if (worst > 1e-9 * fabs(tr) || (tr == 0 && big > 0))
+        return mech_error_set(err, MECH_EDOMAIN, "tensor",
+                              "no mass distribution has this tensor: principal moments %.6g, "
+                              "%.6g, %.6g kg m^2 (each must be >= 0 and at most the sum of "
+                              "the other two)",
+                              l[0], l[1], l[2]);
+    *out = s;
+    return MECH_OK;
+}
+
 /* Everything but the sign of a hole; mesh parts need the budget. */
 static enum mech_status material_props(const struct mech_inertia_part *p,
                                        const struct mech_budget *budget, long *steps,
@@ -278,7 +316,12 @@ static enum mech_status material_props(const struct mech_inertia_part *p,
         return MECH_OK;
     }
     struct mech_mat3 r;
-    if (p->shape == MECH_SHAPE_MESH) {
+    if (p->shape == MECH_SHAPE_TENSOR) {
+        if ((st = tensor_part(p, &out->tensor, err)) != MECH_OK) return st;
+        if ((st = check_orientation(p, &r, err)) != MECH_OK) return st;
+        out->tensor = to_scene(r, out->tensor);
+        out->center_of_mass = p->position;
+    } else if (p->shape == MECH_SHAPE_MESH) {
         if (!budget)
             return mech_error_set(err, MECH_EINVAL, "shape",
                                   "a mesh part needs a budget: use mech_inertia_part_properties");

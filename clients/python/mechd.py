@@ -169,13 +169,17 @@ def error_for(status, problem, retry_after=None, message=None):
 # Every POST operation of mechd v1: method name -> path (GET /v1 is the source of truth;
 # call(path, body) reaches paths added later).
 OPERATIONS = {
+    "vectors": "/v1/vectors",
+    "tensor_symmetric": "/v1/tensor/symmetric",
     "rotation_convert": "/v1/rotation/convert",
     "rotation_compose": "/v1/rotation/compose",
     "rotation_apply": "/v1/rotation/apply",
+    "rotation_euler_rates": "/v1/rotation/euler-rates",
     "rigid_inertia": "/v1/rigid/inertia",
     "rigid_rotate": "/v1/rigid/rotate",
     "rigid_top": "/v1/rigid/top",
     "rigid_stability": "/v1/rigid/stability",
+    "small_oscillations": "/v1/small-oscillations",
     "relativity_boost": "/v1/relativity/boost",
     "relativity_velocity_addition": "/v1/relativity/velocity-addition",
     "relativity_interval": "/v1/relativity/interval",

@@ -64,6 +64,14 @@ enum mech_inertia_shape {
                                   `mesh` vertices in BODY coordinates: scene point =
                                   position + R^T v (so position [0,0,0] and no rotation
                                   means the vertices are scene coordinates) */
+    MECH_SHAPE_TENSOR = 16,    /* a part known only by its mass, its own `tensor` about its
+                                  centre of mass (body axes: scene tensor R^T T R; the scene
+                                  axes when orientation is the identity) and its centre of
+                                  mass `position` (the parallel-axis theorem on a tensor the
+                                  user has, notes §2.3); T must be symmetric (1e-12 of its
+                                  largest entry) and a tensor some mass distribution has
+                                  (principal moments >= 0, each at most the sum of the
+                                  other two, within 1e-9 of the trace) */
     MECH_SHAPE_COUNT
 };
 
@@ -83,6 +91,8 @@ struct mech_inertia_part {
                                      moment and tensor enter every sum with a minus sign */
     struct mech_vec3 vertices[3]; /* m, triangle corners, scene axes (triangle only) */
     struct mech_mesh mesh;        /* mesh only: borrowed vertices and faces */
+    struct mech_mat3 tensor;      /* kg m^2, tensor part only: about its centre of mass,
+                                     body axes */
 };
 
 /* A part's own contribution, for auditing the sums. */
@@ -127,7 +137,9 @@ struct mech_inertia {
  * "inner_radius" for a tube with inner >= outer radius, "minor_radius" for a
  * torus with r >= R (not a ring torus); MECH_EINVAL with param "position",
  * "length", "size", "radius", "height", "inner_radius", "outer_radius",
- * "semi_axes", "major_radius", "minor_radius", "vertices" (a triangle's corners
+ * "semi_axes", "major_radius", "minor_radius", "tensor" (a tensor part's tensor not
+ * finite or not symmetric; MECH_EDOMAIN "tensor" when no mass distribution has
+ * it), "vertices" (a triangle's corners
  * not finite, or collinear / zero area: |AB x AC| <= 1e-14 |AB| |AC|) or
  * "orientation" for a non-finite position, a dimension that is not finite and
  * > 0, or an orientation that is not a rotation within 1e-9; MECH_ENUMERIC if

@@ -1,0 +1,324 @@
+/* ep_small_oscillations.c — POST /v1/small-oscillations: small oscillations
+ * about an equilibrium or a steady motion, for one system per request:
+ * a near-circular orbit in a central potential, the conical pendulum, a
+ * physical pendulum (a body from /v1/rigid/inertia about any pivot and axis)
+ * and the normal modes of the linearised Foucault pendulum.
+ * JSON <-> core only; the physics is core/small_oscillations.c. */
+#include <math.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/small_oscillations.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define MAX_TERMS 16
+
+/* clang-format off */
+#define S_POS(desc) "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100," \
+    "\"description\":\"" desc "\"}"
+#define S_NUM(lim, desc) "{\"type\":\"number\",\"minimum\":-" lim ",\"maximum\":" lim "," \
+    "\"description\":\"" desc "\"}"
+#define S_V3(desc) "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" \
+    "{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100},\"description\":\"" desc "\"}"
+#define S_G "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,\"default\":9.80665," \
+    "\"description\":\"m/s^2\"}"
+#define S_CENTRAL                                                                        \
+    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
+    "\"required\":[\"name\",\"mass\",\"r0\",\"terms\"],\"properties\":{"                  \
+    "\"name\":{\"const\":\"central_orbit\"},"                                              \
+    "\"mass\":" S_POS("kg") ",\"r0\":" S_POS("m, radius of the circular orbit") ","        \
+    "\"terms\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"              \
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"k\",\"n\"],"      \
+    "\"properties\":{\"k\":" S_NUM("1e100", "J m^-n") ",\"n\":" S_NUM("100",               \
+    "exponent: V = k r^n, or k ln r for n = 0") "}},"                                       \
+    "\"description\":\"V(r) = sum of the terms\"}}}"
+#define S_CONICAL                                                                        \
+    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
+    "\"required\":[\"name\",\"length\",\"angle\"],\"properties\":{"                        \
+    "\"name\":{\"const\":\"conical_pendulum\"},"                                           \
+    "\"length\":" S_POS("m") ",\"g\":" S_G ","                                             \
+    "\"angle\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"exclusiveMaximum\":1.5707963267948966," \
+    "\"description\":\"rad, cone half-angle from the downward vertical\"}}}"
+#define S_PHYSICAL                                                                       \
+    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
+    "\"required\":[\"name\",\"mass\",\"tensor_center_of_mass\",\"offset\"],"      \
+    "\"properties\":{\"name\":{\"const\":\"physical_pendulum\"},"                          \
+    "\"mass\":" S_POS("kg (as /v1/rigid/inertia's mass)") ","                              \
+    "\"tensor_center_of_mass\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"          \
+    "\"items\":" S_V3("row") ",\"description\":\"kg m^2, about the centre of mass (as "    \
+    "/v1/rigid/inertia's tensor_center_of_mass)\"},"                                        \
+    "\"offset\":" S_V3("m, centre of mass minus pivot") ","                                 \
+    "\"axis\":" S_V3("the horizontal hinge axis through the pivot, any length; leave it " \
+    "out for a ball joint (both modes)") ","        \
+    "\"g\":" S_G "}}"
+#define S_FOUCAULT                                                                       \
+    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
+    "\"required\":[\"name\",\"length\",\"latitude_deg\"],\"properties\":{"                \
+    "\"name\":{\"const\":\"foucault_pendulum\"},"                                          \
+    "\"length\":" S_POS("m") ",\"g\":" S_G ","                                             \
+    "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90,"              \
+    "\"description\":\"deg, north positive\"},"                                             \
+    "\"omega_earth\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e3,"                \
+    "\"default\":7.2921159e-5,\"description\":\"rad/s, the Earth's rotation rate (the "   \
+    "default of /v1/scenes/foucault)\"}}}"
+static const char schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"system\"],"
+    "\"properties\":{\"system\":{\"oneOf\":[" S_CENTRAL "," S_CONICAL "," S_PHYSICAL ","
+    S_FOUCAULT "]}}}";
+/* clang-format on */
+
+static const char description[] =
+    "Small oscillations about a steady motion or equilibrium, for one system. "
+    "central_orbit (mass m, radius r0 of a circular orbit, V(r) = sum of terms k r^n, k ln r "
+    "for n = 0; Kepler: n = -1, k = -GMm; isotropic oscillator: n = 2, k = m w^2/2): answers "
+    "the circular orbit (angular_momentum L = sqrt(m r0^3 V'), energy, omega_phi = "
+    "sqrt(V'/(m r0)), period_phi), V, dV, d2V at r0, k_eff = V'' + 3V'/r0, stable (k_eff > "
+    "0), omega_r = sqrt(k_eff/m), period_r, frequency_ratio = omega_r/omega_phi, "
+    "apsidal_angle = pi omega_phi/omega_r = pi/sqrt(3 + r0 V''/V') (pericentre to apocentre; "
+    "V = k r^n: pi/sqrt(n + 2), i.e. pi/sqrt(3 + m) for a force r^m: Kepler pi, oscillator "
+    "pi/2) and its _deg, pericentre_angle = 2 apsidal_angle (pericentre to pericentre: "
+    "Kepler 2 pi, oscillator pi) and precession_per_radial_period = pericentre_angle - 2 pi; "
+    "an unstable orbit (k_eff < 0) has growth_rate sqrt(-k_eff/m) and null frequencies. "
+    "V'(r0) <= 0 (no attraction) is refused at /system/r0. conical_pendulum (length l, cone "
+    "half-angle from the downward vertical in (0, pi/2), g default 9.80665): phi_dot = "
+    "sqrt(g/(l cos a)), period, radius, speed, omega_theta = phi_dot sqrt(1 + 3 cos^2 a) "
+    "(oscillations of the cone angle), period_theta, apsidal_angle = pi/sqrt(1 + 3 cos^2 "
+    "a). physical_pendulum (mass, tensor_center_of_mass as /v1/rigid/inertia answers them, "
+    "offset = centre of mass - pivot, axis = horizontal hinge through the pivot, g): "
+    "tensor_pivot = I_cm + m(d^2 1 - d d^T) (parallel axis), moment_axis = n.I_pivot.n, arm "
+    "= distance of the centre of mass from the axis, omega = sqrt(m g arm / moment_axis), "
+    "period and equivalent_length = moment_axis/(m arm); swing in the body's plane or out of "
+    "it by choosing the axis; a centre of mass on the axis is refused at /system/offset. "
+    "Without axis the pivot is a ball joint (offset points down): the turn about the "
+    "vertical is free (its momentum zero), the horizontal motion has the inertia M = I_hh - "
+    "I_he I_eh / I_ee, and modes lists the two normal modes, fastest first, each {axis "
+    "(unit, horizontal: the body swings about it), moment (M's eigenvalue), omega = sqrt(m "
+    "g |d| / moment), period, equivalent_length}; arm = |offset|. "
+    "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.2921159e-5): the "
+    "linearised equations with the vertical rotation omega_z = Omega sin(latitude) (notes "
+    "§1.3: x'' = -omega0^2 x + 2 omega_z y', y'' = -omega0^2 y - 2 omega_z x'; x east, y "
+    "north) have two circular normal modes, answered as modes [{sense: counterclockwise, "
+    "omega: sqrt(omega0^2 + omega_z^2) - omega_z}, {sense: clockwise, omega: sqrt(...) + "
+    "omega_z}] (seen from above), with omega0 = sqrt(g/l), omega_z, swing_omega = "
+    "sqrt(omega0^2 + omega_z^2), swing_period, precession_rate = |omega_z| with "
+    "precession_sense (clockwise in the north, counterclockwise in the south, none on the "
+    "equator) and precession_period = 2 pi/|omega_z| (null on the equator): the plane of "
+    "a planar swing turns at the mean of the two modes, exactly -omega_z in this "
+    "linearised model (finite-amplitude corrections: /v1/scenes/foucault).";
+
+static const char example[] =
+    "{\"system\":{\"name\":\"central_orbit\",\"mass\":1,\"r0\":1,\"terms\":[{\"k\":1,\"n\":1}]}}";
+
+static json_t *nomem(struct api_call *c, json_t *o)
+{
+    struct mech_error e;
+    json_decref(o);
+    mech_error_clear(&e);
+    mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory");
+    return api_call_fail_core(c, MECH_ENOMEM, &e, "");
+}
+
+#define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))
+
+static json_t *central(struct api_call *c, const json_t *s, json_t *out)
+{
+    const json_t *tj = json_object_get(s, "terms");
+    struct mech_potential_term t[MAX_TERMS];
+    size_t n = json_array_size(tj);
+    for (size_t i = 0; i < n && i < MAX_TERMS; i++) {
+        t[i].k = api_number(json_array_get(tj, i), "k", 0);
+        t[i].n = api_number(json_array_get(tj, i), "n", 0);
+    }
+    struct mech_orbit_oscillation o;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_orbit_oscillation(t, n, api_number(s, "mass", 1),
+                                                 api_number(s, "r0", 1), &o, &e);
+    if (st != MECH_OK) {
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    json_t *co = json_object();
+    if (!co) return nomem(c, out);
+    SET(co, "angular_momentum", api_real(c, o.angular_momentum));
+    SET(co, "energy", api_real(c, o.energy));
+    SET(co, "omega_phi", api_real(c, o.omega_phi));
+    SET(co, "period_phi", api_real(c, 2 * M_PI / o.omega_phi));
+    SET(out, "circular_orbit", co);
+    SET(out, "V", api_real(c, o.v));
+    SET(out, "dV", api_real(c, o.dv));
+    SET(out, "d2V", api_real(c, o.d2v));
+    SET(out, "k_eff", api_real(c, o.k_eff));
+    SET(out, "stable", json_boolean(o.stable));
+    int ok = o.stable;
+    SET(out, "omega_r", ok ? api_real(c, o.omega_r) : json_null());
+    SET(out, "period_r", ok ? api_real(c, 2 * M_PI / o.omega_r) : json_null());
+    SET(out, "frequency_ratio", ok ? api_real(c, o.omega_r / o.omega_phi) : json_null());
+    SET(out, "apsidal_angle", ok ? api_real(c, o.apsidal_angle) : json_null());
+    SET(out, "apsidal_angle_deg", ok ? api_real(c, o.apsidal_angle * (180 / M_PI)) : json_null());
+    SET(out, "pericentre_angle", ok ? api_real(c, 2 * o.apsidal_angle) : json_null());
+    SET(out, "precession_per_radial_period",
+        ok ? api_real(c, 2 * o.apsidal_angle - 2 * M_PI) : json_null());
+    SET(out, "growth_rate", ok ? json_null() : api_real(c, o.growth_rate));
+    return out;
+}
+
+static json_t *conical(struct api_call *c, const json_t *s, json_t *out)
+{
+    struct mech_conical_pendulum p;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_conical_pendulum(api_number(s, "length", 1),
+                                                api_number(s, "g", 9.80665),
+                                                api_number(s, "angle", 0.5), &p, &e);
+    if (st != MECH_OK) {
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    SET(out, "phi_dot", api_real(c, p.phi_dot));
+    SET(out, "period", api_real(c, p.period));
+    SET(out, "radius", api_real(c, p.radius));
+    SET(out, "speed", api_real(c, p.speed));
+    SET(out, "omega_theta", api_real(c, p.omega_theta));
+    SET(out, "period_theta", api_real(c, 2 * M_PI / p.omega_theta));
+    SET(out, "apsidal_angle", api_real(c, p.apsidal_angle));
+    SET(out, "apsidal_angle_deg", api_real(c, p.apsidal_angle * (180 / M_PI)));
+    return out;
+}
+
+static json_t *ball(struct api_call *c, const json_t *s, json_t *out, struct mech_mat3 t)
+{
+    struct mech_ball_pendulum b;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st =
+        mech_ball_pendulum(api_number(s, "mass", 1), t,
+                           api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
+                           api_number(s, "g", 9.80665), &b, &e);
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "tensor")) strcpy(e.param, "tensor_center_of_mass");
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    json_t *modes = json_array();
+    if (!modes) return nomem(c, out);
+    for (int k = 0; k < 2; k++) {
+        json_t *m = json_object();
+        if (!m) {
+            json_decref(modes);
+            return nomem(c, out);
+        }
+        SET(m, "axis", api_vec3(c, b.axis[k]));
+        SET(m, "moment", api_real(c, b.moment[k]));
+        SET(m, "omega", api_real(c, b.omega[k]));
+        SET(m, "period", api_real(c, 2 * M_PI / b.omega[k]));
+        SET(m, "equivalent_length", api_real(c, b.moment[k] / (api_number(s, "mass", 1) * b.arm)));
+        json_array_append_new(modes, m);
+    }
+    SET(out, "pivot", json_string("ball_joint"));
+    SET(out, "tensor_pivot", api_mat3(c, b.tensor_pivot));
+    SET(out, "arm", api_real(c, b.arm));
+    SET(out, "modes", modes);
+    return out;
+}
+
+static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
+{
+    const json_t *tj = json_object_get(s, "tensor_center_of_mass");
+    struct mech_mat3 t;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            t.a[i][j] = json_number_value(json_array_get(json_array_get(tj, i), j));
+    if (!json_object_get(s, "axis")) return ball(c, s, out, t);
+    struct mech_physical_pendulum p;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_physical_pendulum(
+        api_number(s, "mass", 1), t, api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
+        api_vec3_member(s, "axis", mech_vec3_make(0, 0, 0)), api_number(s, "g", 9.80665), &p, &e);
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "tensor")) strcpy(e.param, "tensor_center_of_mass");
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    SET(out, "pivot", json_string("hinge"));
+    SET(out, "tensor_pivot", api_mat3(c, p.tensor_pivot));
+    SET(out, "moment_axis", api_real(c, p.moment_axis));
+    SET(out, "arm", api_real(c, p.arm));
+    SET(out, "omega", api_real(c, p.omega));
+    SET(out, "period", api_real(c, p.period));
+    SET(out, "equivalent_length", api_real(c, p.equivalent_length));
+    return out;
+}
+
+static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
+{
+    struct mech_foucault_modes f;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_foucault_modes(
+        api_number(s, "length", 1), api_number(s, "g", 9.80665),
+        api_number(s, "omega_earth", 7.2921159e-5),
+        api_number(s, "latitude_deg", 0) * (M_PI / 180), &f, &e);
+    if (st != MECH_OK) {
+        json_decref(out);
+        return api_call_fail_core(c, st, &e, "/system");
+    }
+    json_t *modes = json_array(), *m1 = json_object(), *m2 = json_object();
+    if (!modes || !m1 || !m2) {
+        json_decref(modes);
+        json_decref(m1);
+        json_decref(m2);
+        return nomem(c, out);
+    }
+    SET(m1, "sense", json_string("counterclockwise"));
+    SET(m1, "omega", api_real(c, f.ccw));
+    SET(m1, "period", api_real(c, 2 * M_PI / f.ccw));
+    SET(m2, "sense", json_string("clockwise"));
+    SET(m2, "omega", api_real(c, f.cw));
+    SET(m2, "period", api_real(c, 2 * M_PI / f.cw));
+    json_array_append_new(modes, m1);
+    json_array_append_new(modes, m2);
+    SET(out, "omega0", api_real(c, f.omega0));
+    SET(out, "omega_z", api_real(c, f.omega_z));
+    SET(out, "swing_omega", api_real(c, f.swing));
+    SET(out, "swing_period", api_real(c, 2 * M_PI / f.swing));
+    SET(out, "modes", modes);
+    SET(out, "precession_rate", api_real(c, fabs(f.omega_z)));
+    SET(out, "precession_sense", json_string(f.omega_z > 0   ? "clockwise"
+                                             : f.omega_z < 0 ? "counterclockwise"
+                                                             : "none"));
+    SET(out, "precession_period",
+        f.omega_z != 0 ? api_real(c, 2 * M_PI / fabs(f.omega_z)) : json_null());
+    return out;
+}
+
+static json_t *small_oscillations(struct api_call *c, const json_t *body)
+{
+    const json_t *s = json_object_get(body, "system");
+    const char *name = api_string(s, "name", "");
+    json_t *out = json_object();
+    if (!out) return nomem(c, NULL);
+    SET(out, "system", json_string(name));
+    if (!strcmp(name, "central_orbit")) return central(c, s, out);
+    if (!strcmp(name, "conical_pendulum")) return conical(c, s, out);
+    if (!strcmp(name, "foucault_pendulum")) return foucault(c, s, out);
+    return physical(c, s, out);
+}
+
+const struct api_route api_route_small_oscillations = {
+    "POST",
+    "/v1/small-oscillations",
+    "Small oscillations about a steady motion: near-circular orbits in a central potential "
+    "(radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical "
+    "pendulum about any pivot and axis, the Foucault pendulum's normal modes",
+    description,
+    schema,
+    example,
+    small_oscillations,
+    0,
+    1, /* quick */
+};

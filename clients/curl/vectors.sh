@@ -1,0 +1,9 @@
+#!/bin/sh
+# Notes ch. 0, homework 1: A = x + 3y - 2z, B = 2x + y + z. The answer has
+# A.B = 3 at /dot, A x B = (5, -5, -5) at /cross, the component of B along A,
+# 3/sqrt(14), at /b_along_a and the angle (70.89 deg) at /angle_deg.
+# Usage: MECHD_URL=http://host:port vectors.sh
+exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/vectors" --json '{
+  "a": [1, 3, -2],
+  "b": [2, 1, 1]
+}'
