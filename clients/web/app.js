@@ -7,9 +7,15 @@ import earth from './labs/earth.js';
 import tops from './labs/tops.js';
 import orbits from './labs/orbits.js';
 import accuracy from './labs/accuracy.js';
+import rotations from './labs/rotations.js';
+import table from './labs/table.js';
+import tides from './labs/tides.js';
+import phase from './labs/phase.js';
+import particles from './labs/particles.js';
 import {el, add, getToken, setToken} from './lib.js';
 
-const labs = [inertia, spacetime, earth, tops, orbits, accuracy];
+// in the course's order: rotations (ch. 0), the rotating table and the tides (ch. 1), …
+const labs = [rotations, table, inertia, tops, earth, tides, orbits, phase, spacetime, particles, accuracy];
 const main = document.getElementById('lab');
 const tabs = document.getElementById('tabs');
 for (const lab of labs)

@@ -141,17 +141,51 @@ export function curlCommand(path, body) {
     : `curl -s${auth} --json ${q(toJSON(body))} ${q(location.origin + path)}`;
 }
 
-// The copyable curl box: update(path, body).
-export function curlBox() {
-  const pre = el('pre', {tabindex: 0, 'aria-label': 'curl command'});
-  const btn = el('button', {type: 'button', class: 'secondary', onclick: async () => {
+// The request as a call of the Python client (clients/python/mechd.py): its
+// generic form client.call(path, body), which every operation takes (the
+// client on main has no per-operation methods with named parameters yet).
+export function pythonCommand(path, body) {
+  const py = (v, ind) => {
+    if (v === null || v === undefined) return 'None';
+    if (v === true) return 'True';
+    if (v === false) return 'False';
+    if (typeof v === 'number') return Number.isFinite(v) ? String(v) : 'None';
+    if (typeof v === 'string') return JSON.stringify(v);
+    const pad = ind + '    ';
+    if (Array.isArray(v)) {
+      const flat = '[' + v.map(x => py(x, pad)).join(', ') + ']';
+      return flat.length <= 72 ? flat : '[\n' + v.map(x => pad + py(x, pad)).join(',\n') + ',\n' + ind + ']';
+    }
+    const items = Object.entries(v).filter(([, x]) => x !== undefined).map(([k, x]) => JSON.stringify(k) + ': ' + py(x, pad));
+    const flat = '{' + items.join(', ') + '}';
+    return flat.length <= 72 ? flat : '{\n' + items.map(x => pad + x).join(',\n') + ',\n' + ind + '}';
+  };
+  return 'from mechd import Client  # clients/python/mechd.py\n' +
+    `client = Client(${JSON.stringify(location.origin)})` +
+    (getToken() ? '  # this server wants a token: the client on main cannot send one yet; use the curl line' : '') + '\n' +
+    (body === undefined ? `answer = client.call(${JSON.stringify(path)})\n`
+      : `answer = client.call(${JSON.stringify(path)}, ${py(JSON.parse(toJSON(body)), '')})\n`);
+}
+
+// A copy button for the text of pre (falls back to selecting it).
+function copyButton(pre, name) {
+  const btn = el('button', {type: 'button', class: 'secondary', 'data-copy': name.toLowerCase(), onclick: async () => {
     try { await navigator.clipboard.writeText(pre.textContent); btn.textContent = 'Copied'; }
     catch (e) { const r = document.createRange(); r.selectNodeContents(pre);
       getSelection().removeAllRanges(); getSelection().addRange(r); btn.textContent = 'Selected: press Ctrl+C'; }
-    setTimeout(() => { btn.textContent = 'Copy curl'; }, 2000);
-  }}, 'Copy curl');
-  const box = el('section', {class: 'curl'}, el('h3', {}, 'The request'), pre, btn);
-  return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); }};
+    setTimeout(() => { btn.textContent = 'Copy as ' + name; }, 2000);
+  }}, 'Copy as ' + name);
+  return btn;
+}
+
+// The copyable request box: the curl line, and the same call from Python
+// (folded away until asked for); update(path, body).
+export function curlBox() {
+  const pre = el('pre', {tabindex: 0, 'aria-label': 'curl command'});
+  const pyPre = el('pre', {tabindex: 0, 'aria-label': 'Python call', 'data-role': 'python'});
+  const box = el('section', {class: 'curl'}, el('h3', {}, 'The request'), pre, copyButton(pre, 'curl'),
+    el('details', {class: 'python'}, el('summary', {}, 'As Python'), pyPre, copyButton(pyPre, 'Python')));
+  return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); pyPre.textContent = pythonCommand(path, body); }};
 }
 
 // Clear every field error of a form and the general problem box.

@@ -1,0 +1,1 @@
+export default {id: 'particles', title: 'particles', mount(main) { main.textContent = 'particles'; }};

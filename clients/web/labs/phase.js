@@ -1,0 +1,1 @@
+export default {id: 'phase', title: 'phase', mount(main) { main.textContent = 'phase'; }};

@@ -1,0 +1,1 @@
+export default {id: 'table', title: 'table', mount(main) { main.textContent = 'table'; }};

@@ -1,0 +1,1 @@
+export default {id: 'tides', title: 'tides', mount(main) { main.textContent = 'tides'; }};
