@@ -450,7 +450,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     const q = s.points.filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
     const p = q.map(r => [X(tx(r[0])), Y(ty(r[1]))]);
     p.forEach((r, k) => hover.push([r[0], r[1], q[k][0], q[k][1], s.label || '', c]));
-    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 4, fill: c}));
+    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c}));
     else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
     if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
