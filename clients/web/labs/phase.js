@@ -43,14 +43,25 @@ export default {
     const b = field({label: 'half-height in p', pointer: '/operations/0/request/curve/semi_axes/1', value: st.b, unit: 'kg m²/s', id: 'ph-b', step: 0.05});
     const te = field({label: 'duration', pointer: '/operations/0/request/t_end', value: st.t_end, unit: 's', id: 'ph-tend'});
     let pending = null; // an example's own liouville request
-    add(L.form, examplePicker(['/v1/hamiltonian/liouville'], BUILTIN, (ex) => {
+    const form = el('form', {novalidate: true, 'aria-label': 'Poincaré section inputs', id: 'poincare-form'});
+    const en = field({label: 'energy E', pointer: '/orbits', value: st.energy, id: 'pc-energy', step: 0.005,
+      help: 'Hénon–Heiles: bounded below E = 1/6 ≈ 0.1667'});
+    let prun = () => {};
+    // one picker for both sections (a Poincaré example fills the section below)
+    add(L.form, examplePicker(['/v1/hamiltonian/liouville', '/v1/hamiltonian/poincare'], BUILTIN.concat(PBUILTIN), (ex) => {
       const r = ex.request;
+      if (ex.operation === '/v1/hamiltonian/poincare') {
+        if (r.energy) en.input.value = r.energy;
+        else if (Array.isArray(r.orbits) && r.orbits[0] && r.orbits[0].energy) en.input.value = r.orbits[0].energy;
+        prun(); form.scrollIntoView({block: 'nearest'}); return;
+      }
       if (r.system && r.system.name === 'pendulum' && r.curve && r.curve.type === 'ellipse' && r.curve.semi_axes && r.curve.center.length === 2) {
         th.input.value = r.curve.center[0]; p0.input.value = r.curve.center[1];
         a.input.value = r.curve.semi_axes[0]; b.input.value = r.curve.semi_axes[1]; te.input.value = r.t_end; pending = null;
       } else pending = r;
       run();
-    }), el('p', {class: 'muted'}, 'A pendulum of 1 kg on 1 m, g = 9.80665 m/s² (θ from the downward vertical, p = m l² θ′).'),
+    }, {fits: (ex) => ex.operation !== '/v1/hamiltonian/poincare' || (ex.request.system && ex.request.system.name === 'henon_heiles')}),
+    el('p', {class: 'muted'}, 'A pendulum of 1 kg on 1 m, g = 9.80665 m/s² (θ from the downward vertical, p = m l² θ′).'),
     th.wrap, p0.wrap, a.wrap, b.wrap, te.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'ph-submit'}, 'Let it flow')));
     const plot = svg('svg', {class: 'plot', id: 'ph-loop', role: 'img', 'aria-label': 'The loop of initial conditions in phase space'});
     const play = player({label: 'The phase-space loop'});
@@ -100,22 +111,14 @@ export default {
     run();
 
     // --- Poincaré sections ---
-    const form = el('form', {novalidate: true, 'aria-label': 'Poincaré section inputs', id: 'poincare-form'});
-    const en = field({label: 'energy E', pointer: '/orbits', value: st.energy, id: 'pc-energy', step: 0.005,
-      help: 'Hénon–Heiles: bounded below E = 1/6 ≈ 0.1667'});
-    add(form, examplePicker(['/v1/hamiltonian/poincare'], PBUILTIN, (ex) => {
-      if (ex.request.energy) en.input.value = ex.request.energy;
-      else if (Array.isArray(ex.request.orbits) && ex.request.orbits[0] && ex.request.orbits[0].energy) en.input.value = ex.request.orbits[0].energy;
-      prun();
-    }, {fits: (ex) => ex.request.system && ex.request.system.name === 'henon_heiles'}),
-    en.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'pc-submit'}, 'Section')));
+    add(form, en.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'pc-submit'}, 'Section')));
     const P = labSection(main, {title: 'Poincaré sections: order and chaos', form, id: 'poincare',
       intro: 'H = (p_x² + p_y²)/2 + (x² + y²)/2 + x² y − y³/3. Each time an orbit crosses x = 0 going forwards, mark its (y, p_y). ' +
              'A regular orbit marks a closed curve; a chaotic one sprinkles a region. Raise the energy towards 1/6 and the curves break up.'});
     const pplot = svg('svg', {class: 'plot', id: 'pc-plot', role: 'img', 'aria-label': 'Poincaré section (y, p_y) at x = 0'});
     add(P.figure, pplot);
     const starts = [-0.3, -0.2, -0.1, 0, 0.1, 0.2, 0.3, 0.4];
-    const prun = runner(P, '/v1/hamiltonian/poincare', () => {
+    prun = runner(P, '/v1/hamiltonian/poincare', () => {
       st.energy = val(en.input);
       return {system: {name: 'henon_heiles'}, orbits: starts.map(y => ({energy: val(en.input), on_section: [y, 0]})),
         t_max: 1500, max_crossings: 250, integrator: {method: 'rk8pd', rtol: 1e-9, atol: 1e-12}};
