@@ -611,7 +611,7 @@ function busyUi(S, onCancel) {
 }
 
 // Wire a section's form to one operation: build() -> body, show(answer, body)
-// renders. Returns run(); a new run cancels one still running (the slider),
+// renders (returning false when the answer holds a failure, e.g. a batch item's). Returns run(); a new run cancels one still running (the slider),
 // and Cancel aborts the request (AbortController: the server's hang-up
 // watcher then stops the pooled work). data-state on the form: busy, done,
 // error or cancelled. path may be a function of nothing.
@@ -633,8 +633,8 @@ export function runner(S, path, build, show) {
     if (r.aborted) { S.form.dataset.state = 'cancelled'; return; }
     if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
     clearErrors(S.form, S.problem);
-    show(r.body, body);
-    S.form.dataset.state = 'done';
+    // show() returns false when the answer carries a failure of its own (a batch item)
+    S.form.dataset.state = show(r.body, body) === false ? 'error' : 'done';
   };
   S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;

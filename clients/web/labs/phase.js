@@ -81,14 +81,14 @@ export default {
       return {operations: [{operation: '/v1/hamiltonian/liouville', request: lv}, ...flows]};
     }, (res, req) => {
       const first = res.results[0];
-      if (first.status !== 200) {
-        const e = (first.body && first.body.errors) || [];
-        put(L.results, el('p', {class: 'problem', id: 'ph-error'}, e.map(x => `${x.pointer}: ${x.detail}`).join('; ') || (first.body && first.body.detail) || 'failed'));
+      if (first.status !== 200) { // a batch item's problem: its pointers start /operations/0/request
+        const pr = first.problem || first.body || {}, e = pr.errors || [];
+        put(L.results, el('p', {class: 'problem', id: 'ph-error'}, e.map(x => `${x.pointer.replace('/operations/0/request', '')}: ${x.detail}`).join('; ') || pr.detail || 'failed'));
         for (const x of e) { // mark the field it names
-          const f = L.form.querySelector(`[data-pointer="/operations/0/request${x.pointer}"]`);
+          const f = L.form.querySelector(`[data-pointer="${x.pointer}"]`);
           if (f) { f.setAttribute('aria-invalid', 'true'); const box = document.getElementById(f.getAttribute('aria-describedby')); if (box) box.textContent = x.detail; }
         }
-        put(plot); L.form.dataset.state = 'error'; return;
+        put(plot); return false;
       }
       const lv = first.body, flows = res.results.slice(1).filter(r => r.status === 200).map(r => r.body);
       const runs = lv.runs, A0 = lv.area_initial;

@@ -140,7 +140,7 @@ export default {
     }, (a) => {
       const r = a.results || a.operations || [];
       const ans = r.map(x => x.answer || x.body || x.result);
-      if (ans.length !== 2 || !ans.every(x => x && x.matrix)) { put(O.results, el('p', {class: 'problem'}, 'The server could not compose one of the orders.')); return; }
+      if (ans.length !== 2 || !ans.every(x => x && x.matrix)) { put(O.results, el('p', {class: 'problem'}, 'The server could not compose one of the orders.')); return false; }
       const [ab, ba] = ans;
       const d = Math.max(...ab.matrix.flatMap((row, i) => row.map((v, j) => Math.abs(v - ba.matrix[i][j]))));
       const name = (k) => `${st[k][1]}° about ${st[k][0]}`;

@@ -127,7 +127,7 @@ function draw(room, onTable, a, play) {
     // a scale bar of a round length
     const bar = niceLen(R / 2);
     add(root, svg('line', {x1: 10, y1: H - 12, x2: 10 + s * bar, y2: H - 12, stroke: '#333', 'stroke-width': 2}),
-      svg('text', {x: 10, y: H - 18, 'font-size': 13}, `${fmt(bar)} m`));
+      svg('text', {x: 10, y: H - 18, 'font-size': 16}, `${fmt(bar)} m`));
     return {X, Y, line, path};
   };
   const A = setup(room), B = setup(onTable);
