@@ -108,6 +108,7 @@ export default {
         {xlabel: 't [s]', ylabel: 'A/A₀ − 1'});
       drawLoop(plot, flows, lv, play, areaOut);
     });
+    L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
     run();
 
     // --- Poincaré sections ---

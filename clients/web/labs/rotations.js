@@ -36,6 +36,11 @@ export default {
       intro: 'Three turns make any orientation: φ about z, then θ about the new x (the line of nodes), then ψ about ' +
              'the new z. The grey axes stay put; the coloured ones are the body\'s. The rotation is passive, as in the ' +
              'notes: R turns the components of a vector from the fixed axes to the body\'s.'});
+    // the 3-D body sits right under its sliders (on a phone too), the numbers beside
+    const box3d = el('div', {class: 'view3d-box'});
+    const figure = el('div', {class: 'rot-figure'}, box3d,
+      el('p', {class: 'muted'}, el('span', {class: 'c1'}, 'red: body x′'), ', ', el('span', {class: 'c2'}, 'green: y′'), ', ',
+        el('span', {class: 'c3'}, 'blue: z′'), '; grey: the fixed x, y, z. Drag (or focus and use the arrow keys) to turn the view.'));
     const sliders = {};
     const row = (name, sym, min, max) => {
       const id = 'rot-' + name, input = el('input', {type: 'range', min, max, step: 1, value: st[name], id, 'data-pointer': '/euler_zxz'});
@@ -54,14 +59,11 @@ export default {
       pending = ex; run();
     }, {fits: (ex) => ex.request && !ex.request.vectors}),
       row('phi', 'φ (about z)', -180, 180), row('theta', 'θ (about the line of nodes)', 0, 180), row('psi', 'ψ (about the body\'s z)', -180, 180),
+      figure,
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'rot-submit'}, 'Turn'),
         el('button', {type: 'button', class: 'secondary', id: 'rot-lock', onclick: () => {
           sliders.theta.input.value = 0; sliders.theta.out.textContent = '0°'; st.theta = 0; pending = null; run();
         }}, 'θ = 0: gimbal lock')));
-    const box3d = el('div', {class: 'view3d-box'});
-    add(L.figure, el('h3', {}, 'The body in 3-D'), box3d,
-      el('p', {class: 'muted'}, el('span', {class: 'c1'}, 'red: body x′'), ', ', el('span', {class: 'c2'}, 'green: y′'), ', ',
-        el('span', {class: 'c3'}, 'blue: z′'), '; grey: the fixed x, y, z. Drag (or focus and use the arrow keys) to turn the view.'));
     const V = view3d(box3d, {label: 'The body turned by the Euler angles', id: 'rotations-view', extent: 1.3});
     const body = new THREE.Group();
     if (V.ok) {

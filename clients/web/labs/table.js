@@ -106,6 +106,7 @@ export default {
       plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
         a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});
     });
+    L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
     run();
   },
 };

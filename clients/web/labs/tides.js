@@ -96,6 +96,7 @@ export default {
         moon.slice(1).map((x, k) => [k * STEP, x.acceleration.exact.radial, x.acceleration.exact.tangential, x.equilibrium_tide.height,
           sunA[k + 1].acceleration.exact.radial, sunA[k + 1].acceleration.exact.tangential, sunA[k + 1].equilibrium_tide.height].join(',')).join('\n') + '\n'});
     });
+    L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
     run();
   },
 };
