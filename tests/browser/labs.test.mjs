@@ -649,6 +649,15 @@ await lab('rotations', async () => {
   await page.mouse.move(box[0] + box[2] / 2, box[1] + box[3] / 2); await page.mouse.down();
   await page.mouse.move(box[0] + box[2] / 2 + 100, box[1] + box[3] / 2, {steps: 5}); await page.mouse.up(); await frameAfter();
   check(await page.getAttribute('#rotations-view', 'data-yaw') !== yaw0 && (await pixels('#rotations-view')).h !== p0.h, 'rotations: dragging turns the 3-D view');
+  // the three turns played one after the other: after the first, the body's x′ is (cos φ, sin φ, 0)
+  await page.waitForSelector('.rot-figure .player[data-time="3"]', {timeout: 15000});
+  await setRange('.rot-figure [data-role=time]', 333);
+  const x1 = (await page.getAttribute('#rotations-view', 'data-body-x')).split(',').map(Number);
+  check(Math.abs(x1[0] - Math.cos(30 * D)) < 2e-3 && Math.abs(x1[1] - Math.sin(30 * D)) < 2e-3 && Math.abs(x1[2]) < 2e-3 &&
+    /^Turn 1 of 3: φ about z/.test(await page.textContent('#rot-stage')), `rotations: after the first turn the body's x′ is (cos φ, sin φ, 0) (${x1})`);
+  await page.click('.rot-figure [data-role=play]'); await page.waitForTimeout(500); await page.click('.rot-figure [data-role=play]');
+  const tp = await page.getAttribute('.rot-figure .player', 'data-time'); await page.waitForTimeout(300);
+  check(Number(tp) > 1 && await page.getAttribute('.rot-figure .player', 'data-time') === tp, `rotations: play advances the turns (t = ${tp}), pause stops them`);
   // a slider changes the answer
   await clearStates(); await setRange('#rot-psi', 80); await state('main form', 'done');
   check(maxDiff(await rotMatrix('rot-matrix'), zxz(30 * D, 40 * D, 80 * D)) < 1e-12, 'rotations: moving the ψ slider to 80° gives Rψ Rθ Rφ at ψ = 80°');

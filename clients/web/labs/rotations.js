@@ -4,7 +4,8 @@
 // R = Rψ Rθ Rφ entries beside the API's; gimbal lock at θ = 0 (and 180°) said
 // in words; and two turns composed in both orders (POST /v1/batch of two
 // /v1/rotation/compose) to show that rotations do not commute.
-import {el, put, add, fmt, num, labLayout, labSection, runner, examplePicker} from '../lib.js';
+import {el, put, add, fmt, num, api, labLayout, labSection, runner, examplePicker} from '../lib.js';
+import {player} from '../anim.js';
 import {THREE, view3d, axesArrows, sceneAxes} from '../view3d.js';
 
 const D = Math.PI / 180;
@@ -38,7 +39,9 @@ export default {
              'notes: R turns the components of a vector from the fixed axes to the body\'s.'});
     // the 3-D body sits right under its sliders (on a phone too), the numbers beside
     const box3d = el('div', {class: 'view3d-box'});
-    const figure = el('div', {class: 'rot-figure'}, box3d,
+    const turns = player({label: 'The three turns'});
+    const stage = el('p', {id: 'rot-stage', class: 'muted', 'aria-live': 'off'});
+    const figure = el('div', {class: 'rot-figure'}, box3d, turns.root, stage,
       el('p', {class: 'muted'}, el('span', {class: 'c1'}, 'red: body x′'), ', ', el('span', {class: 'c2'}, 'green: y′'), ', ',
         el('span', {class: 'c3'}, 'blue: z′'), '; grey: the fixed x, y, z. Drag (or focus and use the arrow keys) to turn the view.'));
     const sliders = {};
@@ -84,6 +87,34 @@ export default {
       if (V.canvas) V.canvas.dataset.bodyX = R[0].map(v => v.toFixed(4)).join(',');
     };
 
+    // Play the three turns one after the other: the body after φ, after φ and θ, and after all
+    // three, each from POST /v1/rotation/convert (one /v1/batch); between two of them the
+    // orientation turns along the shortest way (slerp), which is the turn about the
+    // axis of that stage (z, the line of nodes, the body's z).
+    let stageCtl = null, stageTimer = 0;
+    const toQ = (R) => new THREE.Quaternion().setFromRotationMatrix(new THREE.Matrix4().set(
+      R[0][0], R[1][0], R[2][0], 0, R[0][1], R[1][1], R[2][1], 0, R[0][2], R[1][2], R[2][2], 0, 0, 0, 0, 1));
+    const names = ['φ about z', 'θ about the line of nodes (the new x)', 'ψ about the body\'s z'];
+    const stages = ([f, t, p]) => {
+      clearTimeout(stageTimer);
+      stageTimer = setTimeout(async () => { // after the sliders rest a moment
+        if (stageCtl) stageCtl.abort();
+        const mine = stageCtl = new AbortController();
+        const r = await api('/v1/batch', {operations: [[f, 0, 0], [f, t, 0], [f, t, p]].map(e => ({operation: '/v1/rotation/convert', request: {euler_zxz: e}}))},
+          {signal: mine.signal});
+        if (mine !== stageCtl || !r.ok || !r.body.results.every(x => x.status === 200)) return;
+        const Rs = [[[1, 0, 0], [0, 1, 0], [0, 0, 1]], ...r.body.results.map(x => x.body.matrix)], Q = Rs.map(toQ);
+        turns.set([0, 1, 2, 3], (i, fr) => {
+          const j = Math.min(i + 1, 3), q = Q[i].clone().slerp(Q[j], fr), m = new THREE.Matrix4().makeRotationFromQuaternion(q).elements;
+          // back to the passive R (rows = the body's axes) for orient(): R[i][k] = m's column i, row k
+          orient([0, 1, 2].map(c => [m[4 * c], m[4 * c + 1], m[4 * c + 2]]));
+          stage.textContent = i >= 3 || (i === 2 && fr >= 1) ? 'All three turns done: the orientation set by the sliders.'
+            : `Turn ${i + 1} of 3: ${names[i]}, ${deg([f, t, p][i] * fr)} of ${deg([f, t, p][i])}.`;
+        });
+        turns.seek(3);
+      }, 250);
+    };
+
     const run = runner(L, () => (pending ? pending.operation : '/v1/rotation/convert'),
       () => (pending ? pending.request : {euler_zxz: [st.phi * D, st.theta * D, st.psi * D]}),
       (a, req) => {
@@ -115,6 +146,7 @@ export default {
             el('p', {class: 'muted'}, 'The quaternion is (cos(α/2), n sin(α/2)) for the turn α about the axis n; ' +
               'a quaternion never locks, which is why attitude is integrated with one (§2.6).')));
         orient(a.matrix);
+        stages([f, t, p]);
       });
     run();
 
