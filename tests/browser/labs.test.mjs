@@ -735,6 +735,14 @@ await lab('tides', async () => {
   // spring: the highest water is both highs added; neap (Sun at 90°): the Moon's high plus the Sun's low
   const hm = 2 / 3 * moon, hs = 2 / 3 * sun; // high water = (2/3) range, low = −(1/3) range
   close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm + hs, 1e-9, 'tides: spring high water = Moon\'s high + Sun\'s high');
+  // a month of tides: a quarter of the way (the Sun at 90°) is neap, half way (full Moon) spring again
+  await page.click('#tides-field ~ .player [data-role=play]'); await page.waitForTimeout(600); await page.click('#tides-field ~ .player [data-role=play]');
+  check(Math.abs(Number(await page.getAttribute('#tides-field', 'data-max-height')) - (hm + hs)) > 1e-4, 'tides: playing the month changes the tide');
+  await setRange('#tides-field ~ .player [data-role=time]', 250);
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm - hs / 2, 1e-9, 'tides: a quarter of a month on, neap high water');
+  check(/neap tide \(quarter Moon\)/.test(await page.textContent('#tides-phase')), `tides: the quarter Moon is said to be neap ("${await page.textContent('#tides-phase')}")`);
+  await setRange('#tides-field ~ .player [data-role=time]', 500);
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm + hs, 1e-9, 'tides: half a month on (full Moon), spring high water again');
   await clearStates(); await page.selectOption('#tides-sun', '90'); await state('main form', 'done');
   close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm - hs / 2, 1e-9, 'tides: neap high water = Moon\'s high + Sun\'s low');
   check(/Sun and Moon|Moon and Sun/.test(await page.textContent('#tides-note')) && /times larger/.test(await page.textContent('#tides-note')),

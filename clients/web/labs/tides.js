@@ -4,6 +4,9 @@
 // POST /v1/batch of /v1/earth/tides at every 15° (the field is symmetric about
 // the line to each body, so 0…180° is enough), plus the marked point.
 import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10} from '../lib.js';
+import {player} from '../anim.js';
+
+const MONTH = 29.53; // days from new Moon to new Moon (the synodic month)
 
 const st = {show: 'both', sun: 0, point: 0};
 const BUILTIN = [
@@ -42,7 +45,9 @@ export default {
 
     const plot = svg('svg', {class: 'plot', id: 'tides-field', role: 'img', 'aria-label': 'The tidal field around the Earth'});
     const note = el('p', {class: 'muted', id: 'tides-note'});
-    add(L.figure, el('h3', {}, 'The tidal field and the bulges'), plot, note);
+    const month = player({label: 'A month of tides', unit: 'days', seconds: 86400});
+    const phase = el('p', {id: 'tides-phase', class: 'muted'});
+    add(L.figure, el('h3', {}, 'The tidal field and the bulges'), plot, month.root, phase, note);
 
     const run = runner(L, '/v1/batch', () => {
       const s = show.input.value, a = Number(sun.input.value), p = val(point.input);
@@ -91,7 +96,17 @@ export default {
             `${fmt(moon[1].acceleration.exact.radial, 5)} m/s²: the first-order formula is ${fmt(100 * moon[1].acceleration.relative_difference, 3)}% low ` +
             `(about (3/2) r/d = ${fmt(150 * M.r_over_d, 3)}%: the next term of the series). The range ` +
             `(3/2) GM r⁴/(GM_E d³) = ${fmt(M.spring_neap.moon_range, 3)} m for the Moon and ${fmt(M.spring_neap.sun_range, 3)} m for the Sun (the notes: 0.54 and 0.25 m).`)));
-      drawField(plot, note, {moon: s !== 'sun' ? moon.slice(1) : null, sun: s !== 'moon' ? sunA.slice(1) : null, alpha, point: st.point, wrap});
+      // a month: the Sun's angle from the Moon goes round once in 29.53 days (the same answers,
+      // the Sun's every 15°, drawn at each angle); spring at new and full Moon, neap at the quarters
+      const days = Array.from({length: 49}, (_, k) => k * MONTH / 48);
+      month.set(days, (i, f, t) => {
+        const al = 360 * t / MONTH, a2 = ((al % 360) + 360) % 360;
+        drawField(plot, note, {moon: s !== 'sun' ? moon.slice(1) : null, sun: s !== 'moon' ? sunA.slice(1) : null, alpha: a2, point: st.point, wrap});
+        const ph = Math.min(a2, 360 - a2);
+        phase.textContent = `Day ${fmt(t, 3)}: the Sun ${fmt(Math.round(a2 * 10) / 10, 4)}° from the Moon — ` +
+          (ph < 20 || ph > 160 ? `spring tide (${a2 < 90 || a2 > 270 ? 'new' : 'full'} Moon)` : ph > 70 && ph < 110 ? 'neap tide (quarter Moon)' : 'between spring and neap') + '.';
+      });
+      month.seek(alpha / 360 * MONTH);
       plotTools(plot, {name: 'tides', csv: () => 'angle_from_moon_deg,moon_radial,moon_tangential,moon_height,sun_radial,sun_tangential,sun_height\n' +
         moon.slice(1).map((x, k) => [k * STEP, x.acceleration.exact.radial, x.acceleration.exact.tangential, x.equilibrium_tide.height,
           sunA[k + 1].acceleration.exact.radial, sunA[k + 1].acceleration.exact.tangential, sunA[k + 1].equilibrium_tide.height].join(',')).join('\n') + '\n'});
@@ -109,10 +124,12 @@ function drawField(root, note, {moon, sun, alpha, point, wrap}) {
   put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
   const cx = W / 2, cy = H / 2, R0 = W * 0.27;
   const at = (list, beta, phi) => { // the acceleration (x, y) and height at picture angle phi from a body at angle beta
-    const d = wrap(phi - beta), k = Math.round(Math.abs(d) / STEP), x = list[k];
-    const ar = x.acceleration.exact.radial, t = x.acceleration.exact.tangential * Math.sign(d || 1);
+    // between two of the API's angles (every 15°), linearly (the Sun during the month's animation)
+    const d = wrap(phi - beta), u = Math.abs(d) / STEP, k = Math.min(Math.floor(u), list.length - 2), f = u - k;
+    const mix = (g) => g(list[k]) + (g(list[k + 1]) - g(list[k])) * f;
+    const ar = mix(x => x.acceleration.exact.radial), t = mix(x => x.acceleration.exact.tangential) * Math.sign(d || 1);
     const c = Math.cos(phi * Math.PI / 180), s = Math.sin(phi * Math.PI / 180);
-    return [ar * c - t * s, ar * s + t * c, x.equilibrium_tide.height];
+    return [ar * c - t * s, ar * s + t * c, mix(x => x.equilibrium_tide.height)];
   };
   const field = [];
   for (let i = 0; i < N; i++) {
