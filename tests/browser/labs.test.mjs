@@ -789,6 +789,12 @@ await lab('particles', async () => {
   const rgb = (await page.getAttribute('#dp-swatch-seen', 'data-colour')).match(/\d+/g).map(Number);
   close(await value('#dp-seen'), 500 / Math.sqrt(1.1 / 0.9), 1e-9, 'particles: seen wavelength 500 nm / factor');
   check(rgb[2] > rgb[0] && rgb[2] > rgb[1], `particles: 452 nm looks blue (${rgb})`);
+  // seen at right angles (in the observer's frame): redder by 1/γ, the transverse Doppler effect
+  await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
+  await setRange('#dp-angle', 90); await state('#doppler-form', 'done');
+  close(await value('#dp-factor'), Math.sqrt(1 - 0.01), 1e-12, 'particles: at 90° the Doppler factor is 1/γ');
+  await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
+  await setRange('#dp-angle', 0); await state('#doppler-form', 'done');
   await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
   await setRange('#dp-beta', -0.5); await state('#doppler-form', 'done');
   check(await page.getAttribute('#dp-swatch-seen', 'data-colour') === 'infrared' && /infrared: invisible/.test(await page.textContent('#doppler-results')),

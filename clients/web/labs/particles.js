@@ -60,6 +60,7 @@ export default {
       if (ex.operation === '/v1/relativity/doppler') {
         const b = r.source_velocity && r.source_velocity.beta, dir = r.arrival_direction || [1, 0, 0];
         if (b) setBeta(b[0] * Math.sign(dir[0] || 1)); // the source's velocity along the light's path
+        as.value = 0; aOut.textContent = '0°';
         if (r.wavelength) dL.input.value = r.wavelength * 1e9;
         drun(); Dp.form.scrollIntoView({block: 'nearest'}); return;
       }
@@ -138,28 +139,37 @@ export default {
 
     // --- Doppler ---
     const Dp = labSection(main, {title: 'The Doppler effect: the colour of light', id: 'doppler',
-      intro: 'A source moves along the line of sight with velocity β. Coming towards you its light is bluer, going away redder: ' +
-             'f′ = f √((1 + β)/(1 − β)). Slide β and watch the colour.'});
+      intro: 'A source moves with velocity β. Coming towards you its light is bluer, going away redder: along the line of sight ' +
+             'f′ = f √((1 + β)/(1 − β)). Seen at right angles (in your frame) it is still redder, by 1/γ: the source\'s clocks run slow. ' +
+             'Slide β and the angle and watch the colour.'});
     const bs = el('input', {type: 'range', min: -0.95, max: 0.95, step: 0.01, value: st.beta, id: 'dp-beta', 'data-pointer': '/source_velocity/beta'});
     const bOut = el('output', {for: 'dp-beta', id: 'dp-beta-shown'}, 'β = ' + st.beta);
     const setBeta = (b) => { bs.value = b; st.beta = Number(bs.value); bOut.textContent = 'β = ' + fmt(st.beta, 3); };
     const dL = field({label: 'Emitted wavelength', pointer: '/wavelength', value: st.nm, unit: 'nm', id: 'dp-lambda', help: 'visible: 380 to 750 nm'});
     bs.addEventListener('input', () => { setBeta(Number(bs.value)); drun(); });
-    add(Dp.form, el('div', {class: 'figure-control'}, el('label', {for: 'dp-beta'}, 'β (positive: coming towards you)'), bs, bOut), dL.wrap,
+    // the angle, in the observer's frame, between the source's velocity and the light reaching you
+    const as = el('input', {type: 'range', min: 0, max: 180, step: 1, value: 0, id: 'dp-angle', 'data-pointer': '/arrival_direction'});
+    const aOut = el('output', {for: 'dp-angle', id: 'dp-angle-shown'}, '0°');
+    as.addEventListener('input', () => { aOut.textContent = as.value + '°'; drun(); });
+    add(Dp.form, el('div', {class: 'figure-control'}, el('label', {for: 'dp-beta'}, 'β (positive: coming towards you)'), bs, bOut),
+      el('div', {class: 'figure-control'}, el('label', {for: 'dp-angle'}, 'angle from head-on (your frame)'), as, aOut), dL.wrap,
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dp-submit'}, 'Shift')));
     const drun = runner(Dp, '/v1/relativity/doppler', () => {
       st.nm = val(dL.input);
-      return {source_velocity: {beta: [Number(bs.value), 0, 0]}, arrival_direction: [1, 0, 0], wavelength: Number((val(dL.input) * 1e-9).toPrecision(12))};
-    }, (a) => {
-      const b = a.source_velocity.beta[0], f = a.doppler_factor;
-      const notes = Math.sqrt((1 + b) / (1 - b));
+      const t = Number(as.value) * D, c = Math.abs(Math.cos(t)) < 1e-15 ? 0 : Math.cos(t), s = Math.abs(Math.sin(t)) < 1e-15 ? 0 : Math.sin(t);
+      return {source_velocity: {beta: [Number(bs.value), 0, 0]}, arrival_direction: [Number(c.toPrecision(15)), Number(s.toPrecision(15)), 0],
+        wavelength: Number((val(dL.input) * 1e-9).toPrecision(12))};
+    }, (a, req) => {
+      const b = a.source_velocity.beta[0], f = a.doppler_factor, n = req.arrival_direction;
+      const cosA = n[0] / Math.hypot(...n), notes = Math.sqrt(1 - b * b) / (1 - b * cosA); // 1 / (γ (1 − β cos α))
       put(Dp.results, el('div', {class: 'pair'},
         el('div', {}, el('h3', {}, 'Emitted'), swatch('dp-swatch-emitted', a.wavelength_emitted * 1e9)),
         el('div', {}, el('h3', {}, 'Seen'), swatch('dp-swatch-seen', a.wavelength_observed * 1e9))),
         el('dl', {class: 'nums'}, el('dt', {}, 'f′ / f'), num('dp-factor', f), el('dt', {}, 'seen wavelength'), num('dp-seen', a.wavelength_observed * 1e9, 'nm'),
           el('dt', {}, 'case'), el('dd', {id: 'dp-case'}, a.case.replace(/_/g, ' '))),
         el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§3.14 The Relativistic Doppler Effect)'),
-          el('p', {}, 'f′ = f √((1 + β) / (1 − β)) along the line of sight (β > 0 approaching)'),
+          el('p', {}, 'f′ = f / (γ (1 − β cos α)), α the angle in your frame between the source\'s velocity and the light reaching you: ' +
+            '√((1 + β) / (1 − β)) head-on (α = 0), 1/γ at α = 90°'),
           el('p', {id: 'dp-compare'}, `By the formula: ${fmt(notes, 7)}; the API: ${fmt(f, 7)}; difference ${fmt(Math.abs(notes - f), 2)}.`)));
     });
     drun();
