@@ -1,28 +1,38 @@
 // app.js — the labs' shell: tabs, hash routing (#inertia …), projector mode,
 // and the access token of a server started with --token-file (asked for when
 // the server answers 401, kept for this tab's session only).
-import inertia from './labs/inertia.js';
-import spacetime from './labs/spacetime.js';
-import earth from './labs/earth.js';
-import tops from './labs/tops.js';
-import orbits from './labs/orbits.js';
-import accuracy from './labs/accuracy.js';
 import {el, add, getToken, setToken} from './lib.js';
 
-const labs = [inertia, spacetime, earth, tops, orbits, accuracy];
+// The labs in the course's order: rotations (ch. 0), the rotating table and
+// the tides (ch. 1), … Each lab's module is loaded when it is first shown, so a
+// phone opening one lab fetches and parses only that lab (and three.js only
+// for the labs drawn in 3-D).
+const labs = [
+  ['rotations', 'Rotations'], ['table', 'Rotating table'], ['inertia', 'Inertia'], ['tops', 'Tops'], ['earth', 'Earth'],
+  ['tides', 'Tides'], ['orbits', 'Orbits'], ['phase', 'Phase space'], ['spacetime', 'Spacetime'], ['particles', 'Particles'],
+  ['accuracy', 'Accuracy'],
+].map(([id, title]) => ({id, title, load: () => import(`./labs/${id}.js`).then(m => m.default)}));
 const main = document.getElementById('lab');
 const tabs = document.getElementById('tabs');
 for (const lab of labs)
   add(tabs, el('li', {}, el('a', {href: '#' + lab.id, id: 'tab-' + lab.id}, lab.title)));
 
-function show() {
+let showing = 0; // the latest show(): an older one whose module arrives late does not mount
+async function show() {
   const id = location.hash.slice(1) || labs[0].id;
   const lab = labs.find(l => l.id === id) || labs[0];
+  const me = ++showing;
   for (const a of tabs.querySelectorAll('a'))
     if (a.id === 'tab-' + lab.id) a.setAttribute('aria-current', 'page'); else a.removeAttribute('aria-current');
   document.title = `${lab.title} — mechd labs`;
+  let mod;
+  try { mod = await lab.load(); } catch (e) {
+    if (me === showing) main.textContent = `The ${lab.title} lab could not be loaded (${e.message}); reload the page to try again.`;
+    return;
+  }
+  if (me !== showing) return;
   main.dataset.lab = lab.id;
-  lab.mount(main);
+  mod.mount(main);
 }
 window.addEventListener('hashchange', () => { show(); main.focus(); });
 const proj = document.getElementById('projector');

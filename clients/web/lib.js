@@ -141,17 +141,51 @@ export function curlCommand(path, body) {
     : `curl -s${auth} --json ${q(toJSON(body))} ${q(location.origin + path)}`;
 }
 
-// The copyable curl box: update(path, body).
-export function curlBox() {
-  const pre = el('pre', {tabindex: 0, 'aria-label': 'curl command'});
-  const btn = el('button', {type: 'button', class: 'secondary', onclick: async () => {
+// The request as a call of the Python client (clients/python/mechd.py): its
+// generic form client.call(path, body), which every operation takes (the
+// client on main has no per-operation methods with named parameters yet).
+export function pythonCommand(path, body) {
+  const py = (v, ind) => {
+    if (v === null || v === undefined) return 'None';
+    if (v === true) return 'True';
+    if (v === false) return 'False';
+    if (typeof v === 'number') return Number.isFinite(v) ? String(v) : 'None';
+    if (typeof v === 'string') return JSON.stringify(v);
+    const pad = ind + '    ';
+    if (Array.isArray(v)) {
+      const flat = '[' + v.map(x => py(x, pad)).join(', ') + ']';
+      return flat.length <= 72 ? flat : '[\n' + v.map(x => pad + py(x, pad)).join(',\n') + ',\n' + ind + ']';
+    }
+    const items = Object.entries(v).filter(([, x]) => x !== undefined).map(([k, x]) => JSON.stringify(k) + ': ' + py(x, pad));
+    const flat = '{' + items.join(', ') + '}';
+    return flat.length <= 72 ? flat : '{\n' + items.map(x => pad + x).join(',\n') + ',\n' + ind + '}';
+  };
+  return 'from mechd import Client  # clients/python/mechd.py\n' +
+    `client = Client(${JSON.stringify(location.origin)})` +
+    (getToken() ? '  # this server wants a token: the client on main cannot send one yet; use the curl line' : '') + '\n' +
+    (body === undefined ? `answer = client.call(${JSON.stringify(path)})\n`
+      : `answer = client.call(${JSON.stringify(path)}, ${py(JSON.parse(toJSON(body)), '')})\n`);
+}
+
+// A copy button for the text of pre (falls back to selecting it).
+function copyButton(pre, name) {
+  const btn = el('button', {type: 'button', class: 'secondary', 'data-copy': name.toLowerCase(), onclick: async () => {
     try { await navigator.clipboard.writeText(pre.textContent); btn.textContent = 'Copied'; }
     catch (e) { const r = document.createRange(); r.selectNodeContents(pre);
       getSelection().removeAllRanges(); getSelection().addRange(r); btn.textContent = 'Selected: press Ctrl+C'; }
-    setTimeout(() => { btn.textContent = 'Copy curl'; }, 2000);
-  }}, 'Copy curl');
-  const box = el('section', {class: 'curl'}, el('h3', {}, 'The request'), pre, btn);
-  return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); }};
+    setTimeout(() => { btn.textContent = 'Copy as ' + name; }, 2000);
+  }}, 'Copy as ' + name);
+  return btn;
+}
+
+// The copyable request box: the curl line, and the same call from Python
+// (folded away until asked for); update(path, body).
+export function curlBox() {
+  const pre = el('pre', {tabindex: 0, 'aria-label': 'curl command'});
+  const pyPre = el('pre', {tabindex: 0, 'aria-label': 'Python call', 'data-role': 'python'});
+  const box = el('section', {class: 'curl'}, el('h3', {}, 'The request'), pre, copyButton(pre, 'curl'),
+    el('details', {class: 'python'}, el('summary', {}, 'As Python'), pyPre, copyButton(pyPre, 'Python')));
+  return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); pyPre.textContent = pythonCommand(path, body); }};
 }
 
 // Clear every field error of a form and the general problem box.
@@ -416,7 +450,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     const q = s.points.filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
     const p = q.map(r => [X(tx(r[0])), Y(ty(r[1]))]);
     p.forEach((r, k) => hover.push([r[0], r[1], q[k][0], q[k][1], s.label || '', c]));
-    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 4, fill: c}));
+    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c}));
     else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
     if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
@@ -577,7 +611,7 @@ function busyUi(S, onCancel) {
 }
 
 // Wire a section's form to one operation: build() -> body, show(answer, body)
-// renders. Returns run(); a new run cancels one still running (the slider),
+// renders (returning false when the answer holds a failure, e.g. a batch item's). Returns run(); a new run cancels one still running (the slider),
 // and Cancel aborts the request (AbortController: the server's hang-up
 // watcher then stops the pooled work). data-state on the form: busy, done,
 // error or cancelled. path may be a function of nothing.
@@ -599,8 +633,8 @@ export function runner(S, path, build, show) {
     if (r.aborted) { S.form.dataset.state = 'cancelled'; return; }
     if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
     clearErrors(S.form, S.problem);
-    show(r.body, body);
-    S.form.dataset.state = 'done';
+    // show() returns false when the answer carries a failure of its own (a batch item)
+    S.form.dataset.state = show(r.body, body) === false ? 'error' : 'done';
   };
   S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;

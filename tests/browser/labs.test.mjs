@@ -24,7 +24,7 @@
 //                            mechd — only for before mechd serves static files.
 //        CHROMIUM            browser binary (default /usr/bin/chromium)
 import {chromium} from 'playwright-core';
-import {spawn} from 'node:child_process';
+import {spawn, execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
@@ -183,9 +183,10 @@ await lab('keyboard', async () => {
   await page.keyboard.press('Tab');
   check(await page.evaluate(() => document.activeElement.className) === 'skip', 'keyboard: Tab reaches the skip link first');
   await page.keyboard.press('Tab');
-  check(await page.evaluate(() => document.activeElement.id) === 'tab-inertia', 'keyboard: then the lab tabs');
+  const tabIds = await page.$$eval('#tabs a', (as) => as.map(a => a.id.replace(/^tab-/, '')));
+  check(await page.evaluate(() => document.activeElement.id) === 'tab-' + tabIds[0], 'keyboard: then the lab tabs');
   await page.keyboard.press('Tab'); await page.keyboard.press('Enter');
-  await page.waitForSelector('main[data-lab="spacetime"]', {timeout: 10000});
+  await page.waitForSelector(`main[data-lab="${tabIds[1]}"]`, {timeout: 10000});
   check(true, 'keyboard: Enter on a tab opens its lab');
 });
 
@@ -254,7 +255,7 @@ await lab('accuracy', async () => {
 });
 
 // --- issue 15: the labs as a user meets them ------------------------------------
-const LABS = ['inertia', 'spacetime', 'earth', 'tops', 'orbits', 'accuracy'];
+const LABS = ['inertia', 'spacetime', 'earth', 'tops', 'orbits', 'accuracy', 'rotations', 'table', 'tides', 'phase', 'particles'];
 
 // Wait until every form of the lab has answered (done, error or cancelled) and
 // none is busy; forms whose state was cleared must answer again.
@@ -610,6 +611,196 @@ await lab('earth', async () => {
   close(Number(last[1]) / 100, await value('#fall-east'), 1e-6, 'falling object: the animated path lands where the scene says (east)');
   check(Math.abs(Number(last[2])) < 1e-9, `falling object: the animated path ends on the ground (z = ${last[2]})`);
 }, 'anim-earth');
+
+// --- issue 19, second half: the new labs (rotations, rotating table, tides,
+// phase space, particles), each against closed forms computed here ------------
+const clearStates = () => page.evaluate(() => { for (const f of document.querySelectorAll('main form')) delete f.dataset.state; });
+const setRange = (sel, v) => page.$eval(sel, (e, v) => { e.value = String(v); e.dispatchEvent(new Event('input', {bubbles: true})); }, v);
+const num2 = async (sel) => (await page.getAttribute(sel, 'data-value', {timeout: 15000})).split(',').map(Number);
+// the passive z-x-z matrix R = Rψ Rθ Rφ as a product of the three elementary turns
+function zxz(f, t, p) {
+  const Rz = (a) => [[Math.cos(a), Math.sin(a), 0], [-Math.sin(a), Math.cos(a), 0], [0, 0, 1]];
+  const Rx = (a) => [[1, 0, 0], [0, Math.cos(a), Math.sin(a)], [0, -Math.sin(a), Math.cos(a)]];
+  const mul = (A, B) => A.map((r, i) => B[0].map((_, j) => r.reduce((s, _, k) => s + A[i][k] * B[k][j], 0)));
+  return mul(Rz(p), mul(Rx(t), Rz(f)));
+}
+const rotMatrix = async (id) => { const m = []; for (let i = 0; i < 3; i++) { m.push([]); for (let j = 0; j < 3; j++) m[i].push(await value(`#${id}-${i}${j}`)); } return m; };
+const maxDiff = (A, B) => Math.max(...A.flatMap((r, i) => r.map((v, j) => Math.abs(v - B[i][j]))));
+
+await lab('rotations', async () => {
+  await settled();
+  const D = Math.PI / 180;
+  const R = await rotMatrix('rot-matrix');
+  const want = zxz(30 * D, 40 * D, 20 * D);
+  check(maxDiff(R, want) < 1e-12, `rotations: R for φ, θ, ψ = 30°, 40°, 20° is Rψ Rθ Rφ (largest difference ${maxDiff(R, want)})`);
+  const q = await num2('#rot-quat'), tr = R[0][0] + R[1][1] + R[2][2];
+  close(Math.abs(q[0]), Math.sqrt(1 + tr) / 2, 1e-12, 'rotations: quaternion w = √(1 + tr R)/2');
+  close(Math.hypot(...q), 1, 1e-12, 'rotations: the quaternion is a unit one');
+  check(/No gimbal lock: θ is 40° from/.test(await page.textContent('#rot-gimbal')), 'rotations: at θ = 40° no gimbal lock, and how far from it');
+  // the body in 3-D: drawn, its x′ axis along R's first row, and it turns on drag
+  await frameAfter();
+  const p0 = await pixels('#rotations-view');
+  check(p0.ink > 0.02, `rotations: the body is drawn in 3-D (${(p0.ink * 100).toFixed(1)} % inked)`);
+  const bx = (await page.getAttribute('#rotations-view', 'data-body-x')).split(',').map(Number);
+  check(bx.every((v, k) => Math.abs(v - want[0][k]) < 1e-4), `rotations: the body's x′ axis points along R's first row (${bx})`);
+  await page.$eval('#rotations-view', (c) => c.scrollIntoView({block: 'center'}));
+  const box = await page.$eval('#rotations-view', (c) => { const r = c.getBoundingClientRect(); return [r.x, r.y, r.width, r.height]; });
+  const yaw0 = await page.getAttribute('#rotations-view', 'data-yaw');
+  await page.mouse.move(box[0] + box[2] / 2, box[1] + box[3] / 2); await page.mouse.down();
+  await page.mouse.move(box[0] + box[2] / 2 + 100, box[1] + box[3] / 2, {steps: 5}); await page.mouse.up(); await frameAfter();
+  check(await page.getAttribute('#rotations-view', 'data-yaw') !== yaw0 && (await pixels('#rotations-view')).h !== p0.h, 'rotations: dragging turns the 3-D view');
+  // the three turns played one after the other: after the first, the body's x′ is (cos φ, sin φ, 0)
+  await page.waitForSelector('.rot-figure .player[data-time="3"]', {timeout: 15000});
+  await setRange('.rot-figure [data-role=time]', 333);
+  const x1 = (await page.getAttribute('#rotations-view', 'data-body-x')).split(',').map(Number);
+  check(Math.abs(x1[0] - Math.cos(30 * D)) < 2e-3 && Math.abs(x1[1] - Math.sin(30 * D)) < 2e-3 && Math.abs(x1[2]) < 2e-3 &&
+    /^Turn 1 of 3: φ about z/.test(await page.textContent('#rot-stage')), `rotations: after the first turn the body's x′ is (cos φ, sin φ, 0) (${x1})`);
+  await page.click('.rot-figure [data-role=play]'); await page.waitForTimeout(500); await page.click('.rot-figure [data-role=play]');
+  const tp = await page.getAttribute('.rot-figure .player', 'data-time'); await page.waitForTimeout(300);
+  check(Number(tp) > 1 && await page.getAttribute('.rot-figure .player', 'data-time') === tp, `rotations: play advances the turns (t = ${tp}), pause stops them`);
+  // a slider changes the answer
+  await clearStates(); await setRange('#rot-psi', 80); await state('main form', 'done');
+  check(maxDiff(await rotMatrix('rot-matrix'), zxz(30 * D, 40 * D, 80 * D)) < 1e-12, 'rotations: moving the ψ slider to 80° gives Rψ Rθ Rφ at ψ = 80°');
+  // gimbal lock at θ = 0: φ and ψ do the same thing
+  await clearStates(); await page.click('#rot-lock'); await state('main form', 'done');
+  const lockText = await page.textContent('#rot-gimbal');
+  check(/Gimbal lock/.test(lockText) && /φ \+ ψ = 110°/.test(lockText) && /same axis/.test(lockText),
+    `rotations: θ = 0 says gimbal lock, that only φ + ψ (= 110°) matters ("${lockText.slice(0, 160)}")`);
+  const L1 = await rotMatrix('rot-matrix');
+  await clearStates(); await setRange('#rot-phi', 80); await state('main form', 'done');
+  await clearStates(); await setRange('#rot-psi', 30); await state('main form', 'done');
+  const L2 = await rotMatrix('rot-matrix');
+  check(maxDiff(L1, L2) < 1e-12 && maxDiff(L1, zxz(110 * D, 0, 0)) < 1e-12,
+    `rotations: at θ = 0, (φ, ψ) = (30°, 80°) and (80°, 30°) are the same turn by 110° about z (${maxDiff(L1, L2)})`);
+  // two turns composed both ways: x then z differs from z then x; x then x commutes
+  const AB = await rotMatrix('order-ab'), BA = await rotMatrix('order-ba');
+  const Rx90 = zxz(0, Math.PI / 2, 0), Rz90 = zxz(Math.PI / 2, 0, 0);
+  const mul = (A, B) => A.map((r, i) => B[0].map((_, j) => r.reduce((s, _, k) => s + A[i][k] * B[k][j], 0)));
+  check(maxDiff(AB, mul(Rz90, Rx90)) < 1e-12 && maxDiff(BA, mul(Rx90, Rz90)) < 1e-12,
+    'rotations: 90° about x then 90° about z is Rz Rx (passive), the other order Rx Rz');
+  check(await value('#order-verdict') > 0.9 && /differ/.test(await page.textContent('#order-verdict')), 'rotations: the two orders are said to differ');
+  await page.selectOption('#order-b-axis', 'x'); await page.evaluate(() => delete document.getElementById('order-form').dataset.state);
+  await page.click('#order-submit'); await state('#order-form', 'done');
+  check(await value('#order-verdict') < 1e-12 && /agree/.test(await page.textContent('#order-verdict')), 'rotations: two turns about x commute, and it says so');
+  // copy as Python: the shown call runs with the Python client and gives the page's numbers
+  const py = await page.textContent('main [data-role=python]');
+  check(/client\.call\("\/v1\/rotation\/convert", \{"euler_zxz": \[/.test(py), `rotations: the Python box calls client.call("/v1/rotation/convert", …) (${py.split('\n')[2]})`);
+  let out = '';
+  try {
+    out = execFileSync('/usr/bin/python3', ['-c', py + '\nimport json\nprint(json.dumps(answer["matrix"]))'],
+      {env: {...process.env, PYTHONPATH: path.resolve(webRoot, '..', 'python')}, encoding: 'utf8', timeout: 20000});
+  } catch (e) { out = String(e.stderr || e); }
+  let pm = null; try { pm = JSON.parse(out); } catch (e) { /* shown below */ }
+  check(pm && maxDiff(pm, await rotMatrix('rot-matrix')) === 0, `rotations: the Python call runs and answers the page's matrix (${out.slice(0, 120)})`);
+  check((await blemishes()).length === 0, `rotations: a clean page (${(await blemishes()).join(' | ')})`);
+}, 'new-rotations');
+
+await lab('table', async () => {
+  await settled();
+  // through the centre, ω = 1, r1 = 1, m = 1: F' = −m ω² r1 (4/π, 1) at the start
+  const F = await num2('#table-total');
+  close(F[0], -4 / Math.PI, 1e-12, 'table: effective force x = −(4/π) m ω² r1'); close(F[1], -1, 1e-12, 'table: effective force y = −m ω² r1');
+  close(await value('#table-t'), Math.PI, 1e-12, 'table: the run lasts half a turn, π/ω');
+  const puck = async (id) => (await page.getAttribute(id, 'data-puck')).split(',').map(Number);
+  const a0 = await puck('#table-room'), b0 = await puck('#table-table');
+  await page.click('main [data-role=play]'); await page.waitForTimeout(800);
+  await page.click('main [data-role=play]');
+  const a1 = await puck('#table-room'), b1 = await puck('#table-table');
+  check(a1[1] < a0[1] && b1[1] < b0[1], `table: play moves the puck in both frames (room y ${a0[1]} → ${a1[1]}, table y ${b0[1]} → ${b1[1]})`);
+  check(Math.abs(a1[0]) < 1e-9 && Math.abs(b1[0]) > 1e-3, `table: from the room the puck goes straight (x = ${a1[0]}), on the table it curves (x′ = ${b1[0]})`);
+  const t1 = await page.getAttribute('main .player', 'data-time'); await page.waitForTimeout(300);
+  check(await page.getAttribute('main .player', 'data-time') === t1, 'table: pause stops the animation');
+  await setRange('main [data-role=time]', 1000);
+  const a2 = await puck('#table-room'), b2 = await puck('#table-table');
+  check(Math.abs(a2[0]) < 1e-3 && Math.abs(a2[1] + 1) < 1e-3 && Math.abs(b2[0]) < 1e-3 && Math.abs(b2[1] - 1) < 1e-3,
+    `table: after half a turn the puck is across the room (${a2}) but back at its start on the table (${b2})`);
+  // a faster table: half a turn in π/2 s
+  await page.fill('#table-omega', '2'); await clearStates(); await page.click('#table-submit'); await state('main form', 'done');
+  close(await value('#table-t'), Math.PI / 2, 1e-12, 'table: at ω = 2 rad/s the run lasts π/2 s');
+  await invalid('main form', '#table-omega', 0, '#table-submit', 'must rotate');
+}, 'new-table');
+
+await lab('tides', async () => {
+  await settled();
+  // equilibrium tide range 3 GM r⁴ / (2 GM_E d³) with the constants the operation documents
+  const G = 6.67430e-11, r = 6371008.8, GME = 3.986004418e14;
+  const moon = 3 * G * 7.342e22 * r ** 4 / (2 * GME * 3.844e8 ** 3), sun = 3 * 1.32712440018e20 * r ** 4 / (2 * GME * 1.495978707e11 ** 3);
+  close(await value('#tides-moon-range'), moon, 1e-9, 'tides: the Moon\'s range 3 GM r⁴/(2 GM_E d³)');
+  close(await value('#tides-sun-range'), sun, 1e-9, 'tides: the Sun\'s range');
+  close(await value('#tides-spring'), moon + sun, 1e-9, 'tides: spring range = sum'); close(await value('#tides-neap'), moon - sun, 1e-9, 'tides: neap range = difference');
+  // the arrows: 24, outwards below the Moon (+x), inwards at 90° (down the screen is towards the centre)
+  const arrows = await page.$$eval('#tides-field [data-role=tide-arrow]', (ls) => ls.map(l => ['x1', 'y1', 'x2', 'y2'].map(k => Number(l.getAttribute(k)))));
+  check(arrows.length === 24 && arrows[0][2] > arrows[0][0] + 5 && arrows[6][3] > arrows[6][1] + 2 && arrows[12][2] < arrows[12][0] - 5,
+    `tides: 24 arrows, outwards towards and away from the Moon, inwards at 90° (${arrows.length})`);
+  // spring: the highest water is both highs added; neap (Sun at 90°): the Moon's high plus the Sun's low
+  const hm = 2 / 3 * moon, hs = 2 / 3 * sun; // high water = (2/3) range, low = −(1/3) range
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm + hs, 1e-9, 'tides: spring high water = Moon\'s high + Sun\'s high');
+  // a month of tides: a quarter of the way (the Sun at 90°) is neap, half way (full Moon) spring again
+  await page.click('#tides-field ~ .player [data-role=play]'); await page.waitForTimeout(600); await page.click('#tides-field ~ .player [data-role=play]');
+  check(Math.abs(Number(await page.getAttribute('#tides-field', 'data-max-height')) - (hm + hs)) > 1e-4, 'tides: playing the month changes the tide');
+  await setRange('#tides-field ~ .player [data-role=time]', 250);
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm - hs / 2, 1e-9, 'tides: a quarter of a month on, neap high water');
+  check(/neap tide \(quarter Moon\)/.test(await page.textContent('#tides-phase')), `tides: the quarter Moon is said to be neap ("${await page.textContent('#tides-phase')}")`);
+  await setRange('#tides-field ~ .player [data-role=time]', 500);
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm + hs, 1e-9, 'tides: half a month on (full Moon), spring high water again');
+  await clearStates(); await page.selectOption('#tides-sun', '90'); await state('main form', 'done');
+  close(Number(await page.getAttribute('#tides-field', 'data-max-height')), hm - hs / 2, 1e-9, 'tides: neap high water = Moon\'s high + Sun\'s low');
+  check(/Sun and Moon|Moon and Sun/.test(await page.textContent('#tides-note')) && /times larger/.test(await page.textContent('#tides-note')),
+    'tides: the note says what the arrows add and how much the heights are exaggerated');
+  await page.fill('#tides-point', '200'); await page.click('#tides-submit'); await state('main form', 'error');
+  check(await page.getAttribute('#tides-point', 'aria-invalid') === 'true' && /180/.test(await page.textContent('#tides-point-err')),
+    `tides: a marked point beyond 180° is refused at its field ("${await page.textContent('#tides-point-err')}")`);
+}, 'new-tides');
+
+await lab('phase', async () => {
+  await settled();
+  close(await value('#ph-area0'), Math.PI * 0.35 * 0.6, 1e-9, 'phase: the loop\'s area at the start is π a b');
+  check(await value('#ph-drift-0') < 1e-9, `phase: the symplectic method keeps the area (${await value('#ph-drift-0')})`);
+  check(await value('#ph-drift-1') > 1e-6, `phase: rk4 at a coarse step lets it drift (${await value('#ph-drift-1')})`);
+  const pts = () => page.getAttribute('#ph-loop [data-role=loop]', 'points');
+  const l0 = await pts();
+  await page.click('#ph-loop ~ .player [data-role=play]'); await page.waitForTimeout(700); await page.click('#ph-loop ~ .player [data-role=play]');
+  const l1 = await pts(); await page.waitForTimeout(300);
+  check(l1 !== l0 && await pts() === l1, 'phase: play moves the loop, pause stops it');
+  check(/area 0\.65973\d* \(gauss4/.test(await page.textContent('#ph-area-now')), `phase: the area is read out as it plays ("${await page.textContent('#ph-area-now')}")`);
+  check(await value('#pc-crossings') > 500 && await value('#pc-drift') < 1e-6, 'phase: the Poincaré section has its crossings, energy kept');
+  const dots0 = await page.$$eval('#pc-plot circle', (c) => c.length);
+  await page.fill('#pc-energy', '0.08'); await page.evaluate(() => delete document.getElementById('poincare-form').dataset.state);
+  await page.click('#pc-submit'); await state('#poincare-form', 'done');
+  check(await page.$$eval('#pc-plot circle', (c) => c.length) !== dots0 || await value('#pc-crossings') !== dots0, 'phase: a new energy gives a new section');
+  await page.fill('#ph-a', '-1'); await page.click('#ph-submit'); await state('main form', 'error');
+  check(/semi_axes/.test(await page.textContent('#ph-error')) && await page.getAttribute('#ph-a', 'aria-invalid') === 'true', 'phase: a negative half-width is refused at its field');
+}, 'new-phase');
+
+await lab('particles', async () => {
+  await settled();
+  const M = 134.9768; // π⁰, MeV
+  close(await value('#dk-pstar'), M / 2, 1e-12, 'particles: π⁰ → γγ at rest: each photon carries M/2');
+  close(await value('#dk-gamma'), 1 + 200 / M, 1e-12, 'particles: γ = 1 + T/M');
+  close(await value('#dk-open'), 2 * Math.asin(1 / (1 + 200 / M)) * 180 / Math.PI, 1e-9, 'particles: smallest opening angle 2 arcsin(1/γ)');
+  // Compton at 90°: the shift is one Compton wavelength; at 180°, two
+  const lc = 2.42631023867e-12 * 1e12; // pm, CODATA 2018
+  close(await value('#cp-shift'), lc, 1e-9, 'particles: Compton shift at 90° = h/mc');
+  await page.evaluate(() => delete document.getElementById('compton-form').dataset.state);
+  await setRange('#cp-angle', 180); await state('#compton-form', 'done');
+  close(await value('#cp-shift'), 2 * lc, 1e-9, 'particles: Compton shift at 180° = 2h/mc');
+  // Doppler of 500 nm light coming at β = 0.1: bluer; going at β = 0.5: infrared
+  close(await value('#dp-factor'), Math.sqrt(1.1 / 0.9), 1e-12, 'particles: Doppler factor √((1+β)/(1−β))');
+  const rgb = (await page.getAttribute('#dp-swatch-seen', 'data-colour')).match(/\d+/g).map(Number);
+  close(await value('#dp-seen'), 500 / Math.sqrt(1.1 / 0.9), 1e-9, 'particles: seen wavelength 500 nm / factor');
+  check(rgb[2] > rgb[0] && rgb[2] > rgb[1], `particles: 452 nm looks blue (${rgb})`);
+  // seen at right angles (in the observer's frame): redder by 1/γ, the transverse Doppler effect
+  await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
+  await setRange('#dp-angle', 90); await state('#doppler-form', 'done');
+  close(await value('#dp-factor'), Math.sqrt(1 - 0.01), 1e-12, 'particles: at 90° the Doppler factor is 1/γ');
+  await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
+  await setRange('#dp-angle', 0); await state('#doppler-form', 'done');
+  await page.evaluate(() => delete document.getElementById('doppler-form').dataset.state);
+  await setRange('#dp-beta', -0.5); await state('#doppler-form', 'done');
+  check(await page.getAttribute('#dp-swatch-seen', 'data-colour') === 'infrared' && /infrared: invisible/.test(await page.textContent('#doppler-results')),
+    'particles: receding at β = 0.5, 500 nm light is seen in the infrared, and it says so');
+  await invalid('main form', '#dk-T', -5, '#dk-submit', 'cannot be negative');
+}, 'new-particles');
 
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
 await page.setViewportSize({width: 390, height: 844});

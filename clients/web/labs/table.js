@@ -1,0 +1,159 @@
+// Rotating table lab (chapter 1, §1.1): a puck on a frictionless turning table
+// seen from both frames side by side and animated together by one player —
+// the inertial straight line (the table turning under it) and the curve the
+// table's frame sees, integrated by the API with centrifugal and Coriolis
+// forces (POST /v1/scenes/rotating-table), with the exact rotated line dashed
+// and the effective force at the start beside the notes' formula.
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools} from '../lib.js';
+import {player, lerp} from '../anim.js';
+
+const st = {experiment: 'through_center', omega: 1, radius: 1, mass: 1, px: 0.5, py: 0, vx: 0, vy: 0.8, t_end: 4};
+const BUILTIN = [
+  {title: 'Through the centre: ω = 1 rad/s, r₁ = 1 m', operation: '/v1/scenes/rotating-table', section: '1.1 Rotating Coordinate System',
+   request: {experiment: 'through_center', omega: 1, radius: 1}},
+  {title: 'At rest in the room: a circle on the table (ω = 2 rad/s, r₁ = 0.5 m)', operation: '/v1/scenes/rotating-table',
+   section: '1.1 Rotating Coordinate System', request: {experiment: 'at_rest', omega: 2, radius: 0.5}},
+];
+const SAMPLES = 161;
+
+// A /v1/frames/effective-force puck example as the scene it describes: the
+// puck's velocity in the table's frame is ω r₁ e_x (at rest in the room) or
+// that plus −(2 r₁ ω / π) e_y (through the centre).
+function sceneOf(ex) {
+  if (ex.operation === '/v1/scenes/rotating-table') return ex.request;
+  const r = ex.request, w = r.frame.omega[2], p = r.particle.position, v = r.particle.velocity;
+  return {experiment: Math.abs(v[1]) < 1e-12 ? 'at_rest' : 'through_center', omega: w, radius: Math.hypot(p[0], p[1]), mass: r.particle.mass};
+}
+const fits = (ex) => ex.operation === '/v1/scenes/rotating-table' || (ex.request && ex.request.frame && Array.isArray(ex.request.frame.omega) &&
+  !ex.request.frame.omega[0] && !ex.request.frame.omega[1] && ex.request.particle && Array.isArray(ex.request.particle.position) &&
+  Math.abs(ex.request.particle.position[0]) < 1e-12 && !ex.request.frame.acceleration);
+
+export default {
+  id: 'table', title: 'Rotating table',
+  mount(main) {
+    const L = labLayout(main, {title: 'The rotating table, seen from both frames',
+      intro: 'A puck slides without friction on a table turning at ω about the vertical. From the room (left) it moves in a ' +
+             'straight line while the table turns under it; from the table (right) the same motion curves, pushed by the ' +
+             'centrifugal force and the Coriolis force. Both pictures play together.'});
+    const exp = field({label: 'Experiment', pointer: '/experiment', value: st.experiment, id: 'table-experiment',
+      options: [['through_center', 'launched through the centre'], ['at_rest', 'at rest in the room'], ['custom', 'any launch']]});
+    const omega = field({label: 'ω (table)', pointer: '/omega', value: st.omega, unit: 'rad/s', id: 'table-omega', step: 0.1});
+    const radius = field({label: 'r₁ (start)', pointer: '/radius', value: st.radius, unit: 'm', id: 'table-radius', step: 0.1});
+    const mass = field({label: 'mass', pointer: '/mass', value: st.mass, unit: 'kg', id: 'table-mass', step: 0.1});
+    const px = field({label: 'x₀', pointer: '/position/0', value: st.px, unit: 'm', id: 'table-px'});
+    const py = field({label: 'y₀', pointer: '/position/1', value: st.py, unit: 'm', id: 'table-py'});
+    const vx = field({label: 'vₓ (room)', pointer: '/velocity/0', value: st.vx, unit: 'm/s', id: 'table-vx'});
+    const vy = field({label: 'v_y (room)', pointer: '/velocity/1', value: st.vy, unit: 'm/s', id: 'table-vy'});
+    const tEnd = field({label: 'duration', pointer: '/t_end', value: st.t_end, unit: 's', id: 'table-tend'});
+    const custom = el('fieldset', {class: 'custom'}, el('legend', {}, 'Any launch (in the room\'s frame, at t = 0)'), px.wrap, py.wrap, vx.wrap, vy.wrap, tEnd.wrap);
+    const sync = () => { const c = exp.input.value === 'custom'; custom.hidden = !c; radius.wrap.hidden = c; };
+    exp.input.addEventListener('change', () => { sync(); run(); });
+    add(L.form, examplePicker(['/v1/scenes/rotating-table', '/v1/frames/effective-force'], BUILTIN, (ex) => {
+      const s = sceneOf(ex);
+      exp.input.value = s.experiment || 'through_center'; omega.input.value = s.omega; radius.input.value = s.radius ?? 1;
+      mass.input.value = s.mass ?? 1;
+      if (s.position) { px.input.value = s.position[0]; py.input.value = s.position[1]; }
+      if (s.velocity) { vx.input.value = s.velocity[0]; vy.input.value = s.velocity[1]; }
+      if (s.t_end) tEnd.input.value = s.t_end;
+      sync(); run();
+    }, {fits}), exp.wrap, omega.wrap, radius.wrap, mass.wrap, custom,
+    el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'table-submit'}, 'Launch')));
+    sync();
+
+    const room = svg('svg', {class: 'plot', id: 'table-room', role: 'img', 'aria-label': 'The puck seen from the room (inertial frame)'});
+    const onTable = svg('svg', {class: 'plot', id: 'table-table', role: 'img', 'aria-label': 'The puck seen from the turning table'});
+    const play = player({label: 'The rotating table'});
+    add(L.figure, el('div', {class: 'pair two'},
+      el('div', {}, el('h3', {}, 'From the room (inertial)'), room),
+      el('div', {}, el('h3', {}, 'From the table (rotating)'), onTable)), play.root,
+    el('p', {class: 'muted', id: 'table-legend'}, el('span', {class: 'c1'}, 'red: the puck and its path so far'), '; ',
+      el('span', {class: 'c3'}, 'blue: a line painted on the table'), '; dashed: the whole path (right: the API\'s exact ' +
+      'rotated line, under the integrated one).'));
+
+    const run = runner(L, '/v1/scenes/rotating-table', () => {
+      const e = exp.input.value;
+      Object.assign(st, {experiment: e, omega: val(omega.input), radius: val(radius.input), mass: val(mass.input)});
+      const b = {experiment: e, omega: val(omega.input), mass: val(mass.input), samples: SAMPLES};
+      if (e === 'custom') Object.assign(b, {position: [val(px.input), val(py.input), 0], velocity: [val(vx.input), val(vy.input), 0], t_end: val(tEnd.input)});
+      else b.radius = val(radius.input);
+      return b;
+    }, (a) => {
+      const p = a.parameters, f = a.effective_force_at_start, w = p.omega, r1 = p.radius, m = p.mass;
+      const teach = [];
+      if (p.experiment === 'through_center') {
+        const notes = [-m * w * w * r1 * (4 / Math.PI) * Math.sign(w), -m * w * w * r1];
+        teach.push(el('p', {}, 'F′ = −m ω² r₁ (ê_y + (4/π) ê_x) at the start (for ω > 0)'),
+          el('p', {id: 'table-compare'}, `By the formula: (${fmt(notes[0], 6)}, ${fmt(notes[1], 6)}) N; the API: (${fmt(f.total[0], 6)}, ${fmt(f.total[1], 6)}) N; ` +
+            `difference ${fmt(Math.hypot(notes[0] - f.total[0], notes[1] - f.total[1]), 2)} N.`),
+          el('p', {class: 'muted'}, 'Seen from the table the puck comes back to where it started after half a turn: it was aimed so the centre ' +
+            'passes under it just as the table turns by π.'));
+      } else if (p.experiment === 'at_rest') {
+        teach.push(el('p', {}, 'F′ = −m ω² r₁ ê_y: the Coriolis force (2 m ω² r₁, inwards) is twice the centrifugal force (outwards)'),
+          el('p', {id: 'table-compare'}, `By the formula: ${fmt(-m * w * w * r1, 6)} N along y; the API: centrifugal ${fmt(f.centrifugal[1], 6)} N, ` +
+            `Coriolis ${fmt(f.coriolis[1], 6)} N, total ${fmt(f.total[1], 6)} N.`));
+      } else teach.push(el('p', {}, 'F′ = −m ω × (ω × r′) − 2 m ω × v′ (centrifugal and Coriolis; the table turns steadily, so no Euler force)'));
+      const inv = a.diagnostics && a.diagnostics.invariant;
+      put(L.results, el('h3', {}, 'Effective force at the start (table\'s frame)'),
+        el('dl', {class: 'nums'},
+          el('dt', {}, 'centrifugal'), el('dd', {id: 'table-cf'}, `(${fmt(f.centrifugal[0], 5)}, ${fmt(f.centrifugal[1], 5)}) N`),
+          el('dt', {}, 'Coriolis'), el('dd', {id: 'table-cor', 'data-value': f.coriolis.join(',')}, `(${fmt(f.coriolis[0], 5)}, ${fmt(f.coriolis[1], 5)}) N`),
+          el('dt', {}, 'total'), el('dd', {id: 'table-total', 'data-value': f.total.join(',')}, `(${fmt(f.total[0], 5)}, ${fmt(f.total[1], 5)}) N`),
+          el('dt', {}, 'duration'), num('table-t', p.t_end, 's'),
+          el('dt', {}, 'integrated vs exact'), num('table-err', a.rotating_vs_exact.max_position_error, 'm'),
+          inv ? el('dt', {}, 'Jacobi integral drift') : null, inv ? num('table-jacobi', inv.max_relative_drift) : null),
+        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§1.1 Rotating Coordinate System)'), teach));
+      draw(room, onTable, a, play);
+      plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
+        a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});
+    });
+    L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
+    run();
+  },
+};
+
+// Both panels, to the same scale; the player moves the puck on both and turns
+// the table on the left (the line painted on it turns with ωt).
+function draw(room, onTable, a, play) {
+  const pts = [...a.inertial, ...a.rotating];
+  const R = Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
+  const w = a.parameters.omega;
+  const setup = (root) => {
+    const [W] = plotSize(root, 420, 420), H = W, s = (W / 2 - 8) / R;
+    put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+    const X = (x) => W / 2 + s * x, Y = (y) => H / 2 - s * y;
+    add(root, svg('circle', {cx: X(0), cy: Y(0), r: s * R * 0.98, fill: '#f1f3f5', stroke: '#868e96', 'stroke-width': 1.5}));
+    const line = svg('line', {stroke: '#1864ab', 'stroke-width': 3, 'data-role': 'painted'});
+    const path = (ps, a2) => svg('polyline', {points: ps.map(p => `${X(p[0]).toFixed(1)},${Y(p[1]).toFixed(1)}`).join(' '), fill: 'none', ...a2});
+    add(root, line, svg('circle', {cx: X(0), cy: Y(0), r: 3, fill: '#333'}));
+    // a scale bar of a round length
+    const bar = niceLen(R / 2);
+    add(root, svg('line', {x1: 10, y1: H - 12, x2: 10 + s * bar, y2: H - 12, stroke: '#333', 'stroke-width': 2}),
+      svg('text', {x: 10, y: H - 18, 'font-size': 16}, `${fmt(bar)} m`));
+    return {X, Y, line, path};
+  };
+  const A = setup(room), B = setup(onTable);
+  add(room, A.path(a.inertial, {stroke: '#c92a2a', 'stroke-dasharray': '5 5', 'stroke-width': 1.5}));
+  add(onTable, B.path(a.rotating_exact, {stroke: '#adb5bd', 'stroke-dasharray': '5 5', 'stroke-width': 4}),
+    B.path(a.rotating, {stroke: '#c92a2a', 'stroke-dasharray': '5 5', 'stroke-width': 1.5}));
+  const trailA = A.path([], {stroke: '#c92a2a', 'stroke-width': 3}), trailB = B.path([], {stroke: '#c92a2a', 'stroke-width': 3});
+  const puckA = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
+  const puckB = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
+  add(room, trailA, puckA); add(onTable, trailB, puckB);
+  // the painted line lies along the table's x′ axis: at angle ωt in the room, fixed on the table
+  const paint = (G, ang) => {
+    const c = R * 0.98 * Math.cos(ang), d = R * 0.98 * Math.sin(ang);
+    for (const [k, v] of [['x1', G.X(-c)], ['y1', G.Y(-d)], ['x2', G.X(c)], ['y2', G.Y(d)]]) G.line.setAttribute(k, v);
+  };
+  const trail = (G, ps, i, p) => ps.slice(0, i + 1).concat([p]).map(q => `${G.X(q[0]).toFixed(1)},${G.Y(q[1]).toFixed(1)}`).join(' ');
+  paint(B, 0);
+  play.set(a.t, (i, f, t) => {
+    const j = Math.min(i + 1, a.t.length - 1);
+    const p = lerp(a.inertial[i], a.inertial[j], f), q = lerp(a.rotating[i], a.rotating[j], f);
+    puckA.setAttribute('cx', A.X(p[0])); puckA.setAttribute('cy', A.Y(p[1]));
+    puckB.setAttribute('cx', B.X(q[0])); puckB.setAttribute('cy', B.Y(q[1]));
+    trailA.setAttribute('points', trail(A, a.inertial, i, p)); trailB.setAttribute('points', trail(B, a.rotating, i, q));
+    paint(A, w * t);
+    room.dataset.puck = `${p[0].toFixed(4)},${p[1].toFixed(4)}`; onTable.dataset.puck = `${q[0].toFixed(4)},${q[1].toFixed(4)}`;
+  });
+}
+const niceLen = (x) => { const p = 10 ** Math.floor(Math.log10(x)), m = x / p; return (m < 2 ? 1 : m < 5 ? 2 : 5) * p; };
