@@ -12,6 +12,9 @@
 #ifndef MECHD_VERSION
 #define MECHD_VERSION "0.0.0"
 #endif
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID "unknown" /* the git commit it was configured from (CMake) */
+#endif
 
 enum opt_id {
     OPT_BIND,
@@ -303,7 +306,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
             return SRV_CONFIG_EXIT;
         }
         if (strcmp(a, "--version") == 0) {
-            fprintf(out, "mechd %s\n", MECHD_VERSION);
+            fprintf(out, "mechd %s (commit %s)\n", MECHD_VERSION, MECHD_BUILD_ID);
             return SRV_CONFIG_EXIT;
         }
         int found = -1;

@@ -14,13 +14,17 @@
 #ifndef MECHD_VERSION
 #define MECHD_VERSION "0.0.0"
 #endif
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID "unknown"
+#endif
 
 /* argv as for `mechd eval` without the word "eval": mechd-eval [OPTIONS] [FILE].
- * --version prints the version. Exit statuses: see srv_eval_main. */
+ * --version prints the version and the git commit it was built from.
+ * Exit statuses: see srv_eval_main. */
 int main(int argc, char **argv)
 {
     if (argc >= 2 && strcmp(argv[1], "--version") == 0) {
-        printf("mechd-eval %s\n", MECHD_VERSION);
+        printf("mechd-eval %s (commit %s)\n", MECHD_VERSION, MECHD_BUILD_ID);
         return 0;
     }
     gsl_set_error_handler_off();

@@ -20,6 +20,7 @@ cmake_install.cmake is what `make install` runs).
   a FILE): a 400 /problems/malformed-json problem on stdout naming the input
   ("standard input" or the file) and where the parser stopped, never "the
   request query parameter", and exit status 1 (a refused request), not 2 (usage).
+- mechd --version and mechd-eval --version name the git commit of the build.
 - cmake --install with DESTDIR and a prefix: bin/mechd, bin/mechd-eval, the
   docs, the front end and the Python client land under DESTDIR/PREFIX and
   nothing outside it; the installed mechd-eval answers.
@@ -27,6 +28,7 @@ Prints "N passed, M failed"; exits 1 on failure.
 """
 import json
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -212,7 +214,21 @@ def test_install():
         shutil.rmtree(stage, ignore_errors=True)
 
 
+def test_version():
+    """--version names the git commit the build was configured from (or "unknown" outside a checkout)."""
+    root = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
+    for name, exe in (("mechd", MECHD), ("mechd-eval", EVAL)):
+        if not os.access(exe, os.X_OK):
+            continue
+        out = subprocess.run([exe, "--version"], capture_output=True, text=True, timeout=30).stdout
+        m = re.fullmatch(r"%s \S+ \(commit ([0-9a-f]{12}|unknown)\)\n" % re.escape(name), out)
+        known = m is not None and (m.group(1) == "unknown" or subprocess.run(
+            ["git", "-C", root, "cat-file", "-e", m.group(1) + "^{commit}"], capture_output=True).returncode == 0)
+        check("%s --version names its commit, a commit of this repository" % name, known, repr(out))
+
+
 def main():
+    test_version()
     test_eval_dynamic()
     test_eval_static()
     test_malformed()

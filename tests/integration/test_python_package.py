@@ -162,7 +162,9 @@ def test_token(mechd):
     tok = "s3cret-" + os.urandom(8).hex()
     with open(os.path.join(tmp, "token"), "w") as f:
         f.write(tok + "\n")
-    proc, port = start_mechd(MECHD, ["--token-file", os.path.join(tmp, "token")], stderr=subprocess.DEVNULL)
+    # A long deadline: under the sanitizers the slower curl examples take seconds.
+    proc, port = start_mechd(MECHD, ["--token-file", os.path.join(tmp, "token"), "--deadline-ms", "300000"],
+                             stderr=subprocess.DEVNULL)
     url = "http://127.0.0.1:%d" % port
     try:
         try:

@@ -187,7 +187,7 @@ def refused(port):
 def test_grace():
     s = Server("--workers", "1", "--queue", "4", "--deadline-ms", "300000", "--max-steps", "1000000000000",
                "--shutdown-grace-ms", "300000")
-    body = oscillator(30.0, 1e-6)  # 3·10^7 RK4 steps: seconds, far inside the grace
+    body = oscillator(30.0, 5e-6)  # 6·10^6 RK4 steps: ~0.6 s (~30 s under TSan), inside the grace
     running = Call(s.port, body)
     busy = wait_for(lambda: metric(s.port, "mechd_workers_busy") == 1, 60)
     queued = Call(s.port, body)
