@@ -60,7 +60,7 @@ static char *read_all(FILE *f, size_t *len)
 static int malformed_input(const char *file, const char *operation, const json_error_t *jerr,
                            FILE *out)
 {
-    char detail[400];
+    char detail[512]; /* room for the longest: 200 bytes of file name + jansson's 160 */
     int named = file && strcmp(file, "-");
     snprintf(detail, sizeof detail, "the input (%s%.200s) is not valid JSON: line %d, column %d: %s",
              named ? "file " : "standard input", named ? file : "", jerr->line, jerr->column,
