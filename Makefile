@@ -6,8 +6,10 @@ BUILD_TSAN ?= build-tsan
 JOBS       ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 MECHD_ARGS ?=
+PREFIX     ?= /usr/local
+DESTDIR    ?=
 
-.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean
+.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean install static-eval
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -61,6 +63,21 @@ load: all
 # The container set-up end to end (needs root): docker/test.sh, 4-11 min.
 docker-test:
 	sh docker/test.sh
+
+# Install mechd, mechd-eval (and mechd-eval-static), the docs, the front end,
+# the curl scripts and the Python client's files under $(DESTDIR)$(PREFIX):
+#   make install PREFIX=/opt/mechd DESTDIR=/tmp/stage
+# (an installed mechd serves the front end with --static-dir PREFIX/share/mechd/web).
+install: all
+	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
+
+# The self-contained offline evaluator for grader containers: one static
+# executable (no shared library at all), $(BUILD)/mechd-eval-static.
+static-eval: configure
+	cmake --build $(BUILD) -j $(JOBS) --target mechd-eval-static
+	@if ldd $(BUILD)/mechd-eval-static >/dev/null 2>&1; then \
+	  echo "static-eval: $(BUILD)/mechd-eval-static is not static" >&2; exit 1; fi
+	@echo "$(BUILD)/mechd-eval-static: static, needs no shared library (copy it into the grader image)"
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_TSAN)

@@ -20,6 +20,8 @@
 set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev zlib1g-dev curl python3"
+# python3-pip, python3-setuptools: the Python client's offline `pip install` (test_python_package.py)
+PKGS="$PKGS python3-pip python3-setuptools"
 for opt in "$@"; do
   case "$opt" in
     --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk" ;;

@@ -12,6 +12,9 @@
 #ifndef MECHD_VERSION
 #define MECHD_VERSION "0.0.0"
 #endif
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID "unknown" /* the git commit it was configured from (CMake) */
+#endif
 
 enum opt_id {
     OPT_BIND,
@@ -30,6 +33,7 @@ enum opt_id {
     OPT_WORKER_NICE,
     OPT_MAX_SAMPLES,
     OPT_MAX_CONNECTIONS,
+    OPT_SHUTDOWN_GRACE_MS,
     OPT_COUNT
 };
 
@@ -88,6 +92,11 @@ static const struct opt_spec {
                              "connections held open at once; a new one beyond it closes the "
                              "connection that has waited longest without sending a whole "
                              "request, so /healthz stays reachable under a connection flood"},
+    [OPT_SHUTDOWN_GRACE_MS] = {"--shutdown-grace-ms", "MECHD_SHUTDOWN_GRACE_MS", "10000", 0,
+                               600000,
+                               "on SIGTERM/SIGINT: stop accepting, then let running and queued "
+                               "requests finish for up to this many ms before cancelling them "
+                               "(keep it under the container's grace period, often 30 s)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -106,7 +115,8 @@ static void print_help(FILE *out, const char *prog)
     }
     fprintf(out, "  %-22s show this help and exit\n", "--help");
     fprintf(out, "  %-22s show the version and exit\n", "--version");
-    fprintf(out, "\nSIGINT/SIGTERM stop the server cleanly (exit status 0).\n");
+    fprintf(out, "\nSIGINT/SIGTERM stop the server cleanly: no new connections, running and queued\n"
+                 "requests get --shutdown-grace-ms to finish, then are cancelled (503); exit 0.\n");
     fprintf(out,
             "\nOffline mode (no network):\n"
             "  %s eval [--operation=PATH] [--cost] [FILE]   (see %s eval --help)\n"
@@ -273,6 +283,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
     case OPT_MAX_CONNECTIONS:
         cfg->max_connections = (int)v;
         break;
+    case OPT_SHUTDOWN_GRACE_MS:
+        cfg->shutdown_grace_ms = (long)v;
+        break;
     default:
         break;
     }
@@ -293,7 +306,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
             return SRV_CONFIG_EXIT;
         }
         if (strcmp(a, "--version") == 0) {
-            fprintf(out, "mechd %s\n", MECHD_VERSION);
+            fprintf(out, "mechd %s (commit %s)\n", MECHD_VERSION, MECHD_BUILD_ID);
             return SRV_CONFIG_EXIT;
         }
         int found = -1;

@@ -30,6 +30,8 @@ struct srv_config {
     long max_samples;        /* answer budget: samples per request (batch items summed), 1..1e9 */
     int max_connections;     /* connections held open at once before the longest-waiting
                                 idle one is closed to make room, 8..100000 */
+    long shutdown_grace_ms;  /* on SIGTERM/SIGINT, time running and queued requests get to
+                                finish before they are cancelled, 0..600000 ms */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

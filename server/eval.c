@@ -26,7 +26,8 @@ void srv_eval_usage(FILE *out)
             "  --max-steps=N     step budget per integration (default 10000000)\n"
             "  --deadline-ms=N   wall-clock budget in ms (default 10000)\n"
             "Exit status: 0 answer printed; 1 the request was refused (4xx problem+json\n"
-            "printed on stdout); 3 server-side failure (5xx problem+json); 2 usage error.\n");
+            "printed on stdout, also when the input is not JSON: 400 malformed-json naming\n"
+            "the input); 3 server-side failure (5xx problem+json); 2 usage error.\n");
 }
 
 static char *read_all(FILE *f, size_t *len)
@@ -50,6 +51,28 @@ static char *read_all(FILE *f, size_t *len)
     b[n] = '\0';
     *len = n;
     return b;
+}
+
+/* The input is not JSON: print a 400 malformed-json problem naming the input
+ * (FILE or stdin) and where jansson stopped, as the server names its body;
+ * instance is the operation when it is known. Returns exit status 1 (a
+ * refused request, like any other problem: not a usage error). */
+static int malformed_input(const char *file, const char *operation, const json_error_t *jerr,
+                           FILE *out)
+{
+    char detail[512]; /* room for the longest: 200 bytes of file name + jansson's 160 */
+    int named = file && strcmp(file, "-");
+    snprintf(detail, sizeof detail, "the input (%s%.200s) is not valid JSON: line %d, column %d: %s",
+             named ? "file " : "standard input", named ? file : "", jerr->line, jerr->column,
+             jerr->text);
+    struct api_response resp;
+    memset(&resp, 0, sizeof resp);
+    api_response_problem(&resp, API_PROBLEM_MALFORMED_JSON, detail);
+    if (operation) api_response_set_instance(&resp, operation);
+    if (resp.body) fwrite(resp.body, 1, resp.body_len, out);
+    fflush(out);
+    api_response_free(&resp);
+    return 1;
 }
 
 static int parse_long(const char *s, long min, long max, long *out)
@@ -133,20 +156,32 @@ int srv_eval_main(int argc, char **argv, FILE *in, FILE *out, FILE *err)
      * unchanged (bare form) or re-serialised from the envelope. */
     char *request_text = NULL;
     char *path = NULL;
+    json_error_t jerr;
     if (operation) {
+        /* Checked here so that the problem names the input, not the server's
+         * "request query parameter" the text is handed to below. */
+        json_t *probe =
+            json_loadb(text, len, JSON_DECODE_ANY | JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES,
+                       &jerr);
+        if (!probe) {
+            free(text);
+            return malformed_input(file, operation, &jerr, out);
+        }
+        json_decref(probe);
         request_text = text;
         path = strdup(operation);
     } else {
-        json_error_t jerr;
         json_t *env = json_loadb(text, len, JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES,
                                  &jerr);
+        if (!env) {
+            free(text);
+            return malformed_input(file, NULL, &jerr, out);
+        }
         const char *op = env ? json_string_value(json_object_get(env, "operation")) : NULL;
         json_t *rq = env ? json_object_get(env, "request") : NULL;
         if (!env || !op || !rq || json_object_size(env) != 2) {
-            fprintf(err,
-                    "mechd eval: without --operation the input must be {\"operation\": "
-                    "\"/v1/...\", \"request\": {...}}%s%s\n",
-                    env ? "" : ": ", env ? "" : jerr.text);
+            fprintf(err, "mechd eval: without --operation the input must be {\"operation\": "
+                         "\"/v1/...\", \"request\": {...}}\n");
             json_decref(env);
             free(text);
             return 2;

@@ -133,6 +133,7 @@
 #include <string.h>
 #include <strings.h>
 #include <sys/resource.h>
+#include <sys/random.h>
 #include <sys/socket.h>
 #include <time.h>
 #include <unistd.h>
@@ -159,6 +160,7 @@
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
 #define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
 #define SRV_CHUNKED_GRACE (1u << 20) /* a chunked body is read this far past --max-body */
+#define SRV_REQUEST_ID_MAX 64        /* longest X-Request-Id kept from a client */
 #define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
 #define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
 #define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
@@ -217,7 +219,8 @@ struct srv_http {
     int watch_started;
     pthread_t watcher;
     int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
-    atomic_ulong next_id;
+    atomic_ulong next_id; /* only for request ids when getrandom(2) fails */
+    atomic_int stopping;  /* SIGTERM: not accepting; answers carry Connection: close */
     atomic_int inflight; /* requests between first callback and completion */
     /* Open connections, for the receive time limit, room for new ones and
      * reaping dead peers. Guarded by conn_mu. */
@@ -244,7 +247,10 @@ enum req_state {
 struct srv_req {
     struct srv_job job; /* first member: the pool hands it back to run/cancel */
     struct MHD_Connection *conn;
-    unsigned long id;
+    char id[SRV_REQUEST_ID_MAX + 1]; /* X-Request-Id: the client's (validated) or generated */
+    char client[48];                 /* peer address, numeric */
+    char *forwarded_for;             /* owned copy of X-Forwarded-For, or NULL */
+    unsigned long long bytes;        /* response body bytes sent */
     double t0;
     char *method, *path, *content_type;  /* owned copies */
     char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
@@ -310,6 +316,79 @@ static char *dup_str(const char *s)
     return d;
 }
 
+/* ---- request ids and client addresses ------------------------------------------- */
+
+/* May a client-given X-Request-Id be kept? 1..SRV_REQUEST_ID_MAX characters of
+ * [A-Za-z0-9._:+/=-]: enough for UUIDs, hex, base64 and the ids proxies make,
+ * nothing that needs escaping in a header, a log line or a JSON string. */
+static int request_id_ok(const char *s)
+{
+    size_t n = 0;
+    if (!s) return 0;
+    for (; s[n]; n++) {
+        char c = s[n];
+        if (n >= SRV_REQUEST_ID_MAX ||
+            !((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+              c == '.' || c == '_' || c == ':' || c == '+' || c == '/' || c == '=' || c == '-'))
+            return 0;
+    }
+    return n > 0;
+}
+
+/* A request id into out (SRV_REQUEST_ID_MAX + 1 bytes): `given` (the incoming
+ * X-Request-Id) when request_id_ok, else 32 lower-case hex digits of 128 random
+ * bits from getrandom(2), so ids from any number of replicas do not collide
+ * (probability ~2^-65 for 2^32 requests) without coordination. Should the
+ * kernel refuse getrandom, the bits come from the clock, the process id and a
+ * counter through splitmix64 (unique within the process, very likely across). */
+static void request_id(struct srv_http *h, const char *given, char *out)
+{
+    if (request_id_ok(given)) {
+        strcpy(out, given);
+        return;
+    }
+    unsigned char b[16];
+    ssize_t got = getrandom(b, sizeof b, GRND_NONBLOCK);
+    if (got != (ssize_t)sizeof b) {
+        struct timespec ts;
+        clock_gettime(CLOCK_REALTIME, &ts);
+        unsigned long long x =
+            (unsigned long long)ts.tv_sec * 1000000000ULL + (unsigned long long)ts.tv_nsec;
+        unsigned long long y =
+            ((unsigned long long)getpid() << 32) ^ atomic_fetch_add(&h->next_id, 1);
+        for (int half = 0; half < 2; half++) {
+            unsigned long long z = (half ? y : x) + 0x9e3779b97f4a7c15ULL;
+            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+            z ^= z >> 31;
+            for (int i = 0; i < 8; i++)
+                b[half * 8 + i] = (unsigned char)(z >> (8 * i));
+        }
+    }
+    static const char hex[] = "0123456789abcdef";
+    for (int i = 0; i < 16; i++) {
+        out[2 * i] = hex[b[i] >> 4];
+        out[2 * i + 1] = hex[b[i] & 15];
+    }
+    out[32] = '\0';
+}
+
+/* The connection's peer address, numeric ("127.0.0.1", "::1"), or "-". */
+static void client_address(struct MHD_Connection *conn, char *out, size_t n)
+{
+    const union MHD_ConnectionInfo *ci =
+        MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CLIENT_ADDRESS);
+    const struct sockaddr *sa = ci ? ci->client_addr : NULL;
+    const char *ok = NULL;
+    if (sa && sa->sa_family == AF_INET)
+        ok = inet_ntop(AF_INET, &((const struct sockaddr_in *)(const void *)sa)->sin_addr, out,
+                       (socklen_t)n);
+    else if (sa && sa->sa_family == AF_INET6)
+        ok = inet_ntop(AF_INET6, &((const struct sockaddr_in6 *)(const void *)sa)->sin6_addr, out,
+                       (socklen_t)n);
+    if (!ok) snprintf(out, n, "-");
+}
+
 static void req_free(struct srv_req *r)
 {
     if (!r) return;
@@ -321,6 +400,7 @@ static void req_free(struct srv_req *r)
     free(r->if_none_match);
     free(r->accept_encoding);
     free(r->origin);
+    free(r->forwarded_for);
     free(r->body);
     free(r);
 }
@@ -791,6 +871,9 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
         api_response_free(resp);
         return MHD_NO; /* out of memory: MHD closes the connection */
     }
+    r->bytes = status == MHD_HTTP_NOT_MODIFIED || (r->method && strcmp(r->method, "HEAD") == 0)
+                   ? 0
+                   : (unsigned long long)resp->body_len;
     char buf[32];
     if (resp->content_type)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_CONTENT_TYPE, resp->content_type);
@@ -798,12 +881,12 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
         snprintf(buf, sizeof buf, "%d", resp->retry_after);
         MHD_add_response_header(mr, MHD_HTTP_HEADER_RETRY_AFTER, buf);
     }
-    snprintf(buf, sizeof buf, "%lu", r->id);
-    MHD_add_response_header(mr, "X-Request-Id", buf);
+    MHD_add_response_header(mr, "X-Request-Id", r->id);
     add_common_headers(r, mr, resp->vary);
     if (r->www_authenticate)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_WWW_AUTHENTICATE, r->www_authenticate);
-    if (r->close_conn) MHD_add_response_header(mr, MHD_HTTP_HEADER_CONNECTION, "close");
+    if (r->close_conn || atomic_load(&r->http->stopping))
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CONNECTION, "close");
     if (resp->etag[0] && !resp->depends_on_load)
         MHD_add_response_header(mr, MHD_HTTP_HEADER_ETAG, resp->etag);
     if (resp->depends_on_load)
@@ -929,9 +1012,7 @@ static enum MHD_Result answer_preflight(struct srv_req *r)
         MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
     r->state = REQ_ANSWERED;
     if (!mr) return MHD_NO;
-    char buf[32];
-    snprintf(buf, sizeof buf, "%lu", r->id);
-    MHD_add_response_header(mr, "X-Request-Id", buf);
+    MHD_add_response_header(mr, "X-Request-Id", r->id);
     add_common_headers(r, mr, NULL);
     MHD_add_response_header(mr, "Access-Control-Allow-Methods", SRV_CORS_METHODS);
     MHD_add_response_header(mr, "Access-Control-Allow-Headers", SRV_CORS_HEADERS);
@@ -966,9 +1047,10 @@ static enum MHD_Result answer_static(struct srv_req *r, const struct srv_static_
                                                        MHD_RESPMEM_PERSISTENT);
     r->state = REQ_ANSWERED;
     if (!mr) return MHD_NO;
-    char buf[32];
-    snprintf(buf, sizeof buf, "%lu", r->id);
-    MHD_add_response_header(mr, "X-Request-Id", buf);
+    r->bytes = not_modified || (r->method && strcmp(r->method, "HEAD") == 0)
+                   ? 0
+                   : (unsigned long long)f->len;
+    MHD_add_response_header(mr, "X-Request-Id", r->id);
     if (!not_modified) MHD_add_response_header(mr, MHD_HTTP_HEADER_CONTENT_TYPE, f->content_type);
     /* f->headers carry ETag, Cache-Control, the CSP and nosniff. */
     for (int i = 0; i < f->n_headers && i < SRV_STATIC_HEADERS; i++)
@@ -1208,7 +1290,7 @@ static enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r)
     } while (0)
     HEAD_ADD("HTTP/1.1 413 %s\r\nDate: %s\r\nConnection: close\r\n",
              MHD_get_reason_phrase_for(MHD_HTTP_CONTENT_TOO_LARGE), date);
-    HEAD_ADD("Content-Type: %s\r\nContent-Length: %zu\r\nX-Request-Id: %lu\r\n",
+    HEAD_ADD("Content-Type: %s\r\nContent-Length: %zu\r\nX-Request-Id: %s\r\n",
              resp.content_type ? resp.content_type : "application/problem+json", resp.body_len,
              r->id);
     HEAD_ADD("X-Content-Type-Options: nosniff\r\nReferrer-Policy: no-referrer\r\n"
@@ -1222,6 +1304,7 @@ static enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r)
     HEAD_ADD("\r\n");
 #undef HEAD_ADD
     if (k < sizeof head) {
+        r->bytes = resp.body_len;
         send_some(r->fd, head, k);
         send_some(r->fd, resp.body, resp.body_len);
         r->status = 413;
@@ -1296,7 +1379,10 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
         const union MHD_ConnectionInfo *ci =
             MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CONNECTION_FD);
         if (ci) r->fd = (int)ci->connect_fd;
-        r->id = atomic_fetch_add(&h->next_id, 1) + 1;
+        request_id(h, MHD_lookup_connection_value(conn, MHD_HEADER_KIND, "X-Request-Id"), r->id);
+        client_address(conn, r->client, sizeof r->client);
+        r->forwarded_for =
+            dup_str(MHD_lookup_connection_value(conn, MHD_HEADER_KIND, "X-Forwarded-For"));
         r->t0 = mech_clock_seconds();
         r->job.run = req_run;
         r->job.cancel = req_cancel;
@@ -1424,7 +1510,16 @@ static void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
     *con_cls = NULL;
     double now = mech_clock_seconds();
     double us = (now - r->t0) * 1e6;
-    srv_log_request(r->id, r->method, r->path, route_label(r), r->status, (long)(us + 0.5));
+    struct srv_log_entry le = {.id = r->id,
+                               .client = r->client,
+                               .forwarded_for = r->forwarded_for,
+                               .method = r->method,
+                               .path = r->path,
+                               .route = route_label(r),
+                               .status = r->status,
+                               .usec = (long)(us + 0.5),
+                               .bytes = r->bytes};
+    srv_log_request(&le);
     /* The connection is ready for its next request: the receive limit restarts.
      * Only this I/O thread moves a connection out of CONN_BUSY. */
     if (r->sc && atomic_load(&r->sc->rx) == CONN_BUSY) {
@@ -1496,6 +1591,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         atomic_init(&h->quick[i].too_slow, 0);
     }
     atomic_init(&h->next_id, 0);
+    atomic_init(&h->stopping, 0);
     atomic_init(&h->inflight, 0);
 
     struct sockaddr_in sin;
@@ -1558,13 +1654,26 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     return h;
 }
 
-void srv_http_quiesce(struct srv_http *h)
+void srv_http_stop_accepting(struct srv_http *h)
 {
     if (!h) return;
+    if (atomic_exchange(&h->stopping, 1)) return;
     if (h->listen_fd < 0) {
         MHD_socket fd = MHD_quiesce_daemon(h->daemon);
         h->listen_fd = fd == MHD_INVALID_SOCKET ? -1 : (int)fd;
     }
+    /* In epoll mode MHD_quiesce_daemon has taken the socket out of every I/O
+     * thread's epoll set before returning; shutting it down now makes the
+     * kernel refuse new connections (and reset those waiting in the backlog)
+     * during the grace period, instead of holding them unanswered. It is
+     * closed in srv_http_stop, as MHD asks. */
+    if (h->listen_fd >= 0) shutdown(h->listen_fd, SHUT_RDWR);
+}
+
+void srv_http_quiesce(struct srv_http *h)
+{
+    if (!h) return;
+    srv_http_stop_accepting(h);
     pthread_mutex_lock(&h->watch_mu);
     __atomic_store_n(&h->cancel, 1, __ATOMIC_SEQ_CST);
     for (struct srv_req *r = h->watched; r; r = r->watch_next)
@@ -1572,14 +1681,15 @@ void srv_http_quiesce(struct srv_http *h)
     pthread_mutex_unlock(&h->watch_mu);
 }
 
-void srv_http_drain(struct srv_http *h, double seconds)
+int srv_http_drain(struct srv_http *h, double seconds)
 {
-    if (!h) return;
+    if (!h) return 0;
     double end = mech_clock_seconds() + seconds;
     while (atomic_load(&h->inflight) > 0 && mech_clock_seconds() < end) {
         struct timespec ts = {0, 10 * 1000 * 1000};
         nanosleep(&ts, NULL);
     }
+    return atomic_load(&h->inflight);
 }
 
 void srv_http_stop(struct srv_http *h)

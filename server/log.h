@@ -3,15 +3,32 @@
 #ifndef SERVER_LOG_H
 #define SERVER_LOG_H
 
+/* One finished request, as srv_log_request logs it. Strings are borrowed and
+ * may be NULL (logged as "-"). */
+struct srv_log_entry {
+    const char *id;            /* request id: the client's X-Request-Id or a generated one */
+    const char *client;        /* peer address (numeric IPv4/IPv6) */
+    const char *forwarded_for; /* X-Forwarded-For as the client (a proxy) sent it */
+    const char *method, *path;
+    const char *route; /* metrics label (see srv_log_request) */
+    int status;        /* HTTP status sent; 0: none was sent */
+    long usec;         /* from the first header to completion */
+    unsigned long long bytes; /* response body bytes */
+};
+
 /* Record a finished request: writes
- *   "mechd: req=ID METHOD PATH STATUS USECus\n"
- * to stderr in one write(2) (control characters in method/path become '?'),
- * and adds it to the metrics under `route` (a label from a bounded set: the
- * API path, "static", "other"; copied; NULL or a label with characters other
- * than [A-Za-z0-9/._-] counts as "other"). status 0 means no response was
- * sent (the client went away or the server stopped). method/path may be NULL. */
-void srv_log_request(unsigned long id, const char *method, const char *path, const char *route,
-                     int status, long usec);
+ *   "mechd: 2026-11-25T08:45:02.123Z req=ID METHOD PATH STATUS USECus bytes=N client=ADDR"
+ *   (+ " xff=X-FORWARDED-FOR" when the request had one) and a newline
+ * to stderr in one write(2) (the timestamp is RFC 3339 UTC with milliseconds;
+ * control characters and spaces in method/path/id/xff become '?', each field is
+ * bounded), and adds it to the metrics under e->route (a label from a bounded
+ * set: the API path, "static", "other"; copied; NULL or a label with characters
+ * other than [A-Za-z0-9/._-] counts as "other"). */
+void srv_log_request(const struct srv_log_entry *e);
+
+/* Write the current time as RFC 3339 UTC with milliseconds
+ * ("2026-11-25T08:45:02.123Z", 24 characters + NUL) into out (>= 32 bytes). */
+void srv_log_timestamp(char *out);
 
 /* Count connections closed because they did not send a whole request within
  * --request-timeout-ms (mechd_request_timeouts_total). */
@@ -23,7 +40,7 @@ void srv_metrics_count_timeouts(unsigned long n);
 void srv_metrics_count_evictions(unsigned long n);
 void srv_metrics_count_reaped(unsigned long n);
 
-/* Write a free-form line "mechd: TEXT\n" to stderr (start-up, shutdown). */
+/* Write a free-form line "mechd: TIMESTAMP TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
 /* Prometheus text exposition (version 0.0.4) of the counters plus the given

@@ -2,11 +2,13 @@
  * wait that drives a clean shutdown.
  *
  * SIGINT/SIGTERM are blocked in every thread and taken with sigwait() here,
- * so no work happens in a signal handler. Shutdown: stop accepting and raise
- * the cancel flag (running computations stop at their next budget check),
- * answer queued jobs 503 cancelled and join the workers (every suspended
- * connection is resumed by then), give the answers a moment to be sent, stop
- * the daemon, exit 0.
+ * so no work happens in a signal handler. Shutdown: stop accepting, let
+ * running and queued requests finish for up to --shutdown-grace-ms (a
+ * container's orchestrator sends SIGTERM, then SIGKILL after its own grace
+ * period, often 30 s), then raise the cancel flag (running computations stop
+ * at their next budget check), answer the still-queued jobs 503 cancelled and
+ * join the workers (every suspended connection is resumed by then), give the
+ * answers a moment to be sent, stop the daemon, exit 0.
  */
 #include <gsl/gsl_errno.h>
 #include <malloc.h>
@@ -103,7 +105,12 @@ int main(int argc, char **argv)
     }
     srv_log_note("%s received, shutting down", sig == SIGINT ? "SIGINT" : "SIGTERM");
 
-    srv_http_quiesce(http); /* no new connections; cancel flag raised */
+    srv_http_stop_accepting(http); /* no new connections; work in flight goes on */
+    int left = srv_http_drain(http, (double)cfg.shutdown_grace_ms / 1000.0);
+    if (left > 0)
+        srv_log_note("shutdown grace period (%ld ms) over: cancelling %d request%s", cfg.shutdown_grace_ms,
+                     left, left == 1 ? "" : "s");
+    srv_http_quiesce(http); /* cancel flag raised */
     srv_pool_stop(pool);    /* queued jobs -> 503 cancelled; running ones stop; joined */
     srv_http_drain(http, SRV_DRAIN_SECONDS);
     srv_http_stop(http);

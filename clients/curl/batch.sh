@@ -3,7 +3,9 @@
 # cube about its corner (1/6, 11/12, 11/12), 0.5c + 0.5c = 0.8c, and a boost at
 # beta = 1, which fails alone (its result is a domain-error problem).
 # Usage: MECHD_URL=http://host:port batch.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/batch" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/batch" --json '{
   "operations": [
     {
       "operation": "/v1/rigid/inertia",

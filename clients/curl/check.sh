@@ -3,7 +3,9 @@
 # about its corner (exactly 1/6)? With 3 significant figures: correct = true; the
 # answer also gives the expected value, the errors and a recommended tolerance.
 # Usage: MECHD_URL=http://host:port check.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/check" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/check" --json '{
   "operation": "/v1/rigid/inertia",
   "request": {
     "bodies": [

@@ -3,7 +3,9 @@
 # integrators against the exact solution. rk4 and Störmer–Verlet at dt = π/100 take
 # 200 steps each; their errors differ by orders of magnitude (rows[].error).
 # Usage: MECHD_URL=http://host:port compare.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/compare" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/compare" --json '{
   "operation": "/v1/trajectory",
   "request": {
     "particle": {

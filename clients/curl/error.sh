@@ -4,7 +4,9 @@
 # /problems/domain-error, with errors[].pointer = "/velocity/beta" naming the field.
 # (-i would show the status line and Content-Type; curl exits 0 as it got an answer.)
 # Usage: MECHD_URL=http://host:port error.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/boost" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/boost" --json '{
   "vectors": [[1, 0, 0, 0]],
   "velocity": {
     "beta": [1, 0, 0]

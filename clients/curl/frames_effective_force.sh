@@ -3,7 +3,9 @@
 # at 2 rad/s at r = 0.5 m. Coriolis (−1.2 N) is twice the centrifugal force
 # (+0.6 N) and opposite: the net −0.6 N keeps the puck on its apparent circle.
 # Usage: MECHD_URL=http://host:port frames_effective_force.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/frames/effective-force" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/frames/effective-force" --json '{
   "frame": {
     "omega": [0, 0, 2.0]
   },

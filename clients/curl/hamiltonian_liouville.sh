@@ -3,7 +3,9 @@
 # Hénon–Heiles system keeps its symplectic area 0.00025π = 7.854e-4 (runs[0].area)
 # and the tangent map keeps det 1, however the flow deforms it.
 # Usage: MECHD_URL=http://host:port hamiltonian_liouville.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/hamiltonian/liouville" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/hamiltonian/liouville" --json '{
   "system": {
     "name": "henon_heiles"
   },

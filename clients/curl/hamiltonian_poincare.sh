@@ -3,7 +3,9 @@
 # (y, p_y) plane, starting at (0.1, 0.05); p_x = 0.39349 from H = E, and the
 # energy drift stays at round-off.
 # Usage: MECHD_URL=http://host:port hamiltonian_poincare.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/hamiltonian/poincare" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/hamiltonian/poincare" --json '{
   "system": {
     "name": "henon_heiles"
   },

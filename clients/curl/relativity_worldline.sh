@@ -3,7 +3,9 @@
 # Earth twin ages 20 years (total.stay_at_home_time), the astronaut 12
 # (total.proper_time); each leg shows the Doppler ticks each twin sees.
 # Usage: MECHD_URL=http://host:port relativity_worldline.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/worldline" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/worldline" --json '{
   "units": "years",
   "legs": [
     {

@@ -4,7 +4,9 @@
 # θ stays 60°, precession.steady_slow = 0.99048 rad/s (gyroscopic approximation
 # M g h/(I3 ω3) = 0.98067 is 1 % low).
 # Usage: MECHD_URL=http://host:port rigid_top.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/rigid/top" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rigid/top" --json '{
   "I1": 0.02,
   "I3": 0.01,
   "mass": 1.0,

@@ -3,7 +3,9 @@
 # The answer's passive matrix is the cyclic permutation [[0,1,0],[0,0,1],[1,0,0]],
 # the quaternion (1,1,1,1)/2 and the z-x-z Euler angles (π/2, π/2, 0).
 # Usage: MECHD_URL=http://host:port rotation_convert.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/convert" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/convert" --json '{
   "axis_angle": {
     "axis": [1, 1, 1],
     "angle": 2.0943951023931953

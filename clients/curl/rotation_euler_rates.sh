@@ -4,7 +4,9 @@
 # phi' sin th cos psi, phi' cos th + psi') and /omega_space = (psi' sin th sin phi,
 # -psi' sin th cos phi, phi' + psi' cos th), and dR/dt = -[omega_body]x R.
 # Usage: MECHD_URL=http://host:port rotation_euler_rates.sh
-exec curl -s "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/euler-rates" --json '{
+# MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
+printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
+  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/euler-rates" --json '{
   "euler_zxz": [0.3, 0.6, 0.1],
   "rates": [1.5, 0, 20]
 }'

@@ -1,40 +1,58 @@
 """mechd.py — a Python client for mechd, the mechanics computation server.
 
 One module, standard library only (urllib, json, threading), so it runs in
-locked-down grader images: copy this file next to your script.
+locked-down grader images: `pip install ./clients/python` (offline: pip needs
+nothing but setuptools), or copy this file next to your script.
 
     import mechd
-    m = mechd.Client("http://127.0.0.1:8080")
-    cube = m.rigid_inertia({"bodies": [{"shape": "box", "mass": 1, "size": [1, 1, 1],
-                                        "position": [0.5, 0.5, 0.5]}], "origin": [0, 0, 0]})
+    m = mechd.Client("http://127.0.0.1:8080", token=None)   # token: else $MECHD_TOKEN
+    cube = m.rigid_inertia(bodies=[{"shape": "box", "mass": 1, "size": [1, 1, 1],
+                                    "position": [0.5, 0.5, 0.5]}], origin=[0, 0, 0])
     print(cube["principal"]["moments"])          # [1/6, 11/12, 11/12]
     try:
         m.relativity_boost(vectors=[[1, 0, 0, 0]], velocity={"beta": [1, 0, 0]})
-    except mechd.DomainError as e:               # a ValidationError: 422
-        print(e.status, e.type, e.errors)        # 422 /problems/domain-error [{pointer, detail}]
+    except mechd.DomainError as e:               # a ValidationError, a ProblemError: 422
+        print(e.status, e.type, e.pointers)      # 422 /problems/domain-error ['/velocity/beta']
 
-Every operation of GET /v1 is a method named after its path (/v1/rigid/inertia
+Every POST operation of GET /v1 is a method named after its path (/v1/rigid/inertia
 -> rigid_inertia, /v1/relativity/kinematics/decay -> relativity_kinematics_decay,
-/v1/trajectory -> trajectory); each takes the request body as a dict and/or as
-keyword arguments (merged, keywords win). call(path, body) reaches any path.
+/v1/trajectory -> trajectory), with one keyword-only, type-hinted parameter per
+field of the request schema and the catalog's summary and field descriptions as
+its docstring. These methods are GENERATED from the catalog by
+clients/python/gen_operations.py into the marked region below (checked in; the
+test suite checks it against a running server's GET /v1). Each also takes the
+request body as a dict (merged, keywords that are not None win); call(path, body)
+reaches any path.
 
 Errors are problem+json (RFC 9457) turned into exceptions that carry it:
-MechdError(.status, .type, .title, .detail, .errors, .problem, .retry_after)
-  BadRequest (400 malformed JSON, or GET without ?request=), NotFound (404), MethodNotAllowed (405),
-  PayloadTooLarge (413), UnsupportedMediaType (415),
-  ValidationError (422 validation-error) > DomainError (422 domain-error),
-    > AnswerTooLarge (422 answer-too-large: more samples than --max-samples; .limit, .requested),
-  BudgetExceeded (422, .progress), NumericalFailure (422),
-  InternalError (500), ServerBusy (503 queue full, .retry_after) > ShuttingDown (503 cancelled),
+MechdError(.status, .type, .title, .detail, .errors, .pointers, .problem,
+.retry_after, .request_id)
+  ProblemError: the server answered with an error status:
+    BadRequest (400 malformed JSON, or GET without ?request=), Unauthorized (401 token missing
+    or wrong), NotFound (404), MethodNotAllowed (405), PayloadTooLarge (413),
+    UnsupportedMediaType (415),
+    ValidationError (422 validation-error) > DomainError (422 domain-error),
+      > AnswerTooLarge (422 answer-too-large: more samples than --max-samples; .limit, .requested),
+    BudgetExceeded (422, .progress), NumericalFailure (422),
+    InternalError (500), ServerBusy (503 queue full, .retry_after) > ShuttingDown (503 cancelled),
   ConnectionFailed (no HTTP answer; .status is None).
-A 503 is retried after its Retry-After (at most `retries` times, each wait
-capped by `max_retry_wait` seconds) before ServerBusy is raised.
+
+Retries. mechd's POST operations are pure computations (no state changes on the
+server), so sending one again is safe. A 503 is retried after its Retry-After
+(each wait capped by `max_retry_wait`); a connection refused, reset or closed
+before an answer is retried with exponential back-off (`backoff`, doubling, capped
+by `max_retry_wait`). Both count towards `retries` attempts and stop once
+`retry_total` seconds have passed since the first attempt. A timeout (no answer
+within `timeout`) is not retried: the server is computing, and asking again
+would only double its work.
 
 batch(items) runs many requests: through POST /v1/batch when the server has it
 (chunks of 100), else with `concurrency` threads; it returns, in order, each
 answer or the MechdError it raised (never raises for one bad item).
 """
+import http.client
 import json
+import os
 import socket
 import threading
 import time
@@ -42,8 +60,9 @@ import urllib.error
 import urllib.parse
 import urllib.request
 from concurrent.futures import ThreadPoolExecutor
+from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 
-__all__ = ["Client", "MechdError", "BadRequest", "NotFound", "MethodNotAllowed",
+__all__ = ["Client", "MechdError", "ProblemError", "BadRequest", "Unauthorized", "NotFound", "MethodNotAllowed",
            "PayloadTooLarge", "UnsupportedMediaType", "ValidationError", "DomainError",
            "AnswerTooLarge", "BudgetExceeded", "NumericalFailure", "InternalError", "ServerBusy", "ShuttingDown",
            "ConnectionFailed", "OPERATIONS", "resolve_pointer", "check_example"]
@@ -52,9 +71,16 @@ DEFAULT_URL = "http://127.0.0.1:8080"
 
 
 class MechdError(Exception):
-    """A failed request, with the server's problem details (RFC 9457)."""
+    """A failed request, with the server's problem details (RFC 9457) when it answered.
 
-    def __init__(self, status=None, problem=None, retry_after=None, message=None):
+    .status: HTTP status (None: no answer); .type, .title, .detail: the problem's members;
+    .errors: [{pointer, detail}, ...]; .pointers: the JSON pointers of .errors (the request
+    fields at fault); .problem: the whole problem+json dict; .retry_after: seconds from a
+    Retry-After header (or None); .request_id: the X-Request-Id of the answer (or None)."""
+
+    def __init__(self, status: Optional[int] = None, problem: Optional[Dict[str, Any]] = None,
+                 retry_after: Optional[float] = None, message: Optional[str] = None,
+                 request_id: Optional[str] = None):
         self.problem = problem if isinstance(problem, dict) else {}
         self.status = status
         self.type = self.problem.get("type")
@@ -62,6 +88,7 @@ class MechdError(Exception):
         self.detail = self.problem.get("detail") or message
         self.errors = self.problem.get("errors") or []
         self.retry_after = retry_after
+        self.request_id = request_id or self.problem.get("request_id")
         text = "%s %s: %s" % (status if status is not None else "-", self.title or type(self).__name__,
                               self.detail or "")
         if self.errors:
@@ -69,29 +96,43 @@ class MechdError(Exception):
                                      for e in self.errors if isinstance(e, dict)) + "]"
         super().__init__(text)
 
+    @property
+    def pointers(self) -> List[str]:
+        """The JSON pointers (RFC 6901) of the fields the problem names, in order."""
+        return [e["pointer"] for e in self.errors if isinstance(e, dict) and isinstance(e.get("pointer"), str)]
 
-class BadRequest(MechdError):
+
+class ProblemError(MechdError):
+    """The server answered with an error status (4xx, 5xx), usually with a problem+json."""
+
+
+class BadRequest(ProblemError):
     """400: the body is not valid JSON (detail has line and column), or an operation was fetched
     with GET without ?request= (type /problems/request-missing)."""
 
 
-class NotFound(MechdError):
+class Unauthorized(ProblemError):
+    """401: the server wants a bearer token (mechd --token-file) and none or a wrong one came;
+    pass token= to Client or set MECHD_TOKEN."""
+
+
+class NotFound(ProblemError):
     """404: no such path."""
 
 
-class MethodNotAllowed(MechdError):
+class MethodNotAllowed(ProblemError):
     """405: the path exists with another method."""
 
 
-class PayloadTooLarge(MechdError):
+class PayloadTooLarge(ProblemError):
     """413: the body is over the server's limit."""
 
 
-class UnsupportedMediaType(MechdError):
+class UnsupportedMediaType(ProblemError):
     """415: the body was not sent as application/json."""
 
 
-class ValidationError(MechdError):
+class ValidationError(ProblemError):
     """422: the request breaks the operation's schema; .errors names the fields by JSON pointer."""
 
 
@@ -112,7 +153,7 @@ class AnswerTooLarge(ValidationError):
         return self.problem.get("requested")
 
 
-class BudgetExceeded(MechdError):
+class BudgetExceeded(ProblemError):
     """422: a step, sample or deadline budget ran out; .progress says how far it got."""
 
     @property
@@ -120,15 +161,15 @@ class BudgetExceeded(MechdError):
         return self.problem.get("progress")
 
 
-class NumericalFailure(MechdError):
+class NumericalFailure(ProblemError):
     """422: the numerics failed (non-finite result, step-size underflow)."""
 
 
-class InternalError(MechdError):
+class InternalError(ProblemError):
     """500: a bug in mechd; the server log has the request id."""
 
 
-class ServerBusy(MechdError):
+class ServerBusy(ProblemError):
     """503: the compute queue is full; retry after .retry_after seconds."""
 
 
@@ -142,6 +183,7 @@ class ConnectionFailed(MechdError):
 
 _BY_TYPE = {
     "/problems/malformed-json": BadRequest,
+    "/problems/unauthorized": Unauthorized,
     "/problems/not-found": NotFound,
     "/problems/method-not-allowed": MethodNotAllowed,
     "/problems/body-too-large": PayloadTooLarge,
@@ -155,57 +197,18 @@ _BY_TYPE = {
     "/problems/cancelled": ShuttingDown,
     "/problems/internal-error": InternalError,
 }
-_BY_STATUS = {400: BadRequest, 404: NotFound, 405: MethodNotAllowed, 413: PayloadTooLarge,
+_BY_STATUS = {400: BadRequest, 401: Unauthorized, 404: NotFound, 405: MethodNotAllowed, 413: PayloadTooLarge,
               415: UnsupportedMediaType, 422: ValidationError, 500: InternalError, 503: ServerBusy}
 
 
-def error_for(status, problem, retry_after=None, message=None):
+def error_for(status: int, problem: Any, retry_after: Optional[float] = None,
+              message: Optional[str] = None, request_id: Optional[str] = None) -> "MechdError":
     """The MechdError subclass for a problem+json (by its type, else by status)."""
     ptype = problem.get("type") if isinstance(problem, dict) else None
     cls = _BY_TYPE.get(ptype) or _BY_STATUS.get(status) or MechdError
-    return cls(status, problem, retry_after, message)
-
-
-# Every POST operation of mechd v1: method name -> path (GET /v1 is the source of truth;
-# call(path, body) reaches paths added later).
-OPERATIONS = {
-    "vectors": "/v1/vectors",
-    "tensor_symmetric": "/v1/tensor/symmetric",
-    "rotation_convert": "/v1/rotation/convert",
-    "rotation_compose": "/v1/rotation/compose",
-    "rotation_apply": "/v1/rotation/apply",
-    "rotation_euler_rates": "/v1/rotation/euler-rates",
-    "rigid_inertia": "/v1/rigid/inertia",
-    "rigid_rotate": "/v1/rigid/rotate",
-    "rigid_top": "/v1/rigid/top",
-    "rigid_stability": "/v1/rigid/stability",
-    "small_oscillations": "/v1/small-oscillations",
-    "relativity_boost": "/v1/relativity/boost",
-    "relativity_velocity_addition": "/v1/relativity/velocity-addition",
-    "relativity_interval": "/v1/relativity/interval",
-    "relativity_worldline": "/v1/relativity/worldline",
-    "relativity_doppler": "/v1/relativity/doppler",
-    "relativity_fields": "/v1/relativity/fields",
-    "relativity_kinematics_invariant_mass": "/v1/relativity/kinematics/invariant-mass",
-    "relativity_kinematics_decay": "/v1/relativity/kinematics/decay",
-    "relativity_kinematics_compton": "/v1/relativity/kinematics/compton",
-    "relativity_kinematics_collision": "/v1/relativity/kinematics/collision",
-    "gr_schwarzschild": "/v1/gr/schwarzschild",
-    "gr_geodesic": "/v1/gr/geodesic",
-    "hamiltonian_flow": "/v1/hamiltonian/flow",
-    "hamiltonian_liouville": "/v1/hamiltonian/liouville",
-    "hamiltonian_poincare": "/v1/hamiltonian/poincare",
-    "trajectory": "/v1/trajectory",
-    "compare": "/v1/compare",
-    "frames_effective_force": "/v1/frames/effective-force",
-    "earth_gravity": "/v1/earth/gravity",
-    "earth_tides": "/v1/earth/tides",
-    "scenes_falling_object": "/v1/scenes/falling-object",
-    "scenes_vertical_shot": "/v1/scenes/vertical-shot",
-    "scenes_cannonball": "/v1/scenes/cannonball",
-    "scenes_foucault": "/v1/scenes/foucault",
-    "scenes_rotating_table": "/v1/scenes/rotating-table",
-}
+    if cls is MechdError:
+        cls = ProblemError
+    return cls(status, problem, retry_after, message, request_id)
 
 
 def method_name(path):
@@ -239,62 +242,997 @@ def check_example(example, answer):
     return got, ok
 
 
-class Client:
+# ---- BEGIN GENERATED OPERATIONS (clients/python/gen_operations.py; do not edit) ----
+class _Operations:
+    """One method per POST operation of GET /v1."""
+
+    def _operation(self, path: str, body: Optional[Dict[str, Any]],
+                   fields: Tuple[Tuple[str, Any], ...]) -> Dict[str, Any]:
+        raise NotImplementedError
+
+    def vectors(self, body: Optional[Dict[str, Any]] = None, *, a: Optional[List[float]] = None, b: Optional[List[float]] = None, c: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Vector algebra: norms, dot and cross products (with the antisymmetric tensor form), angle, components, projections, scalar and vector triple products
+
+        POST /v1/vectors. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            a (required): [x, y, z], any units (r for r x p); |components| <= 1e153
+            b: [x, y, z], optional (p for r x p)
+            c: [x, y, z], optional, needs b: the triple products a.(b x c), a x (b x c)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/vectors', body, (('a', a), ('b', b), ('c', c), ('cost', cost)))
+
+    def tensor_symmetric(self, body: Optional[Dict[str, Any]] = None, *, tensor: Optional[List[List[float]]] = None, vector: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A symmetric tensor's trace, invariants, isotropic and deviatoric parts, principal values and axes (with the degeneracy flag), and T v
+
+        POST /v1/tensor/symmetric. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            tensor (required): [[t11,t12,t13],[t21,t22,t23],[t31,t32,t33]], any units, symmetric (t_ij
+                    and t_ji may differ by 1e-12 of the largest |entry|), |entries| <= 1e102 (so that
+                    det T stays in the double range)
+            vector: optional v: answers T v and v.T.v (omega for an inertia tensor: L = I omega, 2 T_rot
+                    = omega.I.omega)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/tensor/symmetric', body, (('tensor', tensor), ('vector', vector), ('cost', cost)))
+
+    def rotation_convert(self, body: Optional[Dict[str, Any]] = None, *, matrix: Optional[List[List[float]]] = None, euler_zxz: Optional[List[float]] = None, euler: Optional[Dict[str, Any]] = None, axis_angle: Optional[Dict[str, Any]] = None, quaternion: Optional[List[float]] = None, rotation_vector: Optional[List[float]] = None, sense: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A rotation in every representation: matrix, quaternion, axis-angle, rotation vector, z-x-z and all 24 Euler readings, with residuals and gimbal-lock handling
+
+        POST /v1/rotation/convert. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            matrix: 3x3 rows: the rotation matrix R in the given sense (passive: rows = new axes in old
+                    coordinates); orthonormal with det +1 to 1e-9 (max |R^T R - 1|), then polished to
+                    round-off
+            euler_zxz: [phi, theta, psi] rad, the notes' z-x-z angles: phi about z, theta about the new
+                    x (line of nodes), psi about the new z; passive R = R_psi R_theta R_phi; the same as
+                    euler {sequence ZXZ, intrinsic true}
+            euler: any of the 12 Euler/Tait-Bryan sequences, intrinsic or extrinsic
+            axis_angle: a right-handed turn by angle (rad) about axis
+            quaternion: [w, x, y, z] = [cos(a/2), sin(a/2) n] for the turn by a about n; any non-zero
+                    length (normalised here); q and -q are the same turn
+            rotation_vector: angle (rad) times the unit axis; [0, 0, 0] is the identity
+            sense: passive (the notes): R takes a vector's components in the old axes to the new axes;
+                    active: R turns the vector in fixed axes. R_active = R_passive^T for the same turn;
+                    the angle/axis/quaternion parameters of a turn do not depend on the sense; default
+                    "passive"
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rotation/convert', body, (('matrix', matrix), ('euler_zxz', euler_zxz), ('euler', euler), ('axis_angle', axis_angle), ('quaternion', quaternion), ('rotation_vector', rotation_vector), ('sense', sense), ('cost', cost)))
+
+    def rotation_compose(self, body: Optional[Dict[str, Any]] = None, *, rotations: Optional[List[Dict[str, Any]]] = None, sense: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The product of a list of rotations applied in order (passive: R_n ... R_1 about the moving axes; active: about the fixed axes), in every representation
+
+        POST /v1/rotation/compose. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            rotations (required): applied in order, first the first
+            sense: how the list is applied and the product reported; also the default sense of each
+                    item; default "passive"
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rotation/compose', body, (('rotations', rotations), ('sense', sense), ('cost', cost)))
+
+    def rotation_apply(self, body: Optional[Dict[str, Any]] = None, *, rotation: Optional[Dict[str, Any]] = None, vectors: Optional[List[List[float]]] = None, tensors: Optional[List[List[List[float]]]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A rotation applied to vectors (R v) and rank-2 tensors (R T R^T), passive or active
+
+        POST /v1/rotation/apply. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            rotation (required): a rotation given as exactly one of matrix, euler_zxz, euler,
+                    axis_angle, quaternion, rotation_vector, with an optional sense
+            vectors: 3-vectors v, any units, |components| <= 1e150
+            tensors: rank-2 tensors T as 3x3 rows, any units
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rotation/apply', body, (('rotation', rotation), ('vectors', vectors), ('tensors', tensors), ('cost', cost)))
+
+    def rotation_euler_rates(self, body: Optional[Dict[str, Any]] = None, *, euler_zxz: Optional[List[float]] = None, rates: Optional[List[float]] = None, omega_body: Optional[List[float]] = None, omega_space: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Euler-angle kinematics: angular velocity in body and space axes from z-x-z angles and rates (or the rates from omega), dR/dt and its relation to omega, gimbal lock typed
+
+        POST /v1/rotation/euler-rates. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            euler_zxz (required): [phi, theta, psi], rad, z-x-z (notes §2.6), R = R_psi R_theta R_phi
+                    (passive)
+            rates: [phi', theta', psi'], rad/s
+            omega_body: omega in body components, rad/s (instead of rates)
+            omega_space: omega in space components, rad/s (instead of rates)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rotation/euler-rates', body, (('euler_zxz', euler_zxz), ('rates', rates), ('omega_body', omega_body), ('omega_space', omega_space), ('cost', cost)))
+
+    def rigid_inertia(self, body: Optional[Dict[str, Any]] = None, *, bodies: Optional[List[Any]] = None, origin: Optional[Any] = None, omega: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Inertia tensor, principal axes, angular momentum and kinetic energy of a rigid body
+
+        POST /v1/rigid/inertia. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            bodies (required): the parts of one rigid body
+            origin: one of: m, point the tensor is taken about; object; default "center_of_mass"
+            omega: rad/s, angular velocity in scene axes (rotation about origin)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('cost', cost)))
+
+    def rigid_rotate(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, inertia: Optional[Dict[str, Any]] = None, omega: Optional[List[float]] = None, orientation: Optional[Dict[str, Any]] = None, torque: Optional[Dict[str, Any]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Euler's equations with a quaternion attitude: free or torqued rotation of a rigid body, checked against the exact torque-free solution
+
+        POST /v1/rigid/rotate. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            moments: principal moments [I1, I2, I3], kg m^2, > 0, each at most the sum of the other two;
+                    body axes = principal axes. Give this or inertia.
+            inertia: a full POST /v1/rigid/inertia request (validated against that route's schema,
+                    errors under /inertia): the body is rotated about that request's origin (default its
+                    centre of mass), its principal frame is the body frame, and omega and orientation
+                    refer to the scene axes of that request (the body as built). Give this or moments.
+            omega (required): initial angular velocity, rad/s, body axes
+            orientation: a rotation given as exactly one of matrix, euler_zxz, euler, axis_angle,
+                    quaternion, rotation_vector, with an optional sense
+            torque: optional constant torque; default none (torque-free)
+            t_end (required): s
+            samples: integer >= 2, <= 100000; default 101.0
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/rotate', body, (('moments', moments), ('inertia', inertia), ('omega', omega), ('orientation', orientation), ('torque', torque), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+
+    def rigid_top(self, body: Optional[Dict[str, Any]] = None, *, I1: Optional[float] = None, I3: Optional[float] = None, mass: Optional[float] = None, distance: Optional[float] = None, g: Optional[float] = None, theta: Optional[float] = None, phi: Optional[float] = None, psi: Optional[float] = None, theta_dot: Optional[float] = None, phi_dot: Optional[float] = None, psi_dot: Optional[float] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Heavy symmetric top with a fixed tip: Euler angles, nutation range, conserved momenta, sleeping-top stability
+
+        POST /v1/rigid/top. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            I1 (required): kg m^2, about the tip, perpendicular to the symmetry axis; I1 >= mass
+                    distance^2
+            I3 (required): kg m^2, about the symmetry axis; I3 <= 2 I1
+            mass (required): kg
+            distance (required): m, tip to centre of mass (h)
+            g: m/s^2, along -z of space; default 9.80665
+            theta (required): rad, tilt of the symmetry axis from vertical (0: upright)
+            phi: rad, azimuth of the line of nodes, default 0
+            psi: rad, spin angle, default 0
+            theta_dot: rad/s, default 0
+            phi_dot: rad/s, precession rate, default 0
+            psi_dot: rad/s, spin rate, default 0
+            t_end (required): s
+            samples: integer >= 2, <= 100000; default 101.0
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/top', body, (('I1', I1), ('I3', I3), ('mass', mass), ('distance', distance), ('g', g), ('theta', theta), ('phi', phi), ('psi', psi), ('theta_dot', theta_dot), ('phi_dot', phi_dot), ('psi_dot', psi_dot), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+
+    def rigid_stability(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, axis: Optional[int] = None, spin: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Stability of spin about a principal axis: k in eps'' = k eps, the frequency or growth rate, and which axis is intermediate
+
+        POST /v1/rigid/stability. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            moments (required): principal moments [I1, I2, I3], kg m^2, > 0, any order; each at most the
+                    sum of the other two (to 1e-12 relative), as for every rigid body
+            axis (required): the principal axis of the spin (1-based index into moments)
+            spin (required): spin rate about that axis, rad/s (sign irrelevant)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/stability', body, (('moments', moments), ('axis', axis), ('spin', spin), ('cost', cost)))
+
+    def small_oscillations(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Small oscillations about a steady motion: near-circular orbits in a central potential (radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical pendulum about any pivot and axis, the Foucault pendulum's normal modes
+
+        POST /v1/small-oscillations. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): one of: object; object; object; object
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/small-oscillations', body, (('system', system), ('cost', cost)))
+
+    def relativity_boost(self, body: Optional[Dict[str, Any]] = None, *, vectors: Optional[Any] = None, velocity: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Lorentz-boost 4-vectors, precise from 1 m/s to gamma = 1e15
+
+        POST /v1/relativity/boost. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            vectors (required): one 4-vector, or a list of 1 to 100000; the answer has the same shape
+            velocity (required): a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/boost', body, (('vectors', vectors), ('velocity', velocity), ('cost', cost)))
+
+    def relativity_velocity_addition(self, body: Optional[Dict[str, Any]] = None, *, velocity: Optional[Any] = None, frame_velocity: Optional[Dict[str, Any]] = None, compose: Optional[List[Dict[str, Any]]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Relativistic velocity addition in any directions, composition of boosts, and the Wigner (Thomas) rotation
+
+        POST /v1/relativity/velocity-addition. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            velocity: the object's velocity in the original frame: a velocity, or {"light": direction}
+                    for light
+            frame_velocity: a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            compose: boosts applied in order: the first is the velocity of frame 1 in the original
+                    frame, each next one the velocity of the next frame relative to the previous one, in
+                    the previous frame's axes
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/velocity-addition', body, (('velocity', velocity), ('frame_velocity', frame_velocity), ('compose', compose), ('cost', cost)))
+
+    def relativity_interval(self, body: Optional[Dict[str, Any]] = None, *, events: Optional[List[List[float]]] = None, units: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The interval between two events: s2, timelike/spacelike/lightlike, proper time or length, whether the time order can be reversed
+
+        POST /v1/relativity/interval. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            events (required): two events [ct, x, y, z], all four coordinates in one length unit
+            units: metres: coordinates in m, proper_time in s; years: coordinates in light-years (ct in
+                    light-years = years, c = 1), proper_time in years; default "metres"
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/interval', body, (('events', events), ('units', units), ('cost', cost)))
+
+    def relativity_worldline(self, body: Optional[Dict[str, Any]] = None, *, legs: Optional[List[Any]] = None, units: Optional[str] = None, tick_interval: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A trip as legs of constant velocity or constant proper acceleration: proper times, the stay-at-home time, and the Doppler ticks each twin sees
+
+        POST /v1/relativity/worldline. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            legs (required): array of any (>= 1, <= 1000 items)
+            units: seconds: times in s, lengths in m, c = 299792458 m/s; years: times in Julian years,
+                    lengths in light-years, c = 1; default "seconds"
+            tick_interval: each twin's clock ticks once per this proper time (default 1 s or 1 year);
+                    default 1.0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('cost', cost)))
+
+    def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with aberration
+
+        POST /v1/relativity/doppler. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            source_velocity: a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            observer_velocity: a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            emission_direction: the direction the light travels (from the source towards the observer)
+                    in the SOURCE's rest frame; give exactly one of emission_direction and
+                    arrival_direction
+            arrival_direction: the direction the light travels when it reaches the observer, in the
+                    OBSERVER's rest frame (opposite to the line of sight towards the source)
+            frequency: emitted frequency in Hz, in the source's rest frame (optional; at most one of
+                    frequency and wavelength)
+            wavelength: emitted wavelength in m, in the source's rest frame (optional)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/doppler', body, (('source_velocity', source_velocity), ('observer_velocity', observer_velocity), ('emission_direction', emission_direction), ('arrival_direction', arrival_direction), ('frequency', frequency), ('wavelength', wavelength), ('cost', cost)))
+
+    def relativity_fields(self, body: Optional[Dict[str, Any]] = None, *, E: Optional[List[float]] = None, B: Optional[List[float]] = None, velocity: Optional[Dict[str, Any]] = None, units: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """E and B under a boost, Heaviside–Lorentz or SI, with the invariants E² − B² and E·B
+
+        POST /v1/relativity/fields. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            E (required): electric field: V/m in SI; in Heaviside-Lorentz the same unit as B; each
+                    |component| <= 1e100
+            B (required): magnetic field: T in SI; in Heaviside-Lorentz the same unit as E
+            velocity (required): a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            units: heaviside_lorentz: c = 1, the notes' units (default); si: E in V/m, B in T; default
+                    "heaviside_lorentz"
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/fields', body, (('E', E), ('B', B), ('velocity', velocity), ('units', units), ('cost', cost)))
+
+    def relativity_kinematics_invariant_mass(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, momenta: Optional[List[Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Invariant mass and centre-of-momentum velocity of a set of 4-momenta or particles
+
+        POST /v1/relativity/kinematics/invariant-mass. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            momenta (required): 1 to 1000 particles, each a 4-momentum [E, px, py, pz] or {particle,
+                    momentum}
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/invariant-mass', body, (('energy_unit', energy_unit), ('momenta', momenta), ('cost', cost)))
+
+    def relativity_kinematics_decay(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, parent: Optional[Dict[str, Any]] = None, daughters: Optional[List[Any]] = None, theta_star: Optional[float] = None, theta_star_deg: Optional[float] = None, cone: Optional[Dict[str, Any]] = None, angles: Optional[List[float]] = None, angles_deg: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Two- and three-body decays: rest-frame momentum, lab energies and angles, opening angles, cone energy ranges, endpoints
+
+        POST /v1/relativity/kinematics/decay. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            parent (required): the decaying particle in the lab; it moves along +z; at most one of
+                    energy, kinetic_energy, momentum, velocity (none: at rest)
+            daughters (required): two or three decay products
+            theta_star: two-body: rest-frame angle of daughter 0 to the parent's direction; daughter 1
+                    goes the opposite way (radians)
+            theta_star_deg: the same in degrees (degrees)
+            cone: two-body: the energy range of one daughter seen within a cone around the parent's
+                    direction
+            angles: three-body, rest frame, one plane: [angle between daughters 0 and 1, angle between 1
+                    and 2] in radians
+            angles_deg: the same in degrees
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/decay', body, (('energy_unit', energy_unit), ('parent', parent), ('daughters', daughters), ('theta_star', theta_star), ('theta_star_deg', theta_star_deg), ('cone', cone), ('angles', angles), ('angles_deg', angles_deg), ('cost', cost)))
+
+    def relativity_kinematics_compton(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, energy: Optional[float] = None, wavelength: Optional[float] = None, angle: Optional[float] = None, angle_deg: Optional[float] = None, target: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Compton scattering off an electron or any target: scattered photon, recoil energy and angle
+
+        POST /v1/relativity/kinematics/compton. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            energy: incident photon energy (give this or wavelength)
+            wavelength: incident photon wavelength in metres (give this or energy)
+            angle: photon scattering angle theta (radians)
+            angle_deg: photon scattering angle theta (degrees)
+            target: a particle name (table in the operation description) or a mass >= 0 in
+                    energy_unit/c^2
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/compton', body, (('energy_unit', energy_unit), ('energy', energy), ('wavelength', wavelength), ('angle', angle), ('angle_deg', angle_deg), ('target', target), ('cost', cost)))
+
+    def relativity_kinematics_collision(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, beam: Optional[Dict[str, Any]] = None, target: Optional[Dict[str, Any]] = None, crossing_angle: Optional[float] = None, crossing_angle_deg: Optional[float] = None, sqrt_s: Optional[float] = None, final_state: Optional[List[Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """sqrt(s) of fixed-target and colliding beams, the beam energy for a given sqrt(s), production thresholds
+
+        POST /v1/relativity/kinematics/collision. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            beam (required): the incoming particle, moving along +z; at most one of energy,
+                    kinetic_energy, momentum, velocity (none: at rest)
+            target (required): the target: at rest, or a second beam moving along -z (tilted by
+                    crossing_angle); at most one of energy, kinetic_energy, momentum, velocity (none: at
+                    rest)
+            crossing_angle: colliding beams: deviation from head-on; the momenta are at pi -
+                    crossing_angle (radians)
+            crossing_angle_deg: the same in degrees (degrees)
+            sqrt_s: inverse problem: the CM energy wanted on a target at rest; the beam's energy is then
+                    computed (give no beam energy)
+            final_state: particles to produce: threshold energies
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/collision', body, (('energy_unit', energy_unit), ('beam', beam), ('target', target), ('crossing_angle', crossing_angle), ('crossing_angle_deg', crossing_angle_deg), ('sqrt_s', sqrt_s), ('final_state', final_state), ('cost', cost)))
+
+    def gr_schwarzschild(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, r: Optional[float] = None, reference_r: Optional[float] = None, effective_potential: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Schwarzschild radius, clock rates and red shift, circular orbits and their stability, ISCO, photon sphere, effective potentials; GPS-style clock comparison
+
+        POST /v1/gr/schwarzschild. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
+                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
+                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
+                    = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
+                    GM/c, speeds in c.; default "SI"
+            r: radius (Schwarzschild r: circumference / 2 pi) for the clocks and the circular orbit; >
+                    r_s
+            reference_r: radius of a static reference clock (e.g. the ground: 6371000 m mean or 6378137
+                    m equatorial for the Earth): compares it with a clock on a circular orbit at r
+                    (GPS). Needs r.
+            effective_potential: object
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
+
+    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
+
+        POST /v1/gr/geodesic. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
+                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
+                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
+                    = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
+                    GM/c, speeds in c.; default "SI"
+            kind (required): timelike: a massive particle (proper time tau); null: light (affine
+                    parameter lambda, normalised to dt/dlambda -> 1 far away)
+            r0: start radius (not with the orbit forms, which start at periapsis)
+            phi0: rad; default 0.0
+            initial (required): one of: conserved energy and angular momentum (timelike); the velocity
+                    measured by a static observer at r0; an impact parameter (null); the turning points
+                    or a, e of a bound orbit (timelike, start at periapsis)
+            tau_end: timelike: proper time to integrate (s, GM/c^3 geometric)
+            orbits: timelike bound orbits: integrate this many radial periods (exact, by quadrature)
+            lambda_end: null: affine parameter to integrate (s, GM/c^3 geometric); default 1.02 x the
+                    straight-line path from r0 to r_escape + 600 pi GM/c^3 (100 loops of the photon
+                    sphere)
+            r_escape: escape when r passes it moving outward; default 2 r0 (2 r_a for bound orbits)
+            samples: integer >= 2, <= 100000; default 201.0
+            constraint_bound: stop with a numerical-failure error when the constraint g(u,u) = -1 (0 for
+                    light) drifts by more than this, relative to the size of its terms; default 0.001
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('cost', cost)))
+
+    def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, Hénon–Heiles, 3D potentials) with conserved momenta and energy
+
+        POST /v1/hamiltonian/flow. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): a system of the catalog, chosen by name (see the route description)
+            q (required): array of float (>= 1, <= 3 items)
+            p (required): array of float (>= 1, <= 3 items)
+            t_end (required): s
+            samples: integer >= 2, <= 100000; default 101.0
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/flow', body, (('system', system), ('q', q), ('p', p), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+
+    def hamiltonian_liouville(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, curve: Optional[Any] = None, reference: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrators: Optional[List[Any]] = None, tol: Optional[float] = None, max_intervals: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Phase-space area of a closed curve of initial conditions over time and the tangent map's determinant, symplectic beside non-symplectic
+
+        POST /v1/hamiltonian/liouville. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): a system of the catalog, chosen by name (see the route description)
+            curve (required): the closed curve of initial conditions, points (q..., p...)
+            reference: array of float (>= 2, <= 6 items)
+            t_end (required): s
+            samples: integer >= 2, <= 1001; default 11.0
+            integrators: one or two integrator blocks run side by side; default gauss4 (dt = time
+                    scale/20) and rk4 (dt = time scale/2)
+            tol: relative quadrature bound on the area; default 1e-12
+            max_intervals: integer >= 4, <= 4096; default 256.0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/liouville', body, (('system', system), ('curve', curve), ('reference', reference), ('t_end', t_end), ('samples', samples), ('integrators', integrators), ('tol', tol), ('max_intervals', max_intervals), ('cost', cost)))
+
+    def hamiltonian_poincare(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, section: Optional[Dict[str, Any]] = None, orbits: Optional[List[Any]] = None, t_max: Optional[float] = None, max_crossings: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Poincaré sections (Hénon–Heiles, spherical pendulum, ...) with crossings located by root-finding
+
+        POST /v1/hamiltonian/poincare. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): a system of the catalog, chosen by name (see the route description)
+            section: object
+            orbits (required): array of any (>= 1, <= 50 items)
+            t_max (required): s, per orbit
+            max_crossings: integer >= 1, <= 10000; default 200.0
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/poincare', body, (('system', system), ('section', section), ('orbits', orbits), ('t_max', t_max), ('max_crossings', max_crossings), ('integrator', integrator), ('cost', cost)))
+
+    def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
+
+        POST /v1/trajectory. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            particle (required): object
+            frame: default {"type": "inertial"}
+            forces: array of any (<= 32 items)
+            fictitious: terms modelled in a rotating or earth frame: a list, or "auto" (model only the
+                    terms that matter at the requested accuracy); default all four
+            t_end (required): s
+            samples: integer >= 2, <= 100000; default 101.0
+            integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
+                    {"target_error": relative error}; default {"accuracy": "balanced"}. GET
+                    /v1/integrators lists the methods and presets.
+            error_estimate: when the scene has no exact or first-order reference, run it again at a
+                    tighter setting (adaptive: rtol/100, atol/100, or radau15/rk8pd at round-off when
+                    that is beyond the method; fixed step: dt/2, Richardson-scaled) and report the
+                    difference; default false
+            stop: object
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/trajectory', body, (('particle', particle), ('frame', frame), ('forces', forces), ('fictitious', fictitious), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('error_estimate', error_estimate), ('stop', stop), ('cost', cost)))
+
+    def compare(self, body: Optional[Dict[str, Any]] = None, *, operation: Optional[str] = None, request: Optional[Dict[str, Any]] = None, runs: Optional[List[Any]] = None, sweep: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Run one scene with many integrator settings: error, drift, steps and CPU per run
+
+        POST /v1/compare. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            operation (required): the operation compared
+            request (required): object
+            runs: integrator blocks, one row each; give runs or sweep
+            sweep: object
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/compare', body, (('operation', operation), ('request', request), ('runs', runs), ('sweep', sweep), ('cost', cost)))
+
+    def frames_effective_force(self, body: Optional[Dict[str, Any]] = None, *, frame: Optional[Dict[str, Any]] = None, particle: Optional[Dict[str, Any]] = None, force: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The fictitious forces in an accelerating, rotating frame, term by term (translational, Euler, Coriolis, centrifugal), and the effective force and acceleration seen in the frame
+
+        POST /v1/frames/effective-force. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            frame (required): how the frame moves (at the instant considered)
+            particle (required): object
+            force: the real (inertial) force on the particle, N, components on the frame's axes; default
+                    [0,0,0]
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/frames/effective-force', body, (('frame', frame), ('particle', particle), ('force', force), ('cost', cost)))
+
+    def earth_gravity(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, height: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Effective gravity on a rotating spherical Earth at a latitude and height (magnitude, radial and horizontal parts, plumb-line deviation), beside the WGS 84 ellipsoid's normal gravity
+
+        POST /v1/earth/gravity. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            latitude_deg (required): degrees, north positive: geocentric on the sphere, geodetic on the
+                    ellipsoid
+            height: m above the sphere / the ellipsoid, from the deepest trench to 100 km; default 0.0
+            radius: m, radius of the spherical model; default the IUGG mean radius 6371008.8 m (use
+                    6378137 for the equatorial radius); default 6371008.8
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('cost', cost)))
+
+    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Tidal acceleration of the Moon, the Sun or any body, exact (without cancellation) and to first order in r/d, equilibrium tide heights, spring and neap tides
+
+        POST /v1/earth/tides. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            body_ (required): the tide-raising body: "moon", "sun" or {mass (kg), distance (m, centre to
+                    centre)}
+            angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0.0
+            radius: m, distance of the point from the Earth's centre; default 6371008.8
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/earth/tides', body, (('body', body_), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
+
+    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
+
+        POST /v1/scenes/falling-object. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            height (required): drop height above the ground, m (released at rest)
+            latitude_deg (required): geographic latitude, degrees (north > 0)
+            g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
+            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
+                    "balanced"
+            target_error: relative error on positions and velocities (not with accuracy)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+
+    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical
+
+        POST /v1/scenes/vertical-shot. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            speed: initial upward speed, m/s (or give height)
+            height: height reached without rotation, m: speed = sqrt(2 g h)
+            latitude_deg (required): geographic latitude, degrees (north > 0)
+            g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
+            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
+                    "balanced"
+            target_error: relative error on positions and velocities (not with accuracy)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+
+    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change
+
+        POST /v1/scenes/cannonball. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            speed (required): muzzle speed v0, m/s
+            elevation_deg (required): inclination above the horizontal (the notes' problems 4-5 theta;
+                    the notes' spherical theta from the vertical is 90 - elevation)
+            azimuth_deg: the notes' phi: from east towards north, degrees (0 east, 90 north); default
+                    0.0
+            latitude_deg (required): geographic latitude, degrees (north > 0)
+            g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
+            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
+                    "balanced"
+            target_error: relative error on positions and velocities (not with accuracy)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+
+    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
+
+        POST /v1/scenes/foucault. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            latitude_deg (required): geographic latitude, degrees (south negative)
+            length: l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m); default 67.0
+            g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
+                    in the notes); default 9.80665
+            omega_magnitude: Earth's rotation rate W, rad/s (default sidereal); default 7.2921159e-05
+            mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28.0
+            release: default: from rest at 3 degrees, towards the east
+            swings: length of the run in swings (full periods of the planar pendulum at this amplitude);
+                    at most one of swings, precessions, duration; default 100.0
+            precessions: length of the run in full turns of the swing plane, 2 pi / (W |sin lat|)
+            duration: length of the run, s
+            integrator: constrained symplectic methods: rattle (order 2) or its Yoshida triple jump
+                    (order 4)
+            fictitious: "auto" (default) or the list of terms to model; coriolis is the effect and must
+                    be in it
+            target_error: relative accuracy wanted of the precession rate (relative to W) and the
+                    period; fictitious auto leaves out a term whose estimated effect is below target/10;
+                    default 1e-06
+            error_estimate: run again with half the steps per swing and report the Richardson estimate
+                    of the error; default true
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
+
+    def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The notes' rotating-table puck experiments seen from the inertial and the rotating frame
+
+        POST /v1/scenes/rotating-table. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            experiment: one of "through_center", "at_rest", "custom"; default "through_center"
+            omega (required): table rotation rate about +z, rad/s, non-zero
+            radius: r1, m (through_center, at_rest); default 1.0
+            mass: number > 0, <= 1e+30; default 1.0
+            position: custom: inertial position at t = 0, m
+            velocity: custom: inertial velocity, m/s
+            t_end: custom: duration, s
+            samples: integer >= 2, <= 100000; default 21.0
+            accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
+                    "balanced"
+            target_error: relative error on positions and velocities (not with accuracy)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/scenes/rotating-table', body, (('experiment', experiment), ('omega', omega), ('radius', radius), ('mass', mass), ('position', position), ('velocity', velocity), ('t_end', t_end), ('samples', samples), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+
+
+OPERATIONS = {
+    'vectors': '/v1/vectors',
+    'tensor_symmetric': '/v1/tensor/symmetric',
+    'rotation_convert': '/v1/rotation/convert',
+    'rotation_compose': '/v1/rotation/compose',
+    'rotation_apply': '/v1/rotation/apply',
+    'rotation_euler_rates': '/v1/rotation/euler-rates',
+    'rigid_inertia': '/v1/rigid/inertia',
+    'rigid_rotate': '/v1/rigid/rotate',
+    'rigid_top': '/v1/rigid/top',
+    'rigid_stability': '/v1/rigid/stability',
+    'small_oscillations': '/v1/small-oscillations',
+    'relativity_boost': '/v1/relativity/boost',
+    'relativity_velocity_addition': '/v1/relativity/velocity-addition',
+    'relativity_interval': '/v1/relativity/interval',
+    'relativity_worldline': '/v1/relativity/worldline',
+    'relativity_doppler': '/v1/relativity/doppler',
+    'relativity_fields': '/v1/relativity/fields',
+    'relativity_kinematics_invariant_mass': '/v1/relativity/kinematics/invariant-mass',
+    'relativity_kinematics_decay': '/v1/relativity/kinematics/decay',
+    'relativity_kinematics_compton': '/v1/relativity/kinematics/compton',
+    'relativity_kinematics_collision': '/v1/relativity/kinematics/collision',
+    'gr_schwarzschild': '/v1/gr/schwarzschild',
+    'gr_geodesic': '/v1/gr/geodesic',
+    'hamiltonian_flow': '/v1/hamiltonian/flow',
+    'hamiltonian_liouville': '/v1/hamiltonian/liouville',
+    'hamiltonian_poincare': '/v1/hamiltonian/poincare',
+    'trajectory': '/v1/trajectory',
+    'compare': '/v1/compare',
+    'frames_effective_force': '/v1/frames/effective-force',
+    'earth_gravity': '/v1/earth/gravity',
+    'earth_tides': '/v1/earth/tides',
+    'scenes_falling_object': '/v1/scenes/falling-object',
+    'scenes_vertical_shot': '/v1/scenes/vertical-shot',
+    'scenes_cannonball': '/v1/scenes/cannonball',
+    'scenes_foucault': '/v1/scenes/foucault',
+    'scenes_rotating_table': '/v1/scenes/rotating-table',
+}
+HANDWRITTEN_OPERATIONS = {'/v1/check': 'check', '/v1/batch': 'batch'}
+# ---- END GENERATED OPERATIONS ----
+
+
+class _NoRedirect(urllib.request.HTTPRedirectHandler):
+    """mechd never redirects; following one would hand the bearer token to another URL."""
+
+    def redirect_request(self, req, fp, code, msg, headers, newurl):
+        return None
+
+
+_OPENER = urllib.request.build_opener(_NoRedirect())
+
+# What a dropped connection looks like: refused, reset, closed before the status line.
+_DROPPED = (ConnectionRefusedError, ConnectionResetError, ConnectionAbortedError, BrokenPipeError,
+            http.client.RemoteDisconnected, http.client.IncompleteRead, http.client.BadStatusLine)
+
+
+class ConnectionDropped(Exception):
+    """Internal: a retryable connection failure (wrapped into ConnectionFailed)."""
+
+
+class Client(_Operations):
     """A mechd server at base_url. Thread-safe: one Client may be shared by threads.
 
-    timeout: socket timeout per request (s). retries: how many times a 503 is
-    retried (0: never). max_retry_wait: cap on each wait (s), whatever Retry-After
-    says. on_retry(attempt, wait_seconds, error): optional hook called before each
+    token: bearer token sent as 'Authorization: Bearer TOKEN' (default: $MECHD_TOKEN; None
+    or "" sends none). timeout: socket timeout per attempt (s). retries: how many times a
+    503 or a dropped connection is retried (0: never). max_retry_wait: cap on each wait (s),
+    whatever Retry-After says. backoff: first wait after a dropped connection (s), doubled
+    each time. retry_total: no retry starts later than this many seconds after the first
+    attempt. on_retry(attempt, wait_seconds, error): optional hook called before each
     retry's sleep (for logging). batch_path: the server's batch operation."""
 
     batch_path = "/v1/batch"
     batch_limit = 100
 
-    def __init__(self, base_url=DEFAULT_URL, timeout=60.0, retries=3, max_retry_wait=30.0,
-                 on_retry=None, user_agent="mechd.py"):
+    def __init__(self, base_url: str = DEFAULT_URL, timeout: float = 60.0, retries: int = 3,
+                 max_retry_wait: float = 30.0, on_retry: Optional[Callable[[int, float, "MechdError"], None]] = None,
+                 user_agent: str = "mechd.py", token: Optional[str] = None, backoff: float = 0.25,
+                 retry_total: float = 120.0):
         self.base_url = base_url.rstrip("/")
         self.timeout = timeout
         self.retries = max(0, int(retries))
         self.max_retry_wait = max_retry_wait
+        self.backoff = max(0.0, float(backoff))
+        self.retry_total = max(0.0, float(retry_total))
         self.on_retry = on_retry
         self.user_agent = user_agent
+        self.token = token if token is not None else os.environ.get("MECHD_TOKEN") or None
+        if self.token is not None and ("\r" in self.token or "\n" in self.token):
+            raise ValueError("token: a bearer token cannot hold a line break")
         self._server_batch = None  # None: unknown yet; False: the server has no batch
         self._lock = threading.Lock()
 
     # -- low level ------------------------------------------------------------------
-    def request(self, method, path, data=None, content_type="application/json", query=None):
+    def request(self, method: str, path: str, data: Optional[bytes] = None,
+                content_type: Optional[str] = "application/json",
+                query: Optional[Dict[str, str]] = None) -> Tuple[int, Dict[str, str], bytes]:
         """One HTTP exchange without retries: returns (status, headers dict, body bytes).
         Raises ConnectionFailed when no HTTP answer comes back."""
+        try:
+            return self._exchange(method, path, data, content_type, query)
+        except ConnectionDropped as e:
+            raise ConnectionFailed(None, None, None, str(e)) from None
+
+    def _exchange(self, method, path, data, content_type, query):
         url = self.base_url + path
         if query:
             url += "?" + urllib.parse.urlencode(query)
         headers = {"Accept": "application/json, application/problem+json",
                    "User-Agent": self.user_agent}
+        if self.token:
+            headers["Authorization"] = "Bearer " + self.token
         if data is not None and content_type:
             headers["Content-Type"] = content_type
         req = urllib.request.Request(url, data=data, method=method, headers=headers)
         try:
-            with urllib.request.urlopen(req, timeout=self.timeout) as resp:
+            with _OPENER.open(req, timeout=self.timeout) as resp:
                 return resp.status, {k.lower(): v for k, v in resp.getheaders()}, resp.read()
         except urllib.error.HTTPError as e:
             try:
                 body = e.read()
+            except _DROPPED + (OSError,) as ex:
+                raise ConnectionDropped("%s %s: %s" % (method, url, ex)) from None
             finally:
                 e.close()
             return e.code, {k.lower(): v for k, v in (e.headers or {}).items()}, body
-        except (urllib.error.URLError, socket.timeout, ConnectionError, OSError) as e:
+        except (urllib.error.URLError, socket.timeout, ConnectionError, OSError, http.client.HTTPException) as e:
             reason = getattr(e, "reason", e)
+            if isinstance(reason, _DROPPED) or isinstance(e, _DROPPED):
+                raise ConnectionDropped("%s %s: %s" % (method, url, reason)) from None
             raise ConnectionFailed(None, None, None, "%s %s: %s" % (method, url, reason)) from None
 
     def _once(self, method, path, data, content_type):
-        status, headers, body = self.request(method, path, data, content_type)
+        status, headers, body = self._exchange(method, path, data, content_type, None)
         try:
             doc = json.loads(body.decode("utf-8")) if body else None
         except (ValueError, UnicodeDecodeError):
             doc = None
         if 200 <= status < 300:
             if doc is None and body:
-                raise MechdError(status, None, None, "the answer is not JSON: %r" % body[:200])
+                raise MechdError(status, None, None, "the answer is not JSON: %r" % body[:200],
+                                 headers.get("x-request-id"))
             return doc
         retry_after = None
         if "retry-after" in headers:
@@ -304,30 +1242,47 @@ class Client:
                 retry_after = None
         message = None if isinstance(doc, dict) else (body[:200].decode("utf-8", "replace") or
                                                        "HTTP %d" % status)
-        raise error_for(status, doc, retry_after, message)
+        raise error_for(status, doc, retry_after, message, headers.get("x-request-id"))
 
-    def send(self, method, path, data=None, content_type="application/json"):
-        """Send raw bytes (retrying 503s); returns the parsed JSON answer or raises MechdError."""
+    def send(self, method: str, path: str, data: Optional[bytes] = None,
+             content_type: Optional[str] = "application/json") -> Any:
+        """Send raw bytes, retrying a 503 and a dropped connection (see the module's
+        "Retries"); returns the parsed JSON answer or raises MechdError."""
         attempt = 0
+        start = time.monotonic()
         while True:
             try:
                 return self._once(method, path, data, content_type)
             except ServerBusy as e:
-                if attempt >= self.retries:
-                    raise
-                attempt += 1
+                err = e
                 wait = e.retry_after if e.retry_after is not None else 1.0
                 wait = min(max(wait, 0.05), self.max_retry_wait)
-                if self.on_retry:
-                    self.on_retry(attempt, wait, e)
-                time.sleep(wait)
+            except ConnectionDropped as e:
+                err = ConnectionFailed(None, None, None, str(e))
+                wait = min(self.backoff * (2 ** attempt), self.max_retry_wait)
+            if attempt >= self.retries or time.monotonic() - start + wait > self.retry_total:
+                raise err
+            attempt += 1
+            if self.on_retry:
+                self.on_retry(attempt, wait, err)
+            time.sleep(wait)
 
-    def call(self, path, body=None, method=None):
+    def call(self, path: str, body: Optional[Dict[str, Any]] = None, method: Optional[str] = None) -> Any:
         """POST body (a dict) as JSON to path, or GET when body is None; the answer as a dict."""
         if method is None:
             method = "GET" if body is None else "POST"
         data = None if body is None else json.dumps(body, allow_nan=False).encode("utf-8")
         return self.send(method, path, data)
+
+    def _operation(self, path, body, fields):
+        """POST body merged with the fields (name, value) that are not None."""
+        if body is not None and not isinstance(body, dict):
+            raise TypeError("body: a dict (the request), got %s" % type(body).__name__)
+        req = dict(body or {})
+        for k, v in fields:
+            if v is not None:
+                req[k] = v
+        return self.call(path, req)
 
     # -- resources ------------------------------------------------------------------
     def catalog(self):
@@ -426,19 +1381,10 @@ class Client:
             return list(pool.map(one, norm))
 
 
-def _make_operation(name, path):
-    def op(self, body=None, **fields):
-        req = dict(body or {})
-        req.update(fields)
-        return self.call(path, req)
-    op.__name__ = name
-    op.__doc__ = "POST %s (the request as a dict and/or keyword arguments); the answer as a dict." % path
-    return op
-
-
-for _name, _path in OPERATIONS.items():
-    setattr(Client, _name, _make_operation(_name, _path))
-del _name, _path
+def main(argv: Optional[List[str]] = None) -> int:
+    """The mechd-client command: python3 -m mechd PATH [JSON-BODY|-]."""
+    import sys
+    return _main(sys.argv if argv is None else argv)
 
 
 def _main(argv):
@@ -446,12 +1392,12 @@ def _main(argv):
     import os
     import sys
     if len(argv) < 2:
-        sys.stderr.write("usage: mechd.py PATH [JSON-BODY | -]   (MECHD_URL=%s)\n" % DEFAULT_URL)
+        sys.stderr.write("usage: mechd.py PATH [JSON-BODY | -]   (MECHD_URL=%s, MECHD_TOKEN)\n" % DEFAULT_URL)
         return 2
     body = None
     if len(argv) > 2:
         body = json.loads(sys.stdin.read() if argv[2] == "-" else argv[2])
-    client = Client(os.environ.get("MECHD_URL", DEFAULT_URL))
+    client = Client(os.environ.get("MECHD_URL", DEFAULT_URL))  # token: $MECHD_TOKEN
     try:
         print(json.dumps(client.call(argv[1], body), indent=2))
         return 0

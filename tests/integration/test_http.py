@@ -157,7 +157,7 @@ def check_problem(name, res, status, ptype):
         check("%s: title and detail are non-empty strings" % name,
               isinstance(doc["title"], str) and doc["title"] and
               isinstance(doc["detail"], str) and doc["detail"], repr(doc))
-    check("%s: X-Request-Id" % name, hdrs.get("x-request-id", "").isdigit(), repr(hdrs))
+    check("%s: X-Request-Id" % name, re.fullmatch(r"[0-9a-f]{32}", hdrs.get("x-request-id", "")), repr(hdrs))
     return doc if ok and isinstance(doc, dict) else None
 
 
@@ -264,7 +264,7 @@ def test_main_server():
               repr(payload))
         check("/healthz is application/json",
               hdrs.get("content-type", "").startswith("application/json"), repr(hdrs))
-        check("/healthz has X-Request-Id", hdrs.get("x-request-id", "").isdigit(), repr(hdrs))
+        check("/healthz has X-Request-Id", re.fullmatch(r"[0-9a-f]{32}", hdrs.get("x-request-id", "")), repr(hdrs))
 
         st, hdrs, payload = request(port, "GET", "/")
         text = payload.decode("utf-8", "replace")
@@ -308,7 +308,7 @@ def test_main_server():
             check("POST %s example: 200 application/json object" % path,
                   st == 200 and hdrs.get("content-type", "").startswith("application/json") and
                   isinstance(doc, dict), "%r %r" % (st, payload[:400]))
-            check("POST %s example: X-Request-Id" % path, hdrs.get("x-request-id", "").isdigit())
+            check("POST %s example: X-Request-Id" % path, re.fullmatch(r"[0-9a-f]{32}", hdrs.get("x-request-id", "")))
             st2, _, payload2 = request(port, "POST", path, ex)
             doc2 = as_json(payload2)
             if isinstance(doc, dict) and isinstance(doc2, dict):
@@ -478,8 +478,8 @@ def test_main_server():
         err = s.stderr()
         check("main server: SIGINT exits 0", rc == 0, "rc=%r\n%s" % (rc, err[-3000:]))
         check("main server: a log line per request (id, method, path, status, us)",
-              re.search(r"req=\d+ GET /healthz 200 \d+us", err) and
-              re.search(r"req=\d+ POST /v1/relativity/boost 413 \d+us", err), err[-2000:])
+              re.search(r"req=[0-9a-f]{32} GET /healthz 200 \d+us", err) and
+              re.search(r"req=[0-9a-f]{32} POST /v1/relativity/boost 413 \d+us", err), err[-2000:])
         check("main server: no sanitizer report",
               "AddressSanitizer" not in err and "runtime error" not in err and "LeakSanitizer" not in err,
               err[-3000:])
@@ -537,7 +537,9 @@ def test_busy_pool(examples):
 # ---- SIGTERM while work runs and waits ---------------------------------------------
 
 def test_sigterm(examples):
-    s = Server("--workers", "1", "--queue", "4", "--deadline-ms", "60000", "--max-steps", "1000000000000")
+    # --shutdown-grace-ms 0: cancel at once (the grace period is test_srv_ops.py's)
+    s = Server("--workers", "1", "--queue", "4", "--deadline-ms", "60000", "--max-steps", "1000000000000",
+               "--shutdown-grace-ms", "0")
     port = s.port
     slow = slow_trajectory(examples.get("/v1/trajectory"))
     running = Async(port, "POST", "/v1/trajectory", slow)

@@ -247,7 +247,8 @@ def test_busy():
     # A server of its own with a long deadline, so the worker and the queue stay
     # taken for the whole check however slow a loaded machine is; stopping it
     # ends the two slow requests (cancelled) without waiting for the deadline.
-    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "120000", "--max-steps", "1000000000000")
+    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "120000", "--max-steps", "1000000000000",
+               "--shutdown-grace-ms", "0")
     t3 = t4 = None
     try:
         plain = mechd.Client(s.url, timeout=180, retries=0)

@@ -146,7 +146,7 @@ def main():
     errf.seek(0)
     log = errf.read().decode(errors="replace")
     check("the log has one line per trajectory request (5)",
-          len(re.findall(r"(?m)^mechd: req=\d+ POST /v1/trajectory ", log)) == 5, log[-600:])
+          len(re.findall(r"(?m)^mechd: \S+Z req=[0-9a-f]{32} POST /v1/trajectory ", log)) == 5, log[-600:])
     return summary()
 
 

@@ -142,7 +142,7 @@ def test_quick_while_pool_full():
         check("a quick boost is answered 200 with gamma 1.25, (1.25, -0.75, 0, 0), while the pool is full",
               ok, repr((st, body[:200])))
         check("... with the usual headers (X-Request-Id, nosniff, Cache-Control no-store)",
-              re.search(r"(?im)^x-request-id: \d+", head) is not None
+              re.search(r"(?im)^x-request-id: [0-9a-f]{32}\r?$", head) is not None
               and re.search(r"(?im)^x-content-type-options: nosniff", head) is not None
               and re.search(r"(?im)^cache-control: no-store", head) is not None, head)
         st, _, body = call(port, "POST", "/v1/relativity/boost", b"{\"vectors\": [1, 0, 0")
@@ -180,7 +180,7 @@ def test_quick_while_pool_full():
     errf.seek(0)
     log = errf.read().decode(errors="replace")
     check("every boost request has its log line (4)",
-          len(re.findall(r"(?m)^mechd: req=\d+ POST /v1/relativity/boost \d{3} \d+us$", log)) == 4, log[-800:])
+          len(re.findall(r"(?m)^mechd: \S+Z req=[0-9a-f]{32} POST /v1/relativity/boost \d{3} \d+us bytes=\d+ client=127\.0\.0\.1$", log)) == 4, log[-800:])
 
 
 def test_guard():
