@@ -27,6 +27,7 @@
 
 #include "mech/budget.h"
 #include "mech/constants.h"
+#include "mech/chooser.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/vec.h"
@@ -113,6 +114,8 @@ struct mech_trajectory_problem {
     enum mech_stop_direction stop_direction;
     int reduce_planar;            /* 1: integrate a planar scene in two dimensions (see
                                      mech_trajectory_plane); 0: always in three */
+    int closed_form_off;          /* 1: the chooser must not pick the closed form
+                                     (integrator.closed_form false) */
 };
 
 /* One modelled (or deliberately omitted) term. */
@@ -245,6 +248,8 @@ struct mech_trajectory_choice {
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
     char reason[640];            /* why: scene class, scale, tolerance mapping */
+    struct mech_scene_profile profile; /* what the chooser was told about the scene */
+    struct mech_selection sel;   /* every candidate with its predictions and verdict */
 };
 
 /* Choose a method and tolerances for p (its method/opt are ignored) so that
