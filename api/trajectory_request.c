@@ -3,9 +3,11 @@
  * trajectory_request.h). */
 #include "trajectory_request.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "integrator_block.h"
 #include "mech/reference.h"
 
 static int axis_of(const char *s) { return s[0] - 'x'; }
@@ -41,6 +43,7 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
         p->opt.dt = api_number(in, "dt", 0);
         return 1;
     }
+    p->closed_form_off = in && json_is_false(json_object_get(in, "closed_form"));
     double target;
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     if (te) {
@@ -166,6 +169,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     p->t_end = api_number(body, "t_end", 0);
     p->samples = (size_t)api_number(body, "samples", 101);
     p->error_estimate = json_is_true(json_object_get(body, "error_estimate"));
+    rq->dry_run = json_is_true(json_object_get(body, "dry_run"));
 
     const json_t *stop = json_object_get(body, "stop");
     if (stop) {
@@ -178,7 +182,9 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
                                                            : MECH_STOP_EITHER;
     }
     const json_t *block = json_object_get(body, "integrator");
-    if (rq->auto_model && !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
+    /* a dry run integrates nothing: "auto" keeps every applicable term */
+    if (rq->auto_model && !rq->dry_run &&
+        !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
         return 0;
     char ptr[64];
     snprintf(ptr, sizeof ptr, "%s/integrator", prefix);
@@ -413,23 +419,60 @@ json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *
         }
         json_object_set_new_nocheck(d, "error_estimate", j);
     }
+    json_object_set_new_nocheck(d, "selection", api_traj_selection(c, rq, r));
+    return d;
+}
+
+json_t *api_traj_selection(struct api_call *c, const struct api_traj_request *rq,
+                           const struct mech_trajectory_result *r)
+{
+    const struct mech_trajectory_problem *p = &rq->p;
     json_t *sel = json_object();
     json_object_set_new_nocheck(sel, "requested",
                                 rq->requested ? json_deep_copy(rq->requested) : json_null());
     json_t *set = api_traj_settings(c, p);
     json_object_update(sel, set);
     json_decref(set);
-    if (rq->chosen) {
-        json_object_set_new_nocheck(sel, "target_error", api_real(c, rq->choice.target));
-        char why[sizeof rq->choice.reason + 64];
-        snprintf(why, sizeof why, "%s%s",
-                 rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-                 rq->choice.reason);
-        json_object_set_new_nocheck(sel, "reason", json_string(why));
-    } else {
+    if (!rq->chosen) {
         json_object_set_new_nocheck(sel, "reason",
                                     json_string("method and settings given in the request"));
+        return sel;
     }
-    json_object_set_new_nocheck(d, "selection", sel);
-    return d;
+    json_object_set_new_nocheck(sel, "target_error", api_real(c, rq->choice.target));
+    char why[sizeof rq->choice.reason + 160];
+    snprintf(why, sizeof why, "%s%s%s",
+             rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+             rq->choice.reason,
+             rq->dry_run && rq->auto_model
+                 ? "; dry run: \"fictitious\": \"auto\" not resolved (it needs a first pass), "
+                   "every applicable term assumed"
+                 : "");
+    json_object_set_new_nocheck(sel, "reason", json_string(why));
+    api_selection_predictions(c, &rq->choice.sel, sel);
+    if (r && rq->choice.sel.chosen >= 0) {
+        const struct mech_candidate *k = &rq->choice.sel.c[rq->choice.sel.chosen];
+        double err = -1.0;
+        const char *ev = "none";
+        if (r->reference.kind == MECH_REFERENCE_EXACT) {
+            err = fmax(r->reference.max_relative_position_error,
+                       r->reference.max_relative_velocity_error);
+            ev = "exact reference (diagnostics.reference), max over the samples";
+        } else if (r->error_estimate.done && r->max_radius > 0.0) {
+            err = r->error_estimate.max_position_error_estimate / r->max_radius;
+            ev = "error_estimate's second run: max position difference / max |r|";
+        } else if (r->reference.kind == MECH_REFERENCE_FIRST_ORDER) {
+            ev = "none: the reference is first order in the rotation rate (see "
+                 "diagnostics.reference), not exact";
+        }
+        json_object_set_new_nocheck(sel, "achieved",
+                                    api_selection_achieved(c, k, rq->choice.target, err, ev,
+                                                           rq->cpu_s));
+    }
+    return sel;
 }
+
+json_t *api_traj_dry_run(struct api_call *c, const struct api_traj_request *rq)
+{
+    return api_dry_run_answer(c, api_traj_selection(c, rq, NULL));
+}
+

@@ -2,7 +2,7 @@
  * (core/chooser.c). GENERATED: the rows below are the output of
  *   ./build/bench_calibrate_chooser      (bench/bench_calibrate_chooser.c)
  * run on 2026-11-25 on the project's 2-core build machine (RelWithDebInfo),
- * pasted unchanged except the first_order rows (see below). Re-run and paste
+ * pasted unchanged; the first_order and general rows are copies (see below). Re-run and paste
  * again when an integrator or the trajectory path changes.
  * Calibration scenes: central_gravity = Kepler e = 0.5 from perihelion, 10 and
  * 1000 orbits; oscillator = isotropic spring, 10 and 1e4 periods;
@@ -54,12 +54,22 @@ static const struct chooser_row chooser_table[] = {
     /* errors 3.2e-16 3.6e-16 4.2e-16 3.2e-16 at x = 0.2 0.1 0.05 0.025 (span 1.414); fitted on 0 */
     /* first_order: rigid bodies, tops, geodesics, Hamiltonian flows through
      * GSL's first-order steppers. NOT measured on those systems: the
-     * oscillator's rows (a periodic motion; rotation and libration behave
-     * alike), costs per evaluation scaled by the operation's own right-hand
-     * side when it gives one (mech_scene_profile.rhs_cost_s). */
-    {"first_order", "rk8pd", 0.156, 1.082, 1.067, 2.65, 0.116, 14, 3.7e-08, 4e-17, 1.097, 3.3e-12},
-    {"first_order", "rkf45", 0.479, 1.006, 1.001, 1.96, 0.197, 7, 4.09e-08, 4e-17, 1.097, 4e-17},
-    {"first_order", "msbdf", 2.25, 0.855, 1.003, 7.76, 0.107, 146, 1.5e-07, 4e-17, 1.097, 4e-17},
+     * central_gravity rows (the most conservative class: error growing as
+     * span^2) with a 100x larger safety margin in core/chooser.c, costs per
+     * evaluation raised to the operation's own right-hand side when it
+     * gives one (mech_scene_profile.rhs_cost_s). */
+    {"first_order", "rk8pd", 0.0123, 1.044, 2.098, 3.87, 0.100, 14, 3.48e-08, 7.24e-16, 1.098, 7.24e-16},
+    {"first_order", "rkf45", 0.0387, 0.896, 2.088, 1.35, 0.174, 7, 4.14e-08, 7.24e-16, 1.098, 7.24e-16},
+    {"first_order", "msbdf", 0.0877, 0.865, 2.165, 5.12, 0.124, 146, 1.52e-07, 7.24e-16, 1.098, 7.24e-16},
+    /* general: drag, magnetic fields, tides, rotating frames: NOT measured;
+     * the oscillator's rows (periodic or exponential motion), with a 10x
+     * larger safety margin in core/chooser.c. */
+    {"general", "radau15", 2.65e-09, 2.120, 1.089, 32.7, 0.049, 52.3, 6.04e-08, 4e-17, 1.097, 4.03e-17},
+    {"general", "rk8pd", 0.156, 1.082, 1.067, 2.65, 0.116, 14, 3.7e-08, 4e-17, 1.097, 3.3e-12},
+    {"general", "rkf45", 0.479, 1.006, 1.001, 1.96, 0.197, 7, 4.09e-08, 4e-17, 1.097, 4e-17},
+    {"general", "msbdf", 2.25, 0.855, 1.003, 7.76, 0.107, 146, 1.5e-07, 4e-17, 1.097, 4e-17},
+    {"general", "gauss6", 7.07e-06, 6.009, 1.095, 60.1, 0.762, 33.2, 3.48e-08, 4e-17, 1.097, 4e-17},
+    {"general", "yoshida6", 0.00264, 6.000, 1.095, 7.03, 0.999, 9, 5.46e-08, 4e-17, 1.097, 4e-17},
     /* wisdom_holman: PLACEHOLDER, not measured (the method is H13's; used
      * only when the registry has it): a second-order map, error ~ (h/T)^2
      * span, conservative constants (10x yoshida6's error constant). */

@@ -1360,9 +1360,18 @@ static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ct
         if (p->forces[i].type == MECH_FORCE_LINEAR_DRAG && p->mass > 0.0)
             drag_rate += p->forces[i].u.linear_drag.b / p->mass;
     }
-    s->cls = central ? MECH_SCENE_CENTRAL_GRAVITY
-           : spring  ? MECH_SCENE_OSCILLATOR
-                     : MECH_SCENE_UNIFORM_FIELD;
+    /* uniform_field only for uniform gravity (and a frame whose rotation
+     * bends the fall little over the run): motion close to a polynomial;
+     * drag, magnetic fields, tides and rotating frames are "general" */
+    int only_uniform = 1;
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type != MECH_FORCE_UNIFORM_GRAVITY) only_uniform = 0;
+    const double w_run = mech_vec3_norm(mech_frame_omega(&p->frame)) * p->t_end;
+    if (p->frame.type != MECH_FRAME_INERTIAL && !(w_run < 1e-2)) only_uniform = 0;
+    s->cls = central        ? MECH_SCENE_CENTRAL_GRAVITY
+           : spring         ? MECH_SCENE_OSCILLATOR
+           : only_uniform   ? MECH_SCENE_UNIFORM_FIELD
+                            : MECH_SCENE_GENERAL;
     s->T = T;
     s->span = p->t_end / T;
     s->scale = S;
