@@ -15,6 +15,8 @@
  * core/chooser_table.h with this program's name and the date. Run:
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
+ * With --presets it prints instead each preset's choice, CPU and achieved
+ * error on the issue's particle scenes (no calibration).
  */
 #include <math.h>
 #include <stdio.h>
@@ -270,8 +272,67 @@ static void calibrate(struct scene *s, const struct method *md, double F, double
            s->spans[0], n);
 }
 
-int main(void)
+/* --presets: each preset on the issue's particle scenes through
+ * mech_trajectory_choose + mech_trajectory_integrate: method, CPU (best of
+ * 3), achieved error, and the machine/draft and machine/balanced ratios. */
+static void presets_table(void)
 {
+    static struct scene sc[6];
+    const double es[4] = {0.5, 0.9, 0.5, 0.9}, orb[4] = {10, 10, 1000, 1000};
+    for (int k = 0; k < 4; k++) {
+        scene_kepler(&sc[k]);
+        const double e = es[k];
+        sc[k].p.position = mech_vec3_make(1.0 - e, 0, 0);
+        sc[k].p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
+        sc[k].T = sqrt(pow(1.0 - e, 3.0));
+        sc[k].spans[0] = orb[k] * 2 * CAL_PI / sc[k].T;
+    }
+    scene_osc(&sc[4]);
+    sc[4].spans[0] = 1e4 * 2 * CAL_PI;
+    scene_fall(&sc[5]);
+    sc[5].p.fictitious = MECH_FICTITIOUS_CORIOLIS;
+    make_reference(&sc[5]);
+    const char *names[6] = {"kepler e=0.5 10", "kepler e=0.9 10", "kepler e=0.5 1000",
+                            "kepler e=0.9 1000", "oscillator 1e4", "falling Coriolis"};
+    printf("%-18s %-8s %-8s %10s %10s %10s\n", "scene", "preset", "method", "cpu_s", "error",
+           "predicted");
+    for (int k = 0; k < 6; k++) {
+        double cpu[MECH_ACCURACY_COUNT];
+        for (int a = 0; a < MECH_ACCURACY_COUNT; a++) {
+            const struct mech_accuracy_preset *pr = mech_accuracy_preset_at((enum mech_accuracy)a);
+            struct mech_trajectory_problem p = sc[k].p;
+            p.forces = sc[k].f;
+            p.n_forces = 1;
+            p.t_end = sc[k].spans[0] * sc[k].T;
+            p.samples = NS;
+            p.reduce_planar = 1;
+            static struct mech_trajectory_choice ch;
+            if (mech_trajectory_choose(&p, pr->promise, &ch, NULL) != MECH_OK) continue;
+            struct meas best = {0, 0, 1e300, 0};
+            for (int rep = 0; rep < 3; rep++) {
+                struct meas m = run(&sc[k], sc[k].spans[0], ch.method,
+                                    ch.sel.c[ch.sel.chosen].adaptive ? ch.opt.rtol
+                                                                     : ch.opt.dt / sc[k].T,
+                                    ch.sel.c[ch.sel.chosen].adaptive, NS);
+                if (m.ok && m.cpu < best.cpu) best = m;
+            }
+            cpu[a] = best.cpu;
+            printf("%-18s %-8s %-8s %10.3g %10.2g %10.2g%s\n", names[k], pr->name, ch.method,
+                   best.cpu, best.err, ch.sel.c[ch.sel.chosen].predicted_error,
+                   ch.sel.beyond ? " beyond" : "");
+        }
+        printf("%-18s machine/draft %.2f, machine/balanced %.2f\n", names[k],
+               cpu[MECH_ACCURACY_MACHINE] / fmax(cpu[MECH_ACCURACY_DRAFT], 1e-9),
+               cpu[MECH_ACCURACY_MACHINE] / fmax(cpu[MECH_ACCURACY_BALANCED], 1e-9));
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc > 1 && !strcmp(argv[1], "--presets")) {
+        presets_table();
+        return 0;
+    }
     static struct scene sc[3];
     scene_kepler(&sc[0]);
     scene_osc(&sc[1]);

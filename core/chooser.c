@@ -20,7 +20,7 @@
  * get a larger margin: their constants were not measured on them. */
 static double margin_of(enum mech_scene_class c)
 {
-    return c == MECH_SCENE_FIRST_ORDER ? 100.0 * CHOOSER_MARGIN
+    return c == MECH_SCENE_FIRST_ORDER ? 10.0 * CHOOSER_MARGIN
          : c == MECH_SCENE_GENERAL     ? 10.0 * CHOOSER_MARGIN
                                        : CHOOSER_MARGIN;
 }
