@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "mech/chooser.h"
+#include "mech/scenes.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
@@ -198,8 +199,29 @@ static void test_candidates_listed(void)
     CHECK(mech_choose(&fo, 1e-8, &sel, NULL) == MECH_EINVAL);
 }
 
+/* A dry run integrates nothing: the scene stops after the choice, with zero
+ * steps and evaluations in its stats and no first pass of "auto". */
+static void test_dry_run_scene(void)
+{
+    static struct mech_scene_ballistic_result r;
+    struct mech_scene_ballistic s = {.latitude_deg = 32, .g = 9.80665,
+                                     .omega = MECH_EARTH_OMEGA_SIDEREAL};
+    s.r0 = mech_vec3_make(0, 0, 100);
+    s.dry_run = 1;
+    struct mech_budget b = {1000000, mech_clock_seconds() + 60, NULL};
+    CHECK(mech_scene_ballistic_run(&s, 1e-8, &b, &r, NULL) == MECH_OK);
+    CHECK(r.run.stats.steps == 0 && r.run.stats.rhs_evaluations == 0);
+    CHECK(r.model.first_pass_stats.steps == 0 && !r.model.first_pass_done);
+    CHECK(r.choice.method != NULL && r.choice.sel.chosen >= 0);
+    /* the same scene run for real integrates */
+    s.dry_run = 0;
+    CHECK(mech_scene_ballistic_run(&s, 1e-8, &b, &r, NULL) == MECH_OK);
+    CHECK(r.run.stats.rhs_evaluations > 0);
+}
+
 int main(void)
 {
+    test_dry_run_scene();
     static struct scene s;
     kepler(&s, "kepler e=0.5 10 orbits", 0.5, 10);
     test_scene(&s);
