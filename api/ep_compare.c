@@ -60,7 +60,8 @@ static const char compare_schema[] =
         "every adaptive method (atol = rtol x the scene's scale)\"},"
         "\"dts\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"
         "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15},\"description\":\"dt of "
-        "every fixed-step method, s\"}")
+        "every fixed-step method, s\"}") ","
+    API_DRY_RUN_PROP
     "}}";
 
 static const char compare_example[] =
@@ -234,8 +235,8 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
         /* atol = rtol x the scene's scale, as mech_trajectory_choose() sets it */
         struct mech_trajectory_choice ch;
         double scale = 1.0;
-        if (mech_trajectory_choose(&base.p, 1e-8, &ch, NULL) == MECH_OK && ch.opt.rtol > 0)
-            scale = ch.opt.atol / ch.opt.rtol;
+        if (mech_trajectory_choose(&base.p, 1e-8, &ch, NULL) == MECH_OK)
+            scale = ch.profile.scale;
         size_t need = 0;
         for (size_t i = 0; i < json_array_size(ms); i++) {
             const char *m = json_string_value(json_array_get(ms, i));
@@ -284,6 +285,33 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
             json_decref(owned);
             return NULL;
         }
+    }
+
+    if (json_is_true(json_object_get(body, "dry_run")) || base.dry_run) {
+        /* every run's selection and predictions; nothing integrated */
+        json_t *res = json_object(), *rows = json_array();
+        for (size_t k = 0; res && rows && k < n; k++) {
+            struct api_traj_request rq = base;
+            api_traj_request_fix(&rq);
+            api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer);
+            rq.dry_run = 1;
+            json_t *row = json_object();
+            json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
+            json_object_set_new_nocheck(row, "status", json_string("dry_run"));
+            json_object_set_new_nocheck(row, "selection", api_traj_selection(c, &rq, NULL));
+            json_array_append_new(rows, row);
+        }
+        json_decref(owned);
+        json_object_set_new_nocheck(res, "dry_run", json_true());
+        json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
+        json_object_set_new_nocheck(res, "runs", rows);
+        json_object_set_new_nocheck(res, "total_steps", json_integer(0));
+        json_object_set_new_nocheck(res, "total_rhs_evaluations", json_integer(0));
+        if (!res || !rows) {
+            json_decref(res);
+            return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+        }
+        return res;
     }
 
     const size_t ns = base.p.samples;

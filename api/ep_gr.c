@@ -471,7 +471,8 @@ static const char geo_schema[] =
     "\"default\":1e-3,\"description\":\"stop with a numerical-failure error when the "
     "constraint g(u,u) = -1 (0 for light) drifts by more than this, relative to the size of "
     "its terms\"},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
+    API_DRY_RUN_PROP
     "}}";
 /* clang-format on */
 
@@ -700,9 +701,10 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
     struct api_integrator_choice ch;
     static const struct api_integrator_system geodesic_eqs = {
         "the geodesic equations with r, dr/dtau, phi and t carried together",
-        "the state in geometric units (G = c = M = 1)", 1.0};
+        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
     if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &geodesic_eqs, &ch))
         return NULL;
+    if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;
     p.opt = ch.opt;
     if (ch.opt.dt > 0) p.opt.dt = gr_time_in(&u, ch.opt.dt) / T;

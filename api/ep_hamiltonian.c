@@ -78,7 +78,7 @@ static const char flow_schema[] =
     "\"required\":[\"system\",\"q\",\"p\",\"t_end\"],\"properties\":{"
     "\"system\":" H_SYSTEM_SCHEMA "," H_Q "," H_P "," H_TEND ","
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "}}";
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," API_DRY_RUN_PROP "}}";
 
 static const char liouville_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
@@ -106,7 +106,8 @@ static const char liouville_schema[] =
     "side; default gauss4 (dt = time scale/20) and rk4 (dt = time scale/2)\"},"
     "\"tol\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.01,\"default\":1e-12,"
     "\"description\":\"relative quadrature bound on the area\"},"
-    "\"max_intervals\":{\"type\":\"integer\",\"minimum\":4,\"maximum\":4096,\"default\":256}"
+    "\"max_intervals\":{\"type\":\"integer\",\"minimum\":4,\"maximum\":4096,\"default\":256},"
+    API_DRY_RUN_PROP
     "}}";
 
 static const char poincare_schema[] =
@@ -124,7 +125,7 @@ static const char poincare_schema[] =
     "]}},"
     "\"t_max\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s, per orbit\"},"
     "\"max_crossings\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":10000,\"default\":200},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "}}";
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," API_DRY_RUN_PROP "}}";
 
 /* ---- the system ---------------------------------------------------------------- */
 
@@ -337,7 +338,7 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
         "Hamilton's equations q' = dH/dp, p' = -dH/dq",
         "the SI state: the smallest scale of its components (|q_i|, |p_i|, tau |p_i|/M_i, "
         "M_i |q_i|/tau at the start)",
-        state_scale(s, y0, tau)};
+        state_scale(s, y0, tau), 0, 0.0};
     const char *method = block ? api_string(block, "method", NULL) : NULL;
     if (!block) {
         out->own = 1;
@@ -542,6 +543,7 @@ static json_t *flow(struct api_call *c, const json_t *body)
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
                         t_end / tau, "gauss6", 50.0, &hi))
         return NULL;
+    if (api_dry_run_requested(body)) return api_dry_run_answer(c, ham_selection(c, &hi));
 
     double *t = malloc(ns * sizeof *t), *y = malloc(ns * dim * sizeof *y);
     json_t *out = NULL;
@@ -757,6 +759,15 @@ static json_t *liouville(struct api_call *c, const json_t *body)
                             k == 0 ? "gauss4" : "rk4", k == 0 ? 20.0 : 2.0, &hi[k]))
             goto done;
     }
+    if (api_dry_run_requested(body)) {
+        /* the first block's selection; every block's in selections */
+        json_t *sels = json_array();
+        for (size_t k = 0; sels && k < nrun; k++) json_array_append_new(sels, ham_selection(c, &hi[k]));
+        out = api_dry_run_answer(c, ham_selection(c, &hi[0]));
+        if (out) json_object_set_new_nocheck(json_object_get(out, "diagnostics"), "selections", sels);
+        else json_decref(sels);
+        goto done;
+    }
     const size_t per = 6 * ns + ns * dim;
     buf = malloc(nrun * per * sizeof *buf);
     if (!buf) goto nomem;
@@ -949,6 +960,10 @@ static json_t *poincare(struct api_call *c, const json_t *body)
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
                         t_max / tau, "gauss6", 50.0, &hi))
         goto done;
+    if (api_dry_run_requested(body)) {
+        out = api_dry_run_answer(c, ham_selection(c, &hi));
+        goto done;
+    }
 
     jorb = json_array();
     struct mech_ode_stats total = {0, 0, 0};

@@ -9,16 +9,20 @@
 #include "mech/trajectory.h"
 
 static const char target_doc[] =
-    "{\"target_error\": x} (relative error on positions and velocities, 1e-15..0.1) takes the "
-    "loosest preset whose promise is <= x and scales its rtol by x / promise (at most 10x; "
-    "radau15's eps is not loosened); velocity-free scenes (no drag, no Coriolis) get the "
-    "preset's velocity_free method, others its velocity_dependent method. The rtol shown is for "
-    "runs of up to 20 pi dynamical times sqrt(|r0| / |a0|); a longer run of span dynamical times "
-    "gets it times 20 pi / span (squared for rk8pd on central-gravity scenes), and "
-    "diagnostics.selection says when a target may be beyond the round-off floor of a long run "
-    "(about 1.5e-16 x span^1.5 relative). atol = rtol x the smaller of the scene's position scale "
-    "max(|r0|, |v0| T, |a0| T^2/2) and velocity scale max(|v0|, |a0| T), with T the smaller "
-    "of t_end and sqrt(|r0| / |a0|).";
+    "{\"target_error\": x} (relative error on positions and velocities, or on the operation's "
+    "state, 1e-15..0.1) and the presets (their promise is the target) go to the predictive "
+    "chooser (core/chooser.c): every candidate method (closed_form when the scene has an exact "
+    "solution, radau15, rk8pd, rkf45, gauss6, yoshida6, wisdom_holman when built, msbdf for "
+    "stiff scenes) with the setting predicted to meet the target, its predicted error, "
+    "evaluations and CPU seconds from a model calibrated by bench/bench_calibrate_chooser "
+    "(error = A tol^a span^b above a round-off floor, span = the run in dynamical times), and a "
+    "verdict; the cheapest predicted to meet the target runs. diagnostics.selection lists the "
+    "candidates and, after the run, the achieved error beside the prediction; it says when a "
+    "target may be beyond the round-off floor of a long run. The velocity_free / "
+    "velocity_dependent methods shown per preset are what it typically picks on a 10-orbit "
+    "Kepler scene, not a fixed mapping. \"dry_run\": true answers the selection alone. "
+    "atol = rtol x the smaller of the scene's position scale max(|r0|, |v0| T, |a0| T^2/2) "
+    "and velocity scale max(|v0|, |a0| T), with T the smaller of t_end and sqrt(|r0| / |a0|).";
 
 json_t *api_integrators_catalog(void)
 {

@@ -54,7 +54,8 @@ static const char schema[] =
     "\"description\":\"optional constant torque; default none (torque-free)\"},"
     "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
+    API_DRY_RUN_PROP
     "}}";
 
 static const char description[] =
@@ -316,10 +317,11 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     double W = mech_rigid_rate_scale(&p);
     static const struct api_integrator_system euler_eqs = {
         "Euler's equations with a quaternion attitude",
-        "the dimensionless state (quaternion and omega / rate scale)", 1.0};
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
     if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
                                     p.t_end * W, &euler_eqs, &ch))
         return NULL;
+    if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;
     p.opt = ch.opt;
 

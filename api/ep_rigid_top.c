@@ -37,7 +37,8 @@ static const char schema[] =
     "\"psi_dot\":" T_NUM("-1e6", "1e6", "rad/s, spin rate, default 0") ","
     "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA
+    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
+    API_DRY_RUN_PROP
     "}}";
 
 static const char description[] =
@@ -112,10 +113,11 @@ static json_t *top(struct api_call *c, const json_t *body)
     struct api_integrator_choice ch;
     static const struct api_integrator_system top_eqs = {
         "Euler's equations of the top with gravity's torque and a quaternion attitude",
-        "the dimensionless state (quaternion and omega / rate scale)", 1.0};
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
     if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
                                     p.t_end * mech_top_rate_scale(&p), &top_eqs, &ch))
         return NULL;
+    if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;
     p.opt = ch.opt;
 

@@ -11,6 +11,7 @@
 #include "endpoint.h"
 #include "mech/scenes.h"
 #include "mech/trajectory.h"
+#include "integrator_block.h"
 #include "trajectory_request.h"
 
 static const double ep_pi = 3.14159265358979323846;
@@ -37,7 +38,8 @@ static const double ep_pi = 3.14159265358979323846;
     "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
     "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \
     "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"                     \
-    "\"description\":\"relative error on positions and velocities (not with accuracy)\"}"
+    "\"description\":\"relative error on positions and velocities (not with accuracy)\"},"   \
+    API_DRY_RUN_PROP
 
 /* The relative accuracy asked for; 0 after recording an error. */
 static double scene_target(struct api_call *c, const json_t *body)
@@ -169,7 +171,9 @@ static json_t *run_ballistic(struct api_call *c, const json_t *body, const char 
     }
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_scene_ballistic_run(s, target, &c->budget, r, &e);
+    struct mech_scene_ballistic sd = *s;
+    sd.dry_run = api_dry_run_requested(body);
+    enum mech_status st = mech_scene_ballistic_run(&sd, target, &c->budget, r, &e);
     if (st != MECH_OK) {
         free(r);
         json_decref(parameters);
@@ -180,6 +184,16 @@ static json_t *run_ballistic(struct api_call *c, const json_t *body, const char 
         return api_call_fail_core(c, st, &e, "");
     }
     mech_scene_ballistic_fix(r);
+    if (sd.dry_run) {
+        struct api_traj_request rq;
+        scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy_name(body));
+        rq.dry_run = 1;
+        json_decref(parameters);
+        json_decref(formula);
+        json_t *res = api_dry_run_answer(c, api_traj_selection(c, &rq, NULL));
+        free(r);
+        return res;
+    }
     json_t *res =
         ballistic_answer(c, scene, r, parameters, formula, south, fwd, accuracy_name(body));
     free(r);
@@ -477,10 +491,16 @@ static json_t *table_op(struct api_call *c, const json_t *body)
         r->inertial = a;
         r->rotating = b;
         r->rotating_exact = x;
+        s.dry_run = api_dry_run_requested(body);
         st = mech_scene_table_run(&s, target, &c->budget, r, &e);
     }
     json_t *res = NULL;
-    if (st == MECH_OK) {
+    if (st == MECH_OK && s.dry_run) {
+        struct api_traj_request rq;
+        scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy_name(body));
+        rq.dry_run = 1;
+        res = api_dry_run_answer(c, api_traj_selection(c, &rq, NULL));
+    } else if (st == MECH_OK) {
         res = json_object();
         json_object_set_new_nocheck(res, "scene", json_string("rotating-table"));
         json_t *par = json_object();

@@ -87,6 +87,7 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
 {
     struct api_traj_request rq;
     if (!api_traj_request_parse(c, body, "", &rq)) return NULL;
+    if (rq.dry_run) return api_traj_dry_run(c, &rq);
 
     /* Output buffers, owned here: samples x (t, position, velocity). */
     const size_t n = rq.p.samples;
@@ -100,10 +101,12 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     r.velocity = vel;
     struct mech_error e;
     mech_error_clear(&e);
+    const double cpu0 = mech_cpu_seconds();
     enum mech_status st =
         !(t && pos && vel) ? MECH_ENOMEM
         : rq.closed_form   ? mech_trajectory_closed_form_ex(&rq.p, &r, &rq.evidence, &e)
                            : mech_trajectory_integrate(&rq.p, &c->budget, &r, &e);
+    rq.cpu_s = mech_cpu_seconds() - cpu0;
     if (st != MECH_OK) {
         free(t);
         free(pos);

@@ -40,43 +40,52 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
         out->opt.dt = api_number(in, "dt", 0);
         return 1;
     }
-    const struct mech_accuracy_preset *pr = NULL;
-    const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     double target;
+    const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     if (te) {
         target = json_number_value(te);
-        for (int a = 0; a < MECH_ACCURACY_COUNT; a++) {
-            pr = mech_accuracy_preset_at((enum mech_accuracy)a);
-            if (pr->promise <= target) break;
-        }
     } else {
         const char *acc = in ? api_string(in, "accuracy", "balanced") : "balanced";
-        pr = mech_accuracy_preset_at(MECH_ACCURACY_BALANCED);
+        const struct mech_accuracy_preset *pr = mech_accuracy_preset_at(MECH_ACCURACY_BALANCED);
         for (int a = 0; a < MECH_ACCURACY_COUNT; a++)
             if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)a)->name, acc))
                 pr = mech_accuracy_preset_at((enum mech_accuracy)a);
         out->accuracy = pr->name;
         target = pr->promise;
     }
-    /* the long-run tightening of mech_trajectory_choose (core/trajectory.c):
-     * presets were calibrated on 20 pi dynamical times */
-    const double calibrated_span = 62.831853071795865;
-    const double length_factor = span > calibrated_span ? calibrated_span / span : 1.0;
-    double rtol = pr->rtol_other * fmin(target / pr->promise, 10.0) * length_factor;
-    if (rtol < 1e-15) rtol = 1e-15;
+    /* the predictive chooser (core/chooser.c) on a first-order profile */
+    struct mech_scene_profile prof;
+    memset(&prof, 0, sizeof prof);
+    prof.cls = MECH_SCENE_FIRST_ORDER;
+    prof.span = span >= 0.0 && isfinite(span) ? span : 0.0;
+    prof.T = 1.0;
+    prof.scale = sys->state_scale > 0.0 ? sys->state_scale : 1.0;
+    prof.samples = sys->samples;
+    prof.rhs_cost_s = sys->rhs_cost_s;
+    prof.stiff = 0;
+    struct mech_error e;
+    mech_error_clear(&e);
+    if (mech_choose(&prof, target, &out->sel, &e) != MECH_OK || out->sel.chosen < 0) {
+        char ptr[128];
+        snprintf(ptr, sizeof ptr, "%s", pointer);
+        api_call_invalid(c, ptr, "%s", e.text[0] ? e.text : "no candidate method applies");
+        return 0;
+    }
+    const struct mech_candidate *k = &out->sel.c[out->sel.chosen];
     out->chosen = 1;
     out->target = target;
-    out->method = pr->method_other;
-    out->opt.rtol = rtol;
-    out->opt.atol = rtol * sys->state_scale;
+    out->method = k->method;
+    out->opt = k->opt;
     snprintf(out->reason, sizeof out->reason,
-             "%s%s: preset \"%s\" (promise %.0e relative) -> %s at rtol %.3g%s%s; "
-             "atol = rtol x %.6g on %s",
+             "%s%s over %.3g dynamical times: %s at rtol %.3g is the cheapest candidate "
+             "predicted to meet %.0e relative (predicted %.2g, %.3g evaluations)%s; atol = rtol "
+             "x %.6g on %s",
              in ? "" : "no integrator block: accuracy \"balanced\" by default; ", sys->equations,
-             pr->name, pr->promise, pr->method_other, rtol,
-             target < pr->promise ? " (target below every promise: round-off)" : "",
-             length_factor < 1.0 ? " (tightened for a run of many dynamical times)" : "",
-             sys->state_scale, sys->state);
+             prof.span, k->method, k->opt.rtol, target, k->predicted_error,
+             k->predicted_evaluations,
+             out->sel.beyond ? "; the target may be beyond what round-off allows over this run"
+                             : "",
+             prof.scale, sys->state);
     return 1;
 }
 
@@ -92,7 +101,36 @@ static void settings(struct api_call *c, json_t *o, const struct api_integrator_
     }
 }
 
+json_t *api_dry_run_answer(struct api_call *c, json_t *selection)
+{
+    (void)c;
+    json_t *res = json_object(), *d = json_object();
+    json_object_set_new_nocheck(res, "dry_run", json_true());
+    json_object_set_new_nocheck(d, "steps", json_integer(0));
+    json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(0));
+    json_object_set_new_nocheck(d, "selection", selection);
+    json_object_set_new_nocheck(res, "diagnostics", d);
+    if (!res || !d || !selection) {
+        json_decref(res);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    return res;
+}
+
+int api_dry_run_requested(const json_t *body)
+{
+    return json_is_true(json_object_get(body, "dry_run"));
+}
+
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch)
+{
+    return api_integrator_block_selection_achieved(c, ch, -1.0, NULL, -1.0);
+}
+
+json_t *api_integrator_block_selection_achieved(struct api_call *c,
+                                                const struct api_integrator_choice *ch,
+                                                double error, const char *evidence,
+                                                double cpu_s)
 {
     json_t *sel = json_object();
     if (!sel) return NULL;
@@ -102,6 +140,15 @@ json_t *api_integrator_block_selection(struct api_call *c, const struct api_inte
     if (ch->chosen) {
         json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
         json_object_set_new_nocheck(sel, "reason", json_string(ch->reason));
+        api_selection_predictions(c, &ch->sel, sel);
+        if (cpu_s >= 0.0 && ch->sel.chosen >= 0)
+            json_object_set_new_nocheck(
+                sel, "achieved",
+                api_selection_achieved(c, &ch->sel.c[ch->sel.chosen], ch->target, error,
+                                       evidence ? evidence
+                                                : "none: this operation has no exact reference "
+                                                  "or second run",
+                                       cpu_s));
     } else {
         json_object_set_new_nocheck(sel, "reason",
                                     json_string("method and settings given in the request"));
@@ -121,3 +168,91 @@ void api_integrator_block_stats(struct api_call *c, json_t *d,
     json_object_set_new_nocheck(d, "rejected_steps", json_integer(stats->rejected_steps));
     json_object_set_new_nocheck(d, "rhs_evaluations", json_integer(stats->rhs_evaluations));
 }
+
+/* The stated factor within which the achieved error should fall of the
+ * predicted one (tests/core/test_chooser.c, docs/accuracy.md). */
+#define API_PREDICTION_FACTOR 30.0
+
+static json_t *candidate_json(struct api_call *c, const struct mech_candidate *k)
+{
+    json_t *o = json_object();
+    json_object_set_new_nocheck(o, "method", json_string(k->method));
+    if (k->has_settings) {
+        json_t *st = json_object();
+        if (k->adaptive) {
+            json_object_set_new_nocheck(st, "rtol", api_real(c, k->opt.rtol));
+            json_object_set_new_nocheck(st, "atol", api_real(c, k->opt.atol));
+        } else {
+            json_object_set_new_nocheck(st, "dt", api_real(c, k->opt.dt));
+        }
+        json_object_set_new_nocheck(o, "settings", st);
+    }
+    if (k->predicted) {
+        json_object_set_new_nocheck(o, "predicted_error", api_real(c, k->predicted_error));
+        json_object_set_new_nocheck(o, "predicted_evaluations",
+                                    api_real(c, k->predicted_evaluations));
+        json_object_set_new_nocheck(o, "predicted_cpu_s", api_real(c, k->predicted_cpu_s));
+    }
+    json_object_set_new_nocheck(o, "verdict", json_string(mech_verdict_name(k->verdict)));
+    json_object_set_new_nocheck(o, "why", json_string(k->why));
+    return o;
+}
+
+json_t *api_selection_predictions(struct api_call *c, const struct mech_selection *sel,
+                                  json_t *into)
+{
+    json_object_set_new_nocheck(into, "scene_class",
+                                json_string(mech_scene_class_name(sel->cls)));
+    json_object_set_new_nocheck(into, "span", api_real(c, sel->span));
+    json_object_set_new_nocheck(into, "model", json_string(sel->model));
+    json_object_set_new_nocheck(into, "roundoff_floor", api_real(c, sel->roundoff_floor));
+    json_t *cands = json_array();
+    for (size_t i = 0; i < sel->n; i++) json_array_append_new(cands, candidate_json(c, &sel->c[i]));
+    json_object_set_new_nocheck(into, "candidates", cands);
+    return into;
+}
+
+json_t *api_selection_achieved(struct api_call *c, const struct mech_candidate *pred,
+                               double target, double error, const char *evidence,
+                               double cpu_s)
+{
+    json_t *a = json_object();
+    const int known = error >= 0.0;
+    json_object_set_new_nocheck(a, "error", known ? api_real(c, error) : json_null());
+    json_object_set_new_nocheck(a, "evidence", json_string(evidence));
+    json_object_set_new_nocheck(a, "predicted_error", api_real(c, pred->predicted_error));
+    json_object_set_new_nocheck(a, "predicted_cpu_s", api_real(c, pred->predicted_cpu_s));
+    /* the measured CPU is the answer's cost.cpu_seconds (left out with
+     * "cost": false): kept out of the selection so that equal requests give
+     * byte-identical answers apart from "cost" */
+    (void)cpu_s;
+    char note[300];
+    if (!known) {
+        json_object_set_new_nocheck(a, "met_target", json_null());
+        json_object_set_new_nocheck(a, "within_prediction", json_null());
+        snprintf(note, sizeof note,
+                 "no error evidence for this run: the scene has no exact reference; ask "
+                 "\"error_estimate\": true for a second run");
+    } else {
+        const int met = error <= target;
+        const int within = error <= API_PREDICTION_FACTOR * fmax(pred->predicted_error, 1e-16);
+        json_object_set_new_nocheck(a, "met_target", json_boolean(met));
+        json_object_set_new_nocheck(a, "within_prediction", json_boolean(within));
+        if (met && within)
+            snprintf(note, sizeof note, "met: achieved %.2g <= target %.2g (predicted %.2g)",
+                     error, target, pred->predicted_error);
+        else
+            snprintf(note, sizeof note,
+                     "%s%s: achieved %.2g against target %.2g and predicted %.2g (the stated "
+                     "factor is %g)",
+                     met ? "" : "MISSED the target", !met && !within ? " and " : "",
+                     error, target, pred->predicted_error, API_PREDICTION_FACTOR);
+        if (met && !within) {
+            size_t n = strlen(note);
+            snprintf(note + n, sizeof note - n, "; the prediction was too optimistic");
+        }
+    }
+    json_object_set_new_nocheck(a, "note", json_string(note));
+    return a;
+}
+

@@ -8,18 +8,17 @@
  *   yoshida4/6, symplectic_euler, boris, radau15) need q'' = a(t, q, v) and
  *   are refused with a 422 at <pointer>/method saying why.
  * - {"accuracy": preset} or {"target_error": x} (default accuracy "balanced"):
- *   the loosest preset whose promise meets the target
- *   (mech_accuracy_preset_at()), its `method_other` (rkf45 for draft, rk8pd
- *   otherwise: adaptive, first-order capable) at rtol_other scaled by
- *   min(target / promise, 10), and — as mech_trajectory_choose() does for long
- *   runs — tightened by (20 pi) / span when the run spans more than 20 pi
- *   dynamical times (span = t_end x rate scale), floored at 1e-15;
+ *   the target (a preset's promise), given to the predictive chooser
+ *   (mech/chooser.h, class first_order, span = the run in dynamical times):
+ *   the cheapest candidate (rk8pd, rkf45; msbdf when stiff) predicted to meet
+ *   it, every candidate listed with its predictions in the selection;
  *   atol = rtol x the caller's state scale (1 for dimensionless states).
  * Not thread-shared: each call owns its struct api_integrator_choice. */
 #ifndef API_INTEGRATOR_BLOCK_H
 #define API_INTEGRATOR_BLOCK_H
 
 #include "endpoint.h"
+#include "mech/chooser.h"
 #include "mech/ode.h"
 
 struct api_integrator_choice {
@@ -30,6 +29,7 @@ struct api_integrator_choice {
     const char *accuracy;        /* preset name or NULL */
     double target;               /* the relative error aimed at (chosen) */
     char reason[400];
+    struct mech_selection sel;   /* the chooser's candidates (chosen) */
 };
 
 /* What the caller integrates, for messages and for atol. */
@@ -37,6 +37,8 @@ struct api_integrator_system {
     const char *equations; /* e.g. "Euler's equations with a quaternion attitude" */
     const char *state;     /* e.g. "the dimensionless state (quaternion and omega / rate scale)" */
     double state_scale;    /* atol = rtol x state_scale for chosen settings (> 0) */
+    size_t samples;        /* samples written (each costs a sub-step); 0 if unknown */
+    double rhs_cost_s;     /* CPU s of one right-hand side if known, else 0 */
 };
 
 /* Parse `block` (schema-validated against API_TRAJ_INTEGRATOR_SCHEMA, or NULL
@@ -47,13 +49,45 @@ int api_integrator_block_parse(struct api_call *c, const json_t *block, const ch
                                double span, const struct api_integrator_system *sys,
                                struct api_integrator_choice *out);
 
-/* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason"}. New reference. */
+/* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason",
+ * and when chosen scene_class, span, model, candidates}. New reference. */
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch);
+
+/* The same with selection.achieved (when chosen and cpu_s >= 0): the
+ * achieved relative error (< 0: unknown) and its evidence (NULL: none). */
+json_t *api_integrator_block_selection_achieved(struct api_call *c,
+                                                const struct api_integrator_choice *ch,
+                                                double error, const char *evidence,
+                                                double cpu_s);
 
 /* Add "method", "rtol"/"atol" or "dt", "order", "steps", "rejected_steps",
  * "rhs_evaluations" to the object d. */
 void api_integrator_block_stats(struct api_call *c, json_t *d,
                                 const struct api_integrator_choice *ch,
                                 const struct mech_ode_stats *stats);
+
+/* "dry_run": true in the request body. */
+int api_dry_run_requested(const json_t *body);
+
+/* The answer of a dry run: {"dry_run": true, "diagnostics": {"steps": 0,
+ * "rhs_evaluations": 0, "selection": selection}} (selection stolen). New
+ * reference, or NULL after recording an allocation failure. */
+json_t *api_dry_run_answer(struct api_call *c, json_t *selection);
+
+/* The chooser's predictions into the object `into`: scene_class, span, model,
+ * roundoff_floor, candidates [{method, settings, predicted_error,
+ * predicted_evaluations, predicted_cpu_s, verdict, why}]. Returns into. */
+json_t *api_selection_predictions(struct api_call *c, const struct mech_selection *sel,
+                                  json_t *into);
+
+/* selection.achieved: the achieved error (< 0: unknown, then null) with its
+ * evidence beside the chosen candidate's prediction, met_target,
+ * within_prediction (achieved <= 30 x predicted), predicted_cpu_s (the
+ * measured CPU is the answer's cost.cpu_seconds; cpu_s is unused) and a note
+ * that says a miss.
+ * New reference. */
+json_t *api_selection_achieved(struct api_call *c, const struct mech_candidate *pred,
+                               double target, double error, const char *evidence,
+                               double cpu_s);
 
 #endif

@@ -3,9 +3,11 @@
  * trajectory_request.h). */
 #include "trajectory_request.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "integrator_block.h"
 #include "mech/reference.h"
 
 static int axis_of(const char *s) { return s[0] - 'x'; }
@@ -42,6 +44,7 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
         p->opt.dt = api_number(in, "dt", 0);
         return 1;
     }
+    p->closed_form_off = in && json_is_false(json_object_get(in, "closed_form"));
     double target;
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     if (te) {
@@ -65,9 +68,9 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
     rq->chosen = 1;
     p->method = rq->choice.method;
     p->opt = rq->choice.opt;
-    /* by accuracy: the closed form is a candidate unless the block says no */
-    rq->closed_form = !(in && json_is_false(json_object_get(in, "closed_form"))) &&
-                      mech_trajectory_has_closed_form(p);
+    /* by accuracy: the chooser picked the closed form (a candidate unless the
+     * block says "closed_form": false) */
+    rq->closed_form = rq->choice.closed_form && mech_trajectory_has_closed_form(p);
     return 1;
 }
 
@@ -170,6 +173,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     p->t_end = api_number(body, "t_end", 0);
     p->samples = (size_t)api_number(body, "samples", 101);
     p->error_estimate = json_is_true(json_object_get(body, "error_estimate"));
+    rq->dry_run = json_is_true(json_object_get(body, "dry_run"));
 
     const json_t *stop = json_object_get(body, "stop");
     if (stop) {
@@ -182,7 +186,9 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
                                                            : MECH_STOP_EITHER;
     }
     const json_t *block = json_object_get(body, "integrator");
-    if (rq->auto_model && !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
+    /* a dry run integrates nothing: "auto" keeps every applicable term */
+    if (rq->auto_model && !rq->dry_run &&
+        !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
         return 0;
     char ptr[64];
     snprintf(ptr, sizeof ptr, "%s/integrator", prefix);
@@ -373,75 +379,22 @@ static json_t *reference_json(struct api_call *c, const struct mech_trajectory_r
     return j;
 }
 
-/* The selection block of an answer from the closed form (issue 16,
- * /work SELECTION.md shape): the closed form chosen, the integrator the
- * accuracy would have chosen passed over, and the achieved evidence. */
-static json_t *closed_form_selection(struct api_call *c, const struct api_traj_request *rq)
+/* The error evidence of an answer from the closed form, in words (buf). */
+static void closed_form_evidence_text(const struct mech_closed_form_evidence *ev, char *buf,
+                                      size_t n)
 {
-    const struct mech_closed_form_evidence *ev = &rq->evidence;
-    const double target = rq->choice.target;
-    json_t *sel = json_object();
-    json_object_set_new_nocheck(sel, "requested",
-                                rq->requested ? json_deep_copy(rq->requested) : json_null());
-    json_object_set_new_nocheck(sel, "target_error", api_real(c, target));
-    json_t *cands = json_array();
-    json_t *cf = json_object();
-    json_object_set_new_nocheck(cf, "method", json_string("closed_form"));
-    json_object_set_new_nocheck(cf, "verdict", json_string("chosen"));
-    char why[320];
-    snprintf(why, sizeof why,
-             "exact %s solution (%s): no truncation error, round-off only; cost grows with the "
-             "samples, not with the simulated time",
-             ev->solution,
-             !strcmp(ev->solution, "kepler") ? "universal variables, time reduced by whole periods"
-             : !strcmp(ev->solution, "harmonic_oscillator")
-                 ? "cos/sin with the phase in double-double"
-             : !strcmp(ev->solution, "uniform_gravity") ? "r0 + v0 t + g t^2/2"
-                                                        : "expm1 forms, series at small gamma t");
-    json_object_set_new_nocheck(cf, "why", json_string(why));
-    json_array_append_new(cands, cf);
-    json_t *in = json_object();
-    json_object_set_new_nocheck(in, "method", json_string(rq->choice.method));
-    json_t *set = json_object();
-    json_object_set_new_nocheck(set, "rtol", api_real(c, rq->choice.opt.rtol));
-    json_object_set_new_nocheck(set, "atol", api_real(c, rq->choice.opt.atol));
-    json_object_set_new_nocheck(in, "settings", set);
-    json_object_set_new_nocheck(in, "verdict", json_string("costlier"));
-    json_object_set_new_nocheck(
-        in, "why",
-        json_string("integrates: its cost grows with the simulated time and it adds truncation "
-                    "error; {\"closed_form\": false} in the integrator block runs it"));
-    json_array_append_new(cands, in);
-    json_object_set_new_nocheck(sel, "candidates", cands);
-    json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
-    char reason[sizeof rq->choice.reason + 200];
-    snprintf(reason, sizeof reason,
-             "%sselected by accuracy and the scene has a closed form (%s): answered from it, "
-             "nothing integrated",
-             rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-             ev->solution);
-    json_object_set_new_nocheck(sel, "reason", json_string(reason));
-    json_t *ach = json_object();
-    json_object_set_new_nocheck(ach, "error", api_real(c, ev->error_bound));
-    char evid[240];
     if (!strcmp(ev->solution, "kepler"))
-        snprintf(evid, sizeof evid,
+        snprintf(buf, n,
                  "closed form: conserved invariants drift %.2g relative over the samples, "
                  "universal Kepler equation residual %.2g relative",
                  ev->max_invariant_drift, ev->max_kepler_residual);
     else if (ev->max_invariant_drift > 0.0 || strcmp(ev->solution, "uniform_gravity_linear_drag"))
-        snprintf(evid, sizeof evid,
-                 "closed form: conserved invariants drift %.2g relative over the samples",
+        snprintf(buf, n, "closed form: conserved invariants drift %.2g relative over the samples",
                  ev->max_invariant_drift);
     else
-        snprintf(evid, sizeof evid,
+        snprintf(buf, n,
                  "closed form with drag (nothing conserved): round-off of the expm1 forms, a few "
                  "ulps");
-    json_object_set_new_nocheck(ach, "evidence", json_string(evid));
-    json_object_set_new_nocheck(ach, "met_target", json_boolean(ev->error_bound <= target));
-    json_object_set_new_nocheck(ach, "evaluations", json_integer(ev->evaluations));
-    json_object_set_new_nocheck(sel, "achieved", ach);
-    return sel;
 }
 
 /* diagnostics of an answer from the closed form: no integrator settings, 0
@@ -474,7 +427,7 @@ static json_t *closed_form_diagnostics(struct api_call *c, const struct api_traj
         json_object_set_new_nocheck(
             d, "error_estimate",
             json_pack("{s:s}", "skipped", "answered from the closed form: see reference"));
-    json_object_set_new_nocheck(d, "selection", closed_form_selection(c, rq));
+    json_object_set_new_nocheck(d, "selection", api_traj_selection(c, rq, r));
     return d;
 }
 
@@ -529,23 +482,69 @@ json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *
         }
         json_object_set_new_nocheck(d, "error_estimate", j);
     }
+    json_object_set_new_nocheck(d, "selection", api_traj_selection(c, rq, r));
+    return d;
+}
+
+json_t *api_traj_selection(struct api_call *c, const struct api_traj_request *rq,
+                           const struct mech_trajectory_result *r)
+{
+    const struct mech_trajectory_problem *p = &rq->p;
     json_t *sel = json_object();
     json_object_set_new_nocheck(sel, "requested",
                                 rq->requested ? json_deep_copy(rq->requested) : json_null());
-    json_t *set = api_traj_settings(c, p);
-    json_object_update(sel, set);
-    json_decref(set);
-    if (rq->chosen) {
-        json_object_set_new_nocheck(sel, "target_error", api_real(c, rq->choice.target));
-        char why[sizeof rq->choice.reason + 64];
-        snprintf(why, sizeof why, "%s%s",
-                 rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-                 rq->choice.reason);
-        json_object_set_new_nocheck(sel, "reason", json_string(why));
+    if (rq->closed_form) {
+        json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
     } else {
+        json_t *set = api_traj_settings(c, p);
+        json_object_update(sel, set);
+        json_decref(set);
+    }
+    if (!rq->chosen) {
         json_object_set_new_nocheck(sel, "reason",
                                     json_string("method and settings given in the request"));
+        return sel;
     }
-    json_object_set_new_nocheck(d, "selection", sel);
-    return d;
+    json_object_set_new_nocheck(sel, "target_error", api_real(c, rq->choice.target));
+    char why[sizeof rq->choice.reason + 160];
+    snprintf(why, sizeof why, "%s%s%s",
+             rq->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+             rq->choice.reason,
+             rq->dry_run && rq->auto_model
+                 ? "; dry run: \"fictitious\": \"auto\" not resolved (it needs a first pass), "
+                   "every applicable term assumed"
+                 : "");
+    json_object_set_new_nocheck(sel, "reason", json_string(why));
+    api_selection_predictions(c, &rq->choice.sel, sel);
+    if (r && rq->choice.sel.chosen >= 0) {
+        const struct mech_candidate *k = &rq->choice.sel.c[rq->choice.sel.chosen];
+        double err = -1.0;
+        const char *ev = "none";
+        char evbuf[240];
+        if (rq->closed_form) {
+            err = rq->evidence.error_bound;
+            closed_form_evidence_text(&rq->evidence, evbuf, sizeof evbuf);
+            ev = evbuf;
+        } else if (r->reference.kind == MECH_REFERENCE_EXACT) {
+            err = fmax(r->reference.max_relative_position_error,
+                       r->reference.max_relative_velocity_error);
+            ev = "exact reference (diagnostics.reference), max over the samples";
+        } else if (r->error_estimate.done && r->max_radius > 0.0) {
+            err = r->error_estimate.max_position_error_estimate / r->max_radius;
+            ev = "error_estimate's second run: max position difference / max |r|";
+        } else if (r->reference.kind == MECH_REFERENCE_FIRST_ORDER) {
+            ev = "none: the reference is first order in the rotation rate (see "
+                 "diagnostics.reference), not exact";
+        }
+        json_object_set_new_nocheck(sel, "achieved",
+                                    api_selection_achieved(c, k, rq->choice.target, err, ev,
+                                                           rq->cpu_s));
+    }
+    return sel;
 }
+
+json_t *api_traj_dry_run(struct api_call *c, const struct api_traj_request *rq)
+{
+    return api_dry_run_answer(c, api_traj_selection(c, rq, NULL));
+}
+

@@ -59,6 +59,12 @@
                  API_TRAJ_CLOSED_FORM)                                                           \
     "]}"
 
+/* The top-level "dry_run" key of every time-evolution operation. */
+#define API_DRY_RUN_PROP                                                                       \
+    "\"dry_run\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true: answer only "     \
+    "diagnostics.selection (every candidate method with its predicted error, evaluations and "  \
+    "CPU seconds from the calibrated model) without integrating: no samples, no pilot run\"}"
+
 /* The trajectory request; `extra` is appended to its properties (a schema
  * that embeds it adds the envelope keys the route table adds at the root). */
 #define API_TRAJ_REQUEST_SCHEMA API_TRAJ_REQUEST_SCHEMA_WITH("")
@@ -131,6 +137,7 @@
     "{\"const\":\"auto\"}]},"                                                                 \
     "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"}," \
     "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"     \
+    API_DRY_RUN_PROP ","                                                                       \
     "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","                                           \
     "\"error_estimate\":{\"type\":\"boolean\",\"default\":false,\"description\":\"when the "   \
     "scene has no exact or first-order reference, run it again at a tighter setting "          \
@@ -158,6 +165,8 @@ struct api_traj_request {
      * closed form (mech/closed_form.h): answer from it, integrate nothing */
     int closed_form;
     struct mech_closed_form_evidence evidence; /* filled by the closed-form run */
+    int dry_run;             /* 1: "dry_run": true (select, predict, integrate nothing) */
+    double cpu_s;            /* CPU seconds of the answer's integration (set by the caller) */
     /* "fictitious": "auto" */
     int auto_model;                       /* 1: the terms were chosen by the estimate */
     struct mech_trajectory_model model;   /* its evidence (when auto_model) */
@@ -203,6 +212,17 @@ json_t *api_traj_settings(struct api_call *c, const struct mech_trajectory_probl
  * asked), selection. New reference, or NULL on allocation failure. */
 json_t *api_traj_diagnostics(struct api_call *c, const struct api_traj_request *rq,
                              const struct mech_trajectory_result *r);
+
+/* diagnostics.selection (SELECTION.md): requested, settings, target_error,
+ * scene_class, span, model, candidates, method, reason and, when r is not
+ * NULL, achieved (the error evidence of r beside the prediction: exact
+ * reference, the error estimate's second run, or none). New reference. */
+json_t *api_traj_selection(struct api_call *c, const struct api_traj_request *rq,
+                           const struct mech_trajectory_result *r);
+
+/* {"dry_run": true, "diagnostics": {"selection", "steps": 0, "rhs_evaluations": 0}}
+ * for a request parsed with dry_run: nothing integrated. New reference. */
+json_t *api_traj_dry_run(struct api_call *c, const struct api_traj_request *rq);
 
 /* One invariant as JSON. New reference. */
 json_t *api_traj_invariant(struct api_call *c, const struct mech_trajectory_invariant *inv);

@@ -163,6 +163,13 @@ enum mech_status mech_scene_ballistic_run(const struct mech_scene_ballistic *s, 
     p->stop_direction = MECH_STOP_DECREASING;
     p->reduce_planar = 1;
 
+    if (s->dry_run) { /* the selection alone: nothing integrated */
+        p->fictitious = MECH_FICTITIOUS_ALL;
+        enum mech_status sc = mech_trajectory_choose(p, target, &out->choice, err);
+        p->method = out->choice.method;
+        p->opt = out->choice.opt;
+        return sc;
+    }
     /* "auto": which fictitious terms matter at this accuracy */
     if ((st = mech_trajectory_model_select(p, target, budget, &out->model, err)) != MECH_OK)
         return st;
@@ -269,6 +276,13 @@ enum mech_status mech_scene_table_run(const struct mech_scene_table *s, double t
     p->t_end = t_end;
     p->samples = s->samples;
     p->reduce_planar = 1;
+    if (s->dry_run) { /* the selection alone: nothing integrated */
+        p->fictitious = MECH_FICTITIOUS_ALL;
+        enum mech_status sc = mech_trajectory_choose(p, target, &out->choice, err);
+        p->method = out->choice.method;
+        p->opt = out->choice.opt;
+        return sc;
+    }
     enum mech_status st = mech_trajectory_model_select(p, target, budget, &out->model, err);
     if (st != MECH_OK) return st;
     p->fictitious = out->model.fictitious;

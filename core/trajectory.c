@@ -8,6 +8,7 @@
  * presets and the method choice behind {"accuracy": ...} / {"target_error": ...}.
  */
 #include "mech/trajectory.h"
+#include "mech/chooser.h"
 #include "mech/reference.h"
 
 #include <math.h>
@@ -1400,37 +1401,92 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
 }
 
 /* ---- choosing by accuracy ----------------------------------------------------
- * Presets, calibrated by measurement (issue 16, "Presets that mean what they
- * say"; figures in docs/accuracy.md, bench/bench_workprecision) on Kepler
- * e = 0.5 and 0.9 over 10 and 1000 orbits, the oscillator over 1e4 periods and
- * the falling object with Coriolis. Velocity-free scenes: draft is rk8pd (the
- * cheapest method meeting 1e-3: radau15's evaluations barely fall with a
- * looser eps; radau15 on very long central-gravity runs, where rk8pd would
- * cost more), balanced, precise and machine are radau15 at eps 1e-5, 1e-6 and
- * its round-off floor (1e-9), each before the run-length tightening of
- * mech_trajectory_choose. Velocity-dependent scenes (drag, Coriolis; also the
- * other operations' integrator blocks) keep rkf45 / rk8pd. Each keeps its
- * promise up to the round-off floor of long runs (about 1.5e-16 x span^1.5
- * relative over span dynamical times: 1.3e-10 over 1000 orbits of e = 0.5,
- * 1.1e-8 over 1000 orbits of e = 0.9); below that the selection says so. */
+ * The presets are targets (draft 1e-3, balanced 1e-8, precise 1e-10, machine
+ * 1e-11 relative); the method and its setting come from the predictive
+ * chooser (mech/chooser.h, core/chooser.c: a model calibrated by
+ * bench/bench_calibrate_chooser), which lists every candidate with its
+ * predicted error and cost and picks the cheapest predicted to meet the
+ * target. The `method`/`rtol` fields of the table below are what the
+ * chooser typically picks on a 10-orbit Kepler scene, kept for GET
+ * /v1/integrators; the choice itself is made per scene. Each preset keeps
+ * its promise up to the round-off floor of long runs (about Fm x span^g
+ * relative over span dynamical times, measured per class and method); below
+ * that the selection says so. */
 static const struct mech_accuracy_preset traj_presets[MECH_ACCURACY_COUNT] = {
-    {"draft", 1e-3, "rk8pd", "rkf45", 5e-6, 1e-5,
-     "cheap: rk8pd at a loose tolerance; for plots and previews (1e-3 relative)"},
-    {"balanced", 1e-8, "radau15", "rk8pd", 1e-5, 1e-12,
-     "the default: better than 1e-8 relative (radau15 at eps 1e-5, or rk8pd)"},
-    {"precise", 1e-10, "radau15", "rk8pd", 1e-6, 1e-13,
-     "for grading and reference answers: 1e-10 relative on runs of up to ~1000 dynamical "
-     "times; longer runs reach the round-off floor (~1.5e-16 x span^1.5)"},
-    {"machine", 1e-11, "radau15", "rk8pd", 1e-9, 1e-15,
-     "the methods at their round-off floor (radau15 eps 1e-9, rk8pd rtol 1e-15); the "
-     "remaining error is round-off accumulated over the run: ~1e-13 over 10 orbits, "
-     "~1.5e-16 x span^1.5 relative over span dynamical times (1.3e-10 over 1000 orbits of "
-     "e = 0.5, 1.1e-8 at e = 0.9): 1e-11 is kept on runs of up to ~300 dynamical times"},
+    /* typical picks (Kepler e = 0.5, 10 orbits; the falling object with
+     * Coriolis), measured by tests/core/test_chooser.c's output */
+    {"draft", 1e-3, "rk8pd", "rkf45", 3e-7, 1e-4,
+     "cheap: the cheapest method predicted to meet 1e-3 relative; for plots and previews"},
+    {"balanced", 1e-8, "rk8pd", "rkf45", 4.9e-12, 1e-9,
+     "the default: the cheapest method predicted to meet 1e-8 relative"},
+    {"precise", 1e-10, "radau15", "rkf45", 1.8e-7, 1e-11,
+     "for grading and reference answers: the cheapest method predicted to meet 1e-10 "
+     "relative; long runs reach the round-off floor (~F x span^g), which the answer states"},
+    {"machine", 1e-11, "radau15", "rkf45", 4.8e-8, 1e-12,
+     "1e-11 relative where round-off allows (~1e-13 over 10 orbits; 3.4e-11 over 1000 orbits "
+     "of e = 0.5, 1.2e-9 at e = 0.9, 7e-12 over 1e4 oscillator periods): the answer says when "
+     "the run is beyond it"},
 };
 
 const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
 {
     return (int)a >= 0 && a < MECH_ACCURACY_COUNT ? &traj_presets[a] : NULL;
+}
+
+/* The chooser's profile of a trajectory scene: its class, its dynamical time
+ * T = min(t_end, sqrt(|r0| / |a0|)), span = t_end / T, and the scale S of
+ * positions and velocities (atol = rtol x S). */
+static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ctx *c,
+                         struct mech_scene_profile *s, double *L_out, double *V_out)
+{
+    memset(s, 0, sizeof *s);
+    double a0[3] = {0, 0, 0}, q0[3] = {p->position.x, p->position.y, p->position.z},
+           v0[3] = {p->velocity.x, p->velocity.y, p->velocity.z};
+    struct mech_vec3 acc = mech_vec3_make(0, 0, 0);
+    if (traj_accel(0.0, q0, v0, a0, c) == MECH_OK) acc = mech_vec3_make(a0[0], a0[1], a0[2]);
+    const double an = mech_vec3_norm(acc), vn = mech_vec3_norm(p->velocity);
+    const double rn = mech_vec3_norm(p->position);
+    double T = p->t_end;
+    if (an > 0.0 && rn > 0.0) T = fmin(T, sqrt(rn / an));
+    if (!(T > 0.0 && isfinite(T))) T = p->t_end > 0.0 ? p->t_end : 1.0;
+    double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
+    double V = fmax(vn, an * T);
+    double S = L > 0.0 && V > 0.0 ? fmin(L, V) : fmax(L, V);
+    if (!(S > 0.0 && isfinite(S))) S = 1.0;
+    *L_out = L;
+    *V_out = V;
+    int central = 0, spring = 0;
+    double drag_rate = 0.0;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) central = 1;
+        if (p->forces[i].type == MECH_FORCE_SPRING && p->forces[i].u.spring.k > 0.0) spring = 1;
+        if (p->forces[i].type == MECH_FORCE_LINEAR_DRAG && p->mass > 0.0)
+            drag_rate += p->forces[i].u.linear_drag.b / p->mass;
+    }
+    /* uniform_field only for uniform gravity (and a frame whose rotation
+     * bends the fall little over the run): motion close to a polynomial;
+     * drag, magnetic fields, tides and rotating frames are "general" */
+    int only_uniform = 1;
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type != MECH_FORCE_UNIFORM_GRAVITY) only_uniform = 0;
+    const double w_run = mech_vec3_norm(mech_frame_omega(&p->frame)) * p->t_end;
+    if (p->frame.type != MECH_FRAME_INERTIAL && !(w_run < 1e-2)) only_uniform = 0;
+    s->cls = central        ? MECH_SCENE_CENTRAL_GRAVITY
+           : spring         ? MECH_SCENE_OSCILLATOR
+           : only_uniform   ? MECH_SCENE_UNIFORM_FIELD
+                            : MECH_SCENE_GENERAL;
+    s->T = T;
+    s->span = p->t_end / T;
+    s->scale = S;
+    s->samples = p->samples;
+    s->second_order = 1;
+    s->velocity_dependent = scene_velocity_dependent(c);
+    /* stiff: a damping time far shorter than the dynamical time and the run */
+    s->stiff = drag_rate * fmin(T, p->t_end) > 1e2;
+    struct mech_trajectory_reference ref;
+    s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
+    s->closed_form_name = s->closed_form ? ref.name : NULL;
+    s->closed_form_allowed = !p->closed_form_off;
 }
 
 enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p, double target,
@@ -1444,101 +1500,52 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
     memset(out, 0, sizeof *out);
     struct traj_ctx c;
     ctx_init(&c, p, 0.0, NULL);
-    const int velocity_free = !scene_velocity_dependent(&c);
-
-    /* The loosest preset whose promise meets the target; below a preset's
-     * promise its rtol scales with the target (radau15's eps is floored at
-     * 1e-10 by the method itself: round-off). */
-    const struct mech_accuracy_preset *pr = &traj_presets[MECH_ACCURACY_DRAFT];
-    for (int a = 0; a < MECH_ACCURACY_COUNT; a++) {
-        pr = &traj_presets[a];
-        if (pr->promise <= target) break;
-    }
-    /* Scale of the motion: positions max(|r0|, |v0| T, |a0| T^2/2), velocities
-     * max(|v0|, |a0| T), T = min(t_end, sqrt(|r0| / |a0|)); atol = rtol * the smaller. */
-    double a0[3] = {0, 0, 0}, q0[3] = {p->position.x, p->position.y, p->position.z},
-           v0[3] = {p->velocity.x, p->velocity.y, p->velocity.z};
-    struct mech_vec3 acc = mech_vec3_make(0, 0, 0);
-    if (traj_accel(0.0, q0, v0, a0, &c) == MECH_OK) acc = mech_vec3_make(a0[0], a0[1], a0[2]);
-    const double an = mech_vec3_norm(acc), vn = mech_vec3_norm(p->velocity);
-    const double rn = mech_vec3_norm(p->position);
-    /* T: t_end, or the dynamical time sqrt(|r0| / |a0|) when shorter (an
-     * orbit or an oscillation does not keep accelerating one way) */
-    double T = p->t_end;
-    if (an > 0.0 && rn > 0.0) T = fmin(T, sqrt(rn / an));
-    double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
-    double V = fmax(vn, an * T);
-    double S = L > 0.0 && V > 0.0 ? fmin(L, V) : fmax(L, V);
-    if (!(S > 0.0 && isfinite(S))) S = 1.0;
-
-    /* The global error of an adaptive run grows with the number of dynamical
-     * times it spans (the phase error of orbits and oscillations). The presets
-     * were calibrated on 10 orbits, 20 pi ~ 63 dynamical times, so a longer
-     * run gets a tighter rtol: by calibrated/span for radau15 and the
-     * velocity-dependent methods, by its square for rk8pd on velocity-free
-     * central-gravity scenes, whose period depends on the energy (measured: its error over 1000 Kepler orbits grows about as the
-     * square of the run length, 4.9e-5 over 10 orbits and 0.77 over 1000 at
-     * rtol 1e-6; bench/bench_workprecision). */
-    const double calibrated_span = 62.831853071795865; /* 20 pi */
-    const double span = T > 0.0 ? p->t_end / T : 1.0;
-    double length_factor = span > calibrated_span ? calibrated_span / span : 1.0;
-    const char *method = velocity_free ? pr->method : pr->method_other;
-    int central = 0; /* Kepler-like: the period depends on the energy */
-    for (size_t i = 0; i < p->n_forces; i++)
-        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) central = 1;
-    if (velocity_free && central && strcmp(method, "radau15") != 0)
-        length_factor *= length_factor;
-
-    const double base = velocity_free ? pr->rtol : pr->rtol_other;
-    /* a target looser than the preset's promise loosens rtol (at most 10x),
-     * except radau15's eps: its error falls too steeply with eps to scale */
-    const double loosen = velocity_free && !strcmp(method, "radau15") ? 1.0 : 10.0;
-    double rtol = base * fmin(target / pr->promise, loosen) * length_factor;
-    /* Below rtol 1e-12 rk8pd costs more evaluations than radau15 at round-off
-     * (measured over 1000 orbits of e = 0.9: 2.5 M at rtol 5e-13 against
-     * 2.2 M): a draft that long runs radau15 at eps 2e-3 x the linear factor
-     * instead (there 6.3e-7: error ~1e-4, 1.3 M evaluations). */
-    const int long_draft = velocity_free && central && !strcmp(method, "rk8pd") && rtol < 1e-12;
-    if (long_draft) {
-        method = "radau15";
-        rtol = 2e-3 * (span > calibrated_span ? calibrated_span / span : 1.0);
-    }
-    const int floored = rtol < 1e-15;
-    if (floored) rtol = 1e-15;
-    out->method = method;
+    double L, V;
+    traj_profile(p, &c, &out->profile, &L, &V);
+    enum mech_status st = mech_choose(&out->profile, target, &out->sel, err);
+    if (st != MECH_OK) return st;
+    if (out->sel.chosen < 0 || out->sel.integrating < 0)
+        return mech_error_set(err, MECH_EINTERNAL, NULL, "no candidate method applies");
+    /* method/opt are always an integrator's (the best integrating candidate),
+     * so callers that only integrate (scenes, the auto-model's first pass)
+     * can; closed_form says the closed form was chosen over it */
+    out->closed_form = out->sel.integrating != out->sel.chosen;
+    const struct mech_candidate *ch = &out->sel.c[out->sel.integrating];
+    out->method = ch->method;
+    out->opt = ch->opt;
     out->target = target;
-
-    out->opt.rtol = rtol;
-    out->opt.atol = rtol * S;
-    /* Round-off floor of a velocity-free run over `span` dynamical times
-     * (radau15 at eps 1e-9, measured: 1.7e-13 over 10 orbits of e = 0.5,
-     * 1.3e-10 over 1000, 1.1e-8 over 1000 orbits of e = 0.9, 1.8e-11 over
-     * 1e4 oscillator periods): about 1.5e-16 x span^1.5, at least 1e-14. */
-    const double floor_est = fmax(1e-14, 1.5e-16 * pow(fmax(span, 1.0), 1.5));
-    char beyond[200] = "";
-    if (velocity_free && target < floor_est)
+    const double span = out->profile.span;
+    char beyond[240] = "";
+    if (out->sel.beyond || target < out->sel.roundoff_floor)
         snprintf(beyond, sizeof beyond,
                  "; the target may be beyond what the preset can keep: over %.3g dynamical "
-                 "times round-off alone can reach about %.1g relative",
-                 span, floor_est);
-    else if (floored)
-        snprintf(beyond, sizeof beyond,
-                 "; beyond what the preset can keep: the tolerance needed for %.3g dynamical "
-                 "times is below rtol 1e-15",
-                 span);
+                 "times round-off alone can reach about %.1g relative (best predicted %.2g)",
+                 span, out->sel.roundoff_floor, ch->predicted_error);
+    if (out->closed_form) {
+        snprintf(out->reason, sizeof out->reason,
+                 "%s %s scene over %.3g dynamical times: the exact %s solution is the cheapest "
+                 "candidate meeting %.0e relative (predicted error %.2g, %.2g s CPU for %zu "
+                 "samples): answered from it, nothing integrated; the best integrator would "
+                 "be %s at %s %.3g (predicted error %.2g, %.3g evaluations, %.2g s CPU)",
+                 out->profile.velocity_dependent ? "velocity-dependent" : "velocity-free",
+                 mech_scene_class_name(out->profile.cls), span,
+                 out->profile.closed_form_name ? out->profile.closed_form_name : "closed-form",
+                 target, out->sel.c[out->sel.chosen].predicted_error,
+                 out->sel.c[out->sel.chosen].predicted_cpu_s, out->profile.samples, ch->method,
+                 ch->adaptive ? "rtol" : "dt", ch->adaptive ? ch->opt.rtol : ch->opt.dt,
+                 ch->predicted_error, ch->predicted_evaluations, ch->predicted_cpu_s);
+        return MECH_OK;
+    }
     snprintf(out->reason, sizeof out->reason,
-             "%s scene: %s; preset \"%s\" (promise %.0e relative) at rtol %.3g%s%s; atol = rtol x "
-             "%.3g (the smaller of the position scale %.3g m and the velocity scale %.3g m/s)%s",
-             velocity_free ? "velocity-free" : "velocity-dependent (drag or Coriolis)",
-             !velocity_free ? "rk8pd handles velocity-dependent forces robustly"
-             : strcmp(method, "radau15") ? "rk8pd is the cheapest method meeting the promise"
-             : long_draft ? "radau15 at a loose eps: over this many dynamical times rk8pd would "
-                            "cost more"
-                                         : "radau15 reaches round-off in few steps",
-             pr->name, pr->promise, rtol,
-             target < pr->promise ? " (target below every promise: round-off)" : "",
-             length_factor < 1.0 ? " (tightened for a run of many dynamical times)" : "", S, L, V,
-             beyond);
+             "%s %s scene over %.3g dynamical times (T = %.4g s): %s at %s %.3g is the "
+             "cheapest candidate predicted to meet %.0e relative (predicted error %.2g, %.3g "
+             "evaluations, %.2g s CPU)%s; atol = rtol x %.3g (the smaller of the position "
+             "scale %.3g m and the velocity scale %.3g m/s)",
+             out->profile.velocity_dependent ? "velocity-dependent" : "velocity-free",
+             mech_scene_class_name(out->profile.cls), span, out->profile.T, ch->method,
+             ch->adaptive ? "rtol" : "dt", ch->adaptive ? ch->opt.rtol : ch->opt.dt, target,
+             ch->predicted_error, ch->predicted_evaluations, ch->predicted_cpu_s, beyond,
+             out->profile.scale, L, V);
     return MECH_OK;
 }
 

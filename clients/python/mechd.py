@@ -393,7 +393,7 @@ class _Operations:
         """
         return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('cost', cost)))
 
-    def rigid_rotate(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, inertia: Optional[Dict[str, Any]] = None, omega: Optional[List[float]] = None, orientation: Optional[Dict[str, Any]] = None, torque: Optional[Dict[str, Any]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def rigid_rotate(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, inertia: Optional[Dict[str, Any]] = None, omega: Optional[List[float]] = None, orientation: Optional[Dict[str, Any]] = None, torque: Optional[Dict[str, Any]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Euler's equations with a quaternion attitude: free or torqued rotation of a rigid body, checked against the exact torque-free solution
 
         POST /v1/rigid/rotate. The request is `body` (a dict) and/or the keyword arguments below
@@ -417,13 +417,16 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/rigid/rotate', body, (('moments', moments), ('inertia', inertia), ('omega', omega), ('orientation', orientation), ('torque', torque), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+        return self._operation('/v1/rigid/rotate', body, (('moments', moments), ('inertia', inertia), ('omega', omega), ('orientation', orientation), ('torque', torque), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
 
-    def rigid_top(self, body: Optional[Dict[str, Any]] = None, *, I1: Optional[float] = None, I3: Optional[float] = None, mass: Optional[float] = None, distance: Optional[float] = None, g: Optional[float] = None, theta: Optional[float] = None, phi: Optional[float] = None, psi: Optional[float] = None, theta_dot: Optional[float] = None, phi_dot: Optional[float] = None, psi_dot: Optional[float] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def rigid_top(self, body: Optional[Dict[str, Any]] = None, *, I1: Optional[float] = None, I3: Optional[float] = None, mass: Optional[float] = None, distance: Optional[float] = None, g: Optional[float] = None, theta: Optional[float] = None, phi: Optional[float] = None, psi: Optional[float] = None, theta_dot: Optional[float] = None, phi_dot: Optional[float] = None, psi_dot: Optional[float] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Heavy symmetric top with a fixed tip: Euler angles, nutation range, conserved momenta, sleeping-top stability
 
         POST /v1/rigid/top. The request is `body` (a dict) and/or the keyword arguments below
@@ -449,11 +452,14 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/rigid/top', body, (('I1', I1), ('I3', I3), ('mass', mass), ('distance', distance), ('g', g), ('theta', theta), ('phi', phi), ('psi', psi), ('theta_dot', theta_dot), ('phi_dot', phi_dot), ('psi_dot', psi_dot), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+        return self._operation('/v1/rigid/top', body, (('I1', I1), ('I3', I3), ('mass', mass), ('distance', distance), ('g', g), ('theta', theta), ('phi', phi), ('psi', psi), ('theta_dot', theta_dot), ('phi_dot', phi_dot), ('psi_dot', psi_dot), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
 
     def rigid_stability(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, axis: Optional[int] = None, spin: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Stability of spin about a principal axis: k in eps'' = k eps, the frequency or growth rate, and which axis is intermediate
@@ -742,7 +748,7 @@ class _Operations:
         """
         return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
 
-    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
 
         POST /v1/gr/geodesic. The request is `body` (a dict) and/or the keyword arguments below
@@ -776,13 +782,16 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('cost', cost)))
+        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
 
-    def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, Hénon–Heiles, 3D potentials) with conserved momenta and energy
 
         POST /v1/hamiltonian/flow. The request is `body` (a dict) and/or the keyword arguments below
@@ -799,13 +808,16 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/hamiltonian/flow', body, (('system', system), ('q', q), ('p', p), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('cost', cost)))
+        return self._operation('/v1/hamiltonian/flow', body, (('system', system), ('q', q), ('p', p), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
 
-    def hamiltonian_liouville(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, curve: Optional[Any] = None, reference: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrators: Optional[List[Any]] = None, tol: Optional[float] = None, max_intervals: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def hamiltonian_liouville(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, curve: Optional[Any] = None, reference: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrators: Optional[List[Any]] = None, tol: Optional[float] = None, max_intervals: Optional[int] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Phase-space area of a closed curve of initial conditions over time and the tangent map's determinant, symplectic beside non-symplectic
 
         POST /v1/hamiltonian/liouville. The request is `body` (a dict) and/or the keyword arguments below
@@ -823,13 +835,16 @@ class _Operations:
                     scale/20) and rk4 (dt = time scale/2)
             tol: relative quadrature bound on the area; default 1e-12
             max_intervals: integer >= 4, <= 4096; default 256.0
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/hamiltonian/liouville', body, (('system', system), ('curve', curve), ('reference', reference), ('t_end', t_end), ('samples', samples), ('integrators', integrators), ('tol', tol), ('max_intervals', max_intervals), ('cost', cost)))
+        return self._operation('/v1/hamiltonian/liouville', body, (('system', system), ('curve', curve), ('reference', reference), ('t_end', t_end), ('samples', samples), ('integrators', integrators), ('tol', tol), ('max_intervals', max_intervals), ('dry_run', dry_run), ('cost', cost)))
 
-    def hamiltonian_poincare(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, section: Optional[Dict[str, Any]] = None, orbits: Optional[List[Any]] = None, t_max: Optional[float] = None, max_crossings: Optional[int] = None, integrator: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def hamiltonian_poincare(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, section: Optional[Dict[str, Any]] = None, orbits: Optional[List[Any]] = None, t_max: Optional[float] = None, max_crossings: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Poincaré sections (Hénon–Heiles, spherical pendulum, ...) with crossings located by root-finding
 
         POST /v1/hamiltonian/poincare. The request is `body` (a dict) and/or the keyword arguments below
@@ -846,13 +861,16 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/hamiltonian/poincare', body, (('system', system), ('section', section), ('orbits', orbits), ('t_max', t_max), ('max_crossings', max_crossings), ('integrator', integrator), ('cost', cost)))
+        return self._operation('/v1/hamiltonian/poincare', body, (('system', system), ('section', section), ('orbits', orbits), ('t_max', t_max), ('max_crossings', max_crossings), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
 
-    def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
 
         POST /v1/trajectory. The request is `body` (a dict) and/or the keyword arguments below
@@ -868,6 +886,9 @@ class _Operations:
                     terms that matter at the requested accuracy); default all four
             t_end (required): s
             samples: integer >= 2, <= 100000; default 101.0
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
@@ -880,9 +901,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/trajectory', body, (('particle', particle), ('frame', frame), ('forces', forces), ('fictitious', fictitious), ('t_end', t_end), ('samples', samples), ('integrator', integrator), ('error_estimate', error_estimate), ('stop', stop), ('cost', cost)))
+        return self._operation('/v1/trajectory', body, (('particle', particle), ('frame', frame), ('forces', forces), ('fictitious', fictitious), ('t_end', t_end), ('samples', samples), ('dry_run', dry_run), ('integrator', integrator), ('error_estimate', error_estimate), ('stop', stop), ('cost', cost)))
 
-    def compare(self, body: Optional[Dict[str, Any]] = None, *, operation: Optional[str] = None, request: Optional[Dict[str, Any]] = None, runs: Optional[List[Any]] = None, sweep: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def compare(self, body: Optional[Dict[str, Any]] = None, *, operation: Optional[str] = None, request: Optional[Dict[str, Any]] = None, runs: Optional[List[Any]] = None, sweep: Optional[Dict[str, Any]] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Run one scene with many integrator settings: error, drift, steps and CPU per run
 
         POST /v1/compare. The request is `body` (a dict) and/or the keyword arguments below
@@ -895,11 +916,14 @@ class _Operations:
             request (required): object
             runs: integrator blocks, one row each; give runs or sweep
             sweep: object
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/compare', body, (('operation', operation), ('request', request), ('runs', runs), ('sweep', sweep), ('cost', cost)))
+        return self._operation('/v1/compare', body, (('operation', operation), ('request', request), ('runs', runs), ('sweep', sweep), ('dry_run', dry_run), ('cost', cost)))
 
     def frames_effective_force(self, body: Optional[Dict[str, Any]] = None, *, frame: Optional[Dict[str, Any]] = None, particle: Optional[Dict[str, Any]] = None, force: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The fictitious forces in an accelerating, rotating frame, term by term (translational, Euler, Coriolis, centrifugal), and the effective force and acceleration seen in the frame
@@ -959,7 +983,7 @@ class _Operations:
         """
         return self._operation('/v1/earth/tides', body, (('body', body_), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
 
-    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
 
         POST /v1/scenes/falling-object. The request is `body` (a dict) and/or the keyword arguments below
@@ -975,13 +999,16 @@ class _Operations:
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical
 
         POST /v1/scenes/vertical-shot. The request is `body` (a dict) and/or the keyword arguments below
@@ -998,13 +1025,16 @@ class _Operations:
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change
 
         POST /v1/scenes/cannonball. The request is `body` (a dict) and/or the keyword arguments below
@@ -1024,11 +1054,14 @@ class _Operations:
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
     def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
@@ -1065,7 +1098,7 @@ class _Operations:
         """
         return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
 
-    def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The notes' rotating-table puck experiments seen from the inertial and the rotating frame
 
         POST /v1/scenes/rotating-table. The request is `body` (a dict) and/or the keyword arguments below
@@ -1085,11 +1118,14 @@ class _Operations:
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/rotating-table', body, (('experiment', experiment), ('omega', omega), ('radius', radius), ('mass', mass), ('position', position), ('velocity', velocity), ('t_end', t_end), ('samples', samples), ('accuracy', accuracy), ('target_error', target_error), ('cost', cost)))
+        return self._operation('/v1/scenes/rotating-table', body, (('experiment', experiment), ('omega', omega), ('radius', radius), ('mass', mass), ('position', position), ('velocity', velocity), ('t_end', t_end), ('samples', samples), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
 
 OPERATIONS = {

@@ -43,6 +43,8 @@ struct mech_scene_ballistic {
     double omega;        /* Earth rotation rate W (rad/s), [0, 1e-2] */
     struct mech_vec3 r0; /* m; r0.z >= 0 */
     struct mech_vec3 v0; /* m/s; the projectile must reach z = 0 going down */
+    int dry_run;         /* 1: stop after the choice (problem, choice set; every applicable
+                            fictitious term assumed, no first pass, nothing integrated) */
 };
 
 /* A landing point: time and position. */
@@ -117,6 +119,7 @@ struct mech_scene_table {
     struct mech_vec3 r0, v0; /* CUSTOM: inertial position and velocity at t = 0 */
     double t_end;            /* CUSTOM: s, > 0; else set by the experiment */
     size_t samples;          /* 2..MECH_TRAJECTORY_MAX_SAMPLES */
+    int dry_run;             /* 1: stop after the choice, as mech_scene_ballistic.dry_run */
 };
 
 struct mech_scene_table_result {

@@ -27,6 +27,7 @@
 
 #include "mech/budget.h"
 #include "mech/constants.h"
+#include "mech/chooser.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/vec.h"
@@ -113,6 +114,8 @@ struct mech_trajectory_problem {
     enum mech_stop_direction stop_direction;
     int reduce_planar;            /* 1: integrate a planar scene in two dimensions (see
                                      mech_trajectory_plane); 0: always in three */
+    int closed_form_off;          /* 1: the chooser must not pick the closed form
+                                     (integrator.closed_form false) */
 };
 
 /* One modelled (or deliberately omitted) term. */
@@ -226,14 +229,16 @@ enum mech_accuracy {
     MECH_ACCURACY_COUNT
 };
 
-/* An accuracy preset: what it promises and what it maps to. */
+/* An accuracy preset: what it promises (the chooser's target) and, for GET
+ * /v1/integrators, what the chooser typically picks on a 10-orbit Kepler
+ * scene (the choice itself is made per scene by mech/chooser.h). */
 struct mech_accuracy_preset {
     const char *name;         /* "draft", "balanced", "precise", "machine" */
     double promise;           /* relative error on positions and velocities it aims at */
-    const char *method;       /* method for velocity-free conservative scenes */
-    const char *method_other; /* method otherwise (drag, Coriolis) */
-    double rtol;              /* rtol given to `method` */
-    double rtol_other;        /* rtol given to `method_other` */
+    const char *method;       /* typical method, velocity-free scenes */
+    const char *method_other; /* typical method, velocity-dependent scenes */
+    double rtol;              /* its typical rtol */
+    double rtol_other;        /* its typical rtol */
     const char *doc;
 };
 
@@ -245,23 +250,28 @@ struct mech_trajectory_choice {
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
     char reason[640];            /* why: scene class, scale, tolerance mapping */
+    struct mech_scene_profile profile; /* what the chooser was told about the scene */
+    struct mech_selection sel;   /* every candidate with its predictions and verdict */
+    int closed_form;             /* 1: the closed form was chosen (mech/closed_form.h);
+                                    method/opt are still the best integrator's */
 };
 
 /* Choose a method and tolerances for p (its method/opt are ignored) so that
  * positions and velocities are accurate to `target` relative (target in
- * [1e-15, 0.1]; use mech_accuracy_preset_at(a)->promise for a preset).
- * Velocity-free conservative scenes (no drag, no Coriolis) get the preset's
- * `method`, others `method_other` (draft on a central-gravity run so long that
- * rk8pd's rtol would fall below 1e-12 gets radau15 instead). rtol is the
- * preset's, tightened for runs longer than 20 pi dynamical times by
- * 20 pi / span (squared for rk8pd on central gravity); the reason says when
- * the target may be below the round-off floor of the run (~1.5e-16 span^1.5).
- * The absolute tolerance is rtol times the
- * scene's smallest characteristic size of positions and velocities (from r0,
- * v0, the initial acceleration a0 and T = min(t_end, sqrt(|r0| / |a0|)):
- * max(|r0|, |v0| T, |a0| T^2/2) and max(|v0|, |a0| T)), so the choice does not
- * depend on the units.
- * Statuses: MECH_OK, MECH_EINVAL (target out of range). */
+ * [1e-15, 0.1]; use mech_accuracy_preset_at(a)->promise for a preset), with
+ * the predictive chooser (mech/chooser.h): the scene's profile (class
+ * central_gravity / oscillator / uniform_field / general, span = t_end / T
+ * with T = min(t_end, sqrt(|r0| / |a0|)), samples, velocity dependence, a
+ * stiffness hint from drag, the exact reference as closed_form unless
+ * p->closed_form_off) goes to mech_choose, which lists every candidate with
+ * its predicted error and cost in out->sel and picks the cheapest predicted
+ * to meet the target. The reason says when the target may be beyond the
+ * round-off floor of the run. The absolute tolerance is rtol times the
+ * scene's smallest characteristic size of positions and velocities
+ * (max(|r0|, |v0| T, |a0| T^2/2) and max(|v0|, |a0| T)), so the choice does
+ * not depend on the units. Integrates nothing.
+ * Statuses: MECH_OK, MECH_EINVAL (target out of range), MECH_EINTERNAL (no
+ * candidate applies). */
 enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p, double target,
                                         struct mech_trajectory_choice *out,
                                         struct mech_error *err);

@@ -1,0 +1,119 @@
+/* mech/chooser.h — the predictive method chooser behind {"accuracy": ...} and
+ * {"target_error": ...} (issue 16, "A chooser that predicts cost and error").
+ *
+ * Given a profile of the scene (its class, the run's length in dynamical
+ * times, the scale of its state, its sample count, whether it has a
+ * second-order form, velocity-dependent forces, stiffness, a closed form) and
+ * a target relative error, mech_choose() lists every candidate method with
+ * the setting that would meet the target, its predicted error, evaluations
+ * and CPU seconds, and a verdict: "chosen" (the cheapest predicted to meet
+ * the target), "costlier", "misses_target" or "not_applicable", each with why.
+ *
+ * The model (core/chooser.c, constants in core/chooser_table.h, measured by
+ * bench/bench_calibrate_chooser.c on this machine's build):
+ *   adaptive:   error = A tol^a span^b,    evaluations = B span tol^-c
+ *   fixed step: error = A (h/T)^a span^b,  evaluations = B span (h/T)^-c
+ *   + evals_per_sample x samples (each sample is a sub-step),
+ *   error >= F span^g (round-off accumulated over the run, F and g measured),
+ *   CPU = evaluations x CPU seconds per evaluation (measured per method).
+ * It costs microseconds and integrates nothing (dry runs use it alone).
+ *
+ * Thread-safety: reentrant; the table is constant. */
+#ifndef MECH_CHOOSER_H
+#define MECH_CHOOSER_H
+
+#include <stddef.h>
+
+#include "mech/ode.h"
+#include "mech/status.h"
+
+enum mech_scene_class {
+    MECH_SCENE_CENTRAL_GRAVITY = 0, /* a central 1/r^2 force dominates (Kepler-like) */
+    MECH_SCENE_OSCILLATOR,          /* a spring dominates */
+    MECH_SCENE_UNIFORM_FIELD,       /* uniform fields only (projectiles, falls, Coriolis) */
+    MECH_SCENE_FIRST_ORDER,         /* first-order systems: rigid bodies, geodesics, flows */
+    MECH_SCENE_GENERAL,             /* other particle scenes: drag, magnetic fields, tides,
+                                       rotating frames without a dominant force */
+    MECH_SCENE_CLASS_COUNT
+};
+
+/* "central_gravity", "oscillator", "uniform_field", "first_order", "general";
+ * NULL if out of range. */
+const char *mech_scene_class_name(enum mech_scene_class c);
+
+struct mech_scene_profile {
+    enum mech_scene_class cls;
+    double span;            /* run length in dynamical times T, >= 0 */
+    double T;               /* the dynamical time, s (> 0): fixed steps are h = x T */
+    double scale;           /* atol = rtol x scale (> 0) */
+    size_t samples;         /* samples written (each costs a sub-step) */
+    double rhs_cost_s;      /* CPU s of one right-hand side if known (0: the table's) */
+    int second_order;       /* q'' = a(t, q, v) form exists (radau15, yoshida6 apply) */
+    int velocity_dependent; /* forces depend on v (drag, Coriolis, magnetic): no yoshida6 */
+    int stiff;              /* stiffness hint: msbdf applies */
+    int closed_form;        /* the scene has an exact solution (MECH_REFERENCE_EXACT) */
+    int closed_form_allowed;/* the request allows it (integrator.closed_form, default 1) */
+    const char *closed_form_name; /* e.g. "kepler" (static) or NULL */
+};
+
+enum mech_verdict {
+    MECH_VERDICT_CHOSEN = 0,
+    MECH_VERDICT_COSTLIER,
+    MECH_VERDICT_MISSES_TARGET,
+    MECH_VERDICT_NOT_APPLICABLE
+};
+
+/* "chosen", "costlier", "misses_target", "not_applicable". */
+const char *mech_verdict_name(enum mech_verdict v);
+
+#define MECH_CHOOSER_MAX_CANDIDATES 10
+
+struct mech_candidate {
+    const char *method;           /* registry name or "closed_form" (static) */
+    int adaptive;                 /* 1: opt.rtol/atol; 0: opt.dt (fixed step) */
+    int has_settings;             /* 0 for closed_form and not_applicable methods */
+    struct mech_ode_options opt;  /* the setting predicted to meet the target */
+    double predicted_error;       /* relative, on positions and velocities (or the state) */
+    double predicted_evaluations; /* right-hand-side evaluations (0 if no prediction) */
+    double predicted_cpu_s;       /* CPU seconds */
+    int predicted;                /* 1: the three predictions above are set */
+    enum mech_verdict verdict;
+    char why[300];
+};
+
+struct mech_selection {
+    double target;                /* relative error aimed at */
+    enum mech_scene_class cls;
+    double span;                  /* dynamical times */
+    double roundoff_floor;        /* predicted round-off floor over the run */
+    int beyond;                   /* 1: the target is within the model's margin of the
+                                     round-off floor (may not be kept); 2: no candidate
+                                     is predicted to meet it */
+    size_t n;
+    struct mech_candidate c[MECH_CHOOSER_MAX_CANDIDATES];
+    int chosen;                   /* index into c, or -1 (none applicable) */
+    int integrating;              /* index of the chosen integrating candidate (the
+                                     chosen one unless the closed form is), or -1 */
+    char model[200];              /* which model made the predictions */
+};
+
+/* Fill *out with the candidates for scene s at `target` (relative error, in
+ * [1e-15, 0.1]) and choose the cheapest predicted to meet it; when none is,
+ * the candidate with the smallest predicted error is chosen and out->beyond
+ * is 2 (1 when the target is within the margin of the round-off floor).
+ * closed_form is listed when s->closed_form and competes on predicted cost
+ * when s->closed_form_allowed (it is then chosen: its cost grows with the
+ * samples only); out->integrating is the best integrating candidate all the
+ * same, for callers that cannot evaluate the closed form. wisdom_holman when the registry
+ * has it (central_gravity, placeholder constants). Statuses: MECH_OK,
+ * MECH_EINVAL (NULL argument, target out of range, span/T/scale invalid). */
+enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
+                             struct mech_selection *out, struct mech_error *err);
+
+/* The predicted relative error of `method` at setting x (rtol, or h/T for
+ * fixed step) on scene s, from the calibrated model; -1 if the table has no
+ * row for it. For tests and benches. */
+double mech_chooser_predict_error(const struct mech_scene_profile *s, const char *method,
+                                  double x);
+
+#endif

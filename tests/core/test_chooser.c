@@ -1,0 +1,249 @@
+/* test_chooser.c — the predictive chooser (core/chooser.c, issue 16): on the
+ * scene set (Kepler e = 0.5 and 0.9 over 10 and 1000 orbits, the oscillator
+ * over 1e4 periods, the falling object with Coriolis) each preset meets its
+ * promise (exact reference, or an independent round-off run with rk8pd at
+ * rtol 1e-14) unless the selection said the target is beyond the run's
+ * round-off floor; the predicted error is within CHOOSER_UNDER / CHOOSER_OVER
+ * of the achieved one; the four presets choose four different computations; the
+ * selection lists candidates with verdicts; closed_form is listed for exact
+ * scenes and kept out by closed_form_off. Never timing. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "mech/chooser.h"
+#include "mech/scenes.h"
+#include "mech/trajectory.h"
+#include "testlib.h"
+
+/* The achieved error is at most CHOOSER_UNDER x the predicted one (the model
+ * never promises much more than the run delivers) and at least the predicted
+ * over CHOOSER_OVER (its conservatism: radau15's steep error law over long
+ * runs overestimates by up to ~40x); errors below 1e-13 relative count as
+ * 1e-13 (round-off over the samples). */
+#define CHOOSER_UNDER 30.0
+#define CHOOSER_OVER 100.0
+#define NS 101
+#define T_PI 3.14159265358979323846
+
+struct scene {
+    const char *name;
+    struct mech_trajectory_problem p;
+    struct mech_force f[1];
+    int exact;
+};
+
+static void kepler(struct scene *s, const char *name, double e, double orbits)
+{
+    memset(s, 0, sizeof *s);
+    s->name = name;
+    s->f[0].type = MECH_FORCE_CENTRAL_GRAVITY;
+    s->f[0].u.central_gravity.gm = 1.0;
+    s->p.mass = 1.0;
+    s->p.position = mech_vec3_make(1.0 - e, 0, 0);
+    s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
+    s->p.t_end = orbits * 2.0 * T_PI;
+    s->exact = 1;
+}
+
+static void oscillator(struct scene *s)
+{
+    memset(s, 0, sizeof *s);
+    s->name = "oscillator 1e4 periods";
+    s->f[0].type = MECH_FORCE_SPRING;
+    s->f[0].u.spring.k = 1.0;
+    s->p.mass = 1.0;
+    s->p.position = mech_vec3_make(1, 0, 0);
+    s->p.velocity = mech_vec3_make(0, 0.5, 0);
+    s->p.t_end = 1e4 * 2.0 * T_PI;
+    s->exact = 1;
+}
+
+static void fall(struct scene *s)
+{
+    memset(s, 0, sizeof *s);
+    s->name = "falling object, Coriolis";
+    s->f[0].type = MECH_FORCE_UNIFORM_GRAVITY;
+    s->f[0].u.uniform_gravity.g = mech_vec3_make(0, 0, -9.80665);
+    s->p.mass = 1.0;
+    s->p.position = mech_vec3_make(0, 0, 100);
+    s->p.frame.type = MECH_FRAME_EARTH;
+    s->p.frame.latitude_deg = 32.0;
+    s->p.frame.omega_magnitude = MECH_EARTH_OMEGA_SIDEREAL;
+    s->p.fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
+    s->p.t_end = sqrt(2.0 * 100 / 9.80665);
+    s->exact = 0;
+}
+
+static struct mech_vec3 rr[NS], rv[NS], xr[NS], xv[NS];
+static double tt[NS];
+
+static int run(const struct scene *s, const char *method, struct mech_ode_options opt,
+               struct mech_vec3 *r, struct mech_vec3 *v, struct mech_trajectory_result *res)
+{
+    struct mech_trajectory_problem p = s->p;
+    p.forces = s->f;
+    p.n_forces = 1;
+    p.samples = NS;
+    p.reduce_planar = 1;
+    p.method = method;
+    p.opt = opt;
+    memset(res, 0, sizeof *res);
+    res->t = tt;
+    res->position = r;
+    res->velocity = v;
+    struct mech_budget b = {100000000L, mech_clock_seconds() + 600.0, NULL};
+    struct mech_error e;
+    mech_error_clear(&e);
+    return mech_trajectory_integrate(&p, &b, res, &e) == MECH_OK;
+}
+
+static double achieved(const struct scene *s, const struct mech_trajectory_result *res)
+{
+    if (s->exact)
+        return fmax(res->reference.max_relative_position_error,
+                    res->reference.max_relative_velocity_error);
+    double dr = 0, dv = 0, sr = 0, sv = 0;
+    for (size_t i = 0; i < res->n_samples; i++) {
+        dr = fmax(dr, mech_vec3_norm(mech_vec3_sub(xr[i], rr[i])));
+        dv = fmax(dv, mech_vec3_norm(mech_vec3_sub(xv[i], rv[i])));
+        sr = fmax(sr, mech_vec3_norm(rr[i]));
+        sv = fmax(sv, mech_vec3_norm(rv[i]));
+    }
+    return fmax(dr / sr, dv / sv);
+}
+
+static void test_scene(struct scene *s)
+{
+    struct mech_trajectory_result res;
+    if (!s->exact) {
+        struct mech_ode_options o = {1e-14, 1e-14, 0};
+        CHECK(run(s, "rk8pd", o, rr, rv, &res));
+    }
+    char seen[MECH_ACCURACY_COUNT][64];
+    int beyond[MECH_ACCURACY_COUNT];
+    for (int a = 0; a < MECH_ACCURACY_COUNT; a++) {
+        const struct mech_accuracy_preset *pr = mech_accuracy_preset_at((enum mech_accuracy)a);
+        struct mech_trajectory_problem p = s->p;
+        p.forces = s->f;
+        p.n_forces = 1;
+        p.samples = NS;
+        p.reduce_planar = 1;
+        p.closed_form_off = 1; /* the integrating presets (the closed form: below) */
+        static struct mech_trajectory_choice ch;
+        CHECK(mech_trajectory_choose(&p, pr->promise, &ch, NULL) == MECH_OK);
+        CHECK(ch.sel.chosen >= 0);
+        const struct mech_candidate *c = &ch.sel.c[ch.sel.chosen];
+        CHECK(c->verdict == MECH_VERDICT_CHOSEN);
+        CHECK(run(s, ch.method, ch.opt, xr, xv, &res));
+        double err = achieved(s, &res);
+        double e1 = fmax(err, 1e-13), p1 = fmax(c->predicted_error, 1e-13);
+        printf("  %-28s %-8s %-8s rtol/dt %.3g: predicted %.2g achieved %.2g, evals %ld "
+               "(predicted %.3g)%s\n",
+               s->name, pr->name, ch.method, c->adaptive ? ch.opt.rtol : ch.opt.dt,
+               c->predicted_error, err, res.stats.rhs_evaluations, c->predicted_evaluations,
+               ch.sel.beyond ? " [beyond: said]" : "");
+        /* the promise, unless the selection said it cannot be kept */
+        if (!ch.sel.beyond) CHECK(err <= pr->promise);
+        /* the prediction within the stated factor */
+        CHECK(p1 / e1 <= CHOOSER_OVER && e1 / p1 <= CHOOSER_UNDER);
+        if (!(p1 / e1 <= CHOOSER_OVER && e1 / p1 <= CHOOSER_UNDER))
+            printf("  ^ prediction off by %.3g\n", fmax(p1 / e1, e1 / p1));
+        snprintf(seen[a], sizeof seen[a], "%s %.6g", ch.method,
+                 c->adaptive ? ch.opt.rtol : ch.opt.dt);
+        beyond[a] = ch.sel.beyond;
+        /* four different computations, except presets the selection said are
+         * all beyond the run's round-off floor (the most accurate setting) */
+        for (int b = 0; b < a; b++)
+            if (!(beyond[a] && beyond[b])) CHECK(strcmp(seen[a], seen[b]) != 0);
+    }
+}
+
+static void test_candidates_listed(void)
+{
+    struct scene s;
+    kepler(&s, "kepler", 0.5, 10);
+    s.p.forces = s.f;
+    s.p.n_forces = 1;
+    s.p.samples = NS;
+    static struct mech_trajectory_choice ch;
+    CHECK(mech_trajectory_choose(&s.p, 1e-8, &ch, NULL) == MECH_OK);
+    int cf = -1, msbdf = -1, n_chosen = 0;
+    for (size_t i = 0; i < ch.sel.n; i++) {
+        if (!strcmp(ch.sel.c[i].method, "closed_form")) cf = (int)i;
+        if (!strcmp(ch.sel.c[i].method, "msbdf")) msbdf = (int)i;
+        if (ch.sel.c[i].verdict == MECH_VERDICT_CHOSEN) n_chosen++;
+        CHECK(ch.sel.c[i].why[0] != 0);
+    }
+    CHECK(n_chosen == 1);
+    CHECK(cf >= 0 && ch.sel.c[cf].predicted);
+    /* allowed, the closed form is chosen (cheapest, round-off); method/opt
+     * stay the best integrator's, for callers that only integrate */
+    CHECK(ch.sel.chosen == cf && ch.sel.c[cf].verdict == MECH_VERDICT_CHOSEN);
+    CHECK(ch.closed_form == 1);
+    CHECK(ch.sel.integrating >= 0 && ch.sel.integrating != cf);
+    CHECK(mech_ode_method_find(ch.method) != NULL);
+    CHECK(ch.sel.c[ch.sel.integrating].verdict == MECH_VERDICT_COSTLIER);
+    CHECK(msbdf >= 0 && ch.sel.c[msbdf].verdict == MECH_VERDICT_NOT_APPLICABLE);
+    CHECK(ch.sel.n >= 5);
+    CHECK(!strcmp(mech_scene_class_name(ch.sel.cls), "central_gravity"));
+    /* closed_form_off: listed, not applicable, saying why */
+    s.p.closed_form_off = 1;
+    CHECK(mech_trajectory_choose(&s.p, 1e-8, &ch, NULL) == MECH_OK);
+    CHECK(!strcmp(ch.sel.c[0].method, "closed_form"));
+    CHECK(ch.sel.c[0].verdict == MECH_VERDICT_NOT_APPLICABLE);
+    CHECK(strstr(ch.sel.c[0].why, "closed_form is false") != NULL);
+    CHECK(ch.closed_form == 0 && ch.sel.integrating == ch.sel.chosen);
+    /* a first-order profile: radau15 and yoshida6 not applicable */
+    struct mech_scene_profile fo = {.cls = MECH_SCENE_FIRST_ORDER, .span = 100, .T = 1,
+                                    .scale = 1, .samples = 100};
+    struct mech_selection sel;
+    CHECK(mech_choose(&fo, 1e-8, &sel, NULL) == MECH_OK);
+    for (size_t i = 0; i < sel.n; i++)
+        if (!strcmp(sel.c[i].method, "radau15") || !strcmp(sel.c[i].method, "yoshida6"))
+            CHECK(sel.c[i].verdict == MECH_VERDICT_NOT_APPLICABLE);
+    CHECK(sel.chosen >= 0);
+    CHECK(mech_choose(&fo, 0.5, &sel, NULL) == MECH_EINVAL);
+    fo.span = NAN;
+    CHECK(mech_choose(&fo, 1e-8, &sel, NULL) == MECH_EINVAL);
+}
+
+/* A dry run integrates nothing: the scene stops after the choice, with zero
+ * steps and evaluations in its stats and no first pass of "auto". */
+static void test_dry_run_scene(void)
+{
+    static struct mech_scene_ballistic_result r;
+    struct mech_scene_ballistic s = {.latitude_deg = 32, .g = 9.80665,
+                                     .omega = MECH_EARTH_OMEGA_SIDEREAL};
+    s.r0 = mech_vec3_make(0, 0, 100);
+    s.dry_run = 1;
+    struct mech_budget b = {1000000, mech_clock_seconds() + 60, NULL};
+    CHECK(mech_scene_ballistic_run(&s, 1e-8, &b, &r, NULL) == MECH_OK);
+    CHECK(r.run.stats.steps == 0 && r.run.stats.rhs_evaluations == 0);
+    CHECK(r.model.first_pass_stats.steps == 0 && !r.model.first_pass_done);
+    CHECK(r.choice.method != NULL && r.choice.sel.chosen >= 0);
+    /* the same scene run for real integrates */
+    s.dry_run = 0;
+    CHECK(mech_scene_ballistic_run(&s, 1e-8, &b, &r, NULL) == MECH_OK);
+    CHECK(r.run.stats.rhs_evaluations > 0);
+}
+
+int main(void)
+{
+    test_dry_run_scene();
+    static struct scene s;
+    kepler(&s, "kepler e=0.5 10 orbits", 0.5, 10);
+    test_scene(&s);
+    kepler(&s, "kepler e=0.9 10 orbits", 0.9, 10);
+    test_scene(&s);
+    kepler(&s, "kepler e=0.5 1000 orbits", 0.5, 1000);
+    test_scene(&s);
+    kepler(&s, "kepler e=0.9 1000 orbits", 0.9, 1000);
+    test_scene(&s);
+    oscillator(&s);
+    test_scene(&s);
+    fall(&s);
+    test_scene(&s);
+    test_candidates_listed();
+    TEST_MAIN_END();
+}
