@@ -116,7 +116,7 @@ static enum mech_status run_traj(struct api_traj_request *rq, struct mech_budget
     double c0 = mech_cpu_seconds();
     /* a row that selects by accuracy on a scene with a closed form is answered
      * from it, as /v1/trajectory would (0 steps) */
-    enum mech_status st = rq->closed_form ? mech_trajectory_closed_form_ex(&rq->p, r, &rq->evidence, e)
+    enum mech_status st = rq->closed_form ? mech_trajectory_closed_form_ex(&rq->p, r, &rq->evidence, b, e)
                                           : mech_trajectory_integrate(&rq->p, b, r, e);
     *cpu = mech_cpu_seconds() - c0;
     return st;

@@ -347,7 +347,7 @@ static json_t *rotate(struct api_call *c, const json_t *body)
                        mech_rigid_has_closed_form(&p);
     struct mech_rigid_closed_form_evidence ev;
     memset(&ev, 0, sizeof ev);
-    enum mech_status st = closed ? mech_rigid_closed_form(&p, &r, &ev, &e)
+    enum mech_status st = closed ? mech_rigid_closed_form(&p, &r, &ev, &c->budget, &e)
                                  : mech_rigid_rotate(&p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         if (ij && !strcmp(e.param, "moments")) {

@@ -104,7 +104,7 @@ static json_t *traj_op(struct api_call *c, const json_t *body)
     const double cpu0 = mech_cpu_seconds();
     enum mech_status st =
         !(t && pos && vel) ? MECH_ENOMEM
-        : rq.closed_form   ? mech_trajectory_closed_form_ex(&rq.p, &r, &rq.evidence, &e)
+        : rq.closed_form   ? mech_trajectory_closed_form_ex(&rq.p, &r, &rq.evidence, &c->budget, &e)
                            : mech_trajectory_integrate(&rq.p, &c->budget, &r, &e);
     rq.cpu_s = mech_cpu_seconds() - cpu0;
     if (st != MECH_OK) {

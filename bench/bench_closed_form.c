@@ -72,7 +72,7 @@ int main(void)
         double best = INFINITY;
         for (int k = 0; k < 5; k++) {
             const double c0 = cpu();
-            if (mech_trajectory_closed_form_ex(&p, &r, &ev, &err) != MECH_OK) {
+            if (mech_trajectory_closed_form_ex(&p, &r, &ev, NULL, &err) != MECH_OK) {
                 fprintf(stderr, "%s: %s\n", name, err.text);
                 return 1;
             }

@@ -6,6 +6,7 @@
 #include "mech/closed_form.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -428,12 +429,13 @@ enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_proble
                                              struct mech_trajectory_result *res,
                                              struct mech_error *err)
 {
-    return mech_trajectory_closed_form_ex(p, res, NULL, err);
+    return mech_trajectory_closed_form_ex(p, res, NULL, NULL, err);
 }
 
 enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_problem *p,
                                                 struct mech_trajectory_result *res,
                                                 struct mech_closed_form_evidence *evidence,
+                                                const struct mech_budget *budget,
                                                 struct mech_error *err)
 {
     if (!p || !res) return mech_error_set(err, MECH_EINVAL, NULL, "NULL problem or result");
@@ -515,9 +517,21 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
 
     /* The samples: t_i = t_end (i / (n - 1)), as the integrator places them. */
     const size_t n = p->samples;
+    struct mech_budget clock_only;
+    if (budget) {
+        clock_only = *budget;
+        clock_only.max_steps = LONG_MAX; /* deadline and cancel only */
+    }
     for (size_t i = 0; i < n; i++) {
         const double ti = p->t_end * ((double)i / (double)(n - 1));
         if (ti > t_stop) break;
+        if (budget && (st = mech_budget_check(&clock_only, (long)i, 0, err)) != MECH_OK) {
+            if (err) {
+                err->progress.t_reached = i > 0 ? p->t_end * ((double)(i - 1) / (double)(n - 1)) : 0.0;
+                err->progress.t_target = p->t_end;
+            }
+            return st;
+        }
         struct mech_vec3 r, v;
         if ((st = cf_state(&c, ti, &r, &v)) != MECH_OK) return st;
         if (res->t) res->t[i] = ti;

@@ -18,6 +18,7 @@
 #include "mech/closed_form.h"
 
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -223,6 +224,7 @@ static void rcf_axes(const struct mech_rigid_exact *ex, int idx[3])
 enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
                                         struct mech_rigid_result *res,
                                         struct mech_rigid_closed_form_evidence *evidence,
+                                        const struct mech_budget *budget,
                                         struct mech_error *err)
 {
     if (!p || !res) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
@@ -303,8 +305,20 @@ enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
     double r_prev = 0.0, I_prev = 0.0;
     double first = NAN, last = NAN, prev_u2 = 0, prev_t = 0;
     const double L0n = mech_vec3_norm(res->L0);
+    struct mech_budget clock_only;
+    if (budget) {
+        clock_only = *budget;
+        clock_only.max_steps = LONG_MAX; /* deadline and cancel only */
+    }
     for (size_t i = 0; i < n; i++) {
         const double t = p->t_end * ((double)i / (double)(n - 1));
+        if (budget && (st = mech_budget_check(&clock_only, (long)i, 0, err)) != MECH_OK) {
+            if (err) {
+                err->progress.t_reached = i > 0 ? p->t_end * ((double)(i - 1) / (double)(n - 1)) : 0.0;
+                err->progress.t_target = p->t_end;
+            }
+            return st;
+        }
         struct mech_vec3 wb;
         if ((st = mech_rigid_exact_omega(&c.ex, t, &wb, err)) != MECH_OK) return st;
         c.evaluations++;

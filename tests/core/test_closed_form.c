@@ -87,7 +87,7 @@ static void kepler_vs_integration(double e, double t_end, double tol)
     result_init(&b, T2, R2, V2);
     struct mech_error err;
     struct mech_closed_form_evidence ev;
-    CHECK(mech_trajectory_closed_form_ex(&p, &a, &ev, &err) == MECH_OK);
+    CHECK(mech_trajectory_closed_form_ex(&p, &a, &ev, NULL, &err) == MECH_OK);
     struct mech_budget bud = mech_budget_make(50000000, 600.0);
     CHECK(mech_trajectory_integrate(&p, &bud, &b, &err) == MECH_OK);
     CHECK_EQ_INT(a.n_samples, NS);
@@ -196,7 +196,7 @@ static void test_kepler_event(void)
     result_init(&r, T_, R_, V_);
     struct mech_error err;
     struct mech_closed_form_evidence ev;
-    CHECK(mech_trajectory_closed_form_ex(&p, &r, &ev, &err) == MECH_OK);
+    CHECK(mech_trajectory_closed_form_ex(&p, &r, &ev, NULL, &err) == MECH_OK);
     CHECK(r.stopped);
     CHECK_CLOSE(r.t_stop, P / 2, 4e-16, 0);
     CHECK_CLOSE(r.stop_position.x, (double)(-(2 * al - q)), 4e-16, 0);
@@ -370,9 +370,36 @@ static void test_refusals(void)
     if (strcmp(err.param, "particle/mass")) fprintf(stderr, "  [%s] %s\n", err.param, err.text);
 }
 
+/* A budget's deadline and cancel flag stop the samples; its step limit does
+ * not (nothing is integrated). */
+static void test_budget(void)
+{
+    struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
+    f.u.central_gravity.gm = 1.0;
+    struct mech_trajectory_problem p =
+        problem(1.0, mech_vec3_make(1, 0, 0), mech_vec3_make(0, 1, 0), &f, 1, 100.0, NS);
+    struct mech_trajectory_result a;
+    result_init(&a, T_, R_, V_);
+    struct mech_error err;
+    mech_error_clear(&err);
+    struct mech_budget b = mech_budget_make(1, -1.0);
+    CHECK_EQ_INT(mech_trajectory_closed_form_ex(&p, &a, NULL, &b, &err), MECH_EDEADLINE);
+    CHECK(err.progress.t_target == 100.0);
+    volatile int cancel = 1;
+    b = mech_budget_make(1, 60.0);
+    b.cancel = &cancel;
+    mech_error_clear(&err);
+    CHECK_EQ_INT(mech_trajectory_closed_form_ex(&p, &a, NULL, &b, &err), MECH_ECANCELLED);
+    cancel = 0;
+    mech_error_clear(&err);
+    CHECK_EQ_INT(mech_trajectory_closed_form_ex(&p, &a, NULL, &b, &err), MECH_OK);
+    CHECK_EQ_INT((int)a.n_samples, NS);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_budget();
     test_kepler();
     test_kepler_radial();
     test_kepler_event();

@@ -81,7 +81,7 @@ static void vs_integration(double i1, double i2, double i3, struct mech_vec3 w, 
     mech_error_clear(&err);
     struct mech_rigid_closed_form_evidence ev;
     memset(&ev, 0, sizeof ev);
-    CHECK(mech_rigid_closed_form(&p, &a, &ev, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, &ev, NULL, &err) == MECH_OK);
     if (err.code != MECH_OK) fprintf(stderr, "  %s: [%s] %s\n", what, err.param, err.text);
     struct mech_budget bud = mech_budget_make(50000000, 600.0);
     CHECK(mech_rigid_rotate(&p, &bud, &b, &err) == MECH_OK);
@@ -128,7 +128,7 @@ static void test_symmetric_top(void)
     struct mech_rigid_closed_form_evidence ev;
     memset(&ev, 0, sizeof ev);
     mech_error_clear(&err);
-    CHECK(mech_rigid_closed_form(&p, &a, &ev, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, &ev, NULL, &err) == MECH_OK);
     if (err.code != MECH_OK) fprintf(stderr, "  top: [%s] %s\n", err.param, err.text);
     CHECK(ev.solution && !strcmp(ev.solution, "symmetric"));
     const struct mech_vec3 L = a.L0;
@@ -165,7 +165,7 @@ static void test_sphere(void)
     struct mech_rigid_result a;
     res_init(&a, 0);
     struct mech_error err;
-    CHECK(mech_rigid_closed_form(&p, &a, NULL, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, NULL, NULL, &err) == MECH_OK);
     const double wn = mech_vec3_norm(w);
     double worst = 0.0;
     for (size_t i = 0; i < NS; i++) {
@@ -192,18 +192,18 @@ static void test_separatrix_and_cost(void)
     struct mech_error err;
     mech_error_clear(&err);
     CHECK(!mech_rigid_has_closed_form(&p));
-    CHECK(mech_rigid_closed_form(&p, &a, NULL, &err) == MECH_EDOMAIN);
+    CHECK(mech_rigid_closed_form(&p, &a, NULL, NULL, &err) == MECH_EDOMAIN);
     CHECK(!strcmp(err.param, "omega"));
     /* cost: the same samples over 10^4 and 10^8 times the time */
     p.omega = mech_vec3_make(0.1, 0.3, 1.0);
     CHECK(mech_rigid_has_closed_form(&p));
     struct mech_rigid_closed_form_evidence e1, e2;
-    CHECK(mech_rigid_closed_form(&p, &a, &e1, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, &e1, NULL, &err) == MECH_OK);
     p.t_end = 1e5;
-    CHECK(mech_rigid_closed_form(&p, &a, &e2, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, &e2, NULL, &err) == MECH_OK);
     struct mech_rigid_closed_form_evidence e3;
     p.t_end = 1e9;
-    CHECK(mech_rigid_closed_form(&p, &a, &e3, &err) == MECH_OK);
+    CHECK(mech_rigid_closed_form(&p, &a, &e3, NULL, &err) == MECH_OK);
     printf("cost: t_end 10 -> %d evaluations, 1e5 -> %d, 1e9 -> %d; L drift over 1e9 s %.3g\n",
            e1.evaluations, e2.evaluations, e3.evaluations, a.max_L_vector_drift);
     /* bounded by the samples: one period tabulated once, then at most one
@@ -215,13 +215,38 @@ static void test_separatrix_and_cost(void)
     p.torque_frame = MECH_RIGID_TORQUE_BODY;
     p.torque = mech_vec3_make(0, 0, 1);
     mech_error_clear(&err);
-    CHECK(mech_rigid_closed_form(&p, &a, NULL, &err) == MECH_EINVAL);
+    CHECK(mech_rigid_closed_form(&p, &a, NULL, NULL, &err) == MECH_EINVAL);
     CHECK(!strcmp(err.param, "torque/value"));
+}
+
+/* The closed form honours a budget's deadline and cancel flag between samples
+ * (its step limit does not apply: nothing is integrated); NULL is no budget. */
+static void test_budget(void)
+{
+    struct mech_rigid_problem p = body(1, 2, 3, mech_vec3_make(0.1, 0.3, 1.0), 1e6, NS);
+    struct mech_rigid_result a;
+    res_init(&a, 0);
+    struct mech_error err;
+    mech_error_clear(&err);
+    struct mech_budget b = mech_budget_make(1, -1.0); /* deadline passed; 1 step */
+    CHECK_EQ_INT(mech_rigid_closed_form(&p, &a, NULL, &b, &err), MECH_EDEADLINE);
+    CHECK(err.progress.t_target == 1e6);
+    volatile int cancel = 1;
+    b = mech_budget_make(1, 60.0);
+    b.cancel = &cancel;
+    mech_error_clear(&err);
+    CHECK_EQ_INT(mech_rigid_closed_form(&p, &a, NULL, &b, &err), MECH_ECANCELLED);
+    cancel = 0;
+    mech_error_clear(&err);
+    /* a step limit of 1 does not stop a run that integrates nothing */
+    CHECK_EQ_INT(mech_rigid_closed_form(&p, &a, NULL, &b, &err), MECH_OK);
+    CHECK_EQ_INT((int)a.n_samples, NS);
 }
 
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_budget();
     test_asymmetric();
     test_symmetric_top();
     test_sphere();
