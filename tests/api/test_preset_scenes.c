@@ -37,18 +37,26 @@
  * chooser rewrite): "scene/preset". Filled from the measured run; empty
  * when every promise is kept. */
 static const char *const KNOWN_MISSES[] = {
-    /* rkf45 at rtol 5.7e-7: 1.26e-3 relative after 1000 time units */
-    "Henon-Heiles 1000/draft",
     /* 5.2e-11: rk8pd, rkck and radau15 at their tightest settings disagree
      * by 5e-11 .. 1.4e-10 over 1000 time units (round-off), yet the answer
      * does not re-state the promise */
     "Henon-Heiles 1000/machine",
+    /* Integrating with "closed_form": false (the predictive chooser, radau15
+     * near its round-off floor): its floor model is calibrated on e = 0.5
+     * and under-predicts eccentric and long runs. Measured: 1.1e-11 on 10
+     * orbits of e = 0.9 (not re-stated), 4.4e-11 against a re-stated 3e-11
+     * over 1000 orbits of e = 0.5, 2.8e-9 against 5e-10 over 1000 orbits of
+     * e = 0.9. A client asking by accuracy gets the closed form there. */
+    "kepler e=0.9 10 orbits/machine/integrating",
+    "kepler e=0.5 1000 orbits/machine/integrating",
+    "kepler e=0.9 1000 orbits/precise/integrating",
+    "kepler e=0.9 1000 orbits/machine/integrating",
     NULL};
 
-static int known_miss(const char *scene, const char *preset)
+static int known_miss(const char *scene, const char *preset, int integrating)
 {
     char key[96];
-    snprintf(key, sizeof key, "%s/%s", scene, preset);
+    snprintf(key, sizeof key, "%s/%s%s", scene, preset, integrating ? "/integrating" : "");
     for (size_t i = 0; KNOWN_MISSES[i]; i++)
         if (strcmp(KNOWN_MISSES[i], key) == 0) return 1;
     return 0;
@@ -62,9 +70,14 @@ int main(int argc, char **argv)
     CHECK(api_init() == 0);
     for (size_t s = 0; s < N_SCENES; s++) {
         const struct scene_def *sc = &SCENES[s];
-        for (int p = 0; p < 4; p++) {
-            if (known_miss(sc->name, presets[p]) != misses_mode) continue;
-            json_t *b = with_integrator(sc->body, json_pack("{ss}", "accuracy", presets[p]));
+        /* twice where the scene has a closed form: as a client gets it (the
+         * closed form), and integrating ("closed_form": false) */
+        const int passes = sc->ref == REF_RUN ? 1 : 2;
+        for (int p = 0; p < 4 * passes; p++) {
+            if (known_miss(sc->name, presets[p % 4], p >= 4) != misses_mode) continue;
+            json_t *integ = json_pack("{ss}", "accuracy", presets[p % 4]);
+            if (p >= 4) json_object_set_new(integ, "closed_form", json_false());
+            json_t *b = with_integrator(sc->body, integ);
             int st;
             json_t *ans = post(sc->path, b, &st);
             json_decref(b);
@@ -92,11 +105,11 @@ int main(int argc, char **argv)
             /* A promise round-off makes unreachable is re-stated in the answer:
              * "... beyond what the preset can keep: ... can reach about X
              * relative". Then the run must keep X instead (and say so). */
-            const double restated = ss_restated(ans, promise[p]);
-            printf("%-36s %-9s promise %.0e  method %-8s error %.3e (ref: %s)  %s", sc->name,
-                   presets[p], promise[p], method, err, evidence,
-                   err <= promise[p] ? "kept" : err <= restated ? "re-stated" : "MISSED");
-            if (restated > promise[p]) printf(" (answer re-states it: %.0e)", restated);
+            const double restated = ss_restated(ans, promise[p % 4]);
+            printf("%-36s %-9s%s promise %.0e  method %-8s error %.3e (ref: %s)  %s", sc->name,
+                   presets[p % 4], p >= 4 ? " (integrating)" : "", promise[p % 4], method, err, evidence,
+                   err <= promise[p % 4] ? "kept" : err <= restated ? "re-stated" : "MISSED");
+            if (restated > promise[p % 4]) printf(" (answer re-states it: %.0e)", restated);
             printf("\n");
             fflush(stdout);
             CHECK(err <= restated);
