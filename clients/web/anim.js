@@ -35,6 +35,9 @@ export function player({label = 'Animation', unit = 's', seconds = 1} = {}) {
   const root = el('div', {class: 'player', role: 'group', 'aria-label': label + ' controls', 'data-playing': 'false', 'data-time': '0'},
     btn, el('label', {for: slider.id, class: 'sr-only'}, 'Time'), slider, out,
     el('span', {class: 'speed'}, el('label', {for: speed.id}, 'Speed'), ' ', speed));
+  // nothing to play until the first samples arrive (set): say so, not an empty list
+  put(speed, el('option', {value: 1}, 'waiting for the run'));
+  btn.disabled = slider.disabled = speed.disabled = true;
   const T = () => (times.length ? times[times.length - 1] - times[0] : 0);
   const show = () => {
     if (!times.length) return;
@@ -80,7 +83,7 @@ export function player({label = 'Animation', unit = 's', seconds = 1} = {}) {
       const pick = opts.includes(prev) ? prev : opts[Math.min(1, opts.length - 1)];
       put(speed, opts.map(s => el('option', {value: s, selected: s === pick},
         s === 1 ? `real time (${human(T() * seconds)})` : `×${times10(s)} (whole run in ${human(T() * seconds / s)})`)));
-      btn.disabled = slider.disabled = !times.length;
+      btn.disabled = slider.disabled = speed.disabled = !times.length;
       show();
     },
     seek(t) { tNow = t; show(); },
