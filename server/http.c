@@ -111,8 +111,13 @@
  * in a row): libmicrohttpd's edge-triggered epoll misses a FIN that arrived
  * before it accepted the connection, and 1,500 half-sent, closed requests
  * otherwise sat in CLOSE-WAIT, holding every slot, until the idle timeout.
- * Both are counted in /metrics (mechd_connections_evicted_total,
- * mechd_connections_reaped_total) next to mechd_connections_open.
+ * A connection the server shut down (for any of these reasons) that is still
+ * open SRV_SHUT_NUDGE_MS later is shut down again, once a second: each
+ * shutdown(2) wakes libmicrohttpd's epoll, so one lost wake-up cannot hold
+ * the slot until the idle timeout (a CI run under TSan once left 256 such
+ * sockets open). All three are counted in /metrics
+ * (mechd_connections_evicted_total, mechd_connections_reaped_total,
+ * mechd_connections_nudged_total) next to mechd_connections_open.
  */
 #ifdef __linux__
 #define _GNU_SOURCE /* POLLRDHUP */
@@ -155,6 +160,7 @@
                                         larger malloc first consolidates the fast bins */
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
+#define SRV_SHUT_NUDGE_MS 1000       /* a shut connection still open this long is shut down again */
 #define SRV_HANGUP_GRACE_MS 500      /* end-of-file seen this long before a pooled request is cancelled */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
@@ -203,6 +209,7 @@ struct srv_conn {
     atomic_int rx;         /* enum conn_rx */
     atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
     int eof_sweeps;        /* consecutive reaper sweeps that found the client gone (conn_mu) */
+    long long shut_ms;     /* when the server last shut it down (CONN_SHUT), 0 before (conn_mu) */
     struct srv_conn *prev, *next;
 };
 
@@ -479,6 +486,7 @@ static int conn_shut_down(struct srv_http *h, struct srv_conn *c, void (*count)(
     if (!atomic_compare_exchange_strong(&c->rx, &expected, CONN_SHUT)) return 0;
     h->n_shut++;
     count(1);
+    c->shut_ms = now_ms();
     if (c->fd >= 0) shutdown(c->fd, SHUT_RDWR);
     return 1;
 }
@@ -558,8 +566,23 @@ static int reap_dead_peers(struct srv_http *h)
         if (p && c) h->reap_cap = cap;
     }
     size_t k = 0;
+    long long now = now_ms();
     for (struct srv_conn *c = h->conns; c && k < h->reap_cap; c = c->next) {
-        if (c->fd < 0 || atomic_load(&c->rx) != CONN_RX) continue;
+        if (c->fd < 0) continue;
+        if (atomic_load(&c->rx) == CONN_SHUT) {
+            /* Shut down but still open: libmicrohttpd has not seen the
+             * shutdown yet. Shut it down again, which wakes its epoll once
+             * more (inet_shutdown always signals a state change), so a
+             * wake-up lost in a busy event loop cannot keep the socket, and
+             * its connection slot, until the idle timeout. */
+            if (now - c->shut_ms >= SRV_SHUT_NUDGE_MS) {
+                c->shut_ms = now;
+                shutdown(c->fd, SHUT_RDWR);
+                srv_metrics_count_shut_nudges(1);
+            }
+            continue;
+        }
+        if (atomic_load(&c->rx) != CONN_RX) continue;
         h->reap_pfd[k] = (struct pollfd){c->fd, POLLRDHUP, 0};
         h->reap_conn[k++] = c;
     }

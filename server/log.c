@@ -48,6 +48,7 @@ static unsigned long duration_count;
 static unsigned long request_timeouts; /* connections closed by --request-timeout-ms */
 static unsigned long conns_evicted;    /* closed to make room (--max-connections) */
 static unsigned long conns_reaped;     /* closed because the client had gone */
+static unsigned long conns_nudged;     /* shut down again: still open a second after */
 
 /* A label value is safe in the exposition format without escaping when it has
  * only these characters (no quote, backslash or newline). */
@@ -246,6 +247,13 @@ void srv_metrics_count_reaped(unsigned long n)
     pthread_mutex_unlock(&stats_mu);
 }
 
+void srv_metrics_count_shut_nudges(unsigned long n)
+{
+    pthread_mutex_lock(&stats_mu);
+    conns_nudged += n;
+    pthread_mutex_unlock(&stats_mu);
+}
+
 void srv_log_note(const char *fmt, ...)
 {
     char line[512];
@@ -347,8 +355,12 @@ char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue
              "# HELP mechd_connections_reaped_total Connections closed because the client had "
              "gone while they waited for a request.\n"
              "# TYPE mechd_connections_reaped_total counter\n"
-             "mechd_connections_reaped_total %lu\n",
-             conns_evicted, conns_reaped);
+             "mechd_connections_reaped_total %lu\n"
+             "# HELP mechd_connections_nudged_total Shut connections shut down again because "
+             "they were still open a second after the first shutdown.\n"
+             "# TYPE mechd_connections_nudged_total counter\n"
+             "mechd_connections_nudged_total %lu\n",
+             conns_evicted, conns_reaped, conns_nudged);
     pthread_mutex_unlock(&stats_mu);
 
     text_add(&t,

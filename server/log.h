@@ -40,6 +40,10 @@ void srv_metrics_count_timeouts(unsigned long n);
 void srv_metrics_count_evictions(unsigned long n);
 void srv_metrics_count_reaped(unsigned long n);
 
+/* Count shut connections shut down again because libmicrohttpd had not closed
+ * them SRV_SHUT_NUDGE_MS after the first shutdown (mechd_connections_nudged_total). */
+void srv_metrics_count_shut_nudges(unsigned long n);
+
 /* Write a free-form line "mechd: TIMESTAMP TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 

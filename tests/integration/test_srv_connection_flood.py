@@ -116,6 +116,23 @@ def server_sockets(pid):
     return n
 
 
+def socket_states(pid):
+    """A summary of the server's TCP sockets by state and unread bytes (Recv-Q),
+    from ss(8): printed when sockets are left open, to tell a missed FIN (CLOSE-WAIT
+    with unread bytes) from a shut socket libmicrohttpd has not closed."""
+    try:
+        out = subprocess.run(["ss", "-tanpH"], capture_output=True, text=True, timeout=10).stdout
+    except (OSError, subprocess.SubprocessError) as e:
+        return "ss failed: %s" % e
+    counts = {}
+    for line in out.splitlines():
+        f = line.split()
+        if len(f) >= 2 and "pid=%d," % pid in line:
+            key = "%s recvq=%s" % (f[0], f[1])
+            counts[key] = counts.get(key, 0) + 1
+    return ", ".join("%s: %d" % kv for kv in sorted(counts.items())) or "none listed by ss"
+
+
 stop = stop_mechd
 
 
@@ -254,14 +271,17 @@ def test_half_sent_flood():
 
         ok = wait_for(reaped, 10, period=0.1)
         print("server sockets %r (listening: %d) after %.2f s" % (left[0], listeners, time.monotonic() - t0))
+        if not ok:
+            print("left open, by TCP state and unread bytes: %s" % socket_states(proc.pid))
         check("... every one of their sockets is closed by the server within 10 s", ok,
               "%r sockets left, %d listening" % (left[0], listeners))
         text = metrics(port)
         opened = metric_value(text, "mechd_connections_open")
         reaped = metric_value(text, "mechd_connections_reaped_total")
         evicted = metric_value(text, "mechd_connections_evicted_total")
-        print("closed by the server: %r reaped (client gone), %r evicted (room for new ones); "
-              "the rest libmicrohttpd saw close itself" % (reaped, evicted))
+        print("closed by the server: %r reaped (client gone), %r evicted (room for new ones), "
+              "%r shut down again (still open a second later); the rest libmicrohttpd saw close itself"
+              % (reaped, evicted, metric_value(text, "mechd_connections_nudged_total")))
         check("... /metrics: 1 connection open (this probe), reaped and evicted counted",
               opened == 1 and reaped is not None and evicted is not None, repr((opened, reaped, evicted)))
 
