@@ -34,6 +34,7 @@ enum opt_id {
     OPT_MAX_SAMPLES,
     OPT_MAX_CONNECTIONS,
     OPT_SHUTDOWN_GRACE_MS,
+    OPT_HANGUP_GRACE_MS,
     OPT_COUNT
 };
 
@@ -97,6 +98,10 @@ static const struct opt_spec {
                                "on SIGTERM/SIGINT: stop accepting, then let running and queued "
                                "requests finish for up to this many ms before cancelling them "
                                "(keep it under the container's grace period, often 30 s)"},
+    [OPT_HANGUP_GRACE_MS] = {"--hangup-grace-ms", "MECHD_HANGUP_GRACE_MS", "500", 0, 600000,
+                             "a request running on a worker is cancelled once its client's "
+                             "end-of-file has been seen this long (a half-close after a whole "
+                             "request, as nc -N sends, is the same FIN as a hang-up)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -285,6 +290,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_SHUTDOWN_GRACE_MS:
         cfg->shutdown_grace_ms = (long)v;
+        break;
+    case OPT_HANGUP_GRACE_MS:
+        cfg->hangup_grace_ms = (long)v;
         break;
     default:
         break;

@@ -32,6 +32,8 @@ struct srv_config {
                                 idle one is closed to make room, 8..100000 */
     long shutdown_grace_ms;  /* on SIGTERM/SIGINT, time running and queued requests get to
                                 finish before they are cancelled, 0..600000 ms */
+    long hangup_grace_ms;    /* how long a pooled request's client end-of-file must persist
+                                before it counts as a hang-up and cancels it, 0..600000 ms */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

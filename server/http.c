@@ -77,7 +77,7 @@
  * answered 503 cancelled and resumed by the watcher itself. A close and a
  * half-close (shutdown(SHUT_WR), as `nc -N` and some scripts send after a
  * whole request) are the same FIN on the wire, so a hang-up counts only once
- * it has been seen for SRV_HANGUP_GRACE_MS: a cheap request from a
+ * it has been seen for --hangup-grace-ms (500 ms): a cheap request from a
  * half-closing client is answered (it used to be answered 503 cancelled
  * whenever it was pooled rather than run inline), a long one is cancelled.
  *
@@ -161,7 +161,6 @@
 #define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
 #define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
 #define SRV_SHUT_NUDGE_MS 1000       /* a shut connection still open this long is shut down again */
-#define SRV_HANGUP_GRACE_MS 500      /* end-of-file seen this long before a pooled request is cancelled */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
 #define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
@@ -628,7 +627,7 @@ static void *watcher_main(void *arg)
                     r->eof_since_ms = 0;
                 } else if (!r->eof_since_ms) {
                     r->eof_since_ms = now_ms();
-                } else if (now_ms() - r->eof_since_ms >= SRV_HANGUP_GRACE_MS) {
+                } else if (now_ms() - r->eof_since_ms >= h->cfg->hangup_grace_ms) {
                     r->client_gone = 1;
                     __atomic_store_n(&r->cancel, 1, __ATOMIC_SEQ_CST);
                 }
