@@ -15,7 +15,12 @@
 // ./screenshots). Issue 19: animations play and pause, the time slider moves
 // the time, 3-D views are drawn and turn on drag and keys (and keep their
 // WebGL context over many visits), ticks are round, the orbit has equal
-// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers.
+// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers;
+// the Foucault pendulum's swing plane turns 360° sin λ on the floor in a
+// sidereal day over a 3-D Earth, from the stars and from the ground; the
+// players work by keyboard; the orbit and top labs predict a run's cost from
+// the operation's dry run; and axe-core (pinned in package.json) finds no
+// serious or critical accessibility violation in any lab at either size.
 // Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
@@ -28,6 +33,7 @@ import {spawn, execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
+import {createRequire} from 'node:module';
 
 const mechd = process.argv[2];
 const shots = path.resolve(process.argv[3] || 'screenshots');
@@ -802,6 +808,129 @@ await lab('particles', async () => {
   await invalid('main form', '#dk-T', -5, '#dk-submit', 'cannot be negative');
 }, 'new-particles');
 
+// --- the Foucault pendulum's swing plane over the Earth in 3-D (issue 19) -----
+// Over one sidereal day the plane turns on the floor by the measured rate × the
+// day, which is 360° sin λ to first order (ω sin λ × 2π/ω): at the Panthéon's
+// 48.846° N, 271.1° clockwise. From the stars the Earth turns a full 360°;
+// from the ground it is held still and the plane turns just the same.
+await lab('earth', async () => {
+  await settled();
+  const box = '#fou-3d-box', player = '#fou-3d-box ~ .player';
+  const attr = async (a) => Number(await page.getAttribute(box, a));
+  check(await page.$('#fou-view') !== null, 'Foucault: the swing plane is drawn over the Earth in 3-D');
+  const p0 = await pixels('#fou-view');
+  check(p0.ink > 0.05, `Foucault 3-D: the Earth is drawn (${(p0.ink * 100).toFixed(1)} % inked)`);
+  // the player by keyboard alone: Space on the focused Play button plays, again pauses
+  await page.focus(player + ' [data-role=play]'); await page.keyboard.press('Space');
+  await page.waitForTimeout(600);
+  check(await page.getAttribute(player, 'data-playing') === 'true', 'keyboard: Space on the focused Play button plays');
+  await page.keyboard.press('Space');
+  check(await page.getAttribute(player, 'data-playing') === 'false', 'keyboard: Space again pauses');
+  const t1 = Number(await page.getAttribute(player, 'data-time'));
+  check(t1 > 0, `Foucault 3-D: playing advanced the day (t = ${t1} h)`);
+  await frameAfter();
+  check((await pixels('#fou-view')).h !== p0.h, 'Foucault 3-D: the picture changed while the day played');
+  // the time slider by keyboard: ArrowRight steps on, End is one sidereal day
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('Home'); await page.keyboard.press('ArrowRight');
+  const t2 = Number(await page.getAttribute(player, 'data-time'));
+  check(t2 > 0 && t2 < 0.1, `keyboard: ArrowRight on the time slider steps the time on (t = ${t2} h)`);
+  await page.keyboard.press('End');
+  const lat = 48.846 * Math.PI / 180;
+  close(Number(await page.getAttribute(player, 'data-time')), 86164.0905 / 3600, 1e-3, 'Foucault 3-D: the day played is one sidereal day, in hours');
+  close(await attr('data-earth-deg'), 360, 1e-3, 'Foucault 3-D: seen from the stars the Earth turns 360° in the day');
+  close(-await attr('data-swing-deg'), 360 * Math.sin(lat), 5e-3, 'Foucault 3-D: the swing plane turns 360° sin λ clockwise on the floor in a day');
+  check(/270\.\d°|271\.\d°/.test(await page.textContent('#fou-3d-note')), `Foucault 3-D: the turn in a day is written (${await page.textContent('#fou-3d-note')})`);
+  // from the ground (the rotating frame): the Earth still, the plane's turn the same
+  const swing = await attr('data-swing-deg');
+  await page.selectOption('#fou-frame', 'ground'); await frameAfter();
+  check(await attr('data-earth-deg') === 0 && await attr('data-swing-deg') === swing,
+    `Foucault 3-D: seen from the ground the Earth stays still and the plane turns the same (${await attr('data-earth-deg')}°, ${await attr('data-swing-deg')}°)`);
+  // and the view turns by keyboard
+  const k0 = await pixels('#fou-view');
+  await page.focus('#fou-view'); await page.keyboard.press('ArrowLeft'); await frameAfter();
+  check((await pixels('#fou-view')).h !== k0.h, '3-D: the arrow keys turn the view of the Earth');
+  // at the equator: no turn at all
+  await page.fill('#fou-lat', '0');
+  await page.evaluate(() => { delete document.getElementById('fou-form').dataset.state; });
+  await page.click('#fou-submit'); await state('#fou-form', 'done');
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('End');
+  check(Math.abs(await attr('data-swing-deg')) < 1e-6 && /nothing: at the equator/.test(await page.textContent('#fou-3d-note')),
+    `Foucault 3-D: at the equator the plane does not turn on the floor (${await attr('data-swing-deg')}°)`);
+}, 'foucault-3d');
+
+// --- the predicted cost of a run before it runs: the operation's dry run ------
+// The lab shows the chooser's prediction (diagnostics.selection of the same
+// request with "dry_run": true) at the chosen accuracy and at draft. Checked
+// against the API's own dry run of that request, fetched here; machine costs
+// more than draft; a hundred times the orbits is predicted to cost more than
+// ten times as much (evaluations grow with the span); nothing integrated.
+async function dryRun(p, body) {
+  const r = await fetch(base + p, {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify({...body, dry_run: true})});
+  const j = await r.json();
+  const c = j.diagnostics.selection.candidates.find(x => x.verdict === 'chosen');
+  return {cpu: c.predicted_cpu_s, steps: j.diagnostics.steps};
+}
+await lab('orbits', async () => {
+  await settled();
+  const cost = '#orb-cost';
+  await page.waitForSelector(`${cost}[data-state=done]`, {timeout: 10000});
+  const orbit = (n, acc) => ({M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593},
+    orbits: n, samples: 600, integrator: {accuracy: acc}});
+  const want = await dryRun('/v1/gr/geodesic', orbit(3, 'balanced'));
+  check(want.steps === 0, 'cost: the dry run integrates nothing (0 steps)');
+  close(Number(await page.getAttribute(cost, 'data-cpu')), want.cpu, 1e-12, 'cost: the orbit lab shows the dry run\'s predicted CPU at balanced');
+  close(Number(await page.getAttribute(cost, 'data-draft-cpu')), (await dryRun('/v1/gr/geodesic', orbit(3, 'draft'))).cpu, 1e-12,
+    'cost: and the predicted CPU at draft');
+  const text = await page.textContent(cost);
+  check(/Predicted cost: about [\d.]+ (µs|ms|s) at balanced \(rk8pd, rtol .*\), [\d.]+ (µs|ms|s) at draft/.test(text),
+    `cost: the prediction is said in words before the run ("${text}")`);
+  const dry = [], onRequest = (r) => { if (r.url().endsWith('/v1/gr/geodesic')) dry.push(JSON.parse(r.postData() || '{}')); };
+  page.on('request', onRequest);
+  await page.selectOption('#orb-cost-acc', 'machine');
+  await page.waitForSelector(`${cost}[data-state=done]`, {timeout: 10000});
+  await page.waitForFunction((s) => document.querySelector(s).textContent.includes('at machine'), cost, {timeout: 10000});
+  const machine = Number(await page.getAttribute(cost, 'data-cpu')), draft = Number(await page.getAttribute(cost, 'data-draft-cpu'));
+  check(machine > draft, `cost: machine is predicted to cost more than draft (${machine} s against ${draft} s)`);
+  close(machine, (await dryRun('/v1/gr/geodesic', orbit(3, 'machine'))).cpu, 1e-12, 'cost: the machine prediction is the dry run\'s');
+  await page.fill('#orb-n', '300');
+  await page.waitForFunction(([s, m]) => Number(document.querySelector(s).dataset.cpu) !== m, [cost, machine], {timeout: 10000});
+  const longer = Number(await page.getAttribute(cost, 'data-cpu'));
+  check(longer > 10 * machine, `cost: 100 times the orbits is predicted to cost over 10 times as much (${machine} s -> ${longer} s)`);
+  page.off('request', onRequest);
+  check(dry.length >= 2 && dry.every(b => b.dry_run === true), `cost: predicting sent only dry runs (${dry.length} requests)`);
+  // the run itself: the accuracy chosen is sent, and the cost taken is said beside the prediction
+  await page.fill('#orb-n', '3');
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  const sent = page.waitForRequest((r) => r.url().endsWith('/v1/gr/geodesic') && !JSON.parse(r.postData() || '{}').dry_run);
+  await page.click('#orb-submit');
+  const body = JSON.parse((await sent).postData());
+  await state('main form', 'done');
+  check(body.integrator && body.integrator.accuracy === 'machine', `cost: the run asks for the accuracy chosen (${JSON.stringify(body.integrator)})`);
+  check(/The last run took [\d.]+ (µs|ms|s) of CPU \(predicted/.test(await page.textContent(cost)), 'cost: after the run, its CPU is said beside the prediction');
+  close(await value('#orb-measured'), 6 * Math.PI * 1.32712440018e20 / (299792458 ** 2 * 57909050000 * (1 - 0.20563593 ** 2)), 2e-3,
+    'cost: at machine the advance per orbit is still 6πGM/(c²a(1−e²))');
+}, 'cost-orbits');
+await lab('tops', async () => {
+  await settled();
+  await page.waitForSelector('#top-cost[data-state=done]', {timeout: 10000});
+  const want = await dryRun('/v1/rigid/top', {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, phi_dot: 0, psi_dot: 60,
+    t_end: 2, samples: 801, integrator: {accuracy: 'balanced'}});
+  close(Number(await page.getAttribute('#top-cost', 'data-cpu')), want.cpu, 1e-12, 'cost: the top lab shows the dry run\'s predicted CPU');
+}, 'cost-tops');
+
+
+// --- accessibility: axe-core (pinned in package.json, run.sh installs it) -----
+// Injected through the DevTools protocol (page.evaluate), so the page's
+// Content-Security-Policy stays as it is. Serious and critical violations fail.
+const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+async function axeCheck(where) {
+  if (!await page.evaluate(() => typeof window.axe === 'object')) await page.evaluate(axeSource);
+  const found = await page.evaluate(async () => (await window.axe.run(document, {resultTypes: ['violations']})).violations
+    .filter(v => v.impact === 'serious' || v.impact === 'critical')
+    .map(v => `${v.impact} ${v.id} (${v.nodes.length}: ${v.nodes.slice(0, 2).map(n => n.target.join(' ')).join(', ')})`));
+  check(found.length === 0, `${where}: axe-core finds no serious or critical accessibility violation (${found.join(' | ')})`);
+}
+
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
 await page.setViewportSize({width: 390, height: 844});
 for (const id of LABS) await lab(id, async () => {
@@ -827,10 +956,28 @@ for (const id of LABS) await lab(id, async () => {
     });
     check(gap < 100, `phone spacetime: the β slider sits by the diagram it moves (${Math.round(gap)} px away)`);
   }
+  const wide = await page.$$eval('main table', (ts) => ts.filter(t => t.scrollWidth > t.clientWidth + 1 || t.getBoundingClientRect().right > innerWidth)
+    .map(t => `${t.id || t.className || 'table'} ${t.scrollWidth}/${t.clientWidth} px`));
+  check(wide.length === 0, `phone ${id}: every table reads without sideways scrolling (${wide.join(', ')})`);
+  await axeCheck(`phone ${id}`);
 }, `phone-${id}`);
+// a table with words in it (the accuracy table's "not run" rows say why): wrapped within 390 px
+await lab('accuracy', async () => {
+  await settled();
+  await page.route('**/v1/compare', (route) => route.fulfill({status: 200, contentType: 'application/json', body: JSON.stringify({
+    reference: {kind: 'exact', name: 'kepler'}, partial: true, runs: [
+      {method: 'rk8pd', rtol: 1e-8, status: 'ok', rhs_evaluations: 800, max_position_error: 3.4e-8},
+      {requested: {method: 'rkf45', rtol: 1e-10}, status: 'not_run', reason: 'the request\'s budget of 2 s ran out before this run could start'}]})}));
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#acc-submit'); await state('main form', 'done');
+  await page.unrouteAll({behavior: 'ignoreErrors'});
+  const t = await page.$eval('#acc-table', (x) => [x.scrollWidth, x.clientWidth, x.getBoundingClientRect().right, innerWidth]);
+  check(/budget of 2 s ran out/.test(await page.textContent('#acc-table')) && t[0] <= t[1] + 1 && t[2] <= t[3],
+    `phone accuracy: a "not run" row's reason wraps within the screen (table ${t[0]}/${t[1]} px, right edge ${t[2]} of ${t[3]})`);
+}, 'phone-accuracy-not-run');
 // and the screenshots at 1280×800 of every lab
 await page.setViewportSize({width: 1280, height: 800});
-for (const id of LABS) await lab(id, settled, `desktop-${id}`);
+for (const id of LABS) await lab(id, async () => { await settled(); await axeCheck(`desktop ${id}`); }, `desktop-${id}`);
 
 // --- a server with --token-file: the 401 leads to a token field, and the token works
 {
