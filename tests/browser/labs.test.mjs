@@ -19,8 +19,12 @@
 // the Foucault pendulum's swing plane turns 360° sin λ on the floor in a
 // sidereal day over a 3-D Earth, from the stars and from the ground; the
 // players work by keyboard; the orbit and top labs predict a run's cost from
-// the operation's dry run; and axe-core (pinned in package.json) finds no
-// serious or critical accessibility violation in any lab at either size.
+// the operation's dry run, and a cancelled run stops the server's work (its
+// /metrics: no answer, no worker busy, before the deadline would end it); the
+// cannonball's animated flight lands where the scene says; the twins' clocks
+// read their proper times as they are played; no table overflows at 390 px;
+// and axe-core (pinned in package.json) finds no serious or critical
+// accessibility violation in any lab at either size.
 // Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
@@ -849,6 +853,19 @@ await lab('earth', async () => {
   const k0 = await pixels('#fou-view');
   await page.focus('#fou-view'); await page.keyboard.press('ArrowLeft'); await frameAfter();
   check((await pixels('#fou-view')).h !== k0.h, '3-D: the arrow keys turn the view of the Earth');
+  // the cannonball's flight, animated from POST /v1/trajectory: where the ball lands at the slider's End is where
+  // the scene (its own integration, POST /v1/scenes/cannonball) says: 22.17 km downrange, 58.55 m to the right
+  const scene = await (await fetch(base + '/v1/scenes/cannonball', {method: 'POST', headers: {'Content-Type': 'application/json'},
+    body: JSON.stringify({speed: 500, elevation_deg: 30, azimuth_deg: 0, latitude_deg: 45})})).json();
+  const cplayer = '#can-path ~ .player';
+  const bx0 = await page.getAttribute('#can-ball', 'cx');
+  await page.click(cplayer + ' [data-role=play]'); await page.waitForTimeout(600); await page.click(cplayer + ' [data-role=play]');
+  check(await page.getAttribute('#can-ball', 'cx') !== bx0, 'animation: the cannonball flies when played');
+  await page.focus(cplayer + ' [data-role=time]'); await page.keyboard.press('End');
+  close(Number(await page.getAttribute('#can-path-note', 'data-right')), scene.numerical.right, 1e-5,
+    'cannonball: the animated flight lands as far to the right as the scene says');
+  close(Number(await page.getAttribute('#can-path-note', 'data-down')), scene.numerical.range, 1e-6,
+    'cannonball: and as far downrange');
   // at the equator: no turn at all
   await page.fill('#fou-lat', '0');
   await page.evaluate(() => { delete document.getElementById('fou-form').dataset.state; });
@@ -857,6 +874,22 @@ await lab('earth', async () => {
   check(Math.abs(await attr('data-swing-deg')) < 1e-6 && /nothing: at the equator/.test(await page.textContent('#fou-3d-note')),
     `Foucault 3-D: at the equator the plane does not turn on the floor (${await attr('data-swing-deg')}°)`);
 }, 'foucault-3d');
+
+// --- the twin paradox played: at ct = 10 yr (the turn-round, 8 ly at β = 0.8) the traveller's clock
+// reads 10 √(1 − 0.64) = 6 yr, at the end 12 yr against the home clock's 20 yr
+await lab('spacetime', async () => {
+  await settled();
+  const player = '#tw-diagram ~ .player', clocks = '#tw-clocks';
+  const y0 = await page.getAttribute('#tw-trav-dot', 'cy');
+  await page.click(player + ' [data-role=play]'); await page.waitForTimeout(600); await page.click(player + ' [data-role=play]');
+  check(await page.getAttribute('#tw-trav-dot', 'cy') !== y0, 'animation: the twins move up their worldlines when played');
+  await page.$eval(player + ' [data-role=time]', (s) => { s.value = 500; s.dispatchEvent(new Event('input')); });
+  close(Number(await page.getAttribute(clocks, 'data-home')), 10, 1e-12, 'twins: halfway the home clock reads 10 yr');
+  close(Number(await page.getAttribute(clocks, 'data-traveller')), 6, 1e-12, 'twins: at the turn-round the traveller\'s clock reads 6 yr');
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('End');
+  close(Number(await page.getAttribute(clocks, 'data-traveller')), 12, 1e-12, 'twins: at the end the traveller\'s clock reads 12 yr');
+  check(/home 20 yr, traveller 12 yr/.test(await page.textContent(clocks)), `twins: the clocks are written (${await page.textContent(clocks)})`);
+}, 'anim-twins');
 
 // --- the predicted cost of a run before it runs: the operation's dry run ------
 // The lab shows the chooser's prediction (diagnostics.selection of the same
@@ -909,6 +942,36 @@ await lab('orbits', async () => {
   check(/The last run took [\d.]+ (µs|ms|s) of CPU \(predicted/.test(await page.textContent(cost)), 'cost: after the run, its CPU is said beside the prediction');
   close(await value('#orb-measured'), 6 * Math.PI * 1.32712440018e20 / (299792458 ** 2 * 57909050000 * (1 - 0.20563593 ** 2)), 2e-3,
     'cost: at machine the advance per orbit is still 6πGM/(c²a(1−e²))');
+  // Cancel stops the server's work, as its metrics show: 10⁵ orbits at machine run into the 10 s deadline
+  // (422 compute-budget-exceeded) when left alone; cancelled, the job ends without an answer (neither 200 nor
+  // 422) and no worker stays busy.
+  const geodesic = async () => {
+    const m = await (await fetch(base + '/metrics')).text(), by = {};
+    for (const [, st, n] of m.matchAll(/^mechd_requests_total\{route="\/v1\/gr\/geodesic",status="(\w+)"\} (\d+)$/gm)) by[st] = Number(n);
+    return {by, busy: Number((/^mechd_workers_busy (\d+)$/m.exec(m) || [])[1])};
+  };
+  const cpu3 = await page.getAttribute(cost, 'data-cpu');
+  await page.fill('#orb-n', '100000'); // its cost predicted (dry runs, answered 200) before the count starts
+  await page.waitForFunction(([s, c]) => document.querySelector(s).dataset.cpu !== c && document.querySelector(s).dataset.state === 'done',
+    [cost, cpu3], {timeout: 10000});
+  const m0 = await geodesic();
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#orb-submit');
+  await page.waitForSelector('main form[data-state="busy"] [data-role="cancel"]', {timeout: 5000});
+  await page.waitForTimeout(300);
+  await page.click('main [data-role="cancel"]');
+  await state('main form', 'cancelled');
+  let m1 = m0;
+  for (let i = 0; i < 90; i++) { // until the job has ended (at most 9 s: before the deadline would end it)
+    m1 = await geodesic();
+    const ended = Object.values(m1.by).reduce((a, b) => a + b, 0) > Object.values(m0.by).reduce((a, b) => a + b, 0);
+    if (ended && m1.busy === 0) break;
+    await page.waitForTimeout(100);
+  }
+  const grew = Object.keys(m1.by).filter(st => (m1.by[st] || 0) > (m0.by[st] || 0));
+  check(grew.length === 1 && grew[0] !== '200' && grew[0] !== '422' && m1.busy === 0,
+    `cancel: the server stopped the cancelled run (its metrics: the job ended with status ${grew.join(',') || 'none yet'}, not 200 or the deadline's 422; ${m1.busy} workers busy)`);
+  await page.fill('#orb-n', '3');
 }, 'cost-orbits');
 await lab('tops', async () => {
   await settled();

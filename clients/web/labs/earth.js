@@ -131,7 +131,53 @@ export default {
       const az = a.parameters.azimuth_deg * Math.PI / 180, R0 = v * v * Math.sin(2 * al) / g;
       const de = a.numerical.east - R0 * Math.cos(az), dn = a.numerical.north - R0 * Math.sin(az);
       drawPlot(canS.plot, () => planView(canS.plot, de, dn, `${fmt(a.numerical.right, 4)} m to the right`));
+      flight(a);
     });
+    // the flight itself, animated: the same shot as a trajectory in the Earth's frame (POST /v1/trajectory,
+    // gravity and the fictitious terms chosen as the scene chooses them ("auto": Coriolis and, at this
+    // accuracy, centrifugal), 121 samples up to the scene's time of flight), seen from the side to scale
+    // (downrange against height, equal aspect), the drift to the right of the aim written as it grows
+    const flightPlot = svg('svg', {class: 'plot', id: 'can-path', role: 'img', 'aria-label': 'the flight: height against distance downrange'});
+    const flightNote = el('p', {class: 'muted', id: 'can-path-note', 'aria-live': 'off'});
+    const flightCurl = curlBox();
+    put(flightCurl.box.querySelector('h3'), 'The animation\'s request');
+    const canPlay = player({label: 'The cannonball'});
+    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, flightCurl.box);
+    let flightCtl = null;
+    const flight = async (a) => {
+      const P = a.parameters, el0 = P.elevation_deg * Math.PI / 180, az = P.azimuth_deg * Math.PI / 180; // velocity: (east, north, up)
+      const aim = [Math.cos(az), Math.sin(az)], right = [Math.sin(az), -Math.cos(az)]; // (east, north): the aim and its right
+      const v = Array.isArray(P.velocity) ? P.velocity : [P.speed * Math.cos(el0) * aim[0], P.speed * Math.cos(el0) * aim[1], P.speed * Math.sin(el0)];
+      const body = {particle: {mass: 1, position: [0, 0, 0], velocity: v}, frame: {type: 'earth', latitude_deg: P.latitude_deg},
+        forces: [{type: 'uniform_gravity', g: [0, 0, -P.g]}], fictitious: 'auto', t_end: a.numerical.t * 1.02, samples: 121,
+        stop: {coordinate: 'z', crosses: 0, direction: 'decreasing'}};
+      flightCurl.update('/v1/trajectory', body);
+      if (flightCtl) flightCtl.abort();
+      const mine = flightCtl = new AbortController();
+      const r = await api('/v1/trajectory', body, {signal: mine.signal});
+      if (mine !== flightCtl || r.aborted) return;
+      if (!r.ok || !r.body || !Array.isArray(r.body.t)) { flightNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
+      let t = r.body.t.slice(), pos = r.body.position.slice();
+      const st = r.body.stopped;
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      const down = (p) => p[0] * aim[0] + p[1] * aim[1], side = (p) => p[0] * right[0] + p[1] * right[1];
+      const pts = pos.map(p => [down(p) / 1000, p[2] / 1000]);
+      const ball = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'can-ball'});
+      let XY = null, cur = pts[0];
+      linePlot(flightPlot, [{points: pts, label: 'with Coriolis'}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
+        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1])); return ball; }]});
+      canPlay.set(t, (i, f, tt) => {
+        const j = Math.min(i + 1, pos.length - 1), p = pos[i].map((x, k) => x + (pos[j][k] - x) * f);
+        cur = [down(p) / 1000, p[2] / 1000];
+        if (XY) { ball.setAttribute('cx', XY[0](cur[0])); ball.setAttribute('cy', XY[1](cur[1])); }
+        flightNote.dataset.right = String(side(p));
+        flightNote.dataset.down = String(down(p));
+        const up = Math.abs(p[2]) < 1e-6 ? 0 : p[2]; // the landing sample's round-off, not "-4.5e-16 km up"
+        flightNote.textContent = `t = ${fmt(tt, 4)} s: ${fmt(down(p) / 1000, 4)} km downrange, ${fmt(up / 1000, 4)} km up, ` +
+          `${fmt(side(p), 3)} m to the right of the aim (too small to see at this scale: the plan view above magnifies it).`;
+      });
+    };
     // Foucault
     const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat'});
     const pL = field({label: 'length', pointer: '/length', value: 67, unit: 'm', id: 'fou-len'});
