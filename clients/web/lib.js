@@ -640,6 +640,14 @@ export function runner(S, path, build, show) {
   return run;
 }
 
+// A positive number in two figures, powers of ten as a reader writes them: 7.9·10⁻⁵, 10⁻¹³, 2100, 2.1·10⁷.
+export function sci(x) {
+  if (typeof x !== 'number' || !Number.isFinite(x)) return '—';
+  if (x === 0 || (Math.abs(x) >= 1e-3 && Math.abs(x) < 1e4)) return fmt(x, 2);
+  const e = Math.floor(Math.log10(Math.abs(x))), m = Number((x / 10 ** e).toPrecision(2));
+  return m === 10 ? pow10(e + 1) : (m === 1 ? '' : m + '·') + pow10(e);
+}
+
 // A duration in words a student reads at a glance: 40 µs, 3.2 ms, 2.1 s, 3.5 min.
 export function humanSeconds(s) {
   if (typeof s !== 'number' || !Number.isFinite(s) || s < 0) return '—';
@@ -673,7 +681,7 @@ export function costPreview(form, path, build, {id = 'cost' + (++uid), value = '
     el('div', {class: 'err', id: id + '-acc-err', role: 'alert'}), out);
   const withAccuracy = (body) => ({...body, integrator: {...(body.integrator || {}), accuracy: sel.value}});
   const chosen = (s) => (Array.isArray(s.candidates) && s.candidates.find(c => c.verdict === 'chosen')) || null;
-  const setting = (s) => typeof s.rtol === 'number' ? `rtol ${fmt(s.rtol, 2)}` : typeof s.dt === 'number' ? `dt ${fmt(s.dt, 2)}` : '';
+  const setting = (s) => typeof s.rtol === 'number' ? `rtol ${sci(s.rtol)}` : typeof s.dt === 'number' ? `dt ${sci(s.dt)}` : '';
   let ctl = null, timer = 0, predicted = null, took = null;
   // what the last run cost beside what was predicted for it
   const sayTook = () => {
@@ -705,8 +713,12 @@ export function costPreview(form, path, build, {id = 'cost' + (++uid), value = '
     const s = sels[0];
     put(out, el('strong', {}, 'Predicted cost: '), cpu[0] === null ? `${s.method || 'the chosen method'} (no cost prediction for it)`
       : [`about ${humanSeconds(cpu[0])} at ${sel.value} (${s.method}${setting(s) ? ', ' + setting(s) : ''}, `,
-         `${fmt(cs[0].predicted_evaluations, 2)} force evaluations, error about ${fmt(cs[0].predicted_error, 2)})`],
-      levels.length > 1 && cpu[1] !== null ? `, ${humanSeconds(cpu[1])} at draft` : '', '. ',
+         `${sci(cs[0].predicted_evaluations)} force evaluations, error about ${sci(cs[0].predicted_error)})`],
+      levels.length > 1 && cpu[1] !== null ? `, ${humanSeconds(cpu[1])} at draft` : '',
+      // the chooser's best is predicted to miss the target: say so in words
+      cpu[0] !== null && typeof s.target_error === 'number' && cs[0].predicted_error > s.target_error
+        ? el('span', {class: 'warn', 'data-role': 'misses'}, `; the error predicted at ${sel.value} is above its target ${sci(s.target_error)}: over this long a run ` +
+          'even the most accurate method is not expected to reach it') : null, '. ',
       el('span', {class: 'muted'}, 'From the chooser\'s model ("dry_run": nothing integrated).'),
       cpu[0] !== null && cpu[0] > 2 ? el('span', {class: 'warn'}, ' A long run: try draft first, or fewer orbits or a shorter time.') : null);
     sayTook();
