@@ -639,3 +639,98 @@ export function runner(S, path, build, show) {
   S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;
 }
+
+// A positive number in two figures, powers of ten as a reader writes them: 7.9·10⁻⁵, 10⁻¹³, 2100, 2.1·10⁷.
+export function sci(x) {
+  if (typeof x !== 'number' || !Number.isFinite(x)) return '—';
+  if (x === 0 || (Math.abs(x) >= 1e-3 && Math.abs(x) < 1e4)) return fmt(x, 2);
+  const e = Math.floor(Math.log10(Math.abs(x))), m = Number((x / 10 ** e).toPrecision(2));
+  return m === 10 ? pow10(e + 1) : (m === 1 ? '' : m + '·') + pow10(e);
+}
+
+// A duration in words a student reads at a glance: 40 µs, 3.2 ms, 2.1 s, 3.5 min.
+export function humanSeconds(s) {
+  if (typeof s !== 'number' || !Number.isFinite(s) || s < 0) return '—';
+  if (s < 1e-3) return `${fmt(Math.max(s * 1e6, 1), 2)} µs`;
+  if (s < 1) return `${fmt(s * 1e3, 2)} ms`;
+  if (s < 120) return `${fmt(s, 2)} s`;
+  return `${fmt(s / 60, 2)} min`;
+}
+
+// The accuracy presets of every time-evolution operation's integrator block
+// (docs/accuracy.md "What the accuracy presets do"): relative error targets.
+const PRESETS = [['draft', 'draft (10⁻³)'], ['balanced', 'balanced (10⁻⁸)'], ['precise', 'precise (10⁻¹⁰)'], ['machine', 'machine (10⁻¹¹)']];
+
+// costPreview(form, path, build) -> {wrap, withAccuracy(body), after(answer), predict()}
+//   An "Accuracy" choice for a time-evolution operation and, under it, the
+//   chooser's prediction of the run's cost before it is run: the same request
+//   with "dry_run": true (the server integrates nothing and answers
+//   diagnostics.selection: the chosen method, its predicted error, evaluations
+//   and CPU seconds) at the chosen accuracy and at draft, e.g. "about 2.1 s at
+//   precise (rk8pd, rtol 10⁻¹³), 40 ms at draft". Asked again (debounced) when
+//   an input of the form changes. build() gives the lab's body; withAccuracy
+//   adds {integrator: {accuracy}} to it. after(answer) says what the run cost
+//   beside the prediction. The paragraph carries data-cpu and data-draft-cpu
+//   (predicted seconds) for tests. A dry run that fails says nothing: the run
+//   itself names the field.
+export function costPreview(form, path, build, {id = 'cost' + (++uid), value = 'balanced'} = {}) {
+  const sel = el('select', {id: id + '-acc', 'data-pointer': '/integrator', 'aria-describedby': id + '-acc-err ' + id,
+    'data-role': 'accuracy'}, PRESETS.map(([v, t]) => el('option', {value: v, selected: v === value}, t)));
+  const out = el('p', {class: 'cost', id, 'data-role': 'cost', 'aria-live': 'polite'});
+  const wrap = el('div', {class: 'field'}, el('label', {for: sel.id}, 'Accuracy'), sel,
+    el('div', {class: 'err', id: id + '-acc-err', role: 'alert'}), out);
+  const withAccuracy = (body) => ({...body, integrator: {...(body.integrator || {}), accuracy: sel.value}});
+  const chosen = (s) => (Array.isArray(s.candidates) && s.candidates.find(c => c.verdict === 'chosen')) || null;
+  const setting = (s) => typeof s.rtol === 'number' ? `rtol ${sci(s.rtol)}` : typeof s.dt === 'number' ? `dt ${sci(s.dt)}` : '';
+  let ctl = null, timer = 0, predicted = null, took = null;
+  // what the last run cost beside what was predicted for it
+  const sayTook = () => {
+    const old = out.querySelector('[data-role=took]');
+    if (old) old.remove();
+    if (took) add(out, el('span', {'data-role': 'took'}, ` The last run took ${humanSeconds(took[0])} of CPU` +
+      (typeof took[1] === 'number' ? ` (predicted ${humanSeconds(took[1])}).` : '.')));
+  };
+  const predict = async () => {
+    clearTimeout(timer);
+    let body;
+    try { body = build(); } catch (e) { return; }
+    if (ctl) ctl.abort();
+    const mine = ctl = new AbortController();
+    const levels = sel.value === 'draft' ? ['draft'] : [sel.value, 'draft'];
+    out.dataset.state = 'busy';
+    const rs = await Promise.all(levels.map(l => api(path, {...body, dry_run: true, integrator: {...(body.integrator || {}), accuracy: l}},
+      {signal: mine.signal})));
+    if (mine !== ctl) return;
+    ctl = null;
+    const sels = rs.map(r => r.ok && r.body && r.body.diagnostics && r.body.diagnostics.selection);
+    if (!sels.every(Boolean)) { put(out); predicted = null; out.dataset.state = 'error'; return; }
+    const cs = sels.map(chosen);
+    const cpu = cs.map(c => c && typeof c.predicted_cpu_s === 'number' ? c.predicted_cpu_s : null);
+    predicted = cpu[0];
+    out.dataset.cpu = String(cpu[0]);
+    out.dataset.draftCpu = String(cpu[cpu.length - 1]);
+    out.dataset.state = 'done';
+    const s = sels[0];
+    put(out, el('strong', {}, 'Predicted cost: '), cpu[0] === null ? `${s.method || 'the chosen method'} (no cost prediction for it)`
+      : [`about ${humanSeconds(cpu[0])} at ${sel.value} (${s.method}${setting(s) ? ', ' + setting(s) : ''}, `,
+         `${sci(cs[0].predicted_evaluations)} force evaluations, error about ${sci(cs[0].predicted_error)})`],
+      levels.length > 1 && cpu[1] !== null ? `, ${humanSeconds(cpu[1])} at draft` : '',
+      // the chooser's best is predicted to miss the target: say so in words
+      cpu[0] !== null && typeof s.target_error === 'number' && cs[0].predicted_error > s.target_error
+        ? el('span', {class: 'warn', 'data-role': 'misses'}, `; the error predicted at ${sel.value} is above its target ${sci(s.target_error)}: over this long a run ` +
+          'even the most accurate method is not expected to reach it') : null, '. ',
+      el('span', {class: 'muted'}, 'From the chooser\'s model ("dry_run": nothing integrated).'),
+      cpu[0] !== null && cpu[0] > 2 ? el('span', {class: 'warn'}, ' A long run: try draft first, or fewer orbits or a shorter time.') : null);
+    sayTook();
+  };
+  const schedule = () => { clearTimeout(timer); timer = setTimeout(predict, 350); };
+  sel.addEventListener('change', predict);
+  form.addEventListener('input', (e) => { if (e.target !== sel) schedule(); });
+  // after the run: what it cost beside what was predicted
+  const after = (a) => {
+    const cpu = a && a.cost && a.cost.cpu_seconds;
+    took = typeof cpu === 'number' ? [cpu, predicted] : null;
+    sayTook();
+  };
+  return {wrap, select: sel, out, withAccuracy, after, predict};
+}

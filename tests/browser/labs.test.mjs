@@ -15,7 +15,16 @@
 // ./screenshots). Issue 19: animations play and pause, the time slider moves
 // the time, 3-D views are drawn and turn on drag and keys (and keep their
 // WebGL context over many visits), ticks are round, the orbit has equal
-// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers.
+// aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers;
+// the Foucault pendulum's swing plane turns 360° sin λ on the floor in a
+// sidereal day over a 3-D Earth, from the stars and from the ground; the
+// players work by keyboard; the orbit and top labs predict a run's cost from
+// the operation's dry run, and a cancelled run stops the server's work (its
+// /metrics: no answer, no worker busy, before the deadline would end it); the
+// cannonball's animated flight lands where the scene says; the twins' clocks
+// read their proper times as they are played; no table overflows at 390 px;
+// and axe-core (pinned in package.json) finds no serious or critical
+// accessibility violation in any lab at either size.
 // Prints "N passed, M failed"; exits non-zero on a failure.
 //
 // usage: node labs.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
@@ -28,6 +37,7 @@ import {spawn, execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
 import path from 'node:path';
+import {createRequire} from 'node:module';
 
 const mechd = process.argv[2];
 const shots = path.resolve(process.argv[3] || 'screenshots');
@@ -43,8 +53,11 @@ const close = (got, want, rtol, what) => check(Number.isFinite(got) && Math.abs(
 // --static-dir: the front end of this source tree (run.sh sets MECHD_WEB_ROOT),
 // whatever default the binary was compiled with.
 const webRoot = path.resolve(process.env.MECHD_WEB_ROOT || 'clients/web');
+// --deadline-ms 60000: a heavy worked example on a loaded machine (ctest -j with
+// the sanitizer suites) must not run into the default 10 s deadline.
 function startMechd(extra = []) {
-  const proc = spawn(mechd, ['--port', '0', ...(process.env.MECHD_WEB_PROXY === '1' ? [] : ['--static-dir', webRoot]), ...extra],
+  const proc = spawn(mechd, ['--port', '0', '--deadline-ms', '60000',
+    ...(process.env.MECHD_WEB_PROXY === '1' ? [] : ['--static-dir', webRoot]), ...extra],
     {stdio: ['ignore', 'pipe', 'pipe']});
   proc.stderr.on('data', () => {});
   const url = new Promise((resolve, reject) => {
@@ -802,6 +815,196 @@ await lab('particles', async () => {
   await invalid('main form', '#dk-T', -5, '#dk-submit', 'cannot be negative');
 }, 'new-particles');
 
+// --- the Foucault pendulum's swing plane over the Earth in 3-D (issue 19) -----
+// Over one sidereal day the plane turns on the floor by the measured rate × the
+// day, which is 360° sin λ to first order (ω sin λ × 2π/ω): at the Panthéon's
+// 48.846° N, 271.1° clockwise. From the stars the Earth turns a full 360°;
+// from the ground it is held still and the plane turns just the same.
+await lab('earth', async () => {
+  await settled();
+  const box = '#fou-3d-box', player = '#fou-3d-box ~ .player';
+  const attr = async (a) => Number(await page.getAttribute(box, a));
+  check(await page.$('#fou-view') !== null, 'Foucault: the swing plane is drawn over the Earth in 3-D');
+  const p0 = await pixels('#fou-view');
+  check(p0.ink > 0.05, `Foucault 3-D: the Earth is drawn (${(p0.ink * 100).toFixed(1)} % inked)`);
+  // the player by keyboard alone: Space on the focused Play button plays, again pauses
+  await page.focus(player + ' [data-role=play]'); await page.keyboard.press('Space');
+  await page.waitForTimeout(600);
+  check(await page.getAttribute(player, 'data-playing') === 'true', 'keyboard: Space on the focused Play button plays');
+  await page.keyboard.press('Space');
+  check(await page.getAttribute(player, 'data-playing') === 'false', 'keyboard: Space again pauses');
+  const t1 = Number(await page.getAttribute(player, 'data-time'));
+  check(t1 > 0, `Foucault 3-D: playing advanced the day (t = ${t1} h)`);
+  await frameAfter();
+  check((await pixels('#fou-view')).h !== p0.h, 'Foucault 3-D: the picture changed while the day played');
+  // the time slider by keyboard: ArrowRight steps on, End is one sidereal day
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('Home'); await page.keyboard.press('ArrowRight');
+  const t2 = Number(await page.getAttribute(player, 'data-time'));
+  check(t2 > 0 && t2 < 0.1, `keyboard: ArrowRight on the time slider steps the time on (t = ${t2} h)`);
+  await page.keyboard.press('End');
+  const lat = 48.846 * Math.PI / 180;
+  close(Number(await page.getAttribute(player, 'data-time')), 86164.0905 / 3600, 1e-3, 'Foucault 3-D: the day played is one sidereal day, in hours');
+  close(await attr('data-earth-deg'), 360, 1e-3, 'Foucault 3-D: seen from the stars the Earth turns 360° in the day');
+  close(-await attr('data-swing-deg'), 360 * Math.sin(lat), 5e-3, 'Foucault 3-D: the swing plane turns 360° sin λ clockwise on the floor in a day');
+  check(/270\.\d°|271\.\d°/.test(await page.textContent('#fou-3d-note')), `Foucault 3-D: the turn in a day is written (${await page.textContent('#fou-3d-note')})`);
+  // from the ground (the rotating frame): the Earth still, the plane's turn the same
+  const swing = await attr('data-swing-deg');
+  await page.selectOption('#fou-frame', 'ground'); await frameAfter();
+  check(await attr('data-earth-deg') === 0 && await attr('data-swing-deg') === swing,
+    `Foucault 3-D: seen from the ground the Earth stays still and the plane turns the same (${await attr('data-earth-deg')}°, ${await attr('data-swing-deg')}°)`);
+  // and the view turns by keyboard
+  const k0 = await pixels('#fou-view');
+  await page.focus('#fou-view'); await page.keyboard.press('ArrowLeft'); await frameAfter();
+  check((await pixels('#fou-view')).h !== k0.h, '3-D: the arrow keys turn the view of the Earth');
+  // the cannonball's flight, animated from POST /v1/trajectory: where the ball lands at the slider's End is where
+  // the scene (its own integration, POST /v1/scenes/cannonball) says: 22.17 km downrange, 58.55 m to the right
+  const scene = await (await fetch(base + '/v1/scenes/cannonball', {method: 'POST', headers: {'Content-Type': 'application/json'},
+    body: JSON.stringify({speed: 500, elevation_deg: 30, azimuth_deg: 0, latitude_deg: 45})})).json();
+  const cplayer = '#can-path ~ .player';
+  const bx0 = await page.getAttribute('#can-ball', 'cx');
+  await page.click(cplayer + ' [data-role=play]'); await page.waitForTimeout(600); await page.click(cplayer + ' [data-role=play]');
+  check(await page.getAttribute('#can-ball', 'cx') !== bx0, 'animation: the cannonball flies when played');
+  await page.focus(cplayer + ' [data-role=time]'); await page.keyboard.press('End');
+  close(Number(await page.getAttribute('#can-path-note', 'data-right')), scene.numerical.right, 1e-5,
+    'cannonball: the animated flight lands as far to the right as the scene says');
+  close(Number(await page.getAttribute('#can-path-note', 'data-down')), scene.numerical.range, 1e-6,
+    'cannonball: and as far downrange');
+  // at the equator: no turn at all
+  await page.fill('#fou-lat', '0');
+  await page.evaluate(() => { delete document.getElementById('fou-form').dataset.state; });
+  await page.click('#fou-submit'); await state('#fou-form', 'done');
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('End');
+  check(Math.abs(await attr('data-swing-deg')) < 1e-6 && /nothing: at the equator/.test(await page.textContent('#fou-3d-note')),
+    `Foucault 3-D: at the equator the plane does not turn on the floor (${await attr('data-swing-deg')}°)`);
+}, 'foucault-3d');
+
+// --- the twin paradox played: at ct = 10 yr (the turn-round, 8 ly at β = 0.8) the traveller's clock
+// reads 10 √(1 − 0.64) = 6 yr, at the end 12 yr against the home clock's 20 yr
+await lab('spacetime', async () => {
+  await settled();
+  const player = '#tw-diagram ~ .player', clocks = '#tw-clocks';
+  const y0 = await page.getAttribute('#tw-trav-dot', 'cy');
+  await page.click(player + ' [data-role=play]'); await page.waitForTimeout(600); await page.click(player + ' [data-role=play]');
+  check(await page.getAttribute('#tw-trav-dot', 'cy') !== y0, 'animation: the twins move up their worldlines when played');
+  await page.$eval(player + ' [data-role=time]', (s) => { s.value = 500; s.dispatchEvent(new Event('input')); });
+  close(Number(await page.getAttribute(clocks, 'data-home')), 10, 1e-12, 'twins: halfway the home clock reads 10 yr');
+  close(Number(await page.getAttribute(clocks, 'data-traveller')), 6, 1e-12, 'twins: at the turn-round the traveller\'s clock reads 6 yr');
+  await page.focus(player + ' [data-role=time]'); await page.keyboard.press('End');
+  close(Number(await page.getAttribute(clocks, 'data-traveller')), 12, 1e-12, 'twins: at the end the traveller\'s clock reads 12 yr');
+  check(/home 20 yr, traveller 12 yr/.test(await page.textContent(clocks)), `twins: the clocks are written (${await page.textContent(clocks)})`);
+}, 'anim-twins');
+
+// --- the predicted cost of a run before it runs: the operation's dry run ------
+// The lab shows the chooser's prediction (diagnostics.selection of the same
+// request with "dry_run": true) at the chosen accuracy and at draft. Checked
+// against the API's own dry run of that request, fetched here; machine costs
+// more than draft; a hundred times the orbits is predicted to cost more than
+// ten times as much (evaluations grow with the span); nothing integrated.
+async function dryRun(p, body) {
+  const r = await fetch(base + p, {method: 'POST', headers: {'Content-Type': 'application/json'}, body: JSON.stringify({...body, dry_run: true})});
+  const j = await r.json();
+  const c = j.diagnostics.selection.candidates.find(x => x.verdict === 'chosen');
+  return {cpu: c.predicted_cpu_s, steps: j.diagnostics.steps};
+}
+await lab('orbits', async () => {
+  await settled();
+  const cost = '#orb-cost';
+  await page.waitForSelector(`${cost}[data-state=done]`, {timeout: 10000});
+  const orbit = (n, acc) => ({M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593},
+    orbits: n, samples: 600, integrator: {accuracy: acc}});
+  const want = await dryRun('/v1/gr/geodesic', orbit(3, 'balanced'));
+  check(want.steps === 0, 'cost: the dry run integrates nothing (0 steps)');
+  close(Number(await page.getAttribute(cost, 'data-cpu')), want.cpu, 1e-12, 'cost: the orbit lab shows the dry run\'s predicted CPU at balanced');
+  close(Number(await page.getAttribute(cost, 'data-draft-cpu')), (await dryRun('/v1/gr/geodesic', orbit(3, 'draft'))).cpu, 1e-12,
+    'cost: and the predicted CPU at draft');
+  const text = await page.textContent(cost);
+  check(/Predicted cost: about [\d.]+ (µs|ms|s) at balanced \(rk8pd, rtol .*\), [\d.]+ (µs|ms|s) at draft/.test(text),
+    `cost: the prediction is said in words before the run ("${text}")`);
+  const dry = [], onRequest = (r) => { if (r.url().endsWith('/v1/gr/geodesic')) dry.push(JSON.parse(r.postData() || '{}')); };
+  page.on('request', onRequest);
+  await page.selectOption('#orb-cost-acc', 'machine');
+  await page.waitForSelector(`${cost}[data-state=done]`, {timeout: 10000});
+  await page.waitForFunction((s) => document.querySelector(s).textContent.includes('at machine'), cost, {timeout: 10000});
+  const machine = Number(await page.getAttribute(cost, 'data-cpu')), draft = Number(await page.getAttribute(cost, 'data-draft-cpu'));
+  check(machine > draft, `cost: machine is predicted to cost more than draft (${machine} s against ${draft} s)`);
+  close(machine, (await dryRun('/v1/gr/geodesic', orbit(3, 'machine'))).cpu, 1e-12, 'cost: the machine prediction is the dry run\'s');
+  await page.fill('#orb-n', '300');
+  await page.waitForFunction(([s, m]) => Number(document.querySelector(s).dataset.cpu) !== m, [cost, machine], {timeout: 10000});
+  const longer = Number(await page.getAttribute(cost, 'data-cpu'));
+  check(longer > 10 * machine, `cost: 100 times the orbits is predicted to cost over 10 times as much (${machine} s -> ${longer} s)`);
+  page.off('request', onRequest);
+  check(dry.length >= 2 && dry.every(b => b.dry_run === true), `cost: predicting sent only dry runs (${dry.length} requests)`);
+  // the run itself: the accuracy chosen is sent, and the cost taken is said beside the prediction
+  await page.fill('#orb-n', '3');
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  const sent = page.waitForRequest((r) => r.url().endsWith('/v1/gr/geodesic') && !JSON.parse(r.postData() || '{}').dry_run);
+  await page.click('#orb-submit');
+  const body = JSON.parse((await sent).postData());
+  await state('main form', 'done');
+  check(body.integrator && body.integrator.accuracy === 'machine', `cost: the run asks for the accuracy chosen (${JSON.stringify(body.integrator)})`);
+  check(/The last run took [\d.]+ (µs|ms|s) of CPU \(predicted/.test(await page.textContent(cost)), 'cost: after the run, its CPU is said beside the prediction');
+  close(await value('#orb-measured'), 6 * Math.PI * 1.32712440018e20 / (299792458 ** 2 * 57909050000 * (1 - 0.20563593 ** 2)), 2e-3,
+    'cost: at machine the advance per orbit is still 6πGM/(c²a(1−e²))');
+  // Cancel stops the server's work, as its metrics show: 10⁵ orbits at machine take well over 9 s (the
+  // deadline, 60 s here, would end them with a 422); cancelled, the job ends without an answer (neither 200
+  // nor 422) and no worker stays busy within the 9 s the test waits.
+  const geodesic = async () => {
+    const m = await (await fetch(base + '/metrics')).text(), by = {};
+    for (const [, st, n] of m.matchAll(/^mechd_requests_total\{route="\/v1\/gr\/geodesic",status="(\w+)"\} (\d+)$/gm)) by[st] = Number(n);
+    return {by, busy: Number((/^mechd_workers_busy (\d+)$/m.exec(m) || [])[1])};
+  };
+  const cpuLong = String((await dryRun('/v1/gr/geodesic', orbit(100000, 'machine'))).cpu);
+  await page.fill('#orb-n', '100000'); // its cost predicted (dry runs, answered 200) before the count starts
+  await page.waitForFunction(([s, c]) => document.querySelector(s).dataset.cpu === c && document.querySelector(s).dataset.state === 'done',
+    [cost, cpuLong], {timeout: 10000});
+  { // said in words exactly when the dry run's chosen candidate is predicted to miss the target
+    const r = await (await fetch(base + '/v1/gr/geodesic', {method: 'POST', headers: {'Content-Type': 'application/json'},
+      body: JSON.stringify({...orbit(100000, 'machine'), dry_run: true})})).json();
+    const sel = r.diagnostics.selection, c = sel.candidates.find(x => x.verdict === 'chosen');
+    const misses = await page.$(cost + ' [data-role=misses]') !== null;
+    check(misses === (c.predicted_error > sel.target_error), `cost: a predicted miss of the target is said exactly when the dry run predicts one ` +
+      `(predicted ${c.predicted_error} against ${sel.target_error}; said: ${misses})`);
+  }
+  const m0 = await geodesic();
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#orb-submit');
+  await page.waitForSelector('main form[data-state="busy"] [data-role="cancel"]', {timeout: 5000});
+  await page.waitForTimeout(300);
+  await page.click('main [data-role="cancel"]');
+  await state('main form', 'cancelled');
+  let m1 = m0;
+  for (let i = 0; i < 90; i++) { // until the job has ended (at most 9 s)
+    m1 = await geodesic();
+    const ended = Object.values(m1.by).reduce((a, b) => a + b, 0) > Object.values(m0.by).reduce((a, b) => a + b, 0);
+    if (ended && m1.busy === 0) break;
+    await page.waitForTimeout(100);
+  }
+  const grew = Object.keys(m1.by).filter(st => (m1.by[st] || 0) > (m0.by[st] || 0));
+  check(grew.length === 1 && grew[0] !== '200' && grew[0] !== '422' && m1.busy === 0,
+    `cancel: the server stopped the cancelled run (its metrics: the job ended with status ${grew.join(',') || 'none yet'}, not 200 or the deadline's 422; ${m1.busy} workers busy)`);
+  await page.fill('#orb-n', '3');
+}, 'cost-orbits');
+await lab('tops', async () => {
+  await settled();
+  await page.waitForSelector('#top-cost[data-state=done]', {timeout: 10000});
+  const want = await dryRun('/v1/rigid/top', {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, phi_dot: 0, psi_dot: 60,
+    t_end: 2, samples: 801, integrator: {accuracy: 'balanced'}});
+  close(Number(await page.getAttribute('#top-cost', 'data-cpu')), want.cpu, 1e-12, 'cost: the top lab shows the dry run\'s predicted CPU');
+}, 'cost-tops');
+
+
+// --- accessibility: axe-core (pinned in package.json, run.sh installs it) -----
+// Injected through the DevTools protocol (page.evaluate), so the page's
+// Content-Security-Policy stays as it is. Serious and critical violations fail.
+const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+async function axeCheck(where) {
+  if (!await page.evaluate(() => typeof window.axe === 'object')) await page.evaluate(axeSource);
+  const found = await page.evaluate(async () => (await window.axe.run(document, {resultTypes: ['violations']})).violations
+    .filter(v => v.impact === 'serious' || v.impact === 'critical')
+    .map(v => `${v.impact} ${v.id} (${v.nodes.length}: ${v.nodes.slice(0, 2).map(n => n.target.join(' ')).join(', ')})`));
+  check(found.length === 0, `${where}: axe-core finds no serious or critical accessibility violation (${found.join(' | ')})`);
+}
+
 // phone width: one column, no sideways scrolling, readable plot text, the β slider by its diagram
 await page.setViewportSize({width: 390, height: 844});
 for (const id of LABS) await lab(id, async () => {
@@ -827,10 +1030,28 @@ for (const id of LABS) await lab(id, async () => {
     });
     check(gap < 100, `phone spacetime: the β slider sits by the diagram it moves (${Math.round(gap)} px away)`);
   }
+  const wide = await page.$$eval('main table', (ts) => ts.filter(t => t.scrollWidth > t.clientWidth + 1 || t.getBoundingClientRect().right > innerWidth)
+    .map(t => `${t.id || t.className || 'table'} ${t.scrollWidth}/${t.clientWidth} px`));
+  check(wide.length === 0, `phone ${id}: every table reads without sideways scrolling (${wide.join(', ')})`);
+  await axeCheck(`phone ${id}`);
 }, `phone-${id}`);
+// a table with words in it (the accuracy table's "not run" rows say why): wrapped within 390 px
+await lab('accuracy', async () => {
+  await settled();
+  await page.route('**/v1/compare', (route) => route.fulfill({status: 200, contentType: 'application/json', body: JSON.stringify({
+    reference: {kind: 'exact', name: 'kepler'}, partial: true, runs: [
+      {method: 'rk8pd', rtol: 1e-8, status: 'ok', rhs_evaluations: 800, max_position_error: 3.4e-8},
+      {requested: {method: 'rkf45', rtol: 1e-10}, status: 'not_run', reason: 'the request\'s budget of 2 s ran out before this run could start'}]})}));
+  await page.evaluate(() => { delete document.querySelector('main form').dataset.state; });
+  await page.click('#acc-submit'); await state('main form', 'done');
+  await page.unrouteAll({behavior: 'ignoreErrors'});
+  const t = await page.$eval('#acc-table', (x) => [x.scrollWidth, x.clientWidth, x.getBoundingClientRect().right, innerWidth]);
+  check(/budget of 2 s ran out/.test(await page.textContent('#acc-table')) && t[0] <= t[1] + 1 && t[2] <= t[3],
+    `phone accuracy: a "not run" row's reason wraps within the screen (table ${t[0]}/${t[1]} px, right edge ${t[2]} of ${t[3]})`);
+}, 'phone-accuracy-not-run');
 // and the screenshots at 1280×800 of every lab
 await page.setViewportSize({width: 1280, height: 800});
-for (const id of LABS) await lab(id, settled, `desktop-${id}`);
+for (const id of LABS) await lab(id, async () => { await settled(); await axeCheck(`desktop ${id}`); }, `desktop-${id}`);
 
 // --- a server with --token-file: the 401 leads to a token field, and the token works
 {

@@ -1,9 +1,12 @@
 // Earth lab: the falling object and the cannonball on the rotating Earth
 // (POST /v1/scenes/falling-object, /v1/scenes/cannonball): with Coriolis beside
 // without (where it would land if the Earth did not turn), the deflection
-// magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault).
+// magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault):
+// its trace from above, and its swing plane standing on the turning Earth in
+// 3-D over one sidereal day (drawn to scale in angle: nothing exaggerated).
 import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot} from '../lib.js';
 import {player} from '../anim.js';
+import {THREE, view3d, label} from '../view3d.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -128,7 +131,53 @@ export default {
       const az = a.parameters.azimuth_deg * Math.PI / 180, R0 = v * v * Math.sin(2 * al) / g;
       const de = a.numerical.east - R0 * Math.cos(az), dn = a.numerical.north - R0 * Math.sin(az);
       drawPlot(canS.plot, () => planView(canS.plot, de, dn, `${fmt(a.numerical.right, 4)} m to the right`));
+      flight(a);
     });
+    // the flight itself, animated: the same shot as a trajectory in the Earth's frame (POST /v1/trajectory,
+    // gravity and the fictitious terms chosen as the scene chooses them ("auto": Coriolis and, at this
+    // accuracy, centrifugal), 121 samples up to the scene's time of flight), seen from the side to scale
+    // (downrange against height, equal aspect), the drift to the right of the aim written as it grows
+    const flightPlot = svg('svg', {class: 'plot', id: 'can-path', role: 'img', 'aria-label': 'the flight: height against distance downrange'});
+    const flightNote = el('p', {class: 'muted', id: 'can-path-note', 'aria-live': 'off'});
+    const flightCurl = curlBox();
+    put(flightCurl.box.querySelector('h3'), 'The animation\'s request');
+    const canPlay = player({label: 'The cannonball'});
+    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, flightCurl.box);
+    let flightCtl = null;
+    const flight = async (a) => {
+      const P = a.parameters, el0 = P.elevation_deg * Math.PI / 180, az = P.azimuth_deg * Math.PI / 180; // velocity: (east, north, up)
+      const aim = [Math.cos(az), Math.sin(az)], right = [Math.sin(az), -Math.cos(az)]; // (east, north): the aim and its right
+      const v = Array.isArray(P.velocity) ? P.velocity : [P.speed * Math.cos(el0) * aim[0], P.speed * Math.cos(el0) * aim[1], P.speed * Math.sin(el0)];
+      const body = {particle: {mass: 1, position: [0, 0, 0], velocity: v}, frame: {type: 'earth', latitude_deg: P.latitude_deg},
+        forces: [{type: 'uniform_gravity', g: [0, 0, -P.g]}], fictitious: 'auto', t_end: a.numerical.t * 1.02, samples: 121,
+        stop: {coordinate: 'z', crosses: 0, direction: 'decreasing'}};
+      flightCurl.update('/v1/trajectory', body);
+      if (flightCtl) flightCtl.abort();
+      const mine = flightCtl = new AbortController();
+      const r = await api('/v1/trajectory', body, {signal: mine.signal});
+      if (mine !== flightCtl || r.aborted) return;
+      if (!r.ok || !r.body || !Array.isArray(r.body.t)) { flightNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
+      let t = r.body.t.slice(), pos = r.body.position.slice();
+      const st = r.body.stopped;
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      const down = (p) => p[0] * aim[0] + p[1] * aim[1], side = (p) => p[0] * right[0] + p[1] * right[1];
+      const pts = pos.map(p => [down(p) / 1000, p[2] / 1000]);
+      const ball = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'can-ball'});
+      let XY = null, cur = pts[0];
+      linePlot(flightPlot, [{points: pts, label: 'with Coriolis'}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
+        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1])); return ball; }]});
+      canPlay.set(t, (i, f, tt) => {
+        const j = Math.min(i + 1, pos.length - 1), p = pos[i].map((x, k) => x + (pos[j][k] - x) * f);
+        cur = [down(p) / 1000, p[2] / 1000];
+        if (XY) { ball.setAttribute('cx', XY[0](cur[0])); ball.setAttribute('cy', XY[1](cur[1])); }
+        flightNote.dataset.right = String(side(p));
+        flightNote.dataset.down = String(down(p));
+        const up = Math.abs(p[2]) < 1e-6 ? 0 : p[2]; // the landing sample's round-off, not "-4.5e-16 km up"
+        flightNote.textContent = `t = ${fmt(tt, 4)} s: ${fmt(down(p) / 1000, 4)} km downrange, ${fmt(up / 1000, 4)} km up, ` +
+          `${fmt(side(p), 3)} m to the right of the aim (too small to see at this scale: the plan view above magnifies it).`;
+      });
+    };
     // Foucault
     const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat'});
     const pL = field({label: 'length', pointer: '/length', value: 67, unit: 'm', id: 'fou-len'});
@@ -154,11 +203,23 @@ export default {
       // 12 swings, 40 frames a swing: the bob on the (exaggerated) trace
       const T = a.swing.period, times = Array.from({length: 12 * 40 + 1}, (_, i) => i * T / 40);
       fouPlay.set(times, (i, f, t) => { if (bob) bob(t / T); });
+      globe(a);
     });
     plotTools(fallS.plot, {name: 'falling-object'}); plotTools(canS.plot, {name: 'cannonball'});
     const fouPlay = player({label: 'The Foucault pendulum'});
     fouS.plot.after(fouPlay.root);
     plotTools(fouS.plot, {name: 'foucault'});
+    // the swing plane over the Earth in 3-D, one sidereal day played
+    const gbox = el('div', {class: 'view3d-box', id: 'fou-3d-box'});
+    const gnote = el('p', {class: 'muted', id: 'fou-3d-note'});
+    const dayPlay = player({label: 'The Earth and the swing plane', unit: 'h', seconds: 3600});
+    const frameSel = el('select', {id: 'fou-frame', 'data-role': 'frame'},
+      el('option', {value: 'stars', selected: true}, 'the stars (the Earth turns)'), el('option', {value: 'ground'}, 'the ground (the Earth still)'));
+    add(fouS.figure, el('h3', {}, 'The swing plane over the Earth'),
+      el('div', {class: 'exaggerate'}, el('label', {for: 'fou-frame'}, 'Seen from'), frameSel), gbox, dayPlay.root, gnote);
+    const G = view3d(gbox, {label: 'The Foucault pendulum\'s swing plane on the turning Earth', id: 'fou-view', extent: 1.3});
+    const globe = (a) => foucaultGlobe(G, gbox, gnote, dayPlay, a, () => frameSel.value === 'ground');
+    frameSel.addEventListener('change', () => dayPlay.seek(Number(gbox.dataset.hours) || 0));
     fall(); cannon(); pend();
   },
 };
@@ -193,4 +254,86 @@ function rosette(root, rate, period, still, flat) {
     svg('text', {x: 12, y: H - 10, 'font-size': 14, fill: '#444'}, still || !real ? '12 swings, drawn to scale'
       : `12 swings, turn drawn ×${fmt(Math.abs(turn / real), 3)}`), bob);
   return at;
+}
+
+// The Earth (radius 1, axis z, seen from the stars) turning once in a sidereal
+// day, and on it at latitude λ an enlarged floor with the pendulum's swing
+// plane standing on it. The plane turns relative to the floor at the API's
+// measured rate (rad/s; negative: clockwise seen from above), drawn to scale:
+// in a day it turns 360° sin λ on the floor. Grey on the floor: where the plane
+// stood at the start (in the floor's directions), so the turn shows. The box
+// carries data-swing-deg (the plane's turn relative to the floor so far) and
+// data-earth-deg (the Earth's turn as drawn) for tests. ground(): seen from the
+// ground, the Earth held still (the rotating frame), only the plane turns.
+const SIDEREAL_DAY = 86164.0905; // s
+function foucaultGlobe(G, box, note, play, a, ground) {
+  const lat = a.setup.latitude_deg * Math.PI / 180, rate = a.precession.measured_rate || 0;
+  const W = Array.isArray(a.setup.omega) ? Math.hypot(...a.setup.omega) : 0, day = W > 0 ? 2 * Math.PI / W : SIDEREAL_DAY;
+  G.scene.children.filter(o => o.userData.mine).forEach(o => G.scene.remove(o));
+  const world = new THREE.Group(); world.userData.mine = true; G.scene.add(world);
+  const earth = new THREE.Group(); world.add(earth);
+  earth.add(new THREE.Mesh(new THREE.SphereGeometry(1, 48, 32), new THREE.MeshStandardMaterial({color: 0x4dabf7})));
+  // meridians and parallels every 30°, so the turning shows
+  const lineMat = new THREE.LineBasicMaterial({color: 0x1c5d99});
+  for (let k = 0; k < 6; k++) {
+    const pts = []; for (let i = 0; i <= 64; i++) { const u = Math.PI * i / 64 - Math.PI / 2, v = k * Math.PI / 6;
+      pts.push(new THREE.Vector3(1.002 * Math.cos(u) * Math.cos(v), 1.002 * Math.cos(u) * Math.sin(v), 1.002 * Math.sin(u))); }
+    earth.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(pts), lineMat));
+    const back = new THREE.Line(new THREE.BufferGeometry().setFromPoints(pts.map(p => new THREE.Vector3(-p.x, -p.y, p.z))), lineMat);
+    earth.add(back);
+  }
+  for (const u of [-60, -30, 0, 30, 60].map(d => d * Math.PI / 180)) {
+    const pts = []; for (let i = 0; i <= 96; i++) { const v = 2 * Math.PI * i / 96;
+      pts.push(new THREE.Vector3(1.002 * Math.cos(u) * Math.cos(v), 1.002 * Math.cos(u) * Math.sin(v), 1.002 * Math.sin(u))); }
+    earth.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(pts), new THREE.LineBasicMaterial({color: u === 0 ? 0xc92a2a : 0x1c5d99})));
+  }
+  // the axis, through the poles
+  world.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(0, 0, -1.35), new THREE.Vector3(0, 0, 1.35)]),
+    new THREE.LineBasicMaterial({color: 0x333333})));
+  const N = label('N', '#333'); N.position.set(0, 0, 1.45); N.scale.multiplyScalar(0.12); world.add(N);
+  // the floor at latitude λ, longitude 0: east e, north n, up u (Earth-fixed)
+  const u = new THREE.Vector3(Math.cos(lat), 0, Math.sin(lat)), e = new THREE.Vector3(0, 1, 0);
+  const n = new THREE.Vector3(-Math.sin(lat), 0, Math.cos(lat));
+  const site = new THREE.Group();
+  site.matrixAutoUpdate = false;
+  site.matrix.makeBasis(e, n, u).setPosition(u.clone().multiplyScalar(1.0));
+  earth.add(site);
+  const R = 0.42; // the floor, drawn large
+  const floor = new THREE.Mesh(new THREE.CircleGeometry(R, 48), new THREE.MeshStandardMaterial({color: 0xffffff, side: THREE.DoubleSide}));
+  floor.position.z = 0.01; site.add(floor);
+  const rim = []; for (let i = 0; i <= 64; i++) rim.push(new THREE.Vector3(R * Math.cos(2 * Math.PI * i / 64), R * Math.sin(2 * Math.PI * i / 64), 0.015));
+  site.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(rim), new THREE.LineBasicMaterial({color: 0x333333})));
+  const arrow = (dir, col) => new THREE.ArrowHelper(dir, new THREE.Vector3(0, 0, 0.02), R * 1.15, col, 0.07, 0.04);
+  site.add(arrow(new THREE.Vector3(0, 1, 0), 0x2b8a3e), arrow(new THREE.Vector3(1, 0, 0), 0x868e96));
+  const nl = label('N', '#2b8a3e'); nl.position.set(0, R * 1.35, 0.03); nl.scale.multiplyScalar(0.08); site.add(nl);
+  const el2 = label('E', '#555'); el2.position.set(R * 1.35, 0, 0.03); el2.scale.multiplyScalar(0.08); site.add(el2);
+  // the swing plane: a vertical sheet through the floor's centre, at first north-south
+  const plane = new THREE.Group(); site.add(plane);
+  const sheet = new THREE.Mesh(new THREE.PlaneGeometry(2 * R, 0.45), new THREE.MeshStandardMaterial({color: 0xc92a2a,
+    transparent: true, opacity: 0.55, side: THREE.DoubleSide}));
+  sheet.rotation.x = Math.PI / 2; sheet.rotation.y = Math.PI / 2; sheet.position.z = 0.235; // in the n-u plane
+  plane.add(sheet);
+  plane.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(0, -R, 0.025), new THREE.Vector3(0, R, 0.025)]),
+    new THREE.LineBasicMaterial({color: 0xc92a2a})));
+  const start = new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(0, -R, 0.022), new THREE.Vector3(0, R, 0.022)]),
+    new THREE.LineBasicMaterial({color: 0x555555}));
+  site.add(start);
+  G.frame(1.15);
+  G.view.yaw = -0.45; G.view.pitch = 0.6; // the floor (longitude 0, latitude λ) towards the camera at the start
+  const turnDay = rate * day * 180 / Math.PI, still = a.precession.first_order_rate === 0;
+  put(note, `Seen from the stars, the Earth turns once in a sidereal day (${fmt(day / 3600, 4)} h). The floor at ${fmt(a.setup.latitude_deg, 5)}° `,
+    `(drawn large, north green) turns with it; the swing plane (red) turns on the floor by ${still ? 'nothing: at the equator ω sin λ = 0'
+      : `${fmt(Math.abs(turnDay), 4)}° ${turnDay < 0 ? 'clockwise' : 'anticlockwise'} seen from above in that day (360° × sin λ = ${fmt(360 * Math.abs(Math.sin(lat)), 4)}°)`}`,
+    '. Drawn to scale: nothing exaggerated. Grey: where the plane stood at the start. Seen from the ground the Earth is held still ',
+    '(the rotating frame): the plane turns just the same on the floor.');
+  const times = Array.from({length: 289}, (_, i) => i * day / 3600 / 288); // hours, every 5 min
+  play.set(times, (i, f, th) => {
+    const t = th * 3600, spin = ground() ? 0 : 2 * Math.PI * t / day, turn = rate * t;
+    earth.rotation.z = spin;
+    box.dataset.hours = String(th);
+    plane.rotation.z = turn;
+    box.dataset.earthDeg = String(spin * 180 / Math.PI);
+    box.dataset.swingDeg = String(turn * 180 / Math.PI);
+    G.render();
+  });
 }

@@ -1,6 +1,7 @@
 // Orbits lab: the Schwarzschild precession of Mercury and light bending by the
 // Sun (POST /v1/gr/geodesic, timelike and null).
-import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize, pow10, plotTools} from '../lib.js';
+import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize, pow10, plotTools,
+  costPreview} from '../lib.js';
 import {player} from '../anim.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
@@ -28,8 +29,13 @@ export default {
       }
       a.input.value = r.initial.semi_major_axis; e.input.value = r.initial.eccentricity;
       if (r.orbits) n.input.value = r.orbits;
-      run();
-    }, {fits}), a.wrap, e.wrap, n.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
+      run(); cost.predict();
+    }, {fits}), a.wrap, e.wrap, n.wrap);
+    // the chooser's predicted cost at the chosen accuracy (and at draft) before the run: a dry run
+    const orbitBody = () => ({M: 'sun', kind: 'timelike', initial: {semi_major_axis: val(a.input), eccentricity: val(e.input)},
+      orbits: val(n.input), samples: 600});
+    const cost = costPreview(L.form, '/v1/gr/geodesic', orbitBody, {id: 'orb-cost'});
+    add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
     const plot = svg('svg', {class: 'plot', id: 'orb-plot', role: 'img', 'aria-label': 'orbit'});
     const exId = 'orb-exaggerate';
     const exSel = el('select', {id: exId, 'data-role': 'exaggerate'});
@@ -70,9 +76,9 @@ export default {
     };
     exSel.addEventListener('change', drawOrbit);
     const exLabel = (k) => k >= 1e4 ? pow10(Math.round(Math.log10(k))) : String(k);
-    const run = runner(L, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'timelike',
-      initial: {semi_major_axis: val(a.input), eccentricity: val(e.input)}, orbits: val(n.input), samples: 600}), (r) => {
+    const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r) => {
       const p = r.precession;
+      cost.after(r);
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'advance per orbit (measured)'), num('orb-measured', p.measured_per_orbit, 'rad'),
         el('dt', {}, 'exact'), num('orb-exact', p.exact_per_orbit, 'rad'),
@@ -92,7 +98,7 @@ export default {
       last = r;
       drawOrbit();
     });
-    run();
+    run(); cost.predict();
 
     // light bending: a null geodesic past the Sun
     const lf = el('form', {novalidate: true, id: 'light-form', 'aria-label': 'Light bending inputs'});

@@ -155,7 +155,8 @@ export default {
     const pick = (k, i) => {
       const id = `order-${k}-${i ? 'angle' : 'axis'}`;
       return i ? el('input', {id, type: 'number', step: 'any', value: st[k][1], 'data-pointer': `/operations/0/request/rotations/${k === 'a' ? 0 : 1}/axis_angle/angle`, inputmode: 'decimal'})
-        : el('select', {id, 'data-pointer': `/operations/0/request/rotations/${k === 'a' ? 0 : 1}/axis_angle/axis`},
+        : el('select', {id, 'aria-label': `${k === 'a' ? 'First' : 'Second'} turn: axis`,
+          'data-pointer': `/operations/0/request/rotations/${k === 'a' ? 0 : 1}/axis_angle/axis`},
           ['x', 'y', 'z'].map(n => el('option', {value: n, selected: st[k][0] === n}, n)));
     };
     const ctl = {a: [pick('a', 0), pick('a', 1)], b: [pick('b', 0), pick('b', 1)]};

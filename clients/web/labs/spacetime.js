@@ -1,6 +1,8 @@
 // Spacetime lab: a Minkowski diagram (events, light cone, the boosted axes
 // ct' and x' sliding with beta, the invariant hyperbola) from
-// POST /v1/relativity/boost, and the twin paradox from /v1/relativity/worldline.
+// POST /v1/relativity/boost, and the twin paradox from /v1/relativity/worldline
+// (played: both twins move up their worldlines, each clock showing its proper time).
+import {player} from '../anim.js';
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot,
         drawPlot, plotSize, plotTools} from '../lib.js';
 
@@ -78,7 +80,11 @@ export default {
     const T = labSection(main, {title: 'The twin paradox', form: tw,
       intro: 'One twin travels out at β and back; the other stays home. The traveller\'s proper time is shorter by the factor 1/γ.'});
     const tplot = svg('svg', {class: 'plot', id: 'tw-diagram', role: 'img', 'aria-label': 'Twin worldlines'});
-    add(T.figure, tplot);
+    const clocks = el('p', {class: 'clocks', id: 'tw-clocks'});
+    const tplay = player({label: 'The twins', unit: 'yr', seconds: 3.15576e7});
+    add(T.figure, tplot, tplay.root, clocks,
+      el('p', {class: 'muted'}, 'Played in the stay-at-home frame\'s time ct: each twin\'s dot moves along its worldline and its clock ',
+        'shows its own proper time (the traveller\'s between the legs\' ends at each leg\'s constant rate).'));
     const trun = runner(T, '/v1/relativity/worldline', () => {
       const b = val(tb.input), d = val(td.input);
       return {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
@@ -89,8 +95,34 @@ export default {
         el('dt', {}, 'stay-at-home ages'), num('tw-home', t.stay_at_home_time, 'yr'),
         el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')));
       const trav = [[0, 0], ...r.legs.map(l => [l.end[1], l.end[0]])];
+      // the played state at coordinate time ct: the traveller's place and proper time within its leg
+      const legs = r.legs.map(l => ({t0: l.start[0], t1: l.end[0], x0: l.start[1], x1: l.end[1], tau: l.proper_time}));
+      const at = (ct) => {
+        let tau = 0;
+        for (const l of legs) {
+          const f = l.t1 > l.t0 ? Math.min(1, Math.max(0, (ct - l.t0) / (l.t1 - l.t0))) : 1;
+          if (ct < l.t1) return {x: l.x0 + (l.x1 - l.x0) * f, tau: tau + l.tau * f};
+          tau += l.tau;
+        }
+        const e = legs[legs.length - 1];
+        return {x: e ? e.x1 : 0, tau};
+      };
+      const dots = [svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'tw-home-dot'}),
+        svg('circle', {r: 7, fill: '#2b8a3e', stroke: '#fff', 'stroke-width': 2, id: 'tw-trav-dot'})];
+      let XY = null, now = 0;
+      const place = () => { if (!XY) return; const p = at(now);
+        dots[0].setAttribute('cx', XY[0](0)); dots[0].setAttribute('cy', XY[1](now));
+        dots[1].setAttribute('cx', XY[0](p.x)); dots[1].setAttribute('cy', XY[1](now)); };
       linePlot(tplot, [{points: [[0, 0], [0, t.coordinate_time]], label: `home: ${fmt(t.stay_at_home_time, 4)} yr`},
-        {points: trav, label: `traveller: ${fmt(t.proper_time, 4)} yr`}], {xlabel: 'x [ly]', ylabel: 'ct [yr]', equal: true});
+        {points: trav, label: `traveller: ${fmt(t.proper_time, 4)} yr`}], {xlabel: 'x [ly]', ylabel: 'ct [yr]', equal: true,
+        marks: [({X, Y}) => { XY = [X, Y]; const g = svg('g', {}); add(g, dots); place(); return g; }]});
+      tplay.set([0, t.coordinate_time], (i, f, ct) => {
+        now = ct; place();
+        const p = at(ct);
+        clocks.dataset.home = String(ct); clocks.dataset.traveller = String(p.tau);
+        put(clocks, el('strong', {}, 'Clocks: '), `home ${fmt(ct, 4)} yr, traveller ${fmt(p.tau, 4)} yr `,
+          el('span', {class: 'muted'}, `(the traveller ${fmt(Math.abs(p.x), 4)} ly from home)`));
+      });
     });
     trun();
   },

@@ -1,7 +1,7 @@
 // Tops lab: the heavy symmetric top (POST /v1/rigid/top): the symmetry axis
 // tracing nutation loops on the unit sphere and θ(t); and the Dzhanibekov flip
 // of an asymmetric free body (POST /v1/rigid/rotate).
-import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
 
@@ -34,10 +34,14 @@ export default {
         dt.input.value = r.t_end; drun(); df.scrollIntoView({block: 'nearest'}); return;
       }
       for (const [k, c] of Object.entries(f)) c.input.value = r[k] !== undefined ? r[k] : k === 'phi_dot' ? 0 : c.input.value;
-      run();
+      run(); cost.predict();
     }, {fits: (ex) => ex.operation !== '/v1/rigid/rotate' || (Array.isArray(ex.request.moments) && Array.isArray(ex.request.omega) &&
         typeof ex.request.t_end === 'number' && !ex.request.orientation)}),
-    Object.values(f).map(c => c.wrap), el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
+    Object.values(f).map(c => c.wrap));
+    // the chooser's predicted cost at the chosen accuracy (and at draft) before the run: a dry run
+    const topBody = () => { const b = {}; for (const [k, c] of Object.entries(f)) b[k] = val(c.input); b.samples = 801; return b; };
+    const cost = costPreview(L.form, '/v1/rigid/top', topBody, {id: 'top-cost'});
+    add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
     const play = player({label: 'The top'});
@@ -49,9 +53,8 @@ export default {
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
     let trace = null;
-    const run = runner(L, '/v1/rigid/top', () => {
-      const b = {}; for (const [k, c] of Object.entries(f)) b[k] = val(c.input); b.samples = 801; return b;
-    }, (a, req) => {
+    const run = runner(L, '/v1/rigid/top', () => cost.withAccuracy(topBody()), (a, req) => {
+      cost.after(a);
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'θ min'), num('top-thmin', a.nutation.theta_min, 'rad'),
         el('dt', {}, 'θ max'), num('top-thmax', a.nutation.theta_max, 'rad'),
@@ -98,7 +101,7 @@ export default {
         tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
       });
     });
-    run();
+    run(); cost.predict();
 
     // free rotation (Dzhanibekov)
     const df = el('form', {novalidate: true, id: 'dz-form', 'aria-label': 'Free rotation inputs'});
