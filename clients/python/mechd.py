@@ -995,7 +995,7 @@ class _Operations:
             height (required): drop height above the ground, m (released at rest)
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1021,7 +1021,7 @@ class _Operations:
             height: height reached without rotation, m: speed = sqrt(2 g h)
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1050,7 +1050,7 @@ class _Operations:
                     0.0
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1076,7 +1076,7 @@ class _Operations:
             length: l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m); default 67.0
             g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
                     in the notes); default 9.80665
-            omega_magnitude: Earth's rotation rate W, rad/s (default sidereal); default 7.2921159e-05
+            omega_magnitude: Earth's rotation rate W, rad/s (default IERS 2010); default 7.292115e-05
             mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28.0
             release: default: from rest at 3 degrees, towards the east
             swings: length of the run in swings (full periods of the planar pendulum at this amplitude);

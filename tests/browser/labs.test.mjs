@@ -208,7 +208,7 @@ await lab('spacetime', async () => {
 
 await lab('earth', async () => {
   await state('#fall-form', 'done');
-  const w = 7.2921159e-5, g = 9.80665, h = 100, lat = 32 * Math.PI / 180;
+  const w = 7.292115e-5, g = 9.80665, h = 100, lat = 32 * Math.PI / 180;
   const east = w * Math.cos(lat) * Math.sqrt(8 * h ** 3 / g) / 3; // notes: x_east = (1/3) w cos(lat) sqrt(8h^3/g)
   close(await value('#fall-east-1'), east, 1e-9, 'falling object: first-order east deflection');
   close(await value('#fall-east'), east, 1e-6, 'falling object: numerical east deflection (second order ~ 1e-7 relative)');
