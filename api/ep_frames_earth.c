@@ -207,7 +207,8 @@ static const char gr_description[] =
     "g_eff, deviating from the direction to the centre by alpha = atan(horizontal / radial); "
     "over latitude it peaks where tan L = sqrt(1 - k) (k = W^2 r / g0, so just below 45 deg) "
     "at tan alpha = k / (2 sqrt(1 - k)), about W^2 R/(2 g) = 0.0017 rad = 0.099 deg; the "
-    "deviation is answered in rad, deg and as tan (horizontal / radial). At the "
+    "deviation is answered in rad, mrad (the notes' HW 6 asks for milliradians), deg and as "
+    "tan (horizontal / radial). At the "
     "equator the reduction g0 - |g_eff| is exactly W^2 r (0.0339 m/s^2). Ellipsoid: WGS 84 "
     "normal gravity by Somigliana's closed formula gamma0 = gamma_e (1 + k sin^2 L) / "
     "sqrt(1 - e^2 sin^2 L) (NIMA TR8350.2, 3rd ed. 2000, eq. 4-1; gamma_e = 9.7803253359, "
@@ -220,7 +221,7 @@ static const char gr_description[] =
     "GRS 80 ellipsoids differ by less). Answer: `constants`; `sphere` {r, gravitation, centrifugal "
     "{magnitude, up, north}, g_effective {vector (east, north, up), magnitude, radial, "
     "horizontal, north}, reduction (g0 - |g_eff|, computed without cancellation), deviation "
-    "{rad, deg, tan, towards}, deviation_max {rad, deg, latitude_deg}, k}; `ellipsoid` {gamma_surface, "
+    "{rad, mrad, deg, tan, towards}, deviation_max {rad, mrad, deg, latitude_deg}, k}; `ellipsoid` {gamma_surface, "
     "free_air_correction, gamma, igf1980 {gamma, minus_somigliana, formula}}; `difference` {sphere_minus_ellipsoid (|g_eff| - gamma, "
     "m/s^2), relative, explanation}. The two differ by up to 0.12 %: the sphere leaves out the "
     "Earth's flattening (the equator is 21 km farther from the centre than the poles) and the "
@@ -325,10 +326,12 @@ static json_t *earth_gravity(struct api_call *c, const json_t *body)
     put(dev, "rad", api_real(c, g.deviation));
     put(dev, "deg", api_real(c, g.deviation * (180 / M_PI)));
     put(dev, "tan", api_real(c, g.horizontal / g.radial));
+    put(dev, "mrad", api_real(c, g.deviation * 1e3));
     put(dev, "towards", json_string(g.horizontal > 0 ? "equator" : "none"));
     put(sph, "deviation", dev);
     put(dmax, "rad", api_real(c, g.deviation_max));
     put(dmax, "deg", api_real(c, g.deviation_max * (180 / M_PI)));
+    put(dmax, "mrad", api_real(c, g.deviation_max * 1e3));
     put(dmax, "latitude_deg", api_real(c, g.deviation_max_latitude * (180 / M_PI)));
     put(sph, "deviation_max", dmax);
     put(sph, "k", api_real(c, g.k));

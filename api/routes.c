@@ -13,6 +13,7 @@ extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
 extern const struct api_route api_route_frames_effective_force;
+extern const struct api_route api_route_frames_rotating_liquid;
 extern const struct api_route api_route_earth_gravity;
 extern const struct api_route api_route_earth_tides;
 extern const struct api_route api_route_scene_falling_object;
@@ -79,6 +80,7 @@ const struct api_route *const api_routes[] = {
     &api_route_trajectory,
     &api_route_compare,
     &api_route_frames_effective_force,
+    &api_route_frames_rotating_liquid,
     &api_route_earth_gravity,
     &api_route_earth_tides,
     &api_route_scene_falling_object,

@@ -944,7 +944,30 @@ class _Operations:
         """
         return self._operation('/v1/frames/effective-force', body, (('frame', frame), ('particle', particle), ('force', force), ('cost', cost)))
 
-    def earth_gravity(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, height: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def frames_rotating_liquid(self, body: Optional[Dict[str, Any]] = None, *, omega: Optional[float] = None, g: Optional[float] = None, radius: Optional[float] = None, depth: Optional[float] = None, container_height: Optional[float] = None, radii: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The free surface of a liquid turning with its container: the paraboloid z = z0 + omega^2 r^2/(2g), its centre and rim heights at fixed volume, the dry disc, spilling
+
+        POST /v1/frames/rotating-liquid. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            omega (required): rad/s, the container's rotation rate about its vertical axis
+            g: m/s^2, gravity (default standard gravity); default 9.80665
+            radius (required): m, inner radius R of the cylindrical container
+            depth (required): m, depth h0 of the liquid at rest
+            container_height: m, height H of the wall (optional): answers whether the liquid spills and
+                    the rate at which it starts to; must be >= depth
+            radii: m, radii (each <= radius) at which to give the surface's height above the bottom and
+                    its slope
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/frames/rotating-liquid', body, (('omega', omega), ('g', g), ('radius', radius), ('depth', depth), ('container_height', container_height), ('radii', radii), ('cost', cost)))
+
+    def earth_gravity(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, height: Optional[float] = None, radius: Optional[float] = None, gm: Optional[float] = None, g0: Optional[float] = None, omega: Optional[float] = None, sidereal_day: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Effective gravity on a rotating spherical Earth at a latitude and height (magnitude, radial and horizontal parts, plumb-line deviation), beside the WGS 84 ellipsoid's normal gravity
 
         POST /v1/earth/gravity. The request is `body` (a dict) and/or the keyword arguments below
@@ -958,13 +981,21 @@ class _Operations:
             height: m above the sphere / the ellipsoid, from the deepest trench to 100 km; default 0.0
             radius: m, radius of the spherical model; default the IUGG mean radius 6371008.8 m (use
                     6378137 for the equatorial radius); default 6371008.8
+            gm: m^3/s^2, the sphere's GM (default IERS 2010 / WGS 84); at most one of gm, g0; default
+                    398600441800000.0
+            g0: m/s^2, gravitation GM/R^2 at the sphere's surface (radius R, without the centrifugal
+                    part): sets GM = g0 R^2; at most one of gm, g0
+            omega: rad/s, the rotation rate (default IERS 2010 / WGS 84, the one default of every
+                    operation); at most one of omega, sidereal_day; default 7.292115e-05
+            sidereal_day: s, the rotation period relative to the stars: sets omega = 2 pi /
+                    sidereal_day; at most one of omega, sidereal_day
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('cost', cost)))
+        return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('gm', gm), ('g0', g0), ('omega', omega), ('sidereal_day', sidereal_day), ('cost', cost)))
 
-    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, moon: Optional[Dict[str, Any]] = None, sun: Optional[Dict[str, Any]] = None, gm_earth: Optional[float] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Tidal acceleration of the Moon, the Sun or any body, exact (without cancellation) and to first order in r/d, equilibrium tide heights, spring and neap tides
 
         POST /v1/earth/tides. The request is `body` (a dict) and/or the keyword arguments below
@@ -973,15 +1004,21 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            body_ (required): the tide-raising body: "moon", "sun" or {mass (kg), distance (m, centre to
-                    centre)}
+            body_ (required): the tide-raising body: "moon", "sun" or {gm (m^3/s^2) or mass (kg),
+                    distance (m, centre to centre)}
+            moon: the Moon used by body "moon" and by spring_neap: any of gm or mass, distance; default
+                    DE440 GM, 3.844e8 m
+            sun: the Sun used by body "sun" and by spring_neap: any of gm or mass, distance; default
+                    DE440 GM, 1 au
+            gm_earth: m^3/s^2, the Earth's GM in the tide height (g = GM_E / r^2); default IERS 2010;
+                    default 398600441800000.0
             angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0.0
             radius: m, distance of the point from the Earth's centre; default 6371008.8
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/earth/tides', body, (('body', body_), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
+        return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
 
     def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
@@ -1158,6 +1195,7 @@ OPERATIONS = {
     'trajectory': '/v1/trajectory',
     'compare': '/v1/compare',
     'frames_effective_force': '/v1/frames/effective-force',
+    'frames_rotating_liquid': '/v1/frames/rotating-liquid',
     'earth_gravity': '/v1/earth/gravity',
     'earth_tides': '/v1/earth/tides',
     'scenes_falling_object': '/v1/scenes/falling-object',
