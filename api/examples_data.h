@@ -420,6 +420,22 @@ static const char *const api_examples_data[] = {
     "  \"request\": {\"omega\": 10, \"radius\": 0.1, \"depth\": 0.05},\n"
     "  \"notes_answer\": {\"pointer\": \"/rim_height\", \"value\": 0.07549290532444822, \"rounding\": {\"relative\": 1e-12}, \"text\": \"At rest in the rotating frame the surface is an equipotential of g z − ω² r²/2: z = z0 + ω² r²/(2g); keeping the volume, the rim rises to h0 + ω² R²/(4g) = 0.0755 m.\"}\n"
     "}",
+    "{\n"
+    "  \"id\": \"billiard-ball-rolling-height\",\n"
+    "  \"title\": \"Where to strike a billiard ball so it rolls at once\",\n"
+    "  \"section\": \"2.11 Homework 3\",\n"
+    "  \"operation\": \"/v1/rigid/struck-ball\",\n"
+    "  \"request\": {\"radius\": 0.028575},\n"
+    "  \"notes_answer\": {\"pointer\": \"/rolling_height_floor\", \"value\": 0.040005, \"rounding\": {\"relative\": 1e-12}, \"text\": \"v0 = J/m and ω0 = J h/(2/5 m R²) roll together (v0 = ω0 R) for h = 2R/5 above the centre: the rail belongs at 7R/5 = 4.0 cm above the cloth for a 57.15 mm ball.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"cube-topples-off-edge\",\n"
+    "  \"title\": \"A cube balanced on an edge falls onto a face\",\n"
+    "  \"section\": \"2.11 Homework 4\",\n"
+    "  \"operation\": \"/v1/rigid/topple\",\n"
+    "  \"request\": {\"width\": 0.1},\n"
+    "  \"notes_answer\": {\"pointer\": \"/edge_held/omega\", \"value\": 7.8058126720855725, \"rounding\": {\"relative\": 1e-12}, \"text\": \"With the edge held, m g l(√2 − 1)/2 = ½ (2/3 m l²) ω²: ω = √((3g/2l)(√2 − 1)) = 7.81 rad/s for l = 10 cm (frictionless floor: √((12g/5l)(√2 − 1))).\"}\n"
+    "}",
 };
 
 #endif

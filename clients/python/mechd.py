@@ -480,6 +480,67 @@ class _Operations:
         """
         return self._operation('/v1/rigid/stability', body, (('moments', moments), ('axis', axis), ('spin', spin), ('cost', cost)))
 
+    def rigid_free_symmetric_top(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, omega: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The torque-free symmetric top in closed form: space and body precession rates, the body and space cones, the angle between L and omega
+
+        POST /v1/rigid/free-symmetric-top. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            moments (required): [I_perp, I3]: the two equal principal moments and the one about the
+                    symmetry axis, kg m^2
+            omega (required): rad/s, body components (w1, w2, w3), w3 along the symmetry axis; not all
+                    zero
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/free-symmetric-top', body, (('moments', moments), ('omega', omega), ('cost', cost)))
+
+    def rigid_struck_ball(self, body: Optional[Dict[str, Any]] = None, *, radius: Optional[float] = None, shape: Optional[str] = None, moment_of_inertia: Optional[float] = None, mass: Optional[float] = None, impulse: Optional[float] = None, height: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The height at which a struck ball rolls without slipping (2R/5 above the centre for a solid sphere), and the rolling speed and energy lost when struck elsewhere
+
+        POST /v1/rigid/struck-ball. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            radius (required): m, the ball's radius R (the contact point is R below the centre)
+            shape: I_cm/(m R^2) = 2/5, 2/3, 1/2, 1; moment_of_inertia overrides it; default
+                    "solid_sphere"
+            moment_of_inertia: kg m^2, I_cm about the rolling axis (instead of shape)
+            mass: kg; default 1.0
+            impulse: N s, the horizontal impulse of the strike; default 1.0
+            height: m, where the strike hits above the centre (|height| <= radius); default the rolling
+                    height
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/struck-ball', body, (('radius', radius), ('shape', shape), ('moment_of_inertia', moment_of_inertia), ('mass', mass), ('impulse', impulse), ('height', height), ('cost', cost)))
+
+    def rigid_topple(self, body: Optional[Dict[str, Any]] = None, *, width: Optional[float] = None, height: Optional[float] = None, mass: Optional[float] = None, g: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A box balanced on an edge falls onto its base: the angular velocity as it lands with the edge held or on a frictionless floor, and the floor's impulse that stops it
+
+        POST /v1/rigid/topple. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            width (required): m, the box's side a in the plane of the fall (a cube: its side)
+            height: m, the side b that ends vertical; default width (a cube)
+            mass: kg (scales the impulses only); default 1.0
+            g: m/s^2; default 9.80665
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/topple', body, (('width', width), ('height', height), ('mass', mass), ('g', g), ('cost', cost)))
+
     def small_oscillations(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Small oscillations about a steady motion: near-circular orbits in a central potential (radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical pendulum about any pivot and axis, the Foucault pendulum's normal modes
 
@@ -1176,6 +1237,9 @@ OPERATIONS = {
     'rigid_rotate': '/v1/rigid/rotate',
     'rigid_top': '/v1/rigid/top',
     'rigid_stability': '/v1/rigid/stability',
+    'rigid_free_symmetric_top': '/v1/rigid/free-symmetric-top',
+    'rigid_struck_ball': '/v1/rigid/struck-ball',
+    'rigid_topple': '/v1/rigid/topple',
     'small_oscillations': '/v1/small-oscillations',
     'relativity_boost': '/v1/relativity/boost',
     'relativity_velocity_addition': '/v1/relativity/velocity-addition',
