@@ -791,9 +791,10 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
-                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
-                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
+                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
+                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
+                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -818,9 +819,10 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
-                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
-                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
+                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
+                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
+                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
