@@ -65,16 +65,16 @@ enum mech_status mech_free_symmetric_top(double i_perp, double i3, const double 
 struct mech_struck_ball {
     double rolling_height;   /* k² / R above the centre, m */
     double rolling_height_floor; /* R + k²/R above the floor, m */
-    double v0, w0;           /* per unit impulse J: 1/m and h/(m k²) (scaled by J below) */
+    double v0, w0;           /* J/m (m/s) and J h/(m k²) (rad/s): just after the strike */
     double slip_velocity;    /* v0 - w0 R at the start (forward slip positive), m/s */
     double v_final;          /* rolling speed reached, m/s */
     double energy_lost_fraction; /* 1 - KE_final / KE_initial */
 };
 
 /* A ball of mass m (kg), radius r (m), radius of gyration squared k2 = I_cm/m
- * (m^2, 0 < k2 <= r² for bodies whose mass lies within r... any k2 > 0 is
+ * (m^2, > 0; k2 <= r² for a body whose mass lies within r, but any k2 > 0 is
  * accepted), struck by a horizontal impulse j (N s, > 0) at height h above
- * the centre (m, |h| <= r). Statuses: MECH_OK; MECH_EINVAL (params "mass",
+ * the centre (m, |h| <= r). The answer's v0, w0 and speeds are for this j. Statuses: MECH_OK; MECH_EINVAL (params "mass",
  * "radius", "k2", "impulse", "height"). */
 enum mech_status mech_struck_ball(double m, double r, double k2, double j, double h,
                                   struct mech_struck_ball *out, struct mech_error *err);
