@@ -24,18 +24,22 @@
 /* Constants (documented in the routes' descriptions). */
 #define GR_C 299792458.0           /* m/s, exact (SI definition) */
 #define GR_G 6.67430e-11           /* m^3 kg^-1 s^-2, CODATA 2018 */
-#define GR_GM_SUN 1.32712440018e20 /* m^3/s^2, IAU 2015 nominal / DE430 */
+#define GR_GM_SUN 1.32712440041279419e20 /* m^3/s^2, JPL DE440 (Park et al. 2021); = MECH_SUN_GM */
 #define GR_GM_EARTH 3.986004418e14 /* m^3/s^2, WGS 84 / IERS */
 #define GR_ARCSEC (180.0 * 3600.0 / M_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
 
 /* clang-format off */
 #define GR_M_SCHEMA                                                                           \
-    "\"M\":{\"description\":\"the central mass: kg, or \\\"sun\\\" (GM = 1.32712440018e20 "  \
-    "m^3/s^2) or \\\"earth\\\" (GM = 3.986004418e14 m^3/s^2); a mass in kg uses G = "         \
+    "\"M\":{\"description\":\"the central mass: kg, or {gm: m^3/s^2} (GM, the precisely "   \
+    "known quantity), or \\\"sun\\\" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "   \
+    "\\\"earth\\\" (GM = 3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = "          \
     "6.67430e-11. Required with units SI; optional with units geometric (then it only adds "  \
     "the SI scale GM/c^2 to the answer).\",\"oneOf\":["                                      \
     "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e42},"                          \
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"gm\"],"             \
+    "\"properties\":{\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e32,"   \
+    "\"description\":\"m^3/s^2\"}}},"                                                       \
     "{\"enum\":[\"sun\",\"earth\"]}]}"
 #define GR_UNITS_SCHEMA                                                                       \
     "\"units\":{\"enum\":[\"SI\",\"geometric\"],\"default\":\"SI\",\"description\":\"SI: "   \
@@ -72,6 +76,8 @@ static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units
     if (M) {
         if (json_is_string(M))
             u->GM = !strcmp(json_string_value(M), "sun") ? GR_GM_SUN : GR_GM_EARTH;
+        else if (json_is_object(M))
+            u->GM = api_number(M, "gm", 0);
         else
             u->GM = GR_G * json_number_value(M);
         u->has_mass = 1;
@@ -203,8 +209,8 @@ static const char schw_description[] =
     "W(r) = (1 - r_s/r)/r^2 (1/m^2 or (GM/c^2)^-2; (1/L^2)(dr/dlambda)^2 = 1/b^2 - W, Hartle eq. "
     "11.10), with the extrema (circular orbits at r = (L^2/2GM)(1 +- sqrt(1 - 12 (GM/cL)^2)), "
     "eq. 9.33; the photon maximum at 3GM/c^2). Constants: c = 299792458 m/s (exact), G = "
-    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440018e20, GM_earth = "
-    "3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
+    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440041279419e20 (JPL DE440), "
+    "GM_earth = 3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
     "units block says which.";
 
 static const char schw_example[] =

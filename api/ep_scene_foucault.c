@@ -34,8 +34,8 @@ static const char fc_schema[] =
     "\"g\":" FC_POS("1e4", "9.80665",
                      "local effective gravity, m/s^2 (includes the centrifugal acceleration of "
                      "the origin, as in the notes)") ","
-    "\"omega_magnitude\":" FC_NUM("0", "1", "7.2921159e-05",
-                                   "Earth's rotation rate W, rad/s (default sidereal)") ","
+    "\"omega_magnitude\":" FC_NUM("0", "1", "7.292115e-05",
+                                   "Earth's rotation rate W, rad/s (default IERS 2010)") ","
     "\"mass\":" FC_POS("1e30", "28",
                         "bob mass, kg (scales the energy only; Foucault's bob: 28 kg)") ","
     "\"release\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
@@ -101,7 +101,11 @@ static const char fc_description[] =
     "Hermite interpolant): the swing-plane azimuth psi (mod pi, counterclockwise from east) "
     "is fitted with a straight line in t; precession.measured_rate is its slope in rad/s "
     "(negative = clockwise, as in the northern hemisphere). first_order_rate is the notes' "
-    "-W sin(lat). At finite amplitude the ellipse swung precesses by itself (Airy 1851): "
+    "-W sin(lat); sense states its sense (clockwise in the north, counterclockwise in the "
+    "south, none on the equator, seen from above) and measured_sense that of measured_rate. "
+    "full_precession_hours is 2 pi / |first_order_rate| (full_precession_basis says so); "
+    "full_precession_hours_measured is 2 pi / |measured_rate|, the time the simulated plane "
+    "actually takes (longer by the Airy correction). At finite amplitude the ellipse swung precesses by itself (Airy 1851): "
     "(3/8) omega0 a b / l^2 = (3/8) h / l^2 in the sense it is traversed, h = x y' - y x' + "
     "W sin(lat) rho^2; released from rest b = a W sin(lat) / omega0, so the rate is -W sin(lat) "
     "(1 - 3 a^2 / (8 l^2)). airy_correction_release uses h at release; airy_correction the "
@@ -127,6 +131,12 @@ struct fc_run {
 };
 
 /* Map the core's parameter names to the request's. */
+/* The sense of a precession rate (rad/s, counterclockwise positive seen from above). */
+static const char *fc_sense(double rate)
+{
+    return rate < 0 ? "clockwise" : rate > 0 ? "counterclockwise" : "none";
+}
+
 static void fc_fix_param(struct mech_error *e, const char *run_field)
 {
     const char *to = NULL;
@@ -342,6 +352,16 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(pr, "full_precession_hours",
                                 fabs(wz) > 0.0 ? api_real(c, 2.0 * fc_pi / fabs(wz) / 3600.0)
                                                : json_null());
+    /* senses stated, not implied (seen from above, local axes x east, y north) */
+    json_object_set_new_nocheck(pr, "sense", json_string(fc_sense(first)));
+    json_object_set_new_nocheck(pr, "measured_sense", json_string(fc_sense(r.precession.slope)));
+    json_object_set_new_nocheck(pr, "full_precession_basis",
+                                json_string("first_order_rate: 2 pi / (W |sin lat|); "
+                                            "full_precession_hours_measured uses measured_rate"));
+    json_object_set_new_nocheck(pr, "full_precession_hours_measured",
+                                fabs(r.precession.slope) > 0.0
+                                    ? api_real(c, 2.0 * fc_pi / fabs(r.precession.slope) / 3600.0)
+                                    : json_null());
     json_object_set_new_nocheck(pr, "turning_points", json_integer(r.turning_points));
     json_object_set_new_nocheck(pr, "fit_standard_error", api_real(c, r.precession.stderr_slope));
     json_object_set_new_nocheck(pr, "fit_rms_residual", api_real(c, r.precession.rms_residual));

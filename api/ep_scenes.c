@@ -32,8 +32,8 @@ static const double ep_pi = 3.14159265358979323846;
                                                     "§1.3)\"},"                                   \
                                                     "\"omega_magnitude\":{\"type\":\"number\","    \
                                                     "\"minimum\":0,\"maximum\":0.01,"              \
-                                                    "\"default\":7.2921159e-05,\"description\":"   \
-                                                    "\"Earth rotation rate, rad/s (sidereal)\"},"
+                                                    "\"default\":7.292115e-05,\"description\":"    \
+                                                    "\"Earth rotation rate, rad/s (IERS 2010)\"},"
 #define SC_ACCURACY                                                                                \
     "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
     "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \

@@ -27,7 +27,7 @@ static const char traj_description[] =
     "angular acceleration omega_dot (omega(t) = omega + omega_dot t, the same seen from either "
     "frame) and an optional constant acceleration of the origin (frame axes; omega = [0, 0, 0] "
     "gives a purely accelerating frame); earth: local axes x east, y north, z up at "
-    "latitude_deg, omega = W (0, cos lat, sin lat), W default 7.2921159e-5 rad/s (sidereal); "
+    "latitude_deg, omega = W (0, cos lat, sin lat), W default 7.292115e-5 rad/s (IERS 2010, the Earth's rotation relative to inertial space); "
     "the centrifugal acceleration of the origin is part of the local g you give. Fictitious "
     "terms (notes §1.2): coriolis -2m omega x v, centrifugal -m omega x (omega x r), euler "
     "-m omega_dot x r, translational -m A; a list (default all four in a non-inertial frame, "

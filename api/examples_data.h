@@ -133,7 +133,7 @@ static const char *const api_examples_data[] = {
     "  },\n"
     "  \"notes_answer\": {\n"
     "    \"pointer\": \"/precession_rate\",\n"
-    "    \"value\": 3.864232692431255e-05,\n"
+    "    \"value\": 3.864232215503917e-05,\n"
     "    \"rounding\": {\n"
     "      \"relative\": 1e-12\n"
     "    },\n"
@@ -170,7 +170,7 @@ static const char *const api_examples_data[] = {
     "  \"section\": \"1.4 Example: Deflection of Cannon Balls; 1.5 Homework 4\",\n"
     "  \"operation\": \"/v1/scenes/cannonball\",\n"
     "  \"request\": {\"speed\": 500, \"elevation_deg\": 30, \"azimuth_deg\": 0, \"latitude_deg\": 45, \"cost\": false},\n"
-    "  \"notes_answer\": {\"pointer\": \"/notes_due_east/south_deflection\", \"value\": 58.04139719260741, \"rounding\": {\"relative\": 1e-09}, \"text\": \"Fired due east, the ball curves to the right (south in the northern hemisphere) by 4 v0³ ω sin λ sin²α cos α / g² = 58.04 m.\"}\n"
+    "  \"notes_answer\": {\"pointer\": \"/notes_due_east/south_deflection\", \"value\": 58.041390029082, \"rounding\": {\"relative\": 1e-09}, \"text\": \"Fired due east, the ball curves to the right (south in the northern hemisphere) by 4 v0³ ω sin λ sin²α cos α / g² = 58.04 m.\"}\n"
     "}",
     "{\n"
     "  \"id\": \"foucault-32deg\",\n"
@@ -403,6 +403,38 @@ static const char *const api_examples_data[] = {
     "  \"operation\": \"/v1/hamiltonian/liouville\",\n"
     "  \"request\": {\"system\": {\"name\": \"henon_heiles\"}, \"curve\": {\"type\": \"ellipse\", \"center\": [0.0, 0.1, 0.35, 0.1], \"u\": [0.02, 0.0, 0.0, 0.01], \"w\": [0.0, 0.015, 0.02, 0.0]}, \"t_end\": 20, \"samples\": 3, \"integrators\": [{\"method\": \"gauss6\", \"dt\": 0.02}], \"cost\": false},\n"
     "  \"notes_answer\": {\"pointer\": \"/runs/0/area/2\", \"value\": 0.0007853981633974483, \"rounding\": {\"relative\": 1e-09}, \"text\": \"Liouville: the flow keeps the loop's symplectic area π(u_x w_px − u_px w_x + u_y w_py − u_py w_y) = 0.00025π, however chaotic the orbit.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"plumb-line-max-deviation\",\n"
+    "  \"title\": \"Largest plumb-line deviation, in milliradians\",\n"
+    "  \"section\": \"1.5 Homework 6\",\n"
+    "  \"operation\": \"/v1/earth/gravity\",\n"
+    "  \"request\": {\"latitude_deg\": 45},\n"
+    "  \"notes_answer\": {\"pointer\": \"/sphere/deviation_max/mrad\", \"value\": 1.727881039226768, \"rounding\": {\"relative\": 1e-12}, \"text\": \"tan δ = R ω² sin λ cos λ / (g − R ω² cos² λ) peaks just below 45° at tan δ = k/(2√(1 − k)), k = ω²R/g0: 1.728 mrad (about R ω²/(2g)); IERS ω, GM and the IUGG mean radius.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"rotating-water\",\n"
+    "  \"title\": \"Water turning with its container: a paraboloid\",\n"
+    "  \"section\": \"1.5 Homework 2\",\n"
+    "  \"operation\": \"/v1/frames/rotating-liquid\",\n"
+    "  \"request\": {\"omega\": 10, \"radius\": 0.1, \"depth\": 0.05},\n"
+    "  \"notes_answer\": {\"pointer\": \"/rim_height\", \"value\": 0.07549290532444822, \"rounding\": {\"relative\": 1e-12}, \"text\": \"At rest in the rotating frame the surface is an equipotential of g z − ω² r²/2: z = z0 + ω² r²/(2g); keeping the volume, the rim rises to h0 + ω² R²/(4g) = 0.0755 m.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"billiard-ball-rolling-height\",\n"
+    "  \"title\": \"Where to strike a billiard ball so it rolls at once\",\n"
+    "  \"section\": \"2.11 Homework 3\",\n"
+    "  \"operation\": \"/v1/rigid/struck-ball\",\n"
+    "  \"request\": {\"radius\": 0.028575},\n"
+    "  \"notes_answer\": {\"pointer\": \"/rolling_height_floor\", \"value\": 0.040005, \"rounding\": {\"relative\": 1e-12}, \"text\": \"v0 = J/m and ω0 = J h/(2/5 m R²) roll together (v0 = ω0 R) for h = 2R/5 above the centre: the rail belongs at 7R/5 = 4.0 cm above the cloth for a 57.15 mm ball.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"cube-topples-off-edge\",\n"
+    "  \"title\": \"A cube balanced on an edge falls onto a face\",\n"
+    "  \"section\": \"2.11 Homework 4\",\n"
+    "  \"operation\": \"/v1/rigid/topple\",\n"
+    "  \"request\": {\"width\": 0.1},\n"
+    "  \"notes_answer\": {\"pointer\": \"/edge_held/omega\", \"value\": 7.8058126720855725, \"rounding\": {\"relative\": 1e-12}, \"text\": \"With the edge held, m g l(√2 − 1)/2 = ½ (2/3 m l²) ω²: ω = √((3g/2l)(√2 − 1)) = 7.81 rad/s for l = 10 cm (frictionless floor: √((12g/5l)(√2 − 1))).\"}\n"
     "}",
 };
 

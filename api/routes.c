@@ -13,6 +13,7 @@ extern const struct api_route api_route_relativity_boost;
 extern const struct api_route api_route_trajectory;
 extern const struct api_route api_route_compare;
 extern const struct api_route api_route_frames_effective_force;
+extern const struct api_route api_route_frames_rotating_liquid;
 extern const struct api_route api_route_earth_gravity;
 extern const struct api_route api_route_earth_tides;
 extern const struct api_route api_route_scene_falling_object;
@@ -31,6 +32,9 @@ extern const struct api_route api_route_rotation_euler_rates;
 extern const struct api_route api_route_rigid_rotate;
 extern const struct api_route api_route_rigid_top;
 extern const struct api_route api_route_rigid_stability;
+extern const struct api_route api_route_rigid_free_symmetric_top;
+extern const struct api_route api_route_rigid_struck_ball;
+extern const struct api_route api_route_rigid_topple;
 extern const struct api_route api_route_small_oscillations;
 extern const struct api_route api_route_relativity_velocity_addition;
 extern const struct api_route api_route_relativity_interval;
@@ -59,6 +63,9 @@ const struct api_route *const api_routes[] = {
     &api_route_rigid_rotate,
     &api_route_rigid_top,
     &api_route_rigid_stability,
+    &api_route_rigid_free_symmetric_top,
+    &api_route_rigid_struck_ball,
+    &api_route_rigid_topple,
     &api_route_small_oscillations,
     &api_route_relativity_boost,
     &api_route_relativity_velocity_addition,
@@ -79,6 +86,7 @@ const struct api_route *const api_routes[] = {
     &api_route_trajectory,
     &api_route_compare,
     &api_route_frames_effective_force,
+    &api_route_frames_rotating_liquid,
     &api_route_earth_gravity,
     &api_route_earth_tides,
     &api_route_scene_falling_object,

@@ -96,7 +96,7 @@
              "\"type\":{\"const\":\"earth\"},"                                                 \
              "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90},"          \
              "\"omega_magnitude\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6,"         \
-             "\"default\":7.2921159e-05,\"description\":\"rad/s, default sidereal\"}")         \
+             "\"default\":7.292115e-05,\"description\":\"rad/s, default IERS 2010\"}")         \
     "]},"                                                                                      \
     "\"forces\":{\"type\":\"array\",\"maxItems\":32,\"items\":{\"oneOf\":["                    \
     API_TRAJ_OBJ("\"type\",\"g\"",                                                             \

@@ -120,6 +120,9 @@ enum mech_status mech_earth_normal_gravity(double latitude_deg, double height,
     /* TR8350.2 eq. 4-3: gamma_h = gamma [1 - 2/a (1 + f + m - 2 f sin² L) h + 3 h²/a²] */
     const double a = MECH_WGS84_A, f = MECH_WGS84_F, m = MECH_WGS84_M;
     double factor = -2.0 / a * (1 + f + m - 2 * f * s2) * height + 3 * height * height / (a * a);
+    /* IGF 1980 series; sin² 2L = 4 s² (1 - s²) */
+    out->igf1980 = MECH_IGF1980_GAMMA_E *
+                   (1 + MECH_IGF1980_B1 * s2 - MECH_IGF1980_B2 * 4 * s2 * (1 - s2));
     out->surface = g0;
     out->free_air = g0 * factor;
     out->gamma = g0 + out->free_air;

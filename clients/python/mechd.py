@@ -480,6 +480,67 @@ class _Operations:
         """
         return self._operation('/v1/rigid/stability', body, (('moments', moments), ('axis', axis), ('spin', spin), ('cost', cost)))
 
+    def rigid_free_symmetric_top(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, omega: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The torque-free symmetric top in closed form: space and body precession rates, the body and space cones, the angle between L and omega
+
+        POST /v1/rigid/free-symmetric-top. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            moments (required): [I_perp, I3]: the two equal principal moments and the one about the
+                    symmetry axis, kg m^2
+            omega (required): rad/s, body components (w1, w2, w3), w3 along the symmetry axis; not all
+                    zero
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/free-symmetric-top', body, (('moments', moments), ('omega', omega), ('cost', cost)))
+
+    def rigid_struck_ball(self, body: Optional[Dict[str, Any]] = None, *, radius: Optional[float] = None, shape: Optional[str] = None, moment_of_inertia: Optional[float] = None, mass: Optional[float] = None, impulse: Optional[float] = None, height: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The height at which a struck ball rolls without slipping (2R/5 above the centre for a solid sphere), and the rolling speed and energy lost when struck elsewhere
+
+        POST /v1/rigid/struck-ball. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            radius (required): m, the ball's radius R (the contact point is R below the centre)
+            shape: I_cm/(m R^2) = 2/5, 2/3, 1/2, 1; moment_of_inertia overrides it; default
+                    "solid_sphere"
+            moment_of_inertia: kg m^2, I_cm about the rolling axis (instead of shape)
+            mass: kg; default 1.0
+            impulse: N s, the horizontal impulse of the strike; default 1.0
+            height: m, where the strike hits above the centre (|height| <= radius); default the rolling
+                    height
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/struck-ball', body, (('radius', radius), ('shape', shape), ('moment_of_inertia', moment_of_inertia), ('mass', mass), ('impulse', impulse), ('height', height), ('cost', cost)))
+
+    def rigid_topple(self, body: Optional[Dict[str, Any]] = None, *, width: Optional[float] = None, height: Optional[float] = None, mass: Optional[float] = None, g: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A box balanced on an edge falls onto its base: the angular velocity as it lands with the edge held or on a frictionless floor, and the floor's impulse that stops it
+
+        POST /v1/rigid/topple. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            width (required): m, the box's side a in the plane of the fall (a cube: its side)
+            height: m, the side b that ends vertical; default width (a cube)
+            mass: kg (scales the impulses only); default 1.0
+            g: m/s^2; default 9.80665
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/rigid/topple', body, (('width', width), ('height', height), ('mass', mass), ('g', g), ('cost', cost)))
+
     def small_oscillations(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Small oscillations about a steady motion: near-circular orbits in a central potential (radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical pendulum about any pivot and axis, the Foucault pendulum's normal modes
 
@@ -730,9 +791,10 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
-                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
-                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
+                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
+                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
+                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -757,9 +819,10 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or "sun" (GM = 1.32712440018e20 m^3/s^2) or "earth" (GM =
-                    3.986004418e14 m^3/s^2); a mass in kg uses G = 6.67430e-11. Required with units SI;
-                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
+                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
+                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
+                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -944,7 +1007,30 @@ class _Operations:
         """
         return self._operation('/v1/frames/effective-force', body, (('frame', frame), ('particle', particle), ('force', force), ('cost', cost)))
 
-    def earth_gravity(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, height: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def frames_rotating_liquid(self, body: Optional[Dict[str, Any]] = None, *, omega: Optional[float] = None, g: Optional[float] = None, radius: Optional[float] = None, depth: Optional[float] = None, container_height: Optional[float] = None, radii: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The free surface of a liquid turning with its container: the paraboloid z = z0 + omega^2 r^2/(2g), its centre and rim heights at fixed volume, the dry disc, spilling
+
+        POST /v1/frames/rotating-liquid. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            omega (required): rad/s, the container's rotation rate about its vertical axis
+            g: m/s^2, gravity (default standard gravity); default 9.80665
+            radius (required): m, inner radius R of the cylindrical container
+            depth (required): m, depth h0 of the liquid at rest
+            container_height: m, height H of the wall (optional): answers whether the liquid spills and
+                    the rate at which it starts to; must be >= depth
+            radii: m, radii (each <= radius) at which to give the surface's height above the bottom and
+                    its slope
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/frames/rotating-liquid', body, (('omega', omega), ('g', g), ('radius', radius), ('depth', depth), ('container_height', container_height), ('radii', radii), ('cost', cost)))
+
+    def earth_gravity(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, height: Optional[float] = None, radius: Optional[float] = None, gm: Optional[float] = None, g0: Optional[float] = None, omega: Optional[float] = None, sidereal_day: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Effective gravity on a rotating spherical Earth at a latitude and height (magnitude, radial and horizontal parts, plumb-line deviation), beside the WGS 84 ellipsoid's normal gravity
 
         POST /v1/earth/gravity. The request is `body` (a dict) and/or the keyword arguments below
@@ -958,13 +1044,21 @@ class _Operations:
             height: m above the sphere / the ellipsoid, from the deepest trench to 100 km; default 0.0
             radius: m, radius of the spherical model; default the IUGG mean radius 6371008.8 m (use
                     6378137 for the equatorial radius); default 6371008.8
+            gm: m^3/s^2, the sphere's GM (default IERS 2010 / WGS 84); at most one of gm, g0; default
+                    398600441800000.0
+            g0: m/s^2, gravitation GM/R^2 at the sphere's surface (radius R, without the centrifugal
+                    part): sets GM = g0 R^2; at most one of gm, g0
+            omega: rad/s, the rotation rate (default IERS 2010 / WGS 84, the one default of every
+                    operation); at most one of omega, sidereal_day; default 7.292115e-05
+            sidereal_day: s, the rotation period relative to the stars: sets omega = 2 pi /
+                    sidereal_day; at most one of omega, sidereal_day
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('cost', cost)))
+        return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('gm', gm), ('g0', g0), ('omega', omega), ('sidereal_day', sidereal_day), ('cost', cost)))
 
-    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, moon: Optional[Dict[str, Any]] = None, sun: Optional[Dict[str, Any]] = None, gm_earth: Optional[float] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Tidal acceleration of the Moon, the Sun or any body, exact (without cancellation) and to first order in r/d, equilibrium tide heights, spring and neap tides
 
         POST /v1/earth/tides. The request is `body` (a dict) and/or the keyword arguments below
@@ -973,15 +1067,21 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            body_ (required): the tide-raising body: "moon", "sun" or {mass (kg), distance (m, centre to
-                    centre)}
+            body_ (required): the tide-raising body: "moon", "sun" or {gm (m^3/s^2) or mass (kg),
+                    distance (m, centre to centre)}
+            moon: the Moon used by body "moon" and by spring_neap: any of gm or mass, distance; default
+                    DE440 GM, 3.844e8 m
+            sun: the Sun used by body "sun" and by spring_neap: any of gm or mass, distance; default
+                    DE440 GM, 1 au
+            gm_earth: m^3/s^2, the Earth's GM in the tide height (g = GM_E / r^2); default IERS 2010;
+                    default 398600441800000.0
             angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0.0
             radius: m, distance of the point from the Earth's centre; default 6371008.8
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/earth/tides', body, (('body', body_), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
+        return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
 
     def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
@@ -995,7 +1095,7 @@ class _Operations:
             height (required): drop height above the ground, m (released at rest)
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1021,7 +1121,7 @@ class _Operations:
             height: height reached without rotation, m: speed = sqrt(2 g h)
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1050,7 +1150,7 @@ class _Operations:
                     0.0
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
-            omega_magnitude: Earth rotation rate, rad/s (sidereal); default 7.2921159e-05
+            omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1076,7 +1176,7 @@ class _Operations:
             length: l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m); default 67.0
             g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
                     in the notes); default 9.80665
-            omega_magnitude: Earth's rotation rate W, rad/s (default sidereal); default 7.2921159e-05
+            omega_magnitude: Earth's rotation rate W, rad/s (default IERS 2010); default 7.292115e-05
             mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28.0
             release: default: from rest at 3 degrees, towards the east
             swings: length of the run in swings (full periods of the planar pendulum at this amplitude);
@@ -1139,6 +1239,9 @@ OPERATIONS = {
     'rigid_rotate': '/v1/rigid/rotate',
     'rigid_top': '/v1/rigid/top',
     'rigid_stability': '/v1/rigid/stability',
+    'rigid_free_symmetric_top': '/v1/rigid/free-symmetric-top',
+    'rigid_struck_ball': '/v1/rigid/struck-ball',
+    'rigid_topple': '/v1/rigid/topple',
     'small_oscillations': '/v1/small-oscillations',
     'relativity_boost': '/v1/relativity/boost',
     'relativity_velocity_addition': '/v1/relativity/velocity-addition',
@@ -1158,6 +1261,7 @@ OPERATIONS = {
     'trajectory': '/v1/trajectory',
     'compare': '/v1/compare',
     'frames_effective_force': '/v1/frames/effective-force',
+    'frames_rotating_liquid': '/v1/frames/rotating-liquid',
     'earth_gravity': '/v1/earth/gravity',
     'earth_tides': '/v1/earth/tides',
     'scenes_falling_object': '/v1/scenes/falling-object',

@@ -82,7 +82,7 @@ def check_clients(base):
     check(rel(ct, gamma * 599.584916) < 1e-14, "boost.sh ct %r, want %r" % (ct, gamma * 599.584916))
     check(abs(ct / 299792458 - 141.4e-6) < 0.1e-6, "boost.sh lifetime %r s, want 141.4 us" % (ct / 299792458))
     r = run_client(base, "trajectory.sh")
-    h, g, lam, om = 100.0, 9.80665, math.radians(32), 7.2921159e-5
+    h, g, lam, om = 100.0, 9.80665, math.radians(32), 7.292115e-5
     x_east = om * math.cos(lam) * math.sqrt(8 * h ** 3 / g) / 3
     stopped = r.get("stopped") or {}
     check(rel(stopped.get("position", [0])[0], x_east) < 2e-3,

@@ -36,7 +36,13 @@
 /* Mean radius R1 = (2a + b)/3 of the IUGG (Moritz, Geodetic Reference System
  * 1980, Bull. Géod. 54 (1980) 395), m: the sphere's default radius. */
 #define MECH_EARTH_RADIUS_MEAN 6371008.8
-/* Nominal mean angular velocity, rad/s (IERS Conventions 2010 Table 1.1; WGS 84). */
+/* The one default rotation rate of the Earth, rad/s: the nominal mean angular
+ * velocity relative to inertial space (IERS Conventions 2010 Table 1.1; the
+ * WGS 84 and GRS 80 defining constant). 2 pi / W = 86164.0989 s, the stellar
+ * day; the sidereal day (86164.0905 s, relative to the precessing equinox)
+ * gives 7.2921159e-5, which mechd used in some operations before: that rate
+ * includes the precession of the equinox and is 1.2e-7 relative too fast for
+ * the Earth's rotation in an inertial frame. Every operation defaults to this. */
 #define MECH_EARTH_OMEGA 7.292115e-5
 
 /* WGS 84 defining and derived constants (NIMA TR8350.2, 3rd ed., Tables 3.1-3.4). */
@@ -80,8 +86,17 @@ struct mech_earth_gravity {
     double deviation_max_latitude; /* where it occurs, rad (> 0; and its mirror in the south) */
 };
 
+/* The 1980 International Gravity Formula (the GRS 80 series, Moritz 1980,
+ * Bull. Géod. 54, 395; IAG 1980): gamma = 9.780327 (1 + 0.0053024 sin² L
+ * - 0.0000058 sin² 2L) m/s², sea level, geodetic latitude; within 1e-6 m/s²
+ * (0.1 mGal) of GRS 80's closed Somigliana formula. */
+#define MECH_IGF1980_GAMMA_E 9.780327
+#define MECH_IGF1980_B1 0.0053024
+#define MECH_IGF1980_B2 0.0000058
+
 /* WGS 84 normal gravity at geodetic latitude L and height h. */
 struct mech_normal_gravity {
+    double igf1980;  /* 1980 International Gravity Formula at sea level (L only), m/s^2 */
     double surface;  /* Somigliana gamma0 on the ellipsoid, m/s^2 */
     double free_air; /* gamma - gamma0 (the free-air correction, < 0 above the ellipsoid) */
     double gamma;    /* normal gravity at height h */

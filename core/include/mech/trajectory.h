@@ -28,12 +28,14 @@
 #include "mech/budget.h"
 #include "mech/constants.h"
 #include "mech/chooser.h"
+#include "mech/earth.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/vec.h"
 
-/* Sidereal rotation rate of the Earth (rad/s): 2 pi / 86164.0905 s. */
-#define MECH_EARTH_OMEGA_SIDEREAL 7.2921159e-5
+/* The Earth's rotation rate (rad/s): the one default, MECH_EARTH_OMEGA of
+ * mech/earth.h (IERS 2010, 7.292115e-5; the name is kept for its callers). */
+#define MECH_EARTH_OMEGA_SIDEREAL MECH_EARTH_OMEGA
 
 #define MECH_TRAJECTORY_MAX_FORCES 32
 #define MECH_TRAJECTORY_MIN_SAMPLES 2
