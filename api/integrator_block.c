@@ -76,16 +76,15 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
     out->target = target;
     out->method = k->method;
     out->opt = k->opt;
+    char beyond[320];
+    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
     snprintf(out->reason, sizeof out->reason,
              "%s%s over %.3g dynamical times: %s at rtol %.3g is the cheapest candidate "
              "predicted to meet %.0e relative (predicted %.2g, %.3g evaluations)%s; atol = rtol "
              "x %.6g on %s",
              in ? "" : "no integrator block: accuracy \"balanced\" by default; ", sys->equations,
              prof.span, k->method, k->opt.rtol, target, k->predicted_error,
-             k->predicted_evaluations,
-             out->sel.beyond ? "; the target may be beyond what round-off allows over this run"
-                             : "",
-             prof.scale, sys->state);
+             k->predicted_evaluations, beyond, prof.scale, sys->state);
     return 1;
 }
 

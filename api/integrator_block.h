@@ -28,7 +28,7 @@ struct api_integrator_choice {
     int chosen;                  /* 1: from a preset / target error / the default */
     const char *accuracy;        /* preset name or NULL */
     double target;               /* the relative error aimed at (chosen) */
-    char reason[400];
+    char reason[900];
     struct mech_selection sel;   /* the chooser's candidates (chosen) */
 };
 

@@ -1433,9 +1433,34 @@ const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
     return (int)a >= 0 && a < MECH_ACCURACY_COUNT ? &traj_presets[a] : NULL;
 }
 
+/* The pericentre dynamical time sqrt(q^3 / GM) of the two-body orbit through
+ * the initial state about each central body (q = h^2 / (GM (1 + e)), any
+ * eccentricity), the shortest over the bodies; +inf when there is none or
+ * the state is degenerate (at the centre, or radial: q = 0 is left to
+ * sqrt(|r0| / |a0|)). */
+static double kepler_pericentre_time(const struct mech_trajectory_problem *p)
+{
+    double T = INFINITY;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        if (p->forces[i].type != MECH_FORCE_CENTRAL_GRAVITY) continue;
+        const double gm = p->forces[i].u.central_gravity.gm;
+        const struct mech_vec3 r = mech_vec3_sub(p->position, p->forces[i].u.central_gravity.center);
+        const double rn = mech_vec3_norm(r);
+        if (!(gm > 0.0) || !(rn > 0.0)) continue;
+        const double h = mech_vec3_norm(mech_vec3_cross(r, p->velocity));
+        const double v2 = mech_vec3_dot(p->velocity, p->velocity);
+        const double energy = 0.5 * v2 - gm / rn;
+        const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
+        const double q = h * h / (gm * (1.0 + sqrt(fmax(e2, 0.0))));
+        if (q > 0.0 && isfinite(q)) T = fmin(T, sqrt(q * q * q / gm));
+    }
+    return T;
+}
+
 /* The chooser's profile of a trajectory scene: its class, its dynamical time
- * T = min(t_end, sqrt(|r0| / |a0|)), span = t_end / T, and the scale S of
- * positions and velocities (atol = rtol x S). */
+ * T = min(t_end, sqrt(|r0| / |a0|), the pericentre time of a central body's
+ * orbit), span = t_end / T, and the scale S of positions and velocities
+ * (atol = rtol x S). */
 static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ctx *c,
                          struct mech_scene_profile *s, double *L_out, double *V_out)
 {
@@ -1448,6 +1473,11 @@ static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ct
     const double rn = mech_vec3_norm(p->position);
     double T = p->t_end;
     if (an > 0.0 && rn > 0.0) T = fmin(T, sqrt(rn / an));
+    /* a central body: the orbit's pericentre time sqrt(q^3 / GM), wherever
+     * the run starts (from apocentre, sqrt(r0 / a0) would call an e = 0.9
+     * orbit 80x shorter in dynamical times than the same orbit from
+     * pericentre, and under-predict its round-off floor ~700x) */
+    T = fmin(T, kepler_pericentre_time(p));
     if (!(T > 0.0 && isfinite(T))) T = p->t_end > 0.0 ? p->t_end : 1.0;
     double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
     double V = fmax(vn, an * T);
@@ -1515,12 +1545,8 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
     out->opt = ch->opt;
     out->target = target;
     const double span = out->profile.span;
-    char beyond[240] = "";
-    if (out->sel.beyond || target < out->sel.roundoff_floor)
-        snprintf(beyond, sizeof beyond,
-                 "; the target may be beyond what the preset can keep: over %.3g dynamical "
-                 "times round-off alone can reach about %.1g relative (best predicted %.2g)",
-                 span, out->sel.roundoff_floor, ch->predicted_error);
+    char beyond[320];
+    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
     if (out->closed_form) {
         snprintf(out->reason, sizeof out->reason,
                  "%s %s scene over %.3g dynamical times: the exact %s solution is the cheapest "

@@ -249,7 +249,7 @@ struct mech_trajectory_choice {
     const char *method;          /* static */
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
-    char reason[640];            /* why: scene class, scale, tolerance mapping */
+    char reason[900];             /* why: scene class, scale, tolerance mapping */
     struct mech_scene_profile profile; /* what the chooser was told about the scene */
     struct mech_selection sel;   /* every candidate with its predictions and verdict */
     int closed_form;             /* 1: the closed form was chosen (mech/closed_form.h);
