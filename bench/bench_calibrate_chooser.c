@@ -356,6 +356,23 @@ static void floors_table(void)
                    m2.err, m3.err, worst / (F * pow(span, g)));
             fflush(stdout);
         }
+    /* the oscillator: an ellipse (1, 0.5) and a circle, 10 .. 1e4 periods */
+    const double Fo = 4.03e-17, go = 1.097; /* the oscillator row's */
+    const double vy[] = {0.5, 1.0}, per[] = {10, 100, 1000, 10000};
+    for (size_t i = 0; i < 2; i++)
+        for (size_t k = 0; k < 4; k++) {
+            struct scene s;
+            scene_osc(&s);
+            s.p.velocity = mech_vec3_make(0, vy[i], 0);
+            const double span = per[k] * 2 * CAL_PI;
+            struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
+            struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
+            const double worst = fmax(m1.err, m2.err);
+            printf("osc v=%-4.1f %-6.0f %10.4g %10.2g %10.2g %10s  %.2f (span^1.5: %.3g)\n", vy[i],
+                   per[k], span, m1.err, m2.err, "-", worst / (Fo * pow(span, go)),
+                   worst / pow(span, 1.5));
+            fflush(stdout);
+        }
 }
 
 int main(int argc, char **argv)
