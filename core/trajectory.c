@@ -1423,9 +1423,10 @@ static const struct mech_accuracy_preset traj_presets[MECH_ACCURACY_COUNT] = {
      "for grading and reference answers: the cheapest method predicted to meet 1e-10 "
      "relative; long runs reach the round-off floor (~F x span^g), which the answer states"},
     {"machine", 1e-11, "radau15", "rkf45", 4.8e-8, 1e-12,
-     "1e-11 relative where round-off allows (~1e-13 over 10 orbits; 3.4e-11 over 1000 orbits "
-     "of e = 0.5, 1.2e-9 at e = 0.9, 7e-12 over 1e4 oscillator periods): the answer says when "
-     "the run is beyond it"},
+     "1e-11 relative where round-off allows (~1e-13 over 10 orbits of e = 0.5; the measured "
+     "envelope of the round-off floor is 2.5e-16 span^1.5 for Kepler orbits, span in "
+     "pericentre times: ~2e-11 over 10 orbits of e = 0.9, ~6e-10 over 1000 of e = 0.5, ~2e-8 "
+     "at e = 0.9): the answer re-states the promise when the run is beyond it"},
 };
 
 const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
