@@ -824,17 +824,10 @@ enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
     return MECH_OK;
 }
 
-/* Whether the scene conserves angular momentum about one point: inertial
- * frame (or no fictitious term active), at least one central force, and
- * every active force central about the same point (central gravity centred
- * there, springs anchored there). */
-static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
+int mech_trajectory_angular_center(const struct mech_trajectory_problem *p, int rotation_active,
+                                   int translation_active, struct mech_vec3 *center)
 {
-    const struct mech_trajectory_problem *p = c->p;
-    if ((c->coriolis || c->centrifugal || c->euler) &&
-        (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0))
-        return 0;
-    if (c->translational && mech_vec3_norm(c->A) > 0.0) return 0;
+    if (!p || !center || rotation_active || translation_active) return 0;
     int have = 0;
     struct mech_vec3 ctr = mech_vec3_make(0, 0, 0);
     for (size_t i = 0; i < p->n_forces; i++) {
@@ -868,6 +861,15 @@ static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *c
     }
     *center = ctr;
     return have;
+}
+
+/* The integrator's side of mech_trajectory_angular_center: its frame terms. */
+static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
+{
+    const int rot = (c->coriolis || c->centrifugal || c->euler) &&
+                    (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0);
+    const int tr = c->translational && mech_vec3_norm(c->A) > 0.0;
+    return mech_trajectory_angular_center(c->p, rot, tr, center);
 }
 
 /* The Kepler split of a scene (wisdom_holman, mech/ode.h): the index of its
