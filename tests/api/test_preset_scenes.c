@@ -96,6 +96,26 @@ int main(int argc, char **argv)
             const char *method =
                 json_string_value(json_object_get(json_object_get(ans, "diagnostics"), "method"));
             if (!method) method = "?";
+            /* the dry run of the same request announces the same choice */
+            {
+                json_t *dj = json_pack("{ss}", "accuracy", presets[p % 4]);
+                if (p >= 4) json_object_set_new(dj, "closed_form", json_false());
+                json_t *db = with_integrator(sc->body, dj);
+                json_object_set_new(db, "dry_run", json_true());
+                int dst;
+                json_t *dry = post(sc->path, db, &dst);
+                json_decref(db);
+                CHECK(dst == 200);
+                const char *dm = json_string_value(json_object_get(
+                    json_object_get(json_object_get(dry, "diagnostics"), "selection"), "method"));
+                const char *am = json_string_value(json_object_get(
+                    json_object_get(json_object_get(ans, "diagnostics"), "selection"), "method"));
+                if (!(dm && am && !strcmp(dm, am)))
+                    printf("%s %s: dry run says %s, the answer %s\n", sc->name, presets[p % 4],
+                           dm ? dm : "?", am ? am : "?");
+                CHECK(dm && am && !strcmp(dm, am));
+                json_decref(dry);
+            }
             json_t *ref = NULL;
             const char *evidence = "exact";
             switch (sc->ref) {
