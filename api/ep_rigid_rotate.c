@@ -212,54 +212,20 @@ static const char *kind_name(enum mech_rigid_exact_kind k)
     }
 }
 
-/* diagnostics.selection of an answer from the closed form (SELECTION.md shape). */
+/* diagnostics.selection of an answer from the closed form: the chooser's
+ * selection (candidates with predictions, closed_form chosen) and the
+ * closed form's evidence as `achieved`. */
 static json_t *closed_form_selection(struct api_call *c, const struct api_integrator_choice *ch,
                                      const struct mech_rigid_closed_form_evidence *ev)
 {
-    json_t *sel = json_object();
-    json_object_set_new_nocheck(sel, "requested",
-                                ch->requested ? json_deep_copy(ch->requested) : json_null());
-    json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
-    json_t *cands = json_array();
-    json_array_append_new(
-        cands,
-        json_pack("{s:s,s:s,s:s}", "method", "closed_form", "verdict", "chosen", "why",
-                  !strcmp(ev->solution, "elliptic")
-                      ? "exact torque-free solution: omega in Jacobi elliptic functions, the "
-                        "attitude from L fixed in space (Euler angles about L, the precession "
-                        "angle by Gauss-Legendre quadrature to round-off); cost grows with the "
-                        "samples, not with t_end"
-                  : !strcmp(ev->solution, "symmetric")
-                      ? "symmetric top: regular precession about L at |L|/I_perp, elementary; "
-                        "cost grows with the samples"
-                      : "steady rotation about a constant omega (a sphere or a principal axis)"));
-    json_t *in = json_pack("{s:s,s:s,s:s}", "method", ch->method, "verdict", "costlier", "why",
-                           "integrates Euler's equations and the quaternion: cost grows with "
-                           "t_end, truncation error added; {\"closed_form\": false} runs it");
-    json_object_set_new_nocheck(in, "settings",
-                                json_pack("{s:o,s:o}", "rtol", api_real(c, ch->opt.rtol), "atol",
-                                          api_real(c, ch->opt.atol)));
-    json_array_append_new(cands, in);
-    json_object_set_new_nocheck(sel, "candidates", cands);
-    json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
-    char reason[200];
-    snprintf(reason, sizeof reason,
-             "%sselected by accuracy, torque-free, off the separatrix: answered from the closed "
-             "form (%s), nothing integrated",
-             ch->requested ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-             ev->solution);
-    json_object_set_new_nocheck(sel, "reason", json_string(reason));
     char evid[200];
     snprintf(evid, sizeof evid,
-             "closed form: kinetic energy, |L| and the L vector in space drift %.2g relative over "
-             "the samples",
-             ev->max_invariant_drift);
-    json_t *ach = json_object();
-    json_object_set_new_nocheck(ach, "error", api_real(c, ev->error_bound));
-    json_object_set_new_nocheck(ach, "evidence", json_string(evid));
-    json_object_set_new_nocheck(ach, "met_target", json_boolean(ev->error_bound <= ch->target));
-    json_object_set_new_nocheck(ach, "evaluations", json_integer(ev->evaluations));
-    json_object_set_new_nocheck(sel, "achieved", ach);
+             "closed form (%s): kinetic energy, |L| and the L vector in space drift %.2g "
+             "relative over the samples",
+             ev->solution, ev->max_invariant_drift);
+    json_t *sel = api_integrator_block_selection_achieved(c, ch, ev->error_bound, evid, 0.0);
+    json_t *ach = sel ? json_object_get(sel, "achieved") : NULL;
+    if (ach) json_object_set_new_nocheck(ach, "evaluations", json_integer(ev->evaluations));
     return sel;
 }
 
@@ -318,8 +284,14 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     static const struct api_integrator_system euler_eqs = {
         "Euler's equations with a quaternion attitude",
         "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
-    if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
-                                    p.t_end * W, &euler_eqs, &ch))
+    struct api_integrator_system sys = euler_eqs;
+    sys.samples = p.samples;
+    /* torque-free off the separatrix: the closed form is a candidate (core/chooser.c) */
+    if (!api_integrator_block_parse_cf(c, json_object_get(body, "integrator"), "/integrator",
+                                       p.t_end * W, &sys,
+                                       mech_rigid_has_closed_form(&p) ? "torque-free rigid body"
+                                                                      : NULL,
+                                       &ch))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;
@@ -341,10 +313,9 @@ static json_t *rotate(struct api_call *c, const json_t *body)
     r.quaternion = qs;
     r.angular_momentum = L;
     r.kinetic_energy = ke;
-    /* by accuracy, torque-free and off the separatrix: the closed form (issue 16) */
-    const json_t *blk = json_object_get(body, "integrator");
-    const int closed = ch.chosen && !(blk && json_is_false(json_object_get(blk, "closed_form"))) &&
-                       mech_rigid_has_closed_form(&p);
+    /* by accuracy, torque-free and off the separatrix: the chooser picks the
+     * closed form when allowed and predicted cheaper (issue 16) */
+    const int closed = ch.chosen && ch.closed_form;
     struct mech_rigid_closed_form_evidence ev;
     memset(&ev, 0, sizeof ev);
     enum mech_status st = closed ? mech_rigid_closed_form(&p, &r, &ev, &c->budget, &e)

@@ -12,6 +12,14 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
                                double span, const struct api_integrator_system *sys,
                                struct api_integrator_choice *out)
 {
+    return api_integrator_block_parse_cf(c, in, pointer, span, sys, NULL, out);
+}
+
+int api_integrator_block_parse_cf(struct api_call *c, const json_t *in, const char *pointer,
+                                  double span, const struct api_integrator_system *sys,
+                                  const char *closed_form_name,
+                                  struct api_integrator_choice *out)
+{
     memset(out, 0, sizeof *out);
     out->requested = in;
     const char *method = in ? api_string(in, "method", NULL) : NULL;
@@ -63,6 +71,9 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
     prof.samples = sys->samples;
     prof.rhs_cost_s = sys->rhs_cost_s;
     prof.stiff = 0;
+    prof.closed_form = closed_form_name != NULL;
+    prof.closed_form_name = closed_form_name;
+    prof.closed_form_allowed = !(in && json_is_false(json_object_get(in, "closed_form")));
     struct mech_error e;
     mech_error_clear(&e);
     if (mech_choose(&prof, target, &out->sel, &e) != MECH_OK || out->sel.chosen < 0) {
@@ -71,21 +82,40 @@ int api_integrator_block_parse(struct api_call *c, const json_t *in, const char 
         api_call_invalid(c, ptr, "%s", e.text[0] ? e.text : "no candidate method applies");
         return 0;
     }
-    const struct mech_candidate *k = &out->sel.c[out->sel.chosen];
+    if (out->sel.integrating < 0) {
+        api_call_invalid(c, pointer, "no integrating candidate method applies");
+        return 0;
+    }
+    /* method/opt: the best integrator's, even when the closed form is chosen */
+    const struct mech_candidate *k = &out->sel.c[out->sel.integrating];
+    out->closed_form = out->sel.chosen != out->sel.integrating;
     out->chosen = 1;
     out->target = target;
     out->method = k->method;
     out->opt = k->opt;
+    char beyond[320];
+    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
+    if (out->closed_form) {
+        const struct mech_candidate *cf = &out->sel.c[out->sel.chosen];
+        snprintf(out->reason, sizeof out->reason,
+                 "%s%s over %.3g dynamical times: the exact %s solution is the cheapest "
+                 "candidate meeting %.0e relative (predicted error %.2g, %.2g s CPU for %zu "
+                 "samples): answered from it, nothing integrated; the best integrator would be "
+                 "%s at rtol %.3g (predicted %.2g, %.3g evaluations); {\"closed_form\": false} "
+                 "runs it",
+                 in ? "" : "no integrator block: accuracy \"balanced\" by default; ",
+                 sys->equations, prof.span, closed_form_name, target, cf->predicted_error,
+                 cf->predicted_cpu_s, sys->samples, k->method, k->opt.rtol, k->predicted_error,
+                 k->predicted_evaluations);
+        return 1;
+    }
     snprintf(out->reason, sizeof out->reason,
              "%s%s over %.3g dynamical times: %s at rtol %.3g is the cheapest candidate "
              "predicted to meet %.0e relative (predicted %.2g, %.3g evaluations)%s; atol = rtol "
              "x %.6g on %s",
              in ? "" : "no integrator block: accuracy \"balanced\" by default; ", sys->equations,
              prof.span, k->method, k->opt.rtol, target, k->predicted_error,
-             k->predicted_evaluations,
-             out->sel.beyond ? "; the target may be beyond what round-off allows over this run"
-                             : "",
-             prof.scale, sys->state);
+             k->predicted_evaluations, beyond, prof.scale, sys->state);
     return 1;
 }
 
@@ -136,7 +166,10 @@ json_t *api_integrator_block_selection_achieved(struct api_call *c,
     if (!sel) return NULL;
     json_object_set_new_nocheck(sel, "requested",
                                 ch->requested ? json_deep_copy(ch->requested) : json_null());
-    settings(c, sel, ch);
+    if (ch->closed_form)
+        json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
+    else
+        settings(c, sel, ch);
     if (ch->chosen) {
         json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
         json_object_set_new_nocheck(sel, "reason", json_string(ch->reason));

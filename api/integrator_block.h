@@ -28,8 +28,10 @@ struct api_integrator_choice {
     int chosen;                  /* 1: from a preset / target error / the default */
     const char *accuracy;        /* preset name or NULL */
     double target;               /* the relative error aimed at (chosen) */
-    char reason[400];
+    char reason[900];
     struct mech_selection sel;   /* the chooser's candidates (chosen) */
+    int closed_form;             /* 1: the chooser chose the closed form (method/opt
+                                    stay the best integrator's) */
 };
 
 /* What the caller integrates, for messages and for atol. */
@@ -48,6 +50,16 @@ struct api_integrator_system {
 int api_integrator_block_parse(struct api_call *c, const json_t *block, const char *pointer,
                                double span, const struct api_integrator_system *sys,
                                struct api_integrator_choice *out);
+
+/* The same for a system that has a closed form (closed_form_name, static,
+ * e.g. "torque-free rigid body"; NULL: none): the chooser lists it as the
+ * candidate "closed_form" and chooses it, when the block does not say
+ * "closed_form": false, if it is predicted cheaper (its cost grows with the
+ * samples only); out->closed_form says so. */
+int api_integrator_block_parse_cf(struct api_call *c, const json_t *block, const char *pointer,
+                                  double span, const struct api_integrator_system *sys,
+                                  const char *closed_form_name,
+                                  struct api_integrator_choice *out);
 
 /* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason",
  * and when chosen scene_class, span, model, candidates}. New reference. */

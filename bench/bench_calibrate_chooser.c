@@ -327,10 +327,62 @@ static void presets_table(void)
     }
 }
 
+/* --floors: the round-off floor of the Kepler class against eccentricity
+ * (the chooser's floor model, core/chooser.c ecc_floor_factor): radau15 at
+ * eps 1e-9 and 2e-9 (its floor; two settings give two round-off histories)
+ * and rk8pd at rtol 1e-13, over 10, 100 and 1000 orbits from pericentre, each
+ * error divided by the e = 0.5 class floor Fm span^g of chooser_table.h. */
+static void floors_table(void)
+{
+    const double es[] = {0.0, 0.3, 0.5, 0.7, 0.8, 0.9, 0.95}, orb[] = {10, 100, 1000};
+    const double F = 7.24e-16, g = 1.098; /* the central_gravity row's */
+    printf("%-5s %-6s %10s %10s %10s %10s  %s\n", "e", "orbits", "span", "radau 1e-9",
+           "radau 2e-9", "rk8pd 1e-13", "worst / (F span^g)");
+    for (size_t i = 0; i < sizeof es / sizeof *es; i++)
+        for (size_t k = 0; k < sizeof orb / sizeof *orb; k++) {
+            struct scene s;
+            scene_kepler(&s);
+            const double e = es[i];
+            s.p.position = mech_vec3_make(1.0 - e, 0, 0);
+            s.p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
+            s.T = sqrt(pow(1.0 - e, 3.0));
+            s.S = fmin(1.0 - e, sqrt((1.0 + e) / (1.0 - e)));
+            const double span = orb[k] * 2 * CAL_PI / s.T;
+            struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
+            struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
+            struct meas m3 = run(&s, span, "rk8pd", 1e-13, 1, NS);
+            const double worst = fmax(m1.err, m2.err);
+            printf("%-5.2f %-6.0f %10.4g %10.2g %10.2g %10.2g  %.2f\n", e, orb[k], span, m1.err,
+                   m2.err, m3.err, worst / (F * pow(span, g)));
+            fflush(stdout);
+        }
+    /* the oscillator: an ellipse (1, 0.5) and a circle, 10 .. 1e4 periods */
+    const double Fo = 4.03e-17, go = 1.097; /* the oscillator row's */
+    const double vy[] = {0.5, 1.0}, per[] = {10, 100, 1000, 10000};
+    for (size_t i = 0; i < 2; i++)
+        for (size_t k = 0; k < 4; k++) {
+            struct scene s;
+            scene_osc(&s);
+            s.p.velocity = mech_vec3_make(0, vy[i], 0);
+            const double span = per[k] * 2 * CAL_PI;
+            struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
+            struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
+            const double worst = fmax(m1.err, m2.err);
+            printf("osc v=%-4.1f %-6.0f %10.4g %10.2g %10.2g %10s  %.2f (span^1.5: %.3g)\n", vy[i],
+                   per[k], span, m1.err, m2.err, "-", worst / (Fo * pow(span, go)),
+                   worst / pow(span, 1.5));
+            fflush(stdout);
+        }
+}
+
 int main(int argc, char **argv)
 {
     if (argc > 1 && !strcmp(argv[1], "--presets")) {
         presets_table();
+        return 0;
+    }
+    if (argc > 1 && !strcmp(argv[1], "--floors")) {
+        floors_table();
         return 0;
     }
     static struct scene sc[3];

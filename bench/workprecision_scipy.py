@@ -20,7 +20,9 @@ Issue 16's scene set (bench_workprecision's "scene set" section):
 
 NAME: kepler (GM = 1, y = (q, v) in 3-D), oscillator (q'' = -q in 3-D),
 rigid (Euler's equations, moments 1, 2, 3, y = omega), henon_heiles (y =
-(x, y, p_x, p_y)). One line per RTOL (rtol = atol), loose to tight,
+(x, y, p_x, p_y)), falling (100 m at 32 deg N with Coriolis, y = (q, v) in
+east-north-up), top (the heavy symmetric top in Euler angles, y = (theta,
+phi, psi, theta')). One line per RTOL (rtol = atol), loose to tight,
 stopping after a run costing more than CAP_S seconds:
 
     dop853 rtol=<r> nfev=<n> cpu=<s> final=<n reals>
@@ -57,6 +59,27 @@ def rhs_of(name):
         def f(t, w):
             return [(2.0 - 3.0) / 1.0 * w[1] * w[2], (3.0 - 1.0) / 2.0 * w[2] * w[0],
                     (1.0 - 2.0) / 3.0 * w[0] * w[1]]
+    elif name == "falling":
+        # Earth frame (east, north, up), 32 deg N, Coriolis only
+        W, lat = 7.2921159e-5, math.radians(32.0)
+        wy, wz = W * math.cos(lat), W * math.sin(lat)
+
+        def f(t, y):
+            vx, vy, vz = y[3], y[4], y[5]
+            return [vx, vy, vz, -2.0 * (wy * vz - wz * vy), -2.0 * wz * vx,
+                    -9.80665 + 2.0 * wy * vx]
+    elif name == "top":
+        # heavy symmetric top in Euler angles, y = (theta, phi, psi, theta')
+        I1, I3, mgl = 0.02, 0.01, 0.980665
+        th0 = math.pi / 3
+        ppsi = I3 * (99.5 + 0.99 * math.cos(th0))
+        pphi = I1 * 0.99 * math.sin(th0) ** 2 + ppsi * math.cos(th0)
+
+        def f(t, y):
+            s, c = math.sin(y[0]), math.cos(y[0])
+            phid = (pphi - ppsi * c) / (I1 * s * s)
+            return [y[3], phid, ppsi / I3 - phid * c,
+                    (I1 * phid * phid * s * c - ppsi * phid * s + mgl * s) / I1]
     elif name == "henon_heiles":
         def f(t, y):
             x, yy, px, py = y

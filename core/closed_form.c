@@ -341,46 +341,14 @@ static void cf_terms(const struct cf_ctx *c, double t, struct mech_vec3 r, struc
     }
 }
 
-/* Whether angular momentum about one point is conserved (as the integrator
- * decides it): every active force central about the same point, no rotation
- * term acting. */
+/* Whether angular momentum about one point is conserved: the integrator's
+ * rule (mech_trajectory_angular_center) on the closed form's frame terms. */
 static int cf_angular_center(const struct cf_ctx *c, struct mech_vec3 *center)
 {
-    const struct mech_trajectory_problem *p = c->p;
-    if ((c->coriolis || c->centrifugal || c->euler) &&
-        (mech_vec3_norm(c->w0) > 0.0 || mech_vec3_norm(c->wdot) > 0.0))
-        return 0;
-    if (c->translational && mech_vec3_norm(c->A) > 0.0) return 0;
-    int have = 0;
-    struct mech_vec3 ctr = mech_vec3_make(0, 0, 0);
-    for (size_t i = 0; i < p->n_forces; i++) {
-        const struct mech_force *f = &p->forces[i];
-        struct mech_vec3 fc;
-        switch (f->type) {
-        case MECH_FORCE_UNIFORM_GRAVITY:
-            if (mech_vec3_norm(f->u.uniform_gravity.g) > 0.0) return 0;
-            continue;
-        case MECH_FORCE_LINEAR_DRAG:
-            if (f->u.linear_drag.b > 0.0) return 0;
-            continue;
-        case MECH_FORCE_SPRING:
-            if (f->u.spring.k == 0.0) continue;
-            fc = f->u.spring.anchor;
-            break;
-        case MECH_FORCE_CENTRAL_GRAVITY: fc = f->u.central_gravity.center; break;
-        case MECH_FORCE_LORENTZ:
-            if (p->charge == 0.0 ||
-                (mech_vec3_norm(f->u.lorentz.E) == 0.0 && mech_vec3_norm(f->u.lorentz.B) == 0.0))
-                continue;
-            return 0;
-        default: return 0;
-        }
-        if (have && (fc.x != ctr.x || fc.y != ctr.y || fc.z != ctr.z)) return 0;
-        ctr = fc;
-        have = 1;
-    }
-    *center = ctr;
-    return have;
+    const int rot = (c->coriolis || c->centrifugal || c->euler) &&
+                    (mech_vec3_norm(c->w0) > 0.0 || mech_vec3_norm(c->wdot) > 0.0);
+    const int tr = c->translational && mech_vec3_norm(c->A) > 0.0;
+    return mech_trajectory_angular_center(c->p, rot, tr, center);
 }
 
 /* Running invariants over the evaluated states. */

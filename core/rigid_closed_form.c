@@ -167,19 +167,8 @@ static struct mech_mat3 rcf_euler(const struct rcf_ctx *c, const double u[3], do
 static enum mech_status rcf_check(const struct mech_rigid_problem *p, double *qn,
                                   struct mech_error *err)
 {
-    const double *I = p->moments;
-    for (int i = 0; i < 3; i++)
-        if (!(isfinite(I[i]) && I[i] > 0))
-            return mech_error_set(err, MECH_EDOMAIN, "moments",
-                                  "moments must be finite and > 0, got I%d = %.17g", i + 1, I[i]);
-    for (int i = 0; i < 3; i++) {
-        const double other = I[(i + 1) % 3] + I[(i + 2) % 3];
-        if (I[i] > other * (1 + 1e-12))
-            return mech_error_set(err, MECH_EDOMAIN, "moments",
-                                  "not a physical body: I%d = %.17g exceeds the sum of the other "
-                                  "two, %.17g (a body's moments obey the triangle inequality)",
-                                  i + 1, I[i], other);
-    }
+    enum mech_status mst = mech_rigid_moments_check(p->moments, err);
+    if (mst != MECH_OK) return mst;
     if (!mech_vec3_isfinite(p->omega))
         return mech_error_set(err, MECH_EINVAL, "omega", "omega must be finite");
     double s = 0;

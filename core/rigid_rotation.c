@@ -290,24 +290,32 @@ double mech_rigid_rate_scale(const struct mech_rigid_problem *p)
     return W;
 }
 
-enum mech_status mech_rigid_rotate(const struct mech_rigid_problem *p,
-                                   const struct mech_budget *budget,
-                                   struct mech_rigid_result *res, struct mech_error *err)
+enum mech_status mech_rigid_moments_check(const double I[3], struct mech_error *err)
 {
-    if (!p || !res || !budget) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
-    const double *I = p->moments;
+    if (!I) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
     for (int i = 0; i < 3; i++)
         if (!(isfinite(I[i]) && I[i] > 0))
             return mech_error_set(err, MECH_EDOMAIN, "moments",
                                   "moments must be finite and > 0, got I%d = %.17g", i + 1, I[i]);
     for (int i = 0; i < 3; i++) {
-        double other = I[(i + 1) % 3] + I[(i + 2) % 3];
+        const double other = I[(i + 1) % 3] + I[(i + 2) % 3];
         if (I[i] > other * (1 + 1e-12))
             return mech_error_set(err, MECH_EDOMAIN, "moments",
                                   "not a physical body: I%d = %.17g exceeds the sum of the other "
                                   "two, %.17g (a body's moments obey the triangle inequality)",
                                   i + 1, I[i], other);
     }
+    return MECH_OK;
+}
+
+enum mech_status mech_rigid_rotate(const struct mech_rigid_problem *p,
+                                   const struct mech_budget *budget,
+                                   struct mech_rigid_result *res, struct mech_error *err)
+{
+    if (!p || !res || !budget) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
+    const double *I = p->moments;
+    enum mech_status mst = mech_rigid_moments_check(I, err);
+    if (mst != MECH_OK) return mst;
     if (!mech_vec3_isfinite(p->omega))
         return mech_error_set(err, MECH_EINVAL, "omega", "omega must be finite");
     double qn = 0;

@@ -824,17 +824,10 @@ enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
     return MECH_OK;
 }
 
-/* Whether the scene conserves angular momentum about one point: inertial
- * frame (or no fictitious term active), at least one central force, and
- * every active force central about the same point (central gravity centred
- * there, springs anchored there). */
-static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
+int mech_trajectory_angular_center(const struct mech_trajectory_problem *p, int rotation_active,
+                                   int translation_active, struct mech_vec3 *center)
 {
-    const struct mech_trajectory_problem *p = c->p;
-    if ((c->coriolis || c->centrifugal || c->euler) &&
-        (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0))
-        return 0;
-    if (c->translational && mech_vec3_norm(c->A) > 0.0) return 0;
+    if (!p || !center || rotation_active || translation_active) return 0;
     int have = 0;
     struct mech_vec3 ctr = mech_vec3_make(0, 0, 0);
     for (size_t i = 0; i < p->n_forces; i++) {
@@ -868,6 +861,15 @@ static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *c
     }
     *center = ctr;
     return have;
+}
+
+/* The integrator's side of mech_trajectory_angular_center: its frame terms. */
+static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
+{
+    const int rot = (c->coriolis || c->centrifugal || c->euler) &&
+                    (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0);
+    const int tr = c->translational && mech_vec3_norm(c->A) > 0.0;
+    return mech_trajectory_angular_center(c->p, rot, tr, center);
 }
 
 /* The Kepler split of a scene (wisdom_holman, mech/ode.h): the index of its
@@ -1423,9 +1425,10 @@ static const struct mech_accuracy_preset traj_presets[MECH_ACCURACY_COUNT] = {
      "for grading and reference answers: the cheapest method predicted to meet 1e-10 "
      "relative; long runs reach the round-off floor (~F x span^g), which the answer states"},
     {"machine", 1e-11, "radau15", "rkf45", 4.8e-8, 1e-12,
-     "1e-11 relative where round-off allows (~1e-13 over 10 orbits; 3.4e-11 over 1000 orbits "
-     "of e = 0.5, 1.2e-9 at e = 0.9, 7e-12 over 1e4 oscillator periods): the answer says when "
-     "the run is beyond it"},
+     "1e-11 relative where round-off allows (~1e-13 over 10 orbits of e = 0.5; the measured "
+     "envelope of the round-off floor is 2.5e-16 span^1.5 for Kepler orbits, span in "
+     "pericentre times: ~2e-11 over 10 orbits of e = 0.9, ~6e-10 over 1000 of e = 0.5, ~2e-8 "
+     "at e = 0.9): the answer re-states the promise when the run is beyond it"},
 };
 
 const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
@@ -1433,9 +1436,34 @@ const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
     return (int)a >= 0 && a < MECH_ACCURACY_COUNT ? &traj_presets[a] : NULL;
 }
 
+/* The pericentre dynamical time sqrt(q^3 / GM) of the two-body orbit through
+ * the initial state about each central body (q = h^2 / (GM (1 + e)), any
+ * eccentricity), the shortest over the bodies; +inf when there is none or
+ * the state is degenerate (at the centre, or radial: q = 0 is left to
+ * sqrt(|r0| / |a0|)). */
+static double kepler_pericentre_time(const struct mech_trajectory_problem *p)
+{
+    double T = INFINITY;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        if (p->forces[i].type != MECH_FORCE_CENTRAL_GRAVITY) continue;
+        const double gm = p->forces[i].u.central_gravity.gm;
+        const struct mech_vec3 r = mech_vec3_sub(p->position, p->forces[i].u.central_gravity.center);
+        const double rn = mech_vec3_norm(r);
+        if (!(gm > 0.0) || !(rn > 0.0)) continue;
+        const double h = mech_vec3_norm(mech_vec3_cross(r, p->velocity));
+        const double v2 = mech_vec3_dot(p->velocity, p->velocity);
+        const double energy = 0.5 * v2 - gm / rn;
+        const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
+        const double q = h * h / (gm * (1.0 + sqrt(fmax(e2, 0.0))));
+        if (q > 0.0 && isfinite(q)) T = fmin(T, sqrt(q * q * q / gm));
+    }
+    return T;
+}
+
 /* The chooser's profile of a trajectory scene: its class, its dynamical time
- * T = min(t_end, sqrt(|r0| / |a0|)), span = t_end / T, and the scale S of
- * positions and velocities (atol = rtol x S). */
+ * T = min(t_end, sqrt(|r0| / |a0|), the pericentre time of a central body's
+ * orbit), span = t_end / T, and the scale S of positions and velocities
+ * (atol = rtol x S). */
 static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ctx *c,
                          struct mech_scene_profile *s, double *L_out, double *V_out)
 {
@@ -1448,6 +1476,11 @@ static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ct
     const double rn = mech_vec3_norm(p->position);
     double T = p->t_end;
     if (an > 0.0 && rn > 0.0) T = fmin(T, sqrt(rn / an));
+    /* a central body: the orbit's pericentre time sqrt(q^3 / GM), wherever
+     * the run starts (from apocentre, sqrt(r0 / a0) would call an e = 0.9
+     * orbit 80x shorter in dynamical times than the same orbit from
+     * pericentre, and under-predict its round-off floor ~700x) */
+    T = fmin(T, kepler_pericentre_time(p));
     if (!(T > 0.0 && isfinite(T))) T = p->t_end > 0.0 ? p->t_end : 1.0;
     double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
     double V = fmax(vn, an * T);
@@ -1515,12 +1548,8 @@ enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p,
     out->opt = ch->opt;
     out->target = target;
     const double span = out->profile.span;
-    char beyond[240] = "";
-    if (out->sel.beyond || target < out->sel.roundoff_floor)
-        snprintf(beyond, sizeof beyond,
-                 "; the target may be beyond what the preset can keep: over %.3g dynamical "
-                 "times round-off alone can reach about %.1g relative (best predicted %.2g)",
-                 span, out->sel.roundoff_floor, ch->predicted_error);
+    char beyond[320];
+    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
     if (out->closed_form) {
         snprintf(out->reason, sizeof out->reason,
                  "%s %s scene over %.3g dynamical times: the exact %s solution is the cheapest "

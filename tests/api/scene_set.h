@@ -19,6 +19,8 @@
 #include "mech/budget.h"
 #include "mech/rigid_rotation.h"
 
+#include "../kepler_ld.h"
+
 #define SS_UNUSED __attribute__((unused))
 
 static int ss_quiet; /* 1: post() does not print refused requests */
@@ -77,20 +79,8 @@ static SS_UNUSED const json_t *at(const json_t *o, const char *path)
  * orbits moves the reference by ~5e-10, far above round-off. */
 static SS_UNUSED void kepler_state(double q, double u, double t, double *r, double *v)
 {
-    long double a = 1.0L / (2.0L / q - (long double)u * u), e = 1.0L - q / a;
-    long double n = 1.0L / (a * sqrtl(a));
-    long double M = fmodl(n * (long double)t, TWO_PI_L), E = M + e * sinl(M);
-    for (int i = 0; i < 60; i++) {
-        long double d = (E - e * sinl(E) - M) / (1 - e * cosl(E));
-        E -= d;
-        if (fabsl(d) < 1e-19L) break;
-    }
-    long double b = sqrtl(1 - e * e), den = 1 - e * cosl(E);
-    r[0] = (double)(a * (cosl(E) - e));
-    r[1] = (double)(a * b * sinl(E));
+    kepler_ld_pericentre(q, u, t, r, v); /* tests/kepler_ld.h */
     r[2] = 0;
-    v[0] = (double)(-a * n * sinl(E) / den);
-    v[1] = (double)(a * n * b * cosl(E) / den);
     v[2] = 0;
 }
 

@@ -37,20 +37,12 @@
  * chooser rewrite): "scene/preset". Filled from the measured run; empty
  * when every promise is kept. */
 static const char *const KNOWN_MISSES[] = {
-    /* 5.2e-11: rk8pd, rkck and radau15 at their tightest settings disagree
-     * by 5e-11 .. 1.4e-10 over 1000 time units (round-off), yet the answer
-     * does not re-state the promise */
-    "Henon-Heiles 1000/machine",
-    /* Integrating with "closed_form": false (the predictive chooser, radau15
-     * near its round-off floor): its floor model is calibrated on e = 0.5
-     * and under-predicts eccentric and long runs. Measured: 1.1e-11 on 10
-     * orbits of e = 0.9 (not re-stated), 4.4e-11 against a re-stated 3e-11
-     * over 1000 orbits of e = 0.5, 2.8e-9 against 5e-10 over 1000 orbits of
-     * e = 0.9. A client asking by accuracy gets the closed form there. */
-    "kepler e=0.9 10 orbits/machine/integrating",
-    "kepler e=0.5 1000 orbits/machine/integrating",
-    "kepler e=0.9 1000 orbits/precise/integrating",
-    "kepler e=0.9 1000 orbits/machine/integrating",
+    /* none: the five registered before (Kepler e = 0.9 10 orbits machine,
+     * e = 0.5 1000 orbits machine, e = 0.9 1000 orbits precise and machine,
+     * all integrating; Henon-Heiles 1000 machine) are kept since the
+     * round-off floor is the measured envelope (2.5e-16 span^1.5 over the
+     * orbit's pericentre time for Kepler, 2e-15 span^1.5 for first-order
+     * systems) and the answer re-states the promise from it */
     NULL};
 
 static int known_miss(const char *scene, const char *preset, int integrating)
@@ -60,6 +52,21 @@ static int known_miss(const char *scene, const char *preset, int integrating)
     for (size_t i = 0; KNOWN_MISSES[i]; i++)
         if (strcmp(KNOWN_MISSES[i], key) == 0) return 1;
     return 0;
+}
+
+/* the chosen candidate's predicted error in the answer's selection, or -1 */
+static double chosen_predicted(const json_t *ans)
+{
+    const json_t *c = json_object_get(
+        json_object_get(json_object_get(ans, "diagnostics"), "selection"), "candidates");
+    for (size_t i = 0; i < json_array_size(c); i++) {
+        const json_t *k = json_array_get(c, i);
+        if (!strcmp(json_string_value(json_object_get(k, "verdict")) ?: "", "chosen"))
+            return json_is_number(json_object_get(k, "predicted_error"))
+                       ? json_number_value(json_object_get(k, "predicted_error"))
+                       : -1.0;
+    }
+    return -1.0;
 }
 
 int main(int argc, char **argv)
@@ -89,6 +96,26 @@ int main(int argc, char **argv)
             const char *method =
                 json_string_value(json_object_get(json_object_get(ans, "diagnostics"), "method"));
             if (!method) method = "?";
+            /* the dry run of the same request announces the same choice */
+            {
+                json_t *dj = json_pack("{ss}", "accuracy", presets[p % 4]);
+                if (p >= 4) json_object_set_new(dj, "closed_form", json_false());
+                json_t *db = with_integrator(sc->body, dj);
+                json_object_set_new(db, "dry_run", json_true());
+                int dst;
+                json_t *dry = post(sc->path, db, &dst);
+                json_decref(db);
+                CHECK(dst == 200);
+                const char *dm = json_string_value(json_object_get(
+                    json_object_get(json_object_get(dry, "diagnostics"), "selection"), "method"));
+                const char *am = json_string_value(json_object_get(
+                    json_object_get(json_object_get(ans, "diagnostics"), "selection"), "method"));
+                if (!(dm && am && !strcmp(dm, am)))
+                    printf("%s %s: dry run says %s, the answer %s\n", sc->name, presets[p % 4],
+                           dm ? dm : "?", am ? am : "?");
+                CHECK(dm && am && !strcmp(dm, am));
+                json_decref(dry);
+            }
             json_t *ref = NULL;
             const char *evidence = "exact";
             switch (sc->ref) {
@@ -113,6 +140,17 @@ int main(int argc, char **argv)
             printf("\n");
             fflush(stdout);
             CHECK(err <= restated);
+            /* the prediction (issue 16): achieved at most 30x the chosen
+             * candidate's predicted error (the answers' within_prediction
+             * factor) wherever the error is above round-off, and at least
+             * 1/100 of it away from the round-off floor (prediction > 1e-11;
+             * measured 2026-11-25: 0.025 .. 3 on the set) */
+            const double pred = chosen_predicted(ans);
+            if (pred > 0 && err > 1e-14) {
+                printf("    predicted %.2e, achieved / predicted %.3g\n", pred, err / pred);
+                CHECK(err <= 30.0 * pred);
+                if (pred > 1e-11) CHECK(err >= pred / 100.0);
+            }
             json_decref(ref);
             json_decref(ans);
         }

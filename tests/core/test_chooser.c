@@ -228,8 +228,52 @@ static void test_dry_run_scene(void)
     CHECK(r.run.stats.rhs_evaluations > 0);
 }
 
+/* The chooser measures a Kepler run in pericentre times sqrt(q^3 / GM)
+ * wherever it starts: the same e = 0.9 orbit from apocentre (r = 1.9,
+ * v = sqrt(0.1 / 1.9) by the vis-viva law) has the span of the pericentre
+ * start, 10 orbits = 20 pi / 0.1^1.5 = 1987 (sqrt(|r0| / |a0|) at apocentre
+ * would say 10 orbits = 24 times its 2.62 s, 80x fewer), so the round-off
+ * floor predicted is the same and bounds the error of the tightest run
+ * (measured 2.5e-12 .. 3.2e-12 from pericentre, radau15 at 1e-9 and 2e-9). */
+static void test_span_from_apocentre(void)
+{
+    static struct scene peri, apo;
+    kepler(&peri, "kepler e=0.9 from pericentre", 0.9, 10);
+    kepler(&apo, "kepler e=0.9 from apocentre", 0.9, 10);
+    apo.p.position = mech_vec3_make(-1.9, 0, 0);
+    apo.p.velocity = mech_vec3_make(0, -sqrt(0.1 / 1.9), 0);
+    static struct mech_trajectory_choice cp, ca;
+    struct scene *sc[2] = {&peri, &apo};
+    struct mech_trajectory_choice *ch[2] = {&cp, &ca};
+    for (int k = 0; k < 2; k++) {
+        sc[k]->p.forces = sc[k]->f;
+        sc[k]->p.n_forces = 1;
+        sc[k]->p.samples = NS;
+        sc[k]->p.closed_form_off = 1;
+        CHECK(mech_trajectory_choose(&sc[k]->p, 1e-11, ch[k], NULL) == MECH_OK);
+    }
+    const double span = 20.0 * T_PI / pow(0.1, 1.5);
+    printf("  span from pericentre %.6g, from apocentre %.6g (expected %.6g); floor %.3g, %.3g\n",
+           cp.profile.span, ca.profile.span, span, cp.sel.roundoff_floor, ca.sel.roundoff_floor);
+    CHECK(fabs(cp.profile.span / span - 1.0) < 1e-9);
+    CHECK(fabs(ca.profile.span / span - 1.0) < 1e-9);
+    CHECK(fabs(ca.sel.roundoff_floor / cp.sel.roundoff_floor - 1.0) < 1e-6);
+    CHECK(!strcmp(cp.method, ca.method) && cp.opt.rtol == ca.opt.rtol);
+    /* machine is beyond reach over this run: re-stated, and the run keeps it */
+    const double restated = mech_selection_restated(&ca.sel);
+    CHECK(restated > 1e-11);
+    CHECK(strstr(ca.reason, "beyond what the preset can keep") != NULL);
+    struct mech_trajectory_result res;
+    CHECK(run(&apo, ca.method, ca.opt, xr, xv, &res));
+    const double err = achieved(&apo, &res);
+    printf("  from apocentre at machine: %s rtol %.3g, error %.3g, re-stated %.3g\n", ca.method,
+           ca.opt.rtol, err, restated);
+    CHECK(err <= restated);
+}
+
 int main(void)
 {
+    test_span_from_apocentre();
     test_dry_run_scene();
     static struct scene s;
     kepler(&s, "kepler e=0.5 10 orbits", 0.5, 10);

@@ -19,6 +19,7 @@
 
 #include "mech/reference.h"
 #include "mech/trajectory.h"
+#include "kepler_ld.h"
 #include "testlib.h"
 
 static const double PI = 3.14159265358979323846;
@@ -89,25 +90,8 @@ static void test_kepler_ellipse(void)
     printf("kepler ellipse vs Kepler's equation: max |dr|/a (1 - e) = %.3e\n", worst);
 }
 
-/* The orbit through the pericentre state (q, 0, 0), (0, u, 0) (gm = 1),
- * elements formed from those doubles in long double, at time t. */
-static void kepler_pericentre_ld(double q, double u, double t, double r[2], double v[2])
-{
-    const long double two_pi = 6.283185307179586476925286766559L;
-    long double a = 1.0L / (2.0L / q - (long double)u * u), e = 1.0L - q / a;
-    long double n = 1.0L / (a * sqrtl(a));
-    long double M = fmodl(n * (long double)t, two_pi), E = M + e * sinl(M);
-    for (int i = 0; i < 60; i++) {
-        long double d = (E - e * sinl(E) - M) / (1 - e * cosl(E));
-        E -= d;
-        if (fabsl(d) < 1e-19L) break;
-    }
-    long double b = sqrtl(1 - e * e), den = 1 - e * cosl(E);
-    r[0] = (double)(a * (cosl(E) - e));
-    r[1] = (double)(a * b * sinl(E));
-    v[0] = (double)(-a * n * sinl(E) / den);
-    v[1] = (double)(a * n * b * cosl(E) / den);
-}
+/* The orbit through the pericentre state in long double: tests/kepler_ld.h. */
+#define kepler_pericentre_ld kepler_ld_pericentre
 
 /* 1000 periods of e = 0.5 and e = 0.9 from their pericentre doubles: the
  * reduction by whole periods must not multiply P's rounding by 1000 (with P

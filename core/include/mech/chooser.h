@@ -110,6 +110,21 @@ struct mech_selection {
 enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
                              struct mech_selection *out, struct mech_error *err);
 
+/* The figure a preset's promise is re-stated to when round-off (or every
+ * candidate's best setting) cannot keep sel->target: max(round-off floor,
+ * the chosen integrator's predicted error) when that exceeds the target and
+ * the selection is beyond (sel->beyond, or target below the floor); 0 when
+ * the promise stands. Relative error, like the target. */
+double mech_selection_restated(const struct mech_selection *sel);
+
+/* The sentence an answer's selection reason appends about the round-off
+ * floor, into buf (n bytes, NUL-terminated, "" when nothing is to be said):
+ * "; beyond what the preset can keep: ... can reach about X relative ...
+ * re-stated as about X" (X = mech_selection_restated) or "; close to the
+ * round-off floor ...". One wording for every operation (clients and
+ * tests/api/scene_set.h read "about X"). */
+void mech_selection_beyond_text(const struct mech_selection *sel, char *buf, size_t n);
+
 /* The predicted relative error of `method` at setting x (rtol, or h/T for
  * fixed step) on scene s, from the calibrated model; -1 if the table has no
  * row for it. For tests and benches. */

@@ -156,6 +156,12 @@ struct mech_rigid_result {
                                          NaN with fewer than 2 */
 };
 
+/* The principal moments of a physical body: each finite and > 0 (kg m^2)
+ * and none above the sum of the other two (the triangle inequality, to
+ * 1e-12 relative). MECH_OK, or MECH_EDOMAIN at "moments" naming the moment
+ * and the mistake. The one check for mech_rigid_rotate and the closed form. */
+enum mech_status mech_rigid_moments_check(const double I[3], struct mech_error *err);
+
 /* Integrate Euler's equations and the attitude from t = 0 to t_end.
  * Statuses: MECH_OK; MECH_EINVAL / MECH_EDOMAIN with param "moments",
  * "omega", "orientation", "torque/value", "samples", "t_end", "integrator/..."

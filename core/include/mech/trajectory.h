@@ -246,12 +246,24 @@ struct mech_accuracy_preset {
 
 const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a); /* NULL if out of range */
 
+/* Whether the scene's forces conserve angular momentum about one point: at
+ * least one central force (central gravity, a spring with k != 0), every
+ * active force central about the same point (uniform gravity and drag of
+ * zero size and a Lorentz force on no charge or with no field are ignored),
+ * and no frame term acting (rotation_active: a rotation term with a non-zero
+ * rate; translation_active: a translational acceleration, both as the
+ * caller's frame model decides). Returns 1 with *center set (m), else 0
+ * (also for NULL arguments). The one rule for the integrator's and the
+ * closed forms' angular-momentum invariant. */
+int mech_trajectory_angular_center(const struct mech_trajectory_problem *p, int rotation_active,
+                                   int translation_active, struct mech_vec3 *center);
+
 /* The method and settings chosen for a problem. */
 struct mech_trajectory_choice {
     const char *method;          /* static */
     struct mech_ode_options opt;
     double target;               /* the relative error aimed at */
-    char reason[640];            /* why: scene class, scale, tolerance mapping */
+    char reason[900];             /* why: scene class, scale, tolerance mapping */
     struct mech_scene_profile profile; /* what the chooser was told about the scene */
     struct mech_selection sel;   /* every candidate with its predictions and verdict */
     int closed_form;             /* 1: the closed form was chosen (mech/closed_form.h);
