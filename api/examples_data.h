@@ -269,6 +269,14 @@ static const char *const api_examples_data[] = {
     "  \"notes_answer\": {\"pointer\": \"/vectors/1\", \"value\": 42000.0, \"rounding\": {\"relative\": 0.02}, \"text\": \"Boosting the decay event (cτ, 0, 0, 0) into the Earth frame: x = βγcτ ≈ 42 kilometres.\"}\n"
     "}",
     "{\n"
+    "  \"id\": \"muon-decay-length\",\n"
+    "  \"title\": \"The muon's cτ, lab lifetime and decay length from its speed\",\n"
+    "  \"section\": \"3.4 Phenomena of the Lorentz Transformation\",\n"
+    "  \"operation\": \"/v1/relativity/particle\",\n"
+    "  \"request\": {\"particle\": \"mu-\", \"beta\": 0.9999, \"proper_lifetime\": 2e-06},\n"
+    "  \"notes_answer\": {\"pointer\": \"/lifetime/decay_length\", \"value\": 42000.0, \"rounding\": {\"relative\": 0.02}, \"text\": \"cτ = 600 m, but the muon lives γτ ≈ 140 µs in the Earth frame and travels βγcτ ≈ 42 kilometres.\"}\n"
+    "}",
+    "{\n"
     "  \"id\": \"length-contraction\",\n"
     "  \"title\": \"Length contraction of a 1 m stick at β = 0.6\",\n"
     "  \"section\": \"3.4 Phenomena of the Lorentz Transformation\",\n"
