@@ -267,7 +267,9 @@ static const char iv_description[] =
     "`kind` is lightlike when |s2| <= `lightlike_tolerance` = 4 eps (dct^2 + |dx|^2) + "
     "s2_input_uncertainty (eps = 2.2e-16), else timelike (s2 < 0) or spacelike (s2 > 0). "
     "Timelike: `proper_time` = sqrt(-s2)/c (s; years with units years) and `proper_time_ct`; "
-    "spacelike: `proper_length` = sqrt(s2). `time_order` is the order in the given frame and "
+    "spacelike: `proper_length` = sqrt(s2). All three keys are always present: a quantity "
+    "that does not exist is null (spacelike: proper_time and proper_time_ct; timelike: "
+    "proper_length); lightlike: all three are 0. `time_order` is the order in the given frame and "
     "`time_order_reversible` is true exactly for spacelike separation (some boost makes the "
     "second event come first). `example_frame`: the velocity of a frame in which the events "
     "happen at the same place (timelike, beta = dx/(c dt)) or at the same time (spacelike, "
@@ -299,12 +301,17 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "lightlike_tolerance", api_real(c, iv.tolerance));
     json_object_set_new_nocheck(res, "s2_input_uncertainty", api_real(c, iv.input_error));
     json_object_set_new_nocheck(res, "coincident", json_boolean(iv.coincident));
-    if (iv.kind == MECH_INTERVAL_TIMELIKE) {
-        json_object_set_new_nocheck(res, "proper_time", api_real(c, iv.proper / c_light));
-        json_object_set_new_nocheck(res, "proper_time_ct", api_real(c, iv.proper));
-    } else if (iv.kind == MECH_INTERVAL_SPACELIKE) {
-        json_object_set_new_nocheck(res, "proper_length", api_real(c, iv.proper));
-    }
+    /* Every key always present: null where the quantity does not exist (a
+     * spacelike pair has no proper time, a timelike one no proper length);
+     * light-like pairs have both, and both are 0. */
+    const int has_time = iv.kind != MECH_INTERVAL_SPACELIKE;
+    const int has_length = iv.kind != MECH_INTERVAL_TIMELIKE;
+    json_object_set_new_nocheck(res, "proper_time",
+                                has_time ? api_real(c, iv.proper / c_light) : json_null());
+    json_object_set_new_nocheck(res, "proper_time_ct",
+                                has_time ? api_real(c, iv.proper) : json_null());
+    json_object_set_new_nocheck(res, "proper_length",
+                                has_length ? api_real(c, iv.proper) : json_null());
     json_object_set_new_nocheck(res, "time_order",
                                 json_string(iv.delta[0] > 0   ? "first_before_second"
                                             : iv.delta[0] < 0 ? "second_before_first"
