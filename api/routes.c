@@ -49,6 +49,8 @@ extern const struct api_route api_route_gr_geodesic;
 extern const struct api_route api_route_hamiltonian_flow;
 extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
+extern const struct api_route api_route_continuum_string;
+extern const struct api_route api_route_continuum_rod;
 
 const struct api_route *const api_routes[] = {
     &api_route_vectors,
@@ -80,6 +82,8 @@ const struct api_route *const api_routes[] = {
     &api_route_hamiltonian_flow,
     &api_route_hamiltonian_liouville,
     &api_route_hamiltonian_poincare,
+    &api_route_continuum_string,
+    &api_route_continuum_rod,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_frames_effective_force,
