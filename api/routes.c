@@ -46,6 +46,7 @@ extern const struct api_route api_route_relativity_particle;
 extern const struct api_route api_route_relativity_dot;
 extern const struct api_route api_route_relativity_rocket;
 extern const struct api_route api_route_relativity_force;
+extern const struct api_route api_route_relativity_lagrangian;
 extern const struct api_route api_route_gr_schwarzschild;
 extern const struct api_route api_route_gr_geodesic;
 extern const struct api_route api_route_hamiltonian_flow;
@@ -71,6 +72,7 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_dot,
     &api_route_relativity_rocket,
     &api_route_relativity_force,
+    &api_route_relativity_lagrangian,
     &api_route_relativity_velocity_addition,
     &api_route_relativity_interval,
     &api_route_relativity_worldline,
