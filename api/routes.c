@@ -53,6 +53,7 @@ extern const struct api_route api_route_hamiltonian_flow;
 extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
 extern const struct api_route api_route_hamiltonian_phase_area;
+extern const struct api_route api_route_hamiltonian_rotating_frame;
 extern const struct api_route api_route_continuum_string;
 extern const struct api_route api_route_continuum_rod;
 
@@ -90,6 +91,7 @@ const struct api_route *const api_routes[] = {
     &api_route_hamiltonian_liouville,
     &api_route_hamiltonian_poincare,
     &api_route_hamiltonian_phase_area,
+    &api_route_hamiltonian_rotating_frame,
     &api_route_continuum_string,
     &api_route_continuum_rod,
     &api_route_trajectory,
