@@ -269,6 +269,14 @@ static const char *const api_examples_data[] = {
     "  \"notes_answer\": {\"pointer\": \"/vectors/1\", \"value\": 42000.0, \"rounding\": {\"relative\": 0.02}, \"text\": \"Boosting the decay event (cτ, 0, 0, 0) into the Earth frame: x = βγcτ ≈ 42 kilometres.\"}\n"
     "}",
     "{\n"
+    "  \"id\": \"michelson-morley-ether\",\n"
+    "  \"title\": \"Michelson–Morley: the path difference an ether would give\",\n"
+    "  \"section\": \"3.2 The Michelson Morley Experiment: Some Analysis\",\n"
+    "  \"operation\": \"/v1/relativity/michelson-morley\",\n"
+    "  \"request\": {\"arm_length\": 11, \"speed\": 29979.2458},\n"
+    "  \"notes_answer\": {\"pointer\": \"/ether/notes_approximation/path_difference\", \"value\": 1.1e-07, \"rounding\": {\"relative\": 1e-06}, \"text\": \"β ≈ 1e-4 and L = 11 m: d ≈ β²L = 110 nm, a large fraction of a wavelength (the exact 2γ(γ − 1)L is 1.25e-8 larger).\"}\n"
+    "}",
+    "{\n"
     "  \"id\": \"muon-decay-length\",\n"
     "  \"title\": \"The muon's cτ, lab lifetime and decay length from its speed\",\n"
     "  \"section\": \"3.4 Phenomena of the Lorentz Transformation\",\n"

@@ -47,6 +47,7 @@ extern const struct api_route api_route_relativity_dot;
 extern const struct api_route api_route_relativity_rocket;
 extern const struct api_route api_route_relativity_force;
 extern const struct api_route api_route_relativity_lagrangian;
+extern const struct api_route api_route_relativity_michelson_morley;
 extern const struct api_route api_route_gr_schwarzschild;
 extern const struct api_route api_route_gr_geodesic;
 extern const struct api_route api_route_hamiltonian_flow;
@@ -75,6 +76,7 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_rocket,
     &api_route_relativity_force,
     &api_route_relativity_lagrangian,
+    &api_route_relativity_michelson_morley,
     &api_route_relativity_velocity_addition,
     &api_route_relativity_interval,
     &api_route_relativity_worldline,

@@ -632,6 +632,25 @@ class _Operations:
         """
         return self._operation('/v1/relativity/lagrangian', body, (('mass', mass), ('charge', charge), ('velocity', velocity), ('scalar_potential', scalar_potential), ('vector_potential', vector_potential), ('fields', fields), ('cost', cost)))
 
+    def relativity_michelson_morley(self, body: Optional[Dict[str, Any]] = None, *, arm_length: Optional[float] = None, speed: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Michelson-Morley: the ether's predicted path difference and fringe shift (exact beside the notes' beta^2 L) and the null result with the Lorentz contraction
+
+        POST /v1/relativity/michelson-morley. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            arm_length (required): L, m (the notes: 11 m)
+            speed: the apparatus' speed through the ether, m/s (the Earth's orbital speed ~3e4); default
+                    30000.0
+            wavelength: light's wavelength, m: adds the fringe shift on a 90 degree rotation
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/michelson-morley', body, (('arm_length', arm_length), ('speed', speed), ('wavelength', wavelength), ('cost', cost)))
+
     def relativity_velocity_addition(self, body: Optional[Dict[str, Any]] = None, *, velocity: Optional[Any] = None, frame_velocity: Optional[Dict[str, Any]] = None, compose: Optional[List[Dict[str, Any]]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic velocity addition in any directions, composition of boosts, and the Wigner (Thomas) rotation
 
@@ -1351,6 +1370,7 @@ OPERATIONS = {
     'relativity_rocket': '/v1/relativity/rocket',
     'relativity_force': '/v1/relativity/force',
     'relativity_lagrangian': '/v1/relativity/lagrangian',
+    'relativity_michelson_morley': '/v1/relativity/michelson-morley',
     'relativity_velocity_addition': '/v1/relativity/velocity-addition',
     'relativity_interval': '/v1/relativity/interval',
     'relativity_worldline': '/v1/relativity/worldline',
