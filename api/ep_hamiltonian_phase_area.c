@@ -22,8 +22,9 @@ static const char schema[] =
     "\"mass\":" PA_POS("mass m, kg") ","
     "\"omega\":" PA_POS("oscillator's angular frequency, rad/s (oscillator only)") ","
     "\"length\":" PA_POS("pendulum length l, m (pendulum only)") ","
-    "\"g\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,\"default\":9.80665,"
-    "\"description\":\"gravity, m/s^2 (pendulum only)\"},"
+    "\"g\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
+    "\"description\":\"gravity, m/s^2 (pendulum only; absent: 9.80665, not a schema default "
+    "because an oscillator must not receive it)\"},"
     "\"energy\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,\"description\":\"energy "
     "above the minimum of the potential, J\"}}}";
 /* clang-format on */

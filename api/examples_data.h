@@ -277,6 +277,22 @@ static const char *const api_examples_data[] = {
     "  \"notes_answer\": {\"pointer\": \"/ether/notes_approximation/path_difference\", \"value\": 1.1e-07, \"rounding\": {\"relative\": 1e-06}, \"text\": \"β ≈ 1e-4 and L = 11 m: d ≈ β²L = 110 nm, a large fraction of a wavelength (the exact 2γ(γ − 1)L is 1.25e-8 larger).\"}\n"
     "}",
     "{\n"
+    "  \"id\": \"twin-telescope\",\n"
+    "  \"title\": \"The twin paradox: the traveller's clock seen through a telescope\",\n"
+    "  \"section\": \"3.15 The Twin Paradox\",\n"
+    "  \"operation\": \"/v1/relativity/worldline\",\n"
+    "  \"request\": {\"units\": \"years\", \"legs\": [{\"velocity\": {\"beta\": [0.8, 0, 0]}, \"distance\": 8}, {\"velocity\": {\"beta\": [-0.8, 0, 0]}, \"distance\": 8}], \"telescope_home_times\": [18]},\n"
+    "  \"notes_answer\": {\"pointer\": \"/home_telescope/0/traveller_clock\", \"value\": 6.0, \"rounding\": {\"relative\": 1e-12}, \"text\": \"The earthbound twin sees the trip out for 18 years (10 years plus 8 for the light), one tick every three years: the telescope shows 6 years at home time 18.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"muon-106-gev-lifetime\",\n"
+    "  \"title\": \"A 106 GeV muon's lifetime in the Earth frame\",\n"
+    "  \"section\": \"3.19 Homework 5\",\n"
+    "  \"operation\": \"/v1/relativity/particle\",\n"
+    "  \"request\": {\"particle\": 106, \"energy\": 106000, \"proper_lifetime\": 2e-06},\n"
+    "  \"notes_answer\": {\"pointer\": \"/lifetime/lab\", \"value\": 0.002, \"rounding\": {\"relative\": 1e-12}, \"text\": \"gamma = E/(m c^2) = 106 GeV / 106 MeV = 1000, so the mean lifetime 2 microseconds becomes 2 ms.\"}\n"
+    "}",
+    "{\n"
     "  \"id\": \"muon-decay-length\",\n"
     "  \"title\": \"The muon's cτ, lab lifetime and decay length from its speed\",\n"
     "  \"section\": \"3.4 Phenomena of the Lorentz Transformation\",\n"

@@ -691,7 +691,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/interval', body, (('events', events), ('units', units), ('cost', cost)))
 
-    def relativity_worldline(self, body: Optional[Dict[str, Any]] = None, *, legs: Optional[List[Any]] = None, units: Optional[str] = None, tick_interval: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def relativity_worldline(self, body: Optional[Dict[str, Any]] = None, *, legs: Optional[List[Any]] = None, units: Optional[str] = None, tick_interval: Optional[float] = None, telescope_home_times: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """A trip as legs of constant velocity or constant proper acceleration: proper times, the stay-at-home time, and the Doppler ticks each twin sees
 
         POST /v1/relativity/worldline. The request is `body` (a dict) and/or the keyword arguments below
@@ -705,11 +705,13 @@ class _Operations:
                     lengths in light-years, c = 1; default "seconds"
             tick_interval: each twin's clock ticks once per this proper time (default 1 s or 1 year);
                     default 1.0
+            telescope_home_times: home times at which the stay-at-home twin reads the traveller's clock
+                    through a telescope (the light arriving then); up to the time the trip's end is seen
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('cost', cost)))
+        return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('telescope_home_times', telescope_home_times), ('cost', cost)))
 
     def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with aberration
@@ -1024,7 +1026,8 @@ class _Operations:
             mass (required): mass m, kg
             omega: oscillator's angular frequency, rad/s (oscillator only)
             length: pendulum length l, m (pendulum only)
-            g: gravity, m/s^2 (pendulum only); default 9.80665
+            g: gravity, m/s^2 (pendulum only; absent: 9.80665, not a schema default because an
+                    oscillator must not receive it)
             energy (required): energy above the minimum of the potential, J
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
