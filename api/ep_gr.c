@@ -14,6 +14,7 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/geodesic.h"
+#include "mech/radial_infall.h"
 #include "mech/schwarzschild.h"
 #include "trajectory_request.h"
 
@@ -143,6 +144,7 @@ static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
         json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
         json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
         json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
+        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / GR_G)); /* M = GM/G */
     }
     return j;
 }
@@ -170,6 +172,9 @@ static const char schw_schema[] =
     "," GR_UNITS_SCHEMA ","
     "\"r\":" GR_LEN("radius (Schwarzschild r: circumference / 2 pi) for the clocks and the "
                     "circular orbit; > r_s") ","
+    "\"infall_from\":" GR_LEN("radius of rest from which a body falls radially: adds "
+                              "radial_infall, the proper times to the horizon and to r = 0; "
+                              "> r_s") ","
     "\"reference_r\":" GR_LEN("radius of a static reference clock (e.g. the ground: 6371000 m "
                               "mean or 6378137 m equatorial for the Earth): compares it with a "
                               "clock on a circular orbit at r (GPS). Needs r.") ","
@@ -209,9 +214,19 @@ static const char schw_description[] =
     "W(r) = (1 - r_s/r)/r^2 (1/m^2 or (GM/c^2)^-2; (1/L^2)(dr/dlambda)^2 = 1/b^2 - W, Hartle eq. "
     "11.10), with the extrema (circular orbits at r = (L^2/2GM)(1 +- sqrt(1 - 12 (GM/cL)^2)), "
     "eq. 9.33; the photon maximum at 3GM/c^2). Constants: c = 299792458 m/s (exact), G = "
-    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440041279419e20 (JPL DE440), "
-    "GM_earth = 3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
-    "units block says which.";
+    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440041279419e20 (JPL "
+    "DE440), GM_earth = 3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
+    "units block says which (and, with M, mass_kg = GM/G). Also: isco_binding_efficiency = 1 - "
+    "sqrt(8/9) = 5.72 % (the rest energy released spiralling in to the ISCO); with r, "
+    "at_r.weak_field_potential = GM/(r c^2) and circular_orbit.binding_efficiency = 1 - "
+    "E/(m c^2) (1/(2r) far out, 0 at r = 4GM/c^2, negative inside: unbound), formed without "
+    "cancellation; with reference_r, clock_comparison.uniform_field: the notes' uniform-field "
+    "red shift g h/c^2 (g = GM/R^2 at reference_r, h = r - R), labelled as the approximation it "
+    "is, beside the exact gravitational part; with infall_from r0: radial_infall, a fall from "
+    "rest at r0 along the cycloid r = (r0/2)(1 + cos eta), tau = sqrt(r0^3/(8GM)) (eta + sin "
+    "eta): proper_time_to_horizon, proper_time_to_singularity = (pi/2) sqrt(r0^3/(2GM)) "
+    "(the Newtonian free-fall time, exactly), proper_time_horizon_to_singularity (at most pi "
+    "GM/c^3; 4/3 GM/c^3 from far away), and coordinate_time_to_horizon null (infinite).";
 
 static const char schw_example[] =
     "{\"M\": \"earth\", \"r\": 26561750, \"reference_r\": 6371000, "
@@ -232,6 +247,8 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
     json_object_set_new_nocheck(out, "critical_impact_parameter",
                                 api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
+    json_object_set_new_nocheck(out, "isco_binding_efficiency",
+                                api_real(c, MECH_SCHW_ISCO_BINDING_EFFICIENCY));
 
     const json_t *rj = json_object_get(body, "r"), *refj = json_object_get(body, "reference_r");
     if (refj && !rj) {
@@ -256,6 +273,7 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(a, "r",
                                     api_real(c, json_number_value(rj))); /* echoed exactly */
         json_object_set_new_nocheck(a, "r_over_rs", api_real(c, r / 2.0));
+        json_object_set_new_nocheck(a, "weak_field_potential", api_real(c, 1.0 / r));
         json_t *st = json_object();
         json_object_set_new_nocheck(st, "clock_rate", api_real(c, s.rate));
         json_object_set_new_nocheck(st, "clock_rate_deficit", api_real(c, s.rate_deficit));
@@ -269,6 +287,8 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             json_object_set_new_nocheck(cj, "clock_rate", api_real(c, co.rate));
             json_object_set_new_nocheck(cj, "clock_rate_deficit", api_real(c, co.rate_deficit));
             json_object_set_new_nocheck(cj, "energy", api_real(c, co.energy));
+            json_object_set_new_nocheck(cj, "binding_efficiency",
+                                        api_real(c, co.binding_efficiency));
             json_object_set_new_nocheck(cj, "angular_momentum",
                                         api_real(c, gr_ang_out(&u, co.angular_momentum)));
             json_object_set_new_nocheck(cj, "local_speed_over_c", api_real(c, co.local_speed));
@@ -320,6 +340,15 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             json_object_set_new(fo, "microseconds_per_day_net",
                                 api_real(c, cc.first_order_net * day));
             json_object_set_new_nocheck(k, "first_order", fo);
+            json_t *uf = json_object();
+            json_object_set_new_nocheck(uf, "gravitational",
+                                        api_real(c, cc.uniform_field_gravitational));
+            json_object_set_new_nocheck(
+                uf, "label",
+                json_string("approximation: the notes' uniform-field red shift g h/c^2, g = "
+                            "GM/R^2 at reference_r, h = r - R (relative error ~h/R beside "
+                            "fractional.gravitational)"));
+            json_object_set_new_nocheck(k, "uniform_field", uf);
             json_object_set_new_nocheck(
                 k, "left_out",
                 json_string("the reference's own motion (the Earth's rotation: "
@@ -327,6 +356,33 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
                             "other masses, orbit eccentricity"));
             json_object_set_new_nocheck(out, "clock_comparison", k);
         }
+    }
+
+    const json_t *ij = json_object_get(body, "infall_from");
+    if (ij) {
+        struct mech_radial_infall f;
+        enum mech_status sti =
+            mech_radial_infall_from_rest(gr_len_in(&u, json_number_value(ij)), &f, &e);
+        if (sti != MECH_OK) {
+            api_call_fail_core(c, sti, &e, "");
+            json_decref(out);
+            return NULL;
+        }
+        json_t *ri = json_object();
+        json_object_set_new_nocheck(ri, "from", api_real(c, json_number_value(ij)));
+        json_object_set_new_nocheck(ri, "proper_time_to_horizon",
+                                    api_real(c, gr_time_out(&u, f.to_horizon)));
+        json_object_set_new_nocheck(ri, "proper_time_to_singularity",
+                                    api_real(c, gr_time_out(&u, f.to_singularity)));
+        json_object_set_new_nocheck(ri, "proper_time_horizon_to_singularity",
+                                    api_real(c, gr_time_out(&u, f.horizon_to_singularity)));
+        json_object_set_new_nocheck(ri, "coordinate_time_to_horizon", json_null());
+        json_object_set_new_nocheck(
+            ri, "note",
+            json_string("a fall from rest; the coordinate (far-away) time to the horizon is "
+                        "infinite, hence null; the proper time to r = 0 equals the Newtonian "
+                        "free-fall time"));
+        json_object_set_new_nocheck(out, "radial_infall", ri);
     }
 
     const json_t *ej = json_object_get(body, "effective_potential");
@@ -435,7 +491,9 @@ static const char geo_schema[] =
     "\"kind\":{\"enum\":[\"timelike\",\"null\"],\"description\":\"timelike: a massive "
     "particle (proper time tau); null: light (affine parameter lambda, normalised to "
     "dt/dlambda -> 1 far away)\"},"
-    "\"r0\":" GR_LEN("start radius (not with the orbit forms, which start at periapsis)") ","
+    "\"r0\":" GR_LEN("start radius (not with the orbit forms, which start at periapsis); "
+                    "for light given by impact_parameter, default 100 b (at least 1000 GM/c^2), "
+                    "a ray from far away") ","
     "\"phi0\":{\"type\":\"number\",\"minimum\":-1000,\"maximum\":1000,\"default\":0,"
     "\"description\":\"rad\"},"
     "\"initial\":{\"description\":\"one of: conserved energy and angular momentum "
@@ -578,8 +636,9 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
                          "omit r0");
         return NULL;
     }
-    if (!orbit_form && !r0j) {
-        api_call_invalid(c, "/r0", "r0 (the start radius) is required");
+    if (!orbit_form && !r0j && !form_impact) {
+        api_call_invalid(c, "/r0", "r0 (the start radius) is required (it has a default only "
+                                   "for light given by impact_parameter, a ray from far away)");
         return NULL;
     }
     const json_t *tj = json_object_get(body, "tau_end"), *oj = json_object_get(body, "orbits"),
@@ -602,7 +661,14 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
     mech_error_clear(&e);
     struct mech_geodesic_init in;
     const double phi0 = api_number(body, "phi0", 0);
-    const double r0 = r0j ? gr_len_in(&u, json_number_value(r0j)) : NAN;
+    /* A ray from far away (impact_parameter, no r0) starts at 100 b, at least 1000 GM/c^2:
+     * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
+     * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
+     * from 10 b to 1400 b). */
+    const double r0 = r0j              ? gr_len_in(&u, json_number_value(r0j))
+                      : form_impact ? fmax(100.0 * gr_len_in(&u, api_number(ini, "impact_parameter", 0)),
+                                           1000.0)
+                                    : NAN;
     enum mech_status st;
     if (form_energy) {
         int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;

@@ -24,7 +24,10 @@ static const char boost_schema[] =
     "the same shape\",\"oneOf\":["
     "{\"type\":\"array\",\"minItems\":1,\"maxItems\":100000,\"items\":" BOOST_VEC4 "}," BOOST_VEC4
     "]},"
-    "\"velocity\":" API_VELOCITY_SCHEMA "}}";
+    "\"velocity\":" API_VELOCITY_SCHEMA ","
+    "\"matrix\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true adds matrix, "
+    "the 4x4 Lorentz matrix of the boost (x' = matrix x, rows and columns in the order ct, x, "
+    "y, z)\"}}}";
 
 static const char boost_example[] =
     "{\"vectors\": [[1, 0, 0, 0], [1, 1, 0, 0]], \"velocity\": {\"beta\": [0.6, 0, 0]}}";
@@ -43,7 +46,10 @@ static const char boost_description[] =
     "-x0^2 + |x|^2 of each input (compensated); invariants_after is the same invariant of "
     "the boosted vector from its light-cone product -u'v' + |x_perp|^2, since recomputing "
     "it from large boosted components would cancel. |beta| >= 1, gamma < 1, "
-    "1 - beta outside (0, 2) or a zero direction is a 422 naming the field.";
+    "1 - beta outside (0, 2) or a zero direction is a 422 naming the field. With "
+    "\"matrix\": true the answer adds matrix, the 4x4 Lorentz matrix Lambda (notes §3, a "
+    "boost in an arbitrary direction): Lambda00 = gamma, Lambda0i = Lambdai0 = -beta_i gamma, "
+    "Lambdaij = delta_ij + (gamma - 1) n_i n_j, from the exact gamma - 1 and beta gamma.";
 
 static const double *vector_at(const json_t *vectors, int single, size_t i, double buf[4])
 {
@@ -94,6 +100,14 @@ static json_t *boost_op(struct api_call *c, const json_t *body)
                                 single ? api_real(c, ib[0]) : api_reals(c, ib, n));
     json_object_set_new_nocheck(res, "invariants_after",
                                 single ? api_real(c, ia[0]) : api_reals(c, ia, n));
+    if (json_is_true(json_object_get(body, "matrix"))) {
+        double m[4][4];
+        mech_boost_matrix(&b, m);
+        json_t *rows = json_array();
+        for (int i = 0; rows && i < 4; i++)
+            json_array_append_new(rows, api_reals(c, m[i], 4));
+        json_object_set_new_nocheck(res, "matrix", rows);
+    }
     free(x);
     if (!res || !vs) {
         json_decref(res);

@@ -13,6 +13,7 @@
 #include "mech/boost.h"
 #include "mech/interval.h"
 #include "mech/velocity_addition.h"
+#include "mech/telescope.h"
 #include "mech/worldline.h"
 #include "velocity_request.h"
 
@@ -267,7 +268,9 @@ static const char iv_description[] =
     "`kind` is lightlike when |s2| <= `lightlike_tolerance` = 4 eps (dct^2 + |dx|^2) + "
     "s2_input_uncertainty (eps = 2.2e-16), else timelike (s2 < 0) or spacelike (s2 > 0). "
     "Timelike: `proper_time` = sqrt(-s2)/c (s; years with units years) and `proper_time_ct`; "
-    "spacelike: `proper_length` = sqrt(s2). `time_order` is the order in the given frame and "
+    "spacelike: `proper_length` = sqrt(s2). All three keys are always present: a quantity "
+    "that does not exist is null (spacelike: proper_time and proper_time_ct; timelike: "
+    "proper_length); lightlike: all three are 0. `time_order` is the order in the given frame and "
     "`time_order_reversible` is true exactly for spacelike separation (some boost makes the "
     "second event come first). `example_frame`: the velocity of a frame in which the events "
     "happen at the same place (timelike, beta = dx/(c dt)) or at the same time (spacelike, "
@@ -299,12 +302,17 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "lightlike_tolerance", api_real(c, iv.tolerance));
     json_object_set_new_nocheck(res, "s2_input_uncertainty", api_real(c, iv.input_error));
     json_object_set_new_nocheck(res, "coincident", json_boolean(iv.coincident));
-    if (iv.kind == MECH_INTERVAL_TIMELIKE) {
-        json_object_set_new_nocheck(res, "proper_time", api_real(c, iv.proper / c_light));
-        json_object_set_new_nocheck(res, "proper_time_ct", api_real(c, iv.proper));
-    } else if (iv.kind == MECH_INTERVAL_SPACELIKE) {
-        json_object_set_new_nocheck(res, "proper_length", api_real(c, iv.proper));
-    }
+    /* Every key always present: null where the quantity does not exist (a
+     * spacelike pair has no proper time, a timelike one no proper length);
+     * light-like pairs have both, and both are 0. */
+    const int has_time = iv.kind != MECH_INTERVAL_SPACELIKE;
+    const int has_length = iv.kind != MECH_INTERVAL_TIMELIKE;
+    json_object_set_new_nocheck(res, "proper_time",
+                                has_time ? api_real(c, iv.proper / c_light) : json_null());
+    json_object_set_new_nocheck(res, "proper_time_ct",
+                                has_time ? api_real(c, iv.proper) : json_null());
+    json_object_set_new_nocheck(res, "proper_length",
+                                has_length ? api_real(c, iv.proper) : json_null());
     json_object_set_new_nocheck(res, "time_order",
                                 json_string(iv.delta[0] > 0   ? "first_before_second"
                                             : iv.delta[0] < 0 ? "second_before_first"
@@ -418,14 +426,21 @@ static const char wl_schema[] =
                                                                                        "time "
                                                                                        "(default 1 "
                                                                                        "s or 1 "
-                                                                                       "year)\"}"
-                                                                                       "}}";
+                                                                                       "year)\"},"
+    "\"telescope_home_times\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":20,\"items\":"
+    "{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30},\"description\":\"home times "
+    "at which the stay-at-home twin reads the traveller's clock through a telescope (the "
+    "light arriving then); up to the time the trip's end is seen\"}}}";
 
 static const char wl_example[] =
     "{\"units\": \"years\", \"legs\": [{\"velocity\": {\"beta\": [0.8, 0, 0]}, \"distance\": 8}, "
     "{\"velocity\": {\"beta\": [-0.8, 0, 0]}, \"distance\": 8}]}";
 
 static const char wl_description[] =
+    "With telescope_home_times: home_telescope, for each home time t the traveller's clock "
+    "reading the stay-at-home twin sees through a telescope (notes §3.15), from the event "
+    "where the light left (t_e + |x_e|/c = t, found by bisection along the trip), with that "
+    "emission event, the leg and the light travel time. "
     "A trip as legs, starting from the stay-at-home twin at the origin, at rest, at t = 0 (the "
     "twin paradox, notes §3.15). Legs: constant `velocity` (the shared velocity forms, in the "
     "home frame; the velocity changes instantly, as in the notes) for a `coordinate_time`, a "
@@ -530,9 +545,37 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_worldline_run(legs, n, cl, &c->budget, out, &tot, &e);
+    json_t *views = NULL;
+    const json_t *tj = json_object_get(body, "telescope_home_times");
+    if (st == MECH_OK && tj) {
+        struct mech_leg *sl = calloc(n, sizeof *sl);
+        struct mech_leg_result *sr = calloc(n, sizeof *sr);
+        views = json_array();
+        if (!sl || !sr || !views) st = mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory");
+        for (size_t i = 0; st == MECH_OK && i < json_array_size(tj); i++) {
+            struct mech_telescope_view v;
+            st = mech_telescope_home_view(legs, out, n, cl, json_number_value(json_array_get(tj, i)),
+                                          sl, sr, &c->budget, &v, &e);
+            if (st != MECH_OK) {
+                if (!strcmp(e.param, "telescope_home_times"))
+                    snprintf(e.param, sizeof e.param, "telescope_home_times/%zu", i);
+                break;
+            }
+            json_t *o = json_object();
+            json_object_set_new_nocheck(o, "home_time", api_real(c, v.home_time));
+            json_object_set_new_nocheck(o, "traveller_clock", api_real(c, v.traveller_clock));
+            json_object_set_new_nocheck(o, "leg", v.leg < 0 ? json_null() : json_integer(v.leg));
+            json_object_set_new_nocheck(o, "emission_event", api_reals(c, v.emission, 4));
+            json_object_set_new_nocheck(o, "light_travel_time", api_real(c, v.light_time));
+            json_array_append_new(views, o);
+        }
+        free(sl);
+        free(sr);
+    }
     free(legs);
     if (st != MECH_OK) {
         free(out);
+        json_decref(views);
         return api_call_fail_core(c, st, &e, "");
     }
 
@@ -575,6 +618,7 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
     }
     free(out);
     json_object_set_new_nocheck(res, "legs", arr);
+    if (views) json_object_set_new_nocheck(res, "home_telescope", views);
     json_t *t = json_object();
     json_object_set_new_nocheck(t, "proper_time", api_real(c, tot.proper_time));
     json_object_set_new_nocheck(t, "coordinate_time", api_real(c, tot.coordinate_time));

@@ -380,6 +380,12 @@ static const char decay_description[] =
     "sin(theta01) and energy conservation the scale. A parent lighter than its daughters "
     "(M < sum m) is a 422 explaining that the decay cannot happen." KIN_UNIT_DESC KIN_TABLE_TEXT;
 
+/* The *_deg companion of an angle in radians (the description's promise). */
+static json_t *deg_of(struct api_call *c, double rad)
+{
+    return api_real(c, rad * (180.0 / PI));
+}
+
 static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
 {
     json_t *o = json_object();
@@ -389,6 +395,7 @@ static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
     json_object_set_new_nocheck(o, "momentum_parallel", api_real(c, l->momentum_parallel));
     json_object_set_new_nocheck(o, "momentum_transverse", api_real(c, l->momentum_transverse));
     json_object_set_new_nocheck(o, "angle", api_real(c, l->angle));
+    json_object_set_new_nocheck(o, "angle_deg", deg_of(c, l->angle));
     return o;
 }
 
@@ -426,7 +433,7 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
     json_object_set_new_nocheck(rf, "kinetic_energies", api_reals(c, tb.kinetic, 2));
     json_object_set_new_nocheck(res, "rest_frame", rf);
 
-    json_t *ranges = json_array(), *maxang = json_array();
+    json_t *ranges = json_array(), *maxang = json_array(), *maxdeg = json_array();
     for (int i = 0; i < 2; i++) {
         struct mech_kin_lab fw, bw;
         mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], 0.0, 0, &fw);
@@ -434,17 +441,20 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
         double r[2] = {bw.energy, fw.energy};
         json_array_append_new(ranges, api_reals(c, r, 2));
         double tm;
-        json_array_append_new(maxang, mech_kin_decay_max_angle(b, m[i], tb.momentum, &tm)
-                                          ? api_real(c, tm)
-                                          : json_null());
+        const int has_max = mech_kin_decay_max_angle(b, m[i], tb.momentum, &tm);
+        json_array_append_new(maxang, has_max ? api_real(c, tm) : json_null());
+        json_array_append_new(maxdeg, has_max ? deg_of(c, tm) : json_null());
     }
     json_object_set_new_nocheck(res, "lab_energy_ranges", ranges);
     json_object_set_new_nocheck(res, "maximum_lab_angles", maxang);
+    json_object_set_new_nocheck(res, "maximum_lab_angles_deg", maxdeg);
     double a, at;
     mech_kin_decay_min_opening(b, m, tb.momentum, tb.energy, &a, &at);
     json_t *mo = json_object();
     json_object_set_new_nocheck(mo, "angle", api_real(c, a));
+    json_object_set_new_nocheck(mo, "angle_deg", deg_of(c, a));
     json_object_set_new_nocheck(mo, "theta_star", api_real(c, at));
+    json_object_set_new_nocheck(mo, "theta_star_deg", deg_of(c, at));
     json_object_set_new_nocheck(res, "minimum_opening_angle", mo);
 
     if (has_ts == 1) {
@@ -455,10 +465,12 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
         if (open > PI) open = 2 * PI - open;
         json_t *o = json_object(), *ds = json_array();
         json_object_set_new_nocheck(o, "theta_star", api_real(c, theta_star));
+        json_object_set_new_nocheck(o, "theta_star_deg", deg_of(c, theta_star));
         json_array_append_new(ds, lab_json(c, &l1));
         json_array_append_new(ds, lab_json(c, &l2));
         json_object_set_new_nocheck(o, "daughters", ds);
         json_object_set_new_nocheck(o, "opening_angle", api_real(c, open));
+        json_object_set_new_nocheck(o, "opening_angle_deg", deg_of(c, open));
         json_object_set_new_nocheck(res, "at_theta_star", o);
     }
     if (has_cone == 1) {
@@ -468,6 +480,7 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
         json_t *o = json_object(), *rs = json_array();
         json_object_set_new_nocheck(o, "daughter", json_integer(i));
         json_object_set_new_nocheck(o, "half_angle", api_real(c, half));
+        json_object_set_new_nocheck(o, "half_angle_deg", deg_of(c, half));
         for (int k = 0; k < nr; k++)
             json_array_append_new(rs, api_reals(c, r[k], 2));
         json_object_set_new_nocheck(o, "energy_ranges", rs);
@@ -653,6 +666,7 @@ static json_t *compton_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
     json_object_set_new_nocheck(res, "target_mass", api_real(c, m));
     json_object_set_new_nocheck(res, "angle", api_real(c, theta));
+    json_object_set_new_nocheck(res, "angle_deg", deg_of(c, theta));
     json_t *in = json_object(), *sc = json_object(), *rc = json_object();
     json_object_set_new_nocheck(in, "energy", api_real(c, e));
     json_object_set_new_nocheck(in, "wavelength", api_real(c, lambda));
@@ -666,6 +680,7 @@ static json_t *compton_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(rc, "energy", api_real(c, m + r.recoil_kinetic));
     json_object_set_new_nocheck(rc, "momentum", api_real(c, r.recoil_momentum));
     json_object_set_new_nocheck(rc, "angle", api_real(c, r.recoil_angle));
+    json_object_set_new_nocheck(rc, "angle_deg", deg_of(c, r.recoil_angle));
     json_object_set_new_nocheck(res, "recoil", rc);
     return finish(c, res);
 }

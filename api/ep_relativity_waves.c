@@ -73,7 +73,11 @@ static const char doppler_description[] =
     "longitudinal_receding (D = exp(-eta)), transverse_source_frame (light perpendicular to "
     "the motion in the source frame: blue shift D = gamma), transverse_observer_frame "
     "(perpendicular in the observer frame: red shift D = 1/gamma, the notes' transverse "
-    "effect), general, or no_relative_motion. Wavelengths use c = 299792458 m/s exactly.";
+    "effect), general, or no_relative_motion. Wavelengths use c = 299792458 m/s exactly. "
+    "shift says red (D < 1: longer wavelength), blue (D > 1) or none; redshift_z = "
+    "lambda_obs/lambda_emit - 1 = -(D - 1)/D (negative for a blue shift), and with a "
+    "frequency or wavelength, wavelength_shift = lambda_obs - lambda_emit and frequency_shift "
+    "= nu_obs - nu_emit, each from D - 1 (a 1 m/s shift keeps its digits).";
 
 static const char *frame_pointer(int in_source)
 {
@@ -152,11 +156,21 @@ static json_t *doppler_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "case", json_string(mech_doppler_case_name(d.kind)));
     json_object_set_new_nocheck(res, "doppler_factor", api_real(c, d.factor));
     json_object_set_new_nocheck(res, "doppler_factor_minus_one", api_real(c, d.factor_minus_one));
+    /* z = lambda_obs/lambda_emit - 1 = 1/D - 1 = -(D - 1)/D, from the precise D - 1. */
+    const double z = -d.factor_minus_one / d.factor;
+    json_object_set_new_nocheck(res, "shift",
+                                json_string(d.factor_minus_one > 0   ? "blue"
+                                            : d.factor_minus_one < 0 ? "red"
+                                                                     : "none"));
+    json_object_set_new_nocheck(res, "redshift_z", api_real(c, z));
     if (have_light) {
         json_object_set_new_nocheck(res, "frequency_emitted", api_real(c, f_emit));
         json_object_set_new_nocheck(res, "wavelength_emitted", api_real(c, l_emit));
         json_object_set_new_nocheck(res, "frequency_observed", api_real(c, f_obs));
         json_object_set_new_nocheck(res, "wavelength_observed", api_real(c, l_obs));
+        json_object_set_new_nocheck(res, "wavelength_shift", api_real(c, l_emit * z));
+        json_object_set_new_nocheck(res, "frequency_shift",
+                                    api_real(c, f_emit * d.factor_minus_one));
     }
     json_object_set_new_nocheck(res, "angle_source_frame_deg",
                                 angle_or_null(c, d.angle_source, 180 / M_PI));

@@ -46,11 +46,21 @@ extern const struct api_route api_route_relativity_decay;
 extern const struct api_route api_route_relativity_compton;
 extern const struct api_route api_route_relativity_collision;
 extern const struct api_route api_route_relativity_particles;
+extern const struct api_route api_route_relativity_particle;
+extern const struct api_route api_route_relativity_dot;
+extern const struct api_route api_route_relativity_rocket;
+extern const struct api_route api_route_relativity_force;
+extern const struct api_route api_route_relativity_lagrangian;
+extern const struct api_route api_route_relativity_michelson_morley;
 extern const struct api_route api_route_gr_schwarzschild;
 extern const struct api_route api_route_gr_geodesic;
 extern const struct api_route api_route_hamiltonian_flow;
 extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
+extern const struct api_route api_route_hamiltonian_phase_area;
+extern const struct api_route api_route_hamiltonian_rotating_frame;
+extern const struct api_route api_route_continuum_string;
+extern const struct api_route api_route_continuum_rod;
 
 const struct api_route *const api_routes[] = {
     &api_route_vectors,
@@ -68,6 +78,12 @@ const struct api_route *const api_routes[] = {
     &api_route_rigid_topple,
     &api_route_small_oscillations,
     &api_route_relativity_boost,
+    &api_route_relativity_particle,
+    &api_route_relativity_dot,
+    &api_route_relativity_rocket,
+    &api_route_relativity_force,
+    &api_route_relativity_lagrangian,
+    &api_route_relativity_michelson_morley,
     &api_route_relativity_velocity_addition,
     &api_route_relativity_interval,
     &api_route_relativity_worldline,
@@ -83,6 +99,10 @@ const struct api_route *const api_routes[] = {
     &api_route_hamiltonian_flow,
     &api_route_hamiltonian_liouville,
     &api_route_hamiltonian_poincare,
+    &api_route_hamiltonian_phase_area,
+    &api_route_hamiltonian_rotating_frame,
+    &api_route_continuum_string,
+    &api_route_continuum_rod,
     &api_route_trajectory,
     &api_route_compare,
     &api_route_frames_effective_force,

@@ -250,6 +250,17 @@ static inline __attribute__((always_inline)) double minkowski_square(const doubl
     return mech_csum_value(&a);
 }
 
+void mech_boost_matrix(const struct mech_boost *b, double m[4][4])
+{
+    const double n[3] = {b->direction.x, b->direction.y, b->direction.z};
+    m[0][0] = b->gamma;
+    for (int i = 0; i < 3; i++) {
+        m[0][i + 1] = m[i + 1][0] = -b->beta_gamma * n[i];
+        for (int j = 0; j < 3; j++)
+            m[i + 1][j + 1] = (i == j ? 1.0 : 0.0) + b->gamma_minus_one * (n[i] * n[j]);
+    }
+}
+
 double mech_minkowski_square(const double x[4])
 {
     return minkowski_square(x);

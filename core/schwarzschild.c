@@ -42,6 +42,7 @@ enum mech_status mech_schw_circular_orbit(double r, struct mech_schw_circular *o
                               "circular orbits need r > r_s = 2GM/c^2; got r = %.17g GM/c^2", r);
     out->rate = out->rate_deficit = out->energy = out->angular_momentum = NAN;
     out->local_speed = out->omega = out->period_t = out->period_tau = NAN;
+    out->binding_efficiency = NAN;
     if (!(r > MECH_SCHW_PHOTON_SPHERE)) {
         out->stability = MECH_SCHW_ORBIT_NONE;
         return MECH_OK;
@@ -58,6 +59,9 @@ enum mech_status mech_schw_circular_orbit(double r, struct mech_schw_circular *o
     out->omega = pow(r, -1.5); /* Omega^2 = M/r^3 (Hartle eq. 9.45) */
     out->period_t = 2.0 * M_PI * r * sqrt(r);
     out->period_tau = out->period_t * s;
+    /* 1 - E = (s - (1 - 2/r))/s with s - 1 + 2/r = (1/r)(2s - 1)/(1 + s) and
+     * 2s - 1 = 3(1 - 4/r)/(2s + 1): every factor free of cancellation. */
+    out->binding_efficiency = 3.0 * ((r - 4.0) / r) / (r * s * (1.0 + s) * (1.0 + 2.0 * s));
     return MECH_OK;
 }
 
@@ -122,6 +126,7 @@ enum mech_status mech_schw_clock_compare(double r_ref, double r_orbit, double ma
     out->first_order_gravitational = 0.5 * du_grav; /* GM/c^2 (1/R - 1/r) */
     out->first_order_velocity = 0.5 * du_vel;       /* -GM/(2 c^2 r) */
     out->first_order_net = 0.5 * du_net;            /* GM/c^2 (1/R - 3/(2r)) */
+    out->uniform_field_gravitational = ((r_orbit - r_ref) / r_ref) * m_R; /* g h/c^2 */
     if (!isfinite(out->net) || !isfinite(out->gravitational) || !isfinite(out->velocity))
         return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite clock comparison");
     return MECH_OK;

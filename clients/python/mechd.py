@@ -557,7 +557,7 @@ class _Operations:
         """
         return self._operation('/v1/small-oscillations', body, (('system', system), ('cost', cost)))
 
-    def relativity_boost(self, body: Optional[Dict[str, Any]] = None, *, vectors: Optional[Any] = None, velocity: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def relativity_boost(self, body: Optional[Dict[str, Any]] = None, *, vectors: Optional[Any] = None, velocity: Optional[Dict[str, Any]] = None, matrix: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Lorentz-boost 4-vectors, precise from 1 m/s to gamma = 1e15
 
         POST /v1/relativity/boost. The request is `body` (a dict) and/or the keyword arguments below
@@ -569,11 +569,148 @@ class _Operations:
             vectors (required): one 4-vector, or a list of 1 to 100000; the answer has the same shape
             velocity (required): a velocity as exactly one of four forms; give the one that carries the
                     precision you have (near c: rapidity, gamma or one_minus_beta)
+            matrix: true adds matrix, the 4x4 Lorentz matrix of the boost (x' = matrix x, rows and
+                    columns in the order ct, x, y, z); default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/relativity/boost', body, (('vectors', vectors), ('velocity', velocity), ('cost', cost)))
+        return self._operation('/v1/relativity/boost', body, (('vectors', vectors), ('velocity', velocity), ('matrix', matrix), ('cost', cost)))
+
+    def relativity_particle(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Any] = None, energy_unit: Optional[str] = None, beta: Optional[float] = None, speed: Optional[float] = None, gamma: Optional[float] = None, gamma_minus_one: Optional[float] = None, one_minus_beta: Optional[float] = None, rapidity: Optional[float] = None, beta_gamma: Optional[float] = None, energy: Optional[float] = None, momentum: Optional[float] = None, kinetic_energy: Optional[float] = None, proper_lifetime: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """One particle's gamma, beta, E, p, T and rapidity from any one of them, precise at 1 m/s and near c, with the non-relativistic approximations and the lifetime (c tau, gamma tau)
+
+        POST /v1/relativity/particle. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            particle (required): a particle name (GET /v1/relativity/particles) or a mass >= 0 in
+                    energy_unit/c^2
+            energy_unit: unit of the mass (unit/c^2), energies and momentum (unit/c), c = 1; default
+                    "MeV"
+            beta: speed over c, in [0, 1)
+            speed: speed in m/s, below c = 299792458
+            gamma: Lorentz factor >= 1
+            gamma_minus_one: gamma - 1 >= 0, the precise form near rest
+            one_minus_beta: 1 - beta in (0, 1], the precise form near c
+            rapidity: rapidity atanh(beta) >= 0
+            beta_gamma: beta gamma = p/(m c) >= 0
+            energy: total energy E = gamma m c^2 >= m c^2, in energy_unit
+            momentum: momentum |p| >= 0, in energy_unit/c
+            kinetic_energy: kinetic energy T = E - m c^2 >= 0, in energy_unit
+            proper_lifetime: mean lifetime tau in the rest frame, s (> 0): adds lifetime {proper, c_tau,
+                    lab, decay_length}
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/particle', body, (('particle', particle), ('energy_unit', energy_unit), ('beta', beta), ('speed', speed), ('gamma', gamma), ('gamma_minus_one', gamma_minus_one), ('one_minus_beta', one_minus_beta), ('rapidity', rapidity), ('beta_gamma', beta_gamma), ('energy', energy), ('momentum', momentum), ('kinetic_energy', kinetic_energy), ('proper_lifetime', proper_lifetime), ('cost', cost)))
+
+    def relativity_dot(self, body: Optional[Dict[str, Any]] = None, *, a: Optional[List[float]] = None, b: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Minkowski dot product of two 4-vectors, their squares and kinds, and the relative gamma of two timelike ones
+
+        POST /v1/relativity/dot. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            a (required): a 4-vector [x0, x1, x2, x3], x0 = ct or E/c, any one unit, |x_i| <= 1e150
+            b (required): a second 4-vector in the same metric (units multiply)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/dot', body, (('a', a), ('b', b), ('cost', cost)))
+
+    def relativity_rocket(self, body: Optional[Dict[str, Any]] = None, *, beta: Optional[float] = None, speed: Optional[float] = None, gamma: Optional[float] = None, gamma_minus_one: Optional[float] = None, one_minus_beta: Optional[float] = None, rapidity: Optional[float] = None, beta_gamma: Optional[float] = None, mass_ratio: Optional[float] = None, exhaust_beta: Optional[float] = None, exhaust_speed: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The relativistic rocket: the mass ratio for a final speed or rapidity (or the speed a mass ratio gives), any exhaust speed, beside Tsiolkovsky's
+
+        POST /v1/relativity/rocket. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            beta: final speed over c, in [0, 1)
+            speed: final speed, m/s
+            gamma: final Lorentz factor
+            gamma_minus_one: final gamma - 1
+            one_minus_beta: final 1 - beta, in (0, 1]
+            rapidity: final rapidity
+            beta_gamma: final beta gamma (proper velocity over c)
+            mass_ratio: m_initial/m_final >= 1: answers the final speed
+            exhaust_beta: exhaust speed over c relative to the rocket, (0, 1]; default 1 (a photon
+                    rocket)
+            exhaust_speed: exhaust speed relative to the rocket, m/s (instead of exhaust_beta)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/rocket', body, (('beta', beta), ('speed', speed), ('gamma', gamma), ('gamma_minus_one', gamma_minus_one), ('one_minus_beta', one_minus_beta), ('rapidity', rapidity), ('beta_gamma', beta_gamma), ('mass_ratio', mass_ratio), ('exhaust_beta', exhaust_beta), ('exhaust_speed', exhaust_speed), ('cost', cost)))
+
+    def relativity_force(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, velocity: Optional[Dict[str, Any]] = None, acceleration: Optional[List[float]] = None, force: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """F = dp/dt split along and across v (gamma^3 m a and gamma m a), either way round, with the power and the 4-force
+
+        POST /v1/relativity/force. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): rest mass m, kg
+            velocity (required): a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            acceleration: the acceleration dv/dt, m/s^2 (or give force)
+            force: the force F = dp/dt, N (or give acceleration)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/force', body, (('mass', mass), ('velocity', velocity), ('acceleration', acceleration), ('force', force), ('cost', cost)))
+
+    def relativity_lagrangian(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, charge: Optional[float] = None, velocity: Optional[Dict[str, Any]] = None, scalar_potential: Optional[float] = None, vector_potential: Optional[List[float]] = None, fields: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The relativistic Lagrangian, canonical momentum and Hamiltonian of a charged particle in given potentials or uniform fields
+
+        POST /v1/relativity/lagrangian. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): rest mass m, kg
+            charge: charge q, C; default 0
+            velocity (required): a velocity as exactly one of four forms; give the one that carries the
+                    precision you have (near c: rapidity, gamma or one_minus_beta)
+            scalar_potential: phi at the particle, V; default 0
+            vector_potential: A at the particle, T m; default 0
+            fields: uniform fields instead of potentials: phi = -E.r, A = (1/2) B x r at position r
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/lagrangian', body, (('mass', mass), ('charge', charge), ('velocity', velocity), ('scalar_potential', scalar_potential), ('vector_potential', vector_potential), ('fields', fields), ('cost', cost)))
+
+    def relativity_michelson_morley(self, body: Optional[Dict[str, Any]] = None, *, arm_length: Optional[float] = None, speed: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Michelson-Morley: the ether's predicted path difference and fringe shift (exact beside the notes' beta^2 L) and the null result with the Lorentz contraction
+
+        POST /v1/relativity/michelson-morley. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            arm_length (required): L, m (the notes: 11 m)
+            speed: the apparatus' speed through the ether, m/s (the Earth's orbital speed ~3e4); default
+                    30000.0
+            wavelength: light's wavelength, m: adds the fringe shift on a 90 degree rotation
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/michelson-morley', body, (('arm_length', arm_length), ('speed', speed), ('wavelength', wavelength), ('cost', cost)))
 
     def relativity_velocity_addition(self, body: Optional[Dict[str, Any]] = None, *, velocity: Optional[Any] = None, frame_velocity: Optional[Dict[str, Any]] = None, compose: Optional[List[Dict[str, Any]]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic velocity addition in any directions, composition of boosts, and the Wigner (Thomas) rotation
@@ -615,7 +752,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/interval', body, (('events', events), ('units', units), ('cost', cost)))
 
-    def relativity_worldline(self, body: Optional[Dict[str, Any]] = None, *, legs: Optional[List[Any]] = None, units: Optional[str] = None, tick_interval: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def relativity_worldline(self, body: Optional[Dict[str, Any]] = None, *, legs: Optional[List[Any]] = None, units: Optional[str] = None, tick_interval: Optional[float] = None, telescope_home_times: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """A trip as legs of constant velocity or constant proper acceleration: proper times, the stay-at-home time, and the Doppler ticks each twin sees
 
         POST /v1/relativity/worldline. The request is `body` (a dict) and/or the keyword arguments below
@@ -629,11 +766,13 @@ class _Operations:
                     lengths in light-years, c = 1; default "seconds"
             tick_interval: each twin's clock ticks once per this proper time (default 1 s or 1 year);
                     default 1.0
+            telescope_home_times: home times at which the stay-at-home twin reads the traveller's clock
+                    through a telescope (the light arriving then); up to the time the trip's end is seen
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('cost', cost)))
+        return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('telescope_home_times', telescope_home_times), ('cost', cost)))
 
     def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with aberration
@@ -782,7 +921,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/kinematics/collision', body, (('energy_unit', energy_unit), ('beam', beam), ('target', target), ('crossing_angle', crossing_angle), ('crossing_angle_deg', crossing_angle_deg), ('sqrt_s', sqrt_s), ('final_state', final_state), ('cost', cost)))
 
-    def gr_schwarzschild(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, r: Optional[float] = None, reference_r: Optional[float] = None, effective_potential: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_schwarzschild(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, r: Optional[float] = None, infall_from: Optional[float] = None, reference_r: Optional[float] = None, effective_potential: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Schwarzschild radius, clock rates and red shift, circular orbits and their stability, ISCO, photon sphere, effective potentials; GPS-style clock comparison
 
         POST /v1/gr/schwarzschild. The request is `body` (a dict) and/or the keyword arguments below
@@ -800,6 +939,8 @@ class _Operations:
                     GM/c, speeds in c.; default "SI"
             r: radius (Schwarzschild r: circumference / 2 pi) for the clocks and the circular orbit; >
                     r_s
+            infall_from: radius of rest from which a body falls radially: adds radial_infall, the proper
+                    times to the horizon and to r = 0; > r_s
             reference_r: radius of a static reference clock (e.g. the ground: 6371000 m mean or 6378137
                     m equatorial for the Earth): compares it with a clock on a circular orbit at r
                     (GPS). Needs r.
@@ -808,7 +949,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
+        return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('infall_from', infall_from), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
 
     def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
@@ -828,7 +969,8 @@ class _Operations:
                     GM/c, speeds in c.; default "SI"
             kind (required): timelike: a massive particle (proper time tau); null: light (affine
                     parameter lambda, normalised to dt/dlambda -> 1 far away)
-            r0: start radius (not with the orbit forms, which start at periapsis)
+            r0: start radius (not with the orbit forms, which start at periapsis); for light given by
+                    impact_parameter, default 100 b (at least 1000 GM/c^2), a ray from far away
             phi0: rad; default 0.0
             initial (required): one of: conserved energy and angular momentum (timelike); the velocity
                     measured by a static observer at r0; an impact parameter (null); the turning points
@@ -932,6 +1074,91 @@ class _Operations:
                     answers; in a batch, false also applies to every item; default true
         """
         return self._operation('/v1/hamiltonian/poincare', body, (('system', system), ('section', section), ('orbits', orbits), ('t_max', t_max), ('max_crossings', max_crossings), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
+
+    def hamiltonian_phase_area(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[str] = None, mass: Optional[float] = None, omega: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, energy: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Phase-space area enclosed by an energy contour of the oscillator or the pendulum, the action, and the period as dA/dE
+
+        POST /v1/hamiltonian/phase-area. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): oscillator: H = p^2/2m + m omega^2 q^2/2; pendulum: H = p^2/(2 m l^2) + m
+                    g l (1 - cos theta)
+            mass (required): mass m, kg
+            omega: oscillator's angular frequency, rad/s (oscillator only)
+            length: pendulum length l, m (pendulum only)
+            g: gravity, m/s^2 (pendulum only; absent: 9.80665, not a schema default because an
+                    oscillator must not receive it)
+            energy (required): energy above the minimum of the potential, J
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/phase-area', body, (('system', system), ('mass', mass), ('omega', omega), ('length', length), ('g', g), ('energy', energy), ('cost', cost)))
+
+    def hamiltonian_rotating_frame(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, omega: Optional[List[float]] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, potential_energy: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Lagrangian, canonical momentum m(v + omega x r) and Hamiltonian in a rotating frame, beside the inertial energy (H_rot = E - omega.L)
+
+        POST /v1/hamiltonian/rotating-frame. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): mass m, kg
+            omega (required): the frame's constant angular velocity, rad/s
+            position (required): r in the rotating frame (origin on the axis), m
+            velocity (required): v = dr/dt measured in the rotating frame, m/s
+            potential_energy: V at r, J; default 0.0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/rotating-frame', body, (('mass', mass), ('omega', omega), ('position', position), ('velocity', velocity), ('potential_energy', potential_energy), ('cost', cost)))
+
+    def continuum_string(self, body: Optional[Dict[str, Any]] = None, *, tension: Optional[float] = None, linear_density: Optional[float] = None, mass: Optional[float] = None, length: Optional[float] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Continuum mechanics: transverse waves on a string with fixed ends — wave speed and normal modes
+
+        POST /v1/continuum/string. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            tension (required): tension T, N
+            linear_density: mass per length mu, kg/m (or give mass)
+            mass: the string's mass, kg: mu = mass/length (or give linear_density)
+            length (required): length L between the fixed ends, m
+            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5.0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/continuum/string', body, (('tension', tension), ('linear_density', linear_density), ('mass', mass), ('length', length), ('modes', modes), ('cost', cost)))
+
+    def continuum_rod(self, body: Optional[Dict[str, Any]] = None, *, length: Optional[float] = None, density: Optional[float] = None, youngs_modulus: Optional[float] = None, section: Optional[Any] = None, ends: Optional[str] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Continuum mechanics: axial and bending waves of a rod — speeds, the dispersion of bending waves and the normal modes free, clamped, cantilevered or pinned
+
+        POST /v1/continuum/rod. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            length (required): length L, m
+            density (required): density rho, kg/m^3
+            youngs_modulus (required): Young's modulus E, Pa
+            section (required): the cross-section: a solid circle, a rectangle (bending across its
+                    height), or its area and second moment of area
+            ends: end conditions (clamped-free: a cantilever); default "clamped-free"
+            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5.0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('modes', modes), ('cost', cost)))
 
     def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
@@ -1244,6 +1471,12 @@ OPERATIONS = {
     'rigid_topple': '/v1/rigid/topple',
     'small_oscillations': '/v1/small-oscillations',
     'relativity_boost': '/v1/relativity/boost',
+    'relativity_particle': '/v1/relativity/particle',
+    'relativity_dot': '/v1/relativity/dot',
+    'relativity_rocket': '/v1/relativity/rocket',
+    'relativity_force': '/v1/relativity/force',
+    'relativity_lagrangian': '/v1/relativity/lagrangian',
+    'relativity_michelson_morley': '/v1/relativity/michelson-morley',
     'relativity_velocity_addition': '/v1/relativity/velocity-addition',
     'relativity_interval': '/v1/relativity/interval',
     'relativity_worldline': '/v1/relativity/worldline',
@@ -1258,6 +1491,10 @@ OPERATIONS = {
     'hamiltonian_flow': '/v1/hamiltonian/flow',
     'hamiltonian_liouville': '/v1/hamiltonian/liouville',
     'hamiltonian_poincare': '/v1/hamiltonian/poincare',
+    'hamiltonian_phase_area': '/v1/hamiltonian/phase-area',
+    'hamiltonian_rotating_frame': '/v1/hamiltonian/rotating-frame',
+    'continuum_string': '/v1/continuum/string',
+    'continuum_rod': '/v1/continuum/rod',
     'trajectory': '/v1/trajectory',
     'compare': '/v1/compare',
     'frames_effective_force': '/v1/frames/effective-force',

@@ -541,6 +541,51 @@ static void test_batch_equals_single(void)
     CHECK_EQ_INT(mech_boost_apply_batch(&b, x, out, NULL, NULL, 257, &small, NULL), MECH_EBUDGET);
 }
 
+/* The Lorentz matrix (notes §3 "A Boost in an Arbitrary Direction"):
+ * β = (0.6, 0, 0): [[1.25, -0.75, 0, 0], [-0.75, 1.25, 0, 0], I] exactly;
+ * an oblique β = (0.3, -0.4, 0.5): Λ x equals mech_boost_apply's x', Λ
+ * preserves the metric (Λᵀ η Λ = η) and Λ(β) Λ(−β) = I to round-off; at
+ * 1 m/s, Λ01 = −βγ = −3.3356409519815205e-9 (decimal) to round-off. */
+static void test_matrix(void)
+{
+    struct mech_boost b;
+    double m[4][4];
+    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(0.6, 0, 0), &b, NULL), MECH_OK);
+    mech_boost_matrix(&b, m);
+    const double want[4][4] = {{1.25, -0.75, 0, 0}, {-0.75, 1.25, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) CHECK_CLOSE(m[i][j], want[i][j], 4e-16, 1e-16);
+
+    struct mech_boost o, inv;
+    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(0.3, -0.4, 0.5), &o, NULL), MECH_OK);
+    inv = mech_boost_inverse(&o);
+    double L[4][4], Li[4][4];
+    mech_boost_matrix(&o, L);
+    mech_boost_matrix(&inv, Li);
+    const double x[4] = {2.0, -1.0, 0.5, 3.0};
+    double xp[4];
+    CHECK_EQ_INT(mech_boost_apply(&o, x, xp, NULL, NULL, NULL), MECH_OK);
+    const double eta[4] = {-1, 1, 1, 1};
+    for (int i = 0; i < 4; i++) {
+        double y = 0;
+        for (int k = 0; k < 4; k++) y += L[i][k] * x[k];
+        CHECK_CLOSE(y, xp[i], 0, 1e-14);
+        for (int j = 0; j < 4; j++) {
+            double g = 0, id = 0;
+            for (int k = 0; k < 4; k++) {
+                g += L[k][i] * eta[k] * L[k][j];
+                id += L[i][k] * Li[k][j];
+            }
+            CHECK_CLOSE(g, i == j ? eta[i] : 0.0, 0, 1e-14);
+            CHECK_CLOSE(id, i == j ? 1.0 : 0.0, 0, 1e-14);
+        }
+    }
+    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(1.0 / 299792458.0, 0, 0), &b, NULL), MECH_OK);
+    mech_boost_matrix(&b, m);
+    CHECK_CLOSE(b.gamma_minus_one, 5.5632502802680922e-18, 1e-15, 0);
+    CHECK_CLOSE(m[0][1], -3.3356409519815205e-09, 1e-15, 0);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -557,6 +602,7 @@ int main(void)
     test_forms_agree();
     test_errors();
     test_batch_equals_single();
+    test_matrix();
     printf("worst: gamma-1/components at 1 m/s %.3g rel; light-like at eta<=35 %.3g rel; "
            "|inv_after - inv_before| %.3g of max|x|^2; components vs long double %.3g of "
            "max component\n",

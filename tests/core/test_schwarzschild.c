@@ -15,9 +15,46 @@
 #define M_PI 3.14159265358979323846
 #endif
 
+/* Binding efficiency 1 - E of circular orbits (50-digit Decimal of
+ * 1 - (1 - 2/r)/sqrt(1 - 3/r)): r = 1e6: 4.99999624998312495e-7 (the direct
+ * formula in doubles keeps only ~10 digits here), r = 10: 0.0438171125324850880,
+ * r = 4.5: 0.0377495513506237258, r = 3.5: -0.133893419027681682 (unbound),
+ * the ISCO: 1 - sqrt(8/9) = 0.0571909584179366341, and 0 at r = 4; the uniform
+ * field red shift g h / c^2 = m (r - R)/R^2 beside the exact gravitational part. */
+static void test_binding_and_uniform_field(void)
+{
+    struct mech_schw_circular co;
+    const double r[5] = {1e6, 10, 4.5, 3.5, 6};
+    const double want[5] = {4.9999962499831249e-7, 0.043817112532485088, 0.037749551350623726,
+                            -0.13389341902768168, 0.057190958417936634};
+    for (int i = 0; i < 5; i++) {
+        CHECK_EQ_INT(mech_schw_circular_orbit(r[i], &co, NULL), MECH_OK);
+        CHECK_CLOSE(co.binding_efficiency, want[i], 2e-15, 0);
+    }
+    CHECK_CLOSE(MECH_SCHW_ISCO_BINDING_EFFICIENCY, 1.0 / (9.0 + 6.0 * sqrt(2.0)), 2e-16, 0);
+    CHECK_EQ_INT(mech_schw_circular_orbit(4.0, &co, NULL), MECH_OK);
+    CHECK_CLOSE(co.binding_efficiency, 0.0, 0, 0);
+    /* Far out 1 - E -> 1/(2r) (Newton: binding energy GMm/(2r)). */
+    CHECK_EQ_INT(mech_schw_circular_orbit(1e200, &co, NULL), MECH_OK);
+    CHECK_CLOSE(co.binding_efficiency, 0.5e-200, 1e-15, 0);
+
+    /* Pound-Rebka: a 22.5 m tower on the Earth, R = 6371000 m, GM/c^2 =
+     * 3.986004418e14/299792458^2 m: g h/c^2 = m h/R^2 = 2.4570e-15; the exact
+     * gravitational part differs from it by ~h/R = 3.5e-6 relative. The orbit
+     * radius must allow a circular orbit, so compare at r = R + 22.5 m with the
+     * static part only (gravitational). */
+    struct mech_schw_clock_compare cc;
+    const double m = 3.986004418e14 / (299792458.0 * 299792458.0);
+    CHECK_EQ_INT(mech_schw_clock_compare(6371000.0, 6371022.5, m, &cc, NULL), MECH_OK);
+    CHECK_CLOSE(cc.uniform_field_gravitational, m * 22.5 / (6371000.0 * 6371000.0), 4e-16, 0);
+    CHECK_CLOSE(cc.uniform_field_gravitational, cc.gravitational, 1e-5, 0);
+    CHECK(fabs(cc.uniform_field_gravitational / cc.gravitational - 1) > 1e-7); /* an approximation */
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
+    test_binding_and_uniform_field();
     struct mech_error e;
     struct mech_schw_static s;
     struct mech_schw_circular co;

@@ -86,6 +86,13 @@ enum mech_status mech_boost_from_gamma_minus_one(double gamma_minus_one,
                                                  struct mech_vec3 direction,
                                                  struct mech_boost *out, struct mech_error *err);
 
+/* The boost's 4×4 matrix Λ (x' = Λ x, notes §3 "A Boost in an Arbitrary
+ * Direction"): Λ00 = γ, Λ0i = Λi0 = −βγ n_i, Λij = δij + (γ − 1) n_i n_j,
+ * from the boost's exact γ − 1 and βγ (so Λ − I is right to round-off at
+ * 1 m/s). Row-major, caller-owned m[4][4]. Symmetric; Λ(β)Λ(−β) = I and
+ * Λᵀ diag(−1,1,1,1) Λ = diag(−1,1,1,1) to round-off of γ². Cannot fail. */
+void mech_boost_matrix(const struct mech_boost *b, double m[4][4]);
+
 /* The inverse boost (same speed, opposite direction). Cannot fail. */
 struct mech_boost mech_boost_inverse(const struct mech_boost *b);
 

@@ -59,7 +59,15 @@ struct mech_schw_circular {
     double omega;            /* dphi/dt = r^(-3/2) (Kepler's law holds in t), c^3/GM */
     double period_t;         /* 2 pi r^(3/2), GM/c^3 */
     double period_tau;       /* period_t * rate */
+    double binding_efficiency; /* 1 - E/(m c^2): the fraction of the rest energy released
+                                  spiralling in from infinity, 3(r - 4)/(r^2 s (1 + s)(1 + 2s)),
+                                  s = sqrt(1 - 3/r), without cancellation: 1/(2r) far out,
+                                  1 - sqrt(8/9) = 5.72 % at the ISCO, 0 at r = 4 (marginally
+                                  bound), negative inside (E > 1: unbound) */
 };
+
+/* 1 - E of the ISCO, 1 - sqrt(8/9) = 1/(9 + 6 sqrt 2) (Hartle §9.3, the accretion efficiency). */
+#define MECH_SCHW_ISCO_BINDING_EFFICIENCY 0.057190958417936634
 
 /* Circular geodesic at r (GM/c^2). Statuses: MECH_OK (also for r <= 3, then
  * stability NONE); MECH_EDOMAIN (param "r") for r <= 2 or non-finite. */
@@ -96,6 +104,10 @@ int mech_schw_veff_extrema(double L, double *r_unstable, double *r_stable);
 struct mech_schw_clock_compare {
     double gravitational, velocity, net;
     double first_order_gravitational, first_order_velocity, first_order_net;
+    double uniform_field_gravitational; /* the notes' uniform-field red shift g h / c^2 with
+                                           g = GM/R^2 at the reference and h = r - R:
+                                           m (r - R)/R^2 (an approximation: the field's fall-off
+                                           over h is left out, relative error ~h/R) */
 };
 
 /* r_ref and r_orbit in any length unit, mass_length = GM/c^2 in that unit (1 for

@@ -1,0 +1,126 @@
+/* ep_relativity_lagrangian.c — POST /v1/relativity/lagrangian: the
+ * relativistic Lagrangian, canonical momentum and Hamiltonian of a charged
+ * particle in given potentials or uniform fields (notes §3, L = −mc²/γ − V,
+ * H = E + V). JSON <-> core only; the physics is core/charged_lagrangian.c. */
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/charged_lagrangian.h"
+#include "velocity_request.h"
+
+/* clang-format off */
+#define L_VEC(desc)                                                                                \
+    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
+    "\"minimum\":-1e100,\"maximum\":1e100},\"description\":\"" desc "\"}"
+#define L_NUM(desc)                                                                                \
+    "{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100,\"description\":\"" desc "\"}"
+static const char schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"mass\",\"velocity\"],"
+    "\"properties\":{"
+    "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e60,\"description\":"
+    "\"rest mass m, kg\"},"
+    "\"charge\":" L_NUM("charge q, C; default 0") ","
+    "\"velocity\":" API_VELOCITY_SCHEMA ","
+    "\"scalar_potential\":" L_NUM("phi at the particle, V; default 0") ","
+    "\"vector_potential\":" L_VEC("A at the particle, T m; default 0") ","
+    "\"fields\":{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"position\"],"
+    "\"description\":\"uniform fields instead of potentials: phi = -E.r, A = (1/2) B x r at "
+    "position r\",\"properties\":{"
+    "\"E\":" L_VEC("electric field, V/m; default 0") ","
+    "\"B\":" L_VEC("magnetic field, T; default 0") ","
+    "\"position\":" L_VEC("the particle's position r, m") "}}"
+    "}}";
+/* clang-format on */
+
+static const char description[] =
+    "The relativistic Lagrangian and Hamiltonian of a particle of mass m and charge q moving "
+    "with a given velocity (the shared forms) in electromagnetic potentials phi, A (notes §3: "
+    "L = -m c^2/gamma - V, p = gamma m v, H = E + V; with fields L = -m c^2/gamma + q A.v - q "
+    "phi). Give scalar_potential and vector_potential at the particle, or fields {E, B, "
+    "position} (uniform fields in the gauge phi = -E.r, A = (1/2) B x r; then also "
+    "lorentz_force = q(E + v x B)). Answers lagrangian, lagrangian_plus_rest_energy (= m c^2 "
+    "(gamma - 1)/gamma + q A.v - q phi, precise at low speed), kinetic_momentum gamma m v, "
+    "canonical_momentum P = dL/dv = gamma m v + q A, hamiltonian H = P.v - L = gamma m c^2 + q "
+    "phi and hamiltonian_minus_rest_energy, energy gamma m c^2, potential_energy q phi, and "
+    "checks: hamiltonian_from_momentum = sqrt(m^2 c^4 + |P - qA|^2 c^2) + q phi (H as a "
+    "function of P) and legendre_residual = (P.v - L) - H (0 to round-off). approximations."
+    "lagrangian_newtonian: the notes' non-relativistic L + m c^2 = (1/2) m v^2 + q A.v - q "
+    "phi, labelled, beside lagrangian_plus_rest_energy. Units SI.";
+
+static const char example[] =
+    "{\"mass\": 9.1093837015e-31, \"charge\": -1.602176634e-19, \"velocity\": {\"beta\": [0.6, 0, 0]}, "
+    "\"fields\": {\"B\": [0, 0, 1], \"position\": [0, 0.001, 0]}}";
+
+static json_t *lagrangian_op(struct api_call *c, const json_t *body)
+{
+    const json_t *fj = json_object_get(body, "fields");
+    if (fj && (json_object_get(body, "scalar_potential") || json_object_get(body, "vector_potential"))) {
+        api_call_invalid(c, "/fields", "give potentials or uniform fields, not both");
+        return NULL;
+    }
+    struct mech_boost b;
+    if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
+    const double m = api_number(body, "mass", 1), q = api_number(body, "charge", 0);
+    const struct mech_vec3 zero = mech_vec3_make(0, 0, 0);
+    double phi = api_number(body, "scalar_potential", 0);
+    struct mech_vec3 a = api_vec3_member(body, "vector_potential", zero);
+    struct mech_vec3 ef = zero, bf = zero;
+    if (fj) {
+        ef = api_vec3_member(fj, "E", zero);
+        bf = api_vec3_member(fj, "B", zero);
+        mech_charged_uniform_potentials(ef, bf, api_vec3_member(fj, "position", zero), &phi, &a);
+    }
+    struct mech_charged_state s;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_charged_state_compute(m, q, &b, phi, a, &s, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    json_t *out = json_object(), *ap = json_object(), *ln = json_object();
+    if (!out || !ap || !ln) {
+        json_decref(out), json_decref(ap), json_decref(ln);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    json_object_set_new_nocheck(out, "gamma", api_real(c, b.gamma));
+    json_object_set_new_nocheck(out, "scalar_potential", api_real(c, phi));
+    json_object_set_new_nocheck(out, "vector_potential", api_vec3(c, a));
+    json_object_set_new_nocheck(out, "lagrangian", api_real(c, s.lagrangian));
+    json_object_set_new_nocheck(out, "lagrangian_plus_rest_energy",
+                                api_real(c, s.lagrangian_plus_rest));
+    json_object_set_new_nocheck(out, "kinetic_momentum", api_vec3(c, s.kinetic_momentum));
+    json_object_set_new_nocheck(out, "canonical_momentum", api_vec3(c, s.canonical_momentum));
+    json_object_set_new_nocheck(out, "hamiltonian", api_real(c, s.hamiltonian));
+    json_object_set_new_nocheck(out, "hamiltonian_minus_rest_energy",
+                                api_real(c, s.hamiltonian_minus_rest));
+    json_object_set_new_nocheck(out, "energy", api_real(c, s.energy));
+    json_object_set_new_nocheck(out, "potential_energy", api_real(c, s.potential_energy));
+    json_object_set_new_nocheck(out, "hamiltonian_from_momentum",
+                                api_real(c, s.hamiltonian_from_momentum));
+    json_object_set_new_nocheck(out, "legendre_residual", api_real(c, s.legendre_residual));
+    if (fj) {
+        const struct mech_vec3 v = mech_vec3_scale(b.beta_vec, MECH_CHARGED_C);
+        const struct mech_vec3 f = mech_vec3_scale(mech_vec3_add(ef, mech_vec3_cross(v, bf)), q);
+        json_object_set_new_nocheck(out, "lorentz_force", api_vec3(c, f));
+    }
+    json_object_set_new_nocheck(ln, "value", api_real(c, s.lagrangian_newtonian_plus_rest));
+    json_object_set_new_nocheck(ln, "exact", api_real(c, s.lagrangian_plus_rest));
+    json_object_set_new_nocheck(
+        ln, "label",
+        json_string("approximation: the notes' non-relativistic L + m c^2 = (1/2) m v^2 + q A.v "
+                    "- q phi (L = T - V), beside the exact lagrangian_plus_rest_energy"));
+    json_object_set_new_nocheck(ap, "lagrangian_newtonian", ln);
+    json_object_set_new_nocheck(out, "approximations", ap);
+    return out;
+}
+
+const struct api_route api_route_relativity_lagrangian = {
+    "POST",
+    "/v1/relativity/lagrangian",
+    "The relativistic Lagrangian, canonical momentum and Hamiltonian of a charged particle in "
+    "given potentials or uniform fields",
+    description,
+    schema,
+    example,
+    lagrangian_op,
+    0,
+    1, /* quick */
+};

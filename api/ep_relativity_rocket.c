@@ -1,0 +1,154 @@
+/* ep_relativity_rocket.c — POST /v1/relativity/rocket: the relativistic
+ * rocket's mass ratio for a final speed or rapidity (or the speed a mass
+ * ratio gives), beside Tsiolkovsky's, labelled. JSON <-> core only; the
+ * physics is core/rocket.c (the speed forms go through core/particle_state.c). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/particle_state.h"
+#include "mech/rocket.h"
+
+static const struct {
+    const char *key;
+    enum mech_particle_given given;
+} forms[] = {
+    {"beta", MECH_PARTICLE_GIVEN_BETA},
+    {"speed", MECH_PARTICLE_GIVEN_SPEED},
+    {"gamma", MECH_PARTICLE_GIVEN_GAMMA},
+    {"gamma_minus_one", MECH_PARTICLE_GIVEN_GAMMA_MINUS_ONE},
+    {"one_minus_beta", MECH_PARTICLE_GIVEN_ONE_MINUS_BETA},
+    {"rapidity", MECH_PARTICLE_GIVEN_RAPIDITY},
+    {"beta_gamma", MECH_PARTICLE_GIVEN_BETA_GAMMA},
+};
+#define N_FORMS (sizeof forms / sizeof forms[0])
+
+/* clang-format off */
+#define R_NUM(lo, hi, desc)                                                                        \
+    "{\"type\":\"number\",\"minimum\":" #lo ",\"maximum\":" #hi ",\"description\":\"" desc "\"}"
+static const char schema[] =
+    "{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
+    "\"beta\":" R_NUM(0, 1, "final speed over c, in [0, 1)") ","
+    "\"speed\":" R_NUM(0, 299792458, "final speed, m/s") ","
+    "\"gamma\":" R_NUM(1, 1e151, "final Lorentz factor") ","
+    "\"gamma_minus_one\":" R_NUM(0, 1e151, "final gamma - 1") ","
+    "\"one_minus_beta\":" R_NUM(0, 1, "final 1 - beta, in (0, 1]") ","
+    "\"rapidity\":" R_NUM(0, 350, "final rapidity") ","
+    "\"beta_gamma\":" R_NUM(0, 1e151, "final beta gamma (proper velocity over c)") ","
+    "\"mass_ratio\":" R_NUM(1, 1e300, "m_initial/m_final >= 1: answers the final speed") ","
+    "\"exhaust_beta\":" R_NUM(0, 1, "exhaust speed over c relative to the rocket, (0, 1]; "
+                             "default 1 (a photon rocket)") ","
+    "\"exhaust_speed\":" R_NUM(0, 299792458, "exhaust speed relative to the rocket, m/s "
+                              "(instead of exhaust_beta)")
+    "}}";
+/* clang-format on */
+
+static const char description[] =
+    "The relativistic rocket (Ackeret 1946; Rindler §6.6): starting from rest and ejecting "
+    "exhaust at speed u = exhaust_beta c relative to itself (default 1: a photon rocket; or "
+    "exhaust_speed in m/s), it reaches rapidity eta when its rest mass has fallen by mass_ratio "
+    "= m_i/m_f = exp(eta/exhaust_beta) = ((1 + beta)/(1 - beta))^(1/(2 exhaust_beta)) (photon "
+    "rocket: gamma (1 + beta)). Give the final speed as exactly one of beta, speed, gamma, "
+    "gamma_minus_one, one_minus_beta, rapidity, beta_gamma, or give mass_ratio to get the "
+    "final speed. Answers final {beta, one_minus_beta, gamma, gamma_minus_one, rapidity, "
+    "beta_gamma, speed (m/s)}, exhaust_beta, mass_ratio (null beyond 1e308), log_mass_ratio, "
+    "fuel_fraction = 1 - m_f/m_i (to round-off at 1 m/s) and newtonian: Tsiolkovsky's "
+    "m_i/m_f = exp(v/u) with its relative_error = exp(-(eta - beta)/exhaust_beta) - 1 (eta - "
+    "beta summed as a series, so it keeps its digits at 1 m/s), labelled as the "
+    "approximation it is.";
+
+static const char example[] = "{\"beta\": 0.6}";
+
+static json_t *real_or_null(struct api_call *c, double x)
+{
+    return isfinite(x) ? api_real(c, x) : json_null();
+}
+
+static json_t *rocket_op(struct api_call *c, const json_t *body)
+{
+    const json_t *eb = json_object_get(body, "exhaust_beta"), *es = json_object_get(body, "exhaust_speed");
+    if (eb && es) {
+        api_call_invalid(c, "/exhaust_speed", "give exhaust_beta or exhaust_speed, not both");
+        return NULL;
+    }
+    const double be = eb ? json_number_value(eb) : es ? json_number_value(es) / MECH_PARTICLE_STATE_C : 1.0;
+    size_t which = N_FORMS;
+    const json_t *mr = json_object_get(body, "mass_ratio");
+    for (size_t i = 0; i < N_FORMS; i++) {
+        if (!json_object_get(body, forms[i].key)) continue;
+        if (which != N_FORMS || mr) {
+            char ptr[64];
+            snprintf(ptr, sizeof ptr, "/%s", forms[i].key);
+            api_call_invalid(c, ptr, "give the final speed in exactly one form, or a "
+                                     "mass_ratio (%s was given too)",
+                             mr ? "mass_ratio" : forms[which].key);
+            return NULL;
+        }
+        which = i;
+    }
+    if (which == N_FORMS && !mr) {
+        api_call_invalid(c, "", "give the final speed (beta, speed, gamma, gamma_minus_one, "
+                                "one_minus_beta, rapidity or beta_gamma) or a mass_ratio");
+        return NULL;
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st;
+    struct mech_particle_state s;
+    if (mr) {
+        double eta;
+        st = mech_rocket_rapidity(json_number_value(mr), be, &eta, &e);
+        if (st == MECH_OK) st = mech_particle_state_from(1.0, MECH_PARTICLE_GIVEN_RAPIDITY, eta, &s, &e);
+        if (st != MECH_OK && !strcmp(e.param, "rapidity")) snprintf(e.param, sizeof e.param, "mass_ratio");
+    } else {
+        st = mech_particle_state_from(1.0, forms[which].given, api_number(body, forms[which].key, 0),
+                                      &s, &e);
+    }
+    struct mech_rocket r;
+    if (st == MECH_OK) st = mech_rocket_for_rapidity(s.rapidity, s.beta, be, &r, &e);
+    if (st != MECH_OK) {
+        if (es && !strcmp(e.param, "exhaust_beta")) snprintf(e.param, sizeof e.param, "exhaust_speed");
+        return api_call_fail_core(c, st, &e, "");
+    }
+    json_t *out = json_object(), *fin = json_object(), *nw = json_object();
+    if (!out || !fin || !nw) {
+        json_decref(out), json_decref(fin), json_decref(nw);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    json_object_set_new_nocheck(fin, "beta", api_real(c, s.beta));
+    json_object_set_new_nocheck(fin, "one_minus_beta", api_real(c, s.one_minus_beta));
+    json_object_set_new_nocheck(fin, "gamma", api_real(c, s.gamma));
+    json_object_set_new_nocheck(fin, "gamma_minus_one", api_real(c, s.gamma_minus_one));
+    json_object_set_new_nocheck(fin, "rapidity", api_real(c, s.rapidity));
+    json_object_set_new_nocheck(fin, "beta_gamma", api_real(c, s.beta_gamma));
+    json_object_set_new_nocheck(fin, "speed", api_real(c, s.speed));
+    json_object_set_new_nocheck(out, "final", fin);
+    json_object_set_new_nocheck(out, "exhaust_beta", api_real(c, be));
+    json_object_set_new_nocheck(out, "mass_ratio", real_or_null(c, r.mass_ratio));
+    json_object_set_new_nocheck(out, "log_mass_ratio", api_real(c, r.log_mass_ratio));
+    json_object_set_new_nocheck(out, "fuel_fraction", api_real(c, r.fuel_fraction));
+    json_object_set_new_nocheck(nw, "formula", json_string("m_i/m_f = exp(v/u) (Tsiolkovsky)"));
+    json_object_set_new_nocheck(nw, "mass_ratio", real_or_null(c, r.newtonian_mass_ratio));
+    json_object_set_new_nocheck(nw, "log_mass_ratio", api_real(c, r.newtonian_log_mass_ratio));
+    json_object_set_new_nocheck(nw, "relative_error", api_real(c, r.newtonian_rel_error));
+    json_object_set_new_nocheck(
+        nw, "label",
+        json_string("approximation: the non-relativistic rocket equation, beside the exact "
+                    "mass_ratio; it underestimates the fuel needed"));
+    json_object_set_new_nocheck(out, "newtonian", nw);
+    return out;
+}
+
+const struct api_route api_route_relativity_rocket = {
+    "POST",
+    "/v1/relativity/rocket",
+    "The relativistic rocket: the mass ratio for a final speed or rapidity (or the speed a "
+    "mass ratio gives), any exhaust speed, beside Tsiolkovsky's",
+    description,
+    schema,
+    example,
+    rocket_op,
+    0,
+    1, /* quick */
+};
