@@ -28,6 +28,8 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
+/* Parsed answer schemas (a route's response_schema; NULL where it has none). */
+static json_t **route_responses;
 /* Per route: its schema's default for a top-level "samples" (0 if none), and
  * whether its requests can ask for samples at all (its schema names samples,
  * or it runs other operations: /v1/batch, /v1/check). */
@@ -170,7 +172,9 @@ static int init_routes(void)
     route_compiled = calloc(api_route_count, sizeof *route_compiled);
     route_default_samples = calloc(api_route_count, sizeof *route_default_samples);
     route_counts_samples = calloc(api_route_count, sizeof *route_counts_samples);
-    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples) {
+    route_responses = calloc(api_route_count, sizeof *route_responses);
+    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples ||
+        !route_responses) {
         snprintf(init_error, sizeof init_error, "out of memory");
         return -1;
     }
@@ -178,6 +182,16 @@ static int init_routes(void)
         const struct api_route *r = api_routes[i];
         json_error_t jerr;
         char msg[200];
+        /* Parsed as written (integers stay integers in the documents). */
+        if (r->response_schema) {
+            route_responses[i] = json_loads(r->response_schema, 0, &jerr);
+            if (!json_is_object(route_responses[i])) {
+                snprintf(init_error, sizeof init_error,
+                         "%s: response_schema is not a JSON object (line %d: %s)", r->path,
+                         jerr.line, route_responses[i] ? "not an object" : jerr.text);
+                return -1;
+            }
+        }
         if (!strcmp(r->method, "GET")) {
             /* A read-only resource: no body, so no schema or example. */
             if (r->schema || r->example) {
@@ -186,7 +200,9 @@ static int init_routes(void)
             }
             continue;
         }
-        json_t *s = json_loads(r->schema, JSON_DECODE_INT_AS_REAL, &jerr);
+        /* Parsed as written: the validator reads numbers with
+         * json_number_value(), and the catalog prints integers as integers. */
+        json_t *s = json_loads(r->schema, 0, &jerr);
         if (!s) {
             snprintf(init_error, sizeof init_error, "%s: schema is not JSON (line %d: %s)",
                      r->path, jerr.line, jerr.text);
@@ -219,7 +235,9 @@ static int init_routes(void)
             return -1;
         }
     }
-    if (api_catalog_init(init_error, sizeof init_error)) return -1;
+    if (api_catalog_init((const json_t *const *)route_schemas,
+                         (const json_t *const *)route_responses, init_error, sizeof init_error))
+        return -1;
     if (doc_init(&doc_catalog, api_catalog_text()) || doc_init(&doc_openapi, api_openapi_text())) {
         snprintf(init_error, sizeof init_error, "the catalog or OpenAPI text is missing");
         return -1;
@@ -252,6 +270,11 @@ const json_t *api_route_schema(size_t i)
 const struct api_schema *api_route_schema_compiled(size_t i)
 {
     return i < api_route_count && route_compiled ? route_compiled[i] : NULL;
+}
+
+const json_t *api_route_response_schema(size_t i)
+{
+    return i < api_route_count && route_responses ? route_responses[i] : NULL;
 }
 
 /* ---- helpers ---------------------------------------------------------------- */
@@ -292,6 +315,26 @@ long api_quick_route(const char *method, const char *path, size_t body_len)
     if (!method || !path || strcmp(method, "POST") != 0 || body_len > API_QUICK_MAX_BODY) return -1;
     long ri = route_index(path);
     return ri >= 0 && api_routes[ri]->quick ? ri : -1;
+}
+
+size_t api_operation_count(void)
+{
+    return api_route_count;
+}
+
+const char *api_operation_path(size_t i)
+{
+    return i < api_route_count ? api_routes[i]->path : NULL;
+}
+
+const char *api_operation_method(size_t i)
+{
+    return i < api_route_count ? api_routes[i]->method : NULL;
+}
+
+int api_operation_quick(size_t i)
+{
+    return i < api_route_count && api_routes[i]->quick;
 }
 
 /* A GET route: call the handler without a body; it cannot fail on input. */

@@ -157,4 +157,13 @@ int api_is_inline(const char *method, const char *path);
  * deadline and step budget still apply to a quick request. */
 long api_quick_route(const char *method, const char *path, size_t body_len);
 
+/* The route table, read through accessors (the server sees no struct
+ * api_route). Routes are numbered 0 .. api_operation_count()-1 in a fixed
+ * order, the numbering of api_quick_route(). For i out of range the path and
+ * method are NULL and quick is 0. Strings are static. */
+size_t api_operation_count(void);
+const char *api_operation_path(size_t i);   /* "/v1/rigid/inertia" */
+const char *api_operation_method(size_t i); /* "POST" or "GET" */
+int api_operation_quick(size_t i);          /* 1: closed form, may run on the I/O thread */
+
 #endif
