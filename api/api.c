@@ -45,7 +45,8 @@ static pthread_once_t init_once = PTHREAD_ONCE_INIT;
  * json_pack() and the encoders; checking each of those hundreds of calls would
  * bury the physics, and one unchecked failure silently drops a member (a 200
  * with a field missing, or a 422 listing fewer errors than it counts). So
- * jansson allocates through json_malloc_checked(), which records a failure in
+ * jansson allocates through json_malloc_checked() (installed by main() through
+ * api_install_json_allocator(), api.h), which records a failure in
  * a per-thread flag; api_handle_ext() clears the flag before a request and,
  * when it is raised afterwards, answers the fixed 500 out-of-memory problem
  * instead of whatever was built. The previous allocator (the C library's, or
@@ -76,7 +77,7 @@ static void json_free_checked(void *p)
         free(p);
 }
 
-static void install_json_allocator(void)
+void api_install_json_allocator(void)
 {
     json_malloc_t m;
     json_free_t f;
@@ -247,7 +248,16 @@ static int init_routes(void)
 
 static void init_once_fn(void)
 {
-    install_json_allocator();
+    json_malloc_t m;
+    json_free_t f;
+    json_get_alloc_funcs(&m, &f);
+    if (m != json_malloc_checked) {
+        /* Process-wide set-up belongs to main(), before any thread starts. */
+        snprintf(init_error, sizeof init_error,
+                 "api_install_json_allocator() was not called before api_init() (main's set-up)");
+        init_status = -1;
+        return;
+    }
     init_status = init_routes();
 }
 

@@ -32,6 +32,7 @@
  * SECURITY. With --token-file, every /v1 request needs the bearer token
  * (checked on the first callback, before any body byte is read; compared in
  * constant time); /healthz, /metrics, /problems/... and the front end stay open.
+ * The 401 and the preflight's 403 are the problem table's (api/problem.c).
  * CORS is off unless --cors-origin lists origins: only those get
  * Access-Control-Allow-Origin on /v1 answers and a 204 to a preflight. Every
  * answer built here carries nosniff, Referrer-Policy, X-Frame-Options and a
@@ -140,7 +141,6 @@
 
 #include "api.h"
 #include "log.h"
-#include "routes.h"
 #include "static.h"
 #include "mech/budget.h"
 
@@ -178,7 +178,7 @@
 
 struct srv_req;
 
-/* Per quick route (api_routes index). Relaxed atomics: a lost update only
+/* Per quick route (route index, api_operation_path()). Relaxed atomics: a lost update only
  * delays the average or shifts a sample by one request. */
 struct srv_quick_stat {
     atomic_llong cost;   /* moving average of thread CPU ns per KiB of (body +
@@ -232,7 +232,7 @@ struct srv_http {
     struct pollfd *reap_pfd;
     struct srv_conn **reap_conn;
     size_t reap_cap;
-    /* Per route (api_routes index): the measured cost of quick routes (see
+    /* Per route (route index, api.h): the measured cost of quick routes (see
      * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
     struct srv_quick_stat *quick;
 };
@@ -281,7 +281,7 @@ struct srv_req {
     int fd; /* the connection's socket, -1 if unknown */
     struct srv_http *http;
     struct srv_conn *sc; /* the connection's registration, or NULL */
-    long route_index;    /* index in api_routes of a POST to an operation, else -1 */
+    long route_index;    /* route index (api.h) of a POST to an operation, else -1 */
     int quick_route;     /* route is quick and the body small enough (api_quick_route) */
     int quick_probe;     /* runs inline although predicted too slow: measure it */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
@@ -929,27 +929,13 @@ static enum MHD_Result answer_text(struct srv_req *r, int status, const char *co
     return answer(r, &r->aresp);
 }
 
-/* A problem+json the API layer has no kind for (401, 403): type, title and
- * detail are static text (nothing from the request, so nothing to escape). */
-static enum MHD_Result answer_server_problem(struct srv_req *r, int status, const char *slug,
-                                             const char *title, const char *detail)
+/* A problem the server decides before the API layer sees the request (401,
+ * 403): the problem table's body with this detail (static text), never cached. */
+static enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
+                                             const char *detail)
 {
-    char *body = malloc(512);
-    if (!body) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
-    int n = snprintf(body, 512,
-                     "{\"type\":\"/problems/%s\",\"title\":\"%s\",\"status\":%d,"
-                     "\"detail\":\"%s\"}",
-                     slug, title, status, detail);
-    if (n < 0 || n >= 512) {
-        free(body);
-        return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
-    }
     api_response_free(&r->aresp);
-    r->aresp.status = status;
-    r->aresp.content_type = "application/problem+json";
-    r->aresp.body = body;
-    r->aresp.body_len = (size_t)n;
-    r->aresp.retry_after = 0;
+    api_response_problem(&r->aresp, kind, detail);
     r->aresp.cache_control = "no-store";
     return answer(r, &r->aresp);
 }
@@ -1006,7 +992,7 @@ static int token_ok(const struct srv_config *cfg, const char *authorization)
 static enum MHD_Result answer_preflight(struct srv_req *r)
 {
     if (!r->cors_ok)
-        return answer_server_problem(r, 403, "cors-origin-not-allowed", "Origin not allowed",
+        return answer_server_problem(r, API_PROBLEM_CORS_FORBIDDEN,
                                      "this origin is not in the server's --cors-origin list");
     struct MHD_Response *mr =
         MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
@@ -1436,7 +1422,7 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
                     return MHD_NO;
                 }
                 return answer_server_problem(
-                    r, 401, "unauthorized", "Unauthorized",
+                    r, API_PROBLEM_UNAUTHORIZED,
                     given ? "the bearer token is not valid for this server"
                           : "this server requires 'Authorization: Bearer TOKEN' for /v1");
             }
@@ -1489,12 +1475,12 @@ static enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const 
 static const char *route_label(const struct srv_req *r)
 {
     if (r->route) return r->route;
-    if (r->route_index >= 0) return api_routes[r->route_index]->path;
+    if (r->route_index >= 0) return api_operation_path((size_t)r->route_index);
     const char *p = r->path;
     if (!p) return "other";
     if (strcmp(p, "/healthz") == 0 || strcmp(p, "/metrics") == 0 || strcmp(p, "/") == 0) return p;
-    for (size_t i = 0; i < api_route_count; i++)
-        if (strcmp(api_routes[i]->path, p) == 0) return api_routes[i]->path;
+    for (size_t i = 0; i < api_operation_count(); i++)
+        if (strcmp(api_operation_path(i), p) == 0) return api_operation_path(i);
     if (is_api_path(p) && ((r->status >= 200 && r->status < 300) || r->status == 304)) return p;
     return "other";
 }
@@ -1584,8 +1570,9 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     h->listen_fd = -1;
     pthread_mutex_init(&h->watch_mu, NULL);
     pthread_mutex_init(&h->conn_mu, NULL);
-    h->quick = calloc(api_route_count ? api_route_count : 1, sizeof *h->quick);
-    for (size_t i = 0; h->quick && i < api_route_count; i++) {
+    const size_t n_routes = api_operation_count();
+    h->quick = calloc(n_routes ? n_routes : 1, sizeof *h->quick);
+    for (size_t i = 0; h->quick && i < n_routes; i++) {
         atomic_init(&h->quick[i].cost, 0);
         atomic_init(&h->quick[i].runs, 0);
         atomic_init(&h->quick[i].too_slow, 0);

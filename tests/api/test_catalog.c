@@ -69,6 +69,7 @@ static char *post_text(const char *path, const char *body)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     int st;
     json_t *cat = get_json("GET", "/v1", NULL, &st);
