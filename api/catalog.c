@@ -63,7 +63,7 @@ static const struct {
 };
 
 /* The server asks for the bearer token (--token-file) on /v1 and every path
- * under it, and nowhere else (server/http.c, is_v1_path). */
+ * under it, and nowhere else (server/http_security.c, is_v1_path). */
 static int needs_token(const char *path)
 {
     return !strcmp(path, "/v1") || !strncmp(path, "/v1/", 4);
