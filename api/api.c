@@ -28,6 +28,8 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
+/* Parsed answer schemas (a route's response_schema; NULL where it has none). */
+static json_t **route_responses;
 /* Per route: its schema's default for a top-level "samples" (0 if none), and
  * whether its requests can ask for samples at all (its schema names samples,
  * or it runs other operations: /v1/batch, /v1/check). */
@@ -43,7 +45,8 @@ static pthread_once_t init_once = PTHREAD_ONCE_INIT;
  * json_pack() and the encoders; checking each of those hundreds of calls would
  * bury the physics, and one unchecked failure silently drops a member (a 200
  * with a field missing, or a 422 listing fewer errors than it counts). So
- * jansson allocates through json_malloc_checked(), which records a failure in
+ * jansson allocates through json_malloc_checked() (installed by main() through
+ * api_install_json_allocator(), api.h), which records a failure in
  * a per-thread flag; api_handle_ext() clears the flag before a request and,
  * when it is raised afterwards, answers the fixed 500 out-of-memory problem
  * instead of whatever was built. The previous allocator (the C library's, or
@@ -74,7 +77,7 @@ static void json_free_checked(void *p)
         free(p);
 }
 
-static void install_json_allocator(void)
+void api_install_json_allocator(void)
 {
     json_malloc_t m;
     json_free_t f;
@@ -170,7 +173,9 @@ static int init_routes(void)
     route_compiled = calloc(api_route_count, sizeof *route_compiled);
     route_default_samples = calloc(api_route_count, sizeof *route_default_samples);
     route_counts_samples = calloc(api_route_count, sizeof *route_counts_samples);
-    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples) {
+    route_responses = calloc(api_route_count, sizeof *route_responses);
+    if (!route_schemas || !route_compiled || !route_default_samples || !route_counts_samples ||
+        !route_responses) {
         snprintf(init_error, sizeof init_error, "out of memory");
         return -1;
     }
@@ -178,6 +183,16 @@ static int init_routes(void)
         const struct api_route *r = api_routes[i];
         json_error_t jerr;
         char msg[200];
+        /* Parsed as written (integers stay integers in the documents). */
+        if (r->response_schema) {
+            route_responses[i] = json_loads(r->response_schema, 0, &jerr);
+            if (!json_is_object(route_responses[i])) {
+                snprintf(init_error, sizeof init_error,
+                         "%s: response_schema is not a JSON object (line %d: %s)", r->path,
+                         jerr.line, route_responses[i] ? "not an object" : jerr.text);
+                return -1;
+            }
+        }
         if (!strcmp(r->method, "GET")) {
             /* A read-only resource: no body, so no schema or example. */
             if (r->schema || r->example) {
@@ -186,7 +201,9 @@ static int init_routes(void)
             }
             continue;
         }
-        json_t *s = json_loads(r->schema, JSON_DECODE_INT_AS_REAL, &jerr);
+        /* Parsed as written: the validator reads numbers with
+         * json_number_value(), and the catalog prints integers as integers. */
+        json_t *s = json_loads(r->schema, 0, &jerr);
         if (!s) {
             snprintf(init_error, sizeof init_error, "%s: schema is not JSON (line %d: %s)",
                      r->path, jerr.line, jerr.text);
@@ -219,7 +236,9 @@ static int init_routes(void)
             return -1;
         }
     }
-    if (api_catalog_init(init_error, sizeof init_error)) return -1;
+    if (api_catalog_init((const json_t *const *)route_schemas,
+                         (const json_t *const *)route_responses, init_error, sizeof init_error))
+        return -1;
     if (doc_init(&doc_catalog, api_catalog_text()) || doc_init(&doc_openapi, api_openapi_text())) {
         snprintf(init_error, sizeof init_error, "the catalog or OpenAPI text is missing");
         return -1;
@@ -229,7 +248,16 @@ static int init_routes(void)
 
 static void init_once_fn(void)
 {
-    install_json_allocator();
+    json_malloc_t m;
+    json_free_t f;
+    json_get_alloc_funcs(&m, &f);
+    if (m != json_malloc_checked) {
+        /* Process-wide set-up belongs to main(), before any thread starts. */
+        snprintf(init_error, sizeof init_error,
+                 "api_install_json_allocator() was not called before api_init() (main's set-up)");
+        init_status = -1;
+        return;
+    }
     init_status = init_routes();
 }
 
@@ -252,6 +280,11 @@ const json_t *api_route_schema(size_t i)
 const struct api_schema *api_route_schema_compiled(size_t i)
 {
     return i < api_route_count && route_compiled ? route_compiled[i] : NULL;
+}
+
+const json_t *api_route_response_schema(size_t i)
+{
+    return i < api_route_count && route_responses ? route_responses[i] : NULL;
 }
 
 /* ---- helpers ---------------------------------------------------------------- */
@@ -292,6 +325,26 @@ long api_quick_route(const char *method, const char *path, size_t body_len)
     if (!method || !path || strcmp(method, "POST") != 0 || body_len > API_QUICK_MAX_BODY) return -1;
     long ri = route_index(path);
     return ri >= 0 && api_routes[ri]->quick ? ri : -1;
+}
+
+size_t api_operation_count(void)
+{
+    return api_route_count;
+}
+
+const char *api_operation_path(size_t i)
+{
+    return i < api_route_count ? api_routes[i]->path : NULL;
+}
+
+const char *api_operation_method(size_t i)
+{
+    return i < api_route_count ? api_routes[i]->method : NULL;
+}
+
+int api_operation_quick(size_t i)
+{
+    return i < api_route_count && api_routes[i]->quick;
 }
 
 /* A GET route: call the handler without a body; it cannot fail on input. */

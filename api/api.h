@@ -81,8 +81,21 @@ struct api_request_ext {
                                   0 means API_DEFAULT_MAX_SAMPLES (--max-samples) */
 };
 
+/* Process-wide set-up of the API layer: main() (the server's, `mechd eval`'s,
+ * every test's and bench's) calls it once, before any thread starts and before
+ * api_init(), as it calls gsl_set_error_handler_off() for GSL. It makes jansson
+ * allocate through the API layer, which notices a failed allocation (the
+ * request then gets the fixed 500 out-of-memory problem, never an answer with
+ * a member silently missing) and serves an operation's JSON from a per-thread
+ * arena. A test that installs its own jansson allocator (json_set_alloc_funcs)
+ * does so first: it is then wrapped, and the arena stays off. Calling it again
+ * does nothing. Not thread-safe (process set-up). */
+void api_install_json_allocator(void);
+
 /* One-time set-up (parses the route schemas). Called by api_handle() on first
- * use through pthread_once, so calling it is optional. Returns 0 on success. */
+ * use through pthread_once, so calling it is optional. Returns 0 on success;
+ * fails (api_init_error says why) when api_install_json_allocator() was not
+ * called first. */
 int api_init(void);
 
 /* Why api_init() failed (a route schema or example is broken), or NULL. */
@@ -156,5 +169,14 @@ int api_is_inline(const char *method, const char *path);
  * Returns the route's index in api_routes, or -1 for anything else. The
  * deadline and step budget still apply to a quick request. */
 long api_quick_route(const char *method, const char *path, size_t body_len);
+
+/* The route table, read through accessors (the server sees no struct
+ * api_route). Routes are numbered 0 .. api_operation_count()-1 in a fixed
+ * order, the numbering of api_quick_route(). For i out of range the path and
+ * method are NULL and quick is 0. Strings are static. */
+size_t api_operation_count(void);
+const char *api_operation_path(size_t i);   /* "/v1/rigid/inertia" */
+const char *api_operation_method(size_t i); /* "POST" or "GET" */
+int api_operation_quick(size_t i);          /* 1: closed form, may run on the I/O thread */
 
 #endif

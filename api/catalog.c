@@ -1,13 +1,17 @@
 /* catalog.c — builds GET /v1 (every operation with its summary, description,
  * input JSON Schema and a working example) and GET /v1/openapi.json
- * (OpenAPI 3.1) from the route table, once, at api_init(). */
+ * (OpenAPI 3.1: bearerAuth, the problem+json schema, each operation's answer
+ * schema) from the route table, once, at api_init(). It reads the parsed
+ * schemas it is handed and calls nothing in api.c (no api.c <-> catalog.c
+ * cycle). JSON texts are parsed without JSON_DECODE_INT_AS_REAL, so an integer
+ * of a schema or an example prints as an integer ("minItems": 3, "samples": 7). */
 #include "catalog.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "api.h"
 #include "routes.h"
 
 #ifndef MECHD_VERSION
@@ -16,6 +20,9 @@
 
 static char *catalog_text;
 static char *openapi_text;
+/* Borrowed from api_catalog_init()'s caller for the length of the call. */
+static const json_t *const *request_schemas;
+static const json_t *const *response_schemas;
 
 static const char service_description[] =
     "mechd answers physics questions from a university mechanics course (rotations, "
@@ -35,7 +42,7 @@ static const char service_description[] =
 /* The envelope keys as a schema object (new reference, or NULL). */
 static json_t *envelope_schema(void)
 {
-    json_t *props = json_loads(api_envelope_properties, JSON_DECODE_INT_AS_REAL, NULL);
+    json_t *props = json_loads(api_envelope_properties, 0, NULL);
     return json_pack("{s:s,s:s,s:o}", "type", "object", "description",
                      "Keys every operation takes in its request body, in addition to the ones "
                      "its own schema lists (each operation's schema shows them too).",
@@ -44,15 +51,23 @@ static json_t *envelope_schema(void)
 
 /* Server-level resources that are not operations of the route table. */
 static const struct {
-    const char *path, *summary, *content_type;
+    const char *path, *summary, *content_type, *operation_id;
 } resources[] = {
-    {"/v1", "This catalog: every operation with its schema and an example.", "application/json"},
-    {"/v1/openapi.json", "OpenAPI 3.1 description of the API.", "application/json"},
-    {"/healthz", "Liveness: {\"status\":\"ok\"}.", "application/json"},
-    {"/metrics", "Prometheus text-format metrics.", "text/plain"},
-    {"/problems/{slug}", "What a problem type URI means.", "application/json"},
-    {"/", "The classroom front end.", "text/html"},
+    {"/v1", "This catalog: every operation with its schema and an example.", "application/json",
+     "catalog"},
+    {"/v1/openapi.json", "OpenAPI 3.1 description of the API.", "application/json", "openapi"},
+    {"/healthz", "Liveness: {\"status\":\"ok\"}.", "application/json", "healthz"},
+    {"/metrics", "Prometheus text-format metrics.", "text/plain", "metrics"},
+    {"/problems/{slug}", "What a problem type URI means.", "application/json", "problem_type"},
+    {"/", "The classroom front end.", "text/html", "front_end"},
 };
+
+/* The server asks for the bearer token (--token-file) on /v1 and every path
+ * under it, and nowhere else (server/http_security.c, is_v1_path). */
+static int needs_token(const char *path)
+{
+    return !strcmp(path, "/v1") || !strncmp(path, "/v1/", 4);
+}
 
 static char *example_curl(const struct api_route *r)
 {
@@ -75,14 +90,16 @@ static json_t *build_catalog(void)
                                                  r->path, "summary", r->summary));
             continue;
         }
-        json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, NULL);
+        json_t *ex = json_loads(r->example, 0, NULL);
         char *curl = example_curl(r);
         json_t *op = json_pack("{s:s,s:s,s:s,s:s,s:O,s:o,s:s}", "method", r->method, "path",
                                r->path, "summary", r->summary, "description", r->description,
-                               "schema", api_route_schema(i), "example", ex, "curl",
+                               "schema", request_schemas[i], "example", ex, "curl",
                                curl ? curl : "");
         free(curl);
         if (!op) { json_decref(ops); json_decref(res); return NULL; }
+        if (response_schemas && response_schemas[i])
+            json_object_set_new(op, "response_schema", json_deep_copy(response_schemas[i]));
         json_array_append_new(ops, op);
     }
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++)
@@ -98,6 +115,27 @@ static json_t *problem_response(const char *description)
     return json_pack("{s:s,s:{s:{s:{s:s}}}}", "description", description, "content",
                      "application/problem+json", "schema", "$ref",
                      "#/components/schemas/Problem");
+}
+
+/* The 401 of a /v1 path: only when the server runs with --token-file. */
+static json_t *unauthorized_response(void)
+{
+    return json_pack("{s:s,s:{s:{s:s,s:{s:s}}},s:{s:{s:{s:s}}}}", "description",
+                     "The server runs with --token-file and the request carries no bearer "
+                     "token or a wrong one.",
+                     "headers", "WWW-Authenticate", "description",
+                     "Bearer realm=\"mechd\" (with error=\"invalid_token\" for a wrong token)",
+                     "schema", "type", "string", "content", "application/problem+json",
+                     "schema", "$ref", "#/components/schemas/Problem");
+}
+
+/* The content of a 200 answer of route i: its response schema when the route
+ * describes its answer, else any JSON object. */
+static json_t *answer_content(size_t i)
+{
+    const json_t *rs = response_schemas ? response_schemas[i] : NULL;
+    json_t *schema = rs ? json_deep_copy(rs) : json_pack("{s:s}", "type", "object");
+    return json_pack("{s:{s:o}}", "application/json", "schema", schema);
 }
 
 /* What an operation's 422 may be. */
@@ -116,26 +154,26 @@ static json_t *get_variant(size_t i, const char *opid)
                               "the request body as URL-encoded JSON; the URL and headers must "
                               "fit in about 32 KB (longer gets 414 from libmicrohttpd): POST "
                               "longer requests", "content",
-                              "application/json", "schema", api_route_schema(i));
+                              "application/json", "schema", request_schemas[i]);
     json_t *etag_hdr = json_pack("{s:s,s:{s:s}}", "description",
                                  "strong tag of (build, path, canonical request)", "schema",
                                  "type", "string");
     json_t *cc_hdr = json_pack("{s:s,s:{s:s}}", "description", "public, max-age=86400", "schema",
                                "type", "string");
-    json_t *ok = json_pack("{s:s,s:{s:O,s:O},s:{s:{s:{s:s}}}}", "description",
+    json_t *ok = json_pack("{s:s,s:{s:O,s:O},s:o}", "description",
                            "The result, byte-identical to the POST answer without cost. An "
                            "answer that depends on the load or the deadline (a partial "
                            "/v1/compare) has no ETag and Cache-Control: no-store.",
                            "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr, "content",
-                           "application/json", "schema", "type", "object");
+                           answer_content(i));
     json_t *nm = json_pack("{s:s,s:{s:O,s:O}}", "description",
                            "If-None-Match matched the ETag: no body, the operation is not run.",
                            "headers", "ETag", etag_hdr, "Cache-Control", cc_hdr);
     json_decref(etag_hdr);
     json_decref(cc_hdr);
-    json_t *responses = json_pack("{s:o,s:o,s:o,s:o,s:o,s:o}", "200", ok, "304", nm, "400",
-                                  problem_response("The request parameter is not JSON."), "422",
-                                  problem_response(status_422),
+    json_t *responses = json_pack("{s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "200", ok, "304", nm, "400",
+                                  problem_response("The request parameter is not JSON."), "401",
+                                  unauthorized_response(), "422", problem_response(status_422),
                                   "500", problem_response("Internal error."), "503",
                                   problem_response("Queue full or shutting down; see Retry-After."));
     return json_pack("{s:s,s:s,s:s,s:[o],s:o}", "operationId", id, "summary", r->summary,
@@ -145,37 +183,102 @@ static json_t *get_variant(size_t i, const char *opid)
                      "parameters", param, "responses", responses);
 }
 
+/* "/v1/rigid/inertia" -> "rigid_inertia" (n bytes of out). */
+static void operation_id(const char *path, char *out, size_t n)
+{
+    snprintf(out, n, "%s", path + (strncmp(path, "/v1/", 4) ? 0 : 4));
+    for (char *p = out; *p; p++)
+        if (*p == '/') *p = '_';
+}
+
+/* A read-only resource that is not an operation (GET routes of the table and
+ * the server's own resources): its 200, and the 4xx it can answer. */
+static json_t *resource_get(const char *path, const char *opid, const char *summary,
+                            const char *description, json_t *content)
+{
+    json_t *responses = json_pack("{s:{s:s,s:o}}", "200", "description", summary, "content",
+                                  content);
+    json_t *get = json_pack("{s:s,s:s,s:o}", "operationId", opid, "summary", summary,
+                            "responses", responses);
+    if (!get) return NULL;
+    if (description) json_object_set_new(get, "description", json_string(description));
+    if (needs_token(path))
+        json_object_set_new(responses, "401", unauthorized_response());
+    else
+        json_object_set_new(get, "security", json_array()); /* open to anyone */
+    if (strchr(path, '{')) {
+        json_object_set_new(responses, "404", problem_response("No problem type has this slug."));
+        json_object_set_new(
+            get, "parameters",
+            json_pack("[{s:s,s:s,s:b,s:s,s:{s:s,s:s}}]", "name", "slug", "in", "path", "required",
+                      1, "description",
+                      "the last segment of a problem's type URI (\"validation-error\")", "schema",
+                      "type", "string", "pattern", "^[a-z0-9-]+$"));
+    }
+    return get;
+}
+
+/* components/schemas/Problem: every member mechd's problem+json bodies carry
+ * (api/problem.c, api/call.c, api/ep_compare.c; a check of a wrong request
+ * passes its inner problem's members on, hence additionalProperties). */
+static const char problem_schema_text[] =
+    "{\"type\":\"object\",\"description\":\"RFC 9457 problem details.\","
+    "\"required\":[\"type\",\"title\",\"status\",\"detail\"],"
+    "\"properties\":{"
+    "\"type\":{\"type\":\"string\",\"format\":\"uri-reference\",\"description\":"
+    "\"/problems/<slug>: GET it for what the problem means\"},"
+    "\"title\":{\"type\":\"string\"},"
+    "\"status\":{\"type\":\"integer\",\"minimum\":400,\"maximum\":599},"
+    "\"detail\":{\"type\":\"string\",\"description\":\"what was wrong with this request\"},"
+    "\"instance\":{\"type\":\"string\",\"format\":\"uri-reference\",\"description\":"
+    "\"the request path\"},"
+    "\"errors\":{\"type\":\"array\",\"description\":\"one entry per offending field\","
+    "\"items\":{\"type\":\"object\",\"required\":[\"pointer\",\"detail\"],\"properties\":{"
+    "\"pointer\":{\"type\":\"string\",\"description\":\"RFC 6901 JSON pointer into the "
+    "request body\"},\"detail\":{\"type\":\"string\"}}}},"
+    "\"progress\":{\"type\":\"object\",\"description\":\"compute-budget-exceeded and some "
+    "numerical failures: how far the computation got\",\"properties\":{"
+    "\"limit\":{\"type\":\"string\",\"enum\":[\"max_steps\",\"deadline\"]},"
+    "\"steps\":{\"type\":\"integer\",\"minimum\":0},"
+    "\"run_steps\":{\"type\":\"integer\",\"minimum\":0},"
+    "\"samples_written\":{\"type\":\"integer\",\"minimum\":0},"
+    "\"t_reached\":{\"type\":\"number\"},\"t_target\":{\"type\":\"number\"},"
+    "\"fraction_done\":{\"type\":\"number\"}}},"
+    "\"run\":{\"type\":\"string\",\"description\":\"/v1/compare: JSON pointer of the run that "
+    "stopped\"}}}";
+
+static const char bearer_description[] =
+    "Only when the server runs with --token-file (MECHD_TOKEN_FILE): every request to /v1 and "
+    "the paths under it must then carry Authorization: Bearer TOKEN, or gets 401. /healthz, "
+    "/metrics, /problems/{slug} and the front end never ask for it. Without --token-file no "
+    "request needs a token.";
+
 static json_t *build_openapi(void)
 {
     json_t *paths = json_object();
     for (size_t i = 0; i < api_route_count; i++) {
         const struct api_route *r = api_routes[i];
+        char opid[128];
+        operation_id(r->path, opid, sizeof opid);
         if (!strcmp(r->method, "GET")) {
-            json_t *get = json_pack("{s:s,s:s,s:{s:{s:s,s:{s:{s:{s:s}}}}}}", "summary", r->summary,
-                                    "description", r->description, "responses", "200",
-                                    "description", r->summary, "content", "application/json",
-                                    "schema", "type", "object");
+            json_t *get = resource_get(r->path, opid, r->summary, r->description,
+                                       answer_content(i));
             json_object_set_new(paths, r->path, json_pack("{s:o}", "get", get));
             continue;
         }
-        char opid[128];
-        snprintf(opid, sizeof opid, "%s", r->path + (strncmp(r->path, "/v1/", 4) ? 0 : 4));
-        for (char *p = opid; *p; p++)
-            if (*p == '/') *p = '_';
-        json_t *ex = json_loads(r->example, JSON_DECODE_INT_AS_REAL, NULL);
+        json_t *ex = json_loads(r->example, 0, NULL);
         json_t *responses = json_pack(
-            "{s:{s:s,s:{s:{s:{s:s}}}},s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "200", "description",
-            "The result.", "content", "application/json", "schema", "type", "object", "400",
-            problem_response("Malformed JSON."), "413", problem_response("Body too large."),
-            "415", problem_response("Not application/json."), "422",
-            problem_response(status_422), "500",
-            problem_response("Internal error."), "503",
-            problem_response("Queue full or shutting down; see Retry-After."), "405",
+            "{s:{s:s,s:o},s:o,s:o,s:o,s:o,s:o,s:o,s:o,s:o}", "200", "description",
+            "The result.", "content", answer_content(i), "400",
+            problem_response("Malformed JSON."), "401", unauthorized_response(), "413",
+            problem_response("Body too large."), "415", problem_response("Not application/json."),
+            "422", problem_response(status_422), "500", problem_response("Internal error."),
+            "503", problem_response("Queue full or shutting down; see Retry-After."), "405",
             problem_response("Wrong method."));
         json_t *op = json_pack("{s:s,s:s,s:s,s:{s:b,s:{s:{s:O,s:o}}},s:o}", "operationId", opid,
                                "summary", r->summary, "description", r->description,
                                "requestBody", "required", 1, "content", "application/json",
-                               "schema", api_route_schema(i), "example", ex, "responses",
+                               "schema", request_schemas[i], "example", ex, "responses",
                                responses);
         if (!op) { json_decref(paths); return NULL; }
         char method[16];
@@ -187,29 +290,131 @@ static json_t *build_openapi(void)
         json_object_set_new(paths, r->path, item);
     }
     for (size_t i = 0; i < sizeof resources / sizeof resources[0]; i++) {
-        json_t *get = json_pack("{s:s,s:{s:{s:s,s:{s:{}}}}}", "summary", resources[i].summary,
-                                "responses", "200", "description", resources[i].summary,
-                                "content", resources[i].content_type);
+        json_t *get = resource_get(resources[i].path, resources[i].operation_id,
+                                   resources[i].summary, NULL,
+                                   json_pack("{s:{}}", resources[i].content_type));
         json_object_set_new(paths, resources[i].path, json_pack("{s:o}", "get", get));
     }
-    json_t *problem_schema = json_pack(
-        "{s:s,s:[s,s,s,s],s:{s:{s:s},s:{s:s},s:{s:s},s:{s:s},s:{s:s,s:{s:s,s:{s:{s:s},s:{s:s}}}}}}",
-        "type", "object", "required", "type", "title", "status", "detail", "properties", "type",
-        "type", "string", "title", "type", "string", "status", "type", "integer", "detail",
-        "type", "string", "errors", "type", "array", "items", "type", "object", "properties",
-        "pointer", "type", "string", "detail", "type", "string");
-    return json_pack("{s:s,s:{s:s,s:s,s:s},s:o,s:{s:{s:o,s:o}}}", "openapi", "3.1.0", "info",
-                     "title", "mechd", "version", MECHD_VERSION, "description",
-                     service_description, "paths", paths, "components", "schemas", "Problem",
-                     problem_schema, "Envelope", envelope_schema());
+    json_t *problem_schema = json_loads(problem_schema_text, 0, NULL);
+    return json_pack("{s:s,s:{s:s,s:s,s:s},s:[{s:s,s:s}],s:[{s:[]}],s:o,"
+                     "s:{s:{s:o,s:o},s:{s:{s:s,s:s,s:s}}}}",
+                     "openapi", "3.1.0", "info", "title", "mechd", "version", MECHD_VERSION,
+                     "description", service_description, "servers", "url", "/", "description",
+                     "the server that serves this document", "security", "bearerAuth", "paths",
+                     paths, "components", "schemas", "Problem", problem_schema, "Envelope",
+                     envelope_schema(), "securitySchemes", "bearerAuth", "type", "http",
+                     "scheme", "bearer", "description", bearer_description);
 }
 
-int api_catalog_init(char *err, size_t n)
+/* ---- numbers as a reader expects them ----------------------------------------------
+ *
+ * The documents hold numbers as their authors wrote them, but jansson prints a
+ * real with %.17g plus ".0" when that has no '.' or 'e': 1e6 as 1000000.0 and
+ * 0.1 as 0.10000000000000001. The documents (never an answer: answers' numbers
+ * are reals on purpose) are tidied before printing: a real with an integral
+ * value of at most 2^53 becomes an integer, and each real prints as the
+ * shortest of %.15g, %.16g, %.17g that reads back as the same double (0.1,
+ * 3.141592653589793). Every number reads back as the same double. */
+
+/* Turn integral reals of j (an owned tree) into integers. */
+static json_t *tidy_number(json_t *v)
 {
+    double x = json_real_value(v);
+    if (json_is_real(v) && fabs(x) <= 9007199254740992.0 && x == (double)(json_int_t)x)
+        return json_integer((json_int_t)x);
+    return NULL;
+}
+
+static void tidy_numbers(json_t *j)
+{
+    if (json_is_object(j)) {
+        const char *k;
+        json_t *v, *n;
+        json_object_foreach(j, k, v) {
+            if ((n = tidy_number(v)))
+                json_object_set_new_nocheck(j, k, n);
+            else
+                tidy_numbers(v);
+        }
+    } else if (json_is_array(j)) {
+        for (size_t i = 0; i < json_array_size(j); i++) {
+            json_t *v = json_array_get(j, i), *n;
+            if ((n = tidy_number(v)))
+                json_array_set_new(j, i, n);
+            else
+                tidy_numbers(v);
+        }
+    }
+}
+
+/* Rewrite, in place, every number token of the JSON text s that holds a '.'
+ * or an exponent as the shortest %.15g/%.16g/%.17g text that reads back as
+ * the same double (never longer than jansson's %.17g text it replaces).
+ * Strings are copied untouched. */
+static void shorten_reals(char *s)
+{
+    char *out = s;
+    int in_string = 0;
+    for (const char *p = s; *p;) {
+        if (in_string) {
+            if (*p == '\\' && p[1]) { *out++ = *p++; *out++ = *p++; continue; }
+            if (*p == '"') in_string = 0;
+            *out++ = *p++;
+            continue;
+        }
+        if (*p == '"') { in_string = 1; *out++ = *p++; continue; }
+        if (*p != '-' && (*p < '0' || *p > '9')) { *out++ = *p++; continue; }
+        size_t len = strspn(p, "0123456789+-.eE");
+        char tok[48], best[48];
+        if (len >= sizeof tok || (!memchr(p, '.', len) && !memchr(p, 'e', len))) {
+            memmove(out, p, len);
+            out += len;
+            p += len;
+            continue;
+        }
+        memcpy(tok, p, len);
+        tok[len] = '\0';
+        double x = strtod(tok, NULL);
+        snprintf(best, sizeof best, "%s", tok);
+        for (int digits = 15; digits <= 17; digits++) {
+            char t[48];
+            snprintf(t, sizeof t, "%.*g", digits, x);
+            if (strtod(t, NULL) == x) {
+                if (strlen(t) < strlen(best)) snprintf(best, sizeof best, "%s", t);
+                break;
+            }
+        }
+        size_t bl = strlen(best);
+        memcpy(out, best, bl);
+        out += bl;
+        p += len;
+    }
+    *out = '\0';
+}
+
+/* doc printed with tidy numbers (malloc'd text, or NULL); doc is not changed
+ * (it shares the validator's schema trees). */
+static char *dump_tidy(const json_t *doc)
+{
+    json_t *copy = doc ? json_deep_copy(doc) : NULL;
+    if (!copy) return NULL;
+    tidy_numbers(copy);
+    char *text = json_dumps(copy, JSON_INDENT(2) | JSON_REAL_PRECISION(17));
+    json_decref(copy);
+    if (text) shorten_reals(text);
+    return text;
+}
+
+int api_catalog_init(const json_t *const *request, const json_t *const *response, char *err,
+                     size_t n)
+{
+    request_schemas = request;
+    response_schemas = response;
     json_t *c = build_catalog();
     json_t *o = build_openapi();
-    catalog_text = c ? json_dumps(c, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) : NULL;
-    openapi_text = o ? json_dumps(o, JSON_INDENT(2) | JSON_REAL_PRECISION(17)) : NULL;
+    request_schemas = response_schemas = NULL;
+    catalog_text = dump_tidy(c);
+    openapi_text = dump_tidy(o);
     json_decref(c);
     json_decref(o);
     if (!catalog_text || !openapi_text) {

@@ -6,20 +6,15 @@
 #include <jansson.h>
 #include <stddef.h>
 
-/* Build both documents (called once from api_init). 0 on success, else -1
- * with a message in err. */
-int api_catalog_init(char *err, size_t n);
+/* Build both documents (called once from api_init). request[i] and
+ * response[i] are route i's parsed request and answer schemas (api_routes
+ * order; NULL for none), borrowed for the call. 0 on success, else -1 with a
+ * message in err. */
+int api_catalog_init(const json_t *const *request, const json_t *const *response, char *err,
+                     size_t n);
 
 /* The serialised documents (static after init; never NULL after success). */
 const char *api_catalog_text(void);
 const char *api_openapi_text(void);
-
-/* Parsed schema of route i (borrowed; NULL before init). */
-const json_t *api_route_schema(size_t i);
-
-/* Compiled schema of route i, for api_schema_validate (borrowed; lives for
- * the process; NULL before init and for GET routes). */
-struct api_schema;
-const struct api_schema *api_route_schema_compiled(size_t i);
 
 #endif

@@ -130,7 +130,7 @@ int api_route_schema_add_envelope(json_t *schema, char *msg, size_t n)
         snprintf(msg, n, "the root schema has no properties to add the envelope keys to");
         return -1;
     }
-    json_t *env = json_loads(api_envelope_properties, JSON_DECODE_INT_AS_REAL, NULL);
+    json_t *env = json_loads(api_envelope_properties, 0, NULL);
     if (!env) {
         snprintf(msg, n, "out of memory (or a broken envelope text)");
         return -1;

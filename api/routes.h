@@ -21,4 +21,17 @@ extern const char api_envelope_properties[];
  * properties, declares an envelope key itself, or memory ran out. */
 int api_route_schema_add_envelope(json_t *schema, char *msg, size_t n);
 
+/* Parsed schema of route i (borrowed; NULL before api_init()). Defined in
+ * api.c, which parses every route's schema once. */
+const json_t *api_route_schema(size_t i);
+
+/* Compiled schema of route i, for api_schema_validate (borrowed; lives for
+ * the process; NULL before init and for GET routes). */
+struct api_schema;
+const struct api_schema *api_route_schema_compiled(size_t i);
+
+/* Parsed answer schema of route i (its response_schema text; borrowed),
+ * NULL when the route does not describe its answer or before init. */
+const json_t *api_route_response_schema(size_t i);
+
 #endif

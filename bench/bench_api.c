@@ -48,6 +48,7 @@ static void handle(const struct api_route *r)
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     /* argv[1]: seconds per case, or `make bench`'s output directory (ignored). */
     char *end = NULL;
     double seconds = argc > 1 ? strtod(argv[1], &end) : 0.5;

@@ -1547,6 +1547,7 @@ static const char *met(int ok) { return ok ? "MET" : "NOT MET"; }
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     const char *out = argc > 1 ? argv[1] : "build/bench-out";
     char bench_dir[1024];
     bench_dir_of(bench_dir, sizeof bench_dir);

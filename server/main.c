@@ -34,6 +34,7 @@ int main(int argc, char **argv)
     if (argc >= 2 && strcmp(argv[1], "eval") == 0) {
         /* Offline mode: one request through the API layer, no socket. */
         gsl_set_error_handler_off();
+        api_install_json_allocator(); /* jansson's allocator: process-wide, once */
         if (api_init() != 0) {
             srv_log_note("API initialisation failed: %s", api_init_error());
             return 3;
@@ -53,6 +54,7 @@ int main(int argc, char **argv)
     }
 
     gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
+    api_install_json_allocator(); /* jansson's allocator: process-wide, once */
     /* Return memory after large answers. glibc's default thresholds are
      * dynamic: freeing one 16 MB answer raises the mmap threshold to 16 MB and
      * the trim threshold to 32 MB, after which every worker's malloc arena

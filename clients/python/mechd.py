@@ -413,7 +413,7 @@ class _Operations:
                     quaternion, rotation_vector, with an optional sense
             torque: optional constant torque; default none (torque-free)
             t_end (required): s
-            samples: integer >= 2, <= 100000; default 101.0
+            samples: integer >= 2, <= 100000; default 101
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
@@ -448,7 +448,7 @@ class _Operations:
             phi_dot: rad/s, precession rate, default 0
             psi_dot: rad/s, spin rate, default 0
             t_end (required): s
-            samples: integer >= 2, <= 100000; default 101.0
+            samples: integer >= 2, <= 100000; default 101
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
@@ -512,8 +512,8 @@ class _Operations:
             shape: I_cm/(m R^2) = 2/5, 2/3, 1/2, 1; moment_of_inertia overrides it; default
                     "solid_sphere"
             moment_of_inertia: kg m^2, I_cm about the rolling axis (instead of shape)
-            mass: kg; default 1.0
-            impulse: N s, the horizontal impulse of the strike; default 1.0
+            mass: kg; default 1
+            impulse: N s, the horizontal impulse of the strike; default 1
             height: m, where the strike hits above the centre (|height| <= radius); default the rolling
                     height
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
@@ -533,7 +533,7 @@ class _Operations:
         Args:
             width (required): m, the box's side a in the plane of the fall (a cube: its side)
             height: m, the side b that ends vertical; default width (a cube)
-            mass: kg (scales the impulses only); default 1.0
+            mass: kg (scales the impulses only); default 1
             g: m/s^2; default 9.80665
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
@@ -704,7 +704,7 @@ class _Operations:
         Args:
             arm_length (required): L, m (the notes: 11 m)
             speed: the apparatus' speed through the ether, m/s (the Earth's orbital speed ~3e4); default
-                    30000.0
+                    30000
             wavelength: light's wavelength, m: adds the fringe shift on a 90 degree rotation
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
@@ -765,7 +765,7 @@ class _Operations:
             units: seconds: times in s, lengths in m, c = 299792458 m/s; years: times in Julian years,
                     lengths in light-years, c = 1; default "seconds"
             tick_interval: each twin's clock ticks once per this proper time (default 1 s or 1 year);
-                    default 1.0
+                    default 1
             telescope_home_times: home times at which the stay-at-home twin reads the traveller's clock
                     through a telescope (the light arriving then); up to the time the trip's end is seen
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
@@ -971,7 +971,7 @@ class _Operations:
                     parameter lambda, normalised to dt/dlambda -> 1 far away)
             r0: start radius (not with the orbit forms, which start at periapsis); for light given by
                     impact_parameter, default 100 b (at least 1000 GM/c^2), a ray from far away
-            phi0: rad; default 0.0
+            phi0: rad; default 0
             initial (required): one of: conserved energy and angular momentum (timelike); the velocity
                     measured by a static observer at r0; an impact parameter (null); the turning points
                     or a, e of a bound orbit (timelike, start at periapsis)
@@ -981,7 +981,7 @@ class _Operations:
                     straight-line path from r0 to r_escape + 600 pi GM/c^3 (100 loops of the photon
                     sphere)
             r_escape: escape when r passes it moving outward; default 2 r0 (2 r_a for bound orbits)
-            samples: integer >= 2, <= 100000; default 201.0
+            samples: integer >= 2, <= 100000; default 201
             constraint_bound: stop with a numerical-failure error when the constraint g(u,u) = -1 (0 for
                     light) drifts by more than this, relative to the size of its terms; default 0.001
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
@@ -1009,7 +1009,7 @@ class _Operations:
             q (required): array of float (>= 1, <= 3 items)
             p (required): array of float (>= 1, <= 3 items)
             t_end (required): s
-            samples: integer >= 2, <= 100000; default 101.0
+            samples: integer >= 2, <= 100000; default 101
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
@@ -1035,11 +1035,11 @@ class _Operations:
             curve (required): the closed curve of initial conditions, points (q..., p...)
             reference: array of float (>= 2, <= 6 items)
             t_end (required): s
-            samples: integer >= 2, <= 1001; default 11.0
+            samples: integer >= 2, <= 1001; default 11
             integrators: one or two integrator blocks run side by side; default gauss4 (dt = time
                     scale/20) and rk4 (dt = time scale/2)
             tol: relative quadrature bound on the area; default 1e-12
-            max_intervals: integer >= 4, <= 4096; default 256.0
+            max_intervals: integer >= 4, <= 4096; default 256
             dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
                     error, evaluations and CPU seconds from the calibrated model) without integrating:
                     no samples, no pilot run; default false
@@ -1062,7 +1062,7 @@ class _Operations:
             section: object
             orbits (required): array of any (>= 1, <= 50 items)
             t_max (required): s, per orbit
-            max_crossings: integer >= 1, <= 10000; default 200.0
+            max_crossings: integer >= 1, <= 10000; default 200
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
@@ -1111,7 +1111,7 @@ class _Operations:
             omega (required): the frame's constant angular velocity, rad/s
             position (required): r in the rotating frame (origin on the axis), m
             velocity (required): v = dr/dt measured in the rotating frame, m/s
-            potential_energy: V at r, J; default 0.0
+            potential_energy: V at r, J; default 0
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
@@ -1131,7 +1131,7 @@ class _Operations:
             linear_density: mass per length mu, kg/m (or give mass)
             mass: the string's mass, kg: mu = mass/length (or give linear_density)
             length (required): length L between the fixed ends, m
-            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5.0
+            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
@@ -1153,7 +1153,7 @@ class _Operations:
             section (required): the cross-section: a solid circle, a rectangle (bending across its
                     height), or its area and second moment of area
             ends: end conditions (clamped-free: a cantilever); default "clamped-free"
-            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5.0
+            modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
@@ -1175,7 +1175,7 @@ class _Operations:
             fictitious: terms modelled in a rotating or earth frame: a list, or "auto" (model only the
                     terms that matter at the requested accuracy); default all four
             t_end (required): s
-            samples: integer >= 2, <= 100000; default 101.0
+            samples: integer >= 2, <= 100000; default 101
             dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
                     error, evaluations and CPU seconds from the calibrated model) without integrating:
                     no samples, no pilot run; default false
@@ -1268,11 +1268,11 @@ class _Operations:
         Args:
             latitude_deg (required): degrees, north positive: geocentric on the sphere, geodetic on the
                     ellipsoid
-            height: m above the sphere / the ellipsoid, from the deepest trench to 100 km; default 0.0
+            height: m above the sphere / the ellipsoid, from the deepest trench to 100 km; default 0
             radius: m, radius of the spherical model; default the IUGG mean radius 6371008.8 m (use
                     6378137 for the equatorial radius); default 6371008.8
             gm: m^3/s^2, the sphere's GM (default IERS 2010 / WGS 84); at most one of gm, g0; default
-                    398600441800000.0
+                    398600441800000
             g0: m/s^2, gravitation GM/R^2 at the sphere's surface (radius R, without the centrifugal
                     part): sets GM = g0 R^2; at most one of gm, g0
             omega: rad/s, the rotation rate (default IERS 2010 / WGS 84, the one default of every
@@ -1301,8 +1301,8 @@ class _Operations:
             sun: the Sun used by body "sun" and by spring_neap: any of gm or mass, distance; default
                     DE440 GM, 1 au
             gm_earth: m^3/s^2, the Earth's GM in the tide height (g = GM_E / r^2); default IERS 2010;
-                    default 398600441800000.0
-            angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0.0
+                    default 398600441800000
+            angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0
             radius: m, distance of the point from the Earth's centre; default 6371008.8
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
@@ -1373,8 +1373,7 @@ class _Operations:
             speed (required): muzzle speed v0, m/s
             elevation_deg (required): inclination above the horizontal (the notes' problems 4-5 theta;
                     the notes' spherical theta from the vertical is 90 - elevation)
-            azimuth_deg: the notes' phi: from east towards north, degrees (0 east, 90 north); default
-                    0.0
+            azimuth_deg: the notes' phi: from east towards north, degrees (0 east, 90 north); default 0
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
@@ -1400,14 +1399,14 @@ class _Operations:
 
         Args:
             latitude_deg (required): geographic latitude, degrees (south negative)
-            length: l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m); default 67.0
+            length: l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m); default 67
             g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
                     in the notes); default 9.80665
             omega_magnitude: Earth's rotation rate W, rad/s (default IERS 2010); default 7.292115e-05
-            mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28.0
+            mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28
             release: default: from rest at 3 degrees, towards the east
             swings: length of the run in swings (full periods of the planar pendulum at this amplitude);
-                    at most one of swings, precessions, duration; default 100.0
+                    at most one of swings, precessions, duration; default 100
             precessions: length of the run in full turns of the swing plane, 2 pi / (W |sin lat|)
             duration: length of the run, s
             integrator: constrained symplectic methods: rattle (order 2) or its Yoshida triple jump
@@ -1436,12 +1435,12 @@ class _Operations:
         Args:
             experiment: one of "through_center", "at_rest", "custom"; default "through_center"
             omega (required): table rotation rate about +z, rad/s, non-zero
-            radius: r1, m (through_center, at_rest); default 1.0
-            mass: number > 0, <= 1e+30; default 1.0
+            radius: r1, m (through_center, at_rest); default 1
+            mass: number > 0, <= 1e+30; default 1
             position: custom: inertial position at t = 0, m
             velocity: custom: inertial velocity, m/s
             t_end: custom: duration, s
-            samples: integer >= 2, <= 100000; default 21.0
+            samples: integer >= 2, <= 100000; default 21
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)

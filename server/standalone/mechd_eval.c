@@ -28,6 +28,7 @@ int main(int argc, char **argv)
         return 0;
     }
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     if (api_init() != 0) {
         fprintf(stderr, "mechd-eval: API initialisation failed: %s\n", api_init_error());
         return 3;

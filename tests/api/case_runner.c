@@ -115,6 +115,7 @@ static const json_t *resolve(const json_t *doc, const char *ptr)
 int main(int argc, char **argv)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     if (argc != 2) { fprintf(stderr, "usage: %s CASE_DIR\n", argv[0]); return 2; }
     char path[1024];
     json_error_t jerr;

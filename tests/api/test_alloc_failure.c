@@ -389,6 +389,7 @@ int main(void)
         return 0;
     }
     json_set_alloc_funcs(json_alloc, json_free);
+    api_install_json_allocator(); /* wraps the test's allocator: every allocation counted */
     CHECK(api_init() == 0);
     add_requests();
     long cap = getenv("ALLOC_SWEEP_CAP") ? atol(getenv("ALLOC_SWEEP_CAP")) : 600;

@@ -52,6 +52,7 @@ static const char *str_at(const json_t *j, const char *key)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
 
     /* 5d: a batch whose deadline has passed: items 422, the answer depends on load. */
     char batch[512];

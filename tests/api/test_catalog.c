@@ -11,6 +11,13 @@
 #include "routes.h"
 #include "testlib.h"
 
+/* Is j the string want? (false for NULL or a non-string) */
+static int str_is(const json_t *j, const char *want)
+{
+    const char *s = json_string_value(j);
+    return s && !strcmp(s, want);
+}
+
 static json_t *get_json(const char *method, const char *path, const char *body, int *status)
 {
     struct api_request req = {method, path, "application/json", body, body ? strlen(body) : 0,
@@ -62,6 +69,7 @@ static char *post_text(const char *path, const char *body)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     int st;
     json_t *cat = get_json("GET", "/v1", NULL, &st);
@@ -135,6 +143,72 @@ int main(void)
         CHECK(schema && !strcmp(json_string_value(schema), "object"));
         CHECK(json_object_get(json_object_get(json_object_get(p, "post"), "responses"), "422"));
     }
+    /* The bearer token (--token-file) is declared, and asked for on /v1 only. */
+    json_t *bearer = json_object_get(
+        json_object_get(json_object_get(oa, "components"), "securitySchemes"), "bearerAuth");
+    CHECK(str_is(json_object_get(bearer, "type"), "http"));
+    CHECK(str_is(json_object_get(bearer, "scheme"), "bearer"));
+    CHECK(json_is_array(json_object_get(json_array_get(json_object_get(oa, "security"), 0),
+                                        "bearerAuth")));
+    CHECK(json_array_size(json_object_get(oa, "servers")) >= 1);
+    /* The problem+json schema names what mechd's problems carry. */
+    json_t *pprops = json_object_get(json_object_get(json_object_get(json_object_get(
+        oa, "components"), "schemas"), "Problem"), "properties");
+    const char *members[] = {"type", "title", "status", "detail", "instance", "errors",
+                             "progress", "run"};
+    for (size_t m = 0; m < sizeof members / sizeof members[0]; m++)
+        CHECK(json_object_get(pprops, members[m]) != NULL);
+    CHECK(json_object_get(json_object_get(json_object_get(json_object_get(pprops, "errors"),
+                                                          "items"), "properties"), "pointer"));
+    /* Every operation: an operationId; every 4xx/5xx a Problem; a 401 exactly
+     * where the server asks for the token (/v1 and under); a declared {slug}. */
+    const char *path;
+    json_t *item;
+    size_t n_ops = 0;
+    json_object_foreach(json_object_get(oa, "paths"), path, item) {
+        int v1 = !strcmp(path, "/v1") || !strncmp(path, "/v1/", 4);
+        const char *method;
+        json_t *op;
+        json_object_foreach(item, method, op) {
+            n_ops++;
+            CHECK(json_is_string(json_object_get(op, "operationId")));
+            json_t *responses = json_object_get(op, "responses");
+            CHECK((json_object_get(responses, "401") != NULL) == v1);
+            if (!v1) CHECK(json_array_size(json_object_get(op, "security")) == 0 &&
+                           json_is_array(json_object_get(op, "security")));
+            const char *code;
+            json_t *resp;
+            json_object_foreach(responses, code, resp) {
+                if (code[0] < '4') continue;
+                const char *r = json_string_value(json_object_get(json_object_get(
+                    json_object_get(json_object_get(resp, "content"), "application/problem+json"),
+                    "schema"), "$ref"));
+                CHECK(r && !strcmp(r, "#/components/schemas/Problem"));
+            }
+            if (strchr(path, '{')) {
+                json_t *param = json_array_get(json_object_get(op, "parameters"), 0);
+                CHECK(str_is(json_object_get(param, "name"), "slug"));
+                CHECK(str_is(json_object_get(param, "in"), "path"));
+                CHECK(json_is_true(json_object_get(param, "required")));
+            }
+        }
+    }
+    CHECK(n_ops > api_route_count);
+    /* Integers print as integers: schema sizes and example counts. */
+    const char *docs[2] = {"/v1", "/v1/openapi.json"};
+    for (int d = 0; d < 2; d++) {
+        struct api_request req = {"GET", docs[d], NULL, NULL, 0, 1, mech_clock_seconds() + 60,
+                                  NULL};
+        struct api_response resp;
+        api_handle(&req, &resp);
+        CHECK_EQ_INT(resp.status, 200);
+        CHECK(resp.body && strstr(resp.body, "\"minItems\": 3,") != NULL);
+        CHECK(resp.body && strstr(resp.body, "\"minItems\": 3.0") == NULL);
+        CHECK(resp.body && strstr(resp.body, "\"samples\": 7.0") == NULL);
+        CHECK(resp.body && strstr(resp.body, ".0,\n") == NULL && strstr(resp.body, ".0\n") == NULL);
+        api_response_free(&resp);
+    }
+
     json_decref(oa);
     json_decref(cat);
 

@@ -394,6 +394,7 @@ static void test_integrators_catalog(void)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     test_exact_scene();
     test_numerical_reference();

@@ -74,6 +74,7 @@ static int nested_only(const char *path)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     int st;
 

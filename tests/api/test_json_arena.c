@@ -241,6 +241,7 @@ static void test_through_api(void)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     test_outside_scope();
     test_alloc_and_fill();

@@ -26,6 +26,7 @@ static json_t *call(const char *method, const char *path, const char *body, int 
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     int st;
     json_t *doc = call("GET", "/v1/relativity/particles", NULL, &st);
     CHECK_EQ_INT(st, 200);

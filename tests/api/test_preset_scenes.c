@@ -74,6 +74,7 @@ int main(int argc, char **argv)
     const int misses_mode = argc > 1 && strcmp(argv[1], "--known-misses") == 0;
     static const char *const presets[] = {"draft", "balanced", "precise", "machine"};
     static const double promise[] = {1e-3, 1e-8, 1e-10, 1e-11};
+    api_install_json_allocator(); /* process-wide set-up */
     CHECK(api_init() == 0);
     for (size_t s = 0; s < N_SCENES; s++) {
         const struct scene_def *sc = &SCENES[s];

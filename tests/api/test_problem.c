@@ -52,6 +52,7 @@ static const struct {
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK_EQ_INT(MECH_STATUS_COUNT, sizeof status_rows / sizeof status_rows[0]);
     CHECK_EQ_INT(API_PROBLEM_COUNT, 1 + sizeof problem_rows / sizeof problem_rows[0]);
 

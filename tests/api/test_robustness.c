@@ -105,6 +105,7 @@ static void run_one(const char *path, const char *body, size_t len)
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     CHECK(api_init() == 0);
     for (size_t r = 0; r < api_route_count; r++) {
         if (!api_routes[r]->example) continue; /* GET resources take no body */

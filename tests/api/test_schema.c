@@ -913,6 +913,7 @@ static void time_one(const char *path, const json_t *schema, const struct api_sc
 int main(void)
 {
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     EXPECT(OBJ, "{\"m\":1}", 0, "");
     EXPECT(OBJ, "{}", 1, "/m");
     EXPECT(OBJ, "[]", 1, "");

@@ -33,6 +33,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     (void)argc;
     (void)argv;
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     if (getenv("FUZZ_LIST_ROUTES")) {
         for (size_t i = 0; i < api_route_count; i++)
             printf("%zu\t%s\t%s\n", i, api_routes[i]->method, api_routes[i]->path);

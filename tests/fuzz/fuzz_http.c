@@ -37,6 +37,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     (void)argc;
     (void)argv;
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     if (api_init() != 0) {
         fprintf(stderr, "api_init: %s\n", api_init_error());
         abort();

@@ -151,6 +151,7 @@ int LLVMFuzzerInitialize(int *argc, char ***argv)
     if (g_err < 0) g_err = STDERR_FILENO;
     signal(SIGPIPE, SIG_IGN);
     gsl_set_error_handler_off();
+    api_install_json_allocator(); /* process-wide, as GSL's handler */
     char *args[] = {"fuzz_server", "--bind", "127.0.0.1", "--port", "0", "--workers", "2",
                     "--queue", "64", "--io-threads", "1", "--deadline-ms", "2000",
                     "--max-steps", "1000000", "--max-body", "4096", "--request-timeout-ms",

@@ -164,6 +164,15 @@ def test_auth(port, example_path, example_body):
             check("%s %s, %s: WWW-Authenticate Bearer" % (method, path, name),
                   www.startswith("Bearer") and (("invalid_token" in www) == invalid), www)
             check_security_headers("401 %s %s" % (method, name), h)
+    # The 401 is the problem table's (api/problem.c), built like every other
+    # problem: its type's page names the same title, a newline ends the body,
+    # "instance" is the path, and it is never cached.
+    st, h, payload = request(port, "POST", example_path, example_body)
+    table = json.loads(request(port, "GET", "/problems/unauthorized")[2])
+    doc = json.loads(payload)
+    check("401 body from the problem table (title, instance, newline-terminated, no-store)",
+          doc.get("title") == table.get("title") and doc.get("instance") == example_path
+          and payload.endswith(b"}\n") and h.get("cache-control") == "no-store", (payload, h))
     st, h, payload = request(port, "GET", "/v1/openapi.json")
     check("GET /v1/openapi.json without token -> 401", st == 401, st)
     st, h, _ = request(port, "HEAD", "/v1", headers={})
@@ -220,7 +229,10 @@ def test_cors(port, example_path, example_body):
                    "https://lab.example.org", "http://lab.example.org:80", "null",
                    "http://localhost:3001"]:
         st, h, payload = request(port, "OPTIONS", example_path, headers=dict(preflight, Origin=origin))
-        check_problem("preflight from unlisted %s" % origin, st, h, payload, 403)
+        doc = check_problem("preflight from unlisted %s" % origin, st, h, payload, 403,
+                            "/problems/cors-origin-not-allowed")
+        check("403 body from the problem table (title, newline-terminated)",
+              doc.get("title") == "Origin not allowed" and payload.endswith(b"}\n"), payload)
         check("preflight from %s: no Access-Control-*" % origin,
               not any(k.startswith("access-control-") for k in h), h)
         st, h, _ = request(port, "POST", example_path, example_body,

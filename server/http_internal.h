@@ -1,0 +1,203 @@
+/* http_internal.h — what the files of the HTTP front end (http.c and the
+ * files named in its header comment) share: limits, the per-connection and
+ * per-request state, and the functions one file calls in another. Not for
+ * use outside server/http*.c, conn_watch.c and quick.c. */
+#ifndef SRV_HTTP_INTERNAL_H
+#define SRV_HTTP_INTERNAL_H
+
+#include <microhttpd.h>
+#include <poll.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stddef.h>
+
+#include "api.h"
+#include "http.h"
+#include "static.h"
+
+#ifndef POLLRDHUP
+#define POLLRDHUP 0 /* not Linux: a gone client is seen by POLLHUP/POLLERR only */
+#endif
+
+#define SRV_CONNECTION_TIMEOUT_S 30u /* idle/slow connections are closed after this */
+#define SRV_BODY_CHUNK 4096u         /* first allocation for a body of unknown length */
+#define SRV_BODY_SMALL 512u          /* ... unless its first piece fits in this (a quick request):
+                                        glibc serves < 1 KiB from its small bins, while every
+                                        larger malloc first consolidates the fast bins */
+#define SRV_WATCH_PERIOD_MS 10       /* how often suspended clients are checked for a hang-up */
+#define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
+#define SRV_SHUT_NUDGE_MS 1000       /* a shut connection still open this long is shut down again */
+#define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
+#define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
+#define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
+#define SRV_CHUNKED_GRACE (1u << 20) /* a chunked body is read this far past --max-body */
+#define SRV_REQUEST_ID_MAX 64        /* longest X-Request-Id kept from a client */
+#define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
+#define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
+#define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
+
+/* Sent with every answer mechd builds (static files carry their own set from
+ * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
+ * the front end load its own scripts). JSON and text need no sources at all. */
+#define SRV_API_CSP                                                                                \
+    "default-src 'none'; frame-ancestors 'none'; base-uri 'none'; form-action 'none'"
+/* CORS (only for origins listed with --cors-origin). */
+#define SRV_CORS_METHODS "GET, HEAD, POST, OPTIONS"
+#define SRV_CORS_HEADERS "Authorization, Content-Type, If-None-Match"
+#define SRV_CORS_EXPOSE "ETag, Retry-After, X-Request-Id"
+#define SRV_CORS_MAX_AGE "600"
+
+struct srv_req;
+
+/* Per quick route (route index, api_operation_path()). Relaxed atomics: a lost update only
+ * delays the average or shifts a sample by one request. */
+struct srv_quick_stat {
+    atomic_llong cost;   /* moving average of thread CPU ns per KiB of (body +
+                            SRV_QUICK_BASE_BYTES); 0 = not measured yet */
+    atomic_uint runs;    /* runs so far: every SRV_QUICK_SAMPLE-th is measured */
+    atomic_uint too_slow; /* requests predicted over --inline-max-us: every
+                             SRV_QUICK_REPROBE-th runs inline anyway */
+};
+
+/* Receive state of a connection (struct srv_conn.rx), switched by CAS. */
+enum conn_rx {
+    CONN_RX = 0,    /* waiting for or receiving a request: the receive limit runs */
+    CONN_BUSY,      /* claimed by the I/O thread: request queued, running or answering */
+    CONN_SHUT,      /* the server shut the socket down (receive limit, room for a new
+                       connection, client gone); libmicrohttpd closes it. Final. */
+};
+
+/* One per open connection (libmicrohttpd's socket context), in http->conns
+ * under conn_mu from NOTIFY_CONNECTION STARTED to CLOSED. */
+struct srv_conn {
+    int fd;
+    atomic_int rx;         /* enum conn_rx */
+    atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
+    int eof_sweeps;        /* consecutive reaper sweeps that found the client gone (conn_mu) */
+    long long shut_ms;     /* when the server last shut it down (CONN_SHUT), 0 before (conn_mu) */
+    struct srv_conn *prev, *next;
+};
+
+struct srv_http {
+    struct MHD_Daemon *daemon;
+    const struct srv_config *cfg;
+    struct srv_pool *pool;
+    volatile int cancel; /* raised at shutdown; copied into every pooled request's flag */
+    /* Requests handed to the pool (queued or running), watched for a client
+     * hang-up by the watcher thread. Guarded by watch_mu. */
+    pthread_mutex_t watch_mu;
+    struct srv_req *watched;
+    int watch_stop;
+    int watch_started;
+    pthread_t watcher;
+    int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
+    atomic_ulong next_id; /* only for request ids when getrandom(2) fails */
+    atomic_int stopping;  /* SIGTERM: not accepting; answers carry Connection: close */
+    atomic_int inflight; /* requests between first callback and completion */
+    /* Open connections, for the receive time limit, room for new ones and
+     * reaping dead peers. Guarded by conn_mu. */
+    pthread_mutex_t conn_mu;
+    struct srv_conn *conns;
+    int n_conns; /* registered connections */
+    int n_shut;  /* ... of which CONN_SHUT (closing, no longer counted against the limit) */
+    /* The reaper's poll set (watcher thread only), grown as needed. */
+    struct pollfd *reap_pfd;
+    struct srv_conn **reap_conn;
+    size_t reap_cap;
+    /* Per route (route index, api.h): the measured cost of quick routes (see
+     * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
+    struct srv_quick_stat *quick;
+};
+
+enum req_state {
+    REQ_RECEIVING = 0, /* headers and body arriving */
+    REQ_QUEUED,        /* suspended, owned by the pool */
+    REQ_DONE,          /* aresp filled by a worker (or cancel), connection resumed */
+    REQ_ANSWERED,      /* response queued to MHD */
+};
+
+struct srv_req {
+    struct srv_job job; /* first member: the pool hands it back to run/cancel */
+    struct MHD_Connection *conn;
+    char id[SRV_REQUEST_ID_MAX + 1]; /* X-Request-Id: the client's (validated) or generated */
+    char client[48];                 /* peer address, numeric */
+    char *forwarded_for;             /* owned copy of X-Forwarded-For, or NULL */
+    unsigned long long bytes;        /* response body bytes sent */
+    double t0;
+    char *method, *path, *content_type;  /* owned copies */
+    char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
+    char *accept_encoding;               /* owned copy of Accept-Encoding, or NULL */
+    char *body;
+    size_t body_len, body_cap, body_seen;
+    int too_large;
+    int oom;
+    const char *bad_framing; /* why the body's framing is refused (static text), or NULL */
+    int close_conn;          /* answer with Connection: close */
+    int cors_ok;       /* Origin is in --cors-origin: send Access-Control-Allow-Origin */
+    int vary_origin;   /* a /v1 answer while CORS is on: send Vary: Origin */
+    int preflight;     /* a CORS preflight: answered in dispatch (keeps the connection) */
+    const char *route; /* metrics label when the server knows it ("static", ...), or NULL */
+    char *origin;      /* owned copy of the Origin header, or NULL */
+    const char *www_authenticate; /* static value for a 401, or NULL */
+    enum req_state state;
+    int status; /* HTTP status sent, 0 if none */
+    struct api_request areq;
+    struct api_request_ext aext;
+    struct api_response aresp;
+    /* Cooperative cancellation (pooled requests only). areq.cancel points at
+     * `cancel`; the watcher raises it when the client hangs up (client_gone),
+     * srv_http_quiesce when the server stops. Written with __atomic stores. */
+    volatile int cancel;
+    int client_gone;
+    long long eof_since_ms; /* when the watcher first saw end-of-file in a row, 0 if not */
+    int fd; /* the connection's socket, -1 if unknown */
+    struct srv_http *http;
+    struct srv_conn *sc; /* the connection's registration, or NULL */
+    long route_index;    /* route index (api.h) of a POST to an operation, else -1 */
+    int quick_route;     /* route is quick and the body small enough (api_quick_route) */
+    int quick_probe;     /* runs inline although predicted too slow: measure it */
+    struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
+    int watching;
+};
+
+/* The I/O thread is closing the connection on purpose (http_body.c, on_request). */
+extern _Thread_local int tl_closing_on_purpose;
+
+/* http.c */
+void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const char *vary);
+enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
+                                      const char *detail);
+enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *url,
+                           const char *method, const char *version, const char *upload_data,
+                           size_t *upload_data_size, void **con_cls);
+void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
+                  enum MHD_RequestTerminationCode toe);
+size_t unescape_no_nul(void *cls, struct MHD_Connection *c, char *s);
+
+/* http_body.c */
+const char *framing_problem(struct MHD_Connection *conn, const char *version);
+void mhd_logger(void *cls, const char *fmt, va_list ap);
+enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r);
+void take_body(struct srv_http *h, struct srv_req *r, const char *data, size_t n);
+
+/* http_security.c */
+int is_v1_path(const char *p);
+int origin_allowed(const char *list, const char *origin);
+int token_ok(const struct srv_config *cfg, const char *authorization);
+enum MHD_Result answer_preflight(struct srv_req *r);
+
+/* quick.c */
+void run_api(struct srv_req *r);
+int quick_inline(struct srv_http *h, struct srv_req *r);
+
+/* conn_watch.c */
+void watch_add(struct srv_http *h, struct srv_req *r);
+void watch_remove(struct srv_http *h, struct srv_req *r);
+void *watcher_main(void *arg);
+int conn_claim(struct srv_req *r);
+int conn_shut(const struct srv_conn *c);
+void on_connection(void *cls, struct MHD_Connection *conn, void **socket_context,
+                   enum MHD_ConnectionNotificationCode code);
+
+#endif

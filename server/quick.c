@@ -1,0 +1,116 @@
+/* quick.c — whether a quick operation is answered on the I/O thread or by a
+ * worker, from its measured CPU cost (part of the HTTP front end, see http.c).
+ *
+ * QUICK OPERATIONS. A POST that api_quick_route() accepts (a closed-form
+ * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
+ * I/O thread, with the same deadline, step budget and cancel flag as a pooled
+ * request: the suspend -> worker -> resume hand-off (two context switches, a
+ * futex wake-up and an eventfd write) costs more than such an operation. It is
+ * logged and counted in /metrics like any other request. The choice is
+ * measured, not assumed (DESIGN.md): runs of a quick route, inline or on a
+ * worker, update a moving average of the route's *thread CPU time*
+ * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
+ * the fixed costs), and a request runs inline only while its predicted time is
+ * at most --inline-max-us, so a route that turns out slow (or a large body)
+ * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
+ * time, not wall time: a thread preempted for a millisecond during a 5 µs
+ * boost (common when the clients run on the same cores) would otherwise look
+ * 200 times slower, and one such run sent every later boost to
+ * the niced workers, whose small queue then refused cheap requests with 503
+ * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
+ * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of
+ * a route always; one measurement moves the average by at most a factor of
+ * 1 + (SRV_QUICK_CAP - 1) / 8. The decision recovers: the average decays with
+ * every measured run, and a route predicted too slow still runs inline (and
+ * is measured) once in SRV_QUICK_REPROBE requests, so a full pool that
+ * refuses it cannot freeze a stale estimate. The first request of a route runs
+ * inline.
+ */
+#ifdef __linux__
+#define _GNU_SOURCE /* POLLRDHUP */
+#endif
+#include "http_internal.h"
+
+#include <arpa/inet.h>
+#include <errno.h>
+#include <malloc.h>
+#include <microhttpd.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <pthread.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <sys/resource.h>
+#include <sys/random.h>
+#include <sys/socket.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "api.h"
+#include "log.h"
+#include "static.h"
+#include "mech/budget.h"
+
+/* ---- quick operations: measured cost -------------------------------------------- */
+
+static unsigned long long quick_units(size_t body_len)
+{
+    return (unsigned long long)body_len + SRV_QUICK_BASE_BYTES;
+}
+
+/* CPU time this thread has used, in ns; -1 if the clock cannot be read. */
+static long long thread_cpu_ns(void)
+{
+    struct timespec ts;
+    if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) return -1;
+    return (long long)ts.tv_sec * 1000000000LL + ts.tv_nsec;
+}
+
+/* Fold one measured run (cpu_ns of thread CPU time for a body of body_len
+ * bytes) into the route's moving average: weight 1/8, the measurement capped
+ * at SRV_QUICK_CAP times the average, so one outlier (a page fault, a cold
+ * cache) cannot send a route to the pool on its own. */
+static void quick_record(struct srv_quick_stat *q, long long cpu_ns, size_t body_len)
+{
+    long long per_kib = (long long)((double)cpu_ns * 1024.0 / (double)quick_units(body_len)) + 1;
+    long long old = atomic_load_explicit(&q->cost, memory_order_relaxed);
+    if (old > 0 && per_kib > SRV_QUICK_CAP * old) per_kib = SRV_QUICK_CAP * old;
+    atomic_store_explicit(&q->cost, old ? old + (per_kib - old) / 8 : per_kib,
+                          memory_order_relaxed);
+}
+
+/* Run the API on r; for a quick route, measure the run's thread CPU time on
+ * one run in SRV_QUICK_SAMPLE (and on every probe) for the route's average. */
+void run_api(struct srv_req *r)
+{
+    struct srv_quick_stat *q =
+        r->quick_route && r->http->quick ? &r->http->quick[r->route_index] : NULL;
+    int measure =
+        q && (r->quick_probe ||
+              atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
+    long long c0 = measure ? thread_cpu_ns() : -1;
+    api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    if (c0 < 0) return;
+    long long c1 = thread_cpu_ns();
+    if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);
+}
+
+/* Whether the quick request r runs inline: predicted to finish within
+ * --inline-max-us, or (once in SRV_QUICK_REPROBE requests predicted over it)
+ * a probe that re-measures the route, so the estimate can come back down. */
+int quick_inline(struct srv_http *h, struct srv_req *r)
+{
+    if (!r->quick_route || !h->quick || h->cfg->inline_max_us <= 0) return 0;
+    struct srv_quick_stat *q = &h->quick[r->route_index];
+    long long per_kib = atomic_load_explicit(&q->cost, memory_order_relaxed);
+    double predicted_ns = (double)per_kib * (double)quick_units(r->body_len) / 1024.0;
+    if (predicted_ns <= (double)h->cfg->inline_max_us * 1000.0) return 1;
+    unsigned n = atomic_fetch_add_explicit(&q->too_slow, 1, memory_order_relaxed);
+    if (n % SRV_QUICK_REPROBE != SRV_QUICK_REPROBE - 1) return 0;
+    r->quick_probe = 1;
+    return 1;
+}

@@ -1,0 +1,25 @@
+#!/bin/sh
+# One face per layer (issue 17): the server (server/) sees the API layer only
+# through api/api.h — no route table (routes.h), endpoint internals
+# (endpoint.h) or other api/ header — and the API layer does not set up the
+# process in a library init path (jansson's allocator and GSL's error handler
+# are main()'s: api_install_json_allocator(), gsl_set_error_handler_off()).
+# Usage: check_layers.sh SOURCE_DIR
+set -eu
+src=$1
+status=0
+api_headers=$(cd "$src/api" && ls *.h | grep -vx 'api.h' | sed 's/[.]/[.]/g' | paste -sd'|' -)
+bad=$(grep -nE "#include \"($api_headers)\"" "$src"/server/*.c "$src"/server/*.h \
+        "$src"/server/standalone/*.c 2>/dev/null || true)
+if [ -n "$bad" ]; then
+    echo "server/ includes API headers other than api.h:"; echo "$bad" | sed 's/^/    /'
+    status=1
+fi
+setup=$(grep -nE '\b(gsl_set_error_handler(_off)?|json_set_alloc_funcs)\s*\(' "$src"/api/*.c \
+        "$src"/core/*.c | grep -v 'api/api.c:.*json_set_alloc_funcs(json_malloc_checked' || true)
+if [ -n "$setup" ]; then
+    echo "api/ or core/ sets process-wide state (main's job):"; echo "$setup" | sed 's/^/    /'
+    status=1
+fi
+[ $status = 0 ] && echo "1 passed, 0 failed" || echo "0 passed, 1 failed"
+exit $status
