@@ -20,6 +20,7 @@
 #include "api.h"
 #include "config.h"
 #include "eval.h"
+#include "healthcheck.h"
 #include "http.h"
 #include "log.h"
 #include "static.h"
@@ -40,6 +41,9 @@ int main(int argc, char **argv)
         }
         return srv_eval_main(argc - 1, argv + 1, stdin, stdout, stderr);
     }
+
+    if (argc >= 2 && strcmp(argv[1], "healthcheck") == 0) /* the image's HEALTHCHECK */
+        return srv_healthcheck_main(argc - 1, argv + 1, stderr);
 
     struct srv_config cfg;
     memset(&cfg, 0, sizeof cfg);
