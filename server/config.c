@@ -34,6 +34,7 @@ enum opt_id {
     OPT_MAX_SAMPLES,
     OPT_MAX_CONNECTIONS,
     OPT_SHUTDOWN_GRACE_MS,
+    OPT_LOG_FORMAT,
     OPT_COUNT
 };
 
@@ -97,6 +98,9 @@ static const struct opt_spec {
                                "on SIGTERM/SIGINT: stop accepting, then let running and queued "
                                "requests finish for up to this many ms before cancelling them "
                                "(keep it under the container's grace period, often 30 s)"},
+    [OPT_LOG_FORMAT] = {"--log-format", "MECHD_LOG_FORMAT", "text", 0, 0,
+                        "log lines on stderr: text (\"mechd: TIME req=ID ...\") or json (one "
+                        "JSON object per line, for log collectors)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -240,6 +244,14 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         return load_token(cfg, value, source, err);
     }
     if (id == OPT_CORS_ORIGIN) return add_origins(cfg, value, source, err);
+    if (id == OPT_LOG_FORMAT) {
+        if (strcmp(value, "text") && strcmp(value, "json")) {
+            fprintf(err, "mechd: invalid %s '%.40s': expected text or json\n", source, value);
+            return -1;
+        }
+        cfg->log_json = !strcmp(value, "json");
+        return 0;
+    }
     long long v;
     if (parse_int(value, o->min, o->max, &v) != 0) {
         fprintf(err, "mechd: invalid %s '%s': expected an integer in [%lld, %lld]\n", source, value,

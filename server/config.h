@@ -32,6 +32,7 @@ struct srv_config {
                                 idle one is closed to make room, 8..100000 */
     long shutdown_grace_ms;  /* on SIGTERM/SIGINT, time running and queued requests get to
                                 finish before they are cancelled, 0..600000 ms */
+    int log_json;            /* --log-format json: log lines are JSON objects */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

@@ -55,6 +55,7 @@ int main(int argc, char **argv)
     case SRV_CONFIG_ERROR:
         return 2;
     }
+    srv_log_set_json(cfg.log_json); /* before any thread logs */
 
     gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
     /* Return memory after large answers. glibc's default thresholds are
