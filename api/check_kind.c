@@ -9,9 +9,9 @@
 
 #define KIND_MAX_DIM 16 /* rows and columns of SUBSPACE / EIGENVECTORS */
 
-static const char *const kind_names[API_KIND_COUNT] = {
-    "number", "vector",   "matrix",       "axis",      "quaternion",
-    "angle",  "subspace", "eigenvectors", "axis_angle"};
+static const char *const kind_names[API_KIND_COUNT] = {"number",   "vector",       "matrix",
+                                                       "axis",     "quaternion",   "angle",
+                                                       "subspace", "eigenvectors", "axis_angle"};
 
 const char api_check_kind_list[] =
     "number, vector, matrix, axis, quaternion, angle, subspace, eigenvectors, axis_angle";
@@ -39,27 +39,62 @@ const char *api_check_kind_name(enum api_check_kind k)
 
 static const struct api_unit units[] = {
     {"1", 1, "1"},
-    {"m", 1, "L"}, {"km", 1e3, "L"}, {"cm", 1e-2, "L"}, {"mm", 1e-3, "L"}, {"um", 1e-6, "L"},
-    {"nm", 1e-9, "L"}, {"au", 1.495978707e11, "L"}, {"ly", 9.4607304725808e15, "L"},
+    {"m", 1, "L"},
+    {"km", 1e3, "L"},
+    {"cm", 1e-2, "L"},
+    {"mm", 1e-3, "L"},
+    {"um", 1e-6, "L"},
+    {"nm", 1e-9, "L"},
+    {"au", 1.495978707e11, "L"},
+    {"ly", 9.4607304725808e15, "L"},
     {"pc", 3.0856775814913673e16, "L"},
-    {"s", 1, "T"}, {"ms", 1e-3, "T"}, {"us", 1e-6, "T"}, {"ns", 1e-9, "T"}, {"min", 60, "T"},
-    {"h", 3600, "T"}, {"day", 86400, "T"}, {"yr", 31557600, "T"},
-    {"kg", 1, "M"}, {"g", 1e-3, "M"}, {"t", 1e3, "M"},
-    {"J", 1, "E"}, {"kJ", 1e3, "E"}, {"MJ", 1e6, "E"}, {"erg", 1e-7, "E"}, {"eV", EV, "E"},
-    {"keV", 1e3 * EV, "E"}, {"MeV", 1e6 * EV, "E"}, {"GeV", 1e9 * EV, "E"},
-    {"rad", 1, "angle"}, {"deg", PI / 180, "angle"}, {"rev", 2 * PI, "angle"},
-    {"arcmin", PI / 10800, "angle"}, {"arcsec", PI / 648000, "angle"},
-    {"m/s", 1, "L/T"}, {"km/s", 1e3, "L/T"}, {"km/h", 1 / 3.6, "L/T"}, {"cm/s", 1e-2, "L/T"},
+    {"s", 1, "T"},
+    {"ms", 1e-3, "T"},
+    {"us", 1e-6, "T"},
+    {"ns", 1e-9, "T"},
+    {"min", 60, "T"},
+    {"h", 3600, "T"},
+    {"day", 86400, "T"},
+    {"yr", 31557600, "T"},
+    {"kg", 1, "M"},
+    {"g", 1e-3, "M"},
+    {"t", 1e3, "M"},
+    {"J", 1, "E"},
+    {"kJ", 1e3, "E"},
+    {"MJ", 1e6, "E"},
+    {"erg", 1e-7, "E"},
+    {"eV", EV, "E"},
+    {"keV", 1e3 * EV, "E"},
+    {"MeV", 1e6 * EV, "E"},
+    {"GeV", 1e9 * EV, "E"},
+    {"rad", 1, "angle"},
+    {"deg", PI / 180, "angle"},
+    {"rev", 2 * PI, "angle"},
+    {"arcmin", PI / 10800, "angle"},
+    {"arcsec", PI / 648000, "angle"},
+    {"m/s", 1, "L/T"},
+    {"km/s", 1e3, "L/T"},
+    {"km/h", 1 / 3.6, "L/T"},
+    {"cm/s", 1e-2, "L/T"},
     {"m/s^2", 1, "L/T2"},
-    {"rad/s", 1, "angle/T"}, {"deg/s", PI / 180, "angle/T"}, {"rpm", 2 * PI / 60, "angle/T"},
+    {"rad/s", 1, "angle/T"},
+    {"deg/s", PI / 180, "angle/T"},
+    {"rpm", 2 * PI / 60, "angle/T"},
     {"rev/s", 2 * PI, "angle/T"},
-    {"Hz", 1, "1/T"}, {"kHz", 1e3, "1/T"},
-    {"kg m^2", 1, "ML2"}, {"g cm^2", 1e-7, "ML2"},
-    {"kg m^2/s", 1, "ML2/T"}, {"J s", 1, "ML2/T"},
-    {"kg m/s", 1, "ML/T"}, {"MeV/c", 1e6 * EV / C_LIGHT, "ML/T"},
+    {"Hz", 1, "1/T"},
+    {"kHz", 1e3, "1/T"},
+    {"kg m^2", 1, "ML2"},
+    {"g cm^2", 1e-7, "ML2"},
+    {"kg m^2/s", 1, "ML2/T"},
+    {"J s", 1, "ML2/T"},
+    {"kg m/s", 1, "ML/T"},
+    {"MeV/c", 1e6 * EV / C_LIGHT, "ML/T"},
     {"GeV/c", 1e9 * EV / C_LIGHT, "ML/T"},
-    {"N", 1, "F"}, {"kN", 1e3, "F"}, {"N m", 1, "torque"},
-    {"W", 1, "P"}, {"kW", 1e3, "P"},
+    {"N", 1, "F"},
+    {"kN", 1e3, "F"},
+    {"N m", 1, "torque"},
+    {"W", 1, "P"},
+    {"kW", 1e3, "P"},
 };
 
 const char api_unit_list[] =
@@ -81,7 +116,7 @@ const struct api_unit *api_unit_find(const char *name)
 struct kind_default {
     const char *op, *pointer; /* "*" matches one array index */
     enum api_check_kind kind;
-    const char *unit;         /* SI unit of the field; "1" dimensionless */
+    const char *unit; /* SI unit of the field; "1" dimensionless */
 };
 
 /* The fields whose kind is not "a plain number": what a student's answer to
@@ -130,7 +165,8 @@ static int pointer_matches(const char *pattern, const char *p)
     while (*pattern && *p) {
         if (pattern[0] == '*' && (pattern[1] == '/' || !pattern[1])) {
             if (*p < '0' || *p > '9') return 0;
-            while (*p >= '0' && *p <= '9') p++;
+            while (*p >= '0' && *p <= '9')
+                p++;
             pattern++;
             continue;
         }
@@ -185,7 +221,8 @@ static double norm(const double *x, size_t n)
     for (size_t i = 0; i < n; i++)
         if (fabs(x[i]) > m) m = fabs(x[i]);
     if (m == 0 || !isfinite(m)) return m;
-    for (size_t i = 0; i < n; i++) s += (x[i] / m) * (x[i] / m);
+    for (size_t i = 0; i < n; i++)
+        s += (x[i] / m) * (x[i] / m);
     return m * sqrt(s);
 }
 
@@ -219,8 +256,8 @@ static void note_error(struct api_check_outcome *o, double err, double mag, doub
 
 /* One judged quantity: correct when err <= bound(mag), or when both the
  * expected magnitude and the student's are zero at the problem's scale. */
-static int judge(const struct api_check_tol *t, struct api_check_outcome *o, double err,
-                 double mag, double amag)
+static int judge(const struct api_check_tol *t, struct api_check_outcome *o, double err, double mag,
+                 double amag)
 {
     double b = api_check_bound(t, mag);
     double z = zero_level(t);
@@ -255,11 +292,13 @@ static void as_whole(const double *e, const double *a, size_t n, const struct ap
     double d[KIND_MAX_DIM * KIND_MAX_DIM];
     double err = 0;
     if (n <= sizeof d / sizeof d[0]) {
-        for (size_t i = 0; i < n; i++) d[i] = a[i] - e[i];
+        for (size_t i = 0; i < n; i++)
+            d[i] = a[i] - e[i];
         err = norm(d, n);
     } else { /* long vectors: plain sum (no overflow concern at answer scale) */
         double s = 0;
-        for (size_t i = 0; i < n; i++) s += (a[i] - e[i]) * (a[i] - e[i]);
+        for (size_t i = 0; i < n; i++)
+            s += (a[i] - e[i]) * (a[i] - e[i]);
         err = sqrt(s);
     }
     if (!judge(t, o, err, norm(e, n), norm(a, n))) wrong_at(o, 0);
@@ -270,7 +309,8 @@ static int unit_of(const double *x, size_t n, double *u)
 {
     double m = norm(x, n);
     if (!(m > 0) || !isfinite(m)) return 0;
-    for (size_t i = 0; i < n; i++) u[i] = x[i] / m;
+    for (size_t i = 0; i < n; i++)
+        u[i] = x[i] / m;
     return 1;
 }
 
@@ -293,19 +333,22 @@ static int axis_row(const double *e, const double *a, size_t n, const struct api
  * unit) lies in the span, and the student rows are mutually orthogonal.
  * Returns the number of wrong rows, recorded with index offset base. */
 static size_t subspace_rows(const double *e, const double *a, size_t k, size_t n,
-                            const struct api_check_tol *t, struct api_check_outcome *o,
-                            size_t base, const char **note)
+                            const struct api_check_tol *t, struct api_check_outcome *o, size_t base,
+                            const char **note)
 {
     double basis[KIND_MAX_DIM][KIND_MAX_DIM];
     double ua[KIND_MAX_DIM][KIND_MAX_DIM];
     size_t rank = 0;
     for (size_t r = 0; r < k; r++) { /* modified Gram-Schmidt on the expected rows */
         double v[KIND_MAX_DIM];
-        for (size_t j = 0; j < n; j++) v[j] = e[r * n + j];
+        for (size_t j = 0; j < n; j++)
+            v[j] = e[r * n + j];
         for (size_t q = 0; q < rank; q++) {
             double d = 0;
-            for (size_t j = 0; j < n; j++) d += v[j] * basis[q][j];
-            for (size_t j = 0; j < n; j++) v[j] -= d * basis[q][j];
+            for (size_t j = 0; j < n; j++)
+                d += v[j] * basis[q][j];
+            for (size_t j = 0; j < n; j++)
+                v[j] -= d * basis[q][j];
         }
         if (norm(v, n) > 1e-8 && unit_of(v, n, basis[rank])) rank++;
     }
@@ -314,18 +357,22 @@ static size_t subspace_rows(const double *e, const double *a, size_t k, size_t n
     for (size_t r = 0; r < k; r++) {
         int ok = unit_of(a + r * n, n, ua[r]);
         double err = 1; /* a zero row: |0 - its direction| */
-        if (ok) { /* distance from the span */
+        if (ok) {       /* distance from the span */
             double v[KIND_MAX_DIM];
-            for (size_t j = 0; j < n; j++) v[j] = ua[r][j];
+            for (size_t j = 0; j < n; j++)
+                v[j] = ua[r][j];
             for (size_t q = 0; q < rank; q++) {
                 double d = 0;
-                for (size_t j = 0; j < n; j++) d += ua[r][j] * basis[q][j];
-                for (size_t j = 0; j < n; j++) v[j] -= d * basis[q][j];
+                for (size_t j = 0; j < n; j++)
+                    d += ua[r][j] * basis[q][j];
+                for (size_t j = 0; j < n; j++)
+                    v[j] -= d * basis[q][j];
             }
             err = norm(v, n);
             for (size_t s = 0; s < r; s++) { /* orthogonal to the earlier rows */
                 double d = 0;
-                for (size_t j = 0; j < n; j++) d += ua[r][j] * ua[s][j];
+                for (size_t j = 0; j < n; j++)
+                    d += ua[r][j] * ua[s][j];
                 if (fabs(d) > err) err = fabs(d);
             }
         } else if (note) {
@@ -360,7 +407,8 @@ static int quat_of_axis_angle(const double *x, double q[4])
         return 1;
     }
     q[0] = cos(h);
-    for (int i = 0; i < 3; i++) q[i + 1] = sin(h) * u[i];
+    for (int i = 0; i < 3; i++)
+        q[i + 1] = sin(h) * u[i];
     return 1;
 }
 

@@ -78,13 +78,13 @@ double api_check_bound(const struct api_check_tol *t, double mag);
 /* Result of comparing one answer. */
 struct api_check_outcome {
     int correct;
-    double abs_err;  /* the error measured (element-wise: the largest) */
-    double rel_err;  /* abs_err / |expected| over nonzero expected; valid if have_rel */
+    double abs_err; /* the error measured (element-wise: the largest) */
+    double rel_err; /* abs_err / |expected| over nonzero expected; valid if have_rel */
     int have_rel;
-    double bound;    /* the bound applied (the largest) */
-    size_t compared; /* numbers compared */
-    size_t nwrong;   /* wrong elements (NUMBER, ANGLE) or rows (EIGENVECTORS, SUBSPACE) */
-    size_t wrong[20];/* their indices into the flat array (rows for row kinds) */
+    double bound;     /* the bound applied (the largest) */
+    size_t compared;  /* numbers compared */
+    size_t nwrong;    /* wrong elements (NUMBER, ANGLE) or rows (EIGENVECTORS, SUBSPACE) */
+    size_t wrong[20]; /* their indices into the flat array (rows for row kinds) */
 };
 
 /* Compare the student's a[0..n) with the expected e[0..n) as kind k; rows x

@@ -278,7 +278,8 @@ static void shape_words(const json_t *j, char *buf, size_t n)
     int rect = json_is_array(first);
     for (size_t i = 0; i < rows && rect; i++) {
         const json_t *r = json_array_get(j, i);
-        rect = json_is_array(r) && json_array_size(r) == cols && json_is_number(json_array_get(r, 0));
+        rect = json_is_array(r) && json_array_size(r) == cols &&
+               json_is_number(json_array_get(r, 0));
     }
     if (rect)
         snprintf(buf, n, "a %zu x %zu array (%zu arrays of %zu numbers)", rows, cols, rows, cols);
@@ -334,8 +335,8 @@ static int flatten2(const json_t *j, double **x, size_t *rows, size_t *cols)
         return 0;
     }
     for (size_t r = 0; r < *rows; r++) {
-        const json_t *row = *rows == 1 && json_is_number(json_array_get(j, 0)) ? j
-                                                                               : json_array_get(j, r);
+        const json_t *row =
+            *rows == 1 && json_is_number(json_array_get(j, 0)) ? j : json_array_get(j, r);
         if (json_array_size(row) != *cols) goto bad;
         for (size_t c = 0; c < *cols; c++) {
             const json_t *v = json_array_get(row, c);
@@ -497,8 +498,13 @@ static json_t *feedback(const struct grade *g, const json_t *want, const char *u
     else
         shape_words(want, shape, sizeof shape);
     const char *u = unit ? unit : field_unit;
-    int n = snprintf(msg, sizeof msg, "%s Expected %s, given as %s%s%s%s%s", 
-                     g->wrong == 0 ? "Correct." : "Not within the tolerance.", kind_words(g->kind),
+    const char *what = kind_words(g->kind);
+    if (json_is_array(want) && g->kind == API_KIND_NUMBER)
+        what = "numbers, each judged on its own";
+    if (json_is_array(want) && g->kind == API_KIND_ANGLE)
+        what = "angles, each modulo a full turn";
+    int n = snprintf(msg, sizeof msg, "%s Expected %s, given as %s%s%s%s%s",
+                     g->wrong == 0 ? "Correct." : "Not within the tolerance.", what,
                      shape, u && strcmp(u, "1") ? ", in " : "", u && strcmp(u, "1") ? u : "",
                      u && !strcmp(u, "1") ? ", dimensionless" : "",
                      !u ? " (in SI units unless answer.unit says otherwise)" : "");
@@ -512,7 +518,8 @@ static json_t *feedback(const struct grade *g, const json_t *want, const char *u
         json_object_set_new(shown, "angle",
                             json_real(json_number_value(json_object_get(want, "angle")) /
                                       g->factor));
-    char *text = shown ? json_dumps(shown, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(6)) : NULL;
+    char *text =
+        shown ? json_dumps(shown, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(6)) : NULL;
     json_decref(shown);
     char full[1400];
     snprintf(full, sizeof full, "%s The expected value is %.400s%s%s.", msg, text ? text : "?",

@@ -61,10 +61,14 @@ int srv_healthcheck_main(int argc, char **argv, FILE *err)
     }
     for (int i = 1; i < argc; i++) {
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(argv[i], "--port") && !parse_int(v, 1, 65535, &port)) i++;
-        else if (!strcmp(argv[i], "--timeout-ms") && !parse_int(v, 1, HC_MAX_TIMEOUT_MS, &timeout)) i++;
-        else if (!strcmp(argv[i], "--host") && v) { host = v; i++; }
-        else {
+        if (!strcmp(argv[i], "--port") && !parse_int(v, 1, 65535, &port))
+            i++;
+        else if (!strcmp(argv[i], "--timeout-ms") && !parse_int(v, 1, HC_MAX_TIMEOUT_MS, &timeout))
+            i++;
+        else if (!strcmp(argv[i], "--host") && v) {
+            host = v;
+            i++;
+        } else {
             fprintf(err, "usage: mechd healthcheck [--port N] [--host ADDR] [--timeout-ms N]\n"
                          "  GET /healthz from mechd at ADDR:N (default 127.0.0.1, MECHD_PORT or "
                          "8080); exit 0 when it answers 200\n");
@@ -116,9 +120,12 @@ int srv_healthcheck_main(int argc, char **argv, FILE *err)
     size_t sent = 0;
     while (!why && sent < sizeof req - 1) {
         ssize_t n = send(fd, req + sent, sizeof req - 1 - sent, MSG_NOSIGNAL);
-        if (n > 0) sent += (size_t)n;
-        else if (n < 0 && errno != EAGAIN && errno != EINTR) why = strerror(errno);
-        else if (wait_fd(fd, POLLOUT, &deadline)) why = "could not send within the timeout";
+        if (n > 0)
+            sent += (size_t)n;
+        else if (n < 0 && errno != EAGAIN && errno != EINTR)
+            why = strerror(errno);
+        else if (wait_fd(fd, POLLOUT, &deadline))
+            why = "could not send within the timeout";
     }
     char line[64];
     size_t got = 0;
@@ -128,9 +135,12 @@ int srv_healthcheck_main(int argc, char **argv, FILE *err)
             break;
         }
         ssize_t n = recv(fd, line + got, sizeof line - 1 - got, 0);
-        if (n > 0) got += (size_t)n;
-        else if (n == 0) break;
-        else if (errno != EAGAIN && errno != EINTR) why = strerror(errno);
+        if (n > 0)
+            got += (size_t)n;
+        else if (n == 0)
+            break;
+        else if (errno != EAGAIN && errno != EINTR)
+            why = strerror(errno);
     }
     close(fd);
     line[got] = '\0';
@@ -139,8 +149,8 @@ int srv_healthcheck_main(int argc, char **argv, FILE *err)
     if (why) {
         char *nl = strpbrk(line, "\r\n");
         if (nl) *nl = '\0';
-        fprintf(err, "mechd healthcheck: %s:%ld: %s%s%.40s%s\n", host, port, why,
-                got ? " (\"" : "", got ? line : "", got ? "\")" : "");
+        fprintf(err, "mechd healthcheck: %s:%ld: %s%s%.40s%s\n", host, port, why, got ? " (\"" : "",
+                got ? line : "", got ? "\")" : "");
         return 1;
     }
     return 0;
