@@ -313,8 +313,8 @@ static int same_shape(const json_t *want, const json_t *got, char *where, size_t
 }
 
 /* Flatten a number, an array of numbers or a rectangular array of arrays of
- * numbers into x (malloc'ed, *rows x *cols); -1 for any other shape (or no
- * memory: *x stays NULL then). */
+ * numbers into x (malloc'ed, *rows x *cols); -1 for any other shape, -2 when
+ * out of memory (*x stays NULL then). */
 static int flatten2(const json_t *j, double **x, size_t *rows, size_t *cols)
 {
     *x = NULL;
@@ -329,7 +329,7 @@ static int flatten2(const json_t *j, double **x, size_t *rows, size_t *cols)
     }
     if (!*rows || !*cols || *rows * *cols > CHECK_MAX_ELEMENTS) return -1;
     *x = malloc(*rows * *cols * sizeof **x);
-    if (!*x) return -1;
+    if (!*x) return -2;
     if (json_is_number(j)) {
         (*x)[0] = json_number_value(j);
         return 0;
@@ -577,9 +577,18 @@ static int grade_whole(struct api_call *c, struct grade *g, const json_t *want,
         a = av;
     } else {
         size_t r2, c2;
-        if (flatten2(want, &e, &rows, &cols) || flatten2(value, &a, &r2, &c2)) {
+        int fe = flatten2(want, &e, &rows, &cols);
+        int fa = fe ? 0 : flatten2(value, &a, &r2, &c2);
+        if (fe || fa) {
             free(e);
             free(a);
+            if (fe == -2 || fa == -2) {
+                struct mech_error me;
+                mech_error_clear(&me);
+                mech_error_set(&me, MECH_ENOMEM, NULL, "out of memory");
+                api_call_fail_core(c, MECH_ENOMEM, &me, "");
+                return -1;
+            }
             api_call_invalid(c, kind_ptr, "kind %s compares a number, an array of numbers or "
                              "rows of numbers; %.200s is not one", api_check_kind_name(g->kind),
                              pointer);
