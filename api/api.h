@@ -148,6 +148,12 @@ void api_response_problem(struct api_response *resp, enum api_problem kind, cons
  * fixed 500 out-of-memory problem (never a problem silently missing a member). */
 void api_response_set_instance(struct api_response *resp, const char *instance);
 
+/* Give a problem+json body in resp a "request_id" member (the request's
+ * X-Request-Id, copied, JSON-escaped, at most 256 bytes), as its last member;
+ * nothing for other bodies or an empty id. Out of memory as above. Used by the
+ * server for every problem it sends. */
+void api_response_set_request_id(struct api_response *resp, const char *id);
+
 /* Free the body of a response (safe on a zeroed or already-freed response). */
 void api_response_free(struct api_response *resp);
 

@@ -10,8 +10,10 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "check_kind.h"
 #include "endpoint.h"
 #include "respond.h"
 #include "schema.h"
@@ -21,6 +23,7 @@
 #define CHECK_CLOSED_FORM_RELATIVE 1e-12  /* numerical error assumed without evidence */
 #define CHECK_EVIDENCE_FACTOR 10.0        /* safety factor on the operation's own error figures */
 #define CHECK_MAX_ELEMENTS 100000         /* numbers compared in one answer */
+#define CHECK_PI 3.14159265358979323846  /* the least scale of an angle */
 
 /* ---- shared ----------------------------------------------------------------- */
 
@@ -185,43 +188,48 @@ static double find_evidence(json_t *answer, const char *pointer, char *where, si
 /* ---- comparison ------------------------------------------------------------------ */
 
 struct grade {
-    double rel, abs_tol;  /* given criteria; < 0 when absent */
-    int sig;              /* significant figures; 0 when absent */
-    double rec_rel, rec_abs;
+    struct api_check_tol tol;
+    enum api_check_kind kind;
+    double factor;        /* student's unit -> the field's unit */
     double max_abs_err, max_rel_err, max_bound;
     int have_rel;
     size_t count, wrong;
+    const char *note;     /* from the comparison (a zero axis ...); NULL if none */
     json_t *wrong_ptrs;   /* pointers into the operation's answer */
 };
 
-/* Half a unit in the n-th significant figure of e. */
-static double sig_bound(double e, int n)
+static void grade_add(struct grade *g, const struct api_check_outcome *o)
 {
-    if (e == 0 || n <= 0) return 0;
-    double ex = floor(log10(fabs(e)));
-    return 0.5 * pow(10.0, ex - n + 1);
+    g->count += o->compared;
+    if (o->abs_err > g->max_abs_err || isnan(o->abs_err)) g->max_abs_err = o->abs_err;
+    if (o->have_rel && (!g->have_rel || o->rel_err > g->max_rel_err)) g->max_rel_err = o->rel_err;
+    g->have_rel |= o->have_rel;
+    if (o->bound > g->max_bound) g->max_bound = o->bound;
 }
 
-static void grade_one(struct grade *g, double e, double a, const char *ptr)
+static void grade_wrong(struct grade *g, const char *ptr)
 {
-    double err = fabs(a - e);
-    double ae = fabs(e);
-    double bound = g->rec_abs + g->rec_rel * ae;
-    if (g->rel >= 0 && g->rel * ae > bound) bound = g->rel * ae;
-    if (g->abs_tol >= 0 && g->abs_tol > bound) bound = g->abs_tol;
-    if (g->sig > 0 && sig_bound(e, g->sig) > bound) bound = sig_bound(e, g->sig);
-    g->count++;
-    if (err > g->max_abs_err) g->max_abs_err = err;
-    if (ae > 0) {
-        double re = err / ae;
-        if (!g->have_rel || re > g->max_rel_err) g->max_rel_err = re;
-        g->have_rel = 1;
+    g->wrong++;
+    if (g->wrong_ptrs && json_array_size(g->wrong_ptrs) < 20)
+        json_array_append_new(g->wrong_ptrs, json_string(ptr));
+}
+
+/* Element-wise kinds (number, angle): every number of the tree on its own. */
+static void grade_tree(struct grade *g, const json_t *want, const json_t *got, char *ptr, size_t n)
+{
+    if (json_is_number(want)) {
+        double e = json_number_value(want), a = json_number_value(got) * g->factor;
+        struct api_check_outcome o;
+        api_check_compare(g->kind, &e, &a, 1, 1, NULL, 0, &g->tol, &o, NULL);
+        grade_add(g, &o);
+        if (!o.correct) grade_wrong(g, ptr);
+        return;
     }
-    if (bound > g->max_bound) g->max_bound = bound;
-    if (!(err <= bound)) {
-        g->wrong++;
-        if (g->wrong_ptrs && json_array_size(g->wrong_ptrs) < 20)
-            json_array_append_new(g->wrong_ptrs, json_string(ptr));
+    size_t len = strlen(ptr);
+    for (size_t i = 0; i < json_array_size(want); i++) {
+        snprintf(ptr + len, n - len, "/%zu", i);
+        grade_tree(g, json_array_get(want, i), json_array_get(got, i), ptr, n);
+        ptr[len] = '\0';
     }
 }
 
@@ -239,6 +247,44 @@ static double max_abs(const json_t *j, int depth)
         }
     }
     return m;
+}
+
+/* Numbers in a numeric tree. */
+static size_t count_numbers(const json_t *j, int depth)
+{
+    if (json_is_number(j)) return 1;
+    size_t n = 0;
+    if (json_is_array(j) && depth < 8)
+        for (size_t i = 0; i < json_array_size(j); i++)
+            n += count_numbers(json_array_get(j, i), depth + 1);
+    return n;
+}
+
+/* Shape of a numeric tree in words: "a number", "an array of 3 numbers",
+ * "a 3 x 3 array", or "nested arrays of 12 numbers". */
+static void shape_words(const json_t *j, char *buf, size_t n)
+{
+    if (json_is_number(j)) {
+        snprintf(buf, n, "a number");
+        return;
+    }
+    size_t rows = json_array_size(j);
+    const json_t *first = json_array_get(j, 0);
+    if (json_is_number(first)) {
+        snprintf(buf, n, "an array of %zu number%s", rows, rows == 1 ? "" : "s");
+        return;
+    }
+    size_t cols = json_array_size(first);
+    int rect = json_is_array(first);
+    for (size_t i = 0; i < rows && rect; i++) {
+        const json_t *r = json_array_get(j, i);
+        rect = json_is_array(r) && json_array_size(r) == cols &&
+               json_is_number(json_array_get(r, 0));
+    }
+    if (rect)
+        snprintf(buf, n, "a %zu x %zu array (%zu arrays of %zu numbers)", rows, cols, rows, cols);
+    else
+        snprintf(buf, n, "nested arrays of %zu numbers in all", count_numbers(j, 0));
 }
 
 /* Shape check: want (the expected value) and got (the answer's value) are both
@@ -266,18 +312,59 @@ static int same_shape(const json_t *want, const json_t *got, char *where, size_t
     return *count > CHECK_MAX_ELEMENTS ? -1 : 0;
 }
 
-static void grade_tree(struct grade *g, const json_t *want, const json_t *got, char *ptr, size_t n)
+/* Flatten a number, an array of numbers or a rectangular array of arrays of
+ * numbers into x (malloc'ed, *rows x *cols); -1 for any other shape, -2 when
+ * out of memory (*x stays NULL then). */
+static int flatten2(const json_t *j, double **x, size_t *rows, size_t *cols)
 {
-    if (json_is_number(want)) {
-        grade_one(g, json_number_value(want), json_number_value(got), ptr);
-        return;
+    *x = NULL;
+    if (json_is_number(j)) {
+        *rows = *cols = 1;
+    } else if (json_is_number(json_array_get(j, 0))) {
+        *rows = 1;
+        *cols = json_array_size(j);
+    } else {
+        *rows = json_array_size(j);
+        *cols = json_array_size(json_array_get(j, 0));
     }
-    size_t len = strlen(ptr);
-    for (size_t i = 0; i < json_array_size(want); i++) {
-        snprintf(ptr + len, n - len, "/%zu", i);
-        grade_tree(g, json_array_get(want, i), json_array_get(got, i), ptr, n);
-        ptr[len] = '\0';
+    if (!*rows || !*cols || *rows * *cols > CHECK_MAX_ELEMENTS) return -1;
+    *x = malloc(*rows * *cols * sizeof **x);
+    if (!*x) return -2;
+    if (json_is_number(j)) {
+        (*x)[0] = json_number_value(j);
+        return 0;
     }
+    for (size_t r = 0; r < *rows; r++) {
+        const json_t *row =
+            *rows == 1 && json_is_number(json_array_get(j, 0)) ? j : json_array_get(j, r);
+        if (json_array_size(row) != *cols) goto bad;
+        for (size_t c = 0; c < *cols; c++) {
+            const json_t *v = json_array_get(row, c);
+            if (!json_is_number(v)) goto bad;
+            (*x)[r * *cols + c] = json_number_value(v);
+        }
+    }
+    return 0;
+bad:
+    free(*x);
+    *x = NULL;
+    return -1;
+}
+
+/* {"axis": [x, y, z], "angle": t} as [x, y, z, t]; -1 if not that shape. */
+static int axis_angle_of(const json_t *j, double x[4])
+{
+    const json_t *axis = json_object_get(j, "axis");
+    const json_t *angle = json_object_get(j, "angle");
+    if (!json_is_object(j) || json_object_size(j) != 2 || !json_is_array(axis) ||
+        json_array_size(axis) != 3 || !json_is_number(angle))
+        return -1;
+    for (size_t i = 0; i < 3; i++) {
+        if (!json_is_number(json_array_get(axis, i))) return -1;
+        x[i] = json_number_value(json_array_get(axis, i));
+    }
+    x[3] = json_number_value(angle);
+    return 0;
 }
 
 /* Whether a value is a number or a (nested) array with only numbers. */
@@ -297,6 +384,10 @@ static int numeric_tree(const json_t *j, int depth)
     "{\"type\":\"string\",\"description\":\"path of a POST operation, e.g. "                       \
     "\\\"/v1/rigid/inertia\\\" (not /v1/check or /v1/batch)\"}"
 
+#define KIND_ENUM                                                                                  \
+    "[\"number\",\"vector\",\"matrix\",\"axis\",\"quaternion\",\"angle\",\"subspace\","         \
+    "\"eigenvectors\",\"axis_angle\"]"
+
 static const char check_schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,"
     "\"required\":[\"operation\",\"request\",\"answer\"],\"properties\":{"
@@ -307,15 +398,32 @@ static const char check_schema[] =
     "\"required\":[\"pointer\",\"value\"],\"properties\":{"
     "\"pointer\":{\"type\":\"string\",\"description\":\"RFC 6901 JSON pointer into the "
     "operation's answer, e.g. /principal/moments/0\"},"
-    "\"value\":{\"type\":[\"number\",\"array\"],\"description\":\"the student's number, or an "
-    "array (nested arrays for matrices) compared element-wise when the pointer names an "
-    "array\"}}},"
+    "\"value\":{\"type\":[\"number\",\"array\",\"object\"],\"description\":\"the student's "
+    "number, or an array of the shape of the expected value (nested arrays for matrices); an "
+    "object {\\\"axis\\\": [x,y,z], \\\"angle\\\": a} for kind axis_angle\"},"
+    "\"kind\":{\"enum\":" KIND_ENUM ",\"description\":\"what the quantity is, and so which "
+    "answers are the same: number (element-wise), vector and matrix (compared as a whole), "
+    "axis (a direction: either sign, any length), quaternion (q or -q), angle (modulo 2 pi), "
+    "subspace (rows spanning the same subspace), eigenvectors (rows, each of either sign; rows "
+    "of equal eigenvalues compared as their subspace), axis_angle (the same rotation); default: "
+    "mechd's table for the field (e.g. eigenvectors for /v1/rigid/inertia /principal/axes), "
+    "else number\"},"
+    "\"unit\":{\"type\":\"string\",\"description\":\"the unit of the "
+    "student's value (km, eV, deg, rpm, g cm^2, ...); mechd converts it to the field's unit "
+    "(SI). Default: the field's unit\"}}},"
     "\"tolerance\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
     "\"relative\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6},"
     "\"absolute\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e300},"
-    "\"significant_figures\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":17}},"
+    "\"significant_figures\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":17},"
+    "\"scale\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e300,\"description\":\"the size "
+    "of the problem, in the field's unit: an expected value and an answer both within the "
+    "tolerance applied to the scale count as zero (default: the largest |number| of the "
+    "expected value and its siblings; pi for angles)\"}},"
     "\"description\":\"correct when the error is within ANY criterion given (or within the "
-    "recommended tolerance); default {\\\"relative\\\": 0.01}\"}}}";
+    "recommended tolerance); default {\\\"relative\\\": 0.01}\"},"
+    "\"reveal\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true: the feedback "
+    "names the expected value (in the student's unit); false: only its shape, kind and "
+    "unit\"}}}";
 
 static const char check_example[] =
     "{\"operation\":\"/v1/rigid/inertia\",\"request\":{\"bodies\":[{\"shape\":\"box\",\"mass\":12,"
@@ -324,21 +432,197 @@ static const char check_example[] =
 
 static const char check_description[] =
     "Runs `operation` on `request` in-process (exactly as POST to that path would; errors in the "
-    "request are reported with pointers under /request) and compares the number at "
-    "`answer.pointer` (RFC 6901) of its answer with `answer.value` (an array is compared "
-    "element-wise, and is correct when every element is). An element is correct when "
-    "|value - expected| <= the largest of: relative*|expected|, absolute, half a unit in the "
-    "n-th significant figure of expected (significant_figures: n), and the recommended "
-    "tolerance; i.e. passing ANY given criterion is enough, and no tolerance is ever tighter than "
-    "mechd's own numerical error. Without `tolerance`, relative 0.01 applies. "
+    "request are reported with pointers under /request) and compares the value at "
+    "`answer.pointer` (RFC 6901) of its answer with `answer.value`, as the quantity's `kind` "
+    "says (answer.kind, else mechd's table for the field, else number; see docs/grading.md): "
+    "number and angle element-wise (angles modulo 2 pi), vector and matrix as a whole "
+    "(|a - e| against the tolerance at |e|), axis up to sign and length, quaternion up to sign, "
+    "axis_angle as the same rotation (error = the angle between the rotations), subspace and "
+    "eigenvectors as spans (rows of equal eigenvalues may be any orthonormal basis of their "
+    "subspace). `answer.unit` (km, eV, deg, ...) is converted to the field's SI unit; a unit of "
+    "another dimension is 422 at /answer/unit. A quantity is correct when its error <= the "
+    "largest of: relative*|expected|, absolute, half a unit in the n-th significant figure of "
+    "|expected| (significant_figures: n), and the recommended tolerance; i.e. passing ANY given "
+    "criterion is enough, and no tolerance is ever tighter than mechd's own numerical error; an "
+    "expected value and an answer that are both within the tolerance at the problem's scale "
+    "(tolerance.scale, default the largest |number| of the expected value and its siblings, at "
+    "least pi for angles) count as zero. Without `tolerance`, relative 0.01 applies. "
     "recommended_tolerance: relative = max(1e-12, 10 x the largest relative-error figure found "
     "in the answer's diagnostics on the way to the pointer: max_relative_* errors and drifts of "
     "conserved quantities, target_error of the chosen integrator; not differences from a "
     "first-order reference), absolute = relative x the "
     "largest |number| among the expected value and its siblings (so a component that should be "
-    "0 is not judged relative to 0). Answer: correct, expected, absolute_error, relative_error "
-    "(largest over elements with expected != 0; null if there is none), tolerance_applied, "
-    "recommended_tolerance, and wrong (pointers of the wrong elements, at most 20).";
+    "0 is not judged relative to 0). Answer: correct, feedback (for the student: the expected "
+    "shape, kind and unit, never the value unless reveal is true), kind, unit, expected (for the "
+    "grader), absolute_error, relative_error (largest over quantities with expected != 0; null "
+    "if there is none), tolerance_applied, recommended_tolerance, and wrong (pointers of the "
+    "wrong elements or rows, at most 20).";
+
+/* What a kind means, for the feedback. */
+static const char *kind_words(enum api_check_kind k)
+{
+    switch (k) {
+    case API_KIND_VECTOR: return "a vector (judged as a whole)";
+    case API_KIND_MATRIX: return "a matrix (judged as a whole)";
+    case API_KIND_AXIS: return "a direction (either sign and any length are accepted)";
+    case API_KIND_QUATERNION: return "a rotation quaternion [w, x, y, z] (q and -q are accepted)";
+    case API_KIND_ANGLE: return "an angle (modulo a full turn)";
+    case API_KIND_SUBSPACE: return "vectors spanning a subspace (any orthogonal basis of it)";
+    case API_KIND_EIGENVECTORS:
+        return "eigenvectors as rows (each of either sign; rows of equal eigenvalues may be any "
+               "orthonormal basis of their subspace)";
+    case API_KIND_AXIS_ANGLE: return "a rotation as {\"axis\": [x, y, z], \"angle\": a}";
+    default: return "a number";
+    }
+}
+
+/* A copy of a numeric tree with every number multiplied by f. */
+static json_t *scaled_copy(const json_t *j, double f, int depth)
+{
+    if (json_is_number(j)) return json_real(json_number_value(j) * f);
+    json_t *out = json_array();
+    if (!out || depth > 8) return out;
+    for (size_t i = 0; i < json_array_size(j); i++)
+        json_array_append_new(out, scaled_copy(json_array_get(j, i), f, depth + 1));
+    return out;
+}
+
+/* The student-facing message: the verdict, what was expected in shape, kind
+ * and unit, and the value itself only when reveal is set. */
+static json_t *feedback(const struct grade *g, const json_t *want, const char *unit,
+                        const char *field_unit, int reveal)
+{
+    char shape[128], msg[900];
+    if (json_is_object(want))
+        snprintf(shape, sizeof shape, "an object {\"axis\": [3 numbers], \"angle\": a number}");
+    else
+        shape_words(want, shape, sizeof shape);
+    const char *u = unit ? unit : field_unit;
+    const char *what = kind_words(g->kind);
+    if (json_is_array(want) && g->kind == API_KIND_NUMBER)
+        what = "numbers, each judged on its own";
+    if (json_is_array(want) && g->kind == API_KIND_ANGLE)
+        what = "angles, each modulo a full turn";
+    int n = snprintf(msg, sizeof msg, "%s Expected %s, given as %s%s%s%s%s",
+                     g->wrong == 0 ? "Correct." : "Not within the tolerance.", what,
+                     shape, u && strcmp(u, "1") ? ", in " : "", u && strcmp(u, "1") ? u : "",
+                     u && !strcmp(u, "1") ? ", dimensionless" : "",
+                     !u ? " (in SI units unless answer.unit says otherwise)" : "");
+    if (g->note && n > 0 && (size_t)n < sizeof msg)
+        n += snprintf(msg + n, sizeof msg - (size_t)n, "; %s", g->note);
+    if (n > 0 && (size_t)n < sizeof msg) snprintf(msg + n, sizeof msg - (size_t)n, ".");
+    if (!reveal) return json_string(msg);
+    json_t *shown = json_is_object(want) ? json_deep_copy(want)
+                                         : scaled_copy(want, 1 / g->factor, 0);
+    if (json_is_object(want) && shown && g->factor != 1)
+        json_object_set_new(shown, "angle",
+                            json_real(json_number_value(json_object_get(want, "angle")) /
+                                      g->factor));
+    char *text =
+        shown ? json_dumps(shown, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(6)) : NULL;
+    json_decref(shown);
+    char full[1400];
+    snprintf(full, sizeof full, "%s The expected value is %.400s%s%s.", msg, text ? text : "?",
+             u && strcmp(u, "1") ? " " : "", u && strcmp(u, "1") ? u : "");
+    free(text);
+    return json_string(full);
+}
+
+/* The eigenvalues belonging to rows of eigenvectors at want: a sibling array
+ * "moments" or "eigenvalues" of the same length in the object holding it. */
+static int sibling_eigenvalues(const json_t *parent, size_t rows, double *lam, double *deg_tol)
+{
+    static const char *const names[] = {"moments", "eigenvalues"};
+    if (!json_is_object(parent) || rows > 16) return 0;
+    for (size_t k = 0; k < 2; k++) {
+        const json_t *a = json_object_get(parent, names[k]);
+        if (!json_is_array(a) || json_array_size(a) != rows) continue;
+        double m = 0;
+        int ok = 1;
+        for (size_t i = 0; i < rows; i++) {
+            const json_t *v = json_array_get(a, i);
+            if (!json_is_number(v)) ok = 0;
+            lam[i] = json_number_value(v);
+            if (fabs(lam[i]) > m) m = fabs(lam[i]);
+        }
+        if (!ok) continue;
+        *deg_tol = 1e-10 * m; /* the rule of /v1/rigid/inertia's "degenerate" */
+        return 1;
+    }
+    return 0;
+}
+
+/* Compare a non-element-wise kind; 0, or -1 after recording a 422. */
+static int grade_whole(struct api_call *c, struct grade *g, const json_t *want,
+                       const json_t *value, const json_t *parent, const char *pointer,
+                       const char *kind_ptr)
+{
+    double *e = NULL, *a = NULL;
+    double ev[4], av[4];
+    size_t rows = 1, cols = 4;
+    const char *why = NULL;
+    if (g->kind == API_KIND_AXIS_ANGLE) {
+        if (axis_angle_of(want, ev)) {
+            api_call_invalid(c, kind_ptr, "axis_angle: %.200s is not an {\"axis\", \"angle\"} "
+                             "object in the answer", pointer);
+            return -1;
+        }
+        if (axis_angle_of(value, av)) {
+            api_call_invalid(c, "/answer/value", "give the rotation as {\"axis\": [x, y, z], "
+                             "\"angle\": a number}");
+            return -1;
+        }
+        av[3] *= g->factor;
+        e = ev;
+        a = av;
+    } else {
+        size_t r2, c2;
+        int fe = flatten2(want, &e, &rows, &cols);
+        int fa = fe ? 0 : flatten2(value, &a, &r2, &c2);
+        if (fe || fa) {
+            free(e);
+            free(a);
+            if (fe == -2 || fa == -2) {
+                struct mech_error me;
+                mech_error_clear(&me);
+                mech_error_set(&me, MECH_ENOMEM, NULL, "out of memory");
+                api_call_fail_core(c, MECH_ENOMEM, &me, "");
+                return -1;
+            }
+            api_call_invalid(c, kind_ptr, "kind %s compares a number, an array of numbers or "
+                             "rows of numbers; %.200s is not one", api_check_kind_name(g->kind),
+                             pointer);
+            return -1;
+        }
+        for (size_t i = 0; i < rows * cols; i++) a[i] *= g->factor;
+    }
+    double lam[16], deg_tol = 0;
+    int have_lam = g->kind == API_KIND_EIGENVECTORS &&
+                   sibling_eigenvalues(parent, rows, lam, &deg_tol);
+    struct api_check_outcome o;
+    int st = api_check_compare(g->kind, e, a, rows, cols, have_lam ? lam : NULL, deg_tol, &g->tol,
+                               &o, &why);
+    if (e != ev) free(e);
+    if (a != av) free(a);
+    if (st) {
+        api_call_invalid(c, kind_ptr, "kind %s does not fit %.200s: %s",
+                         api_check_kind_name(g->kind), pointer, why ? why : "wrong shape");
+        return -1;
+    }
+    g->note = why;
+    grade_add(g, &o);
+    int rowwise = g->kind == API_KIND_SUBSPACE || g->kind == API_KIND_EIGENVECTORS;
+    for (size_t i = 0; i < o.nwrong; i++) {
+        char ptr[600];
+        if (rowwise && i < sizeof o.wrong / sizeof o.wrong[0])
+            snprintf(ptr, sizeof ptr, "%.500s/%zu", pointer, o.wrong[i]);
+        else
+            snprintf(ptr, sizeof ptr, "%.500s", pointer);
+        grade_wrong(g, ptr);
+        if (!rowwise) break;
+    }
+    return 0;
+}
 
 static json_t *check(struct api_call *c, const json_t *body)
 {
@@ -348,6 +632,9 @@ static json_t *check(struct api_call *c, const json_t *body)
     const char *pointer = api_string(answer, "pointer", "");
     const json_t *value = json_object_get(answer, "value");
     const json_t *tol = json_object_get(body, "tolerance");
+    const char *kind_name = api_string(answer, "kind", NULL);
+    const char *unit_name = api_string(answer, "unit", NULL);
+    int reveal = json_is_true(json_object_get(body, "reveal"));
 
     if (is_nested(op)) {
         api_call_invalid(c, "/operation", "%s cannot be checked: /v1/check runs one operation",
@@ -362,6 +649,23 @@ static json_t *check(struct api_call *c, const json_t *body)
         api_call_invalid(c, "/answer/pointer",
                          "not a JSON pointer (RFC 6901): it starts with '/' and escapes '~' as ~0 "
                          "and '/' as ~1");
+        return NULL;
+    }
+    const struct api_unit *su = NULL;
+    if (unit_name && !(su = api_unit_find(unit_name))) {
+        api_call_invalid(c, "/answer/unit", "unknown unit \"%.20s\"; mechd converts from: %s",
+                         unit_name, api_unit_list);
+        return NULL;
+    }
+    enum api_check_kind kind = API_KIND_NUMBER;
+    const char *field_unit = NULL;
+    api_check_default(op, pointer, &kind, &field_unit);
+    if (kind_name) api_check_kind_parse(kind_name, &kind); /* the schema's enum: always known */
+    const char *kind_ptr = kind_name ? "/answer/kind" : "/answer/pointer";
+    if (json_is_object(value) && kind != API_KIND_AXIS_ANGLE) {
+        api_call_invalid(c, "/answer/value",
+                         "an object is an answer only for kind axis_angle ({\"axis\": [x, y, z], "
+                         "\"angle\": a}); give a number or an array");
         return NULL;
     }
     if (json_is_array(value) && !numeric_tree(value, 0)) {
@@ -390,7 +694,7 @@ static json_t *check(struct api_call *c, const json_t *body)
         json_decref(res);
         return NULL;
     }
-    if (!numeric_tree(want, 0)) {
+    if (kind != API_KIND_AXIS_ANGLE && !numeric_tree(want, 0)) {
         api_call_invalid(c, "/answer/pointer",
                          "%.200s names a %s in the answer of %.100s, not a number or an array of "
                          "numbers",
@@ -404,20 +708,31 @@ static json_t *check(struct api_call *c, const json_t *body)
         json_decref(res);
         return NULL;
     }
-    char where[512] = "";
-    size_t count = 0;
-    if (same_shape(want, value, where, sizeof where, &count, 0)) {
-        char msg[600];
-        if (json_is_number(want))
-            snprintf(msg, sizeof msg, "%.200s names a number: give a number", pointer);
-        else
-            snprintf(msg, sizeof msg,
-                     "%.200s names an array: give an array of the same shape (%zu numbers in all; "
-                     "first mismatch at /answer/value%.200s)",
-                     pointer, count, where);
-        api_call_invalid(c, "/answer/value", "%s", msg);
+    const struct api_unit *fu = field_unit ? api_unit_find(field_unit) : NULL;
+    if (su && fu && strcmp(su->dim, fu->dim)) {
+        api_call_invalid(c, "/answer/unit",
+                         "%.20s does not measure what %.200s is: give a unit convertible to %s%s",
+                         unit_name, pointer, field_unit,
+                         !strcmp(field_unit, "1") ? " (a pure number: leave unit out)" : "");
         json_decref(res);
         return NULL;
+    }
+    if (kind != API_KIND_AXIS_ANGLE) {
+        char where[512] = "";
+        size_t count = 0;
+        if (same_shape(want, value, where, sizeof where, &count, 0)) {
+            char shape[128], gave[128] = "something else";
+            shape_words(want, shape, sizeof shape);
+            if (json_is_number(value) || numeric_tree(value, 0))
+                shape_words(value, gave, sizeof gave);
+            api_call_invalid(c, "/answer/value",
+                             "%.200s is %s: give %s, not %s%s%.200s%s", pointer, shape, shape,
+                             gave, json_is_number(want) ? "" : " (first mismatch at /answer/value",
+                             json_is_number(want) ? "" : where,
+                             json_is_number(want) ? "" : ")");
+            json_decref(res);
+            return NULL;
+        }
     }
 
     /* recommended tolerance from the operation's own error evidence */
@@ -426,7 +741,7 @@ static json_t *check(struct api_call *c, const json_t *body)
     double rec_rel = CHECK_EVIDENCE_FACTOR * evidence;
     int from_diag = rec_rel > CHECK_CLOSED_FORM_RELATIVE;
     if (!from_diag) rec_rel = CHECK_CLOSED_FORM_RELATIVE;
-    double scale = max_abs(want, 0);
+    double scale = json_is_object(want) ? 0 : max_abs(want, 0);
     if (json_is_number(want) && json_is_array(parent)) {
         double s = max_abs(parent, 0);
         if (s > scale) scale = s;
@@ -436,33 +751,55 @@ static json_t *check(struct api_call *c, const json_t *body)
     struct grade g;
     memset(&g, 0, sizeof g);
     int given = json_is_object(tol) && json_object_size(tol) > 0;
-    g.rel = given ? api_number(tol, "relative", -1) : CHECK_DEFAULT_RELATIVE;
-    g.abs_tol = given ? api_number(tol, "absolute", -1) : -1;
-    g.sig = given ? (int)api_number(tol, "significant_figures", 0) : 0;
-    g.rec_rel = rec_rel;
-    g.rec_abs = rec_abs;
+    int only_scale = given && json_object_size(tol) == 1 && json_object_get(tol, "scale");
+    g.tol.rel = given && !only_scale ? api_number(tol, "relative", -1) : CHECK_DEFAULT_RELATIVE;
+    g.tol.abs = given ? api_number(tol, "absolute", -1) : -1;
+    g.tol.sig = given ? (int)api_number(tol, "significant_figures", 0) : 0;
+    g.tol.scale = given ? api_number(tol, "scale", scale) : scale;
+    if ((kind == API_KIND_ANGLE || kind == API_KIND_AXIS_ANGLE) && g.tol.scale < CHECK_PI)
+        g.tol.scale = CHECK_PI;
+    g.tol.rec_rel = rec_rel;
+    g.tol.rec_abs = rec_abs;
+    g.kind = kind;
+    g.factor = su ? su->factor / (fu ? fu->factor : 1) : 1;
     g.wrong_ptrs = json_array();
-    char ptr[1024];
-    snprintf(ptr, sizeof ptr, "%s", pointer);
-    grade_tree(&g, want, value, ptr, sizeof ptr);
+    if (kind == API_KIND_NUMBER || kind == API_KIND_ANGLE) {
+        char ptr[1024];
+        snprintf(ptr, sizeof ptr, "%s", pointer);
+        grade_tree(&g, want, value, ptr, sizeof ptr);
+    } else if (grade_whole(c, &g, want, value, parent, pointer, kind_ptr)) {
+        json_decref(g.wrong_ptrs);
+        json_decref(res);
+        return NULL;
+    }
 
     json_t *out = json_object();
     json_object_set_new_nocheck(out, "correct", json_boolean(g.wrong == 0));
+    json_object_set_new_nocheck(out, "feedback",
+                                feedback(&g, want, unit_name, field_unit, reveal));
+    json_object_set_new_nocheck(out, "kind", json_string(api_check_kind_name(kind)));
+    json_object_set_new_nocheck(
+        out, "unit",
+        json_pack("{s:o,s:o,s:o}", "given", unit_name ? json_string(unit_name) : json_null(),
+                  "field", field_unit ? json_string(field_unit) : json_null(), "factor",
+                  api_real(c, g.factor)));
     json_object_set(out, "expected", want);
     json_object_set_new_nocheck(out, "absolute_error", api_real(c, g.max_abs_err));
     json_object_set_new_nocheck(out, "relative_error",
                                 g.have_rel ? api_real(c, g.max_rel_err) : json_null());
     json_t *ta = json_object();
-    json_object_set_new_nocheck(ta, "relative", g.rel >= 0 ? api_real(c, g.rel) : json_null());
+    json_object_set_new_nocheck(ta, "relative",
+                                g.tol.rel >= 0 ? api_real(c, g.tol.rel) : json_null());
     json_object_set_new_nocheck(ta, "absolute",
-                                g.abs_tol >= 0 ? api_real(c, g.abs_tol) : json_null());
+                                g.tol.abs >= 0 ? api_real(c, g.tol.abs) : json_null());
     json_object_set_new_nocheck(ta, "significant_figures",
-                                g.sig > 0 ? json_integer(g.sig) : json_null());
-    json_object_set_new_nocheck(ta, "defaulted", json_boolean(!given));
+                                g.tol.sig > 0 ? json_integer(g.tol.sig) : json_null());
+    json_object_set_new_nocheck(ta, "scale", api_real(c, g.tol.scale));
+    json_object_set_new_nocheck(ta, "defaulted", json_boolean(!given || only_scale));
     json_object_set_new_nocheck(ta, "rule",
-                                json_string("any: correct when |value - expected| <= the "
-                                            "largest of the criteria and the recommended "
-                                            "tolerance"));
+                                json_string("any: correct when the error <= the largest of the "
+                                            "criteria and the recommended tolerance; both "
+                                            "within the tolerance at the scale: zero"));
     json_object_set_new_nocheck(ta, "bound", api_real(c, g.max_bound));
     json_object_set_new_nocheck(out, "tolerance_applied", ta);
     json_t *rt = json_object();

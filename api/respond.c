@@ -62,42 +62,42 @@ void api_response_free(struct api_response *resp)
 /* Longest part of an instance kept (a request path is client-controlled). */
 #define INSTANCE_MAX 256
 
-void api_response_set_instance(struct api_response *resp, const char *instance)
+/* Insert "key": text (a JSON string, at most INSTANCE_MAX bytes of text kept)
+ * as the last member of a problem+json body; nothing for other bodies. The
+ * body is one compact JSON object and maybe a newline. 1 when added, 0 when
+ * resp is no problem body, -1 when out of memory (the response is then the
+ * out-of-memory problem). */
+static int add_problem_member(struct api_response *resp, const char *key, const char *text_in)
 {
-    if (!resp || resp->instance_set || !instance || !resp->body || resp->body_static ||
-        !resp->content_type || strcmp(resp->content_type, "application/problem+json") != 0)
-        return;
-    /* The body is one compact JSON object and a newline: insert the member
-     * before its closing brace. */
+    if (!resp || !resp->body || resp->body_static || !resp->content_type ||
+        strcmp(resp->content_type, "application/problem+json") != 0)
+        return 0;
     size_t end = resp->body_len;
     while (end > 0 && resp->body[end - 1] != '}')
         end--;
-    if (end < 2) return;
+    if (end < 2) return 0;
     char cut[INSTANCE_MAX + 1];
-    snprintf(cut, sizeof cut, "%s", instance);
+    snprintf(cut, sizeof cut, "%s", text_in);
     json_t *js = api_json_text(cut);
     char *text = js ? json_dumps(js, JSON_ENCODE_ANY | JSON_COMPACT) : NULL;
     json_decref(js);
-    if (!text) {
-        api_respond_out_of_memory(resp);
-        resp->instance_set = 1;
-        return;
-    }
-    static const char key[] = ",\"instance\":";
-    size_t tl = strlen(text), add = sizeof key - 1 + tl;
-    char *b = malloc(resp->body_len + add + 1);
+    char head[64];
+    int hl = snprintf(head, sizeof head, ",\"%s\":", key);
+    char *b = text && hl > 0 && (size_t)hl < sizeof head
+                  ? malloc(resp->body_len + (size_t)hl + strlen(text) + 1)
+                  : NULL;
     if (!b) {
         free(text);
         api_respond_out_of_memory(resp);
-        resp->instance_set = 1;
-        return;
+        return -1;
     }
+    size_t tl = strlen(text);
     size_t at = end - 1; /* the closing brace */
     int empty = resp->body[at - 1] == '{';
     memcpy(b, resp->body, at);
     size_t n = at;
-    memcpy(b + n, key + empty, sizeof key - 1 - (size_t)empty);
-    n += sizeof key - 1 - (size_t)empty;
+    memcpy(b + n, head + empty, (size_t)hl - (size_t)empty);
+    n += (size_t)hl - (size_t)empty;
     memcpy(b + n, text, tl);
     n += tl;
     memcpy(b + n, resp->body + at, resp->body_len - at);
@@ -107,7 +107,19 @@ void api_response_set_instance(struct api_response *resp, const char *instance)
     free(resp->body);
     resp->body = b;
     resp->body_len = n;
-    resp->instance_set = 1;
+    return 1;
+}
+
+void api_response_set_instance(struct api_response *resp, const char *instance)
+{
+    if (!resp || resp->instance_set || !instance) return;
+    if (add_problem_member(resp, "instance", instance) != 0) resp->instance_set = 1;
+}
+
+void api_response_set_request_id(struct api_response *resp, const char *id)
+{
+    if (!resp || !id || !id[0]) return;
+    add_problem_member(resp, "request_id", id);
 }
 
 json_t *api_json_text(const char *text)

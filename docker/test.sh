@@ -126,6 +126,22 @@ $DOCKER build -q -f "$WORK/ctx/docker/nginx.Dockerfile" -t mechd-nginx:latest "$
   || { tail -30 "$WORK/build-nginx.log"; fail "docker build nginx"; }
 $DOCKER image ls --format '{{.Repository}}:{{.Tag}} {{.Size}}' | sed 's/^/  image /'
 
+# The grader image: the build stage is cached, so this is one COPY (seconds).
+$DOCKER build -q -f "$WORK/ctx/docker/Dockerfile" --target grader -t mechd-grader:latest "$WORK/ctx" \
+  >"$WORK/build-grader.log" 2>&1 || { tail -30 "$WORK/build-grader.log"; fail "docker build grader"; }
+guser=$($DOCKER image inspect -f '{{.Config.User}}' mechd-grader:latest)
+case "$guser" in ""|root|0|0:*) fail "grader image runs as root ($guser)";; esac
+gsize=$($DOCKER image inspect -f '{{.Size}}' mechd-grader:latest)
+[ "$gsize" -lt 20000000 ] || fail "grader image is $gsize bytes (want one static binary)"
+gout=$(echo '{"operation":"/v1/relativity/boost","request":{"vectors":[[1,0,0,0]],"velocity":{"beta":[0.6,0,0]}}}' \
+  | $DOCKER run -i --rm --network none mechd-grader:latest)
+echo "$gout" | grep -q '"gamma":1.25' || fail "grader image answered: $gout"
+say "grader image: $gsize bytes, user $guser, no network: gamma 1.25 at beta 0.6"
+$DOCKER image inspect -f '{{json .Config.Healthcheck.Test}}' mechd:latest | grep -q '"healthcheck"' \
+  || fail "the mechd image's HEALTHCHECK is not mechd healthcheck"
+$DOCKER run --rm --entrypoint sh mechd:latest -c 'command -v curl || command -v wget' >/dev/null 2>&1 \
+  && fail "the mechd image still has curl or wget"
+
 user=$($DOCKER image inspect -f '{{.Config.User}}' mechd:latest)
 case "$user" in ""|root|0|0:*) fail "image runs as root ($user)";; esac
 say "image user $user"

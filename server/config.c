@@ -35,6 +35,7 @@ enum opt_id {
     OPT_MAX_CONNECTIONS,
     OPT_SHUTDOWN_GRACE_MS,
     OPT_HANGUP_GRACE_MS,
+    OPT_LOG_FORMAT,
     OPT_COUNT
 };
 
@@ -102,6 +103,9 @@ static const struct opt_spec {
                              "a request running on a worker is cancelled once its client's "
                              "end-of-file has been seen this long (a half-close after a whole "
                              "request, as nc -N sends, is the same FIN as a hang-up)"},
+    [OPT_LOG_FORMAT] = {"--log-format", "MECHD_LOG_FORMAT", "text", 0, 0,
+                        "log lines on stderr: text (\"mechd: TIME req=ID ...\") or json (one "
+                        "JSON object per line, for log collectors)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -245,6 +249,14 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         return load_token(cfg, value, source, err);
     }
     if (id == OPT_CORS_ORIGIN) return add_origins(cfg, value, source, err);
+    if (id == OPT_LOG_FORMAT) {
+        if (strcmp(value, "text") && strcmp(value, "json")) {
+            fprintf(err, "mechd: invalid %s '%.40s': expected text or json\n", source, value);
+            return -1;
+        }
+        cfg->log_json = !strcmp(value, "json");
+        return 0;
+    }
     long long v;
     if (parse_int(value, o->min, o->max, &v) != 0) {
         fprintf(err, "mechd: invalid %s '%s': expected an integer in [%lld, %lld]\n", source, value,

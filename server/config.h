@@ -34,6 +34,7 @@ struct srv_config {
                                 finish before they are cancelled, 0..600000 ms */
     long hangup_grace_ms;    /* how long a pooled request's client end-of-file must persist
                                 before it counts as a hang-up and cancels it, 0..600000 ms */
+    int log_json;            /* --log-format json: log lines are JSON objects */
 };
 
 #define SRV_TOKEN_MAX 256 /* longest accepted bearer token, in bytes */

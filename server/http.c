@@ -250,13 +250,15 @@ static struct MHD_Response *not_modified_response(size_t full_len)
 
 /* Send resp (its body is handed to MHD, which frees it, unless it is static)
  * with Content-Type, Retry-After and X-Request-Id; a problem gets its
- * instance (the request path) if the API layer has not given it one. resp is
+ * instance (the request path) if the API layer has not given it one, and its
+ * request_id (the X-Request-Id sent back in the header). resp is
  * left empty. */
 static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
 {
     struct MHD_Response *mr;
     int status = resp->status >= 100 && resp->status <= 599 ? resp->status : 500;
     api_response_set_instance(resp, r->path ? r->path : "");
+    api_response_set_request_id(resp, r->id); /* every problem names its request */
     if (status == MHD_HTTP_NOT_MODIFIED) {
         mr = not_modified_response(resp->full_length);
     } else if (resp->body && resp->body_static) {

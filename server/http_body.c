@@ -155,6 +155,7 @@ enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r)
     struct api_response resp;
     memset(&resp, 0, sizeof resp);
     api_response_problem(&resp, API_PROBLEM_BODY_TOO_LARGE, detail);
+    api_response_set_request_id(&resp, r->id);
     if (!resp.body) return MHD_NO; /* out of memory: just close */
     char date[64] = "";
     time_t now = time(NULL);

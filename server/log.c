@@ -10,7 +10,9 @@
  * Request counts are kept per (route, status) in a fixed table: the server
  * passes a bounded set of route labels (see http.c route_label), and a label
  * that does not fit is counted as route "other", so memory and the metrics
- * page stay bounded whatever clients send. */
+ * page stay bounded whatever clients send.
+ * With --log-format json (srv_log_set_json) every line, requests and notes,
+ * is one JSON object instead, built the same way. */
 #include "log.h"
 
 #include <pthread.h>
@@ -138,6 +140,34 @@ static char *put_long(char *o, char *end, long v)
     return put_ulong(o, end, v < 0 ? 0UL - (unsigned long)v : (unsigned long)v);
 }
 
+/* Append s as a JSON string (quotes included, at most max bytes of s), with
+ * '"' and '\\' escaped and control characters and non-ASCII bytes replaced by
+ * '?' (so the line is valid JSON and ASCII whatever a client sent). */
+static char *put_json_str(char *o, char *end, const char *s, size_t max)
+{
+    if (!s) return put_str(o, end, "null");
+    if (o < end) *o++ = '"';
+    for (size_t i = 0; *s && i < max && o + 2 < end; s++, i++) {
+        unsigned char ch = (unsigned char)*s;
+        if (ch == '"' || ch == '\\') {
+            *o++ = '\\';
+            *o++ = (char)ch;
+        } else {
+            *o++ = (ch < 0x20 || ch >= 0x7f) ? '?' : (char)ch;
+        }
+    }
+    if (o < end) *o++ = '"';
+    return o;
+}
+
+/* 1: log lines are JSON objects (--log-format json); set once before threads start. */
+static int log_json;
+
+void srv_log_set_json(int json)
+{
+    log_json = json != 0;
+}
+
 /* The access log. One line per request, built by hand (no stdio: no
  * locale, no FILE lock, no format parsing) and written with one write(2) on
  * stderr, unbuffered: a line is in the kernel when the request is counted, so
@@ -182,12 +212,35 @@ void srv_log_timestamp(char *out)
 
 void srv_log_request(const struct srv_log_entry *e)
 {
-    char line[1024];
+    char line[2048]; /* the longest JSON line (every field at its bound, escaped) fits,
+                        and stays one write below PIPE_BUF */
     char ts[32];
     srv_log_timestamp(ts);
     /* end is a plain char *: GCC 12 -O0 warns when a pointer into the not yet
      * written buffer is passed as const char * (-Wmaybe-uninitialized). */
     char *o = line, *end = line + sizeof line - 1; /* room for the newline */
+    if (log_json) {
+        o = put_str(o, end, "{\"time\":\"");
+        o = put_str(o, end, ts);
+        o = put_str(o, end, "\",\"level\":\"info\",\"msg\":\"request\",\"request_id\":");
+        o = put_json_str(o, end, e->id, 64);
+        o = put_str(o, end, ",\"method\":");
+        o = put_json_str(o, end, e->method, 23);
+        o = put_str(o, end, ",\"path\":");
+        o = put_json_str(o, end, e->path, 511);
+        o = put_str(o, end, ",\"status\":");
+        o = put_long(o, end, e->status);
+        o = put_str(o, end, ",\"duration_us\":");
+        o = put_long(o, end, e->usec);
+        o = put_str(o, end, ",\"bytes\":");
+        o = put_ulong(o, end, (unsigned long)e->bytes);
+        o = put_str(o, end, ",\"client\":");
+        o = put_json_str(o, end, e->client, 64);
+        o = put_str(o, end, ",\"forwarded_for\":");
+        o = put_json_str(o, end, e->forwarded_for, 160);
+        o = put_str(o, end, "}");
+        goto write_line;
+    }
     o = put_str(o, end, "mechd: ");
     o = put_str(o, end, ts);
     o = put_str(o, end, " req=");
@@ -208,6 +261,7 @@ void srv_log_request(const struct srv_log_entry *e)
         o = put_str(o, end, " xff=");
         o = put_clean(o, end, e->forwarded_for, 160);
     }
+write_line:
     *o++ = '\n';
     write_all(line, (size_t)(o - line));
 
@@ -259,8 +313,25 @@ void srv_log_note(const char *fmt, ...)
     char line[512];
     char ts[32];
     srv_log_timestamp(ts);
-    int n = snprintf(line, sizeof line, "mechd: %s ", ts);
     va_list ap;
+    if (log_json) { /* {"time": ..., "level": "info", "msg": the note} */
+        char msg[400];
+        va_start(ap, fmt);
+        int k = vsnprintf(msg, sizeof msg, fmt, ap);
+        va_end(ap);
+        if (k < 0) return;
+        char jl[1024]; /* msg escaped at most doubles */
+        char *o = jl, *end = jl + sizeof jl - 1;
+        o = put_str(o, end, "{\"time\":\"");
+        o = put_str(o, end, ts);
+        o = put_str(o, end, "\",\"level\":\"info\",\"msg\":");
+        o = put_json_str(o, end, msg, sizeof msg);
+        o = put_str(o, end, "}");
+        *o++ = '\n';
+        write_all(jl, (size_t)(o - jl));
+        return;
+    }
+    int n = snprintf(line, sizeof line, "mechd: %s ", ts);
     va_start(ap, fmt);
     int k = vsnprintf(line + n, sizeof line - (size_t)n - 1, fmt, ap);
     va_end(ap);

@@ -26,6 +26,13 @@ struct srv_log_entry {
  * other than [A-Za-z0-9/._-] counts as "other"). */
 void srv_log_request(const struct srv_log_entry *e);
 
+/* --log-format json: from now on every line (requests and notes) is one JSON
+ * object: {"time", "level", "msg", and for a request "request_id", "method",
+ * "path", "status", "duration_us", "bytes", "client", "forwarded_for" (null when
+ * absent)}; strings escaped, control and non-ASCII bytes as '?'. Call before
+ * the server's threads start (not synchronised). */
+void srv_log_set_json(int json);
+
 /* Write the current time as RFC 3339 UTC with milliseconds
  * ("2026-11-25T08:45:02.123Z", 24 characters + NUL) into out (>= 32 bytes). */
 void srv_log_timestamp(char *out);

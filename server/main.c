@@ -20,6 +20,7 @@
 #include "api.h"
 #include "config.h"
 #include "eval.h"
+#include "healthcheck.h"
 #include "http.h"
 #include "log.h"
 #include "static.h"
@@ -42,6 +43,9 @@ int main(int argc, char **argv)
         return srv_eval_main(argc - 1, argv + 1, stdin, stdout, stderr);
     }
 
+    if (argc >= 2 && strcmp(argv[1], "healthcheck") == 0) /* the image's HEALTHCHECK */
+        return srv_healthcheck_main(argc - 1, argv + 1, stderr);
+
     struct srv_config cfg;
     memset(&cfg, 0, sizeof cfg);
     switch (srv_config_load(&cfg, argc, argv, stdout, stderr)) {
@@ -52,6 +56,7 @@ int main(int argc, char **argv)
     case SRV_CONFIG_ERROR:
         return 2;
     }
+    srv_log_set_json(cfg.log_json); /* before any thread logs */
 
     gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
     api_install_json_allocator(); /* jansson's allocator: process-wide, once */

@@ -1694,14 +1694,27 @@ class Client(_Operations):
         return 200 <= status < 300
 
     def check(self, operation, request, pointer, value, relative=None, absolute=None,
-              significant_figures=None):
-        """POST /v1/check: grade a student's value at pointer of operation's answer."""
+              significant_figures=None, *, kind=None, unit=None, scale=None, reveal=None):
+        """POST /v1/check: grade a student's value at pointer of operation's answer.
+
+        kind ("axis", "quaternion", "angle", "eigenvectors", ...; default mechd's table
+        for the field), unit (the student's unit: "km", "eV", "deg", ...), scale (the
+        problem's size in the field's unit, for values that should be zero) and reveal
+        (the feedback names the expected value) are passed when not None.
+        """
         tol = {k: v for k, v in (("relative", relative), ("absolute", absolute),
-                                 ("significant_figures", significant_figures)) if v is not None}
-        body = {"operation": operation, "request": request,
-                "answer": {"pointer": pointer, "value": value}}
+                                 ("significant_figures", significant_figures),
+                                 ("scale", scale)) if v is not None}
+        answer = {"pointer": pointer, "value": value}
+        if kind is not None:
+            answer["kind"] = kind
+        if unit is not None:
+            answer["unit"] = unit
+        body = {"operation": operation, "request": request, "answer": answer}
         if tol:
             body["tolerance"] = tol
+        if reveal is not None:
+            body["reveal"] = reveal
         return self.call("/v1/check", body)
 
     # -- many requests ----------------------------------------------------------------

@@ -227,6 +227,17 @@ static void add_requests(void)
     add("POST /v1/batch two", "POST", "/v1/batch",
         "{\"operations\": [{\"path\": \"/v1/relativity/boost\", \"request\": {}},"
         " {\"path\": \"/v1/nowhere\", \"request\": {}}]}", NULL);
+    /* /v1/check's whole-quantity kinds (eigenvectors with a degenerate plane,
+     * axis_angle), a unit and the revealing feedback: check_kind.c's paths. */
+    add("POST /v1/check eigenvectors", "POST", "/v1/check",
+        "{\"operation\": \"/v1/rigid/inertia\", \"request\": {\"bodies\": [{\"shape\": "
+        "\"cylinder\", \"mass\": 2, \"radius\": 1, \"height\": 1, \"position\": [0, 0, 0]}]}, "
+        "\"answer\": {\"pointer\": \"/principal/axes\", \"value\": [[0.6, 0.8, 0], [0.8, -0.6, 0], "
+        "[0, 0, 0]]}, \"reveal\": true}", NULL);
+    add("POST /v1/check axis_angle deg", "POST", "/v1/check",
+        "{\"operation\": \"/v1/rotation/convert\", \"request\": {\"axis_angle\": {\"axis\": "
+        "[0, 0, 1], \"angle\": 1}}, \"answer\": {\"pointer\": \"/axis_angle\", \"value\": "
+        "{\"axis\": [0, 0, -1], \"angle\": -57.3}, \"unit\": \"deg\"}, \"reveal\": true}", NULL);
 }
 
 /* ---- running and judging ------------------------------------------------------------ */
