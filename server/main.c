@@ -23,6 +23,7 @@
 #include "healthcheck.h"
 #include "http.h"
 #include "log.h"
+#include "mhd_panic.h"
 #include "static.h"
 #include "workers.h"
 
@@ -60,6 +61,7 @@ int main(int argc, char **argv)
 
     gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
     api_install_json_allocator(); /* jansson's allocator: process-wide, once */
+    srv_mhd_panic_install();      /* libmicrohttpd's panics: survive its quiesce race */
     /* Return memory after large answers. glibc's default thresholds are
      * dynamic: freeing one 16 MB answer raises the mmap threshold to 16 MB and
      * the trim threshold to 32 MB, after which every worker's malloc arena
