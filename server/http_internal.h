@@ -36,6 +36,8 @@
 #define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
 #define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
 #define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
+#define SRV_QUICK_FULL_FACTOR 16.0   /* with the queue full, a quick route predicted at most this
+                                        many times --inline-max-us runs inline instead of a 503 */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -190,6 +192,10 @@ enum MHD_Result answer_preflight(struct srv_req *r);
 /* quick.c */
 void run_api(struct srv_req *r);
 int quick_inline(struct srv_http *h, struct srv_req *r);
+/* 1 if a quick route's request is predicted to cost at most SRV_QUICK_FULL_FACTOR
+ * times --inline-max-us (0 when --inline-max-us is 0): run inline rather than
+ * refused when the queue is full. */
+int quick_fits_when_full(const struct srv_http *h, const struct srv_req *r);
 
 /* conn_watch.c */
 void watch_add(struct srv_http *h, struct srv_req *r);

@@ -114,3 +114,12 @@ int quick_inline(struct srv_http *h, struct srv_req *r)
     r->quick_probe = 1;
     return 1;
 }
+
+int quick_fits_when_full(const struct srv_http *h, const struct srv_req *r)
+{
+    if (!r->quick_route || !h->quick || h->cfg->inline_max_us <= 0) return 0;
+    const struct srv_quick_stat *q = &h->quick[r->route_index];
+    long long per_kib = atomic_load_explicit(&q->cost, memory_order_relaxed);
+    double predicted_ns = (double)per_kib * (double)quick_units(r->body_len) / 1024.0;
+    return predicted_ns <= (double)h->cfg->inline_max_us * 1000.0 * SRV_QUICK_FULL_FACTOR;
+}
