@@ -314,12 +314,92 @@ async function everyExample(id) {
   }
 }
 
-for (const id of LABS) await lab(id, async () => {
-  await settled();
-  const bad = await blemishes();
-  check(bad.length === 0, `${id}: the default page is clean (${bad.join(' | ')})`);
-  await everyExample(id);
-}, `examples-${id}`);
+
+// --- each lab teaches (issue 19): the notes' formula, its section, its value beside the API's, the
+// difference in words; "Copy as curl" and "Copy as Python" put the request on the clipboard; changing an
+// input changes the answer; at desktop and at phone size (where every worked example is loaded again) ----
+// For each lab: an input, a new value for it, the button that runs it, and a number the answer shows.
+const CHANGE = {
+  rotations: ['#rot-phi', '61', '#rot-submit', '#rot-matrix-00'], table: ['#table-omega', '2.3', '#table-submit', '#table-total'],
+  inertia: ['#inertia-mass-0', '2.7', '#inertia-submit', '#inertia-moment-0'], tops: ['#top-psidot', '83', '#top-submit', '#top-prec'],
+  earth: ['#fall-height', '217', '#fall-submit', '#fall-east'], tides: ['#tides-point', '33', '#tides-submit', '#tides-moon-radial'],
+  orbits: ['#orb-e', '0.31', '#orb-submit', '#orb-measured'], phase: ['#ph-b', '0.27', '#ph-submit', '#ph-area0'],
+  spacetime: ['#st-beta', '0.77', '#st-submit', '#st-gamma'], particles: ['#dk-T', '123', '#dk-submit', '#dk-gamma'],
+  accuracy: ['#acc-v', '1.13', '#acc-submit', '#acc-table'],
+};
+await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], {origin});
+// What every "What the notes say" box on the page shows: its formula, section and difference.
+const teachBoxes = () => page.$$eval('[data-role=teach]', (bs) => bs.filter(b => b.querySelector('h3')).map(b => ({
+  id: b.id, formula: (b.querySelector('[data-role=formula]') || {}).innerText || '',
+  section: (b.querySelector('[data-role=section]') || {}).textContent || '',
+  abs: Number(b.dataset.abs), rel: Number(b.dataset.rel),
+  words: (b.querySelector('[data-role=diff]') || {}).innerText || '',
+  shown: !!b.getClientRects().length,
+})));
+async function teaches(where, id) {
+  const boxes = await teachBoxes();
+  check(boxes.length >= 1, `${where} ${id}: a "What the notes say" section (${boxes.length})`);
+  for (const b of boxes) {
+    check(b.shown && b.formula.trim().length > 5, `${where} ${id}: #${b.id} shows a formula ("${b.formula.slice(0, 60)}")`);
+    check(/^§\d+(\.\d+)?$/.test(b.section.trim()), `${where} ${id}: #${b.id} names the notes' section ("${b.section}")`);
+    check(Number.isFinite(b.abs) && b.abs >= 0 && Number.isFinite(b.rel) && b.rel >= 0 && /\d/.test(b.words),
+      `${where} ${id}: #${b.id} gives the difference as a finite number (abs ${b.abs}, rel ${b.rel}: "${b.words}")`);
+  }
+}
+// The copy buttons of the lab's first request box: the clipboard then holds the text shown (or, where
+// the clipboard is refused, the text is selected for Ctrl+C and the button says so).
+async function copies(where, id) {
+  const curlBox = page.locator('main section.curl').first();
+  await curlBox.scrollIntoViewIfNeeded();
+  for (const kind of ['curl', 'python']) {
+    if (kind === 'python') await curlBox.locator('details.python > summary').click();
+    const pre = curlBox.locator(kind === 'curl' ? 'pre[aria-label="curl command"]' : 'pre[data-role=python]');
+    const want = await pre.textContent();
+    await page.evaluate(() => navigator.clipboard.writeText('').catch(() => {}));
+    await curlBox.locator(`button[data-copy=${kind}]`).click();
+    await page.waitForFunction((k) => /Copied|Selected/.test(document.querySelector(`main section.curl button[data-copy=${k}]`).textContent),
+      kind, {timeout: 5000}).catch(() => {});
+    const said = await curlBox.locator(`button[data-copy=${kind}]`).textContent();
+    // the clipboard, or (the clipboard refused) the selection the button made for Ctrl+C
+    const clip = await page.evaluate(() => navigator.clipboard.readText()).catch(() => null);
+    const got = clip === want ? clip : await page.evaluate(() => String(getSelection()));
+    const path0 = (want.match(/\/v1\/[a-z/-]+/) || [''])[0];
+    check(got === want && path0 !== '' && (kind === 'curl' ? /^curl -s .*--json '\{/.test(want) : /client\.call\("\/v1\//.test(want)),
+      `${where} ${id}: Copy as ${kind} puts the request (${path0}) on the clipboard ("${said}"; ${got.length} of ${want.length} characters)`);
+  }
+  await curlBox.locator('details.python > summary').click(); // folded again
+}
+// Change one input, run, and the number shown changes.
+async function changes(where, id) {
+  const [input, v, submit, out] = CHANGE[id];
+  const before = (await page.textContent(out)).trim();
+  const isRange = await page.$eval(input, (e) => e.type === 'range');
+  if (isRange) await page.$eval(input, (e, x) => { e.value = x; e.dispatchEvent(new Event('input', {bubbles: true})); }, v);
+  else await page.fill(input, v);
+  await page.evaluate((s) => { delete document.querySelector(s).closest('form').dataset.state; }, submit);
+  await page.click(submit);
+  await page.waitForFunction((s) => document.querySelector(s).closest('form').dataset.state === 'done', submit, {timeout: 30000}).catch(() => {});
+  const after = (await page.textContent(out)).trim();
+  check(after !== before && !/NaN|undefined|null/.test(after), `${where} ${id}: ${input} = ${v} changes ${out} ("${before.slice(0, 40)}" → "${after.slice(0, 40)}")`);
+}
+// no form of the lab busy (after the examples, the forms no example ran keep no state)
+const quiet = () => page.waitForFunction(() => ![...document.querySelectorAll('main form')].some(f => f.dataset.state === 'busy'),
+  null, {timeout: 30000});
+for (const [where, size] of [['desktop', {width: 1280, height: 900}], ['phone', {width: 390, height: 844}]]) {
+  await page.setViewportSize(size);
+  for (const id of LABS) await lab(id, async () => {
+    await settled();
+    const bad = await blemishes();
+    check(bad.length === 0, `${where} ${id}: the default page is clean (${bad.join(' | ')})`);
+    await teaches(where, id);
+    await everyExample(where === 'desktop' ? id : `phone ${id}`);
+    await quiet();
+    await teaches(where, id); // after the last example too
+    await copies(where, id);
+    await changes(where, id);
+  }, where === 'desktop' ? `examples-${id}` : `examples-phone-${id}`);
+}
+await page.setViewportSize({width: 1280, height: 900});
 
 // a body whose principal moments all differ: a 1 × 2 × 3 m box of 1 kg about its
 // centre has I = M(b² + c²)/12 … = 5/12, 10/12, 13/12 kg m², no "degenerate" note
