@@ -141,9 +141,15 @@ export function curlCommand(path, body) {
     : `curl -s${auth} --json ${q(toJSON(body))} ${q(location.origin + path)}`;
 }
 
-// The request as a call of the Python client (clients/python/mechd.py): its
-// generic form client.call(path, body), which every operation takes (the
-// client on main has no per-operation methods with named parameters yet).
+// The request as a call of the Python client (clients/python/mechd.py): the
+// method generated for the operation (/v1/rigid/inertia -> m.rigid_inertia,
+// its fields as keyword arguments), Client.batch for /v1/batch (each answer, or
+// the error of that item), Client.call for a GET. The client reads the token
+// from $MECHD_TOKEN: with a token in use the line says so, never the token.
+const PY_KEYWORDS = new Set(['False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue',
+  'def', 'del', 'elif', 'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda',
+  'nonlocal', 'not', 'or', 'pass', 'raise', 'return', 'try', 'while', 'with', 'yield', 'body']);
+export const pyMethod = (path) => path.replace(/^\/v1\//, '').replace(/[/-]/g, '_'); // mechd.py method_name()
 export function pythonCommand(path, body) {
   const py = (v, ind) => {
     if (v === null || v === undefined) return 'None';
@@ -160,11 +166,20 @@ export function pythonCommand(path, body) {
     const flat = '{' + items.join(', ') + '}';
     return flat.length <= 72 ? flat : '{\n' + items.map(x => pad + x).join(',\n') + ',\n' + ind + '}';
   };
-  return 'from mechd import Client  # clients/python/mechd.py\n' +
-    `client = Client(${JSON.stringify(location.origin)})` +
-    (getToken() ? '  # this server wants a token: the client on main cannot send one yet; use the curl line' : '') + '\n' +
-    (body === undefined ? `answer = client.call(${JSON.stringify(path)})\n`
-      : `answer = client.call(${JSON.stringify(path)}, ${py(JSON.parse(toJSON(body)), '')})\n`);
+  const head = 'import mechd  # clients/python/mechd.py (pip install ./clients/python)\n' +
+    `m = mechd.Client(${JSON.stringify(location.origin)})` +
+    (getToken() ? '  # this server wants a token: export MECHD_TOKEN=… first (the client reads it)' : '') + '\n';
+  if (body === undefined) return head + `answer = m.call(${JSON.stringify(path)})\n`;
+  const b = JSON.parse(toJSON(body));
+  if (path === '/v1/batch' && b && Array.isArray(b.operations) && Object.keys(b).every(k => k === 'operations'))
+    return head + '# each answer, or the mechd error of that item\nanswers = m.batch([\n' +
+      b.operations.map(o => `    (${JSON.stringify(o.operation)}, ${py(o.request, '    ')}),\n`).join('') + '])\n';
+  const keys = Object.keys(b || {});
+  const named = keys.length > 0 && keys.every(k => /^[A-Za-z_][A-Za-z0-9_]*$/.test(k) && !PY_KEYWORDS.has(k));
+  if (!named) return head + `answer = m.${pyMethod(path)}(${py(b, '')})\n`;
+  const args = keys.map(k => `${k}=${py(b[k], '    ')}`);
+  const flat = `answer = m.${pyMethod(path)}(${args.join(', ')})\n`;
+  return head + (flat.length <= 80 ? flat : `answer = m.${pyMethod(path)}(\n${args.map(a => '    ' + a + ',\n').join('')})\n`);
 }
 
 // A copy button for the text of pre (falls back to selecting it).

@@ -363,9 +363,23 @@ async function copies(where, id) {
     // the clipboard, or (the clipboard refused) the selection the button made for Ctrl+C
     const clip = await page.evaluate(() => navigator.clipboard.readText()).catch(() => null);
     const got = clip === want ? clip : await page.evaluate(() => String(getSelection()));
-    const path0 = (want.match(/\/v1\/[a-z/-]+/) || [''])[0];
-    check(got === want && path0 !== '' && (kind === 'curl' ? /^curl -s .*--json '\{/.test(want) : /client\.call\("\/v1\//.test(want)),
+    // the operation, from the curl line (its URL's path); the Python calls its method (or Client.batch)
+    const curlText = await curlBox.locator('pre[aria-label="curl command"]').textContent();
+    const path0 = (curlText.match(/'https?:\/\/[^/']+(\/v1\/[a-z/-]+)'$/) || [])[1] || '';
+    const call = (want.match(/^answers? = m\.([a-z_]+)\(/m) || [])[1];
+    check(got === want && path0 !== '' && (kind === 'curl' ? /^curl -s .*--json '\{/.test(want)
+      : call === (path0 === '/v1/batch' ? 'batch' : path0.slice(4).replace(/[/-]/g, '_'))),
       `${where} ${id}: Copy as ${kind} puts the request (${path0}) on the clipboard ("${said}"; ${got.length} of ${want.length} characters)`);
+    // at desktop size the copied Python runs, with the real client, against this server
+    if (kind === 'python' && where === 'desktop') {
+      let out = '';
+      try {
+        out = execFileSync('/usr/bin/python3', ['-c', got + '\nimport json\nr = answers if "answers" in dir() else answer\n' +
+          'print(json.dumps(isinstance(r, dict) or (isinstance(r, list) and all(isinstance(a, dict) for a in r))))'],
+          {env: {...process.env, PYTHONPATH: path.resolve(webRoot, '..', 'python')}, encoding: 'utf8', timeout: 60000}).trim();
+      } catch (e) { out = String(e.stderr || e).trim().split('\n').slice(-1)[0]; }
+      check(out === 'true', `${where} ${id}: the copied Python runs with clients/python/mechd.py and gets its answer (${out.slice(0, 160)})`);
+    }
   }
   await curlBox.locator('details.python > summary').click(); // folded again
 }
@@ -777,7 +791,7 @@ await lab('rotations', async () => {
   check(await value('#order-verdict') < 1e-12 && /agree/.test(await page.textContent('#order-verdict')), 'rotations: two turns about x commute, and it says so');
   // copy as Python: the shown call runs with the Python client and gives the page's numbers
   const py = await page.textContent('main [data-role=python]');
-  check(/client\.call\("\/v1\/rotation\/convert", \{"euler_zxz": \[/.test(py), `rotations: the Python box calls client.call("/v1/rotation/convert", …) (${py.split('\n')[2]})`);
+  check(/m\.rotation_convert\(\s*euler_zxz=\[/.test(py), `rotations: the Python box calls the client's m.rotation_convert(euler_zxz=…) (${py.split('\n')[2]})`);
   let out = '';
   try {
     out = execFileSync('/usr/bin/python3', ['-c', py + '\nimport json\nprint(json.dumps(answer["matrix"]))'],

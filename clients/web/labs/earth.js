@@ -100,9 +100,11 @@ export default {
       const r = await api('/v1/trajectory', body, {signal: mine.signal});
       if (mine !== pathCtl || r.aborted) return;
       if (!r.ok || !r.body || !Array.isArray(r.body.t)) { pathNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
-      const t = r.body.t.slice(), pos = r.body.position.slice();
-      if (r.body.stopped && r.body.stopped.t > t[t.length - 1]) { t.push(r.body.stopped.t); pos.push(r.body.stopped.position); }
-      const pts = pos.map(p => [p[0] * 100, p[2]]);
+      let t = r.body.t.slice(), pos = r.body.position.slice();
+      const st = r.body.stopped; // nothing after the landing
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      const pts = pos.map(p => [p[0] * 100, Math.abs(p[2]) < 1e-9 ? 0 : p[2]]); // the landing's −1.4e-14 m is the ground
       const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
       let XY = null, cur = pts[0];
       linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],

@@ -90,8 +90,9 @@ export default {
       const vec = (x) => `(${fmt(x[0], 7)}, ${fmt(x[1], 7)}) N`;
       tableNotes.update({section: '1.1', inferred: true, heading: 'Rotating Coordinate System: Calculating the Effective Force',
         formula: [el('div', {}, 'F′ = F − m ω × (ω × r′) − 2 m ω × v′  (centrifugal, Coriolis; the table turns steadily: no Euler force)'),
-          p.experiment === 'through_center' ? el('div', {}, 'through the centre, at the start: F′ = −m ω² r₁ (ê_y + (4/π) ê_x)  (ω > 0)')
-            : p.experiment === 'at_rest' ? el('div', {}, 'at rest in the room: F′ = −m ω² r₁ ê_y (Coriolis 2 m ω² r₁ inwards, twice the centrifugal outwards)') : null],
+          p.experiment === 'through_center' ? el('div', {}, 'through the centre, at the start: F′ = −m ω² r₁ (ê', el('sub', {}, 'y'), ' + (4/π) ê',
+            el('sub', {}, 'x'), ')  (ω > 0)')
+            : p.experiment === 'at_rest' ? el('div', {}, 'at rest in the room: F′ = −m ω² r₁ ê', el('sub', {}, 'y'), ' (Coriolis 2 m ω² r₁ inwards, twice the centrifugal outwards)') : null],
         what: 'the formula', formulaShown: vec(F), apiShown: vec(f.total), abs, rel: big ? abs / big : (abs ? 1 : 0), unit: 'N',
         how: 'The total effective force on the puck at the start, seen from the table.',
         note: p.experiment === 'through_center' ? 'Seen from the table the puck comes back to where it started after half a turn: it was ' +

@@ -68,8 +68,8 @@ export default {
       const N = a.nutation, th0 = req.theta, D = 180 / Math.PI;
       const other = Math.abs(N.theta_max - th0) >= Math.abs(N.theta_min - th0); // the turning point the top is not released at
       topNotes.update({section: '2.10', inferred: true, heading: 'Lagrange Equations for Top with One Fixed Point',
-        formula: ['E − p', el('sub', {}, 'ψ'), '²/2I', el('sub', {}, '3'), ' = ½ I', el('sub', {}, '12'), ' θ̇² + (p', el('sub', {}, 'φ'),
-          ' − p', el('sub', {}, 'ψ'), ' cos θ)² / (2 I', el('sub', {}, '12'), ' sin²θ) + M g h cos θ;  θ turns where θ̇ = 0'],
+        formula: ['E − p', el('sub', {}, 'ψ'), '²/2I', el('sub', {}, '3'), ' = ½ I', el('sub', {}, '12'), ' (dθ/dt)² + (p', el('sub', {}, 'φ'),
+          ' − p', el('sub', {}, 'ψ'), ' cos θ)² / (2 I', el('sub', {}, '12'), ' sin²θ) + M g h cos θ;  θ turns where dθ/dt = 0'],
         what: 'the notes\' turning point', formulaValue: (other ? N.theta_max : N.theta_min) * D,
         apiValue: (other ? N.measured_theta_max : N.measured_theta_min) * D, unit: '°',
         sourceText: 'the root of the notes\' cubic in cos θ, as the API solves it',
@@ -158,11 +158,11 @@ export default {
       const k = [0, 1, 2].reduce((b, j) => Math.abs(w0[j]) > Math.abs(w0[b]) ? j : b, 0), i = (k + 1) % 3, j = (k + 2) % 3;
       const c = (I0[j] - I0[k]) * (I0[k] - I0[i]) / (I0[i] * I0[j]) * w0[k] * w0[k];
       dzNotes.update({section: '2.8', heading: 'Euler\'s Equations (no torque)',
-        formula: ['I', el('sub', {}, '(1)'), ' ω̇', el('sub', {}, '1'), ' + (I', el('sub', {}, '(3)'), ' − I', el('sub', {}, '(2)'), ') ω',
+        formula: ['I', el('sub', {}, '(1)'), ' dω', el('sub', {}, '1'), '/dt + (I', el('sub', {}, '(3)'), ' − I', el('sub', {}, '(2)'), ') ω',
           el('sub', {}, '2'), 'ω', el('sub', {}, '3'), ' = 0 (and cyclic)  ⇒  T = ½ Σ I', el('sub', {}, '(k)'), ' ω', el('sub', {}, 'k'), '² is constant'],
         what: 'the kinetic energy at the start', formulaValue: T0, apiValue: KE, unit: 'J',
         how: 'The kinetic energy from your moments and ω at the start, against the API\'s at the end of the run.',
-        note: Number.isFinite(c) ? `Stability (the notes' next section): about axis ${k + 1} a small wobble obeys ε̈ = ` +
+        note: Number.isFinite(c) ? `Stability (the notes' next section): about axis ${k + 1} a small wobble obeys d²ε/dt² = ` +
           `(I${j + 1} − I${k + 1})(I${k + 1} − I${i + 1})/(I${i + 1} I${j + 1}) ω${k + 1}² ε = ${fmt(c, 3)} s⁻² ε: ` +
           (c > 0 ? `positive, so it grows like e^(${fmt(Math.sqrt(c), 3)} t) — the flip.` : 'negative, so it only oscillates: no flip.') : null});
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
