@@ -396,6 +396,42 @@ async function changes(where, id) {
   const after = (await page.textContent(out)).trim();
   check(after !== before && !/NaN|undefined|null/.test(after), `${where} ${id}: ${input} = ${v} changes ${out} ("${before.slice(0, 40)}" → "${after.slice(0, 40)}")`);
 }
+// the teaching sections against closed forms: the value each shows for the notes' formula is the formula's,
+// and the difference it states is the one between the two numbers it shows
+await lab('earth', async () => {
+  await settled();
+  const w = 7.292115e-5, g = 9.80665, D = Math.PI / 180;
+  const box = async (id) => page.$eval(id, (b) => ({f: Number(b.querySelector('[data-role=formula-value]').dataset.value),
+    a: Number(b.querySelector('[data-role=api-value]').dataset.value), abs: Number(b.dataset.abs), rel: Number(b.dataset.rel),
+    words: b.querySelector('[data-role=diff]').textContent, section: b.dataset.section}));
+  const fall = await box('#fall-notes');
+  // notes §1.4: x_east = (1/3) ω cos λ √(8h³/g) = 1.862 cm for 100 m at 32° ("about 1.9 cm")
+  close(fall.f, w * Math.cos(32 * D) / 3 * Math.sqrt(8 * 100 ** 3 / g), 1e-12, 'teach: the falling object\'s formula value is (1/3) ω cos λ √(8h³/g)');
+  close(fall.abs, Math.abs(fall.a - fall.f), 1e-6, 'teach: the falling object\'s stated difference is numerical − first order');
+  close(fall.rel, fall.abs / Math.abs(fall.a), 1e-12, 'teach: its relative difference is |difference| / numerical');
+  check(fall.section === '1.4' && /pm, \d parts? in 10⁸/.test(fall.words),
+    `teach: the falling object cites §1.4 (the notes' text) and says the difference in pm and parts in 10⁸ ("${fall.words}", §${fall.section})`);
+  const fou = await box('#fou-notes');
+  // notes §1.4: the plane turns at ω_z = ω sin λ, clockwise in the north: −11.3 °/h at 48.846° N
+  close(fou.f, -w * Math.sin(48.846 * D) / D * 3600, 1e-9, 'teach: the Foucault formula value is −ω sin λ in °/h');
+  check(fou.abs > 0 && fou.rel < 0.01, `teach: the measured Foucault rate is within 1 % of ω sin λ (rel ${fou.rel})`);
+}, 'teach-earth');
+await lab('spacetime', async () => {
+  await settled();
+  const f = Number(await page.getAttribute('#tw-notes [data-role=formula-value]', 'data-value'));
+  close(f, 12, 1e-12, 'teach: the twins\' τ = t/γ summed over the legs is 12 yr (8 ly at β = 0.8 and back)');
+  check(await page.getAttribute('#tw-notes', 'data-section') === '3.15', 'teach: the twins cite §3.15 (from the contents)');
+  check(/lost it/.test(await page.textContent('#tw-notes')), 'teach: and say that number is not in the extracted text');
+  check(Number(await page.getAttribute('#st-notes', 'data-abs')) < 1e-14, 'teach: the boost formula agrees with the API to round-off');
+}, 'teach-spacetime');
+await lab('accuracy', async () => {
+  await settled();
+  // H = v²/2 − GM/r = 0.72 − 1 = −0.28 for the Kepler scene (m = 1, GM = 1, r = 1, v = 1.2)
+  check(/H = −?-?0\.28\b/.test(await page.textContent('#acc-notes [data-role=formula-value]')), 'teach: the Kepler scene\'s energy is −0.28');
+  const rel = Number(await page.getAttribute('#acc-notes', 'data-rel'));
+  check(rel > 0 && rel < 1e-6, `teach: the best run keeps the energy to better than 10⁻⁶ (${rel})`);
+}, 'teach-accuracy');
+
 // no form of the lab busy (after the examples, the forms no example ran keep no state)
 const quiet = () => page.waitForFunction(() => ![...document.querySelectorAll('main form')].some(f => f.dataset.state === 'busy'),
   null, {timeout: 30000});

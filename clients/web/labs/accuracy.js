@@ -23,7 +23,7 @@ export default {
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'acc-submit'}, 'Compare')));
     const plot = svg('svg', {class: 'plot', id: 'acc-plot', role: 'img', 'aria-label': 'work-precision plot'});
     add(L.figure, el('h3', {}, 'Work-precision'), plot);
-    const accNotes = notesBox('acc-notes');
+    const accNotes = notesBox('acc-notes'); L.figure.after(accNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/compare', () => {
       const b = structuredClone(base);
       b.request.particle.velocity[1] = val(vy.input); b.request.t_end = val(te.input); return b;
@@ -41,7 +41,7 @@ export default {
           r.runs.map(x => el('tr', {}, el('td', {}, x.method || (x.requested && x.requested.method) || '?'), el('td', {}, setting(x)),
             x.status === 'ok' ? [el('td', {}, String(x.rhs_evaluations)), el('td', {}, fmt(x.max_position_error, 3))]
               : el('td', {colspan: 2, class: 'muted'}, (x.status || 'not run').replace(/_/g, ' ') +
-                  (x.reason || x.detail ? ': ' + (x.reason || x.detail) : ''))))), accNotes.box);
+                  (x.reason || x.detail ? ': ' + (x.reason || x.detail) : ''))))));
       // chapter 5, Example: Motion in a Central Potential: H = p²/2m + V(r) has no explicit t, so dH/dt = ∂H/∂t = 0.
       // H at the start from the inputs, against how well the runs keep it (the API's largest relative drift).
       const q = req.request, P = q.particle, gm = (q.forces.find(f => f.type === 'central_gravity') || {}).gm;

@@ -110,7 +110,7 @@ export default {
     const world = new THREE.Group();
     V.scene.add(world);
     const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
-    const notes = notesBox('inertia-notes');
+    const notes = notesBox('inertia-notes'); L.figure.after(notes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
@@ -131,7 +131,7 @@ export default {
         Array.isArray(a.angular_momentum) ? el('dl', {class: 'nums'},
           el('dt', {}, 'ω'), el('dd', {}, `(${state.req.omega.map(v => fmt(v)).join(', ')}) rad/s`),
           el('dt', {}, 'L = I ω'), el('dd', {id: 'inertia-L'}, `(${a.angular_momentum.map(v => fmt(v)).join(', ')}) kg m²/s`),
-          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null, notes.box);
+          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null);
       // notes §2.3 Parallel Axis Theorem: about a point O with the centre of mass at a from it,
       // I_ij = I_ij(cm) + M (a² δ_ij − a_i a_j); computed here from the API's tensor about the centre of mass
       const o = Array.isArray(a.origin) ? a.origin : a.center_of_mass, d = a.center_of_mass.map((c, k) => c - o[k]);

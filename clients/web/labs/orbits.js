@@ -76,7 +76,7 @@ export default {
     };
     exSel.addEventListener('change', drawOrbit);
     const exLabel = (k) => k >= 1e4 ? pow10(Math.round(Math.log10(k))) : String(k);
-    const orbNotes = notesBox('orb-notes');
+    const orbNotes = notesBox('orb-notes'); L.figure.after(orbNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r) => {
       const p = r.precession;
       cost.after(r);
@@ -84,7 +84,7 @@ export default {
         el('dt', {}, 'advance per orbit (measured)'), num('orb-measured', p.measured_per_orbit, 'rad'),
         el('dt', {}, 'exact'), num('orb-exact', p.exact_per_orbit, 'rad'),
         el('dt', {}, '6πGM/(c²a(1−e²))'), num('orb-first', p.first_order_per_orbit, 'rad'),
-        el('dt', {}, 'per century'), num('orb-century', p.arcsec_per_century.measured, '″')), orbNotes.box);
+        el('dt', {}, 'per century'), num('orb-century', p.arcsec_per_century.measured, '″')));
       // chapter 4, Orbits in the Schwarzschild Metric: u'' + u = GM/h² + 3GM u²/c²; to first order in GM/(c²a)
       // the perihelion advances by 6πGM/(c²a(1−e²)) per orbit (the API's first_order_per_orbit)
       const ARC = 180 / Math.PI * 3600;
@@ -124,7 +124,7 @@ export default {
       intro: 'Starlight passing the Sun at impact parameter b is deflected by 4GM/(c²b) to first order: 1.75″ at the limb (Eddington, 1919).'});
     const lplot = svg('svg', {class: 'plot', id: 'light-plot', role: 'img', 'aria-label': 'light ray bent by the Sun (exaggerated)'});
     add(S.figure, lplot);
-    const lightNotes = notesBox('light-notes');
+    const lightNotes = notesBox('light-notes'); S.figure.after(lightNotes.box); // under the figure: the picture stays by the answer
     const lrun = runner(S, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'null', r0: val(lr.input),
       initial: {impact_parameter: val(lb.input)}, samples: 200}), (r) => {
       const d = r.deflection;
@@ -132,7 +132,7 @@ export default {
         el('dt', {}, 'deflection (measured)'), num('light-measured', d.arcsec.measured, '″'),
         el('dt', {}, 'exact'), num('light-exact', d.arcsec.exact, '″'),
         el('dt', {}, '4GM/(c²b)'), num('light-first', d.arcsec.first_order, '″'),
-        el('dt', {}, 'closest approach'), num('light-rmin', d.closest_approach, 'm')), lightNotes.box);
+        el('dt', {}, 'closest approach'), num('light-rmin', d.closest_approach, 'm')));
       // chapter 4, Deflection of Light: the photon's u'' + u = 3GM u²/c², first order: δ = 4GM/(c² b)
       lightNotes.update({section: '4', heading: 'A Little General Relativity: Deflection of Light',
         formula: ['u″ + u = 3GM u²/c²  (a photon)  ⇒  δ = 4GM / (c² b)'],

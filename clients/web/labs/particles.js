@@ -71,7 +71,7 @@ export default {
     }, {fits: (ex) => ex.operation !== '/v1/relativity/doppler' || (ex.request.source_velocity && ex.request.source_velocity.beta &&
       !ex.request.observer_velocity && Array.isArray(ex.request.arrival_direction) && !ex.request.arrival_direction[1] && !ex.request.arrival_direction[2])}),
     parent.wrap, daughters.wrap, T.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dk-submit'}, 'Decay')));
-    const dkNotes = notesBox('dk-notes'), EV = {eV: 1, keV: 1e3, MeV: 1e6, GeV: 1e9, TeV: 1e12};
+    const dkNotes = notesBox('dk-notes'), EV = {eV: 1, keV: 1e3, MeV: 1e6, GeV: 1e9, TeV: 1e12}; L.figure.after(dkNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/relativity/kinematics/decay', () => {
       if (pendingDecay) return pendingDecay;
       const ds = daughters.input.value.split(',').map(s => s.trim()).filter(Boolean).map(s => (isFinite(Number(s)) ? Number(s) : s));
@@ -92,8 +92,7 @@ export default {
       (a.maximum_lab_angles || []).forEach((m, i) => { if (Number.isFinite(m)) items.push(el('dt', {}, `daughter ${i + 1}: widest lab angle`), num(`dk-maxang-${i}`, m / D, '°')); });
       if (a.minimum_opening_angle && Number.isFinite(a.minimum_opening_angle.angle))
         items.push(el('dt', {}, 'smallest opening angle'), num('dk-open', a.minimum_opening_angle.angle / D, '°'));
-      put(L.results, el('h3', {}, 'Answer'), el('dl', {class: 'nums'}, items),
-        dkNotes.box);
+      put(L.results, el('h3', {}, 'Answer'), el('dl', {class: 'nums'}, items));
       // notes, Kinematics Problems in Electron Volts (π⁰ decay, neutron decay; after §3.14, numbered 3.16 in the contents):
       // two bodies at rest share p* = √[(M² − (m₁ + m₂)²)(M² − (m₁ − m₂)²)] / 2M. With three, daughter k gets the most
       // when the other two fly off together as one of mass m_i + m_j: E_k = (M² + m_k² − (m_i + m_j)²) / 2M.
@@ -133,7 +132,7 @@ export default {
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'cp-submit'}, 'Scatter')));
     const cplot = svg('svg', {class: 'plot', id: 'cp-plot', role: 'img', 'aria-label': 'Compton scattering: photon in, photon out and the recoiling electron'});
     add(C.figure, cplot);
-    const cpNotes = notesBox('cp-notes');
+    const cpNotes = notesBox('cp-notes'); C.figure.after(cpNotes.box); // under the figure: the picture stays by the answer
     const crun = runner(C, '/v1/relativity/kinematics/compton', () => {
       const lam = cL.input.value.trim();
       return lam !== '' ? {wavelength: Number(lam) * 1e-12, angle_deg: Number(ang.value)} : {energy: val(cE.input), energy_unit: 'keV', angle_deg: Number(ang.value)};
@@ -145,8 +144,7 @@ export default {
         el('dt', {}, 'scattered: energy, λ′'), el('dd', {id: 'cp-out', 'data-value': a.scattered.wavelength}, `${fmt(a.scattered.energy, 6)} ${u}, ${fmt(a.scattered.wavelength * 1e12, 6)} pm`),
         el('dt', {}, 'λ′ − λ'), num('cp-shift', a.wavelength_shift * 1e12, 'pm'),
         el('dt', {}, 'electron: kinetic energy'), num('cp-recoil', a.recoil.kinetic_energy, u),
-        el('dt', {}, 'electron: angle'), num('cp-recoil-angle', a.recoil.angle / D, '°')),
-        cpNotes.box);
+        el('dt', {}, 'electron: angle'), num('cp-recoil-angle', a.recoil.angle / D, '°')));
       // notes, Compton Scattering (in the section numbered 3.16 in the contents): λ′ − λ = (h / m c)(1 − cos θ)
       cpNotes.update({section: '3.16', inferred: true, heading: 'Kinematics Problems in Electron Volts: Compton Scattering',
         formula: ['λ′ − λ = (h / m c)(1 − cos θ),  h / m c = ' + fmt(a.compton_wavelength * 1e12, 6) + ' pm for the electron'],
@@ -174,7 +172,7 @@ export default {
     add(Dp.form, el('div', {class: 'figure-control'}, el('label', {for: 'dp-beta'}, 'β (positive: coming towards you)'), bs, bOut),
       el('div', {class: 'figure-control'}, el('label', {for: 'dp-angle'}, 'angle from head-on (your frame)'), as, aOut), dL.wrap,
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dp-submit'}, 'Shift')));
-    const dpNotes = notesBox('dp-notes');
+    const dpNotes = notesBox('dp-notes'); Dp.figure.after(dpNotes.box); // under the figure: the picture stays by the answer
     const drun = runner(Dp, '/v1/relativity/doppler', () => {
       st.nm = val(dL.input);
       const t = Number(as.value) * D, c = Math.abs(Math.cos(t)) < 1e-15 ? 0 : Math.cos(t), s = Math.abs(Math.sin(t)) < 1e-15 ? 0 : Math.sin(t);
@@ -187,8 +185,7 @@ export default {
         el('div', {}, el('h3', {}, 'Emitted'), swatch('dp-swatch-emitted', a.wavelength_emitted * 1e9)),
         el('div', {}, el('h3', {}, 'Seen'), swatch('dp-swatch-seen', a.wavelength_observed * 1e9))),
         el('dl', {class: 'nums'}, el('dt', {}, 'f′ / f'), num('dp-factor', f), el('dt', {}, 'seen wavelength'), num('dp-seen', a.wavelength_observed * 1e9, 'nm'),
-          el('dt', {}, 'case'), el('dd', {id: 'dp-case'}, a.case.replace(/_/g, ' '))),
-        dpNotes.box);
+          el('dt', {}, 'case'), el('dd', {id: 'dp-case'}, a.case.replace(/_/g, ' '))));
       // notes §3.14 The Relativistic Doppler Effect: along the line of sight f′ = f √((1 + β)/(1 − β)); at an
       // angle α in the observer's frame f′ = f / (γ (1 − β cos α)) (the phase k·x − ωt is invariant)
       dpNotes.update({section: '3.14', heading: 'The Relativistic Doppler Effect',

@@ -53,7 +53,7 @@ export default {
       el('div', {class: 'figure-control'}, el('label', {for: 'st-beta-slider'}, 'Drag β:'), slider, shown),
       el('p', {class: 'muted'}, 'grey: light cone x = ±ct; ', el('span', {class: 'c3'}, 'blue: ct′ and x′ axes, dots evenly spaced ' +
         'in the moving frame', tickNote), '; ', el('span', {class: 'c1'}, 'red: events'), '; dashed: their hyperbolae'));
-    const boostNotes = notesBox('st-notes');
+    const boostNotes = notesBox('st-notes'); L.figure.after(boostNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/relativity/boost', () => {
       st.events = ev.input.value; st.beta = val(beta.input);
       return {vectors: parse(), velocity: {beta: [val(beta.input), 0, 0]}};
@@ -64,7 +64,7 @@ export default {
           body.vectors.map((v, i) => el('tr', {}, el('td', {}, String(i + 1)), el('td', {}, fmt(v[0])), el('td', {}, fmt(v[1])),
             el('td', {id: `st-ctp-${i}`, 'data-value': a.vectors[i][0]}, fmt(a.vectors[i][0])),
             el('td', {id: `st-xp-${i}`, 'data-value': a.vectors[i][1]}, fmt(a.vectors[i][1])),
-            el('td', {}, fmt(-a.invariants_after[i]))))), boostNotes.box);
+            el('td', {}, fmt(-a.invariants_after[i]))))));
       // notes §3.3 The Lorentz Transformation: x′ = γ(x − βct), ct′ = γ(ct − βx), γ = 1/√((1 − β)(1 + β))
       // computed here from the inputs (β near 1 kept as (1 − β)(1 + β), never 1 − β²)
       const b = body.velocity.beta[0], g = 1 / Math.sqrt((1 - b) * (1 + b));
@@ -99,7 +99,7 @@ export default {
     add(T.figure, tplot, tplay.root, clocks,
       el('p', {class: 'muted'}, 'Played in the stay-at-home frame\'s time ct: each twin\'s dot moves along its worldline and its clock ',
         'shows its own proper time (the traveller\'s between the legs\' ends at each leg\'s constant rate).'));
-    const twinNotes = notesBox('tw-notes');
+    const twinNotes = notesBox('tw-notes'); T.figure.after(twinNotes.box); // under the figure: the picture stays by the answer
     const trun = runner(T, '/v1/relativity/worldline', () => {
       const b = val(tb.input), d = val(td.input);
       return {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
@@ -108,7 +108,7 @@ export default {
       put(T.results, el('dl', {class: 'nums'},
         el('dt', {}, 'traveller ages'), num('tw-proper', t.proper_time, 'yr'),
         el('dt', {}, 'stay-at-home ages'), num('tw-home', t.stay_at_home_time, 'yr'),
-        el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')), twinNotes.box);
+        el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')));
       // notes, The Twin Paradox (after §3.14): the traveller's proper time dτ = dt √(1 − β²) on each leg
       const coast = r.legs.every(l => !l.kind || l.kind === 'coast'); // straight legs: τ = √(Δt² − Δx²) each
       const tau = r.legs.reduce((sum, l) => { const dt = l.end[0] - l.start[0], dx = Math.hypot(...[1, 2, 3].map(k => l.end[k] - l.start[k]));

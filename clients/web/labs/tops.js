@@ -53,7 +53,7 @@ export default {
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
     let trace = null;
-    const topNotes = notesBox('top-notes');
+    const topNotes = notesBox('top-notes'); L.figure.after(topNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/rigid/top', () => cost.withAccuracy(topBody()), (a, req) => {
       cost.after(a);
       put(L.results, el('dl', {class: 'nums'},
@@ -61,7 +61,7 @@ export default {
         el('dt', {}, 'θ max'), num('top-thmax', a.nutation.theta_max, 'rad'),
         el('dt', {}, 'mean precession'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
         el('dt', {}, 'sleeping top stable'), el('dd', {id: 'top-sleeping'}, String(a.sleeping_top.stable)),
-        el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)), topNotes.box);
+        el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
       // notes (Lagrange Equations for Top with One Fixed Point): p_φ and p_ψ conserved, and the energy
       // E′ = ½ I₁₂ θ̇² + V(θ): θ nutates between the turning points where V(θ) = E′ (θ̇ = 0). The API solves
       // the notes' cubic in u = cos θ for them (nutation.theta_min/max) and measures θ's extremes in its samples.
@@ -139,7 +139,7 @@ export default {
     const DV = view3d(dbox, {label: 'The free rigid body in 3-D', id: 'dz-view'});
     const body = new THREE.Group(), dworld = new THREE.Group();
     DV.scene.add(dworld);
-    const dzNotes = notesBox('dz-notes');
+    const dzNotes = notesBox('dz-notes'); D.figure.after(dzNotes.box); // under the figure: the picture stays by the answer
     const drun = runner(D, '/v1/rigid/rotate', () => ({moments: dm.map(c => val(c.input)), omega: dw.map(c => val(c.input)),
       t_end: val(dt.input), samples: 601}), (a, req) => {
       const om = a.omega || (a.samples && a.samples.omega) || [];
@@ -149,7 +149,7 @@ export default {
         el('dt', {}, 'flip interval (exact)'), num('dz-flip', a.flip.exact_flip_interval, 's'),
         el('dt', {}, 'period (exact, elliptic)'), num('dz-period', a.flip.exact_period, 's'),
         el('dt', {}, 'flips seen'), el('dd', {id: 'dz-seen'}, String(a.flip.sign_changes_seen))]
-        : [el('dt', {}, 'flips'), el('dd', {id: 'dz-seen'}, 'none: not spun near the middle axis')]), dzNotes.box);
+        : [el('dt', {}, 'flips'), el('dd', {id: 'dz-seen'}, 'none: not spun near the middle axis')]));
       // notes §2.8 Euler's equations, no torque: T = ½ Σ I₍ₖ₎ ωₖ² stays what it was at the start; and
       // (Stability of Rigid Body Rotations) about axis k a small wobble obeys ε̈ = (I_j − I_k)(I_k − I_i)/(I_i I_j) ω_k² ε
       const I0 = req.moments, w0 = req.omega;
