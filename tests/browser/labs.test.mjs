@@ -423,6 +423,19 @@ await lab('spacetime', async () => {
   check(await page.getAttribute('#tw-notes', 'data-section') === '3.15', 'teach: the twins cite §3.15 (from the contents)');
   check(/lost it/.test(await page.textContent('#tw-notes')), 'teach: and say that number is not in the extracted text');
   check(Number(await page.getAttribute('#st-notes', 'data-abs')) < 1e-14, 'teach: the boost formula agrees with the API to round-off');
+  // near the cancellation: β = 1 − 10⁻¹⁰ and an event on the light cone, ct′ = x′ = γ(1 − β) = √((1 − β)/(1 + β)) = 7.07·10⁻⁶,
+  // beside an event off it (2, 1) whose ct′ is 7·10⁴: the page's formula takes 1 − β² as (1 − β)(1 + β) and keeps the digits
+  const b = 0.9999999999;
+  await page.fill('#st-events', '1, 1; 2, 1'); await page.fill('#st-beta', String(b));
+  await page.evaluate(() => { delete document.querySelector('#st-submit').closest('form').dataset.state; });
+  await page.click('#st-submit');
+  await page.waitForFunction(() => document.querySelector('#st-submit').closest('form').dataset.state === 'done', null, {timeout: 20000});
+  const want = Math.sqrt((1 - b) / (1 + b)), gam = 1 / Math.sqrt((1 - b) * (1 + b));
+  close(await value('#st-ctp-0'), want, 1e-12, 'teach: on the light cone at β = 1 − 10⁻¹⁰ the API\'s ct′ is √((1 − β)/(1 + β))');
+  close(await value('#st-ctp-1'), gam * (2 - b), 1e-12, 'teach: and off it ct′ = γ(2 − β)');
+  const near = await page.$eval('#st-notes [data-role=formula-value]', (d) => d.textContent);
+  check(/ct′ = 7\.071068e-6, x′ = 7\.071068e-6/.test(near), `teach: the page's formula gives the light-cone event's 7.071068·10⁻⁶ too ("${near}")`);
+  check(Number(await page.getAttribute('#st-notes', 'data-rel')) < 1e-14, 'teach: and agrees with the API to round-off at β = 1 − 10⁻¹⁰');
 }, 'teach-spacetime');
 await lab('accuracy', async () => {
   await settled();
