@@ -468,6 +468,14 @@ static const char *const api_examples_data[] = {
     "  \"request\": {\"width\": 0.1},\n"
     "  \"notes_answer\": {\"pointer\": \"/edge_held/omega\", \"value\": 7.8058126720855725, \"rounding\": {\"relative\": 1e-12}, \"text\": \"With the edge held, m g l(√2 − 1)/2 = ½ (2/3 m l²) ω²: ω = √((3g/2l)(√2 − 1)) = 7.81 rad/s for l = 10 cm (frictionless floor: √((12g/5l)(√2 − 1))).\"}\n"
     "}",
+    "{\n"
+    "  \"id\": \"elastic-equal-masses\",\n"
+    "  \"title\": \"A particle scattered through θ by a target of equal mass\",\n"
+    "  \"section\": \"3.19 Homework 16\",\n"
+    "  \"operation\": \"/v1/relativity/kinematics/elastic\",\n"
+    "  \"request\": {\"projectile\": {\"particle\": \"proton\", \"kinetic_energy\": 500}, \"target\": \"proton\", \"angle_deg\": 30},\n"
+    "  \"notes_answer\": {\"pointer\": \"/lab/projectile/kinetic_energy\", \"value\": 351.58058185546344, \"rounding\": {\"relative\": 1e-12}, \"text\": \"Energy and momentum conservation with the target at rest give T' = T cos²θ/(1 + T sin²θ/(2mc²)): a 500 MeV proton scattered through 30° by a proton keeps 351.58 MeV (T cos²θ = 375 MeV non-relativistically), and the opening angle is 83.8°, not 90°.\"}\n"
+    "}",
 };
 
 #endif

@@ -44,6 +44,7 @@ extern const struct api_route api_route_relativity_fields;
 extern const struct api_route api_route_relativity_invariant_mass;
 extern const struct api_route api_route_relativity_decay;
 extern const struct api_route api_route_relativity_compton;
+extern const struct api_route api_route_relativity_elastic;
 extern const struct api_route api_route_relativity_collision;
 extern const struct api_route api_route_relativity_particles;
 extern const struct api_route api_route_relativity_particle;
@@ -92,6 +93,7 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_invariant_mass,
     &api_route_relativity_decay,
     &api_route_relativity_compton,
+    &api_route_relativity_elastic,
     &api_route_relativity_collision,
     &api_route_relativity_particles,
     &api_route_gr_schwarzschild,

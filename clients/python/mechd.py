@@ -893,6 +893,35 @@ class _Operations:
         """
         return self._operation('/v1/relativity/kinematics/compton', body, (('energy_unit', energy_unit), ('energy', energy), ('wavelength', wavelength), ('angle', angle), ('angle_deg', angle_deg), ('target', target), ('cost', cost)))
 
+    def relativity_kinematics_elastic(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, projectile: Optional[Dict[str, Any]] = None, target: Optional[Any] = None, cm_angle: Optional[float] = None, cm_angle_deg: Optional[float] = None, angle: Optional[float] = None, angle_deg: Optional[float] = None, recoil_angle: Optional[float] = None, recoil_angle_deg: Optional[float] = None, branch: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Relativistic elastic scattering at a given CM, lab or recoil angle: lab energies, momenta and angles of both particles, the recoil, the CM frame, s, t, u
+
+        POST /v1/relativity/kinematics/elastic. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            projectile (required): the incoming particle and its lab motion along +z: exactly one of
+                    energy, kinetic_energy, momentum, velocity
+            target (required): the target, at rest in the lab (mass > 0): a particle name (as
+                    /v1/relativity/particles lists them) or a mass >= 0 in energy_unit/c^2
+            cm_angle: the projectile's scattering angle theta* in the CM frame (radians)
+            cm_angle_deg: the projectile's scattering angle theta* in the CM frame (degrees)
+            angle: the projectile's scattering angle in the lab (radians)
+            angle_deg: the projectile's scattering angle in the lab (degrees)
+            recoil_angle: the recoil's lab angle to the beam, below pi/2 (radians)
+            recoil_angle_deg: the recoil's lab angle to the beam, below 90 (degrees)
+            branch: which of two CM solutions a lab angle has (a projectile heavier than the target): 0
+                    the smaller theta* (the faster projectile), 1 the larger; default 0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/elastic', body, (('energy_unit', energy_unit), ('projectile', projectile), ('target', target), ('cm_angle', cm_angle), ('cm_angle_deg', cm_angle_deg), ('angle', angle), ('angle_deg', angle_deg), ('recoil_angle', recoil_angle), ('recoil_angle_deg', recoil_angle_deg), ('branch', branch), ('cost', cost)))
+
     def relativity_kinematics_collision(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, beam: Optional[Dict[str, Any]] = None, target: Optional[Dict[str, Any]] = None, crossing_angle: Optional[float] = None, crossing_angle_deg: Optional[float] = None, sqrt_s: Optional[float] = None, final_state: Optional[List[Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """sqrt(s) of fixed-target and colliding beams, the beam energy for a given sqrt(s), production thresholds
 
@@ -1484,6 +1513,7 @@ OPERATIONS = {
     'relativity_kinematics_invariant_mass': '/v1/relativity/kinematics/invariant-mass',
     'relativity_kinematics_decay': '/v1/relativity/kinematics/decay',
     'relativity_kinematics_compton': '/v1/relativity/kinematics/compton',
+    'relativity_kinematics_elastic': '/v1/relativity/kinematics/elastic',
     'relativity_kinematics_collision': '/v1/relativity/kinematics/collision',
     'gr_schwarzschild': '/v1/gr/schwarzschild',
     'gr_geodesic': '/v1/gr/geodesic',
