@@ -476,6 +476,14 @@ static const char *const api_examples_data[] = {
     "  \"request\": {\"projectile\": {\"particle\": \"proton\", \"kinetic_energy\": 500}, \"target\": \"proton\", \"angle_deg\": 30},\n"
     "  \"notes_answer\": {\"pointer\": \"/lab/projectile/kinetic_energy\", \"value\": 351.58058185546344, \"rounding\": {\"relative\": 1e-12}, \"text\": \"Energy and momentum conservation with the target at rest give T' = T cos²θ/(1 + T sin²θ/(2mc²)): a 500 MeV proton scattered through 30° by a proton keeps 351.58 MeV (T cos²θ = 375 MeV non-relativistically), and the opening angle is 83.8°, not 90°.\"}\n"
     "}",
+    "{\n"
+    "  \"id\": \"circular-orbit-for-l\",\n"
+    "  \"title\": \"The circular orbit of a given angular momentum: the Earth about the Sun\",\n"
+    "  \"section\": \"Extra: 5 Hamiltonian Mechanics — Motion in a Central Potential\",\n"
+    "  \"operation\": \"/v1/hamiltonian/circular-orbit\",\n"
+    "  \"request\": {\"mass\": 5.9722e24, \"angular_momentum\": 2.6617e40, \"gm\": 1.32712440018e20},\n"
+    "  \"notes_answer\": {\"pointer\": \"/orbits/0/radius\", \"value\": 149671078734.58072, \"rounding\": {\"relative\": 1e-12}, \"text\": \"V_eff = L²/(2mr²) − GMm/r is least where m r³ V' = L²: r = L²/(GM m²) = 1.4967e11 m for L = 2.6617e40 kg m²/s; there ω_r = ω_φ (apsidal angle π, Bertrand) and the period is 2π√(r³/GM) = 365.5 days.\"}\n"
+    "}",
 };
 
 #endif

@@ -60,6 +60,7 @@ extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
 extern const struct api_route api_route_hamiltonian_phase_area;
 extern const struct api_route api_route_hamiltonian_rotating_frame;
+extern const struct api_route api_route_hamiltonian_circular_orbit;
 extern const struct api_route api_route_continuum_string;
 extern const struct api_route api_route_continuum_rod;
 
@@ -103,6 +104,7 @@ const struct api_route *const api_routes[] = {
     &api_route_hamiltonian_poincare,
     &api_route_hamiltonian_phase_area,
     &api_route_hamiltonian_rotating_frame,
+    &api_route_hamiltonian_circular_orbit,
     &api_route_continuum_string,
     &api_route_continuum_rod,
     &api_route_trajectory,

@@ -1147,6 +1147,26 @@ class _Operations:
         """
         return self._operation('/v1/hamiltonian/rotating-frame', body, (('mass', mass), ('omega', omega), ('position', position), ('velocity', velocity), ('potential_energy', potential_energy), ('cost', cost)))
 
+    def hamiltonian_circular_orbit(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, angular_momentum: Optional[float] = None, terms: Optional[List[Dict[str, Any]]] = None, gm: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The circular orbits of a given angular momentum in a central potential: radius, energy, angular and radial frequencies, periods, apsidal angle, stability
+
+        POST /v1/hamiltonian/circular-orbit. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): kg, the orbiting particle (the reduced mass for two bodies)
+            angular_momentum (required): kg m^2/s, L = m r^2 phi_dot
+            terms: V(r) = sum of the terms (Kepler: n = -1, k = -G M m; isotropic oscillator: n = 2, k =
+                    m w^2/2)
+            gm: m^3/s^2: adds the Kepler term V = -gm m/r (G M of the centre)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/circular-orbit', body, (('mass', mass), ('angular_momentum', angular_momentum), ('terms', terms), ('gm', gm), ('cost', cost)))
+
     def continuum_string(self, body: Optional[Dict[str, Any]] = None, *, tension: Optional[float] = None, linear_density: Optional[float] = None, mass: Optional[float] = None, length: Optional[float] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Continuum mechanics: transverse waves on a string with fixed ends — wave speed and normal modes
 
@@ -1522,6 +1542,7 @@ OPERATIONS = {
     'hamiltonian_poincare': '/v1/hamiltonian/poincare',
     'hamiltonian_phase_area': '/v1/hamiltonian/phase-area',
     'hamiltonian_rotating_frame': '/v1/hamiltonian/rotating-frame',
+    'hamiltonian_circular_orbit': '/v1/hamiltonian/circular-orbit',
     'continuum_string': '/v1/continuum/string',
     'continuum_rod': '/v1/continuum/rod',
     'trajectory': '/v1/trajectory',
