@@ -1187,8 +1187,8 @@ class _Operations:
         """
         return self._operation('/v1/continuum/string', body, (('tension', tension), ('linear_density', linear_density), ('mass', mass), ('length', length), ('modes', modes), ('cost', cost)))
 
-    def continuum_rod(self, body: Optional[Dict[str, Any]] = None, *, length: Optional[float] = None, density: Optional[float] = None, youngs_modulus: Optional[float] = None, section: Optional[Any] = None, ends: Optional[str] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
-        """Continuum mechanics: axial and bending waves of a rod — speeds, the dispersion of bending waves and the normal modes free, clamped, cantilevered or pinned
+    def continuum_rod(self, body: Optional[Dict[str, Any]] = None, *, length: Optional[float] = None, density: Optional[float] = None, youngs_modulus: Optional[float] = None, section: Optional[Any] = None, ends: Optional[str] = None, shear_modulus: Optional[float] = None, poisson_ratio: Optional[float] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Continuum mechanics: axial, torsional and bending waves of a rod — speeds, the dispersion of bending waves and the normal modes free, clamped, cantilevered or pinned
 
         POST /v1/continuum/rod. The request is `body` (a dict) and/or the keyword arguments below
         (merged; a keyword that is not None wins). Returns the answer as a dict; raises
@@ -1202,12 +1202,14 @@ class _Operations:
             section (required): the cross-section: a solid circle, a rectangle (bending across its
                     height), or its area and second moment of area
             ends: end conditions (clamped-free: a cantilever); default "clamped-free"
+            shear_modulus: shear modulus G, Pa (torsional waves; or give poisson_ratio)
+            poisson_ratio: Poisson's ratio nu: G = E/(2(1 + nu)) for the torsional waves
             modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('modes', modes), ('cost', cost)))
+        return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('shear_modulus', shear_modulus), ('poisson_ratio', poisson_ratio), ('modes', modes), ('cost', cost)))
 
     def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
