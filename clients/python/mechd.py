@@ -601,7 +601,7 @@ class _Operations:
             momentum: momentum |p| >= 0, in energy_unit/c
             kinetic_energy: kinetic energy T = E - m c^2 >= 0, in energy_unit
             proper_lifetime: mean lifetime tau in the rest frame, s (> 0): adds lifetime {proper, c_tau,
-                    lab, decay_length}
+                    lab, lab_c_tau, decay_length}
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
@@ -1361,7 +1361,7 @@ class _Operations:
         """
         return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
 
-    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
 
         POST /v1/scenes/falling-object. The request is `body` (a dict) and/or the keyword arguments below
@@ -1374,6 +1374,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1384,9 +1387,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical
 
         POST /v1/scenes/vertical-shot. The request is `body` (a dict) and/or the keyword arguments below
@@ -1400,6 +1403,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1410,9 +1416,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change
 
         POST /v1/scenes/cannonball. The request is `body` (a dict) and/or the keyword arguments below
@@ -1428,6 +1434,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1438,9 +1447,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
 
         POST /v1/scenes/foucault. The request is `body` (a dict) and/or the keyword arguments below
@@ -1454,6 +1463,9 @@ class _Operations:
             g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
                     in the notes); default 9.80665
             omega_magnitude: Earth's rotation rate W, rad/s (default IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28
             release: default: from rest at 3 degrees, towards the east
             swings: length of the run in swings (full periods of the planar pendulum at this amplitude);
@@ -1473,7 +1485,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
+        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
 
     def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The notes' rotating-table puck experiments seen from the inertial and the rotating frame
