@@ -76,7 +76,7 @@ static const char example[] =
 #define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))
 
 static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillation *o, double r,
-                          double res, double mass)
+                          double res)
 {
     json_t *j = json_object();
     if (!j) return NULL;
@@ -101,7 +101,6 @@ static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillatio
     SET(j, "pericentre_angle", ok ? api_real(c, 2 * o->apsidal_angle) : json_null());
     SET(j, "growth_rate", o->k_eff < 0 ? api_real(c, o->growth_rate) : json_null());
     SET(j, "residual", api_real(c, res));
-    (void)mass;
     return j;
 }
 
@@ -142,7 +141,7 @@ static json_t *circular_orbit_op(struct api_call *c, const json_t *body)
     SET(out, "count", json_integer((json_int_t)o.count));
     SET(out, "method", json_string(o.closed_form ? "closed_form" : "bracketed"));
     for (size_t i = 0; i < o.count; i++)
-        json_array_append_new(arr, orbit_json(c, &o.orbit[i], o.radius[i], o.residual[i], mass));
+        json_array_append_new(arr, orbit_json(c, &o.orbit[i], o.radius[i], o.residual[i]));
     SET(out, "orbits", arr);
     if (o.count == 0)
         SET(out, "note",

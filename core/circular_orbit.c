@@ -92,8 +92,8 @@ enum mech_status mech_circular_orbits_for_l(const struct mech_potential_term *te
         return mech_error_set(err, MECH_EINVAL, "angular_momentum",
                               "must be finite and > 0 (L = 0 has no circular orbit), got %.17g",
                               angular_momentum);
-    /* c_i = k n (k for the logarithm) multiplies e^{(n + 2) x}; merge equal
-     * exponents in a compensated way only to the extent doubles allow. */
+    /* c_i = k n (k for the logarithm) multiplies e^{(n + 2) x}; terms with
+     * equal exponents are summed into one coefficient. */
     double ca[16], cc[16];
     size_t m = 0;
     for (size_t i = 0; i < n; i++) {

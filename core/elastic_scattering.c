@@ -20,7 +20,6 @@ static void lab_of(const struct mech_boost *b, double m, double pstar, double es
                    double ch, double gm1, struct mech_kin_lab *out)
 {
     const double s2 = 2.0 * sh * sh, c2 = 2.0 * ch * ch; /* 1 − cos θ*, 1 + cos θ* */
-    const double cth = c2 - 1.0;                        /* cos θ* (used where it is not small) */
     const double g = b->gamma, bg = b->beta_gamma, beta = b->beta;
     double e, ppar;
     if (ch >= sh) { /* θ* ≤ 90°: cos θ* = 1 − 2 sin²h, both terms ≥ 0 */
@@ -31,7 +30,6 @@ static void lab_of(const struct mech_boost *b, double m, double pstar, double es
         e = back + bg * pstar * c2;
         ppar = g * pstar * (c2 + gm1);
     }
-    (void)cth;
     const double pperp = pstar * (2.0 * sh * ch);
     const double p = hypot(ppar, pperp);
     out->energy = e;
@@ -102,7 +100,7 @@ enum mech_status mech_elastic_scatter(const struct mech_kin_motion *projectile, 
      * squares below from overflowing or underflowing. */
     const double big = e1r > m2 ? e1r : m2;
     const double sc = ldexp(1.0, ilogb(big));
-    const double m1 = m1r / sc, p1 = p1r / sc, e1 = e1r / sc, t1 = projectile->kinetic / sc;
+    const double m1 = m1r / sc, p1 = p1r / sc, e1 = e1r / sc;
     const double mt = m2 / sc;
 
     struct mech_elastic o = {0};
@@ -116,7 +114,6 @@ enum mech_status mech_elastic_scatter(const struct mech_kin_motion *projectile, 
     /* CM frame: a "particle" of mass W, momentum p1, energy E1 + m2, kinetic
      * E − W = p1²/(E + W). */
     struct mech_kin_motion cmm = {w, p1, etot, p1 * (p1 / (etot + w)), MECH_KIN_GIVEN_MOMENTUM};
-    (void)t1;
     enum mech_status st = mech_kin_motion_boost(&cmm, mech_vec3_make(0, 0, 1), &o.cm, err);
     if (st != MECH_OK) return st;
     /* g = β/β1* = (m1² + m2 E1)/(m2 (E1 + m2)); g − 1 = (m1 − m2)(m1 + m2)/(m2 (E1 + m2)). */
@@ -192,14 +189,14 @@ enum mech_status mech_elastic_scatter(const struct mech_kin_motion *projectile, 
     o.s = s * sc * sc;
     o.sqrt_s = w * sc;
     o.t *= sc * sc;
-    /* u = 2m1² + 2m2² − s − t = (m1 − m2)² − 2 p*² ... written as
-     * m1² + m2² − 2(E1*E2* + p*² cos θ*), E1*E2* − p*² = (m1²m2² + p*²(m1² + m2²))/(E1*E2* + p*²). */
+    /* u = 2m1² + 2m2² − s − t, written as m1² + m2² − 2(E1*E2* + p*² cos θ*) with
+     * E1*E2* + p*² cos θ* = X + 2 p*² cos²(θ* / 2), X = E1*E2* − p*² =
+     * (m1²m2² + p*²(m1² + m2²))/(E1*E2* + p*²) ≥ 0. */
     {
-        const double sh = sin(hs[branch]), ch = cos(hs[branch]);
+        const double ch = cos(hs[branch]);
         const double x = (m1 * m1 * mt * mt + pstar * pstar * (m1 * m1 + mt * mt)) /
                          (estar[0] * estar[1] + pstar * pstar);
         o.u = (m1 * m1 + mt * mt - 2.0 * (x + 2.0 * pstar * pstar * ch * ch)) * sc * sc;
-        (void)sh;
     }
     o.momentum_transfer *= sc;
     o.cm_momentum = pstar * sc;
