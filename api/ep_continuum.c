@@ -163,7 +163,7 @@ static const char rod_description[] =
     "like a fork support).";
 
 static const char rod_example[] =
-    "{\"length\": 1, \"density\": 7850, \"youngs_modulus\": 2e11, "
+    "{\"length\": 1, \"density\": 7850, \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
     "\"section\": {\"width\": 0.02, \"height\": 0.005}, \"ends\": \"clamped-free\"}";
 
 static int ends_of(const char *s, enum mech_rod_ends *e)

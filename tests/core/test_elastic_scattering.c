@@ -89,6 +89,15 @@ static void test_equal_masses(void)
     mech_error_clear(&e);
     CHECK_EQ_INT(mech_elastic_scatter(&k, MP, MECH_ELASTIC_LAB_ANGLE, PI / 2, 0, &o, &e), MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "angle"));
+    /* Equal masses: T1 = 2p*²/m and T4 = 2p*² sin²(θ* / 2)/m, so T3 = T1 cos²(θ* / 2)
+     * exactly; near θ* = π that is T1 − T4 with T4 ≈ T1 (2.5e-17 T1 left at
+     * θ* = π − 1e-8): it must come from cos²(θ* / 2), not the difference. */
+    for (double d = 1e-4; d >= 1e-12; d *= 1e-4) {
+        const double th = PI - d;
+        CHECK_EQ_INT(mech_elastic_scatter(&k, MP, MECH_ELASTIC_CM_ANGLE, th, 0, &o, NULL), MECH_OK);
+        const double c = cos(th / 2);
+        CHECK_CLOSE(o.projectile.kinetic, t * c * c, 1e-12, 0);
+    }
     /* Head-on (θ* = π): the projectile stops, the target takes all of T. */
     CHECK_EQ_INT(mech_elastic_scatter(&k, MP, MECH_ELASTIC_CM_ANGLE, PI, 0, &o, NULL), MECH_OK);
     CHECK_CLOSE(o.recoil.kinetic, t, 1e-15, 0);
