@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "mech/continuum_waves.h"
+#include "mech/torsion.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -116,11 +117,18 @@ static const char rod_schema[] =
     "\"height\":" C_POS(0, 1e6, "height h in the bending plane, m: A = b h, I = b h^3/12") "}},"
     "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"area\",\"second_moment\"],"
     "\"properties\":{\"area\":" C_POS(0, 1e12, "area A, m^2") ","
-    "\"second_moment\":" C_POS(0, 1e24, "second moment of area I about the bending axis, m^4") "}}"
+    "\"second_moment\":" C_POS(0, 1e24, "second moment of area I about the bending axis, m^4") ","
+    "\"polar_moment\":" C_POS(0, 1e24, "polar moment J = integral of r^2 dA, m^4 (torsional waves)") ","
+    "\"torsion_constant\":" C_POS(0, 1e24, "torsion constant K <= J, m^4 (default J: a circle "
+    "or tube)") "}}"
     "]},"
     "\"ends\":{\"type\":\"string\",\"enum\":[\"clamped-free\",\"clamped-clamped\",\"free-free\","
     "\"pinned-pinned\"],\"default\":\"clamped-free\",\"description\":\"end conditions "
     "(clamped-free: a cantilever)\"},"
+    "\"shear_modulus\":" C_POS(0, 1e15, "shear modulus G, Pa (torsional waves; or give "
+    "poisson_ratio)") ","
+    "\"poisson_ratio\":{\"type\":\"number\",\"exclusiveMinimum\":-1,\"maximum\":0.5,"
+    "\"description\":\"Poisson's ratio nu: G = E/(2(1 + nu)) for the torsional waves\"},"
     "\"modes\":" C_MODES "}}";
 /* clang-format on */
 
@@ -143,10 +151,19 @@ static const char rod_description[] =
     "omega = 0 (one axial, two bending), not listed. Each bending mode gives "
     "k_radius_of_gyration = k_n sqrt(I/A): Euler-Bernoulli theory (no shear, no rotary "
     "inertia) holds while it is small; above 0.1 the notes say so (Timoshenko corrections "
-    "of order (k r_g)^2 lower the true frequency).";
+    "of order (k r_g)^2 lower the true frequency). torsional (with shear_modulus G, or "
+    "poisson_ratio nu: G = E/(2(1 + nu)); null without either): Saint-Venant twist waves "
+    "rho J theta_tt = G K theta_ss, wave_speed = sqrt(G K/(rho J)) = sqrt(G/rho) for a "
+    "circle (K = J = pi r^4/2); a rectangle b x h has J = b h (b^2 + h^2)/12 and K = (b h^3/3)"
+    "(1 - (192/pi^5)(h/b) sum_{n odd} tanh(n pi b/2h)/n^5) (Timoshenko & Goodier; b >= h), "
+    "so a square bar is slower by sqrt(K/J) = 0.9184; with area and second_moment give "
+    "polar_moment (and torsion_constant, default J). Torsional modes have the axial "
+    "wavenumbers: a clamped end holds the twist, a free end carries no torque, so k_n L = n "
+    "pi or (n - 1/2) pi as for longitudinal waves (a pinned end is taken to hold the twist, "
+    "like a fork support).";
 
 static const char rod_example[] =
-    "{\"length\": 1, \"density\": 7850, \"youngs_modulus\": 2e11, "
+    "{\"length\": 1, \"density\": 7850, \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
     "\"section\": {\"width\": 0.02, \"height\": 0.005}, \"ends\": \"clamped-free\"}";
 
 static int ends_of(const char *s, enum mech_rod_ends *e)
@@ -163,6 +180,70 @@ static int ends_of(const char *s, enum mech_rod_ends *e)
             return 1;
         }
     return 0;
+}
+
+/* The torsional block, or NULL: with no shear modulus (not asked for), with a
+ * section given by area alone (a note says what is missing), or after
+ * recording an error (c->problem set). */
+static json_t *torsional(struct api_call *c, const json_t *body, const json_t *sec, double E,
+                         double rho, double L, enum mech_rod_ends ends, int nm, json_t *notes)
+{
+    const json_t *gj = json_object_get(body, "shear_modulus"), *nj = json_object_get(body, "poisson_ratio");
+    if (gj && nj) {
+        api_call_invalid(c, "/poisson_ratio", "give shear_modulus or poisson_ratio, not both");
+        return NULL;
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    double g = 0, j = 0, k = 0;
+    enum mech_status st = MECH_OK;
+    if (gj)
+        g = json_number_value(gj);
+    else if (nj)
+        st = mech_shear_modulus(E, json_number_value(nj), &g, &e);
+    if (st == MECH_OK && (gj || nj)) {
+        if (json_object_get(sec, "radius")) {
+            const double r = api_number(sec, "radius", 1);
+            j = k = 0.5 * PI * (r * r) * (r * r);
+        } else if (json_object_get(sec, "width")) {
+            st = mech_torsion_rectangle(api_number(sec, "width", 1), api_number(sec, "height", 1), &j,
+                                        &k, &e);
+            if (st != MECH_OK) snprintf(e.param, sizeof e.param, "section");
+        } else if (json_object_get(sec, "polar_moment")) {
+            j = api_number(sec, "polar_moment", 1);
+            k = api_number(sec, "torsion_constant", j);
+        } else {
+            json_array_append_new(notes, json_string(
+                "torsional waves need the section's polar_moment (and torsion_constant) when it "
+                "is given by area and second_moment: torsional is null"));
+            return NULL;
+        }
+    }
+    if (st == MECH_OK && !gj && !nj) return NULL; /* not asked for: torsional is null */
+    double ct = 0;
+    if (st == MECH_OK) st = mech_torsional_wave_speed(g, rho, k, j, &ct, &e);
+    if (st != MECH_OK) {
+        api_call_fail_core(c, st, &e, "");
+        return NULL;
+    }
+    json_t *o = json_object(), *modes = json_array();
+    if (!o || !modes) {
+        json_decref(o), json_decref(modes);
+        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+        return NULL;
+    }
+    for (int n = 1; n <= nm; n++) {
+        double kl;
+        if (mech_rod_axial_mode(ends, n, &kl, NULL) != MECH_OK) break;
+        struct mech_wave_mode m = mech_wave_mode_nondispersive(ct, L, kl);
+        json_array_append_new(modes, mode_json(c, n, &m));
+    }
+    json_object_set_new_nocheck(o, "shear_modulus", api_real(c, g));
+    json_object_set_new_nocheck(o, "polar_moment", api_real(c, j));
+    json_object_set_new_nocheck(o, "torsion_constant", api_real(c, k));
+    json_object_set_new_nocheck(o, "wave_speed", api_real(c, ct));
+    json_object_set_new_nocheck(o, "modes", modes);
+    return o;
 }
 
 static json_t *rod_op(struct api_call *c, const json_t *body)
@@ -234,6 +315,12 @@ static json_t *rod_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(ben, "modes", bm);
     json_object_set_new_nocheck(out, "longitudinal", lon);
     json_object_set_new_nocheck(out, "bending", ben);
+    json_t *tor = torsional(c, body, sec, E, rho, L, ends, nm, notes);
+    if (!tor && c->problem != API_PROBLEM_NONE) {
+        json_decref(out), json_decref(notes);
+        return NULL;
+    }
+    json_object_set_new_nocheck(out, "torsional", tor ? tor : json_null());
     if (thick)
         json_array_append_new(notes, json_string(
             "some bending modes have k r_g > 0.1: their wavelength is not long against the "
@@ -263,8 +350,8 @@ const struct api_route api_route_continuum_string = {
 const struct api_route api_route_continuum_rod = {
     "POST",
     "/v1/continuum/rod",
-    "Continuum mechanics: axial and bending waves of a rod — speeds, the dispersion of bending "
-    "waves and the normal modes free, clamped, cantilevered or pinned",
+    "Continuum mechanics: axial, torsional and bending waves of a rod — speeds, the dispersion "
+    "of bending waves and the normal modes free, clamped, cantilevered or pinned",
     rod_description,
     rod_schema,
     rod_example,

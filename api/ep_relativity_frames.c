@@ -452,7 +452,8 @@ static const char wl_description[] =
     "1) from rest, evaluated as K cosh m, K sinh m with K = c tau sinh(h)/h, h = a tau/2c, "
     "precise for small a tau/c). `units`: seconds (s, m, c = 299792458 m/s) or years (Julian "
     "years of 365.25 d, light-years, c = 1; g = 1.0323 ly/yr^2). Per leg and in total: "
-    "`proper_time`, `coordinate_time`, `age_difference` (coordinate - proper, without "
+    "`proper_time` with `proper_time_ct` (c times it: m, or ly with years - a muon's c tau "
+    "beside its tau), `coordinate_time`, `age_difference` (coordinate - proper, without "
     "cancellation: right at 1 m/s), `distance` (path length, including a turnaround inside an "
     "accelerated leg), `displacement`, `start`/`end` events [t, x, y, z], `final_velocity`; "
     "the total's `stay_at_home_time` is the home twin's age at the traveller's last event and "
@@ -596,6 +597,7 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
                                                     ? "coast"
                                                     : "accelerate"));
         json_object_set_new_nocheck(o, "proper_time", api_real(c, r->proper_time));
+        json_object_set_new_nocheck(o, "proper_time_ct", api_real(c, r->proper_time * cl));
         json_object_set_new_nocheck(o, "coordinate_time", api_real(c, r->coordinate_time));
         json_object_set_new_nocheck(o, "age_difference", api_real(c, r->age_difference));
         json_object_set_new_nocheck(o, "distance", api_real(c, r->distance));
@@ -621,6 +623,7 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
     if (views) json_object_set_new_nocheck(res, "home_telescope", views);
     json_t *t = json_object();
     json_object_set_new_nocheck(t, "proper_time", api_real(c, tot.proper_time));
+    json_object_set_new_nocheck(t, "proper_time_ct", api_real(c, tot.proper_time * cl));
     json_object_set_new_nocheck(t, "coordinate_time", api_real(c, tot.coordinate_time));
     json_object_set_new_nocheck(t, "stay_at_home_time", api_real(c, tot.coordinate_time));
     json_object_set_new_nocheck(t, "age_difference", api_real(c, tot.age_difference));

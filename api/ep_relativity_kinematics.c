@@ -15,6 +15,7 @@
 
 #include "endpoint.h"
 #include "mech/boost.h"
+#include "mech/decay_estimate.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
 #include "velocity_request.h"
@@ -372,9 +373,13 @@ static const char decay_description[] =
     "maximum lab angle (forward and backward rest-frame emission both reach it), with the "
     "rest-frame angles at the edges. Three-body: each daughter's maximum energy "
     "E_max = (M^2 + m_i^2 - (sum_{j!=i} m_j)^2)/(2M), computed exactly as "
-    "T_max = Q (M - m_i + S_i)/(2M) (the others recoil together) - not with the notes' "
-    "nonrelativistic-proton approximation, which for the neutron's electron endpoint is "
-    "2.2e-7 MeV low (0.7815820 vs 0.7815822 MeV, Q = 0.7823334 MeV) - plus the lab maximum "
+    "T_max = Q (M - m_i + S_i)/(2M) (the others recoil together), and beside it "
+    "notes_estimate, the notes' neutron-decay approximation labelled as such (null when the "
+    "others are massless): the others as one recoil of mass S_i taking no kinetic energy, E "
+    "~ M - S_i, p ~ sqrt((M - S_i)^2 - m_i^2), T ~ Q, with kinetic_energy_minus_exact = "
+    "Q (Q + 2 m_i)/(2M) and momentum_minus_exact formed without cancellation (the neutron's "
+    "electron: 0.7823334 vs 0.7815822 MeV, 7.512e-4 MeV high), and its intermediate step "
+    "(the recoil non-relativistic, the p^4 term dropped: 2.18e-7 MeV low) - plus the lab maximum "
     "gamma(E_max + beta p_max) for a moving parent; with angles, the planar rest-frame "
     "configuration: momentum balance gives p0 : p1 : p2 = sin(theta12) : sin(theta20) : "
     "sin(theta01) and energy conservation the scale. A parent lighter than its daughters "
@@ -490,6 +495,38 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
     return res;
 }
 
+/* The notes' estimate of daughter i's endpoint (notes §3.16 Neutron Decay)
+ * beside the exact one, labelled; null when the others are all massless. */
+static json_t *notes_estimate_json(struct api_call *c, double mp, const double m[3], size_t i)
+{
+    struct mech_decay_estimate d;
+    if (mech_decay_endpoint_estimate(mp, m, 3, i, &d, NULL) != MECH_OK) return json_null();
+    json_t *o = json_object(), *mid = json_object();
+    json_object_set_new_nocheck(
+        o, "label",
+        json_string("approximation (notes 3.16, Neutron Decay): the other daughters recoil as "
+                    "one body of mass recoil_mass taking no kinetic energy, E ~ M - recoil_mass, "
+                    "p ~ sqrt((M - recoil_mass)^2 - m^2), T ~ Q; good when recoil_mass >> Q; "
+                    "the exact endpoint is beside it"));
+    json_object_set_new_nocheck(o, "recoil_mass", api_real(c, d.recoil_mass));
+    json_object_set_new_nocheck(o, "energy", api_real(c, d.energy));
+    json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, d.kinetic));
+    json_object_set_new_nocheck(o, "momentum", api_real(c, d.momentum));
+    json_object_set_new_nocheck(o, "kinetic_energy_minus_exact", api_real(c, d.kinetic_minus_exact));
+    json_object_set_new_nocheck(o, "momentum_minus_exact", api_real(c, d.momentum_minus_exact));
+    json_object_set_new_nocheck(
+        mid, "label",
+        json_string("the notes' step before: the recoil non-relativistic, p^2 (1 + (M - "
+                    "recoil_mass)/recoil_mass) = (M - recoil_mass)^2 - m^2 (its p^4 term dropped)"));
+    json_object_set_new_nocheck(mid, "momentum", api_real(c, d.mid_momentum));
+    json_object_set_new_nocheck(mid, "kinetic_energy", api_real(c, d.mid_kinetic));
+    json_object_set_new_nocheck(mid, "kinetic_energy_minus_exact",
+                                api_real(c, d.mid_kinetic_minus_exact));
+    json_object_set_new_nocheck(mid, "momentum_minus_exact", api_real(c, d.mid_momentum_minus_exact));
+    json_object_set_new_nocheck(o, "intermediate", mid);
+    return o;
+}
+
 static json_t *three_body(struct api_call *c, const json_t *body, const struct mech_boost *b,
                           double mp, const double m[3], json_t *res)
 {
@@ -522,6 +559,7 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
         json_object_set_new_nocheck(o, "energy", api_real(c, em));
         json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, tm));
         json_object_set_new_nocheck(o, "momentum", api_real(c, pm));
+        json_object_set_new_nocheck(o, "notes_estimate", notes_estimate_json(c, mp, m, i));
         json_array_append_new(ends, o);
         if (labmax) {
             struct mech_kin_lab l;

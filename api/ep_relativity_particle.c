@@ -56,7 +56,7 @@ static const char schema[] =
     "\"momentum\":" P_NUM(0, 1e60, "momentum |p| >= 0, in energy_unit/c") ","
     "\"kinetic_energy\":" P_NUM(0, 1e60, "kinetic energy T = E - m c^2 >= 0, in energy_unit") ","
     "\"proper_lifetime\":" P_NUM(0, 1e60, "mean lifetime tau in the rest frame, s (> 0): "
-                                "adds lifetime {proper, c_tau, lab, decay_length}")
+                                "adds lifetime {proper, c_tau, lab, lab_c_tau, decay_length}")
     "}}";
 /* clang-format on */
 
@@ -77,7 +77,8 @@ static const char description[] =
     "newtonian = m v^2/2 with relative_error (m v^2/2 - T)/T = -(gamma - 1)(2 gamma + 1)/"
     "(2 gamma^2), and momentum_expansion = p^2/2m (the notes' E ~ m c^2 + p^2/2m) with "
     "relative_error (gamma - 1)/2. With proper_lifetime tau (s): lifetime {proper, c_tau "
-    "(m), lab = gamma tau (s), decay_length = beta gamma c tau (m)}. Two or no forms, beta "
+    "(m), lab = gamma tau (s), lab_c_tau = gamma c tau (m, c times the lab lifetime), "
+    "decay_length = beta gamma c tau (m)}. Two or no forms, beta "
     ">= 1, E < m, a massless particle given a speed: a 422 naming the field.";
 
 static const char example[] = "{\"particle\": \"mu-\", \"beta\": 0.9999, \"proper_lifetime\": 2e-6}";
@@ -202,6 +203,7 @@ static json_t *particle_op(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(lo, "proper", api_real(c, life.proper));
         json_object_set_new_nocheck(lo, "c_tau", api_real(c, life.c_tau));
         json_object_set_new_nocheck(lo, "lab", api_real(c, life.lab));
+        json_object_set_new_nocheck(lo, "lab_c_tau", api_real(c, life.lab * MECH_PARTICLE_STATE_C));
         json_object_set_new_nocheck(lo, "decay_length", api_real(c, life.decay_length));
         json_object_set_new_nocheck(out, "lifetime", lo);
     }

@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "integrator_block.h"
+#include "mech/euler_rates.h"
 #include "mech/top.h"
 #include "trajectory_request.h"
 
@@ -47,7 +48,10 @@ static const char description[] =
     "in the notes (phi about z, theta about the line of nodes, psi about the symmetry axis; R "
     "= R_psi R_theta R_phi, passive), with rates; the body angular velocity is w = (phi' sin "
     "theta sin psi + theta' cos psi, phi' sin theta cos psi - theta' sin psi, phi' cos theta + "
-    "psi'). The motion is integrated as a rigid body - Euler's equations about the tip with "
+    "psi'), answered at t = 0 as initial_omega {body, space (w_space = R^T w_body: "
+    "(theta' cos phi + psi' sin theta sin phi, theta' sin phi - psi' sin theta cos phi, "
+    "phi' + psi' cos theta)), magnitude}, as /v1/rotation/euler-rates computes it. The "
+    "motion is integrated as a rigid body - Euler's equations about the tip with "
     "the gravity torque -M g h e3 x z and a unit-quaternion attitude, dimensionless in time "
     "units of 1/W, W = max(|w0|, sqrt(M g h / I1)) (rate_scale) - so nothing is singular at "
     "theta = 0 (a sleeping top) or pi; Euler angles are extracted per sample and unwrapped to "
@@ -160,6 +164,18 @@ static json_t *top(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "axis", ja);
     json_object_set_new_nocheck(out, "pole_samples", jp);
     json_object_set_new_nocheck(out, "omega3", api_real(c, r.omega3));
+    {
+        /* the body (and space) angular velocity at t = 0 from the Euler rates */
+        const double ang[3] = {p.phi, p.theta, p.psi}, rt[3] = {p.phi_dot, p.theta_dot, p.psi_dot};
+        struct mech_euler_kinematics k;
+        json_t *w0 = json_object();
+        if (mech_euler_kinematics(ang, rt, &k, NULL) == MECH_OK) {
+            json_object_set_new_nocheck(w0, "body", api_vec3(c, k.omega_body));
+            json_object_set_new_nocheck(w0, "space", api_vec3(c, k.omega_space));
+            json_object_set_new_nocheck(w0, "magnitude", api_real(c, mech_vec3_norm(k.omega_body)));
+        }
+        json_object_set_new_nocheck(out, "initial_omega", w0);
+    }
 
     json_t *nu = json_object();
     json_object_set_new_nocheck(nu, "theta_min", api_real(c, r.turning.theta_min));

@@ -10,6 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "earth_rotation.h"
 #include "endpoint.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
@@ -36,6 +37,7 @@ static const char fc_schema[] =
                      "the origin, as in the notes)") ","
     "\"omega_magnitude\":" FC_NUM("0", "1", "7.292115e-05",
                                    "Earth's rotation rate W, rad/s (default IERS 2010)") ","
+    API_SIDEREAL_DAY_PROP ","
     "\"mass\":" FC_POS("1e30", "28",
                         "bob mass, kg (scales the energy only; Foucault's bob: 28 kg)") ","
     "\"release\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
@@ -169,7 +171,9 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     p.latitude_deg = api_number(body, "latitude_deg", 45.0);
     p.length = api_number(body, "length", 67.0);
     p.g = api_number(body, "g", 9.80665);
-    p.omega_magnitude = api_number(body, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+    if (!api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL,
+                            &p.omega_magnitude))
+        return NULL;
     p.mass = api_number(body, "mass", 28.0);
     const json_t *rel = json_object_get(body, "release");
     p.amplitude_deg = api_number(rel, "amplitude_deg", 3.0);

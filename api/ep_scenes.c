@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "earth_rotation.h"
 #include "endpoint.h"
 #include "mech/scenes.h"
 #include "mech/trajectory.h"
@@ -33,7 +34,8 @@ static const double ep_pi = 3.14159265358979323846;
                                                     "\"omega_magnitude\":{\"type\":\"number\","    \
                                                     "\"minimum\":0,\"maximum\":0.01,"              \
                                                     "\"default\":7.292115e-05,\"description\":"    \
-                                                    "\"Earth rotation rate, rad/s (IERS 2010)\"},"
+                                                    "\"Earth rotation rate, rad/s (IERS 2010)\"},"  \
+    API_SIDEREAL_DAY_PROP ","
 #define SC_ACCURACY                                                                                \
     "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
     "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \
@@ -151,12 +153,13 @@ static const char *accuracy_name(const json_t *body)
     return json_object_get(body, "target_error") ? NULL : api_string(body, "accuracy", "balanced");
 }
 
-static void earth_params(const json_t *body, struct mech_scene_ballistic *s)
+/* 0 after recording an error (both omega_magnitude and sidereal_day). */
+static int earth_params(struct api_call *c, const json_t *body, struct mech_scene_ballistic *s)
 {
     memset(s, 0, sizeof *s);
     s->latitude_deg = api_number(body, "latitude_deg", 0);
     s->g = api_number(body, "g", 9.80665);
-    s->omega = api_number(body, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+    return api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL, &s->omega);
 }
 
 static json_t *run_ballistic(struct api_call *c, const json_t *body, const char *scene,
@@ -231,7 +234,7 @@ static json_t *falling_op(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const double h = api_number(body, "height", 0);
     s.r0 = mech_vec3_make(0, 0, h);
     json_t *par = json_object();
@@ -273,7 +276,7 @@ static json_t *shot_op(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const int has_v = json_object_get(body, "speed") != NULL;
     const int has_h = json_object_get(body, "height") != NULL;
     if (has_v == has_h) {
@@ -334,7 +337,7 @@ static json_t *cannon_op(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const double v0 = api_number(body, "speed", 0);
     const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
     const double ph = api_number(body, "azimuth_deg", 0) * ep_pi / 180.0;

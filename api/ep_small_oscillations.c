@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "mech/earth.h"
+#include "earth_rotation.h"
 #include "mech/small_oscillations.h"
 
 #ifndef M_PI
@@ -64,7 +65,7 @@
     "\"description\":\"deg, north positive\"},"                                             \
     "\"omega_earth\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e3,"                \
     "\"default\":7.292115e-5,\"description\":\"rad/s, the Earth's rotation rate (the "   \
-    "default of /v1/scenes/foucault)\"}}}"
+    "default of /v1/scenes/foucault)\"}," API_SIDEREAL_DAY_PROP "}}"
 static const char schema[] =
     "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"system\"],"
     "\"properties\":{\"system\":{\"oneOf\":[" S_CENTRAL "," S_CONICAL "," S_PHYSICAL ","
@@ -98,7 +99,8 @@ static const char description[] =
     "I_he I_eh / I_ee, and modes lists the two normal modes, fastest first, each {axis "
     "(unit, horizontal: the body swings about it), moment (M's eigenvalue), omega = sqrt(m "
     "g |d| / moment), period, equivalent_length}; arm = |offset|. "
-    "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.292115e-5): the "
+    "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.292115e-5, or "
+    "sidereal_day: omega_earth = 2 pi/sidereal_day): the "
     "linearised equations with the vertical rotation omega_z = Omega sin(latitude) (notes "
     "§1.3: x'' = -omega0^2 x + 2 omega_z y', y'' = -omega0^2 y - 2 omega_z x'; x east, y "
     "north) have two circular normal modes, answered as modes [{sense: counterclockwise, "
@@ -260,9 +262,13 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
     struct mech_foucault_modes f;
     struct mech_error e;
     mech_error_clear(&e);
+    double w_earth;
+    if (!api_earth_rotation(c, s, "/system", "omega_earth", MECH_EARTH_OMEGA, &w_earth)) {
+        json_decref(out);
+        return NULL;
+    }
     enum mech_status st = mech_foucault_modes(
-        api_number(s, "length", 1), api_number(s, "g", 9.80665),
-        api_number(s, "omega_earth", MECH_EARTH_OMEGA),
+        api_number(s, "length", 1), api_number(s, "g", 9.80665), w_earth,
         api_number(s, "latitude_deg", 0) * (M_PI / 180), &f, &e);
     if (st != MECH_OK) {
         json_decref(out);

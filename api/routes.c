@@ -44,6 +44,7 @@ extern const struct api_route api_route_relativity_fields;
 extern const struct api_route api_route_relativity_invariant_mass;
 extern const struct api_route api_route_relativity_decay;
 extern const struct api_route api_route_relativity_compton;
+extern const struct api_route api_route_relativity_elastic;
 extern const struct api_route api_route_relativity_collision;
 extern const struct api_route api_route_relativity_particles;
 extern const struct api_route api_route_relativity_particle;
@@ -59,6 +60,7 @@ extern const struct api_route api_route_hamiltonian_liouville;
 extern const struct api_route api_route_hamiltonian_poincare;
 extern const struct api_route api_route_hamiltonian_phase_area;
 extern const struct api_route api_route_hamiltonian_rotating_frame;
+extern const struct api_route api_route_hamiltonian_circular_orbit;
 extern const struct api_route api_route_continuum_string;
 extern const struct api_route api_route_continuum_rod;
 
@@ -92,6 +94,7 @@ const struct api_route *const api_routes[] = {
     &api_route_relativity_invariant_mass,
     &api_route_relativity_decay,
     &api_route_relativity_compton,
+    &api_route_relativity_elastic,
     &api_route_relativity_collision,
     &api_route_relativity_particles,
     &api_route_gr_schwarzschild,
@@ -101,6 +104,7 @@ const struct api_route *const api_routes[] = {
     &api_route_hamiltonian_poincare,
     &api_route_hamiltonian_phase_area,
     &api_route_hamiltonian_rotating_frame,
+    &api_route_hamiltonian_circular_orbit,
     &api_route_continuum_string,
     &api_route_continuum_rod,
     &api_route_trajectory,

@@ -7,6 +7,7 @@
 #ifndef API_TRAJECTORY_REQUEST_H
 #define API_TRAJECTORY_REQUEST_H
 
+#include "earth_rotation.h"
 #include "endpoint.h"
 #include "mech/closed_form.h"
 #include "mech/trajectory.h"
@@ -96,7 +97,8 @@
              "\"type\":{\"const\":\"earth\"},"                                                 \
              "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90},"          \
              "\"omega_magnitude\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6,"         \
-             "\"default\":7.292115e-05,\"description\":\"rad/s, default IERS 2010\"}")         \
+             "\"default\":7.292115e-05,\"description\":\"rad/s, default IERS 2010\"},"        \
+             API_SIDEREAL_DAY_PROP)                                                            \
     "]},"                                                                                      \
     "\"forces\":{\"type\":\"array\",\"maxItems\":32,\"items\":{\"oneOf\":["                    \
     API_TRAJ_OBJ("\"type\",\"g\"",                                                             \

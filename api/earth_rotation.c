@@ -1,0 +1,24 @@
+/* earth_rotation.c — the Earth's rotation rate as a rate or a sidereal day
+ * (see earth_rotation.h). */
+#include "earth_rotation.h"
+
+#include <stdio.h>
+
+static const double TWO_PI = 6.28318530717958647692;
+
+int api_earth_rotation(struct api_call *c, const json_t *obj, const char *prefix,
+                       const char *rate_key, double def, double *omega)
+{
+    const json_t *day = json_object_get(obj, "sidereal_day");
+    *omega = api_number(obj, rate_key, def);
+    if (!day) return 1;
+    if (json_object_get(obj, rate_key)) {
+        char ptr[160];
+        snprintf(ptr, sizeof ptr, "%s/sidereal_day", prefix ? prefix : "");
+        api_call_invalid(c, ptr, "give at most one of %s and sidereal_day (%s = 2 pi / "
+                                 "sidereal_day)", rate_key, rate_key);
+        return 0;
+    }
+    *omega = TWO_PI / json_number_value(day);
+    return 1;
+}
