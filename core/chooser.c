@@ -172,7 +172,11 @@ static void predict(const struct mech_scene_profile *s, const struct method_spec
         c->opt.dt = x * s->T;
     }
     c->predicted_error = model_error(r, x, s->span);
-    const double span = fmax(s->span, 1e-3);
+    /* the cost law counts the run in calibration-orbit units where the
+     * scene has a bound orbit (mech_chooser_profile_orbit): an adaptive
+     * method's evaluations per orbit grow as (r_apo / r_peri)^(1/3), not
+     * with the orbit's length in pericentre times */
+    const double span = fmax(s->cost_span > 0.0 ? s->cost_span : s->span, 1e-3);
     c->predicted_evaluations = r->B * span * pow(x, -r->c) + r->per_sample * (double)s->samples;
     double per_eval = r->cpu_per_eval;
     if (s->rhs_cost_s > per_eval) per_eval = s->rhs_cost_s;

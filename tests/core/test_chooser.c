@@ -271,8 +271,52 @@ static void test_span_from_apocentre(void)
     CHECK(err <= restated);
 }
 
+/* The cost law's orbit units (core/chooser_orbit.c): over e = 0 .. 0.99
+ * the chosen method's predicted evaluations are within COST_FACTOR of what
+ * the run spent (evaluations are deterministic: never a timing). The law in
+ * pericentre times alone had over-predicted e = 0.9 by 4-6x, e = 0.99 by
+ * ~50x. Also: e = 0.5 keeps its calibrated span (cost_span == span), and an
+ * unbound orbit keeps the span law. */
+#define COST_FACTOR 3.0
+static void test_cost_over_eccentricity(void)
+{
+    static const double es[] = {0.0, 0.3, 0.5, 0.7, 0.9, 0.95, 0.99};
+    static const double targets[] = {1e-3, 1e-8};
+    for (size_t i = 0; i < sizeof es / sizeof *es; i++)
+        for (size_t k = 0; k < 2; k++) {
+            static struct scene s;
+            kepler(&s, "kepler", es[i], 10);
+            s.p.forces = s.f;
+            s.p.n_forces = 1;
+            s.p.samples = NS;
+            s.p.closed_form_off = 1;
+            static struct mech_trajectory_choice ch;
+            CHECK(mech_trajectory_choose(&s.p, targets[k], &ch, NULL) == MECH_OK);
+            CHECK(ch.profile.cost_span > 0.0 && fabs(ch.profile.eccentricity - es[i]) < 1e-9);
+            if (es[i] == 0.5) CHECK(fabs(ch.profile.cost_span / ch.profile.span - 1.0) < 1e-9);
+            struct mech_trajectory_result res;
+            CHECK(run(&s, ch.method, ch.opt, xr, xv, &res));
+            const double pred = ch.sel.c[ch.sel.integrating].predicted_evaluations;
+            const double got = (double)res.stats.rhs_evaluations;
+            printf("  cost e=%.2f target %.0e %-8s predicted %.0f evaluations, spent %.0f (%.2f)\n",
+                   es[i], targets[k], ch.method, pred, got, pred / got);
+            CHECK(pred / got <= COST_FACTOR && got / pred <= COST_FACTOR);
+        }
+    /* a hyperbolic start: no orbit, the span law */
+    static struct scene h;
+    kepler(&h, "hyperbola", 0.5, 10);
+    h.p.velocity = mech_vec3_make(0, 3.0, 0); /* v^2 = 9 > 2 GM / r = 4 */
+    h.p.forces = h.f;
+    h.p.n_forces = 1;
+    h.p.samples = NS;
+    static struct mech_trajectory_choice ch;
+    CHECK(mech_trajectory_choose(&h.p, 1e-8, &ch, NULL) == MECH_OK);
+    CHECK(ch.profile.cost_span == 0.0 && ch.profile.orbit_period == 0.0);
+}
+
 int main(void)
 {
+    test_cost_over_eccentricity();
     test_span_from_apocentre();
     test_dry_run_scene();
     static struct scene s;

@@ -54,6 +54,16 @@ struct mech_scene_profile {
     int closed_form;        /* the scene has an exact solution (MECH_REFERENCE_EXACT) */
     int closed_form_allowed;/* the request allows it (integrator.closed_form, default 1) */
     const char *closed_form_name; /* e.g. "kepler" (static) or NULL */
+    /* Bound central-body orbits (mech_chooser_profile_orbit, core/chooser_orbit.c;
+     * all 0 when unknown, and then the span-based laws apply): */
+    double cost_span;       /* the run in the cost law's units: dynamical times of the
+                               calibration orbit (Kepler e = 0.5) that cost the same
+                               evaluations; 0: span */
+    double orbit_period;    /* the osculating orbit's period 2 pi sqrt(a^3 / GM), s */
+    double eccentricity;    /* of that orbit, [0, 1) */
+    double perturbation;    /* the other forces' acceleration relative to the central
+                               one, both at distance a (Wisdom-Holman's eps); < 0:
+                               unknown (no splitting is offered) */
 };
 
 enum mech_verdict {
