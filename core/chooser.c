@@ -28,7 +28,8 @@ static double margin_of(enum mech_scene_class c)
 }
 
 static const char *const class_names[MECH_SCENE_CLASS_COUNT] = {
-    "central_gravity", "oscillator", "uniform_field", "first_order", "general"};
+    "central_gravity", "oscillator", "uniform_field", "first_order", "general",
+    "constrained_pendulum"};
 
 const char *mech_scene_class_name(enum mech_scene_class c)
 {
@@ -193,7 +194,8 @@ enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
     if (!(target >= 1e-15 && target <= 0.1))
         return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
                               "target_error must be in [1e-15, 0.1], got %.17g", target);
-    if (!mech_scene_class_name(s->cls) || !(s->span >= 0.0 && isfinite(s->span)) ||
+    if (!mech_scene_class_name(s->cls) || s->cls == MECH_SCENE_CONSTRAINED_PENDULUM ||
+        !(s->span >= 0.0 && isfinite(s->span)) ||
         !(s->T > 0.0 && isfinite(s->T)) || !(s->scale > 0.0 && isfinite(s->scale)))
         return mech_error_set(err, MECH_EINVAL, NULL, "invalid scene profile");
     out->target = target;

@@ -34,11 +34,13 @@ enum mech_scene_class {
     MECH_SCENE_FIRST_ORDER,         /* first-order systems: rigid bodies, geodesics, flows */
     MECH_SCENE_GENERAL,             /* other particle scenes: drag, magnetic fields, tides,
                                        rotating frames without a dominant force */
+    MECH_SCENE_CONSTRAINED_PENDULUM,/* the Foucault pendulum on its rod, RATTLE family
+                                       (mech/chooser_pendulum.h; not given to mech_choose) */
     MECH_SCENE_CLASS_COUNT
 };
 
-/* "central_gravity", "oscillator", "uniform_field", "first_order", "general";
- * NULL if out of range. */
+/* "central_gravity", "oscillator", "uniform_field", "first_order", "general",
+ * "constrained_pendulum"; NULL if out of range. */
 const char *mech_scene_class_name(enum mech_scene_class c);
 
 struct mech_scene_profile {
