@@ -106,7 +106,7 @@ static const char fc_description[] =
     "jump (order 4). Unless integrator gives the method or the steps per swing, the "
     "predictive chooser picks both for the target (accuracy, or target_error, default 1e-6): "
     "error = C (2 pi / n)^p (1 + 3 alpha^2) on the period and the rate / W at n steps per "
-    "swing (measured: C = 0.045 rattle, 0.07 rattle_yoshida4), force evaluations counted "
+    "swing (measured: C = 0.07 for both, the largest seen), force evaluations counted "
     "exactly; diagnostics.selection lists both candidates with their predicted error, "
     "evaluations and CPU beside the Richardson estimate achieved, and \"dry_run\": true "
     "answers only that selection (the default picks rattle_yoshida4 at 183 steps per swing "

@@ -20,7 +20,7 @@ struct pc_method {
 /* order 4 first: listed in the order the selection shows them */
 static const struct pc_method pc_methods[] = {
     {MECH_PENDULUM_RATTLE_YOSHIDA4, 4, 3, 0.07, 5.3e-8},
-    {MECH_PENDULUM_RATTLE, 2, 1, 0.045, 5.85e-8},
+    {MECH_PENDULUM_RATTLE, 2, 1, 0.07, 5.85e-8},
 };
 
 static double pc_floor(const struct mech_pendulum_profile *s)

@@ -14,6 +14,7 @@
 #include "mech/chooser.h"
 #include "mech/scenes.h"
 #include "mech/trajectory.h"
+#include "chooser_scenes.h"
 #include "testlib.h"
 
 /* The achieved error is at most CHOOSER_UNDER x the predicted one (the model
@@ -26,59 +27,10 @@
 #define NS 101
 #define T_PI 3.14159265358979323846
 
-struct scene {
-    const char *name;
-    struct mech_trajectory_problem p;
-    struct mech_force f[1];
-    int exact;
-};
-
-static void kepler(struct scene *s, const char *name, double e, double orbits)
-{
-    memset(s, 0, sizeof *s);
-    s->name = name;
-    s->f[0].type = MECH_FORCE_CENTRAL_GRAVITY;
-    s->f[0].u.central_gravity.gm = 1.0;
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(1.0 - e, 0, 0);
-    s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
-    s->p.t_end = orbits * 2.0 * T_PI;
-    s->exact = 1;
-}
-
-static void oscillator(struct scene *s)
-{
-    memset(s, 0, sizeof *s);
-    s->name = "oscillator 1e4 periods";
-    s->f[0].type = MECH_FORCE_SPRING;
-    s->f[0].u.spring.k = 1.0;
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(1, 0, 0);
-    s->p.velocity = mech_vec3_make(0, 0.5, 0);
-    s->p.t_end = 1e4 * 2.0 * T_PI;
-    s->exact = 1;
-}
-
-static void fall(struct scene *s)
-{
-    memset(s, 0, sizeof *s);
-    s->name = "falling object, Coriolis";
-    s->f[0].type = MECH_FORCE_UNIFORM_GRAVITY;
-    s->f[0].u.uniform_gravity.g = mech_vec3_make(0, 0, -9.80665);
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(0, 0, 100);
-    s->p.frame.type = MECH_FRAME_EARTH;
-    s->p.frame.latitude_deg = 32.0;
-    s->p.frame.omega_magnitude = MECH_EARTH_OMEGA_SIDEREAL;
-    s->p.fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
-    s->p.t_end = sqrt(2.0 * 100 / 9.80665);
-    s->exact = 0;
-}
-
 static struct mech_vec3 rr[NS], rv[NS], xr[NS], xv[NS];
 static double tt[NS];
 
-static int run(const struct scene *s, const char *method, struct mech_ode_options opt,
+static int run(const struct chooser_scene *s, const char *method, struct mech_ode_options opt,
                struct mech_vec3 *r, struct mech_vec3 *v, struct mech_trajectory_result *res)
 {
     struct mech_trajectory_problem p = s->p;
@@ -98,7 +50,7 @@ static int run(const struct scene *s, const char *method, struct mech_ode_option
     return mech_trajectory_integrate(&p, &b, res, &e) == MECH_OK;
 }
 
-static double achieved(const struct scene *s, const struct mech_trajectory_result *res)
+static double achieved(const struct chooser_scene *s, const struct mech_trajectory_result *res)
 {
     if (s->exact)
         return fmax(res->reference.max_relative_position_error,
@@ -113,7 +65,7 @@ static double achieved(const struct scene *s, const struct mech_trajectory_resul
     return fmax(dr / sr, dv / sv);
 }
 
-static void test_scene(struct scene *s)
+static void test_scene(struct chooser_scene *s)
 {
     struct mech_trajectory_result res;
     if (!s->exact) {
@@ -161,8 +113,8 @@ static void test_scene(struct scene *s)
 
 static void test_candidates_listed(void)
 {
-    struct scene s;
-    kepler(&s, "kepler", 0.5, 10);
+    struct chooser_scene s;
+    cs_kepler(&s, "kepler", 0.5, 10);
     s.p.forces = s.f;
     s.p.n_forces = 1;
     s.p.samples = NS;
@@ -237,13 +189,13 @@ static void test_dry_run_scene(void)
  * (measured 2.5e-12 .. 3.2e-12 from pericentre, radau15 at 1e-9 and 2e-9). */
 static void test_span_from_apocentre(void)
 {
-    static struct scene peri, apo;
-    kepler(&peri, "kepler e=0.9 from pericentre", 0.9, 10);
-    kepler(&apo, "kepler e=0.9 from apocentre", 0.9, 10);
+    static struct chooser_scene peri, apo;
+    cs_kepler(&peri, "kepler e=0.9 from pericentre", 0.9, 10);
+    cs_kepler(&apo, "kepler e=0.9 from apocentre", 0.9, 10);
     apo.p.position = mech_vec3_make(-1.9, 0, 0);
     apo.p.velocity = mech_vec3_make(0, -sqrt(0.1 / 1.9), 0);
     static struct mech_trajectory_choice cp, ca;
-    struct scene *sc[2] = {&peri, &apo};
+    struct chooser_scene *sc[2] = {&peri, &apo};
     struct mech_trajectory_choice *ch[2] = {&cp, &ca};
     for (int k = 0; k < 2; k++) {
         sc[k]->p.forces = sc[k]->f;
@@ -284,8 +236,8 @@ static void test_cost_over_eccentricity(void)
     static const double targets[] = {1e-3, 1e-8};
     for (size_t i = 0; i < sizeof es / sizeof *es; i++)
         for (size_t k = 0; k < 2; k++) {
-            static struct scene s;
-            kepler(&s, "kepler", es[i], 10);
+            static struct chooser_scene s;
+            cs_kepler(&s, "kepler", es[i], 10);
             s.p.forces = s.f;
             s.p.n_forces = 1;
             s.p.samples = NS;
@@ -303,8 +255,8 @@ static void test_cost_over_eccentricity(void)
             CHECK(pred / got <= COST_FACTOR && got / pred <= COST_FACTOR);
         }
     /* a hyperbolic start: no orbit, the span law */
-    static struct scene h;
-    kepler(&h, "hyperbola", 0.5, 10);
+    static struct chooser_scene h;
+    cs_kepler(&h, "hyperbola", 0.5, 10);
     h.p.velocity = mech_vec3_make(0, 3.0, 0); /* v^2 = 9 > 2 GM / r = 4 */
     h.p.forces = h.f;
     h.p.n_forces = 1;
@@ -319,18 +271,18 @@ int main(void)
     test_cost_over_eccentricity();
     test_span_from_apocentre();
     test_dry_run_scene();
-    static struct scene s;
-    kepler(&s, "kepler e=0.5 10 orbits", 0.5, 10);
+    static struct chooser_scene s;
+    cs_kepler(&s, "kepler e=0.5 10 orbits", 0.5, 10);
     test_scene(&s);
-    kepler(&s, "kepler e=0.9 10 orbits", 0.9, 10);
+    cs_kepler(&s, "kepler e=0.9 10 orbits", 0.9, 10);
     test_scene(&s);
-    kepler(&s, "kepler e=0.5 1000 orbits", 0.5, 1000);
+    cs_kepler(&s, "kepler e=0.5 1000 orbits", 0.5, 1000);
     test_scene(&s);
-    kepler(&s, "kepler e=0.9 1000 orbits", 0.9, 1000);
+    cs_kepler(&s, "kepler e=0.9 1000 orbits", 0.9, 1000);
     test_scene(&s);
-    oscillator(&s);
+    cs_oscillator(&s, "oscillator 1e4 periods", 1e4);
     test_scene(&s);
-    fall(&s);
+    cs_fall(&s, "falling object, Coriolis");
     test_scene(&s);
     test_candidates_listed();
     TEST_MAIN_END();

@@ -11,9 +11,11 @@
  * 32 .. 80 deg, amplitudes 3 .. 30 deg, 100 and 1000 swings, against
  * rattle_yoshida4 at 12800 steps per swing):
  *   error = C_p (2 pi / n)^p (1 + 3 alpha^2),  n = steps per swing,
- *   C_2 = 0.045 (rattle), C_4 = 0.07 (rattle_yoshida4): the period's error,
- *   the classic (omega h)^p / 24-like constant, the same over 100 and 1000
- *   swings; the rate's error relative to W is ~0.6 alpha^2 of it, below;
+ *   C_2 = 0.07 (rattle), C_4 = 0.07 (rattle_yoshida4), the largest measured
+ *   (rattle 0.032 .. 0.069: the period's 0.0415 at small amplitude, the
+ *   rate's wobble at 30 deg; rattle_yoshida4 0.064 .. 0.071), the same over
+ *   100 and 1000 swings; the rate's error relative to W is ~0.6 alpha^2 of
+ *   the period's for rattle_yoshida4;
  *   floor: max(1e-14, 1e-13 / (W t_end)) — the period, and the swing
  *   plane's azimuth round-off (~1e-13 rad at the turning points) over the
  *   angle W t_end the Earth turns in the run.
