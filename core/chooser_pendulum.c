@@ -97,7 +97,8 @@ enum mech_status mech_choose_pendulum(const struct mech_pendulum_profile *s, dou
         /* the error estimate: the same run at (steps + 1) / 2 steps */
         if (s->error_estimate)
             c->predicted_evaluations += floor((steps + 1.0) / 2.0) * pm->evals_per_step + 1.0;
-        c->predicted_cpu_s = c->predicted_evaluations * pm->cpu_per_eval;
+        c->predicted_cpu_s =
+            c->predicted_evaluations * pm->cpu_per_eval + MECH_CHOOSER_REQUEST_CPU_S;
         c->predicted = 1;
         c->verdict = c->predicted_error <= aim * 1.0001 ? MECH_VERDICT_COSTLIER
                                                         : MECH_VERDICT_MISSES_TARGET;

@@ -15,7 +15,8 @@
  *   fixed step: error = A (h/T)^a span^b,  evaluations = B span (h/T)^-c
  *   + evals_per_sample x samples (each sample is a sub-step),
  *   error >= F span^g (round-off accumulated over the run, F and g measured),
- *   CPU = evaluations x CPU seconds per evaluation (measured per method).
+ *   CPU = evaluations x CPU seconds per evaluation (measured per method)
+ *         + MECH_CHOOSER_REQUEST_CPU_S (the request's fixed cost).
  * It costs microseconds and integrates nothing (dry runs use it alone).
  *
  * Thread-safety: reentrant; the table is constant. */
@@ -79,6 +80,13 @@ enum mech_verdict {
 const char *mech_verdict_name(enum mech_verdict v);
 
 #define MECH_CHOOSER_MAX_CANDIDATES 10
+
+/* The fixed CPU of a request beside its method's evaluations (parsing, the
+ * model's first pass, references, encoding the samples), added to every
+ * candidate's predicted_cpu_s: measured 0.08 .. 0.15 ms on the scene set
+ * (bench_workprecision, 2026-11-27: the falling object's 44 evaluations
+ * cost 0.09 ms, closed forms 0.10 .. 0.15 ms). */
+#define MECH_CHOOSER_REQUEST_CPU_S 1e-4
 
 struct mech_candidate {
     const char *method;           /* registry name or "closed_form" (static) */

@@ -21,7 +21,8 @@
  *   angle W t_end the Earth turns in the run.
  * Evaluations are exact, not fitted: steps = ceil(swings n), evaluations =
  * steps x (1 or 3) + 1, plus the error-estimate run at half the steps when
- * asked. CPU = evaluations x 5.3e-8 s (yoshida4) or 5.85e-8 s (rattle).
+ * asked. CPU = evaluations x 5.3e-8 s (yoshida4) or 5.85e-8 s (rattle)
+ * + MECH_CHOOSER_REQUEST_CPU_S.
  * Thread-safety: reentrant. */
 #ifndef MECH_CHOOSER_PENDULUM_H
 #define MECH_CHOOSER_PENDULUM_H
