@@ -266,8 +266,86 @@ static void test_cost_over_eccentricity(void)
     CHECK(ch.profile.cost_span == 0.0 && ch.profile.orbit_period == 0.0);
 }
 
+/* Wisdom-Holman's prediction uses the scene's perturbation (core/chooser_orbit.c,
+ * predict_wisdom_holman): Kepler e = 0.5 and 0.9 with a tide of gm3 =
+ * eps D^3 / 2 at D = 20 (bench/bench_wisdom_holman's scene), 100 orbits.
+ * The profile's eps is the tide at distance a = 1 on the x axis, exactly
+ * gm3 (1/19^2 - 1/20^2) = 1.0803 eps; the splitting run at the candidate's
+ * step errs within the stated factors of its prediction (against rk8pd at
+ * rtol 1e-14) and spends what was predicted within COST_FACTOR; a pure
+ * Kepler scene does not offer it. */
+static void test_wisdom_holman_prediction(void)
+{
+    static const double es[] = {0.5, 0.9}, epss[] = {1e-4, 1e-6};
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++) {
+            static struct chooser_scene s;
+            cs_kepler(&s, "perturbed kepler", es[i], 100);
+            s.f[1].type = MECH_FORCE_THIRD_BODY_TIDE;
+            s.f[1].u.third_body_tide.gm = epss[j] * 8000.0 / 2.0;
+            s.f[1].u.third_body_tide.position = mech_vec3_make(20, 0, 0);
+            s.p.n_forces = 2;
+            s.p.samples = NS;
+            s.p.closed_form_off = 1;
+            static struct mech_trajectory_choice ch;
+            CHECK(mech_trajectory_choose(&s.p, 1e-4, &ch, NULL) == MECH_OK);
+            CHECK_CLOSE(ch.profile.perturbation, 4000.0 * (1.0 / 361 - 1.0 / 400) * epss[j], 1e-9,
+                        0);
+            int w = -1;
+            for (size_t k = 0; k < ch.sel.n; k++)
+                if (!strcmp(ch.sel.c[k].method, "wisdom_holman")) w = (int)k;
+            CHECK(w >= 0 && ch.sel.c[w].verdict != MECH_VERDICT_NOT_APPLICABLE);
+            if (w < 0 || !ch.sel.c[w].predicted) continue;
+            const struct mech_candidate *c = &ch.sel.c[w];
+            struct mech_trajectory_problem p = s.p;
+            p.forces = s.f;
+            p.reduce_planar = 1; /* as the API runs a planar scene */
+            struct mech_ode_options ro = {1e-14, 1e-14, 0};
+            struct mech_trajectory_result res;
+            p.method = "rk8pd";
+            p.opt = ro;
+            memset(&res, 0, sizeof res);
+            res.t = tt;
+            res.position = rr;
+            res.velocity = rv;
+            struct mech_budget b = {100000000L, mech_clock_seconds() + 600.0, NULL};
+            CHECK(mech_trajectory_integrate(&p, &b, &res, NULL) == MECH_OK);
+            p.method = "wisdom_holman";
+            p.opt = c->opt;
+            memset(&res, 0, sizeof res);
+            res.t = tt;
+            res.position = xr;
+            res.velocity = xv;
+            CHECK(mech_trajectory_integrate(&p, &b, &res, NULL) == MECH_OK);
+            /* relative to the orbit's size a = 1 (every sample falls on a
+             * whole orbit, at pericentre: max |r| over the samples would be
+             * q = 0.1 at e = 0.9) */
+            double d = 0;
+            for (size_t q = 0; q < res.n_samples; q++)
+                d = fmax(d, mech_vec3_norm(mech_vec3_sub(xr[q], rr[q])));
+            printf("  wisdom_holman e=%.1f eps %.0e: dt = P/%.0f, predicted %.2g achieved %.2g, "
+                   "evaluations predicted %.0f spent %ld (%s)\n",
+                   es[i], epss[j], ch.profile.orbit_period / c->opt.dt, c->predicted_error, d,
+                   c->predicted_evaluations, res.stats.rhs_evaluations,
+                   mech_verdict_name(c->verdict));
+            CHECK(d / c->predicted_error <= CHOOSER_UNDER && c->predicted_error / d <= CHOOSER_OVER);
+            CHECK(c->predicted_evaluations / (double)res.stats.rhs_evaluations <= COST_FACTOR &&
+                  (double)res.stats.rhs_evaluations / c->predicted_evaluations <= COST_FACTOR);
+        }
+    static struct chooser_scene k;
+    cs_kepler(&k, "kepler", 0.5, 10);
+    k.p.samples = NS;
+    static struct mech_trajectory_choice ch;
+    CHECK(mech_trajectory_choose(&k.p, 1e-4, &ch, NULL) == MECH_OK);
+    for (size_t q = 0; q < ch.sel.n; q++)
+        if (!strcmp(ch.sel.c[q].method, "wisdom_holman"))
+            CHECK(ch.sel.c[q].verdict == MECH_VERDICT_NOT_APPLICABLE &&
+                  strstr(ch.sel.c[q].why, "no perturbation") != NULL);
+}
+
 int main(void)
 {
+    test_wisdom_holman_prediction();
     test_cost_over_eccentricity();
     test_span_from_apocentre();
     test_dry_run_scene();
