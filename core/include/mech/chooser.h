@@ -125,8 +125,11 @@ struct mech_selection {
  * when s->closed_form_allowed (it is then chosen: its cost grows with the
  * samples only); out->integrating is the best integrating candidate all the
  * same, for callers that cannot evaluate the closed form. wisdom_holman when the registry
- * has it (central_gravity, placeholder constants). Statuses: MECH_OK,
- * MECH_EINVAL (NULL argument, target out of range, span/T/scale invalid). */
+ * has it, on a central_gravity scene with a bound orbit and a perturbation
+ * (s->orbit_period > 0, s->perturbation > 0: its measured law in eps). For a
+ * bound orbit the cost law counts s->cost_span when set. Statuses: MECH_OK,
+ * MECH_EINVAL (NULL argument, target out of range, span/T/scale invalid, the
+ * constrained_pendulum class: mech_choose_pendulum serves it). */
 enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
                              struct mech_selection *out, struct mech_error *err);
 
