@@ -330,9 +330,14 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
         char beyond[320];
         mech_selection_beyond_text(&ch.sel, beyond, sizeof beyond);
         snprintf(ch.reason, sizeof ch.reason,
-                 "%s%s at %.0f steps per swing is the cheapest candidate predicted to meet "
-                 "%.0e relative on the period and the precession rate / W over %.6g swings "
-                 "(predicted %.2g, %.0f force evaluations%s)%s",
+                 ch.sel.beyond == 2
+                     ? "%s%s at %.0f steps per swing is the cheapest of the most accurate "
+                       "candidates; none is predicted to meet %.0e relative on the period and "
+                       "the precession rate / W over %.6g swings (predicted %.2g, %.0f force "
+                       "evaluations%s)%s"
+                     : "%s%s at %.0f steps per swing is the cheapest candidate predicted to "
+                       "meet %.0e relative on the period and the precession rate / W over %.6g "
+                       "swings (predicted %.2g, %.0f force evaluations%s)%s",
                  accuracy ? "" : json_object_get(body, "target_error")
                                      ? ""
                                      : "target_error 1e-6 by default: ",

@@ -85,7 +85,9 @@ enum mech_status mech_choose_pendulum(const struct mech_pendulum_profile *s, dou
         /* invert the truncation law C (2 pi / n)^p (1 + 3 alpha^2) = aim,
          * round up to whole steps per swing */
         const double k_amp = pm->C * (1.0 + 3.0 * s->amplitude * s->amplitude);
-        double n = PC_TWO_PI * pow(k_amp / aim, 1.0 / pm->order);
+        /* no finer than a tenth of the round-off floor: beyond it more
+         * steps buy nothing */
+        double n = PC_TWO_PI * pow(k_amp / fmax(aim, 0.1 * out->roundoff_floor), 1.0 / pm->order);
         if (!(n >= PC_N_MIN)) n = PC_N_MIN; /* also NaN */
         n = ceil(n - 1e-9);
         if (n > PC_N_MAX) n = PC_N_MAX;
@@ -109,8 +111,13 @@ enum mech_status mech_choose_pendulum(const struct mech_pendulum_profile *s, dou
             (best < 0 || out->c[i].predicted_cpu_s < out->c[best].predicted_cpu_s))
             best = (int)i;
     if (best < 0) {
+        /* the cheapest of the most accurate (within 2x), as mech_choose */
+        double emin = INFINITY;
+        for (size_t i = 0; i < out->n; i++) emin = fmin(emin, out->c[i].predicted_error);
         for (size_t i = 0; i < out->n; i++)
-            if (best < 0 || out->c[i].predicted_error < out->c[best].predicted_error) best = (int)i;
+            if (out->c[i].predicted_error <= 2.0 * emin &&
+                (best < 0 || out->c[i].predicted_cpu_s < out->c[best].predicted_cpu_s))
+                best = (int)i;
         out->beyond = out->c[best].predicted_error > target ? 2 : 1;
     }
     out->chosen = out->integrating = best;

@@ -114,6 +114,14 @@ static void test_edges(void)
     /* 1e-15: below the floor (1e-13 / (W t_end) = 8.4e-13 here): said */
     CHECK(mech_choose_pendulum(&s, 1e-15, &sel, &m, &n, NULL) == MECH_OK);
     CHECK(sel.beyond == 2 && mech_selection_restated(&sel) >= 8e-13);
+    /* ... and no finer than a tenth of that floor: n = ceil(2 pi (0.07
+     * (1 + 3 alpha^2) / (0.1 floor))^(1/4)), not the 1e-16 the target asks */
+    const double fl = 1e-13 / s.turn_angle;
+    CHECK(m == MECH_PENDULUM_RATTLE_YOSHIDA4 &&
+          n == ceil(6.283185307179586 *
+                        pow(0.07 * (1 + 3 * s.amplitude * s.amplitude) / (0.1 * fl), 0.25) -
+                    1e-9));
+    CHECK(fabs(sel.c[sel.chosen].predicted_error / fl - 1.0) < 1e-12);
     /* refused */
     CHECK(mech_choose_pendulum(&s, 0.5, &sel, &m, &n, NULL) == MECH_EINVAL);
     CHECK(mech_choose_pendulum(NULL, 1e-6, &sel, &m, &n, NULL) == MECH_EINVAL);
