@@ -12,8 +12,11 @@
 
 #include "earth_rotation.h"
 #include "endpoint.h"
+#include "integrator_block.h"
+#include "mech/chooser_pendulum.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
+#include "trajectory_request.h"
 
 static const double fc_pi = 3.14159265358979323846;
 
@@ -67,7 +70,13 @@ static const char fc_schema[] =
         "\"steps_per_swing\":{\"type\":\"integer\",\"minimum\":8,\"maximum\":100000,"
         "\"default\":200}},"
     "\"description\":\"constrained symplectic methods: rattle (order 2) or its Yoshida "
-    "triple jump (order 4)\"},"
+    "triple jump (order 4); given (method or steps_per_swing), used as given (200 steps per "
+    "swing by default); absent, the predictive chooser picks both for accuracy or "
+    "target_error (diagnostics.selection)\"},"
+    "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"description\":\"preset: "
+    "relative error 1e-3, 1e-8, 1e-10, 1e-11 of the swing period and of the precession rate "
+    "(relative to W); the chooser picks the method and steps per swing predicted cheapest to "
+    "meet it (not with target_error, nor with integrator.method / steps_per_swing)\"},"
     "\"fictitious\":{\"description\":\"\\\"auto\\\" (default) or the list of terms to "
     "model; coriolis is the effect and must be in it\",\"oneOf\":["
         "{\"const\":\"auto\"},"
@@ -75,10 +84,12 @@ static const char fc_schema[] =
         "\"items\":{\"enum\":[\"coriolis\",\"centrifugal\"]}}]},"
     "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"
     "\"default\":1e-6,\"description\":\"relative accuracy wanted of the precession rate "
-    "(relative to W) and the period; fictitious auto leaves out a term whose estimated effect "
-    "is below target/10\"},"
+    "(relative to W) and the period (or the accuracy preset's): without integrator.method / "
+    "steps_per_swing the chooser picks the cheapest method and steps per swing predicted to "
+    "meet it; fictitious auto leaves out a term whose estimated effect is below target/10\"},"
     "\"error_estimate\":{\"type\":\"boolean\",\"default\":true,\"description\":\"run "
-    "again with half the steps per swing and report the Richardson estimate of the error\"}"
+    "again with half the steps per swing and report the Richardson estimate of the error\"},"
+    API_DRY_RUN_PROP
     "}}";
 /* clang-format on */
 
@@ -93,10 +104,17 @@ static const char fc_description[] =
     "2 W x u' [- W x (W x r)] + tension, |u| = l, u = r - (0, 0, l). Integrated by RATTLE "
     "with the Coriolis term in Cayley (implicit-midpoint) form - the constrained variational "
     "integrator of L = |u'|^2/2 + u'.(W x r) - V: symplectic, time-symmetric, the constraint "
-    "exact to round-off, the Coriolis rotation exact for any step - and by default its "
-    "Yoshida triple jump (order 4), 200 steps per swing: fixed steps keep the work "
+    "exact to round-off, the Coriolis rotation exact for any step - or its Yoshida triple "
+    "jump (order 4). Unless integrator gives the method or the steps per swing, the "
+    "predictive chooser picks both for the target (accuracy, or target_error, default 1e-6): "
+    "error = C (2 pi / n)^p (1 + 3 alpha^2) on the period and the rate / W at n steps per "
+    "swing (measured: C = 0.07 for both, the largest seen), force evaluations counted "
+    "exactly; diagnostics.selection lists both candidates with their predicted error, "
+    "evaluations and CPU beside the Richardson estimate achieved, and \"dry_run\": true "
+    "answers only that selection (the default picks rattle_yoshida4 at 183 steps per swing "
+    "at 3 degrees). Fixed steps keep the work "
     "proportional to the swings (a full precession at 45 degrees, 7418 swings of Foucault's "
-    "67 m pendulum, 1.48 million steps, takes about 0.5 s here, 1 s with the error estimate, "
+    "67 m pendulum, 1.36 million steps, takes about 0.5 s here, 1 s with the error estimate, "
     "well inside the 10 s deadline), and a symplectic "
     "method keeps the energy error bounded instead of drifting. The precession is measured "
     "at the turning points (maxima of the horizontal distance, located on the step's cubic "
@@ -131,6 +149,51 @@ struct fc_run {
     struct mech_foucault_problem p;
     struct mech_foucault_result r;
 };
+
+/* How the method was picked: given, or by the chooser. */
+struct fc_choice {
+    int chosen;            /* 1: by the chooser (sel, reason) */
+    double target;         /* relative error aimed at */
+    const char *accuracy;  /* preset name or NULL */
+    struct mech_selection sel;
+    char reason[700];
+};
+
+/* diagnostics.selection, the shape every time-evolution operation gives it
+ * (api/integrator_block.c): requested, method, steps_per_swing, dt, and when
+ * chosen target_error, reason, the candidates with their predictions and,
+ * after a run, achieved: the error evidence (>= 0), or -2 for none; -1 is a
+ * dry run (no achieved block). New reference. */
+static json_t *fc_selection(struct api_call *c, const json_t *integ, const struct fc_choice *ch,
+                            const char *method, double sps, double dt, double achieved)
+{
+    json_t *s = json_object();
+    json_object_set_new_nocheck(s, "requested", integ ? json_deep_copy(integ) : json_null());
+    json_object_set_new_nocheck(s, "method", json_string(method));
+    json_object_set_new_nocheck(s, "steps_per_swing", api_real(c, sps));
+    json_object_set_new_nocheck(s, "dt", api_real(c, dt));
+    if (!ch->chosen) {
+        json_object_set_new_nocheck(s, "reason",
+                                    json_string("method and steps per swing given in the request"));
+        return s;
+    }
+    if (ch->accuracy) json_object_set_new_nocheck(s, "accuracy", json_string(ch->accuracy));
+    json_object_set_new_nocheck(s, "target_error", api_real(c, ch->target));
+    json_object_set_new_nocheck(s, "reason", json_string(ch->reason));
+    api_selection_predictions(c, &ch->sel, s);
+    if (achieved != -1.0)
+        json_object_set_new_nocheck(
+            s, "achieved",
+            api_selection_achieved(c, &ch->sel.c[ch->sel.chosen], ch->target,
+                                   achieved >= 0.0 ? achieved : -1.0,
+                                   achieved >= 0.0
+                                       ? "Richardson: the same method at half the steps per "
+                                         "swing, max(|period difference| / period, |rate "
+                                         "difference| / W) / (2^p - 1)"
+                                       : "none: error_estimate is false or its run was skipped",
+                                   -1.0));
+    return s;
+}
 
 /* Map the core's parameter names to the request's. */
 /* The sense of a precession rate (rad/s, counterclockwise positive seen from above). */
@@ -182,10 +245,29 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     const json_t *integ = json_object_get(body, "integrator");
     const char *method = api_string(integ, "method", "rattle_yoshida4");
     p.method = strcmp(method, "rattle") ? MECH_PENDULUM_RATTLE_YOSHIDA4 : MECH_PENDULUM_RATTLE;
-    const int order = p.method == MECH_PENDULUM_RATTLE ? 2 : 4;
+    int order = p.method == MECH_PENDULUM_RATTLE ? 2 : 4;
     double sps = api_number(integ, "steps_per_swing", 200.0);
-    double target = api_number(body, "target_error", 1e-6);
     int want_estimate = !json_is_false(json_object_get(body, "error_estimate"));
+    /* the target: target_error (default 1e-6) or an accuracy preset's
+     * promise; without an explicit method or steps per swing it also picks
+     * them (the predictive chooser, core/chooser_pendulum.c) */
+    const char *accuracy = api_string(body, "accuracy", NULL);
+    const int explicit_integrator = json_object_get(integ, "method") != NULL ||
+                                    json_object_get(integ, "steps_per_swing") != NULL;
+    if (accuracy && json_object_get(body, "target_error")) {
+        api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
+        return NULL;
+    }
+    if (accuracy && explicit_integrator) {
+        api_call_invalid(c, "/accuracy",
+                         "accuracy chooses the method and the steps per swing: give it or "
+                         "integrator.method / integrator.steps_per_swing, not both");
+        return NULL;
+    }
+    double target = api_number(body, "target_error", 1e-6);
+    for (int i = 0; accuracy && i < MECH_ACCURACY_COUNT; i++)
+        if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, accuracy))
+            target = mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
 
     /* ---- the scene's scales (closed forms, before integrating) ---- */
     double lat = p.latitude_deg * deg, alpha = p.amplitude_deg * deg;
@@ -232,6 +314,41 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                         swings_asked, period);
         return NULL;
     }
+    /* ---- the method: given, or chosen by its predicted error and cost ---- */
+    struct fc_choice ch;
+    memset(&ch, 0, sizeof ch);
+    ch.target = target;
+    ch.accuracy = accuracy;
+    if (!explicit_integrator) {
+        struct mech_pendulum_profile prof = {period, swings_asked, alpha, W * t_end,
+                                             want_estimate};
+        enum mech_pendulum_method cm;
+        struct mech_error ce;
+        mech_error_clear(&ce);
+        if (mech_choose_pendulum(&prof, target, &ch.sel, &cm, &sps, &ce) != MECH_OK)
+            return api_call_fail_core(c, MECH_EINVAL, &ce, "");
+        ch.chosen = 1;
+        p.method = cm;
+        order = cm == MECH_PENDULUM_RATTLE ? 2 : 4;
+        const struct mech_candidate *k = &ch.sel.c[ch.sel.chosen];
+        char beyond[320];
+        mech_selection_beyond_text(&ch.sel, beyond, sizeof beyond);
+        snprintf(ch.reason, sizeof ch.reason,
+                 ch.sel.beyond == 2
+                     ? "%s%s at %.0f steps per swing is the cheapest of the most accurate "
+                       "candidates; none is predicted to meet %.0e relative on the period and "
+                       "the precession rate / W over %.6g swings (predicted %.2g, %.0f force "
+                       "evaluations%s)%s"
+                     : "%s%s at %.0f steps per swing is the cheapest candidate predicted to "
+                       "meet %.0e relative on the period and the precession rate / W over %.6g "
+                       "swings (predicted %.2g, %.0f force evaluations%s)%s",
+                 accuracy ? "" : json_object_get(body, "target_error")
+                                     ? ""
+                                     : "target_error 1e-6 by default: ",
+                 k->method, sps, target, swings_asked, k->predicted_error,
+                 k->predicted_evaluations, want_estimate ? " with the error estimate's run" : "",
+                 beyond);
+    }
     if (swings_asked * sps > 1e12) {
         char ptr[32];
         snprintf(ptr, sizeof ptr, "/%s", run_field);
@@ -275,6 +392,10 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     double cf_rel = fmax(cf_rate_rel, cf_period);
     int include_cf = auto_mode ? (W > 0.0 && cf_rel > target / 10.0) : given_centrifugal;
     p.centrifugal = include_cf;
+
+    if (api_dry_run_requested(body))
+        return api_dry_run_answer(c, fc_selection(c, integ, &ch, mech_pendulum_method_name(p.method),
+                                                  sps, p.t_end / (double)p.steps, -1.0));
 
     /* ---- the run, and a second at half the steps ---- */
     struct mech_error e;
@@ -471,8 +592,9 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
         json_string("a fixed-step symplectic, symmetric method on the exact constraint: the "
                     "energy error stays bounded over 10^4 swings, the Coriolis rotation is "
                     "exact (Cayley form), the discrete linear motion precesses at W sin(lat) "
-                    "to first order in W for any step, and the work is a fixed ~600 force "
-                    "evaluations per swing (order 4: the period to ~1e-7 at 200 steps)"));
+                    "to first order in W for any step, and the work is a fixed 1 (rattle) or 3 "
+                    "(rattle_yoshida4) force evaluations per step (order 4: the period to "
+                    "~1e-7 at 183 steps per swing)"));
     json_t *en = json_object();
     json_object_set_new_nocheck(en, "name", json_string("jacobi_integral"));
     json_object_set_new_nocheck(en, "initial", api_real(c, r.energy_initial));
@@ -495,6 +617,17 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     } else {
         json_object_set_new_nocheck(d, "error_estimate", json_null());
         json_object_set_new_nocheck(d, "error_estimate_reason", json_string(est_skip));
+    }
+    {
+        /* the achieved error beside the prediction: the Richardson estimates
+         * of the period (relative) and the rate (relative to W) */
+        double achieved = -2.0; /* no evidence */
+        if (est_done)
+            achieved = fmax(r.period > 0.0 ? num_period / r.period : 0.0,
+                            W > 0.0 ? num_rate / W : 0.0);
+        json_object_set_new_nocheck(d, "selection",
+                                    fc_selection(c, integ, &ch, mech_pendulum_method_name(p.method),
+                                                 sps, p.t_end / (double)p.steps, achieved));
     }
     json_object_set_new_nocheck(res, "diagnostics", d);
 

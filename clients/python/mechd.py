@@ -1449,7 +1449,7 @@ class _Operations:
         """
         return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, accuracy: Optional[str] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
 
         POST /v1/scenes/foucault. The request is `body` (a dict) and/or the keyword arguments below
@@ -1473,19 +1473,29 @@ class _Operations:
             precessions: length of the run in full turns of the swing plane, 2 pi / (W |sin lat|)
             duration: length of the run, s
             integrator: constrained symplectic methods: rattle (order 2) or its Yoshida triple jump
-                    (order 4)
+                    (order 4); given (method or steps_per_swing), used as given (200 steps per swing by
+                    default); absent, the predictive chooser picks both for accuracy or target_error
+                    (diagnostics.selection)
+            accuracy: preset: relative error 1e-3, 1e-8, 1e-10, 1e-11 of the swing period and of the
+                    precession rate (relative to W); the chooser picks the method and steps per swing
+                    predicted cheapest to meet it (not with target_error, nor with integrator.method /
+                    steps_per_swing)
             fictitious: "auto" (default) or the list of terms to model; coriolis is the effect and must
                     be in it
-            target_error: relative accuracy wanted of the precession rate (relative to W) and the
-                    period; fictitious auto leaves out a term whose estimated effect is below target/10;
-                    default 1e-06
+            target_error: relative accuracy wanted of the precession rate (relative to W) and the period
+                    (or the accuracy preset's): without integrator.method / steps_per_swing the chooser
+                    picks the cheapest method and steps per swing predicted to meet it; fictitious auto
+                    leaves out a term whose estimated effect is below target/10; default 1e-06
             error_estimate: run again with half the steps per swing and report the Richardson estimate
                     of the error; default true
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
+        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('accuracy', accuracy), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('dry_run', dry_run), ('cost', cost)))
 
     def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The notes' rotating-table puck experiments seen from the inertial and the rotating frame
