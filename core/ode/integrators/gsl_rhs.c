@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "integrators/gsl_rhs.h"
+#include "ode/integrators/gsl_rhs.h"
 
 void mech_gsl_rhs_begin(struct mech_gsl_rhs *c, const struct mech_ode_system *sys,
                         struct mech_ode_stats *stats, struct mech_error *err, int hard)

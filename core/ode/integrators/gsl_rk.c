@@ -32,8 +32,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "integrators/gsl_rhs.h"
-#include "integrators/integrator.h"
+#include "ode/integrators/gsl_rhs.h"
+#include "ode/integrators/integrator.h"
 
 struct gsl_rk_ws {
     gsl_odeiv2_step *main;    /* used by evolve() */

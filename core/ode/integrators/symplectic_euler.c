@@ -20,7 +20,7 @@
  */
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 struct symp_euler_ws {
     size_t nq;

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/verlet_kernel.h"
+#include "ode/integrators/verlet_kernel.h"
 
 enum { VERLET_MAX_ITER = 60 };
 

@@ -53,7 +53,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 #include "mech/reference.h"
 
 enum { WH_MAX_KICK_ITERATIONS = 50 };

@@ -20,7 +20,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 #include "mech/ode.h"
 #include "testlib.h"
 

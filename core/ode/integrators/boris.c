@@ -37,7 +37,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 struct boris_ws {
     size_t nq;

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 #include "mech/poincare.h"
 
 enum { PC_FIXED_SEGMENT_STEPS = 4096 };

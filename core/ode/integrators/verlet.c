@@ -28,8 +28,8 @@
  */
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
-#include "integrators/verlet_kernel.h"
+#include "ode/integrators/integrator.h"
+#include "ode/integrators/verlet_kernel.h"
 
 /* The stage itself (and its implicit half kick) lives in verlet_kernel.c,
  * shared with the Yoshida compositions. */

@@ -12,7 +12,7 @@
  */
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 struct euler_ws {
     size_t dim;

@@ -39,7 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 enum { GL_MAX_ITER = 100, GL_MAX_STAGES = 3 };
 /* A relative change this small that no longer decreases is round-off. */

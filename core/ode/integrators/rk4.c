@@ -9,7 +9,7 @@
  */
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 struct rk4_ws {
     size_t dim;

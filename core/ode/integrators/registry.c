@@ -4,7 +4,7 @@
  * method by writing its file and one line here. */
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 const struct mech_integrator *const mech_integrator_table[] = {
     /* adaptive */

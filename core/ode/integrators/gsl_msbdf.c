@@ -67,8 +67,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
-#include "integrators/gsl_rhs.h"
-#include "integrators/integrator.h"
+#include "ode/integrators/gsl_rhs.h"
+#include "ode/integrators/integrator.h"
 
 #define MSBDF_SUB_MAX_STEPS 100000L /* internal bsimp steps per sub-step */
 #define MSBDF_NMAX 100000000UL      /* GSL driver nmax (the driver loop is ours) */

@@ -25,7 +25,7 @@
 
 #include <stddef.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 struct mech_verlet_kernel {
     size_t nq;                        /* dim / 2 */

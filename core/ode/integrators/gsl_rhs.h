@@ -27,7 +27,7 @@
 
 #include <gsl/gsl_errno.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 /* The status handed to GSL for a rejected trial (any code GSL's evolve
  * treats as "retry with a smaller step", and that neither adapter gives

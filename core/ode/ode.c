@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 #include "mech/ode.h"
 
 /* Brent needs at most about (log2 of width/tolerance) bisections, ~1100 for the

@@ -37,8 +37,8 @@
  */
 #include <stdlib.h>
 
-#include "integrators/integrator.h"
-#include "integrators/verlet_kernel.h"
+#include "ode/integrators/integrator.h"
+#include "ode/integrators/verlet_kernel.h"
 
 /* Yoshida 1990, Sect. 4: x1 = 1/(2 - 2^(1/3)), x0 = -2^(1/3)/(2 - 2^(1/3)). */
 static const double YOSHIDA4_X1 = 1.35120719195965763404768780897;

@@ -77,7 +77,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 
 /* Gauss–Radau spacings (Rein & Spiegel 2015; REBOUND integrator_ias15.c
  * h[]): h_0 = 0 and the roots of P_7 + P_8 mapped to [0, 1]. */

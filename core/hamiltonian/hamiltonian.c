@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "integrators/integrator.h"
+#include "ode/integrators/integrator.h"
 #include "mech/hamiltonian.h"
 
 /* ---- the catalog ------------------------------------------------------------ */
