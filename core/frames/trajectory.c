@@ -1,22 +1,30 @@
-/* trajectory.c — equations of motion of a particle in an inertial, rotating
- * or local Earth frame (notes §1.2 "Rotating frames", §1.3 "Motion near the
- * Earth"), integrated with mech_ode_solve; model-term sizes and the
- * conserved quantities (energy / Jacobi integral, angular momentum) are
- * gathered by the driver's observer at every sample and every step end; the
- * samples are compared with the scene's reference solution (reference.c) or,
- * on request, with a second run at a tighter setting. Also: the accuracy
- * presets and the method choice behind {"accuracy": ...} / {"target_error": ...}.
+/* trajectory.c — the trajectory driver: equations of motion of a particle in
+ * an inertial, rotating or local Earth frame (notes §1.2 "Rotating frames",
+ * §1.3 "Motion near the Earth"), integrated with mech_ode_solve; model-term
+ * sizes and the conserved quantities (energy / Jacobi integral, angular
+ * momentum) are gathered by the driver's observer at every sample and every
+ * step end; the samples are compared with the scene's reference solution
+ * (reference.c) or, on request, with a second run at a tighter setting (the
+ * error estimate).
+ *
+ * Why one file of ~1.1k lines: the force loop (its fast path included), the
+ * observer and the driver share one context (struct traj_ctx) that the hot
+ * path reads field by field; keeping them in one translation unit keeps that
+ * context private and the force loop inlined. The rest of the old file lives
+ * beside it: frame.c (the frame's angular velocity), trajectory_problem.c
+ * (validation, planar scenes, the angular-momentum centre),
+ * trajectory_choose.c (accuracy presets, the chooser's profile),
+ * term_estimate.c and trajectory_model.c (the auto-model).
  */
 #include "mech/trajectory.h"
 #include "mech/chooser.h"
 #include "mech/reference.h"
+#include "trajectory_scene.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for error parameter paths */
 #include <stdlib.h>
 #include <string.h>
-
-static const double traj_pi = 3.14159265358979323846;
 
 struct traj_ctx {
     const struct mech_trajectory_problem *p;
@@ -66,24 +74,6 @@ static const char *force_name(enum mech_force_type t)
     case MECH_FORCE_THIRD_BODY_TIDE: return "third_body_tide";
     }
     return "unknown";
-}
-
-struct mech_vec3 mech_frame_omega(const struct mech_frame *frame)
-{
-    switch (frame->type) {
-    case MECH_FRAME_ROTATING:
-        return frame->omega;
-    case MECH_FRAME_EARTH: {
-        /* notes §1.3: w points from the south to the north pole; in local
-         * axes (east, north, up) at latitude lat: w = W (0, cos lat, sin lat). */
-        double lat = frame->latitude_deg * (traj_pi / 180.0);
-        return mech_vec3_make(0.0, frame->omega_magnitude * cos(lat),
-                              frame->omega_magnitude * sin(lat));
-    }
-    case MECH_FRAME_INERTIAL:
-    default:
-        return mech_vec3_make(0.0, 0.0, 0.0);
-    }
 }
 
 /* Tidal acceleration of a body gm at d (notes §1.4, "The Tides"):
@@ -702,166 +692,6 @@ static void kepler_split_fill(const struct traj_ctx *c, struct mech_ode_kepler_s
     ks->velocity_dependent = scene_velocity_dependent(c);
 }
 
-static enum mech_status check_vec(struct mech_vec3 v, const char *param, struct mech_error *err)
-{
-    if (!mech_vec3_isfinite(v))
-        return mech_error_set(err, MECH_EINVAL, param, "components must be finite");
-    return MECH_OK;
-}
-
-enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
-                                       struct mech_error *err)
-{
-    enum mech_status st;
-    char param[64];
-    if (!(isfinite(p->mass) && p->mass > 0.0))
-        return mech_error_set(err, MECH_EDOMAIN, "particle/mass",
-                              "mass must be finite and > 0, got %.17g", p->mass);
-    if (!isfinite(p->charge))
-        return mech_error_set(err, MECH_EINVAL, "particle/charge", "charge must be finite");
-    if ((st = check_vec(p->position, "particle/position", err)) != MECH_OK) return st;
-    if ((st = check_vec(p->velocity, "particle/velocity", err)) != MECH_OK) return st;
-    switch (p->frame.type) {
-    case MECH_FRAME_INERTIAL:
-        break;
-    case MECH_FRAME_ROTATING:
-        if ((st = check_vec(p->frame.omega, "frame/omega", err)) != MECH_OK) return st;
-        if ((st = check_vec(p->frame.omega_dot, "frame/omega_dot", err)) != MECH_OK) return st;
-        if ((st = check_vec(p->frame.acceleration, "frame/acceleration", err)) != MECH_OK)
-            return st;
-        break;
-    case MECH_FRAME_EARTH:
-        if (!(p->frame.latitude_deg >= -90.0 && p->frame.latitude_deg <= 90.0))
-            return mech_error_set(err, MECH_EDOMAIN, "frame/latitude_deg",
-                                  "latitude must be in [-90, 90] degrees, got %.17g",
-                                  p->frame.latitude_deg);
-        if (!(isfinite(p->frame.omega_magnitude) && p->frame.omega_magnitude >= 0.0))
-            return mech_error_set(err, MECH_EDOMAIN, "frame/omega_magnitude",
-                                  "omega_magnitude must be finite and >= 0, got %.17g",
-                                  p->frame.omega_magnitude);
-        break;
-    default:
-        return mech_error_set(err, MECH_EINVAL, "frame/type", "unknown frame type");
-    }
-    if (p->n_forces > MECH_TRAJECTORY_MAX_FORCES || (p->n_forces && !p->forces))
-        return mech_error_set(err, MECH_EINVAL, "forces", "at most %d forces",
-                              MECH_TRAJECTORY_MAX_FORCES);
-    for (size_t i = 0; i < p->n_forces; i++) {
-        const struct mech_force *f = &p->forces[i];
-        switch (f->type) {
-        case MECH_FORCE_UNIFORM_GRAVITY:
-            snprintf(param, sizeof param, "forces/%zu/g", i);
-            if ((st = check_vec(f->u.uniform_gravity.g, param, err)) != MECH_OK) return st;
-            break;
-        case MECH_FORCE_CENTRAL_GRAVITY: {
-            snprintf(param, sizeof param, "forces/%zu/gm", i);
-            if (!(isfinite(f->u.central_gravity.gm) && f->u.central_gravity.gm > 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param, "gm must be finite and > 0");
-            snprintf(param, sizeof param, "forces/%zu/center", i);
-            if ((st = check_vec(f->u.central_gravity.center, param, err)) != MECH_OK) return st;
-            struct mech_vec3 d = mech_vec3_sub(p->position, f->u.central_gravity.center);
-            if (!(mech_vec3_norm(d) > 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, "particle/position",
-                                      "the particle starts at the centre of force %zu", i);
-            break;
-        }
-        case MECH_FORCE_SPRING:
-            snprintf(param, sizeof param, "forces/%zu/k", i);
-            if (!(isfinite(f->u.spring.k) && f->u.spring.k >= 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param, "k must be finite and >= 0");
-            snprintf(param, sizeof param, "forces/%zu/rest_length", i);
-            if (!(isfinite(f->u.spring.rest_length) && f->u.spring.rest_length >= 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param,
-                                      "rest_length must be finite and >= 0");
-            snprintf(param, sizeof param, "forces/%zu/anchor", i);
-            if ((st = check_vec(f->u.spring.anchor, param, err)) != MECH_OK) return st;
-            break;
-        case MECH_FORCE_LINEAR_DRAG:
-            snprintf(param, sizeof param, "forces/%zu/b", i);
-            if (!(isfinite(f->u.linear_drag.b) && f->u.linear_drag.b >= 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param, "b must be finite and >= 0");
-            break;
-        case MECH_FORCE_LORENTZ:
-            snprintf(param, sizeof param, "forces/%zu/E", i);
-            if ((st = check_vec(f->u.lorentz.E, param, err)) != MECH_OK) return st;
-            snprintf(param, sizeof param, "forces/%zu/B", i);
-            if ((st = check_vec(f->u.lorentz.B, param, err)) != MECH_OK) return st;
-            break;
-        case MECH_FORCE_THIRD_BODY_TIDE: {
-            snprintf(param, sizeof param, "forces/%zu/gm", i);
-            if (!(isfinite(f->u.third_body_tide.gm) && f->u.third_body_tide.gm > 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param, "gm must be finite and > 0");
-            snprintf(param, sizeof param, "forces/%zu/position", i);
-            if ((st = check_vec(f->u.third_body_tide.position, param, err)) != MECH_OK) return st;
-            if (!(mech_vec3_norm(f->u.third_body_tide.position) > 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, param,
-                                      "the tide-raising body cannot be at the frame's origin");
-            if (!(mech_vec3_norm(mech_vec3_sub(p->position, f->u.third_body_tide.position)) > 0.0))
-                return mech_error_set(err, MECH_EDOMAIN, "particle/position",
-                                      "the particle starts at the tide-raising body of force %zu",
-                                      i);
-            break;
-        }
-        default:
-            snprintf(param, sizeof param, "forces/%zu/type", i);
-            return mech_error_set(err, MECH_EINVAL, param, "unknown force type");
-        }
-    }
-    if (!(isfinite(p->t_end) && p->t_end > 0.0))
-        return mech_error_set(err, MECH_EINVAL, "t_end", "t_end must be finite and > 0");
-    if (p->samples < MECH_TRAJECTORY_MIN_SAMPLES || p->samples > MECH_TRAJECTORY_MAX_SAMPLES)
-        return mech_error_set(err, MECH_EINVAL, "samples", "samples must be in [%d, %d]",
-                              MECH_TRAJECTORY_MIN_SAMPLES, MECH_TRAJECTORY_MAX_SAMPLES);
-    if (p->has_stop) {
-        if (p->stop_axis < 0 || p->stop_axis > 2)
-            return mech_error_set(err, MECH_EINVAL, "stop/coordinate", "axis must be x, y or z");
-        if (!isfinite(p->stop_value))
-            return mech_error_set(err, MECH_EINVAL, "stop/crosses", "value must be finite");
-        if (p->stop_direction != MECH_STOP_EITHER && p->stop_direction != MECH_STOP_INCREASING &&
-            p->stop_direction != MECH_STOP_DECREASING)
-            return mech_error_set(err, MECH_EINVAL, "stop/direction", "unknown direction");
-    }
-    return MECH_OK;
-}
-
-int mech_trajectory_angular_center(const struct mech_trajectory_problem *p, int rotation_active,
-                                   int translation_active, struct mech_vec3 *center)
-{
-    if (!p || !center || rotation_active || translation_active) return 0;
-    int have = 0;
-    struct mech_vec3 ctr = mech_vec3_make(0, 0, 0);
-    for (size_t i = 0; i < p->n_forces; i++) {
-        const struct mech_force *f = &p->forces[i];
-        struct mech_vec3 fc;
-        switch (f->type) {
-        case MECH_FORCE_UNIFORM_GRAVITY:
-            if (mech_vec3_norm(f->u.uniform_gravity.g) > 0.0) return 0;
-            continue;
-        case MECH_FORCE_LINEAR_DRAG:
-            if (f->u.linear_drag.b > 0.0) return 0;
-            continue;
-        case MECH_FORCE_SPRING:
-            if (f->u.spring.k == 0.0) continue;
-            fc = f->u.spring.anchor;
-            break;
-        case MECH_FORCE_CENTRAL_GRAVITY:
-            fc = f->u.central_gravity.center;
-            break;
-        case MECH_FORCE_LORENTZ:
-            if (p->charge == 0.0 ||
-                (mech_vec3_norm(f->u.lorentz.E) == 0.0 && mech_vec3_norm(f->u.lorentz.B) == 0.0))
-                continue;
-            return 0;
-        default:
-            return 0;
-        }
-        if (have && (fc.x != ctr.x || fc.y != ctr.y || fc.z != ctr.z)) return 0;
-        ctr = fc;
-        have = 1;
-    }
-    *center = ctr;
-    return have;
-}
 
 /* The integrator's side of mech_trajectory_angular_center: its frame terms. */
 static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
@@ -943,109 +773,6 @@ static int scene_time_dependent(const struct traj_ctx *c)
     return (c->coriolis || c->centrifugal || c->euler) && mech_vec3_norm(c->wdot) > 0.0;
 }
 
-/* ---- planar scenes --------------------------------------------------------- */
-
-/* Unit vector of a (a != 0). */
-static struct mech_vec3 unit(struct mech_vec3 a) { return mech_vec3_scale(a, 1.0 / mech_vec3_norm(a)); }
-
-/* |n.u| <= 1e-15 |u| with n a unit vector: u lies in the plane of normal n. */
-static int in_plane(struct mech_vec3 n, struct mech_vec3 u)
-{
-    return fabs(mech_vec3_dot(n, u)) <= 1e-15 * mech_vec3_norm(u);
-}
-
-/* |n x u| <= 1e-15 |u|: u is along n. */
-static int along(struct mech_vec3 n, struct mech_vec3 u)
-{
-    return mech_vec3_norm(mech_vec3_cross(n, u)) <= 1e-15 * mech_vec3_norm(u);
-}
-
-/* The coordinate axis least aligned with u (u != 0), crossed with u, normalised. */
-static struct mech_vec3 perpendicular_to(struct mech_vec3 u)
-{
-    double ax = fabs(u.x), ay = fabs(u.y), az = fabs(u.z);
-    struct mech_vec3 e = ax <= ay && ax <= az ? mech_vec3_make(1, 0, 0)
-                         : ay <= az           ? mech_vec3_make(0, 1, 0)
-                                              : mech_vec3_make(0, 0, 1);
-    return unit(mech_vec3_cross(e, u));
-}
-
-int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_vec3 *normal)
-{
-    struct mech_vec3 inp[2 * MECH_TRAJECTORY_MAX_FORCES + 4], nrm[MECH_TRAJECTORY_MAX_FORCES + 2];
-    size_t ni = 0, nn = 0;
-    if (!p || (p->n_forces && !p->forces) || p->n_forces > MECH_TRAJECTORY_MAX_FORCES) return 0;
-    inp[ni++] = p->position;
-    inp[ni++] = p->velocity;
-    for (size_t i = 0; i < p->n_forces; i++) {
-        const struct mech_force *f = &p->forces[i];
-        switch (f->type) {
-        case MECH_FORCE_UNIFORM_GRAVITY: inp[ni++] = f->u.uniform_gravity.g; break;
-        case MECH_FORCE_CENTRAL_GRAVITY: inp[ni++] = f->u.central_gravity.center; break;
-        case MECH_FORCE_SPRING:
-            if (f->u.spring.k != 0.0) inp[ni++] = f->u.spring.anchor;
-            break;
-        case MECH_FORCE_LINEAR_DRAG: break; /* -b v stays in the plane */
-        case MECH_FORCE_LORENTZ:
-            if (p->charge != 0.0) {
-                inp[ni++] = f->u.lorentz.E;
-                nrm[nn++] = f->u.lorentz.B; /* v x B in the plane iff B is normal */
-            }
-            break;
-        case MECH_FORCE_THIRD_BODY_TIDE: inp[ni++] = f->u.third_body_tide.position; break;
-        default: return 0;
-        }
-    }
-    if (p->frame.type != MECH_FRAME_INERTIAL) {
-        const unsigned fm = p->fictitious;
-        /* Coriolis -2 w x v and centrifugal -w x (w x r) stay in the plane when w
-         * is normal to it (then -w x (w x r) = |w|^2 r); Euler -(dw/dt) x r when
-         * dw/dt is normal; translational -A when A lies in it */
-        if (fm & (MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL)) {
-            nrm[nn++] = mech_frame_omega(&p->frame);
-            if (p->frame.type == MECH_FRAME_ROTATING) nrm[nn++] = p->frame.omega_dot;
-        }
-        if ((fm & MECH_FICTITIOUS_EULER) && p->frame.type == MECH_FRAME_ROTATING)
-            nrm[nn++] = p->frame.omega_dot;
-        if ((fm & MECH_FICTITIOUS_TRANSLATIONAL) && p->frame.type == MECH_FRAME_ROTATING)
-            inp[ni++] = p->frame.acceleration;
-    }
-    for (size_t i = 0; i < ni + nn; i++)
-        if (!mech_vec3_isfinite(i < ni ? inp[i] : nrm[i - ni])) return 0;
-    /* the normal: a given one, or the cross product of two independent in-plane vectors */
-    struct mech_vec3 n = mech_vec3_make(0, 0, 0);
-    int have = 0;
-    for (size_t i = 0; i < nn && !have; i++)
-        if (mech_vec3_norm(nrm[i]) > 0.0) {
-            n = unit(nrm[i]);
-            have = 1;
-        }
-    for (size_t i = 0; i < ni && !have; i++) {
-        if (!(mech_vec3_norm(inp[i]) > 0.0)) continue;
-        for (size_t j = i + 1; j < ni && !have; j++) {
-            struct mech_vec3 x = mech_vec3_cross(inp[i], inp[j]);
-            if (mech_vec3_norm(x) > 1e-15 * mech_vec3_norm(inp[i]) * mech_vec3_norm(inp[j])) {
-                n = unit(x);
-                have = 1;
-            }
-        }
-    }
-    if (!have) {
-        /* every in-plane vector is on one line (or zero): any plane holding it */
-        for (size_t i = 0; i < ni && !have; i++)
-            if (mech_vec3_norm(inp[i]) > 0.0) {
-                n = perpendicular_to(inp[i]);
-                have = 1;
-            }
-        if (!have) n = mech_vec3_make(0, 0, 1);
-    }
-    for (size_t i = 0; i < ni; i++)
-        if (!in_plane(n, inp[i])) return 0;
-    for (size_t i = 0; i < nn; i++)
-        if (!along(n, nrm[i])) return 0;
-    if (normal) *normal = n;
-    return 1;
-}
 
 /* Set up planar integration in c when asked and possible for this method. */
 static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
@@ -1056,8 +783,7 @@ static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
     /* Boris rotates 3-vectors: 2-D only when it needs no Lorentz split */
     if (!strcmp(mi->name, "boris") && scene_velocity_dependent(c)) return;
     c->dim2 = 1;
-    c->e1 = perpendicular_to(n);
-    c->e2 = mech_vec3_cross(n, c->e1);
+    mech_trajectory_plane_axes(n, &c->e1, &c->e2);
     ctx_fast_setup(c); /* the force vectors in plane coordinates */
 }
 
@@ -1402,304 +1128,21 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
     return st;
 }
 
-/* ---- choosing by accuracy ----------------------------------------------------
- * The presets are targets (draft 1e-3, balanced 1e-8, precise 1e-10, machine
- * 1e-11 relative); the method and its setting come from the predictive
- * chooser (mech/chooser.h, core/chooser.c: a model calibrated by
- * bench/bench_calibrate_chooser), which lists every candidate with its
- * predicted error and cost and picks the cheapest predicted to meet the
- * target. The `method`/`rtol` fields of the table below are what the
- * chooser typically picks on a 10-orbit Kepler scene, kept for GET
- * /v1/integrators; the choice itself is made per scene. Each preset keeps
- * its promise up to the round-off floor of long runs (about Fm x span^g
- * relative over span dynamical times, measured per class and method); below
- * that the selection says so. */
-static const struct mech_accuracy_preset traj_presets[MECH_ACCURACY_COUNT] = {
-    /* typical picks (Kepler e = 0.5, 10 orbits; the falling object with
-     * Coriolis), measured by tests/core/test_chooser.c's output */
-    {"draft", 1e-3, "rk8pd", "rkf45", 3e-7, 1e-4,
-     "cheap: the cheapest method predicted to meet 1e-3 relative; for plots and previews"},
-    {"balanced", 1e-8, "rk8pd", "rkf45", 4.9e-12, 1e-9,
-     "the default: the cheapest method predicted to meet 1e-8 relative"},
-    {"precise", 1e-10, "radau15", "rkf45", 1.8e-7, 1e-11,
-     "for grading and reference answers: the cheapest method predicted to meet 1e-10 "
-     "relative; long runs reach the round-off floor (~F x span^g), which the answer states"},
-    {"machine", 1e-11, "radau15", "rkf45", 4.8e-8, 1e-12,
-     "1e-11 relative where round-off allows (~1e-13 over 10 orbits of e = 0.5; the measured "
-     "envelope of the round-off floor is 2.5e-16 span^1.5 for Kepler orbits, span in "
-     "pericentre times: ~2e-11 over 10 orbits of e = 0.9, ~6e-10 over 1000 of e = 0.5, ~2e-8 "
-     "at e = 0.9): the answer re-states the promise when the run is beyond it"},
-};
+/* ---- what the chooser's profile asks of the equations (trajectory_scene.h) -- */
 
-const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a)
+enum mech_status mech_trajectory_start_acceleration(const struct mech_trajectory_problem *p,
+                                                    double a[3])
 {
-    return (int)a >= 0 && a < MECH_ACCURACY_COUNT ? &traj_presets[a] : NULL;
-}
-
-/* The pericentre dynamical time sqrt(q^3 / GM) of the two-body orbit through
- * the initial state about each central body (q = h^2 / (GM (1 + e)), any
- * eccentricity), the shortest over the bodies; +inf when there is none or
- * the state is degenerate (at the centre, or radial: q = 0 is left to
- * sqrt(|r0| / |a0|)). */
-static double kepler_pericentre_time(const struct mech_trajectory_problem *p)
-{
-    double T = INFINITY;
-    for (size_t i = 0; i < p->n_forces; i++) {
-        if (p->forces[i].type != MECH_FORCE_CENTRAL_GRAVITY) continue;
-        const double gm = p->forces[i].u.central_gravity.gm;
-        const struct mech_vec3 r = mech_vec3_sub(p->position, p->forces[i].u.central_gravity.center);
-        const double rn = mech_vec3_norm(r);
-        if (!(gm > 0.0) || !(rn > 0.0)) continue;
-        const double h = mech_vec3_norm(mech_vec3_cross(r, p->velocity));
-        const double v2 = mech_vec3_dot(p->velocity, p->velocity);
-        const double energy = 0.5 * v2 - gm / rn;
-        const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
-        const double q = h * h / (gm * (1.0 + sqrt(fmax(e2, 0.0))));
-        if (q > 0.0 && isfinite(q)) T = fmin(T, sqrt(q * q * q / gm));
-    }
-    return T;
-}
-
-/* The chooser's profile of a trajectory scene: its class, its dynamical time
- * T = min(t_end, sqrt(|r0| / |a0|), the pericentre time of a central body's
- * orbit), span = t_end / T, and the scale S of positions and velocities
- * (atol = rtol x S). */
-static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ctx *c,
-                         struct mech_scene_profile *s, double *L_out, double *V_out)
-{
-    memset(s, 0, sizeof *s);
-    double a0[3] = {0, 0, 0}, q0[3] = {p->position.x, p->position.y, p->position.z},
-           v0[3] = {p->velocity.x, p->velocity.y, p->velocity.z};
-    struct mech_vec3 acc = mech_vec3_make(0, 0, 0);
-    if (traj_accel(0.0, q0, v0, a0, c) == MECH_OK) acc = mech_vec3_make(a0[0], a0[1], a0[2]);
-    const double an = mech_vec3_norm(acc), vn = mech_vec3_norm(p->velocity);
-    const double rn = mech_vec3_norm(p->position);
-    double T = p->t_end;
-    if (an > 0.0 && rn > 0.0) T = fmin(T, sqrt(rn / an));
-    /* a central body: the orbit's pericentre time sqrt(q^3 / GM), wherever
-     * the run starts (from apocentre, sqrt(r0 / a0) would call an e = 0.9
-     * orbit 80x shorter in dynamical times than the same orbit from
-     * pericentre, and under-predict its round-off floor ~700x) */
-    T = fmin(T, kepler_pericentre_time(p));
-    if (!(T > 0.0 && isfinite(T))) T = p->t_end > 0.0 ? p->t_end : 1.0;
-    double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
-    double V = fmax(vn, an * T);
-    double S = L > 0.0 && V > 0.0 ? fmin(L, V) : fmax(L, V);
-    if (!(S > 0.0 && isfinite(S))) S = 1.0;
-    *L_out = L;
-    *V_out = V;
-    int central = 0, spring = 0;
-    double drag_rate = 0.0;
-    for (size_t i = 0; i < p->n_forces; i++) {
-        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) central = 1;
-        if (p->forces[i].type == MECH_FORCE_SPRING && p->forces[i].u.spring.k > 0.0) spring = 1;
-        if (p->forces[i].type == MECH_FORCE_LINEAR_DRAG && p->mass > 0.0)
-            drag_rate += p->forces[i].u.linear_drag.b / p->mass;
-    }
-    /* uniform_field only for uniform gravity (and a frame whose rotation
-     * bends the fall little over the run): motion close to a polynomial;
-     * drag, magnetic fields, tides and rotating frames are "general" */
-    int only_uniform = 1;
-    for (size_t i = 0; i < p->n_forces; i++)
-        if (p->forces[i].type != MECH_FORCE_UNIFORM_GRAVITY) only_uniform = 0;
-    const double w_run = mech_vec3_norm(mech_frame_omega(&p->frame)) * p->t_end;
-    if (p->frame.type != MECH_FRAME_INERTIAL && !(w_run < 1e-2)) only_uniform = 0;
-    s->cls = central        ? MECH_SCENE_CENTRAL_GRAVITY
-           : spring         ? MECH_SCENE_OSCILLATOR
-           : only_uniform   ? MECH_SCENE_UNIFORM_FIELD
-                            : MECH_SCENE_GENERAL;
-    s->T = T;
-    s->span = p->t_end / T;
-    s->scale = S;
-    s->samples = p->samples;
-    s->second_order = 1;
-    s->velocity_dependent = scene_velocity_dependent(c);
-    /* stiff: a damping time far shorter than the dynamical time and the run */
-    s->stiff = drag_rate * fmin(T, p->t_end) > 1e2;
-    struct mech_trajectory_reference ref;
-    s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
-    s->closed_form_name = s->closed_form ? ref.name : NULL;
-    s->closed_form_allowed = !p->closed_form_off;
-}
-
-enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p, double target,
-                                        struct mech_trajectory_choice *out,
-                                        struct mech_error *err)
-{
-    if (!p || !out) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
-    if (!(target >= 1e-15 && target <= 0.1))
-        return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
-                              "target_error must be in [1e-15, 0.1], got %.17g", target);
-    memset(out, 0, sizeof *out);
     struct traj_ctx c;
     ctx_init(&c, p, 0.0, NULL);
-    double L, V;
-    traj_profile(p, &c, &out->profile, &L, &V);
-    enum mech_status st = mech_choose(&out->profile, target, &out->sel, err);
-    if (st != MECH_OK) return st;
-    if (out->sel.chosen < 0 || out->sel.integrating < 0)
-        return mech_error_set(err, MECH_EINTERNAL, NULL, "no candidate method applies");
-    /* method/opt are always an integrator's (the best integrating candidate),
-     * so callers that only integrate (scenes, the auto-model's first pass)
-     * can; closed_form says the closed form was chosen over it */
-    out->closed_form = out->sel.integrating != out->sel.chosen;
-    const struct mech_candidate *ch = &out->sel.c[out->sel.integrating];
-    out->method = ch->method;
-    out->opt = ch->opt;
-    out->target = target;
-    const double span = out->profile.span;
-    char beyond[320];
-    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
-    if (out->closed_form) {
-        snprintf(out->reason, sizeof out->reason,
-                 "%s %s scene over %.3g dynamical times: the exact %s solution is the cheapest "
-                 "candidate meeting %.0e relative (predicted error %.2g, %.2g s CPU for %zu "
-                 "samples): answered from it, nothing integrated; the best integrator would "
-                 "be %s at %s %.3g (predicted error %.2g, %.3g evaluations, %.2g s CPU)",
-                 out->profile.velocity_dependent ? "velocity-dependent" : "velocity-free",
-                 mech_scene_class_name(out->profile.cls), span,
-                 out->profile.closed_form_name ? out->profile.closed_form_name : "closed-form",
-                 target, out->sel.c[out->sel.chosen].predicted_error,
-                 out->sel.c[out->sel.chosen].predicted_cpu_s, out->profile.samples, ch->method,
-                 ch->adaptive ? "rtol" : "dt", ch->adaptive ? ch->opt.rtol : ch->opt.dt,
-                 ch->predicted_error, ch->predicted_evaluations, ch->predicted_cpu_s);
-        return MECH_OK;
-    }
-    snprintf(out->reason, sizeof out->reason,
-             "%s %s scene over %.3g dynamical times (T = %.4g s): %s at %s %.3g is the "
-             "cheapest candidate predicted to meet %.0e relative (predicted error %.2g, %.3g "
-             "evaluations, %.2g s CPU)%s; atol = rtol x %.3g (the smaller of the position "
-             "scale %.3g m and the velocity scale %.3g m/s)",
-             out->profile.velocity_dependent ? "velocity-dependent" : "velocity-free",
-             mech_scene_class_name(out->profile.cls), span, out->profile.T, ch->method,
-             ch->adaptive ? "rtol" : "dt", ch->adaptive ? ch->opt.rtol : ch->opt.dt, target,
-             ch->predicted_error, ch->predicted_evaluations, ch->predicted_cpu_s, beyond,
-             out->profile.scale, L, V);
-    return MECH_OK;
+    double q0[3] = {p->position.x, p->position.y, p->position.z},
+           v0[3] = {p->velocity.x, p->velocity.y, p->velocity.z};
+    return traj_accel(0.0, q0, v0, a, &c);
 }
 
-/* ---- modelling only what the scene requires --------------------------------
- * DESIGN.md promise 3 and issue 6: estimate each fictitious term's effect on
- * the returned positions and velocities before integrating, keep only those
- * that matter at the accuracy asked for, say why for every one. */
-
-void mech_term_effect_estimate(const char *term, double accel_bound, double T, double L, double V,
-                               double target, double safety, struct mech_term_estimate *out)
+int mech_trajectory_velocity_dependent(const struct mech_trajectory_problem *p)
 {
-    memset(out, 0, sizeof *out);
-    out->term = term;
-    out->applicable = 1;
-    if (!(safety >= 1.0)) safety = 1.0;
-    out->accel_bound = accel_bound;
-    /* a term of size <= a over T moves r by <= a T^2/2 and v by <= a T */
-    out->position_effect = 0.5 * accel_bound * T * T;
-    out->velocity_effect = accel_bound * T;
-    double rp = L > 0.0 ? out->position_effect / L : 0.0;
-    double rv = V > 0.0 ? out->velocity_effect / V : 0.0;
-    out->relative_effect = fmax(rp, rv);
-    const double threshold = target / safety;
-    if (!(L > 0.0) && !(V > 0.0)) {
-        out->included = accel_bound > 0.0;
-        snprintf(out->reason, sizeof out->reason,
-                 out->included ? "the scene has no position or velocity scale: a non-zero term "
-                                 "(%.3g m/s^2) is kept"
-                               : "zero along the trajectory (%.3g m/s^2)",
-                 accel_bound);
-        return;
-    }
-    out->included = out->relative_effect > threshold;
-    /* name the dominant of the two effects in the reason */
-    const int by_velocity = rv > rp;
-    const double eff = by_velocity ? out->velocity_effect : out->position_effect;
-    const double scale = by_velocity ? V : L;
-    const char *unit_s = by_velocity ? "m/s" : "m";
-    snprintf(out->reason, sizeof out->reason,
-             "estimated effect %.3g %s %s target %.3g x %.6g %s / safety %g (|a| <= %.3g m/s^2 "
-             "over T = %.6g s: |a| T^2/2 = %.3g m, |a| T = %.3g m/s)",
-             eff, unit_s, out->included ? ">" : "<=", target, scale, unit_s, safety, accel_bound,
-             T, out->position_effect, out->velocity_effect);
-}
-
-enum mech_status mech_trajectory_model_select(const struct mech_trajectory_problem *p,
-                                              double target, const struct mech_budget *budget,
-                                              struct mech_trajectory_model *m,
-                                              struct mech_error *err)
-{
-    if (!p || !m) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
-    memset(m, 0, sizeof *m);
-    if (!(target >= 1e-15 && target <= 0.1))
-        return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
-                              "target_error must be in [1e-15, 0.1], got %.17g", target);
-    enum mech_status st = mech_trajectory_check(p, err);
-    if (st != MECH_OK) return st;
-    m->target = target;
-    m->safety = MECH_TRAJECTORY_AUTO_SAFETY;
-    static const char *const names[MECH_TRAJECTORY_N_FICTITIOUS] = {"coriolis", "centrifugal",
-                                                                    "euler", "translational"};
-    static const unsigned bits[MECH_TRAJECTORY_N_FICTITIOUS] = {
-        MECH_FICTITIOUS_CORIOLIS, MECH_FICTITIOUS_CENTRIFUGAL, MECH_FICTITIOUS_EULER,
-        MECH_FICTITIOUS_TRANSLATIONAL};
-    /* 1. applicability: which terms are not identically zero in this frame */
-    const struct mech_vec3 w = mech_frame_omega(&p->frame);
-    const int rotating_frame = p->frame.type == MECH_FRAME_ROTATING;
-    const struct mech_vec3 wdot = rotating_frame ? p->frame.omega_dot : mech_vec3_make(0, 0, 0);
-    const struct mech_vec3 A = rotating_frame ? p->frame.acceleration : mech_vec3_make(0, 0, 0);
-    const int rotates = mech_vec3_norm(w) > 0.0 || mech_vec3_norm(wdot) > 0.0;
-    const int applicable[MECH_TRAJECTORY_N_FICTITIOUS] = {
-        p->frame.type != MECH_FRAME_INERTIAL && rotates,
-        p->frame.type != MECH_FRAME_INERTIAL && rotates, mech_vec3_norm(wdot) > 0.0,
-        mech_vec3_norm(A) > 0.0};
-    static const char *const why_not[MECH_TRAJECTORY_N_FICTITIOUS] = {
-        "not carried: the frame does not rotate (omega = 0, omega_dot = 0)",
-        "not carried: the frame does not rotate (omega = 0, omega_dot = 0)",
-        "not carried: the frame's angular velocity is constant (omega_dot = 0)",
-        "not carried: the frame's origin does not accelerate (acceleration = 0)"};
-    unsigned all = 0;
-    for (int k = 0; k < MECH_TRAJECTORY_N_FICTITIOUS; k++) {
-        m->terms[k].term = names[k];
-        if (applicable[k]) {
-            all |= bits[k];
-        } else {
-            snprintf(m->terms[k].reason, sizeof m->terms[k].reason, "%s",
-                     p->frame.type == MECH_FRAME_INERTIAL ? "not carried: inertial frame"
-                                                           : why_not[k]);
-        }
-    }
-    if (!all) return MECH_OK;
-
-    /* 2. the cheap first pass with every applicable term, draft accuracy */
-    struct mech_trajectory_problem q = *p;
-    q.fictitious = all;
-    q.error_estimate = 0;
-    q.reduce_planar = 0;
-    if (q.samples > 101) q.samples = 101;
-    struct mech_trajectory_choice ch;
-    st = mech_trajectory_choose(&q, mech_accuracy_preset_at(MECH_ACCURACY_DRAFT)->promise, &ch,
-                                err);
-    if (st != MECH_OK) return st;
-    q.method = ch.method;
-    q.opt = ch.opt;
-    struct mech_trajectory_result r;
-    memset(&r, 0, sizeof r); /* no sample buffers: bounds come from the observer */
-    st = mech_trajectory_integrate(&q, budget, &r, err);
-    if (st != MECH_OK) return st;
-    m->first_pass_done = 1;
-    m->first_pass_method = r.method;
-    m->first_pass_opt = q.opt;
-    m->first_pass_stats = r.stats;
-    m->time_scale = r.stopped ? r.t_stop : p->t_end;
-    if (!(m->time_scale > 0.0)) m->time_scale = p->t_end;
-    /* scales: the largest |r| and |v| seen at every step end and sample */
-    m->position_scale = r.max_radius;
-    m->velocity_scale = r.max_speed;
-
-    /* 3. judge each applicable term */
-    for (int k = 0; k < MECH_TRAJECTORY_N_FICTITIOUS; k++) {
-        if (!applicable[k]) continue;
-        double a = r.terms[p->n_forces + (size_t)k].max_acceleration;
-        mech_term_effect_estimate(names[k], a, m->time_scale, m->position_scale,
-                                  m->velocity_scale, target, m->safety, &m->terms[k]);
-        if (m->terms[k].included) m->fictitious |= bits[k];
-    }
-    return MECH_OK;
+    struct traj_ctx c;
+    ctx_init(&c, p, 0.0, NULL);
+    return scene_velocity_dependent(&c);
 }

@@ -15,7 +15,7 @@
 #define MECH_REFERENCE_H
 
 #include "mech/status.h"
-#include "mech/trajectory.h"
+#include "mech/trajectory_problem.h"
 #include "mech/vec.h"
 
 /* Propagate a Kepler orbit about a fixed centre (at the origin of r0) by t
