@@ -24,10 +24,10 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 
 #define NS 101
-#define CAL_PI 3.14159265358979323846
 
 struct scene {
     const char *cls;
@@ -51,8 +51,8 @@ static void scene_kepler(struct scene *s)
     s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
     s->T = sqrt(pow(1.0 - e, 3.0));
     /* 10 and 100 orbits */
-    s->spans[0] = 10 * 2 * CAL_PI / s->T;
-    s->spans[1] = 1000 * 2 * CAL_PI / s->T;
+    s->spans[0] = 10 * 2 * MECH_PI / s->T;
+    s->spans[1] = 1000 * 2 * MECH_PI / s->T;
     s->exact = 1;
     s->S = 0.61;
 }
@@ -67,8 +67,8 @@ static void scene_osc(struct scene *s)
     s->p.position = mech_vec3_make(1, 0, 0);
     s->p.velocity = mech_vec3_make(0, 0.5, 0);
     s->T = 1.0;
-    s->spans[0] = 10 * 2 * CAL_PI;
-    s->spans[1] = 10000 * 2 * CAL_PI;
+    s->spans[0] = 10 * 2 * MECH_PI;
+    s->spans[1] = 10000 * 2 * MECH_PI;
     s->exact = 1;
     s->S = 0.5;
 }
@@ -285,10 +285,10 @@ static void presets_table(void)
         sc[k].p.position = mech_vec3_make(1.0 - e, 0, 0);
         sc[k].p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
         sc[k].T = sqrt(pow(1.0 - e, 3.0));
-        sc[k].spans[0] = orb[k] * 2 * CAL_PI / sc[k].T;
+        sc[k].spans[0] = orb[k] * 2 * MECH_PI / sc[k].T;
     }
     scene_osc(&sc[4]);
-    sc[4].spans[0] = 1e4 * 2 * CAL_PI;
+    sc[4].spans[0] = 1e4 * 2 * MECH_PI;
     scene_fall(&sc[5]);
     sc[5].p.fictitious = MECH_FICTITIOUS_CORIOLIS;
     make_reference(&sc[5]);
@@ -347,7 +347,7 @@ static void floors_table(void)
             s.p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
             s.T = sqrt(pow(1.0 - e, 3.0));
             s.S = fmin(1.0 - e, sqrt((1.0 + e) / (1.0 - e)));
-            const double span = orb[k] * 2 * CAL_PI / s.T;
+            const double span = orb[k] * 2 * MECH_PI / s.T;
             struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
             struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
             struct meas m3 = run(&s, span, "rk8pd", 1e-13, 1, NS);
@@ -364,7 +364,7 @@ static void floors_table(void)
             struct scene s;
             scene_osc(&s);
             s.p.velocity = mech_vec3_make(0, vy[i], 0);
-            const double span = per[k] * 2 * CAL_PI;
+            const double span = per[k] * 2 * MECH_PI;
             struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
             struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
             const double worst = fmax(m1.err, m2.err);

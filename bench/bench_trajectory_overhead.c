@@ -39,11 +39,11 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/trajectory.h"
 
-#define OV_PI 3.14159265358979323846
 #define OV_ECC 0.5
 #define OV_MAX_ROUNDS 50
 
@@ -59,7 +59,7 @@ struct outcome {
     double cpu;
 };
 
-static double t_end_of(long orbits) { return 2.0 * OV_PI * (double)orbits; }
+static double t_end_of(long orbits) { return 2.0 * MECH_PI * (double)orbits; }
 
 /* ---- the bare right-hand sides (GM = 1) ----------------------------------- */
 

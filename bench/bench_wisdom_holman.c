@@ -25,10 +25,10 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/status.h"
 #include "mech/trajectory.h"
 
-#define WH_PI 3.14159265358979323846
 #define WH_D 20.0
 
 struct outcome {
@@ -65,11 +65,11 @@ static int run(double e, double eps, double orbits, const char *method, double s
     p.velocity = mech_vec3_make(0.0, sqrt((1.0 + e) / (1.0 - e)), 0.0);
     p.forces = f;
     p.n_forces = eps > 0.0 ? 2 : 1;
-    p.t_end = orbits * 2.0 * WH_PI;
+    p.t_end = orbits * 2.0 * MECH_PI;
     p.samples = 2;
     p.method = method;
     if (!strncmp(method, "wisdom_holman", 13)) { /* both fixed-step variants */
-        p.opt.dt = setting * 2.0 * WH_PI;
+        p.opt.dt = setting * 2.0 * MECH_PI;
     } else {
         p.opt.rtol = setting;
         p.opt.atol = 0.0;

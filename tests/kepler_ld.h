@@ -9,12 +9,13 @@
 #ifndef MECHD_TESTS_KEPLER_LD_H
 #define MECHD_TESTS_KEPLER_LD_H
 
+#include "mech/constants.h"
 #include <math.h>
 
 /* The planar state at time t (s, GM = 1): r[0..1], v[0..1]. */
 static inline void kepler_ld_pericentre(double q, double u, double t, double r[2], double v[2])
 {
-    const long double two_pi = 6.283185307179586476925286766559L;
+    const long double two_pi = MECH_TWO_PI_L;
     long double a = 1.0L / (2.0L / q - (long double)u * u), e = 1.0L - q / a;
     long double n = 1.0L / (a * sqrtl(a));
     long double M = fmodl(n * (long double)t, two_pi), E = M + e * sinl(M);

@@ -1,10 +1,10 @@
 /* continuum_waves.c — string and rod waves and the beam's bending modes
  * (see mech/continuum_waves.h). */
 #include "mech/continuum_waves.h"
+#include "mech/constants.h"
 
 #include <math.h>
 
-static const double PI = 3.14159265358979323846;
 
 enum mech_status mech_string_wave_speed(double tension, double linear_density, double *c,
                                         struct mech_error *err)
@@ -38,10 +38,10 @@ enum mech_status mech_rod_axial_mode(enum mech_rod_ends ends, int n, double *kl,
     case MECH_ROD_FREE_FREE:
     case MECH_ROD_CLAMPED_CLAMPED:
     case MECH_ROD_PINNED_PINNED: /* a pin holds the end axially: fixed-fixed */
-        *kl = n * PI; /* u ∝ cos(nπs/L) (free) or sin(nπs/L) (fixed) */
+        *kl = n * MECH_PI; /* u ∝ cos(nπs/L) (free) or sin(nπs/L) (fixed) */
         return MECH_OK;
     case MECH_ROD_CLAMPED_FREE:
-        *kl = (n - 0.5) * PI; /* u ∝ sin((n − ½)π s/L): a node at the clamp, an antinode at the tip */
+        *kl = (n - 0.5) * MECH_PI; /* u ∝ sin((n − ½)π s/L): a node at the clamp, an antinode at the tip */
         return MECH_OK;
     default:
         return mech_error_set(err, MECH_EINVAL, "ends", "unknown end conditions");
@@ -85,20 +85,20 @@ enum mech_status mech_beam_bending_root(enum mech_rod_ends ends, int n, double *
     case MECH_ROD_FREE_FREE:
     case MECH_ROD_CLAMPED_CLAMPED: {
         /* cos x cosh x = 1: cos x = sech x, one root in [nπ, (n + 1)π]. */
-        r = bisect(n * PI, (n + 1) * PI, 1.0);
+        r = bisect(n * MECH_PI, (n + 1) * MECH_PI, 1.0);
         const double e = exp(-r), sn = sin(r), cs = cos(r);
         sg = (1 + e * e - 2 * e * cs) / (1 - e * e - 2 * e * sn); /* (cosh − cos)/(sinh − sin) */
         break;
     }
     case MECH_ROD_CLAMPED_FREE: {
         /* cos x cosh x = −1: cos x = −sech x, one root in [(n − 1)π, nπ]. */
-        r = bisect((n - 1) * PI, n * PI, -1.0);
+        r = bisect((n - 1) * MECH_PI, n * MECH_PI, -1.0);
         const double e = exp(-r), sn = sin(r), cs = cos(r);
         sg = (1 - e * e - 2 * e * sn) / (1 + e * e + 2 * e * cs); /* (sinh − sin)/(cosh + cos) */
         break;
     }
     case MECH_ROD_PINNED_PINNED:
-        r = n * PI;
+        r = n * MECH_PI;
         break;
     default:
         return mech_error_set(err, MECH_EINVAL, "ends", "unknown end conditions");
@@ -113,8 +113,8 @@ struct mech_wave_mode mech_wave_mode_nondispersive(double c, double length, doub
     struct mech_wave_mode m;
     m.wavenumber = kl / length;
     m.angular_frequency = c * m.wavenumber;
-    m.frequency = m.angular_frequency / (2 * PI);
-    m.wavelength = 2 * PI / m.wavenumber;
+    m.frequency = m.angular_frequency / (2 * MECH_PI);
+    m.wavelength = 2 * MECH_PI / m.wavenumber;
     m.phase_speed = m.group_speed = c;
     return m;
 }
@@ -126,7 +126,7 @@ struct mech_wave_mode mech_wave_mode_bending(double a, double length, double x)
     m.phase_speed = a * m.wavenumber;
     m.group_speed = 2 * m.phase_speed;
     m.angular_frequency = m.phase_speed * m.wavenumber;
-    m.frequency = m.angular_frequency / (2 * PI);
-    m.wavelength = 2 * PI / m.wavenumber;
+    m.frequency = m.angular_frequency / (2 * MECH_PI);
+    m.wavelength = 2 * MECH_PI / m.wavenumber;
     return m;
 }

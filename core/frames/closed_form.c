@@ -4,6 +4,7 @@
  * the evidence (invariant drift, Kepler residual). Nothing is integrated.
  */
 #include "mech/closed_form.h"
+#include "mech/constants.h"
 
 #include <float.h>
 #include <limits.h>
@@ -12,7 +13,6 @@
 
 #include "mech/reference.h"
 
-static const double cf_pi = 3.14159265358979323846;
 
 struct cf_ctx {
     const struct mech_trajectory_problem *p;
@@ -175,7 +175,7 @@ static double kepler_collision_time(double gm, struct mech_vec3 r0v, struct mech
     if (beta > 0.0) {
         const double sb = sqrt(beta), a = gm / beta;
         const double phi = atan2(sigma0 / sb, a - r0);
-        const double y = phi < 0.0 ? -phi : 2.0 * cf_pi - phi;
+        const double y = phi < 0.0 ? -phi : 2.0 * MECH_PI - phi;
         return r0 * sin(y) / sb + sigma0 * (1.0 - cos(y)) / beta +
                gm * (y - sin(y)) / (beta * sb);
     }
@@ -213,7 +213,7 @@ static size_t cf_grid(const struct cf_ctx *c, double t_hi, double *grid)
         if (beta > 0.0) {
             const double sb = sqrt(beta);
             for (int k = 1; k <= CF_GRID_PER_PERIOD + 1; k++) {
-                const double y = 2.0 * cf_pi * k / CF_GRID_PER_PERIOD;
+                const double y = 2.0 * MECH_PI * k / CF_GRID_PER_PERIOD;
                 const double t = r0 * sin(y) / sb + sigma0 * (1.0 - cos(y)) / beta +
                                  gm * (y - sin(y)) / (beta * sb);
                 if (t >= t_hi) break;
@@ -222,7 +222,7 @@ static size_t cf_grid(const struct cf_ctx *c, double t_hi, double *grid)
             }
         }
     } else if (!strcmp(c->ref.name, "harmonic_oscillator")) {
-        const double T = 2.0 * cf_pi / c->ref.omega;
+        const double T = 2.0 * MECH_PI / c->ref.omega;
         for (int k = 1; k <= CF_GRID_PER_PERIOD + 1; k++) {
             const double t = T * k / CF_GRID_PER_PERIOD;
             if (t >= t_hi) break;

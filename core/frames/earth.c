@@ -1,12 +1,10 @@
 /* earth.c — effective gravity on a rotating spherical Earth (notes §1.3) and
  * WGS 84 normal gravity (NIMA TR8350.2); formulas in mech/earth.h. */
 #include "mech/earth.h"
+#include "mech/constants.h"
 
 #include <math.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 void mech_sincos_deg(double deg, double *s, double *c)
 {
@@ -19,22 +17,22 @@ void mech_sincos_deg(double deg, double *s, double *c)
     }
     double sv, cv;
     if (x <= 45) {
-        sv = sin(x * (M_PI / 180));
-        cv = cos(x * (M_PI / 180));
+        sv = sin(x * (MECH_PI / 180));
+        cv = cos(x * (MECH_PI / 180));
     } else if (x <= 135) { /* 90 - x is exact here (Sterbenz) */
-        double y = (90 - x) * (M_PI / 180);
+        double y = (90 - x) * (MECH_PI / 180);
         sv = cos(y);
         cv = sin(y);
     } else if (x <= 225) { /* 180 - x exact */
-        double y = (180 - x) * (M_PI / 180);
+        double y = (180 - x) * (MECH_PI / 180);
         sv = sin(y);
         cv = -cos(y);
     } else if (x <= 315) { /* 270 - x exact */
-        double y = (270 - x) * (M_PI / 180);
+        double y = (270 - x) * (MECH_PI / 180);
         sv = -cos(y);
         cv = -sin(y);
     } else {
-        double y = (x - 360) * (M_PI / 180);
+        double y = (x - 360) * (MECH_PI / 180);
         sv = sin(y);
         cv = cos(y);
     }

@@ -45,10 +45,10 @@
  * ellipse actually swung (airy_rate_mean).
  */
 #include "mech/pendulum.h"
+#include "mech/constants.h"
 
 #include <math.h>
 
-static const double pend_pi = 3.14159265358979323846;
 
 const char *mech_pendulum_method_name(enum mech_pendulum_method m)
 {
@@ -70,7 +70,7 @@ double mech_pendulum_period(double length, double g, double alpha)
         b = sqrt(a * b);
         a = an;
     }
-    return 2.0 * pend_pi * sqrt(length / g) / (0.5 * (a + b));
+    return 2.0 * MECH_PI * sqrt(length / g) / (0.5 * (a + b));
 }
 
 double mech_pendulum_period_correction(double alpha)
@@ -296,12 +296,12 @@ static enum mech_status pend_validate(const struct mech_foucault_problem *p, str
     double omega0 = sqrt(p->g / p->length);
     double h = p->t_end / (double)p->steps;
     double rate = fmax(omega0, p->omega_magnitude);
-    if (!(h * rate <= 2.0 * pend_pi / 6.0))
+    if (!(h * rate <= 2.0 * MECH_PI / 6.0))
         return mech_error_set(err, MECH_EDOMAIN, "steps",
                               "step %.6g s is longer than 1/6 of the pendulum's period or of the "
                               "rotation (%.6g s): give more steps",
-                              h, 2.0 * pend_pi / rate);
-    double a = p->length * sin(p->amplitude_deg * pend_pi / 180.0);
+                              h, 2.0 * MECH_PI / rate);
+    double a = p->length * sin(p->amplitude_deg * MECH_PI / 180.0);
     if (fabs(p->transverse_velocity) > 0.5 * a * omega0)
         return mech_error_set(err, MECH_EDOMAIN, "release/transverse_velocity",
                               "|transverse velocity| %.6g m/s exceeds half of a omega0 = %.6g m/s: "
@@ -332,7 +332,7 @@ enum mech_status mech_foucault_integrate(const struct mech_foucault_problem *p,
         return MECH_EBUDGET;
     }
 
-    const double deg = pend_pi / 180.0;
+    const double deg = MECH_PI / 180.0;
     double lat = p->latitude_deg * deg, alpha = p->amplitude_deg * deg, az = p->azimuth_deg * deg;
     struct pend P;
     P.W = mech_vec3_make(0.0, p->omega_magnitude * cos(lat), p->omega_magnitude * sin(lat));
@@ -347,7 +347,7 @@ enum mech_status mech_foucault_integrate(const struct mech_foucault_problem *p,
     double wz = P.W.z;
     res->omega_vertical = wz;
     res->omega0 = sqrt(p->g / p->length);
-    res->small_amplitude_period = 2.0 * pend_pi * sqrt(p->length / p->g);
+    res->small_amplitude_period = 2.0 * MECH_PI * sqrt(p->length / p->g);
     res->finite_amplitude_period = mech_pendulum_period(p->length, p->g, alpha);
 
     /* release: notes §1.3 "pick the initial conditions ... to give cosine" */
@@ -431,7 +431,7 @@ enum mech_status mech_foucault_integrate(const struct mech_foucault_problem *p,
             double rho = hypot(x, y);
             if (apo) {
                 double psi = atan2(y, x);
-                if (napo > 0) psi += pend_pi * nearbyint((psi_prev - psi) / pend_pi);
+                if (napo > 0) psi += MECH_PI * nearbyint((psi_prev - psi) / MECH_PI);
                 psi_prev = psi;
                 fit_add(&psi_fit, tt, psi);
                 fit_add(&h_fit, tt, Hprev + s * h * (hprev + 0.5 * s * (hcur - hprev)));

@@ -4,12 +4,12 @@
  * the recognition of which one a scene has.
  */
 #include "mech/reference.h"
+#include "mech/constants.h"
 
 #include <float.h>
 #include <math.h>
 #include <string.h>
 
-static const double ref_pi = 3.14159265358979323846;
 
 /* ---- Stumpff functions ----------------------------------------------------
  * c_k(z) = sum_j (-z)^j / (k + 2j)!  (Danby §6.9; Vallado §2.2, eqs. 2-52).
@@ -149,7 +149,7 @@ enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0v,
          * needs beta only in double. */
         const long double B = (long double)k.beta + (long double)beta_lo;
         const long double PL =
-            6.283185307179586476925286766559L * (long double)gm / (B * sqrtl(B));
+            MECH_TWO_PI_L * (long double)gm / (B * sqrtl(B));
         long double kp = floorl((long double)t / PL);
         long double trl = (long double)t - kp * PL;
         if (trl < 0.0L) trl += PL;
@@ -157,7 +157,7 @@ enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0v,
         double tr = (double)trl;
         k.t = tr;
         lo = 0.0;
-        hi = 2.0 * ref_pi / sqrt(k.beta); /* F(hi) = P - tr >= 0 */
+        hi = 2.0 * MECH_PI / sqrt(k.beta); /* F(hi) = P - tr >= 0 */
     } else {
         /* F is increasing (F' = r > 0); bracket by doubling from t / r0. */
         double s = t / r0, G[4], F, rr;
@@ -181,7 +181,7 @@ enum mech_status mech_kepler_propagate_residual(double gm, struct mech_vec3 r0v,
 
     /* Newton safeguarded by bisection (Numerical Recipes' rtsafe). */
     double s = 0.5 * (lo + hi), G[4], F, rr;
-    if (k.beta > 0.0) s = k.t / (2.0 * ref_pi * gm / (k.beta * sqrt(k.beta))) * hi; /* mean-anomaly guess */
+    if (k.beta > 0.0) s = k.t / (2.0 * MECH_PI * gm / (k.beta * sqrt(k.beta))) * hi; /* mean-anomaly guess */
     for (int it = 0; it < 2200; it++) {
         kepler_eval(&k, s, G, &F, &rr);
         if (!isfinite(F)) F = s > 0.0 ? INFINITY : -INFINITY;
@@ -290,11 +290,11 @@ static int radial_collision(double gm, double rn0, double sigma0, double beta, d
 {
     const double dir = dt > 0.0 ? 1.0 : -1.0;
     if (!(beta > 0.0)) return sigma0 * dir < 0.0 && sigma1 * dir > 0.0;
-    const double a = gm / beta, n = sqrt(beta * beta * beta) / gm, P = 2.0 * ref_pi / n;
+    const double a = gm / beta, n = sqrt(beta * beta * beta) / gm, P = 2.0 * MECH_PI / n;
     double c = 1.0 - rn0 / a;
     c = c > 1.0 ? 1.0 : c < -1.0 ? -1.0 : c;
     double E = acos(c); /* rising (sigma0 > 0): E in [0, pi] */
-    if (sigma0 < 0.0) E = 2.0 * ref_pi - E;
+    if (sigma0 < 0.0) E = 2.0 * MECH_PI - E;
     const double since = (E - sin(E)) / n; /* time since the last collision */
     return dt > 0.0 ? dt >= P - since : -dt >= since;
 }

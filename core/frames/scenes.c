@@ -4,13 +4,13 @@
  * seen from both frames.
  */
 #include "mech/scenes.h"
+#include "mech/constants.h"
 #include "mech/reference.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-static const double sc_pi = 3.14159265358979323846;
 
 void mech_scene_ballistic_fix(struct mech_scene_ballistic_result *out)
 {
@@ -235,11 +235,11 @@ enum mech_status mech_scene_table_run(const struct mech_scene_table *s, double t
         if (s->experiment == MECH_TABLE_THROUGH_CENTER) {
             /* notes §1.1: r1 -> 0 -> r1 (across) during half a turn, pi / |w|:
              * speed 2 r1 / (pi / |w|) = 2 r1 |w| / pi, inward */
-            v0 = mech_vec3_make(0, -2.0 * s->radius * fabs(w) / sc_pi, 0);
-            t_end = sc_pi / fabs(w);
+            v0 = mech_vec3_make(0, -2.0 * s->radius * fabs(w) / MECH_PI, 0);
+            t_end = MECH_PI / fabs(w);
         } else {
             v0 = mech_vec3_make(0, 0, 0);
-            t_end = 2.0 * sc_pi / fabs(w);
+            t_end = 2.0 * MECH_PI / fabs(w);
         }
         break;
     case MECH_TABLE_CUSTOM:

@@ -10,6 +10,7 @@
  * 5.104); Schutz, "A First Course in General Relativity" §11.1; Byrd &
  * Friedman, "Handbook of Elliptic Integrals", 233.00. */
 #include "mech/geodesic.h"
+#include "mech/constants.h"
 #include "mech/schwarzschild.h"
 
 #include <gsl/gsl_errno.h>
@@ -19,12 +20,6 @@
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-#ifndef M_PI_2
-#define M_PI_2 1.57079632679489661923
-#endif
 #include <stdlib.h>
 #include <string.h>
 
@@ -274,9 +269,9 @@ static double ellK_minus_half_pi(double m)
             sum += term;
             if (term < 1e-18 * sum) break;
         }
-        return M_PI_2 * sum;
+        return MECH_PI_2 * sum;
     }
-    return gsl_sf_ellint_Kcomp(sqrt(m), GSL_PREC_DOUBLE) - M_PI_2;
+    return gsl_sf_ellint_Kcomp(sqrt(m), GSL_PREC_DOUBLE) - MECH_PI_2;
 }
 
 enum mech_status mech_geodesic_precession_exact(const struct mech_geodesic_bound *b,
@@ -290,7 +285,7 @@ enum mech_status mech_geodesic_precession_exact(const struct mech_geodesic_bound
     const double s2 = 2.0 * (u3 - u1), s = sqrt(s2);
     const double one_minus_s = (4.0 * u1 + 2.0 * u2) / (1.0 + s); /* 1 - s^2 = 4u1 + 2u2 */
     /* Delta phi - 2 pi = 4 K / s - 2 pi = 4 (K - pi/2)/s + 2 pi (1 - s)/s */
-    *advance = 4.0 * ellK_minus_half_pi(m) / s + 2.0 * M_PI * one_minus_s / s;
+    *advance = 4.0 * ellK_minus_half_pi(m) / s + 2.0 * MECH_PI * one_minus_s / s;
     if (!isfinite(*advance))
         return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite periapsis advance");
     return MECH_OK;
@@ -339,7 +334,7 @@ enum mech_status mech_geodesic_precession_quadrature(const struct mech_geodesic_
         if (!outs[k]) continue;
         q.which = k;
         double v;
-        enum mech_status st = qag(&f, 0.0, M_PI, &v, err);
+        enum mech_status st = qag(&f, 0.0, MECH_PI, &v, err);
         if (st != MECH_OK) return st;
         *outs[k] = 2.0 * v;
     }
@@ -446,7 +441,7 @@ enum mech_status mech_geodesic_deflection_exact(double b, double *delta, double 
         return mech_error_set(err, MECH_ENUMERIC, NULL, "elliptic integral F failed: %s",
                               gsl_strerror(gs));
     /* int_0^{w1} = g F / sqrt(2 eps), g = 2/sqrt(w2 - w3) (Byrd & Friedman 233.00) */
-    *delta = 2.0 * (2.0 / sqrt(w2 - w3)) * F.val / sqrt(2.0 * eps) - M_PI;
+    *delta = 2.0 * (2.0 / sqrt(w2 - w3)) * F.val / sqrt(2.0 * eps) - MECH_PI;
     if (r_min) *r_min = b / w1;
     if (!isfinite(*delta)) return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite deflection");
     return MECH_OK;
@@ -485,7 +480,7 @@ enum mech_status mech_geodesic_deflection_quadrature(double b, double *delta,
     double w1, ex;
     enum mech_status st = light_w1(b, &w1, err);
     if (st != MECH_OK) return st;
-    if ((st = light_excess(b, w1, M_PI_2, &ex, err)) != MECH_OK) return st;
+    if ((st = light_excess(b, w1, MECH_PI_2, &ex, err)) != MECH_OK) return st;
     *delta = 2.0 * ex;
     return MECH_OK;
 }
@@ -797,7 +792,7 @@ enum mech_status mech_geodesic_integrate(const struct mech_geodesic_problem *p,
     res->last_periapsis_t = c.n_peri ? c.last[2] * T : NAN;
     res->measured_advance = NAN;
     if (c.n_peri >= 2)
-        res->measured_advance = fabs(c.last[0] - c.first[0]) / (double)(c.n_peri - 1) - 2.0 * M_PI;
+        res->measured_advance = fabs(c.last[0] - c.first[0]) / (double)(c.n_peri - 1) - 2.0 * MECH_PI;
     res->constraint_max_abs = c.max_abs;
     res->constraint_max_relative = c.max_rel;
     res->constraint_final_relative = c.last_rel;
@@ -809,7 +804,7 @@ enum mech_status mech_geodesic_integrate(const struct mech_geodesic_problem *p,
         mech_error_clear(&e2);
         if (light_w1(b, &w1, &e2) == MECH_OK && light_tail(b, w1, r0, &t0, &e2) == MECH_OK &&
             light_tail(b, w1, res->end_r, &t1, &e2) == MECH_OK)
-            res->measured_deflection = fabs(ye[2] - in->phi0) + t0 + t1 - M_PI;
+            res->measured_deflection = fabs(ye[2] - in->phi0) + t0 + t1 - MECH_PI;
     }
     free(ts);
     free(ys);

@@ -1,10 +1,10 @@
 /* radial_infall.c — proper times of a radial fall from rest in the
  * Schwarzschild geometry (see mech/radial_infall.h). */
 #include "mech/radial_infall.h"
+#include "mech/constants.h"
 
 #include <math.h>
 
-static const double PI = 3.14159265358979323846;
 
 /* asin s − s sqrt(1 − s²) = 2 Σ_k C(2k, k)/4^k s^{2k+3}/(2k + 3) (the integral
  * of 2t²/sqrt(1 − t²)), summed for s ≤ 1/2 where the closed form cancels. */
@@ -34,7 +34,7 @@ enum mech_status mech_radial_infall_from_rest(double r0, struct mech_radial_infa
     /* r = r0 cos²(η/2): the horizon at η_h = 2 acos(s), s = sqrt(2/r0), sin η_h =
      * 2 s sqrt(1 − s²); τ = A (η + sin η) with A = sqrt(r0³/8) = r0 sqrt(r0/8). */
     const double A = r0 * sqrt(r0 / 8.0), s = sqrt(2.0 / r0), cs = sqrt(1.0 - s * s);
-    out->to_singularity = PI * A;
+    out->to_singularity = MECH_PI * A;
     out->to_horizon = A * (2.0 * acos(s) + 2.0 * s * cs);
     out->horizon_to_singularity = A * 2.0 * asin_minus(s);
     return MECH_OK;

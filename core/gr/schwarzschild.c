@@ -3,15 +3,10 @@
  * (Hartle eq. 9.1; Carroll eq. 5.38), in geometric units with M = 1. See
  * mech/schwarzschild.h for the contracts. */
 #include "mech/schwarzschild.h"
+#include "mech/constants.h"
 
 #include <math.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-#ifndef M_PI_2
-#define M_PI_2 1.57079632679489661923
-#endif
 
 /* 1 - sqrt(1 - x) for x <= 1, without cancellation for small x. */
 static double one_minus_sqrt1m(double x)
@@ -57,7 +52,7 @@ enum mech_status mech_schw_circular_orbit(double r, struct mech_schw_circular *o
     out->angular_momentum = sqrt(r) / s; /* L^2 = M r / (1 - 3M/r) */
     out->local_speed = 1.0 / sqrt(r - 2.0);
     out->omega = pow(r, -1.5); /* Omega^2 = M/r^3 (Hartle eq. 9.45) */
-    out->period_t = 2.0 * M_PI * r * sqrt(r);
+    out->period_t = 2.0 * MECH_PI * r * sqrt(r);
     out->period_tau = out->period_t * s;
     /* 1 - E = (s - (1 - 2/r))/s with s - 1 + 2/r = (1/r)(2s - 1)/(1 + s) and
      * 2s - 1 = 3(1 - 4/r)/(2s + 1): every factor free of cancellation. */

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "mech/compensated.h"
+#include "mech/constants.h"
 #include "mech/liouville.h"
 
 /* Gauss–Kronrod 7/15 nodes and weights on [-1, 1]: R. Piessens, E. de
@@ -32,7 +33,6 @@ static const double wg[4] = {0.129484966168869693270611432679082,
                              0.417959183673469387755102040816327};
 
 enum { LV_NODES = 15, LV_ELLIPSE_START = 4 };
-#define LV_PI 3.14159265358979323846
 
 /* Node k (0..14) of the rule: abscissa, Kronrod weight, Gauss weight (0 if none). */
 static void node(int k, double *x, double *wk, double *wgauss)
@@ -97,10 +97,10 @@ static void curve_point(const struct mech_liouville_problem *p, size_t dim, size
             y[i] = s < 0.5 ? a[i] + s * dy[i] : b[i] - (1.0 - s) * dy[i];
         }
     } else {
-        const double th = 2.0 * LV_PI * s, c = cos(th), sn = sin(th);
+        const double th = 2.0 * MECH_PI * s, c = cos(th), sn = sin(th);
         for (size_t i = 0; i < dim; i++) {
             y[i] = p->center[i] + p->axis_u[i] * c + p->axis_w[i] * sn;
-            dy[i] = 2.0 * LV_PI * (p->axis_w[i] * c - p->axis_u[i] * sn);
+            dy[i] = 2.0 * MECH_PI * (p->axis_w[i] * c - p->axis_u[i] * sn);
         }
     }
 }
@@ -480,7 +480,7 @@ enum mech_status mech_liouville_run(const struct mech_liouville_problem *p,
             mech_csum_add_product(&w, p->axis_u[d], p->axis_w[c.dof + d]);
             mech_csum_add_product(&w, -p->axis_u[c.dof + d], p->axis_w[d]);
         }
-        res->area0 = LV_PI * mech_csum_value(&w);
+        res->area0 = MECH_PI * mech_csum_value(&w);
         memcpy(ref, p->center, dim * sizeof *ref);
     }
     if (!(isfinite(res->area0) && res->area0 != 0.0))

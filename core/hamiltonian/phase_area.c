@@ -1,12 +1,12 @@
 /* phase_area.c — phase-space area and period of an energy contour (see
  * mech/phase_area.h). */
 #include "mech/phase_area.h"
+#include "mech/constants.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 
-static const double PI = 3.14159265358979323846;
 
 static enum mech_status positive(double x, const char *name, struct mech_error *err)
 {
@@ -25,8 +25,8 @@ enum mech_status mech_phase_area_oscillator(double m, double omega, double energ
         return mech_error_set(err, MECH_EDOMAIN, "energy",
                               "the energy above the minimum is >= 0, got %.17g", energy);
     out->motion = MECH_PHASE_LIBRATION;
-    out->area = 2 * PI * energy / omega; /* an ellipse of semi-axes sqrt(2mE), sqrt(2E/m)/ω */
-    out->period = 2 * PI / omega;
+    out->area = 2 * MECH_PI * energy / omega; /* an ellipse of semi-axes sqrt(2mE), sqrt(2E/m)/ω */
+    out->period = 2 * MECH_PI / omega;
     out->modulus = 0;
     out->amplitude = sqrt(2 * energy / m) / omega;
     return MECH_OK;
@@ -43,7 +43,7 @@ static double e_minus_k_series(double m)
         a *= ((2.0 * n - 1) / (2.0 * n)) * ((2.0 * n - 1) / (2.0 * n));
         p *= m;
     }
-    return 0.5 * PI * sum;
+    return 0.5 * MECH_PI * sum;
 }
 
 enum mech_status mech_phase_area_pendulum(double m, double l, double g, double energy,
@@ -64,7 +64,7 @@ enum mech_status mech_phase_area_pendulum(double m, double l, double g, double e
         out->motion = MECH_PHASE_SEPARATRIX;
         out->area = 2 * scale; /* 16 m l² ω0 */
         out->period = INFINITY;
-        out->amplitude = PI;
+        out->amplitude = MECH_PI;
         return MECH_OK;
     }
     if (k2 < 1) {

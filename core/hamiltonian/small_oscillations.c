@@ -2,11 +2,11 @@
  * pendulum's steady precession and a physical pendulum's hanging equilibrium
  * (mech/small_oscillations.h). Closed forms only. */
 #include "mech/small_oscillations.h"
+#include "mech/constants.h"
 
 #include <math.h>
 #include <stdio.h>
 
-#define PI 3.14159265358979323846
 
 static int pos(double x) { return isfinite(x) && x > 0; }
 
@@ -47,7 +47,7 @@ enum mech_status mech_orbit_oscillation(const struct mech_potential_term *terms,
     double q = 3 + r0 * r.d2v / r.dv; /* = r0 k_eff / V' */
     if (r.stable) {
         r.omega_r = sqrt(r.k_eff / mass);
-        r.apsidal_angle = PI / sqrt(q);
+        r.apsidal_angle = MECH_PI / sqrt(q);
     } else {
         r.growth_rate = sqrt(-r.k_eff / mass);
     }
@@ -66,17 +66,17 @@ enum mech_status mech_conical_pendulum(double length, double g, double angle,
     if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output given");
     if (!pos(length)) return mech_error_set(err, MECH_EINVAL, "length", "must be finite and > 0");
     if (!pos(g)) return mech_error_set(err, MECH_EINVAL, "g", "must be finite and > 0");
-    if (!(angle > 0 && angle < PI / 2))
+    if (!(angle > 0 && angle < MECH_PI / 2))
         return mech_error_set(err, MECH_EINVAL, "angle",
                               "the cone half-angle must lie in (0, pi/2): at 0 the bob hangs "
                               "still, at pi/2 no finite rate holds it");
     double c = cos(angle), s = sin(angle);
     struct mech_conical_pendulum r;
     r.phi_dot = sqrt(g / (length * c));
-    r.period = 2 * PI / r.phi_dot;
+    r.period = 2 * MECH_PI / r.phi_dot;
     double f = sqrt(1 + 3 * c * c);
     r.omega_theta = r.phi_dot * f;
-    r.apsidal_angle = PI / f;
+    r.apsidal_angle = MECH_PI / f;
     r.radius = length * s;
     r.speed = r.radius * r.phi_dot;
     if (!isfinite(r.phi_dot) || !isfinite(r.speed))
@@ -120,7 +120,7 @@ enum mech_status mech_physical_pendulum(double mass, struct mech_mat3 i_cm, stru
                               "the moment of inertia about the axis is %.6g kg m^2, not > 0",
                               r.moment_axis);
     r.omega = sqrt(mass * g * r.arm / r.moment_axis);
-    r.period = 2 * PI / r.omega;
+    r.period = 2 * MECH_PI / r.omega;
     r.equivalent_length = r.moment_axis / (mass * r.arm);
     if (!isfinite(r.omega) || !isfinite(r.period) || !isfinite(r.equivalent_length) ||
         !mech_mat3_isfinite(r.tensor_pivot))
@@ -137,7 +137,7 @@ enum mech_status mech_foucault_modes(double length, double g, double omega, doub
     if (!pos(g)) return mech_error_set(err, MECH_EINVAL, "g", "must be finite and > 0");
     if (!(isfinite(omega) && omega >= 0))
         return mech_error_set(err, MECH_EINVAL, "omega_earth", "must be finite and >= 0");
-    if (!(fabs(latitude) <= PI / 2))
+    if (!(fabs(latitude) <= MECH_PI / 2))
         return mech_error_set(err, MECH_EINVAL, "latitude_deg", "must lie in [-90, 90] deg");
     struct mech_foucault_modes r;
     r.omega0 = sqrt(g / length);

@@ -26,7 +26,7 @@ enum mech_status mech_charged_state_compute(double m, double q, const struct mec
     if (!isfinite(q)) return mech_error_set(err, MECH_EINVAL, "charge", "must be finite");
     if (!isfinite(phi)) return mech_error_set(err, MECH_EINVAL, "scalar_potential", "must be finite");
     if (!finite3(a)) return mech_error_set(err, MECH_EINVAL, "vector_potential", "must be finite");
-    const double c = MECH_CHARGED_C, g = b->gamma, gm1 = b->gamma_minus_one;
+    const double c = MECH_C, g = b->gamma, gm1 = b->gamma_minus_one;
     const double mc2 = m * c * c;
     const struct mech_vec3 v = mech_vec3_scale(b->beta_vec, c);
     const double qav = q * mech_vec3_dot(a, v), qphi = q * phi;

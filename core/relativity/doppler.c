@@ -17,13 +17,11 @@
  * α_O = π/2 → 1/γ (the notes' transverse red shift ν' = ν/γ).
  */
 #include "mech/doppler.h"
+#include "mech/constants.h"
 #include "mech/compensated.h"
 
 #include <math.h>
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* ---- accurate small vector arithmetic ------------------------------------ */
 
@@ -208,7 +206,7 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
         alpha_f = atan2(sf, cf);
         const double alpha_f_sup = atan2(sf, -cf);
         double shf, chf;
-        if (alpha_f <= 0.5 * M_PI) {
+        if (alpha_f <= 0.5 * MECH_PI) {
             shf = sin(0.5 * alpha_f);
             chf = cos(0.5 * alpha_f);
         } else {
@@ -234,7 +232,7 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
         if (bgr + gam * fabs(cf) <= r)
             cg = fma(-gam, cf, bgr) / r;
         else
-            cg = alpha_g <= 0.5 * M_PI ? cos(alpha_g) : -cos(alpha_g_sup);
+            cg = alpha_g <= 0.5 * MECH_PI ? cos(alpha_g) : -cos(alpha_g_sup);
         /* The light's direction in G: cos α_G â_G + sin α_G R ê⊥, where ê⊥ is
          * the unit part of k̂ perpendicular to â_F (a boost along â_F keeps
          * it) and R is the Wigner rotation between F's and G's axes: it fixes
@@ -258,7 +256,7 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
          * runs along the observer's velocity: the observer recedes. */
         const double alpha_s = in_source ? alpha_f : alpha_g;
         if (sf <= MECH_DOPPLER_CASE_TOL)
-            o.kind = alpha_s < 0.5 * M_PI ? MECH_DOPPLER_LONGITUDINAL_RECEDING
+            o.kind = alpha_s < 0.5 * MECH_PI ? MECH_DOPPLER_LONGITUDINAL_RECEDING
                                           : MECH_DOPPLER_LONGITUDINAL_APPROACHING;
         else if (fabs(cf) <= MECH_DOPPLER_CASE_TOL)
             o.kind = in_source ? MECH_DOPPLER_TRANSVERSE_SOURCE_FRAME

@@ -35,7 +35,7 @@ struct mech_em_invariants mech_em_invariants_of(struct mech_vec3 e, struct mech_
                                                 enum mech_em_units units)
 {
     struct mech_em_invariants r;
-    struct mech_vec3 cb = units == MECH_EM_SI ? mech_vec3_scale(b, MECH_EM_C) : b;
+    struct mech_vec3 cb = units == MECH_EM_SI ? mech_vec3_scale(b, MECH_C) : b;
     struct mech_csum s = {0, 0};
     mech_csum_add_product(&s, e.x, e.x);
     mech_csum_add_product(&s, e.y, e.y);
@@ -57,7 +57,7 @@ enum mech_status mech_em_fields_boost(const struct mech_boost *boost, struct mec
     if (!mech_vec3_isfinite(b)) return mech_error_set(err, MECH_EINVAL, "B", "B must be finite");
     const int si = units == MECH_EM_SI;
     /* SI: work with cB, which transforms exactly as the Heaviside–Lorentz B. */
-    const struct mech_vec3 cb = si ? mech_vec3_scale(b, MECH_EM_C) : b;
+    const struct mech_vec3 cb = si ? mech_vec3_scale(b, MECH_C) : b;
     const struct mech_vec3 n = boost->direction;
     const double gm1 = boost->gamma_minus_one, bg = boost->beta_gamma;
     const double ep = boost->exp_rapidity, en = boost->exp_neg_rapidity;
@@ -93,7 +93,7 @@ enum mech_status mech_em_fields_boost(const struct mech_boost *boost, struct mec
                          fma(epar, n.z, ep_new.z));
     const struct mech_vec3 cb_new = mech_vec3_make(
         fma(bpar, n.x, bp_new.x), fma(bpar, n.y, bp_new.y), fma(bpar, n.z, bp_new.z));
-    o.b = si ? mech_vec3_scale(cb_new, 1.0 / MECH_EM_C) : cb_new;
+    o.b = si ? mech_vec3_scale(cb_new, 1.0 / MECH_C) : cb_new;
 
     /* Invariants of the boosted fields from the boosted light-cone vectors:
      * E'⊥² − B'⊥² = P'·M' and E'⊥·B'⊥ = ½ n·(M'×P'), never from the large
@@ -112,7 +112,7 @@ enum mech_status mech_em_fields_boost(const struct mech_boost *boost, struct mec
     mech_csum_add_product(&d, 0.5 * n.y, mxp.y);
     mech_csum_add_product(&d, 0.5 * n.z, mxp.z);
     o.after.e_dot_b = mech_csum_value(&d);
-    if (si) o.after.e_dot_b /= MECH_EM_C; /* E·(cB)/c */
+    if (si) o.after.e_dot_b /= MECH_C; /* E·(cB)/c */
 
     if (!mech_vec3_isfinite(o.e) || !mech_vec3_isfinite(o.b) || !isfinite(o.scale2) ||
         !isfinite(o.before.e2_minus_b2) || !isfinite(o.before.e_dot_b) ||

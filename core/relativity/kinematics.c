@@ -8,12 +8,12 @@
  * (γ = 1e6 and beyond) cases keep full relative precision.
  */
 #include "mech/kinematics.h"
+#include "mech/constants.h"
 #include "mech/compensated.h"
 
 #include <float.h>
 #include <math.h>
 
-static const double KIN_PI = 3.14159265358979323846;
 
 /* ---- compensated arithmetic (Neumaier sums, fma products) ------------------ */
 
@@ -454,7 +454,7 @@ void mech_kin_decay_lab(const struct mech_boost *b, double m, double pstar, doub
     double sh = sin(0.5 * theta_star), ch = cos(0.5 * theta_star);
     double c = cos(theta_star), s = sin(theta_star);
     double omc = 2.0 * sh * sh, opc = 2.0 * ch * ch; /* 1 − cos θ*, 1 + cos θ* */
-    if (theta_star == KIN_PI) { /* the double nearest π stands for exactly backward */
+    if (theta_star == MECH_PI) { /* the double nearest π stands for exactly backward */
         c = -1.0;
         s = 0.0;
         omc = 2.0;
@@ -510,7 +510,7 @@ static double opening_at(const struct mech_boost *b, const double m[2], double p
     mech_kin_decay_lab(b, m[0], pstar, estar[0], t, 0, &l1);
     mech_kin_decay_lab(b, m[1], pstar, estar[1], t, 1, &l2);
     double sum = l1.angle + l2.angle; /* the two lie on opposite sides of the axis */
-    return sum <= KIN_PI ? sum : 2.0 * KIN_PI - sum;
+    return sum <= MECH_PI ? sum : 2.0 * MECH_PI - sum;
 }
 
 void mech_kin_decay_min_opening(const struct mech_boost *b, const double m[2], double pstar,
@@ -518,26 +518,26 @@ void mech_kin_decay_min_opening(const struct mech_boost *b, const double m[2], d
 {
     enum { N = 512 };
     if (!(b->beta > 0) || pstar == 0) {
-        *angle = pstar == 0 ? 0.0 : KIN_PI;
-        *at_theta_star = 0.5 * KIN_PI;
+        *angle = pstar == 0 ? 0.0 : MECH_PI;
+        *at_theta_star = 0.5 * MECH_PI;
         return;
     }
     int kbest = 0;
     double fbest = INFINITY;
     for (int k = 0; k <= N; k++) {
-        double f = opening_at(b, m, pstar, estar, KIN_PI * k / N);
+        double f = opening_at(b, m, pstar, estar, MECH_PI * k / N);
         if (f < fbest) {
             fbest = f;
             kbest = k;
         }
     }
     /* Golden-section refinement inside the neighbouring grid cells. */
-    double lo = KIN_PI * (kbest > 0 ? kbest - 1 : 0) / N;
-    double hi = KIN_PI * (kbest < N ? kbest + 1 : N) / N;
+    double lo = MECH_PI * (kbest > 0 ? kbest - 1 : 0) / N;
+    double hi = MECH_PI * (kbest < N ? kbest + 1 : N) / N;
     const double r = 0.6180339887498949;
     double x1 = hi - r * (hi - lo), x2 = lo + r * (hi - lo);
     double f1 = opening_at(b, m, pstar, estar, x1), f2 = opening_at(b, m, pstar, estar, x2);
-    double tbest = KIN_PI * kbest / N;
+    double tbest = MECH_PI * kbest / N;
     for (int it = 0; it < 120 && hi - lo > 4 * DBL_EPSILON * hi; it++) {
         if (f1 <= f2) {
             hi = x2;
@@ -599,7 +599,7 @@ static double bisect_angle(const struct mech_boost *b, double m, double pstar, d
 int mech_kin_decay_cone(const struct mech_boost *b, double m, double pstar, double estar,
                         double half_angle, double ranges[2][2], double edges[2])
 {
-    double e0 = lab_energy(b, m, pstar, estar, 0.0), epi = lab_energy(b, m, pstar, estar, KIN_PI);
+    double e0 = lab_energy(b, m, pstar, estar, 0.0), epi = lab_energy(b, m, pstar, estar, MECH_PI);
     if (!(b->beta > 0) || pstar == 0) {
         /* At rest (or no rest-frame momentum): every direction has energy E*. */
         ranges[0][0] = ranges[0][1] = e0;
@@ -611,14 +611,14 @@ int mech_kin_decay_cone(const struct mech_boost *b, double m, double pstar, doub
         if (half_angle >= tmax) {
             ranges[0][0] = epi;
             ranges[0][1] = e0;
-            edges[0] = KIN_PI;
+            edges[0] = MECH_PI;
             return 1;
         }
         /* The lab angle rises to θ_max at cos θ* = −β* / β, then falls back to 0. */
         double cm = -(pstar / estar) / b->beta;
         double tm = acos(fmax(-1.0, fmin(1.0, cm)));
         double t1 = bisect_angle(b, m, pstar, estar, 0.0, tm, half_angle, 1);
-        double t2 = bisect_angle(b, m, pstar, estar, tm, KIN_PI, half_angle, 0);
+        double t2 = bisect_angle(b, m, pstar, estar, tm, MECH_PI, half_angle, 0);
         ranges[0][0] = lab_energy(b, m, pstar, estar, t1);
         ranges[0][1] = e0;
         ranges[1][0] = epi;
@@ -629,13 +629,13 @@ int mech_kin_decay_cone(const struct mech_boost *b, double m, double pstar, doub
     }
     /* The lab angle rises monotonically with θ* (to π, or to π/2 when the
      * daughter's rest-frame speed equals the parent's). */
-    if (half_angle >= KIN_PI || half_angle >= lab_angle(b, m, pstar, estar, KIN_PI)) {
+    if (half_angle >= MECH_PI || half_angle >= lab_angle(b, m, pstar, estar, MECH_PI)) {
         ranges[0][0] = epi;
         ranges[0][1] = e0;
-        edges[0] = KIN_PI;
+        edges[0] = MECH_PI;
         return 1;
     }
-    double t1 = bisect_angle(b, m, pstar, estar, 0.0, KIN_PI, half_angle, 1);
+    double t1 = bisect_angle(b, m, pstar, estar, 0.0, MECH_PI, half_angle, 1);
     ranges[0][0] = lab_energy(b, m, pstar, estar, t1);
     ranges[0][1] = e0;
     edges[0] = t1;
@@ -680,14 +680,14 @@ enum mech_status mech_kin_three_body_planar(double parent, const double m[3], do
                               "a decaying parent needs a positive mass, got %.17g", parent);
     double q = mech_kin_q_value(parent, m, 3);
     if (q < 0) return below_threshold(parent, m, 3, err);
-    double theta31 = 2.0 * KIN_PI - theta12 - theta23;
-    if (!(theta12 > 0 && theta12 <= KIN_PI && theta23 > 0 && theta23 <= KIN_PI && theta31 > 0 &&
-          theta31 <= KIN_PI + 4 * DBL_EPSILON))
+    double theta31 = 2.0 * MECH_PI - theta12 - theta23;
+    if (!(theta12 > 0 && theta12 <= MECH_PI && theta23 > 0 && theta23 <= MECH_PI && theta31 > 0 &&
+          theta31 <= MECH_PI + 4 * DBL_EPSILON))
         return mech_error_set(err, MECH_EDOMAIN, "angles",
                               "three momenta that add up to zero lie in a plane with each angle "
                               "between two of them in (0, 180] degrees; the third angle "
                               "360 - theta12 - theta23 is %.10g degrees",
-                              theta31 * 180.0 / KIN_PI);
+                              theta31 * 180.0 / MECH_PI);
     /* Sine rule of the closed momentum triangle: p_i ∝ sin(angle between the
      * other two momenta); sin θ31 = sin(θ12 + θ23) up to sign. */
     double r[3] = {sin(theta23), fabs(sin(theta12 + theta23)), sin(theta12)};
@@ -728,7 +728,7 @@ enum mech_status mech_kin_compton(double e, double m, double theta, struct mech_
     if (!(e > 0) || !isfinite(e))
         return mech_error_set(err, MECH_EDOMAIN, "energy",
                               "the photon energy must be positive, got %.17g", e);
-    if (!(theta >= 0 && theta <= KIN_PI))
+    if (!(theta >= 0 && theta <= MECH_PI))
         return mech_error_set(err, MECH_EINVAL, "angle",
                               "the scattering angle must be in [0, pi] rad, got %.17g", theta);
     /* notes §3 Compton: 1/E' − 1/E = (1 − cos θ)/m, with 1 − cos θ = 2 sin²(θ/2). */

@@ -48,11 +48,11 @@ static enum mech_status boost_of(enum mech_particle_given g, double x, struct me
         break;
     case MECH_PARTICLE_GIVEN_SPEED:
         if (x < 0) return mech_error_set(err, MECH_EDOMAIN, name, "a speed is >= 0, got %.17g m/s", x);
-        if (x >= MECH_PARTICLE_STATE_C)
+        if (x >= MECH_C)
             return mech_error_set(err, MECH_EDOMAIN, name,
                                   "a massive particle moves slower than c = 299792458 m/s, got %.17g m/s",
                                   x);
-        st = mech_boost_from_beta(mech_vec3_make(x / MECH_PARTICLE_STATE_C, 0, 0), b, &e);
+        st = mech_boost_from_beta(mech_vec3_make(x / MECH_C, 0, 0), b, &e);
         break;
     case MECH_PARTICLE_GIVEN_GAMMA:
         st = mech_boost_from_gamma(x, ex, b, &e);
@@ -94,7 +94,7 @@ static void set_velocity(struct mech_particle_state *s, const struct mech_boost 
     s->has_rest_frame = 1;
     s->beta = b->beta;
     s->one_minus_beta = b->one_minus_beta;
-    s->speed = b->beta * MECH_PARTICLE_STATE_C;
+    s->speed = b->beta * MECH_C;
     s->gamma = b->gamma;
     s->gamma_minus_one = b->gamma_minus_one;
     s->beta_gamma = b->beta_gamma;
@@ -158,7 +158,7 @@ enum mech_status mech_particle_state_from(double m, enum mech_particle_given giv
         /* E = p = T exactly (the kinematics' sqrt(T) sqrt(T + 2m) is 1 ulp off). */
         s.energy = s.momentum = s.kinetic = value;
         s.beta = 1;
-        s.speed = MECH_PARTICLE_STATE_C;
+        s.speed = MECH_C;
         *out = s;
         return MECH_OK;
     }
@@ -179,12 +179,12 @@ enum mech_status mech_particle_lifetime_of(const struct mech_particle_state *s, 
     if (!s->has_rest_frame)
         return mech_error_set(err, MECH_EDOMAIN, "mass",
                               "a massless particle has no rest frame, so no proper lifetime");
-    const double lab = s->gamma * tau, len = s->beta_gamma * (MECH_PARTICLE_STATE_C * tau);
+    const double lab = s->gamma * tau, len = s->beta_gamma * (MECH_C * tau);
     if (!isfinite(lab) || !isfinite(len))
         return mech_error_set(err, MECH_EDOMAIN, "proper_lifetime",
                               "gamma tau = %.17g * %.17g s overflows", s->gamma, tau);
     out->proper = tau;
-    out->c_tau = MECH_PARTICLE_STATE_C * tau;
+    out->c_tau = MECH_C * tau;
     out->lab = lab;
     out->decay_length = len;
     return MECH_OK;

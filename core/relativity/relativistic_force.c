@@ -23,9 +23,9 @@ static enum mech_status finish(double m, const struct mech_boost *b, struct mech
     const double g = b->gamma;
     o->transverse_mass = g * m;
     o->longitudinal_mass = g * g * g * m;
-    const struct mech_vec3 v = mech_vec3_scale(b->beta_vec, MECH_REL_FORCE_C);
+    const struct mech_vec3 v = mech_vec3_scale(b->beta_vec, MECH_C);
     o->power = mech_vec3_dot(o->force, v);
-    o->four_force[0] = g * o->power / MECH_REL_FORCE_C;
+    o->four_force[0] = g * o->power / MECH_C;
     o->four_force[1] = g * o->force.x;
     o->four_force[2] = g * o->force.y;
     o->four_force[3] = g * o->force.z;

@@ -12,6 +12,7 @@
  * From rest (η0 = 0): t = (c/a) sinh(aτ/c), x = (c²/a)(cosh(aτ/c) − 1).
  */
 #include "mech/worldline.h"
+#include "mech/constants.h"
 #include "mech/compensated.h"
 
 #include <math.h>
@@ -143,7 +144,7 @@ enum mech_status mech_worldline_run(const struct mech_leg *legs, size_t n, doubl
                              "(they are %.3g degrees apart); sideways acceleration is not "
                              "supported",
                              atan2(cr, mech_vec3_dot(cur.direction, e)) *
-                                 (180.0 / 3.14159265358979323846));
+                                 (180.0 / MECH_PI));
                     return leg_error(err, MECH_EDOMAIN, k, "direction", text);
                 }
                 eta0 = mech_vec3_dot(cur.direction, e) > 0 ? cur.rapidity : -cur.rapidity;

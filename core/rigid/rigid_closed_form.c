@@ -16,6 +16,7 @@
  * precession), a steady rotation the elementary rotation about omega.
  */
 #include "mech/closed_form.h"
+#include "mech/constants.h"
 
 #include <float.h>
 #include <limits.h>
@@ -45,7 +46,7 @@ static void gl_nodes(double *x, double *w)
 {
     const int n = RCF_GL_N;
     for (int i = 0; i < n; i++) {
-        double z = cos(3.14159265358979323846 * (i + 0.75) / (n + 0.5)), dp = 1.0;
+        double z = cos(MECH_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
         for (int it = 0; it < 100; it++) {
             double p0 = 1.0, p1 = z;
             for (int k = 2; k <= n; k++) {

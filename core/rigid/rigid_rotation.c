@@ -3,6 +3,7 @@
  * functions (see mech/rigid_rotation.h; notes §2.7–2.9, Landau & Lifshitz §37).
  */
 #include "mech/rigid_rotation.h"
+#include "mech/constants.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
@@ -29,7 +30,7 @@ static double k_agm(double kprime)
         b = sqrt(a * b);
         a = an;
     }
-    return M_PI / (a + b);
+    return MECH_PI / (a + b);
 }
 
 /* F(phi | m) for phi in [-pi, pi], continued beyond pi/2 by F(pi - phi) = 2K - F(phi). */
@@ -37,8 +38,8 @@ static enum mech_status ellint_f(double phi, double k, double K, double *out, st
 {
     gsl_sf_result r;
     double a = fabs(phi), sign = phi < 0 ? -1.0 : 1.0;
-    int beyond = a > M_PI_2;
-    if (beyond) a = M_PI - a;
+    int beyond = a > MECH_PI_2;
+    if (beyond) a = MECH_PI - a;
     int st = gsl_sf_ellint_F_e(a, k, GSL_PREC_DOUBLE, &r);
     if (st != GSL_SUCCESS || !isfinite(r.val))
         return mech_error_set(err, MECH_ENUMERIC, NULL, "gsl_sf_ellint_F failed: %s",
@@ -96,7 +97,7 @@ enum mech_status mech_rigid_exact_init(const double I[3], struct mech_vec3 w0,
             ex->sym_axis = 0;
             ex->lambda = (jb - J[0]) / jb * u[0];
         }
-        ex->period = ex->lambda != 0 ? 2 * M_PI / fabs(ex->lambda) : 0;
+        ex->period = ex->lambda != 0 ? 2 * MECH_PI / fabs(ex->lambda) : 0;
         return MECH_OK;
     }
     /* D_j = L^2 - 2 E J_j = sum_i J_i (J_i - J_j) u_i^2 */
@@ -177,7 +178,7 @@ enum mech_status mech_rigid_exact_omega(const struct mech_rigid_exact *ex, doubl
     case MECH_RIGID_EXACT_SYMMETRIC: {
         /* (u_a + i u_b)(t) = (u_a + i u_b)(0) e^{i Omega t} */
         int a = ex->sym_axis == 2 ? 0 : 2, b = 1;
-        double ph = fmod(ex->lambda * t, 2 * M_PI), c = cos(ph), s = sin(ph);
+        double ph = fmod(ex->lambda * t, 2 * MECH_PI), c = cos(ph), s = sin(ph);
         u[a] = ex->u0[a] * c - ex->u0[b] * s;
         u[b] = ex->u0[a] * s + ex->u0[b] * c;
         break;

@@ -4,6 +4,7 @@
  * the cubic in u = cos theta; sleeping-top stability; steady precession.
  * See mech/top.h (notes §2.10). */
 #include "mech/top.h"
+#include "mech/constants.h"
 
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_poly.h>
@@ -38,7 +39,7 @@ static enum mech_status validate(const struct mech_top_problem *p, struct mech_e
     static const char *const names[6] = {"phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot"};
     for (int i = 0; i < 6; i++)
         if (!isfinite(a[i])) return mech_error_set(err, MECH_EINVAL, names[i], "must be finite");
-    if (!(p->theta >= 0 && p->theta <= M_PI))
+    if (!(p->theta >= 0 && p->theta <= MECH_PI))
         return mech_error_set(err, MECH_EINVAL, "theta", "theta must be in [0, pi], got %.17g",
                               p->theta);
     if (!(isfinite(p->t_end) && p->t_end > 0))
@@ -167,8 +168,8 @@ enum mech_status mech_top_turning_points(const struct mech_top_problem *p,
     double tlo = lo == x0 ? p->theta : 2 * asin(sqrt(0.5 * lo));
     double thi = hi == x0 ? p->theta : 2 * asin(sqrt(0.5 * hi));
     if (sigma < 0) {
-        if (lo != x0) tlo = M_PI - tlo;
-        if (hi != x0) thi = M_PI - thi;
+        if (lo != x0) tlo = MECH_PI - tlo;
+        if (hi != x0) thi = MECH_PI - thi;
     }
     out->theta_min = fmin(tlo, thi);
     out->theta_max = fmax(tlo, thi);
@@ -197,7 +198,7 @@ struct top_ctx {
 
 static double unwrap(double x, double ref)
 {
-    return x - 2 * M_PI * round((x - ref) / (2 * M_PI));
+    return x - 2 * MECH_PI * round((x - ref) / (2 * MECH_PI));
 }
 
 static struct mech_vec3 z_body(const double *q)

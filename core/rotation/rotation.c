@@ -4,6 +4,7 @@
  * Euler angles with gimbal-lock branches); composition and residuals
  * (see mech/rotation.h for the conventions). */
 #include "mech/rotation.h"
+#include "mech/constants.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -150,9 +151,6 @@ enum mech_status mech_rotation_from_quaternion(const double q[4], struct mech_ma
  * Conventions: mech/rotation.h. Quaternions are [w, x, y, z], Hamilton product,
  * and describe the ACTIVE turn; passive matrices are the transposes. */
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Axis letters of the 12 sequences, in enum order. */
 static const char *const euler_names[MECH_EULER_SEQUENCE_COUNT] = {
@@ -390,11 +388,11 @@ enum mech_status mech_quaternion_to_axis_angle(const double q[4], struct mech_ve
 /* x wrapped to (-pi, pi], for x in (-3 pi, 3 pi). */
 static double wrap_pi(double x)
 {
-    if (x > M_PI)
-        x -= 2 * M_PI;
-    else if (x <= -M_PI)
-        x += 2 * M_PI;
-    if (x > M_PI) x -= 2 * M_PI; /* rounding of the first subtraction */
+    if (x > MECH_PI)
+        x -= 2 * MECH_PI;
+    else if (x <= -MECH_PI)
+        x += 2 * MECH_PI;
+    if (x > MECH_PI) x -= 2 * MECH_PI; /* rounding of the first subtraction */
     return x + 0.0;
 }
 
@@ -446,7 +444,7 @@ enum mech_status mech_quaternion_to_euler(const double q[4], enum mech_euler_seq
     double hp = hypot(p0, p1), hd = hypot(d0, d1);
     double big = 2 * atan2(hd, hp); /* B in [0, pi] */
     double sh = atan2(p1, p0), dh = atan2(d1, d0);
-    double mid = proper ? big : (e > 0 ? 0.5 * M_PI - big : big - 0.5 * M_PI);
+    double mid = proper ? big : (e > 0 ? 0.5 * MECH_PI - big : big - 0.5 * MECH_PI);
     double a = wrap_pi(sh + dh), c = wrap_pi(sh - dh);
     out->lock_distance = 2 * atan2(fmin(hp, hd), fmax(hp, hd));
     if (hd <= hp) { /* nearest lock B = 0: a + c = 2S */

@@ -9,12 +9,8 @@
 #ifndef MECH_FRAME_H
 #define MECH_FRAME_H
 
-#include "mech/earth.h"
+#include "mech/constants.h"
 #include "mech/vec.h"
-
-/* The Earth's rotation rate (rad/s): the one default, MECH_EARTH_OMEGA of
- * mech/earth.h (IERS 2010, 7.292115e-5; the name is kept for its callers). */
-#define MECH_EARTH_OMEGA_SIDEREAL MECH_EARTH_OMEGA
 
 enum mech_frame_type { MECH_FRAME_INERTIAL = 0, MECH_FRAME_ROTATING, MECH_FRAME_EARTH };
 

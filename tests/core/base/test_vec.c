@@ -24,6 +24,7 @@
 #include <string.h>
 
 #include "mech/trajectory.h"
+#include "mech/constants.h"
 #include "mech/vec.h"
 #include "testlib.h"
 
@@ -164,7 +165,7 @@ static void scene(struct mech_force *f, struct mech_vec3 e1, struct mech_vec3 e2
     p->frame.type = MECH_FRAME_INERTIAL;
     p->forces = f;
     p->n_forces = 4;
-    p->t_end = 5 * 2 * 3.14159265358979323846;
+    p->t_end = 5 * 2 * MECH_PI;
     p->samples = NS;
     p->method = method;
     p->opt.rtol = 1e-10;

@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "mech/continuum_waves.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static void test_string(void)
 {
@@ -38,11 +38,11 @@ static void test_axial(void)
 {
     double kl = 0;
     CHECK_EQ_INT(mech_rod_axial_mode(MECH_ROD_FREE_FREE, 3, &kl, NULL), MECH_OK);
-    CHECK_CLOSE(kl, 3 * PI, 0, 0);
+    CHECK_CLOSE(kl, 3 * MECH_PI, 0, 0);
     CHECK_EQ_INT(mech_rod_axial_mode(MECH_ROD_CLAMPED_FREE, 1, &kl, NULL), MECH_OK);
-    CHECK_CLOSE(kl, PI / 2, 0, 0); /* quarter wave: f1 = c/(4L) */
+    CHECK_CLOSE(kl, MECH_PI / 2, 0, 0); /* quarter wave: f1 = c/(4L) */
     CHECK_EQ_INT(mech_rod_axial_mode(MECH_ROD_PINNED_PINNED, 2, &kl, NULL), MECH_OK);
-    CHECK_CLOSE(kl, 2 * PI, 0, 0); /* pins hold the ends axially */
+    CHECK_CLOSE(kl, 2 * MECH_PI, 0, 0); /* pins hold the ends axially */
     struct mech_error e;
     mech_error_clear(&e);
     CHECK_EQ_INT(mech_rod_axial_mode((enum mech_rod_ends)9, 1, &kl, &e), MECH_EINVAL);
@@ -73,7 +73,7 @@ static void test_bending_roots(void)
         CHECK_CLOSE(x, cf[n - 1], 3e-16, 0);
         if (n <= 3) CHECK_CLOSE(s, scf[n - 1], 1e-14, 0);
         CHECK_EQ_INT(mech_beam_bending_root(MECH_ROD_PINNED_PINNED, n, &x, &s, NULL), MECH_OK);
-        CHECK_CLOSE(x, n * PI, 0, 0);
+        CHECK_CLOSE(x, n * MECH_PI, 0, 0);
         CHECK_CLOSE(s, 0, 0, 0);
     }
     /* Large n: the roots are (n + 1/2) pi and (n - 1/2) pi to within
@@ -83,10 +83,10 @@ static void test_bending_roots(void)
         int n = big[i];
         double x, s;
         CHECK_EQ_INT(mech_beam_bending_root(MECH_ROD_CLAMPED_CLAMPED, n, &x, &s, NULL), MECH_OK);
-        CHECK_CLOSE(x, (n + 0.5) * PI, 4e-16, 0);
+        CHECK_CLOSE(x, (n + 0.5) * MECH_PI, 4e-16, 0);
         CHECK_CLOSE(s, 1.0, 1e-12, 0);
         CHECK_EQ_INT(mech_beam_bending_root(MECH_ROD_CLAMPED_FREE, n, &x, &s, NULL), MECH_OK);
-        CHECK_CLOSE(x, (n - 0.5) * PI, 4e-16, 0);
+        CHECK_CLOSE(x, (n - 0.5) * MECH_PI, 4e-16, 0);
         CHECK_CLOSE(s, 1.0, 1e-12, 0);
     }
     struct mech_error e;

@@ -23,11 +23,11 @@
 #include <string.h>
 
 #include "mech/closed_form.h"
+#include "mech/constants.h"
 #include "mech/reference.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 #define NS 201
 static double T_[NS], T2[NS];
@@ -76,7 +76,7 @@ static double max_rel(const struct mech_vec3 *a, const struct mech_vec3 *b, size
 /* Kepler orbit of eccentricity e from periapsis; closed form vs rk8pd at rtol 1e-14. */
 static void kepler_vs_integration(double e, double t_end, double tol)
 {
-    const double gm = 3.986004418e14, q = 7.0e6;
+    const double gm = MECH_EARTH_GM, q = 7.0e6;
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
     f.u.central_gravity.gm = gm;
     struct mech_trajectory_problem p =
@@ -117,12 +117,12 @@ static void kepler_vs_integration(double e, double t_end, double tol)
 
 static void test_kepler(void)
 {
-    const double gm = 3.986004418e14, q = 7.0e6;
+    const double gm = MECH_EARTH_GM, q = 7.0e6;
     for (int k = 0; k < 4; k++) {
         const double es[4] = {0.0, 0.5, 0.9, 0.999};
         const double tols[4] = {1e-11, 1e-11, 1e-10, 1e-8};
         const double a = q / (1 - es[k]);
-        const double P = 2 * PI * sqrt(a * a * a / gm);
+        const double P = 2 * MECH_PI * sqrt(a * a * a / gm);
         kepler_vs_integration(es[k], 1.5 * P, tols[k]);
     }
     kepler_vs_integration(1.5, 20000.0, 1e-11); /* hyperbola */
@@ -161,10 +161,10 @@ static void test_kepler_radial(void)
     const double tau = sqrt(r0 * r0 * r0 / (2 * gm));
     CHECK(mech_trajectory_closed_form(&p, &a, &err) == MECH_OK);
     CHECK(a.stopped);
-    CHECK_CLOSE(a.t_stop, tau * (PI / 4 + 0.5), 4e-16, 0);
+    CHECK_CLOSE(a.t_stop, tau * (MECH_PI / 4 + 0.5), 4e-16, 0);
     CHECK_CLOSE(a.stop_position.x, 0.5 * r0, 4e-16, 0);
     char want[32];
-    snprintf(want, sizeof want, "t = %.9g s", tau * PI / 2);
+    snprintf(want, sizeof want, "t = %.9g s", tau * MECH_PI / 2);
     for (int k = 0; k < 2; k++) {
         /* no stop, or a stop never reached (x = 2 r0): the fall into the centre */
         p.has_stop = k;
@@ -185,7 +185,7 @@ static void test_kepler_event(void)
     f.u.central_gravity.gm = gm;
     /* the orbit of the state as given (vq rounded): vis-viva in long double */
     const long double al = 1.0L / (2.0L / q - (long double)vq * vq);
-    const double P = (double)(2 * 3.14159265358979323846264338327950288L * sqrtl(al * al * al));
+    const double P = (double)(2 * MECH_PI_L * sqrtl(al * al * al));
     struct mech_trajectory_problem p = problem(
         1.0, mech_vec3_make(q, 0, 0), mech_vec3_make(0, vq, 0), &f, 1, 1000 * P, 101);
     p.has_stop = 1;
@@ -217,7 +217,7 @@ static void test_oscillator_long(void)
     struct mech_force f = {.type = MECH_FORCE_SPRING};
     f.u.spring.k = k;
     const long double w = sqrtl((long double)k / (long double)m);
-    const double T = (double)(2.0L * 3.14159265358979323846264338327950288L / w);
+    const double T = (double)(2.0L * MECH_PI_L / w);
     const struct mech_vec3 r0 = mech_vec3_make(0.8, -0.3, 0.5), v0 = mech_vec3_make(0.1, 0.7, -0.2);
     struct mech_trajectory_problem p = problem(m, r0, v0, &f, 1, 1e4 * T, NS);
     struct mech_trajectory_result r;
@@ -326,7 +326,7 @@ static void test_drag_event(void)
 /* The same orbit in the xy plane and tilted about x by 30 degrees. */
 static void test_planar_vs_3d(void)
 {
-    const double gm = 1.0, c = cos(PI / 6), s = sin(PI / 6);
+    const double gm = 1.0, c = cos(MECH_PI / 6), s = sin(MECH_PI / 6);
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
     f.u.central_gravity.gm = gm;
     struct mech_trajectory_problem p =

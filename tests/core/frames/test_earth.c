@@ -11,12 +11,10 @@
 #include <string.h>
 
 #include "mech/earth.h"
+#include "mech/constants.h"
 #include "mech/effective_force.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static const struct mech_earth_sphere EARTH = {MECH_EARTH_GM, MECH_EARTH_RADIUS_MEAN,
                                                MECH_EARTH_OMEGA};
@@ -35,7 +33,7 @@ static void check_sincos(void)
     for (double d = -400; d <= 400; d += 7.3) {
         mech_sincos_deg(d, &s, &c);
         /* reference in long double (64-bit mantissa) */
-        long double x = (long double)d * 3.14159265358979323846264338327950288L / 180;
+        long double x = (long double)d * MECH_PI_L / 180;
         CHECK_CLOSE(s, (double)sinl(x), 0, 2.3e-16);
         CHECK_CLOSE(c, (double)cosl(x), 0, 2.3e-16);
         CHECK_CLOSE(s * s + c * c, 1, 4e-16, 0);
@@ -122,15 +120,15 @@ static void check_deviation_peak(void)
     mech_earth_gravity_sphere(&EARTH, lat_max, 0, &gm, NULL);
     printf("deviation peak: closed form %.17g rad (%.12f deg) at %.9f deg; "
            "numerical max %.17g rad at %.9f deg; k/2 = %.17g\n",
-           g.deviation_max, g.deviation_max * 180 / M_PI, g.deviation_max_latitude * 180 / M_PI,
+           g.deviation_max, g.deviation_max * 180 / MECH_PI, g.deviation_max_latitude * 180 / MECH_PI,
            gm.deviation, lat_max, k / 2);
     CHECK_CLOSE(gm.deviation, g.deviation_max, 1e-14, 0);
-    CHECK_CLOSE(lat_max, g.deviation_max_latitude * 180 / M_PI, 0, 1e-4);
-    CHECK(g.deviation_max_latitude * 180 / M_PI < 45 &&
-          g.deviation_max_latitude * 180 / M_PI > 44.9);
+    CHECK_CLOSE(lat_max, g.deviation_max_latitude * 180 / MECH_PI, 0, 1e-4);
+    CHECK(g.deviation_max_latitude * 180 / MECH_PI < 45 &&
+          g.deviation_max_latitude * 180 / MECH_PI > 44.9);
     /* about W² R / (2 g0) ~ 0.1 deg */
     CHECK_CLOSE(g.deviation_max, k / 2, 2e-3, 0);
-    CHECK_CLOSE(g.deviation_max * 180 / M_PI, 0.0991, 0, 1e-3);
+    CHECK_CLOSE(g.deviation_max * 180 / MECH_PI, 0.0991, 0, 1e-3);
 }
 
 static void check_somigliana(void)
@@ -196,7 +194,7 @@ static void check_igf1980(void)
     double worst = 0;
     for (int i = -90; i <= 90; i++) {
         CHECK_EQ_INT(mech_earth_normal_gravity(i, 0, &n, NULL), MECH_OK);
-        double s2 = sin(i * M_PI / 180) * sin(i * M_PI / 180);
+        double s2 = sin(i * MECH_PI / 180) * sin(i * MECH_PI / 180);
         double closed = 9.7803267715 * (1 + 0.001931851353 * s2) / sqrt(1 - 0.00669438002290 * s2);
         worst = fmax(worst, fabs(n.igf1980 - closed));
     }

@@ -11,11 +11,9 @@
 #include <string.h>
 
 #include "mech/effective_force.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 #define CHECK_VEC(got, want, rtol, atol)                                                           \
     do {                                                                                           \
@@ -142,12 +140,12 @@ static void check_pucks(void)
      * -m w² r1 (e_y + (4/pi) e_x): centrifugal +m w² r1 e_y, Coriolis
      * -(4/pi) m w² r1 e_x - 2 m w² r1 e_y. */
     struct mech_vec3 r = {0, r1, 0};
-    struct mech_vec3 v = {w * r1, -2 * w * r1 / M_PI, 0};
+    struct mech_vec3 v = {w * r1, -2 * w * r1 / MECH_PI, 0};
     CHECK_EQ_INT(mech_effective_force(&fr, m, r, v, mech_vec3_make(0, 0, 0), &out, NULL), MECH_OK);
     double f0 = m * w * w * r1;
     CHECK_VEC(out.centrifugal, mech_vec3_make(0, f0, 0), 1e-15, 1e-16);
-    CHECK_VEC(out.coriolis, mech_vec3_make(-4 / M_PI * f0, -2 * f0, 0), 1e-15, 1e-16);
-    CHECK_VEC(out.effective, mech_vec3_make(-4 / M_PI * f0, -f0, 0), 1e-15, 1e-16);
+    CHECK_VEC(out.coriolis, mech_vec3_make(-4 / MECH_PI * f0, -2 * f0, 0), 1e-15, 1e-16);
+    CHECK_VEC(out.effective, mech_vec3_make(-4 / MECH_PI * f0, -f0, 0), 1e-15, 1e-16);
     CHECK_VEC(out.euler, mech_vec3_make(0, 0, 0), 0, 0);
     CHECK_VEC(out.translational, mech_vec3_make(0, 0, 0), 0, 0);
     /* Puck 2 at rest in the inertial frame: seen circling at -w: v' = w r1 e_x,

@@ -21,11 +21,11 @@
 #include <string.h>
 
 #include "mech/ode.h"
+#include "mech/constants.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 static const double G0 = 9.80665;
 static const double WE = 7.2921159e-5;
 
@@ -40,7 +40,7 @@ static struct mech_foucault_problem base(double lat, double amp_deg, double swin
     p.mass = 28.0;
     p.amplitude_deg = amp_deg;
     p.method = MECH_PENDULUM_RATTLE_YOSHIDA4;
-    p.t_end = swings * mech_pendulum_period(p.length, p.g, amp_deg * PI / 180.0);
+    p.t_end = swings * mech_pendulum_period(p.length, p.g, amp_deg * MECH_PI / 180.0);
     p.steps = (long)ceil(swings * (double)sps);
     return p;
 }
@@ -60,7 +60,7 @@ static enum mech_status run(const struct mech_foucault_problem *p, struct mech_f
  * without centrifugal adds W^2 to omega0^2) + 3 standard errors */
 static void check_rate(const struct mech_foucault_problem *p, const struct mech_foucault_result *r)
 {
-    double alpha = p->amplitude_deg * PI / 180.0;
+    double alpha = p->amplitude_deg * MECH_PI / 180.0;
     double expected = -r->omega_vertical + r->airy_rate_mean;
     double w2 = p->omega_magnitude * p->omega_magnitude / (r->omega0 * r->omega0);
     double tol =
@@ -75,10 +75,10 @@ static void check_rate(const struct mech_foucault_problem *p, const struct mech_
 
 static void test_period(void)
 {
-    double l = 2.0, g = 9.0, T0 = 2.0 * PI * sqrt(l / g);
+    double l = 2.0, g = 9.0, T0 = 2.0 * MECH_PI * sqrt(l / g);
     CHECK_CLOSE(mech_pendulum_period(l, g, 0.0), T0, 1e-15, 0);
     /* K(1/sqrt 2) = Gamma(1/4)^2 / (4 sqrt(pi)) = 1.8540746773013719 (A & S 17.3) */
-    CHECK_CLOSE(mech_pendulum_period(l, g, PI / 2.0), 4.0 * sqrt(l / g) * 1.8540746773013719, 1e-14,
+    CHECK_CLOSE(mech_pendulum_period(l, g, MECH_PI / 2.0), 4.0 * sqrt(l / g) * 1.8540746773013719, 1e-14,
                 0);
     double a = 0.01;
     CHECK_CLOSE(mech_pendulum_period(l, g, a),
@@ -88,7 +88,7 @@ static void test_period(void)
      * method: the series sum_{n>=1} ((2n-1)!!/(2n)!!)^2 k^(2n) (A & S 17.3.11) of positive
      * terms, in long double, k = sin(alpha/2). T/T0 - 1 in doubles was off by 1.8e-5
      * relative at alpha = 1e-5 rad, 5.8e-10 at 1e-3, 4.8e-13 at 0.05. */
-    static const double alphas[] = {1e-8, 1e-5, 1e-3, 0.05, 0.3, 1.0, PI / 2.0, 3.0};
+    static const double alphas[] = {1e-8, 1e-5, 1e-3, 0.05, 0.3, 1.0, MECH_PI / 2.0, 3.0};
     for (size_t i = 0; i < sizeof alphas / sizeof alphas[0]; i++) {
         const long double k = sinl(0.5L * alphas[i]), k2 = k * k;
         long double c = 1.0L, pw = 1.0L, sum = 0.0L;
@@ -102,7 +102,7 @@ static void test_period(void)
     }
     /* closed forms: alpha^2/16 + 11 alpha^4/3072 at 1e-8; 2K(1/sqrt 2)/pi - 1 at pi/2 */
     CHECK_CLOSE(mech_pendulum_period_correction(1e-8), 1e-16 / 16.0, 1e-15, 0);
-    CHECK_CLOSE(mech_pendulum_period_correction(PI / 2.0), 2.0 * 1.8540746773013719 / PI - 1.0,
+    CHECK_CLOSE(mech_pendulum_period_correction(MECH_PI / 2.0), 2.0 * 1.8540746773013719 / MECH_PI - 1.0,
                 1e-14, 0);
     CHECK(mech_pendulum_period_correction(0.0) == 0.0);
 }
@@ -146,7 +146,7 @@ static void test_against_rk8pd(void)
     struct mech_foucault_result r;
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
 
-    double lat = 45.0 * PI / 180.0, al = 10.0 * PI / 180.0, az = 30.0 * PI / 180.0;
+    double lat = 45.0 * MECH_PI / 180.0, al = 10.0 * MECH_PI / 180.0, az = 30.0 * MECH_PI / 180.0;
     struct ir P = {{0.0, p.omega_magnitude * cos(lat), p.omega_magnitude * sin(lat)}, 67.0, G0, 1};
     double y0[6] = {67.0 * sin(al) * cos(az), 67.0 * sin(al) * sin(az), -67.0 * cos(al),
                     -0.05 * sin(az),          0.05 * cos(az),           0.0};
@@ -193,7 +193,7 @@ static void test_latitudes(void)
     struct mech_foucault_problem p = base(90.0, 3.0, 200.0, 200);
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     CHECK_CLOSE(r.omega_vertical, WE, 1e-15, 0);
-    double a = 67.0 * sin(3.0 * PI / 180.0);
+    double a = 67.0 * sin(3.0 * MECH_PI / 180.0);
     CHECK_CLOSE(r.airy_rate, 0.375 * WE * a * a / (67.0 * 67.0), 1e-13, 0);
     CHECK_CLOSE(r.airy_rate_mean, r.airy_rate, 1e-6, 0);
     check_rate(&p, &r);
@@ -221,7 +221,7 @@ static void test_latitudes(void)
     /* the notes' latitude (32 deg, chapter 1's examples): W sin(lat) */
     p = base(32.0, 3.0, 200.0, 200);
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
-    CHECK_CLOSE(r.omega_vertical, WE * sin(32.0 * PI / 180.0), 1e-15, 0);
+    CHECK_CLOSE(r.omega_vertical, WE * sin(32.0 * MECH_PI / 180.0), 1e-15, 0);
     check_rate(&p, &r);
 
     /* equator, release east: W = (0, W, 0) keeps the motion in the x-z plane
@@ -237,11 +237,11 @@ static void test_latitudes(void)
 /* A full precession at 45 deg: 7418 swings of the 67 m pendulum. */
 static void test_full_precession(void)
 {
-    double lat = 45.0 * PI / 180.0, wz = WE * sin(lat);
+    double lat = 45.0 * MECH_PI / 180.0, wz = WE * sin(lat);
     struct mech_foucault_problem p = base(45.0, 3.0, 1.0, 100);
     p.centrifugal = 1;
-    p.t_end = 2.0 * PI / wz;
-    p.steps = (long)ceil(100.0 * p.t_end / mech_pendulum_period(67.0, G0, 3.0 * PI / 180.0));
+    p.t_end = 2.0 * MECH_PI / wz;
+    p.steps = (long)ceil(100.0 * p.t_end / mech_pendulum_period(67.0, G0, 3.0 * MECH_PI / 180.0));
     struct mech_foucault_result r;
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     CHECK(r.swings > 7410.0 && r.swings < 7425.0); /* 2 pi / (W sin 45) / T = 7418 */
@@ -250,7 +250,7 @@ static void test_full_precession(void)
      * over the precession (release east, psi0 = 0), and the least-squares
      * slope over exactly one turn adds 3/(4 pi^2) of that (core/pendulum.c) */
     double cot2 = 1.0 / (tan(lat) * tan(lat));
-    CHECK_CLOSE(r.airy_rate_mean, r.airy_rate * (1.0 + cot2 / 8.0 * (1.0 + 3.0 / (4.0 * PI * PI))),
+    CHECK_CLOSE(r.airy_rate_mean, r.airy_rate * (1.0 + cot2 / 8.0 * (1.0 + 3.0 / (4.0 * MECH_PI * MECH_PI))),
                 2e-3, 0);
     CHECK(r.max_relative_energy_drift < 1e-5);
     CHECK(r.max_constraint_error < 1e-14);
@@ -268,12 +268,12 @@ static void test_airy(void)
 {
     struct mech_foucault_problem p = base(45.0, 5.0, 200.0, 200);
     p.omega_magnitude = 0.0;
-    double a = 67.0 * sin(5.0 * PI / 180.0), w0 = sqrt(G0 / 67.0);
+    double a = 67.0 * sin(5.0 * MECH_PI / 180.0), w0 = sqrt(G0 / 67.0);
     p.transverse_velocity = 0.1 * a * w0; /* b = a / 10 */
     struct mech_foucault_result r;
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     CHECK_CLOSE(r.airy_rate, 0.375 * a * p.transverse_velocity / (67.0 * 67.0), 1e-13, 0);
-    double al = 5.0 * PI / 180.0;
+    double al = 5.0 * MECH_PI / 180.0;
     CHECK_CLOSE(r.precession.slope, r.airy_rate, al * al / 4.0, 0);
     CHECK_CLOSE(r.mean_pericentre, a / 10.0, 1e-2, 0);
 }
@@ -284,7 +284,7 @@ static void test_extremes(void)
     /* l = 1 mm: omega0 = 99 rad/s, the precession still W sin(lat) */
     struct mech_foucault_problem p = base(90.0, 2.0, 100.0, 200);
     p.length = 1e-3;
-    p.t_end = 100.0 * mech_pendulum_period(p.length, G0, 2.0 * PI / 180.0);
+    p.t_end = 100.0 * mech_pendulum_period(p.length, G0, 2.0 * MECH_PI / 180.0);
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     CHECK(r.turning_points == 200);
     CHECK_CLOSE(r.period, r.finite_amplitude_period, 2e-7, 0);
@@ -293,7 +293,7 @@ static void test_extremes(void)
      * precession (about 43 swings) */
     p = base(90.0, 0.5, 1.0, 400);
     p.length = 1e6;
-    p.t_end = 2.0 * PI / WE;
+    p.t_end = 2.0 * MECH_PI / WE;
     p.steps = 400 * 50;
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     check_rate(&p, &r);
@@ -302,7 +302,7 @@ static void test_extremes(void)
     p = base(90.0, 1.0, 100.0, 400);
     p.length = 1.0;
     p.omega_magnitude = 1.0;
-    p.t_end = 100.0 * mech_pendulum_period(1.0, G0, PI / 180.0);
+    p.t_end = 100.0 * mech_pendulum_period(1.0, G0, MECH_PI / 180.0);
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     check_rate(&p, &r);
     /* amplitude 1e-6 deg (6 um) and 80 deg */
@@ -310,7 +310,7 @@ static void test_extremes(void)
     CHECK_EQ_INT(run(&p, &r), MECH_OK);
     check_rate(&p, &r);
     /* the height 2 l sin^2(alpha/2) ~ 1e-14 m is computed without cancellation */
-    double ha = 0.5e-6 * PI / 180.0;
+    double ha = 0.5e-6 * MECH_PI / 180.0;
     CHECK_CLOSE(r.energy_initial, 28.0 * G0 * 2.0 * 67.0 * sin(ha) * sin(ha), 1e-13, 0);
     CHECK(r.max_relative_energy_drift < 1e-6);
     p = base(45.0, 80.0, 50.0, 400);

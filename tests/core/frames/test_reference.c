@@ -18,11 +18,11 @@
 #include <string.h>
 
 #include "mech/reference.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 #include "kepler_ld.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static double rel3(struct mech_vec3 a, struct mech_vec3 b)
 {
@@ -41,7 +41,7 @@ static void ellipse_state(double gm, double a, double e, struct mech_vec3 *r, st
 static void ellipse_at(double gm, double a, double e, double t, struct mech_vec3 *r,
                        struct mech_vec3 *v)
 {
-    double n = sqrt(gm / (a * a * a)), M = fmod(n * t, 2 * PI), E = M + e * sin(M);
+    double n = sqrt(gm / (a * a * a)), M = fmod(n * t, 2 * MECH_PI), E = M + e * sin(M);
     for (int i = 0; i < 100; i++) {
         double d = (E - e * sin(E) - M) / (1 - e * cos(E));
         E -= d;
@@ -73,7 +73,7 @@ static void test_kepler_ellipse(void)
         const double gm = 1.0, a = 1.0, e = es[k];
         struct mech_vec3 r0, v0, r, v, rw, vw;
         ellipse_state(gm, a, e, &r0, &v0);
-        const double P = 2 * PI;
+        const double P = 2 * MECH_PI;
         for (int i = 1; i <= 40; i++) {
             double t = P * i / 37.0;
             CHECK_EQ_INT(mech_kepler_propagate(gm, r0, v0, t, &r, &v, NULL), MECH_OK);
@@ -124,7 +124,7 @@ static void test_kepler_many_periods(void)
     /* Circular orbit: r(t) = (cos t, sin t, 0) exactly; after 1e5 periods the
      * error is that of t = 2 pi 1e5 itself (~1e-10 absolute in the phase). */
     struct mech_vec3 r, v;
-    const double t = 2 * PI * 1e5 + 1.0;
+    const double t = 2 * MECH_PI * 1e5 + 1.0;
     CHECK_EQ_INT(mech_kepler_propagate(1.0, mech_vec3_make(1, 0, 0), mech_vec3_make(0, 1, 0), t,
                                        &r, &v, NULL),
                  MECH_OK);
@@ -146,7 +146,7 @@ static void test_kepler_hyperbola_parabola(void)
      * M = e sinh H - H, r = |a| (e - cosh H, sqrt(e^2 - 1) sinh H). */
     const double es[] = {1.01, 2.0, 30.0};
     for (size_t k = 0; k < sizeof es / sizeof es[0]; k++) {
-        const double gm = 3.986004418e14, q = 7e6, e = es[k], A = q / (e - 1);
+        const double gm = MECH_EARTH_GM, q = 7e6, e = es[k], A = q / (e - 1);
         struct mech_vec3 r0 = mech_vec3_make(q, 0, 0);
         struct mech_vec3 v0 = mech_vec3_make(0, sqrt(gm * (1 + e) / q), 0);
         for (int i = -3; i <= 20; i++) {
@@ -245,7 +245,7 @@ static void test_kepler_vs_rk8pd(void)
     p.velocity = mech_vec3_make(0.1, p.velocity.y, 0.2); /* an inclined orbit */
     p.forces = &f;
     p.n_forces = 1;
-    p.t_end = 3 * 2 * PI;
+    p.t_end = 3 * 2 * MECH_PI;
     p.samples = 101;
     integrate(&p, 1e-13);
     struct mech_trajectory_reference ref;
@@ -445,7 +445,7 @@ static double coriolis_gap(double W, int centrifugal, double *second)
 static void test_coriolis(void)
 {
     /* notes' falling object: x_east = (1/3) W g cos(lat) t^3 */
-    const double W = 7.2921159e-5, lat = 32 * PI / 180, g = 9.80665, h = 100, t = sqrt(2 * h / g);
+    const double W = 7.2921159e-5, lat = 32 * MECH_PI / 180, g = 9.80665, h = 100, t = sqrt(2 * h / g);
     struct mech_vec3 w = mech_vec3_make(0, W * cos(lat), W * sin(lat)), r, v, s;
     mech_coriolis_first_order(w, mech_vec3_make(0, 0, -g), 0, mech_vec3_make(0, 0, h),
                               mech_vec3_make(0, 0, 0), t, &r, &v, &s);
@@ -520,8 +520,8 @@ static void test_recognition_issue6(void)
  * the period ~eps / (1 - e) (1.2e-10 relative in position at e = 0.99999). */
 static void test_kepler_near_parabolic_digits(void)
 {
-    const long double PI_L = 3.14159265358979323846264338327950288L;
-    const double gm = 3.986004418e14, q = 7e6;
+    const long double PI_L = MECH_PI_L;
+    const double gm = MECH_EARTH_GM, q = 7e6;
     for (int k = 0; k < 2; k++) {
         const double e = k ? 0.99999 : 0.999, v = sqrt(gm * (1 + e) / q);
         const long double al = 1.0L / (2.0L / q - (long double)v * v / gm);
@@ -573,7 +573,7 @@ static void test_harmonic_long(void)
     struct mech_trajectory_reference ref;
     CHECK(mech_trajectory_reference_find(&p, &ref) == MECH_REFERENCE_EXACT);
     const long double w = sqrtl((long double)k / (long double)m);
-    const double T = (double)(2 * 3.14159265358979323846264338327950288L / w);
+    const double T = (double)(2 * MECH_PI_L / w);
     double worst = 0.0;
     for (int i = 0; i <= 200; i++) {
         const double t = 1e4 * T * i / 200.0;

@@ -9,11 +9,9 @@
 #include <string.h>
 
 #include "mech/rotating_liquid.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Volume under the surface by composite Simpson on r h(r) (n even). The
  * integrand has a kink at the dry radius, so split there. */
@@ -27,7 +25,7 @@ static double volume(const struct mech_rotating_liquid *p, const struct mech_rot
         double h = (b - a) / n, sum = 0;
         for (int i = 0; i <= n; i++) {
             double r = a + i * h, w = (i == 0 || i == n) ? 1 : (i % 2 ? 4 : 2);
-            sum += w * 2 * M_PI * r * mech_rotating_liquid_height(p, s, r);
+            sum += w * 2 * MECH_PI * r * mech_rotating_liquid_height(p, s, r);
         }
         total += sum * h / 3;
     }
@@ -41,7 +39,7 @@ static void check_volume_and_slope(void)
         struct mech_rotating_liquid p = {ws[i], 9.80665, 0.1, 0.05, 0};
         struct mech_rotating_liquid_surface s;
         CHECK_EQ_INT(mech_rotating_liquid_surface(&p, &s, NULL), MECH_OK);
-        double v = volume(&p, &s), v0 = M_PI * p.radius * p.radius * p.depth;
+        double v = volume(&p, &s), v0 = MECH_PI * p.radius * p.radius * p.depth;
         printf("w = %g: exposed %d, rim %.6f m, centre %.6f m, dry r0 %.6f m, volume/rest %.15f\n",
                p.omega, s.bottom_exposed, s.rim_height, s.centre_height, s.dry_radius, v / v0);
         CHECK_CLOSE(v, v0, 1e-12, 0);

@@ -22,9 +22,9 @@
 #include <string.h>
 
 #include "mech/scenes.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 static const double G0 = 9.80665;
 static const double W_E = MECH_EARTH_OMEGA_SIDEREAL;
 
@@ -58,7 +58,7 @@ static void report(const char *name, const struct mech_scene_ballistic_result *r
 
 static void test_falling(void)
 {
-    const double h = 100.0, lat = 32.0 * PI / 180.0, s = sin(lat), c = cos(lat);
+    const double h = 100.0, lat = 32.0 * MECH_PI / 180.0, s = sin(lat), c = cos(lat);
     struct mech_scene_ballistic sc = earth(32.0);
     sc.r0 = mech_vec3_make(0, 0, h);
     struct mech_error e;
@@ -118,7 +118,7 @@ static void test_falling(void)
 
 static void test_vertical_shot(void)
 {
-    const double h = 100.0, lat = 32.0 * PI / 180.0, s = sin(lat), c = cos(lat);
+    const double h = 100.0, lat = 32.0 * MECH_PI / 180.0, s = sin(lat), c = cos(lat);
     const double v0 = sqrt(2.0 * G0 * h), T = 2.0 * v0 / G0;
     struct mech_scene_ballistic sc = earth(32.0);
     sc.v0 = mech_vec3_make(0, 0, v0);
@@ -147,7 +147,7 @@ static void test_vertical_shot(void)
 
 static void test_cannonball(void)
 {
-    const double v0 = 500.0, al = 30.0 * PI / 180.0, lat = 45.0 * PI / 180.0;
+    const double v0 = 500.0, al = 30.0 * MECH_PI / 180.0, lat = 45.0 * MECH_PI / 180.0;
     struct mech_scene_ballistic sc = earth(45.0);
     sc.v0 = mech_vec3_make(v0 * cos(al), 0, v0 * sin(al));
     struct mech_error e;
@@ -203,12 +203,12 @@ static void test_table(void)
     CHECK_EQ_INT(mech_scene_table_run(&s, 1e-10, &b, &r, &e), MECH_OK);
     /* the notes: F' = -m w^2 r (e_y + (4/pi) e_x) at t = 0 */
     const double f = s.mass * s.omega * s.omega * s.radius;
-    CHECK_CLOSE(r.total.x, -4.0 / PI * f, 1e-15, 0);
+    CHECK_CLOSE(r.total.x, -4.0 / MECH_PI * f, 1e-15, 0);
     CHECK_CLOSE(r.total.y, -f, 1e-15, 0);
     CHECK_CLOSE(r.centrifugal.y, f, 1e-15, 0);
     CHECK_CLOSE(r.coriolis.y, -2.0 * f, 1e-15, 0);
     CHECK_CLOSE(r.v0_rotating.x, s.omega * s.radius, 1e-15, 0); /* -w x r = w r e_x */
-    CHECK_CLOSE(r.t_end, PI / s.omega, 1e-15, 0);
+    CHECK_CLOSE(r.t_end, MECH_PI / s.omega, 1e-15, 0);
     /* inertial: through the centre at half time, at -r1 e_y at the end */
     CHECK_CLOSE(a[N / 2].y, 0.0, 0, 1e-15);
     CHECK_CLOSE(a[N - 1].y, -s.radius, 1e-15, 0);

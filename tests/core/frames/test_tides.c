@@ -12,12 +12,10 @@
 #include <string.h>
 
 #include "mech/earth.h"
+#include "mech/constants.h"
 #include "mech/tides.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Legendre-series tidal acceleration in units of GM/d²: rad, tan; and the
  * sum of the terms n >= 3 alone (the departure from first order). */
@@ -114,7 +112,7 @@ static void check_far(void)
         double scale = pull * u;
         /* first order closed forms */
         CHECK_CLOSE(a.first_order.radial, scale * (3 * c * c - 1), 1e-15, 1e-16 * scale);
-        CHECK_CLOSE(a.first_order.tangential, -1.5 * scale * sin(2 * th * M_PI / 180), 1e-15,
+        CHECK_CLOSE(a.first_order.tangential, -1.5 * scale * sin(2 * th * MECH_PI / 180), 1e-15,
                     4e-16 * scale);
         CHECK_CLOSE(a.first_order.along, 2 * scale * c, 1e-15, 0);
         CHECK_CLOSE(a.first_order.perpendicular, -scale * s, 1e-15, 0);
@@ -194,7 +192,7 @@ static void check_heights(void)
     double mean = 0;
     for (int i = 0; i < 3; i++) {
         CHECK_EQ_INT(mech_tide_height(gmoon, MECH_EARTH_GM, MECH_MOON_DISTANCE, R,
-                                      acos(x[i]) * 180 / M_PI, &hn, NULL),
+                                      acos(x[i]) * 180 / MECH_PI, &hn, NULL),
                      MECH_OK);
         mean += w[i] * hn.height;
     }
@@ -204,7 +202,7 @@ static void check_heights(void)
     struct mech_tide_acceleration a;
     CHECK_EQ_INT(mech_tide_acceleration(gmoon, MECH_MOON_DISTANCE, R, 30, &a, NULL), MECH_OK);
     double g = MECH_EARTH_GM / (R * R);
-    double dhdth = -1.5 * hm.high * sin(2 * 30 * M_PI / 180); /* h = base (3c²-1)/2 */
+    double dhdth = -1.5 * hm.high * sin(2 * 30 * MECH_PI / 180); /* h = base (3c²-1)/2 */
     CHECK_CLOSE(a.first_order.tangential, g / R * dhdth, 1e-14, 0);
 }
 

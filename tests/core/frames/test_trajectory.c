@@ -17,9 +17,9 @@
 #include <string.h>
 
 #include "mech/trajectory.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 static const double G0 = 9.80665;
 
 static struct mech_budget big_budget(void) { return mech_budget_make(50000000, 600.0); }
@@ -74,8 +74,8 @@ static void test_falling_object(void)
 {
     const double h = 100.0, lat = 32.0, W = MECH_EARTH_OMEGA_SIDEREAL;
     const double t_fall = sqrt(2.0 * h / G0);
-    const double x_east = W * cos(lat * PI / 180.0) * sqrt(8.0 * h * h * h / G0) / 3.0;
-    CHECK_CLOSE(x_east, W * G0 * cos(lat * PI / 180.0) * pow(t_fall, 3) / 3.0, 1e-14, 0);
+    const double x_east = W * cos(lat * MECH_PI / 180.0) * sqrt(8.0 * h * h * h / G0) / 3.0;
+    CHECK_CLOSE(x_east, W * G0 * cos(lat * MECH_PI / 180.0) * pow(t_fall, 3) / 3.0, 1e-14, 0);
     const unsigned sets[] = {MECH_FICTITIOUS_CORIOLIS,
                              MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL};
     const char *methods[] = {"rk8pd", "rk4", "verlet"};
@@ -114,7 +114,7 @@ static void test_falling_object(void)
             const struct mech_trajectory_term *cen = term(&r, "centrifugal");
             CHECK(cor && cor->included == 1 && cen && cen->included == k);
             /* largest |a_cor| at landing: 2 W g t cos(lat) (first order) */
-            CHECK_CLOSE(cor->max_acceleration, 2.0 * W * G0 * t_fall * cos(lat * PI / 180.0),
+            CHECK_CLOSE(cor->max_acceleration, 2.0 * W * G0 * t_fall * cos(lat * MECH_PI / 180.0),
                         1e-3, 0);
             /* centrifugal of the displacement: W^2 |r_perp| <= W^2 h */
             CHECK(cen->max_acceleration <= W * W * h * 1.0001 && cen->max_acceleration > 0.0);
@@ -134,7 +134,7 @@ static void test_kepler_circular(void)
     p.velocity = mech_vec3_make(0, 1, 0);
     p.forces = &f;
     p.n_forces = 1;
-    p.t_end = 2.0 * PI;
+    p.t_end = 2.0 * MECH_PI;
     p.opt.rtol = 1e-12;
     p.opt.atol = 0.0;
     struct mech_trajectory_result r;
@@ -468,7 +468,7 @@ static void test_long_verlet(void)
 {
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
     f.u.central_gravity.gm = 1.0;
-    const double P = 2.0 * PI * pow(2.0, 1.5);
+    const double P = 2.0 * MECH_PI * pow(2.0, 1.5);
     struct mech_trajectory_problem p = base_problem();
     p.position = mech_vec3_make(1, 0, 0);
     p.velocity = mech_vec3_make(0, sqrt(1.5), 0);
@@ -507,7 +507,7 @@ static void test_radau15_planar_steps(void)
 {
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
     f.u.central_gravity.gm = 1.0;
-    const double P = 2.0 * PI * pow(2.0, 1.5), orbits = 20.0;
+    const double P = 2.0 * MECH_PI * pow(2.0, 1.5), orbits = 20.0;
     struct mech_trajectory_problem p = base_problem();
     p.position = mech_vec3_make(1, 0, 0);
     p.velocity = mech_vec3_scale(mech_vec3_make(0, 0.8, 0.6), sqrt(1.5));

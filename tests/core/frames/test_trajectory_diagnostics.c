@@ -21,10 +21,10 @@
 #include <string.h>
 
 #include "mech/reference.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 enum { NS = 401 };
 static double ts[NS];
@@ -45,7 +45,7 @@ static enum mech_status run(const struct mech_trajectory_problem *p,
 static struct mech_force kepler_force(void)
 {
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};
-    f.u.central_gravity.gm = 3.986004418e14;
+    f.u.central_gravity.gm = MECH_EARTH_GM;
     return f;
 }
 
@@ -61,7 +61,7 @@ static struct mech_trajectory_problem kepler_problem(const struct mech_force *f,
     p.velocity = mech_vec3_make(0, sqrt(gm * (1 + e) / q), 0);
     p.forces = f;
     p.n_forces = 1;
-    p.t_end = n_orbits * 2 * PI * sqrt(a * a * a / gm);
+    p.t_end = n_orbits * 2 * MECH_PI * sqrt(a * a * a / gm);
     p.samples = 201;
     p.closed_form_off = 1; /* these check the integrating presets */
     return p;
@@ -175,7 +175,7 @@ static void test_presets_oscillator_falling(void)
     p.velocity = mech_vec3_make(0, 0.2, 0);
     p.forces = &s;
     p.n_forces = 1;
-    p.t_end = 1e4 * 2 * PI / 5;
+    p.t_end = 1e4 * 2 * MECH_PI / 5;
     p.samples = 201;
     p.closed_form_off = 1;
     long rhs[MECH_ACCURACY_COUNT];
@@ -258,7 +258,7 @@ static void test_presets(void)
     p.velocity = mech_vec3_make(0, 0.2, 0);
     p.forces = s;
     p.n_forces = 2;
-    p.t_end = 20 * 2 * PI / 5;
+    p.t_end = 20 * 2 * MECH_PI / 5;
     p.samples = 201;
     check_presets(p, "oscillator 20 periods");
 
@@ -488,11 +488,11 @@ static void test_extremes(void)
         const char *what;
         double gm, q, ecc, t_end;
     } sc[] = {
-        {"t_end 1e-9 s", 3.986004418e14, 7e6, 0.1, 1e-9},
+        {"t_end 1e-9 s", MECH_EARTH_GM, 7e6, 0.1, 1e-9},
         {"sun-earth, 1 year", 1.32712440018e20, 1.471e11, 0.0167, 3.15581e7},
-        {"e = 0.999, 1 orbit", 1.0, 1.0, 0.999, 2 * PI * pow(1.0 / 0.001, 1.5)},
-        {"hyperbolic e = 3", 3.986004418e14, 7e6, 3.0, 5e4},
-        {"micro scale", 1e-20, 1e-9, 0.6, 2 * PI * sqrt(pow(1e-9 / 0.4, 3) / 1e-20) * 3},
+        {"e = 0.999, 1 orbit", 1.0, 1.0, 0.999, 2 * MECH_PI * pow(1.0 / 0.001, 1.5)},
+        {"hyperbolic e = 3", MECH_EARTH_GM, 7e6, 3.0, 5e4},
+        {"micro scale", 1e-20, 1e-9, 0.6, 2 * MECH_PI * sqrt(pow(1e-9 / 0.4, 3) / 1e-20) * 3},
     };
     for (size_t k = 0; k < sizeof sc / sizeof sc[0]; k++) {
         f.u.central_gravity.gm = sc[k].gm;

@@ -9,9 +9,9 @@
 #include <string.h>
 
 #include "mech/radial_infall.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static void test_values(void)
 {
@@ -29,7 +29,7 @@ static void test_values(void)
         CHECK_CLOSE(f.horizon_to_singularity, t[i].h2s, 1e-15, 0);
         /* Newton: a radial Kepler orbit of semi-major axis r0/2 falls in half a period,
          * (1/2) 2π sqrt((r0/2)³/GM) = (π/2) sqrt(r0³/2): the same number. */
-        CHECK_CLOSE(f.to_singularity, 0.5 * PI * t[i].r0 * sqrt(t[i].r0 / 2.0), 4e-16, 0);
+        CHECK_CLOSE(f.to_singularity, 0.5 * MECH_PI * t[i].r0 * sqrt(t[i].r0 / 2.0), 4e-16, 0);
         CHECK_CLOSE(f.to_horizon + f.horizon_to_singularity, f.to_singularity, 1e-15, 0);
     }
     /* Far out: horizon to r = 0 tends to (4/3) GM/c³ (s → 0: A · 2 · (2/3) s³ = 4/3). */
@@ -38,7 +38,7 @@ static void test_values(void)
     CHECK_CLOSE(f.horizon_to_singularity, 4.0 / 3.0, 1e-15, 0);
     /* Just outside the horizon: τ(2M → 0) → π M, τ(r0 → 2M) → 0. */
     CHECK_EQ_INT(mech_radial_infall_from_rest(2.0 * (1 + 1e-12), &f, NULL), MECH_OK);
-    CHECK_CLOSE(f.horizon_to_singularity, PI, 1e-5, 0);
+    CHECK_CLOSE(f.horizon_to_singularity, MECH_PI, 1e-5, 0);
     CHECK(f.to_horizon < 1e-5);
 }
 

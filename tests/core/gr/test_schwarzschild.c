@@ -9,11 +9,9 @@
 #include <string.h>
 
 #include "mech/schwarzschild.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Binding efficiency 1 - E of circular orbits (50-digit Decimal of
  * 1 - (1 - 2/r)/sqrt(1 - 3/r)): r = 1e6: 4.99999624998312495e-7 (the direct
@@ -44,7 +42,7 @@ static void test_binding_and_uniform_field(void)
      * radius must allow a circular orbit, so compare at r = R + 22.5 m with the
      * static part only (gravitational). */
     struct mech_schw_clock_compare cc;
-    const double m = 3.986004418e14 / (299792458.0 * 299792458.0);
+    const double m = MECH_EARTH_GM / (MECH_C * MECH_C);
     CHECK_EQ_INT(mech_schw_clock_compare(6371000.0, 6371022.5, m, &cc, NULL), MECH_OK);
     CHECK_CLOSE(cc.uniform_field_gravitational, m * 22.5 / (6371000.0 * 6371000.0), 4e-16, 0);
     CHECK_CLOSE(cc.uniform_field_gravitational, cc.gravitational, 1e-5, 0);
@@ -89,7 +87,7 @@ int main(void)
     CHECK_CLOSE(co.energy, sqrt(8.0 / 9.0), 1e-15, 0);
     CHECK_CLOSE(co.angular_momentum, sqrt(12.0), 1e-15, 0);
     CHECK_CLOSE(co.local_speed, 0.5, 1e-15, 0);
-    CHECK_CLOSE(co.period_t, 2 * M_PI * pow(6.0, 1.5), 1e-15, 0);
+    CHECK_CLOSE(co.period_t, 2 * MECH_PI * pow(6.0, 1.5), 1e-15, 0);
     /* the circular E and L sit at the extremum of V: V(r) = E^2, V'(r) = 0 */
     CHECK(mech_schw_circular_orbit(10.0, &co, NULL) == MECH_OK);
     CHECK(co.stability == MECH_SCHW_ORBIT_STABLE);
@@ -133,7 +131,7 @@ int main(void)
     /* GPS: ground R = 6371 km, orbit r = 26561.75 km, GM_earth = 3.986004418e14,
      * c = 299792458; references from mpmath at 40 digits: +45.719163359084836,
      * -7.2131245668393341, +38.506038792245501 us/day */
-    const double c = 299792458.0, GMe = 3.986004418e14, m = GMe / (c * c);
+    const double c = MECH_C, GMe = MECH_EARTH_GM, m = GMe / (c * c);
     struct mech_schw_clock_compare cc;
     CHECK(mech_schw_clock_compare(6371000.0, 26561750.0, m, &cc, NULL) == MECH_OK);
     const double day = 86400e6;
@@ -216,7 +214,7 @@ int main(void)
         /* Pound-Rebka closed form: g h / c^2 with g = GM/R^2, to O(h/R) ~ 3.5e-6 */
         CHECK(mech_schw_clock_compare(6371000.0, 6371022.5, mE, &cc, NULL) == MECH_OK);
         CHECK_CLOSE(cc.gravitational,
-                    3.986004418e14 / (6371000.0 * 6371000.0) * 22.5 / (299792458.0 * 299792458.0),
+                    MECH_EARTH_GM / (6371000.0 * 6371000.0) * 22.5 / (MECH_C * MECH_C),
                     1e-5, 0);
     }
     TEST_MAIN_END();

@@ -11,9 +11,9 @@
 #include <string.h>
 
 #include "mech/hamiltonian.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static struct mech_budget budget(void)
 {
@@ -43,7 +43,7 @@ static enum mech_status run(const struct mech_ham_system *s, const double *y0, d
 static void test_oscillator(void)
 {
     struct mech_ham_system s = {.kind = MECH_HAM_OSCILLATOR, .dof = 1, .mass = 2.0, .k = {8.0}};
-    const double w = 2.0, q0 = 0.3, p0 = 0.4, T = 10 * PI; /* 10 periods */
+    const double w = 2.0, q0 = 0.3, p0 = 0.4, T = 10 * MECH_PI; /* 10 periods */
     const double y0[2] = {q0, p0};
     const char *methods[] = {"gauss6", "yoshida6", "gauss4"};
     const double dts[] = {0.01, 0.01, 0.002};
@@ -156,28 +156,28 @@ static void test_central(void)
         const double n = ns[i], K = n > 0 ? 0.7 : -0.7, m = 1.3, r0 = 2.0;
         struct mech_ham_system s = {.kind = MECH_HAM_CENTRAL, .mass = m, .strength = K, .power = n};
         const double pphi = sqrt(m * K * n * pow(r0, n + 2.0));
-        const double T = 2.0 * PI * m * r0 * r0 / pphi;
+        const double T = 2.0 * MECH_PI * m * r0 * r0 / pphi;
         const double y0[4] = {r0, 0.0, 0.0, pphi};
         double y[4];
         struct mech_ham_flow_result r;
         struct mech_error e;
         CHECK_EQ_INT(run(&s, y0, T, "gauss6", T / 2000, y, &r, &e), MECH_OK);
         CHECK_CLOSE(y[0], r0, 1e-12, 0);
-        CHECK_CLOSE(y[1], 2.0 * PI, 1e-12, 0);
+        CHECK_CLOSE(y[1], 2.0 * MECH_PI, 1e-12, 0);
         CHECK(r.conserved_drift[0].max_abs == 0.0);
     }
     /* Earth around the Sun, SI: one sidereal year for a circular 1 au orbit */
     const double GM = 1.32712440018e20, me = 5.9722e24, au = 1.495978707e11;
     struct mech_ham_system s = {.kind = MECH_HAM_CENTRAL, .mass = me, .strength = -GM * me,
                                 .power = -1.0};
-    const double pphi = me * sqrt(GM * au), T = 2.0 * PI * sqrt(au * au * au / GM);
+    const double pphi = me * sqrt(GM * au), T = 2.0 * MECH_PI * sqrt(au * au * au / GM);
     const double y0[4] = {au, 0.0, 0.0, pphi};
     double y[4];
     struct mech_ham_flow_result r;
     struct mech_error e;
     CHECK_EQ_INT(run(&s, y0, T, "gauss6", T / 1000, y, &r, &e), MECH_OK);
     CHECK_CLOSE(y[0], au, 1e-12, 0);
-    CHECK_CLOSE(y[1], 2.0 * PI, 1e-12, 0);
+    CHECK_CLOSE(y[1], 2.0 * MECH_PI, 1e-12, 0);
     CHECK(r.energy.max_rel < 1e-13);
     CHECK(isfinite(mech_ham_time_scale(&s, y0)));
     /* r <= 0 at the start: a domain error; a radial fall: a typed numerical error */
@@ -205,7 +205,7 @@ static void test_potential_3d_and_hh(void)
     double y[6];
     struct mech_ham_flow_result r;
     struct mech_error e;
-    CHECK_EQ_INT(run(&s, y0, 2.0 * PI, "yoshida6", 2.0 * PI / 4000, y, &r, &e), MECH_OK);
+    CHECK_EQ_INT(run(&s, y0, 2.0 * MECH_PI, "yoshida6", 2.0 * MECH_PI / 4000, y, &r, &e), MECH_OK);
     for (int i = 0; i < 6; i++) CHECK_CLOSE(y[i], y0[i], 0, 1e-10);
     CHECK_EQ_INT(r.n_conserved, 3);
     CHECK(r.conserved_drift[2].max_rel < 1e-13);

@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "mech/liouville.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 enum { NS = 5 };
 
@@ -47,7 +47,7 @@ static void test_oscillator_1000_periods(void)
      * sqrt(2E/k) = 0.5 and sqrt(2mE) = 2, area pi a b = 2 pi E / omega = pi */
     struct mech_ham_system s = {.kind = MECH_HAM_OSCILLATOR, .dof = 1, .mass = 2.0, .k = {8.0}};
     const double c[2] = {0.0, 0.0}, u[2] = {0.5, 0.0}, w[2] = {0.0, 2.0};
-    const double T = PI; /* period 2 pi / omega */
+    const double T = MECH_PI; /* period 2 pi / omega */
     struct mech_liouville_problem p = {.sys = &s, .t_end = 1000 * T, .shape = MECH_LIOUVILLE_ELLIPSE,
                                        .center = c, .axis_u = u, .axis_w = w, .tol = 1e-12,
                                        .max_intervals = 64};
@@ -58,12 +58,12 @@ static void test_oscillator_1000_periods(void)
         p.t_end = (m == 0 || m == 3 ? 1000 : 100) * T;
         run(&p, sym[m], T / (m == 0 ? 10 : 20), &o);
         CHECK_EQ_INT(o.st, MECH_OK);
-        CHECK_CLOSE(o.r.area0, PI, 1e-15, 0);
+        CHECK_CLOSE(o.r.area0, MECH_PI, 1e-15, 0);
         CHECK(o.r.converged);
         CHECK(o.r.max_rel_area_drift < 1e-10);
         CHECK(o.r.max_det_drift < 1e-10);
         CHECK(o.r.max_symplectic_defect < 1e-10);
-        CHECK_CLOSE(o.area[NS - 1], PI, 1e-10, 0);
+        CHECK_CLOSE(o.area[NS - 1], MECH_PI, 1e-10, 0);
         CHECK(isnan(o.vertex[0]));
         CHECK_EQ_INT(o.r.second_order, m >= 2);
         fprintf(stderr, "[%.2f s] oscillator %s: area drift %.3g, det drift %.3g, bound %.3g, %zu intervals\n",
@@ -81,7 +81,7 @@ static void test_oscillator_1000_periods(void)
     /* rk4's one-step amplification for y' = i w y: |R(i x)|^2 = 1 - x^6/72 + x^8/576, x = w h;
      * the area scales by |R|^2 per step, exactly (the flow is linear) */
     const double x = 2.0 * T / 10, R2 = 1.0 - pow(x, 6) / 72.0 + pow(x, 8) / 576.0;
-    CHECK_CLOSE(o.area[NS - 1], PI * pow(R2, 10000), 1e-9, 0);
+    CHECK_CLOSE(o.area[NS - 1], MECH_PI * pow(R2, 10000), 1e-9, 0);
     CHECK_CLOSE(o.det[NS - 1], pow(R2, 10000), 1e-9, 0);
 }
 
@@ -142,7 +142,7 @@ static void test_henon_heiles_loop(void)
     struct run_out o;
     run(&p, "gauss6", 0.02, &o);
     CHECK_EQ_INT(o.st, MECH_OK);
-    CHECK_CLOSE(o.r.area0, PI * (0.02 * 0.02 - 0.01 * 0.015), 1e-14, 0);
+    CHECK_CLOSE(o.r.area0, MECH_PI * (0.02 * 0.02 - 0.01 * 0.015), 1e-14, 0);
     CHECK(o.r.max_rel_area_drift < 1e-10);
     CHECK(o.r.max_det_drift < 1e-12);
     CHECK(o.r.max_symplectic_defect < 1e-11);

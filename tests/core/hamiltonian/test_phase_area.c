@@ -11,9 +11,9 @@
 #include <string.h>
 
 #include "mech/phase_area.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static void test_pendulum(void)
 {
@@ -39,8 +39,8 @@ static void test_pendulum(void)
     struct mech_phase_area p;
     const double e = 2 * m * g * l * 1e-20;
     CHECK_EQ_INT(mech_phase_area_pendulum(m, l, g, e, &p, NULL), MECH_OK);
-    CHECK_CLOSE(p.area, 2 * PI * e / w0, 1e-15, 0);
-    CHECK_CLOSE(p.period, 2 * PI / w0, 1e-15, 0);
+    CHECK_CLOSE(p.area, 2 * MECH_PI * e / w0, 1e-15, 0);
+    CHECK_CLOSE(p.period, 2 * MECH_PI / w0, 1e-15, 0);
     CHECK_CLOSE(p.amplitude, 2e-10, 1e-15, 0);
     /* Separatrix: A = 16 m l² ω0 (scipy: 184.12865067663967), T infinite. */
     CHECK_EQ_INT(mech_phase_area_pendulum(m, l, g, 2 * m * g * l, &p, NULL), MECH_OK);
@@ -55,8 +55,8 @@ static void test_oscillator(void)
     /* m = 2, ω = 3, E = 9: an ellipse of semi-axes sqrt(2mE) = 6 and sqrt(2E/m)/ω = 1,
      * area 6π = 2πE/ω; T = 2π/3; amplitude 1. */
     CHECK_EQ_INT(mech_phase_area_oscillator(2, 3, 9, &p, NULL), MECH_OK);
-    CHECK_CLOSE(p.area, 6 * PI, 1e-15, 0);
-    CHECK_CLOSE(p.period, 2 * PI / 3, 1e-15, 0);
+    CHECK_CLOSE(p.area, 6 * MECH_PI, 1e-15, 0);
+    CHECK_CLOSE(p.period, 2 * MECH_PI / 3, 1e-15, 0);
     CHECK_CLOSE(p.amplitude, 1.0, 1e-15, 0);
 }
 

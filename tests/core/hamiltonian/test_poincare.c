@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "mech/poincare.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 enum { MAXC = 400 };
 
@@ -110,7 +110,7 @@ static void test_spherical_pendulum(void)
     CHECK_EQ_INT(a.st, MECH_OK);
     CHECK_EQ_INT(a.r.n_crossings, 30);
     for (size_t k = 0; k < 30; k++) {
-        CHECK_CLOSE(a.t[k], (2.0 * PI * (double)(k + 1) - 0.3) / w, 1e-12, 0);
+        CHECK_CLOSE(a.t[k], (2.0 * MECH_PI * (double)(k + 1) - 0.3) / w, 1e-12, 0);
         CHECK_CLOSE(a.u[k], th0, 0, 1e-12);
         CHECK_CLOSE(a.v[k], 0.0, 0, 1e-12);
     }
@@ -137,14 +137,14 @@ static void test_apsides(void)
     struct mech_ham_system s = {.kind = MECH_HAM_CENTRAL, .mass = 1.0, .strength = -1.0,
                                 .power = -1.0};
     const double y0[4] = {1.0, 0.0, 0.0, 1.1};
-    const double E = 0.5 * 1.21 - 1.0, a = 1.0 / (2.0 * fabs(E)), T = 2.0 * PI * sqrt(a * a * a);
+    const double E = 0.5 * 1.21 - 1.0, a = 1.0 / (2.0 * fabs(E)), T = 2.0 * MECH_PI * sqrt(a * a * a);
     const struct mech_poincare_section peri = {2, 0.0, 0}; /* p_r = 0 rising: pericentre */
     static struct pc_out o;
     run(&s, peri, y0, 1e4, 10, "gauss6", T / 2000, 0, &o, 10000000);
     CHECK_EQ_INT(o.st, MECH_OK);
     for (size_t k = 0; k < 10; k++) {
         CHECK_CLOSE(o.t[k], T * (double)(k + 1), 1e-11, 0);
-        CHECK_CLOSE(o.y[4 * k + 1], 2.0 * PI * (double)(k + 1), 1e-11, 0);
+        CHECK_CLOSE(o.y[4 * k + 1], 2.0 * MECH_PI * (double)(k + 1), 1e-11, 0);
         CHECK_CLOSE(o.y[4 * k], 1.0, 1e-11, 0);
     }
     /* near-circular power laws: pericentre to pericentre 2 pi / sqrt(n + 2) (Goldstein §3.6) */
@@ -155,13 +155,13 @@ static void test_apsides(void)
                                     .power = n};
         const double pc = sqrt(K * n * pow(r0, n + 2.0));
         const double y[4] = {r0, 0.0, 1e-5, pc}; /* a small radial kick: e ~ 1e-5 */
-        const double Tphi = 2.0 * PI * r0 * r0 / pc;
+        const double Tphi = 2.0 * MECH_PI * r0 * r0 / pc;
         run(&c, peri, y, 1e4, 3, "gauss6", Tphi / 2000, 0, &o, 10000000);
         CHECK_EQ_INT(o.st, MECH_OK);
         const double dphi = (o.y[4 * 2 + 1] - o.y[4 * 0 + 1]) / 2.0;
-        CHECK_CLOSE(dphi / 2.0, PI / sqrt(n + 2.0), 1e-8, 0);
+        CHECK_CLOSE(dphi / 2.0, MECH_PI / sqrt(n + 2.0), 1e-8, 0);
         fprintf(stderr, "n = %g: apsidal angle %.15g, pi/sqrt(n+2) = %.15g\n", n, dphi / 2.0,
-                PI / sqrt(n + 2.0));
+                MECH_PI / sqrt(n + 2.0));
     }
 }
 

@@ -12,11 +12,9 @@
 #include <string.h>
 
 #include "mech/small_oscillations.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static double veff(const struct mech_potential_term *t, size_t n, double m, double l, double r)
 {
@@ -37,7 +35,7 @@ static void test_power_laws(void)
         double m = 2.5, r0 = 1.7;
         CHECK(mech_orbit_oscillation(&t, 1, m, r0, &o, &e) == MECH_OK);
         CHECK(o.stable);
-        CHECK_CLOSE(o.apsidal_angle, M_PI / sqrt(n + 2), 4e-16, 0);
+        CHECK_CLOSE(o.apsidal_angle, MECH_PI / sqrt(n + 2), 4e-16, 0);
         CHECK_CLOSE(o.omega_r / o.omega_phi, sqrt(n + 2), 4e-16, 0);
         /* second method: V_eff'(r0) = 0 and V_eff''(r0) = k_eff by differences */
         double h = 1e-4 * r0, l = o.angular_momentum;
@@ -53,12 +51,12 @@ static void test_kepler_and_oscillator(void)
 {
     struct mech_error e;
     struct mech_orbit_oscillation o;
-    const double gm = 3.986004418e14, m = 1000, r0 = 7e6;
+    const double gm = MECH_EARTH_GM, m = 1000, r0 = 7e6;
     struct mech_potential_term kep = {-gm * m, -1};
     CHECK(mech_orbit_oscillation(&kep, 1, m, r0, &o, &e) == MECH_OK);
     CHECK_CLOSE(o.omega_phi, sqrt(gm / (r0 * r0 * r0)), 1e-15, 0);
     CHECK_CLOSE(o.omega_r, o.omega_phi, 1e-15, 0);
-    CHECK_CLOSE(o.apsidal_angle, M_PI, 1e-15, 0);
+    CHECK_CLOSE(o.apsidal_angle, MECH_PI, 1e-15, 0);
     CHECK_CLOSE(o.energy, -gm * m / (2 * r0), 1e-15, 0);
     CHECK_CLOSE(o.angular_momentum, m * sqrt(gm * r0), 1e-15, 0);
     const double w = 3;
@@ -66,13 +64,13 @@ static void test_kepler_and_oscillator(void)
     CHECK(mech_orbit_oscillation(&osc, 1, m, 2, &o, &e) == MECH_OK);
     CHECK_CLOSE(o.omega_phi, w, 1e-15, 0);
     CHECK_CLOSE(o.omega_r, 2 * w, 1e-15, 0);
-    CHECK_CLOSE(o.apsidal_angle, M_PI / 2, 1e-15, 0);
+    CHECK_CLOSE(o.apsidal_angle, MECH_PI / 2, 1e-15, 0);
     CHECK_CLOSE(o.energy, m * w * w * 4, 1e-15, 0);
     /* Kepler + eps/r^2 at r0 = 1 (m = 1, GM = 1): pi sqrt(1 - 2 eps) */
     for (double eps = -0.2; eps < 0.3; eps += 0.05) {
         struct mech_potential_term two[2] = {{-1, -1}, {eps, -2}};
         CHECK(mech_orbit_oscillation(two, 2, 1, 1, &o, &e) == MECH_OK);
-        CHECK_CLOSE(o.apsidal_angle, M_PI * sqrt(1 - 2 * eps), 1e-15, 0);
+        CHECK_CLOSE(o.apsidal_angle, MECH_PI * sqrt(1 - 2 * eps), 1e-15, 0);
     }
     /* unstable: V = k r^-3, k < 0: k_eff = V'' + 3V'/r = V' (n + 2)/r < 0 */
     struct mech_potential_term un = {-1, -3};
@@ -114,11 +112,11 @@ static void test_conical(void)
         double fprime = (4 * (F(a + d / 2) - F(a - d / 2)) / d - (F(a + d) - F(a - d)) / (2 * d)) / 3;
 #undef F
         CHECK_CLOSE(c.omega_theta * c.omega_theta, -fprime, 1e-8, 0);
-        CHECK_CLOSE(c.apsidal_angle, M_PI * c.phi_dot / c.omega_theta, 1e-15, 0);
+        CHECK_CLOSE(c.apsidal_angle, MECH_PI * c.phi_dot / c.omega_theta, 1e-15, 0);
         CHECK_CLOSE(c.speed, l * sin(a) * sqrt(g / (l * cos(a))), 1e-15, 0);
     }
     mech_error_clear(&e);
-    CHECK(mech_conical_pendulum(l, g, M_PI / 2, &c, &e) == MECH_EINVAL);
+    CHECK(mech_conical_pendulum(l, g, MECH_PI / 2, &c, &e) == MECH_EINVAL);
     CHECK(!strcmp(e.param, "angle"));
 }
 
@@ -142,7 +140,7 @@ static void test_physical(void)
     CHECK_CLOSE(p.omega, sqrt(2 * g / (3 * R)), 1e-15, 0); /* in plane: I = 3/2 m R^2 */
     CHECK(mech_physical_pendulum(m, disc, d, mech_vec3_make(-2, 0, 0), g, &p, &e) == MECH_OK);
     CHECK_CLOSE(p.omega, sqrt(4 * g / (5 * R)), 1e-15, 0); /* out of plane: 5/4 m R^2 */
-    CHECK_CLOSE(p.period, 2 * M_PI * sqrt(5 * R / (4 * g)), 1e-15, 0);
+    CHECK_CLOSE(p.period, 2 * MECH_PI * sqrt(5 * R / (4 * g)), 1e-15, 0);
     mech_error_clear(&e);
     CHECK(mech_physical_pendulum(m, disc, d, mech_vec3_make(0, 0, 1), g, &p, &e) == MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "offset"));
@@ -159,7 +157,7 @@ static void test_foucault(void)
     struct mech_foucault_modes f;
     struct mech_error e;
     mech_error_clear(&e);
-    const double l = 67, g = 9.80665, w = 7.2921159e-5, lat = 32 * M_PI / 180;
+    const double l = 67, g = 9.80665, w = 7.2921159e-5, lat = 32 * MECH_PI / 180;
     CHECK(mech_foucault_modes(l, g, w, lat, &f, &e) == MECH_OK);
     CHECK_CLOSE(f.omega_z, w * sin(lat), 1e-15, 0);
     double a1 = f.ccw, a2 = -f.cw;
@@ -170,7 +168,7 @@ static void test_foucault(void)
     double om = 0.05 * sqrt(g / l) / sin(lat);
     CHECK(mech_foucault_modes(l, g, om, lat, &f, &e) == MECH_OK);
     double s[4] = {1, 0, 0, 0}, h = 1e-3, oz = f.omega_z, w0 = g / l, t = 0;
-    int n = (int)(2 * M_PI / f.swing * 10 / h); /* ten swing periods */
+    int n = (int)(2 * MECH_PI / f.swing * 10 / h); /* ten swing periods */
     for (int k = 0; k < n; k++, t += h) {
         double k1[4], k2[4], k3[4], k4[4], y[4];
 #define RHS(o, q) (o[0] = q[2], o[1] = q[3], o[2] = -w0 * q[0] + 2 * oz * q[3], \

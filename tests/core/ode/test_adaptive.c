@@ -21,10 +21,10 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 static const char *const ADAPTIVE[] = {"rk8pd", "rkck", "rkf45", "radau15", "msbdf"};
 enum { N_ADAPTIVE = 5 };
 
@@ -72,7 +72,7 @@ static enum mech_status kep_rhs(double t, const double *y, double *dydt, void *p
 static void kep_exact(double t, double *y)
 {
     const double e = KEP_E;
-    const double M = remainder(t, 2.0 * PI);
+    const double M = remainder(t, 2.0 * MECH_PI);
     double E = M + e * sin(M);
     for (int i = 0; i < 50; i++) {
         const double dE = (E - e * sin(E) - M) / (1.0 - e * cos(E));
@@ -107,7 +107,7 @@ static struct scene scene_ho(void)
                       {2, ho_rhs, ho_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 1, NULL},
                       ho_exact,
                       {1.0, 0.0},
-                      2.0 * PI};
+                      2.0 * MECH_PI};
     return s;
 }
 static struct scene scene_kepler(void)
@@ -116,7 +116,7 @@ static struct scene scene_kepler(void)
                       {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, NULL, 3, NULL},
                       kep_exact,
                       {1.0 - KEP_E, 0.0, 0.0, 0.0, sqrt((1.0 + KEP_E) / (1.0 - KEP_E)), 0.0},
-                      2.0 * PI};
+                      2.0 * MECH_PI};
     return s;
 }
 
@@ -225,7 +225,7 @@ static void test_radau15_kepler_long(void)
     const double *yf = r1.ys + (NS - 1) * 6;
     const double E0 = kep_energy(sc.y0), dE = fabs((kep_energy(yf) - E0) / E0);
     double ye[6];
-    kep_exact(1000.0 * 2.0 * PI, ye);
+    kep_exact(1000.0 * 2.0 * MECH_PI, ye);
     const double pos = hypot(yf[0] - ye[0], yf[1] - ye[1]);
     printf("radau15 kepler e=0.5 1000 orbits rtol=1e-16: |dE/E| = %.3e, position error %.3e, "
            "max sample error %.3e, steps %ld, rejected %ld, evals %ld, cpu %.1f ms\n",
@@ -287,7 +287,7 @@ static void test_radau15_velocity_dependent(void)
 {
     struct scene sc = {
         "damped", {2, damped_rhs, damped_accel, 0, NULL, NULL, 1, NULL}, damped_exact, {1.0, 0.0},
-        2.0 * PI};
+        2.0 * MECH_PI};
     static struct run r;
     run_scene(&sc, "radau15", 1e-12, 0.0, 5.0, NS, &r);
     CHECK_EQ_INT(r.st, MECH_OK);
@@ -510,8 +510,8 @@ static void test_event(void)
         CHECK_EQ_INT(mech_ode_solve(&p, &b, &r, NULL), MECH_OK);
         CHECK(r.stopped == 1);
         printf("%s: event t = %.17g (pi/2 rel err %.2e)\n", ADAPTIVE[m], r.t_stop,
-               fabs(r.t_stop - PI / 2) / (PI / 2));
-        CHECK_CLOSE(r.t_stop, PI / 2, 1e-10, 0);
+               fabs(r.t_stop - MECH_PI / 2) / (MECH_PI / 2));
+        CHECK_CLOSE(r.t_stop, MECH_PI / 2, 1e-10, 0);
         CHECK_CLOSE(ystop[1], -1.0, m == 4 ? 1e-9 : 1e-10, 0);
         CHECK_EQ_INT(r.n_samples, 2); /* t = 0, 1 */
     }
@@ -544,7 +544,7 @@ static void test_scales(void)
             p.method = mech_ode_method_find(names[m]);
             p.opt.rtol = 1e-12;
             p.opt.atol = 1e-14 * w;
-            p.t_end = 2.0 * PI / w;
+            p.t_end = 2.0 * MECH_PI / w;
             p.y0 = y0;
             p.n_samples = 2;
             p.sample_y = ys;

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "mech/chooser.h"
+#include "mech/constants.h"
 #include "mech/scenes.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
@@ -24,7 +25,6 @@
 #define CHOOSER_UNDER 30.0
 #define CHOOSER_OVER 100.0
 #define NS 101
-#define T_PI 3.14159265358979323846
 
 struct scene {
     const char *name;
@@ -42,7 +42,7 @@ static void kepler(struct scene *s, const char *name, double e, double orbits)
     s->p.mass = 1.0;
     s->p.position = mech_vec3_make(1.0 - e, 0, 0);
     s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
-    s->p.t_end = orbits * 2.0 * T_PI;
+    s->p.t_end = orbits * 2.0 * MECH_PI;
     s->exact = 1;
 }
 
@@ -55,7 +55,7 @@ static void oscillator(struct scene *s)
     s->p.mass = 1.0;
     s->p.position = mech_vec3_make(1, 0, 0);
     s->p.velocity = mech_vec3_make(0, 0.5, 0);
-    s->p.t_end = 1e4 * 2.0 * T_PI;
+    s->p.t_end = 1e4 * 2.0 * MECH_PI;
     s->exact = 1;
 }
 
@@ -252,7 +252,7 @@ static void test_span_from_apocentre(void)
         sc[k]->p.closed_form_off = 1;
         CHECK(mech_trajectory_choose(&sc[k]->p, 1e-11, ch[k], NULL) == MECH_OK);
     }
-    const double span = 20.0 * T_PI / pow(0.1, 1.5);
+    const double span = 20.0 * MECH_PI / pow(0.1, 1.5);
     printf("  span from pericentre %.6g, from apocentre %.6g (expected %.6g); floor %.3g, %.3g\n",
            cp.profile.span, ca.profile.span, span, cp.sel.roundoff_floor, ca.sel.roundoff_floor);
     CHECK(fabs(cp.profile.span / span - 1.0) < 1e-9);

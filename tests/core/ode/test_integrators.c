@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "testlib.h"
 
@@ -427,7 +428,7 @@ static void test_scales(void)
         p.method = mech_ode_method_find("rk8pd");
         p.opt.rtol = 1e-12;
         p.opt.atol = 1e-14 * w;
-        p.t_end = 2.0 * 3.14159265358979323846 / w;
+        p.t_end = 2.0 * MECH_PI / w;
         p.y0 = y0;
         p.n_samples = 2;
         p.sample_y = ys;

@@ -35,10 +35,10 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 static const char *const FIXED[] = {"euler",    "symplectic_euler", "rk4",
                                     "verlet",   "yoshida4",         "yoshida6",
@@ -99,7 +99,7 @@ static double kep_energy(const double *y)
 static const double KEP_E = 0.5;
 static void kep_exact(double t, double *y)
 {
-    const double e = KEP_E, M = fmod(t, 2.0 * PI);
+    const double e = KEP_E, M = fmod(t, 2.0 * MECH_PI);
     double E = M + e * sin(M);
     for (int it = 0; it < 50; it++) {
         double dE = (E - e * sin(E) - M) / (1.0 - e * cos(E));
@@ -188,7 +188,7 @@ static void problems_init(void)
         ho_exact, ho_energy, 10.0};
     problems[1] = (struct problem){
         "kepler e=0.5", {6, kep_rhs, kep_accel, MECH_ODE_VELOCITY_FREE, NULL, kep_lorentz, 3, NULL},
-        kep_exact, kep_energy, 2.5 * PI};
+        kep_exact, kep_energy, 2.5 * MECH_PI};
     problems[2] = (struct problem){
         "rotating frame", {6, rot_rhs, rot_accel, 0, NULL, rot_lorentz, 3, NULL}, rot_exact, NULL, 5.0};
 }
@@ -312,7 +312,7 @@ static void test_cost(void)
     const struct problem *pb = &problems[1];
     printf("\ncost per step on Kepler e = 0.5, h = P/400:\n");
     for (int mi = 0; mi < N_FIXED; mi++) {
-        struct outcome o = run(FIXED[mi], pb, 2.0 * PI / 400.0, 2.0 * PI, 0);
+        struct outcome o = run(FIXED[mi], pb, 2.0 * MECH_PI / 400.0, 2.0 * MECH_PI, 0);
         CHECK_EQ_INT(o.st, MECH_OK);
         const double per = (double)o.stats.rhs_evaluations / (double)o.stats.steps;
         printf("  %-16s %6.2f evaluations/step\n", FIXED[mi], per);
@@ -349,8 +349,8 @@ static void test_energy(void)
         const double steps_per_orbit = is_euler                                 ? 20000.0
                                        : !strcmp(m->name, "symplectic_euler") ? 500.0
                                                                               : 200.0;
-        const double t_end = orbits * 2.0 * PI;
-        struct outcome o = run(m->name, kp, 2.0 * PI / steps_per_orbit, t_end, 1);
+        const double t_end = orbits * 2.0 * MECH_PI;
+        struct outcome o = run(m->name, kp, 2.0 * MECH_PI / steps_per_orbit, t_end, 1);
         CHECK_EQ_INT(o.st, MECH_OK);
         printf("  kepler %6.0f orbits, %6.0f steps/orbit  %-16s %10.3e / %10.3e (ratio %.2f), "
                "final %.3e\n",
@@ -372,13 +372,13 @@ static void test_energy(void)
         const int is_euler = !strcmp(m->name, "euler");
         const double periods = is_euler ? 10.0 : 1e4;
         const double spp = is_euler ? 1000.0 : 20.37;
-        struct outcome o = run(m->name, hp, 2.0 * PI / spp, periods * 2.0 * PI, 1);
+        struct outcome o = run(m->name, hp, 2.0 * MECH_PI / spp, periods * 2.0 * MECH_PI, 1);
         CHECK_EQ_INT(o.st, MECH_OK);
         printf("  oscillator %6.0f periods, %5.2f steps/period %-16s %10.3e / %10.3e\n", periods,
                spp, m->name, o.drift_early, o.drift_all);
         if (is_euler) {
             /* exact: E_n = E_0 (1 + h^2)^n */
-            const double h = 2.0 * PI / spp, n = periods * spp;
+            const double h = 2.0 * MECH_PI / spp, n = periods * spp;
             CHECK_CLOSE(o.drift_all, pow(1.0 + h * h, n) - 1.0, 1e-9, 0);
         } else if (!strcmp(m->name, "gauss4") || !strcmp(m->name, "gauss6")) {
             CHECK(o.drift_all < 1e-13);
@@ -549,8 +549,8 @@ static void test_step_pure(void)
         struct mech_ode_problem p = {0};
         p.sys = &pb->sys;
         p.method = mech_ode_method_find(FIXED[mi]);
-        p.opt.dt = 2.0 * PI / 300.0;
-        p.t_end = 2.0 * PI * 1.37;
+        p.opt.dt = 2.0 * MECH_PI / 300.0;
+        p.t_end = 2.0 * MECH_PI * 1.37;
         p.y0 = y0;
         struct mech_budget bud = mech_budget_make(1000000, 600.0);
         struct mech_ode_result r1, r2;

@@ -20,10 +20,10 @@
 #include <string.h>
 
 #include "mech/reference.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 
 /* ---- an independent Kepler solution (perifocal frame, long double) ------- */
 
@@ -35,7 +35,7 @@ static void kepler_classic(long double gm, long double a, long double e, long do
 {
     const long double n = sqrtl(gm / (a * a * a)), M = n * t;
     if (e < 1.0L) {
-        const long double twopi = 2.0L * 3.141592653589793238462643383279502884L;
+        const long double twopi = 2.0L * MECH_PI_L;
         long double Mr = fmodl(M, twopi); /* to (-pi, pi]: E - Mr is periodic */
         if (Mr > twopi / 2) Mr -= twopi;
         if (Mr <= -twopi / 2) Mr += twopi;
@@ -108,7 +108,7 @@ static void test_kepler_drift(void)
     };
     for (size_t i = 0; i < sizeof conics / sizeof conics[0]; i++) {
         const double a = conics[i].a, e = conics[i].e;
-        const double P = 2.0 * PI * sqrt(a * a * a);
+        const double P = 2.0 * MECH_PI * sqrt(a * a * a);
         /* starts: near apocentre (or before pericentre for the hyperbola), at
          * a generic phase; steps: 1/100 orbit, 0.37 orbit, 3.7 orbits
          * (ellipses), backwards; across the pericentre */
@@ -143,8 +143,8 @@ static void test_kepler_drift(void)
     mech_error_clear(&err);
     CHECK_EQ_INT(mech_kepler_drift(1.0, r0, v0, 1.0, r, v, NULL, &err), MECH_OK);
     {
-        const double n = 1.0 / sqrt(0.125), tc = PI / n; /* P/2 */
-        double E = PI;                                   /* solve (E - sin E)/n = tc - 1 */
+        const double n = 1.0 / sqrt(0.125), tc = MECH_PI / n; /* P/2 */
+        double E = MECH_PI;                                   /* solve (E - sin E)/n = tc - 1 */
         for (int i = 0; i < 100; i++) E -= (E - sin(E) - n * (tc - 1.0)) / (1.0 - cos(E));
         CHECK_CLOSE(r[0], 0.5 * (1.0 - cos(E)), 1e-12, 0);
         CHECK(r[0] > 0.0 && fabs(r[1]) + fabs(r[2]) == 0.0 && v[0] < 0.0);
@@ -203,7 +203,7 @@ static enum mech_status run(const struct mech_trajectory_problem *p,
  * several orbits per step). */
 static void test_zero_perturbation(void)
 {
-    const double dts[] = {2.0 * PI / 1000.0, 0.37, 2.0 * PI * 0.43, 2.0 * PI * 3.3};
+    const double dts[] = {2.0 * MECH_PI / 1000.0, 0.37, 2.0 * MECH_PI * 0.43, 2.0 * MECH_PI * 3.3};
     for (int ei = 0; ei < 4; ei++) {
         const char *method = ei < 2 ? "wisdom_holman" : "wisdom_holman_corrected";
         const double e = ei % 2 ? 0.9 : 0.5;
@@ -212,7 +212,7 @@ static void test_zero_perturbation(void)
             memset(f, 0, sizeof f);
             struct mech_trajectory_problem p = kepler_problem(e, f, 1);
             p.method = method;
-            p.t_end = 10.0 * 2.0 * PI;
+            p.t_end = 10.0 * 2.0 * MECH_PI;
             p.samples = 101;
             p.opt.dt = dts[k];
             p.reduce_planar = k % 2;
@@ -266,7 +266,7 @@ static void test_order(void)
         f[2].type = MECH_FORCE_LINEAR_DRAG;
         f[2].u.linear_drag.b = 1e-4;
         struct mech_trajectory_problem p = kepler_problem(0.5, f, variant == 2 ? 3 : 2);
-        p.t_end = 10.0 * 2.0 * PI;
+        p.t_end = 10.0 * 2.0 * MECH_PI;
         p.reduce_planar = variant > 0;
         p.method = "rk8pd";
         p.opt.rtol = 1e-14;
@@ -277,11 +277,11 @@ static void test_order(void)
         const struct mech_vec3 rref = pos[p.samples - 1];
         CHECK(r.dimensions == (variant == 0 ? 3 : 2));
         p.method = "wisdom_holman";
-        p.opt.dt = 2.0 * PI / 64.0;
+        p.opt.dt = 2.0 * MECH_PI / 64.0;
         const double e1 = final_error(&p, &rref);
         CHECK_EQ_INT(run(&p, &r, &err), MECH_OK);
         CHECK(r.dimensions == (variant == 0 ? 3 : 2));
-        p.opt.dt = 2.0 * PI / 128.0;
+        p.opt.dt = 2.0 * MECH_PI / 128.0;
         const double e2 = final_error(&p, &rref);
         /* and the unsplit leapfrog (verlet) at the finer dt, for scale */
         p.method = "verlet";
@@ -331,9 +331,9 @@ static void test_energy_bounded(void)
         f[1].u.spring.k = eps;
         struct mech_trajectory_problem p = kepler_problem(0.5, f, 2);
         const size_t per_orbit = 5, orbits = 10000;
-        p.t_end = (double)orbits * 2.0 * PI;
+        p.t_end = (double)orbits * 2.0 * MECH_PI;
         p.samples = per_orbit * orbits + 1;
-        p.opt.dt = 2.0 * PI / 50.0;
+        p.opt.dt = 2.0 * MECH_PI / 50.0;
         p.reduce_planar = 1;
         struct mech_trajectory_result r;
         struct mech_error err;
@@ -368,7 +368,7 @@ static void test_corrected(void)
     f[1].u.third_body_tide.gm = 0.4;
     f[1].u.third_body_tide.position = mech_vec3_make(12.0, 6.0, 14.7);
     struct mech_trajectory_problem p = kepler_problem(0.5, f, 2);
-    p.t_end = 10.0 * 2.0 * PI;
+    p.t_end = 10.0 * 2.0 * MECH_PI;
     p.method = "rk8pd";
     p.opt.rtol = 1e-14;
     struct mech_trajectory_result r;
@@ -377,7 +377,7 @@ static void test_corrected(void)
     const struct mech_vec3 rref = pos[p.samples - 1];
     double plain[2], corr[2];
     for (int k = 0; k < 2; k++) {
-        p.opt.dt = 2.0 * PI / (k ? 128.0 : 64.0);
+        p.opt.dt = 2.0 * MECH_PI / (k ? 128.0 : 64.0);
         p.method = "wisdom_holman";
         plain[k] = final_error(&p, &rref);
         p.method = "wisdom_holman_corrected";
@@ -397,9 +397,9 @@ static void test_corrected(void)
     g[1].u.spring.k = 1e-4;
     struct mech_trajectory_problem q = kepler_problem(0.5, g, 2);
     const size_t per_orbit = 5, orbits = 10000;
-    q.t_end = (double)orbits * 2.0 * PI;
+    q.t_end = (double)orbits * 2.0 * MECH_PI;
     q.samples = per_orbit * orbits + 1;
-    q.opt.dt = 2.0 * PI / 50.0;
+    q.opt.dt = 2.0 * MECH_PI / 50.0;
     q.reduce_planar = 1;
     q.method = "wisdom_holman_corrected";
     CHECK_EQ_INT(run(&q, &r, &err), MECH_OK);

@@ -9,9 +9,9 @@
 #include <string.h>
 
 #include "mech/charged_lagrangian.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double C = 299792458.0;
 
 /* m = 1 kg, q = 2 C, beta = 0.6 x (gamma = 5/4), phi = 3 V, A = (4, 0, 0) T m:
  * L = −c²/γ + q A·v − qφ = −0.8c² + 4.8c − 6; P = (0.75c + 8, 0, 0);
@@ -23,17 +23,17 @@ static void test_closed_form(void)
     struct mech_charged_state s;
     CHECK_EQ_INT(mech_charged_state_compute(1.0, 2.0, &b, 3.0, mech_vec3_make(4, 0, 0), &s, NULL),
                  MECH_OK);
-    CHECK_CLOSE(s.lagrangian, -0.8 * C * C + 4.8 * C - 6, 1e-15, 0);
-    CHECK_CLOSE(s.lagrangian_plus_rest, 0.2 * C * C + 4.8 * C - 6, 1e-15, 0);
-    CHECK_CLOSE(s.canonical_momentum.x, 0.75 * C + 8, 1e-15, 0);
-    CHECK_CLOSE(s.kinetic_momentum.x, 0.75 * C, 1e-15, 0);
-    CHECK_CLOSE(s.hamiltonian, 1.25 * C * C + 6, 1e-15, 0);
-    CHECK_CLOSE(s.hamiltonian_minus_rest, 0.25 * C * C + 6, 1e-15, 0);
+    CHECK_CLOSE(s.lagrangian, -0.8 * MECH_C * MECH_C + 4.8 * MECH_C - 6, 1e-15, 0);
+    CHECK_CLOSE(s.lagrangian_plus_rest, 0.2 * MECH_C * MECH_C + 4.8 * MECH_C - 6, 1e-15, 0);
+    CHECK_CLOSE(s.canonical_momentum.x, 0.75 * MECH_C + 8, 1e-15, 0);
+    CHECK_CLOSE(s.kinetic_momentum.x, 0.75 * MECH_C, 1e-15, 0);
+    CHECK_CLOSE(s.hamiltonian, 1.25 * MECH_C * MECH_C + 6, 1e-15, 0);
+    CHECK_CLOSE(s.hamiltonian_minus_rest, 0.25 * MECH_C * MECH_C + 6, 1e-15, 0);
     CHECK_CLOSE(s.hamiltonian_from_momentum, s.hamiltonian, 1e-15, 0);
     CHECK_CLOSE(s.legendre_residual, 0.0, 0, 1e-15 * s.hamiltonian);
     CHECK_CLOSE(s.potential_energy, 6.0, 0, 0);
     /* The notes' non-relativistic L + mc² = ½ m v² + qA·v − qφ = 0.18c² + 4.8c − 6. */
-    CHECK_CLOSE(s.lagrangian_newtonian_plus_rest, 0.18 * C * C + 4.8 * C - 6, 1e-15, 0);
+    CHECK_CLOSE(s.lagrangian_newtonian_plus_rest, 0.18 * MECH_C * MECH_C + 4.8 * MECH_C - 6, 1e-15, 0);
 }
 
 /* 1 m/s, no fields: L + mc² = mc²(γ − 1)/γ = ½mv²(1 + β²/4 + ...) = 0.5 J
@@ -41,14 +41,14 @@ static void test_closed_form(void)
 static void test_slow(void)
 {
     struct mech_boost b;
-    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(1.0 / C, 0, 0), &b, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(1.0 / MECH_C, 0, 0), &b, NULL), MECH_OK);
     struct mech_charged_state s;
     CHECK_EQ_INT(mech_charged_state_compute(1.0, 0.0, &b, 0, mech_vec3_make(0, 0, 0), &s, NULL),
                  MECH_OK);
     CHECK_CLOSE(s.lagrangian_plus_rest, 0.5, 2e-15, 0);
     CHECK_CLOSE(s.hamiltonian_minus_rest, 0.5, 2e-15, 0);
     CHECK_CLOSE(s.lagrangian_newtonian_plus_rest, 0.5, 2e-15, 0);
-    CHECK_CLOSE(s.lagrangian, -C * C, 1e-16, 0);
+    CHECK_CLOSE(s.lagrangian, -MECH_C * MECH_C, 1e-16, 0);
 }
 
 static void test_uniform_gauge(void)

@@ -151,7 +151,7 @@ int main(void)
 
     /* SI against Heaviside–Lorentz: (E, cB) transforms as the HL (E, B). */
     {
-        const double c = MECH_EM_C;
+        const double c = MECH_C;
         const struct mech_vec3 e = mech_vec3_make(1e3, -2e3, 500);
         const struct mech_vec3 bsi = mech_vec3_make(1e-5, 0, 3e-5);
         CHECK(mech_boost_from_beta(mech_vec3_make(0.2, 0.5, -0.1), &b, NULL) == MECH_OK);

@@ -9,6 +9,7 @@
 #include <stdio.h>
 
 #include "mech/interval.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
 static double worst_s2;
@@ -36,7 +37,7 @@ static void test_muon(void)
 {
     /* Notes §3.4: τ = 2 µs, β = 0.9999: production (0) and decay (γcτ, βγcτ)
      * in the earth frame; the proper time is τ, the co-moving frame has β. */
-    const double c = 299792458.0, ctau = c * 2e-6, b = 0.9999;
+    const double c = MECH_C, ctau = c * 2e-6, b = 0.9999;
     const double g = 1 / sqrt((1 - b) * (1 + b));
     double e1[4] = {0, 0, 0, 0}, e2[4] = {g * ctau, b * g * ctau, 0, 0};
     struct mech_interval iv;

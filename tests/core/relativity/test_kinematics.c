@@ -10,11 +10,11 @@
 #include <stdio.h>
 
 #include "mech/boost.h"
+#include "mech/constants.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
 #include "testlib.h"
 
-static const double PI = 3.14159265358979323846;
 static const double M_PI0 = 134.9768, M_PIC = 139.57039, M_MU = 105.6583755;
 static const double M_P = 938.27208816, M_N = 939.5654205, M_E = 0.51099895000;
 
@@ -55,8 +55,8 @@ static void test_pi0(void)
     CHECK_EQ_INT(mech_kin_motion_from_energy(M_PI0, 40000, &k, NULL), MECH_OK);
     CHECK_EQ_INT(mech_kin_motion_boost(&k, mech_vec3_make(0, 0, 1), &b, NULL), MECH_OK);
     struct mech_kin_lab l1, l2;
-    mech_kin_decay_lab(&b, 0, tb.momentum, tb.energy[0], PI / 2, 0, &l1);
-    mech_kin_decay_lab(&b, 0, tb.momentum, tb.energy[1], PI / 2, 1, &l2);
+    mech_kin_decay_lab(&b, 0, tb.momentum, tb.energy[0], MECH_PI / 2, 0, &l1);
+    mech_kin_decay_lab(&b, 0, tb.momentum, tb.energy[1], MECH_PI / 2, 1, &l2);
     CHECK_CLOSE(l1.energy, 20000, 1e-15, 0);
     CHECK_CLOSE(l2.energy, 20000, 1e-15, 0);
     /* 2 asin(134.9768/40000), decimal: 0.00674885280791332589 */
@@ -66,7 +66,7 @@ static void test_pi0(void)
     double ms[2] = {0, 0}, es[2] = {tb.energy[0], tb.energy[1]}, a, at;
     mech_kin_decay_min_opening(&b, ms, tb.momentum, es, &a, &at);
     CHECK_CLOSE(a, open40, 2e-15, 0);
-    CHECK_CLOSE(at, PI / 2, 1e-6, 0); /* argmin only to ~sqrt(eps) */
+    CHECK_CLOSE(at, MECH_PI / 2, 1e-6, 0); /* argmin only to ~sqrt(eps) */
     note(&worst_decay, a, open40);
 
     /* Ultra-relativistic: βγ = 1e6. Forward photon E*(γ + βγ), backward
@@ -78,7 +78,7 @@ static void test_pi0(void)
     CHECK_CLOSE(l1.energy, 134976800.0000337442, 1e-15, 0);
     CHECK_CLOSE(l2.energy, 3.3744199999991564e-05, 4e-15, 0);
     note(&worst_decay, l2.energy, 3.3744199999991564e-05);
-    CHECK_CLOSE(l2.angle, PI, 1e-16, 0);
+    CHECK_CLOSE(l2.angle, MECH_PI, 1e-16, 0);
     mech_kin_decay_min_opening(&b, ms, tb.momentum, es, &a, &at);
     CHECK_CLOSE(a, 1.9999999999993333e-06, 4e-15, 0);
     note(&worst_decay, a, 1.9999999999993333e-06);
@@ -178,7 +178,7 @@ static void test_neutron(void)
     CHECK_CLOSE(p, t, 0, 0); /* massless: p = T exactly */
 
     double mom[3], en[3], ke[3];
-    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, 2 * PI / 3, 2 * PI / 3, mom, en, ke, NULL),
+    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, 2 * MECH_PI / 3, 2 * MECH_PI / 3, mom, en, ke, NULL),
                  MECH_OK);
     for (int i = 0; i < 3; i++)
         CHECK_CLOSE(mom[i], 0.5456259593574906, 4e-15, 0);
@@ -189,7 +189,7 @@ static void test_neutron(void)
     CHECK_CLOSE(ke[0] + ke[1] + ke[2], 0.78233339000000634566, 4e-16, 0);
     /* Endpoint configuration: neutrino at rest (θ12 = 180°, θ23 = 90°):
      * the electron gets the endpoint energy. */
-    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, PI, PI / 2, mom, en, ke, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, MECH_PI, MECH_PI / 2, mom, en, ke, NULL), MECH_OK);
     CHECK_CLOSE(ke[1], 0.7815821977019556, 4e-15, 0);
     CHECK_CLOSE(mom[2], 0, 0, 1e-15);
 
@@ -201,7 +201,7 @@ static void test_neutron(void)
     CHECK(err.param[0] == 'd');
     struct mech_kin_two_body tb;
     CHECK_EQ_INT(mech_kin_two_body_rest(M_MU, M_PIC, 0, &tb, NULL), MECH_EDOMAIN);
-    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, PI / 3, PI / 3, mom, en, ke, NULL),
+    CHECK_EQ_INT(mech_kin_three_body_planar(M_N, m, MECH_PI / 3, MECH_PI / 3, mom, en, ke, NULL),
                  MECH_EDOMAIN);
     /* Exactly at threshold: everything at rest. */
     CHECK_EQ_INT(mech_kin_two_body_rest(2.0, 1.0, 1.0, &tb, NULL), MECH_OK);
@@ -359,7 +359,7 @@ static void test_compton(void)
     double hc = mech_energy_hc(MECH_MEV);
     double e = hc / 7.09e-11;
     struct mech_kin_compton c;
-    CHECK_EQ_INT(mech_kin_compton(e, M_E, PI / 2, &c, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_compton(e, M_E, MECH_PI / 2, &c, NULL), MECH_OK);
     CHECK_CLOSE(e, 0.017487193008914000, 2e-16, 0);
     CHECK_CLOSE(c.energy_out, 0.016908555473424536, 1e-15, 0);
     CHECK_CLOSE(c.recoil_kinetic, 0.00057863753548946450, 1e-15, 0);
@@ -370,7 +370,7 @@ static void test_compton(void)
     note(&worst_compton, c.recoil_kinetic, 0.00057863753548946450);
     note(&worst_compton, c.recoil_angle, 0.76857681240752840);
     /* Identities: 1/E' − 1/E = (1 − cos θ)/m; energy and momentum conserved. */
-    double ths[4] = {1e-9, 0.3, 2.0, PI};
+    double ths[4] = {1e-9, 0.3, 2.0, MECH_PI};
     double es[3] = {1e-6, 0.5, 5e4};
     for (int i = 0; i < 4; i++) {
         for (int j = 0; j < 3; j++) {
@@ -393,7 +393,7 @@ static void test_compton(void)
     CHECK_CLOSE(c.recoil_kinetic, 0.5 * k / (1 + k), 1e-15, 0);
     CHECK(c.recoil_kinetic > 0);
     /* A proton target; errors. */
-    CHECK_EQ_INT(mech_kin_compton(1.0, M_P, PI, &c, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_compton(1.0, M_P, MECH_PI, &c, NULL), MECH_OK);
     CHECK_CLOSE(c.energy_out, 1.0 / (1 + 2.0 / M_P), 1e-15, 0);
     CHECK_EQ_INT(mech_kin_compton(1.0, 0.0, 1.0, &c, NULL), MECH_EDOMAIN);
     CHECK_EQ_INT(mech_kin_compton(1.0, M_E, 4.0, &c, NULL), MECH_EINVAL);

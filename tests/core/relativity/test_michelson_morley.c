@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mech/michelson_morley.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
 static void test_notes(void)
@@ -25,9 +26,9 @@ static void test_notes(void)
     CHECK_CLOSE(m.fringe_shift, 0.40000000500000009, 1e-14, 0);
     CHECK_CLOSE(m.time_parallel_contracted, m.time_perpendicular, 1e-15, 0);
     /* 1 m/s: d = 2 gamma (gamma - 1) L = L beta^2 (1 + ...) = 11/c^2 m. */
-    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(1 / 299792458.0, 0, 0), &b, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_boost_from_beta(mech_vec3_make(1 / MECH_C, 0, 0), &b, NULL), MECH_OK);
     CHECK_EQ_INT(mech_michelson_morley_compute(11, &b, 0, &m, NULL), MECH_OK);
-    CHECK_CLOSE(m.path_difference, 11.0 / (299792458.0 * 299792458.0), 1e-15, 0);
+    CHECK_CLOSE(m.path_difference, 11.0 / (MECH_C * MECH_C), 1e-15, 0);
     CHECK_CLOSE(m.fringe_shift, 0.0, 0, 0);
 }
 

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "mech/particle_state.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
 static struct mech_particle_state state(double m, enum mech_particle_given g, double x)
@@ -26,7 +27,7 @@ static void test_every_form_agrees(void)
     const double m = 2.0, LN2 = 0.69314718055994530942;
     const struct { enum mech_particle_given g; double x; } forms[] = {
         {MECH_PARTICLE_GIVEN_BETA, 0.6},
-        {MECH_PARTICLE_GIVEN_SPEED, 0.6 * 299792458.0},
+        {MECH_PARTICLE_GIVEN_SPEED, 0.6 * MECH_C},
         {MECH_PARTICLE_GIVEN_GAMMA, 1.25},
         {MECH_PARTICLE_GIVEN_GAMMA_MINUS_ONE, 0.25},
         {MECH_PARTICLE_GIVEN_ONE_MINUS_BETA, 0.4},
@@ -41,7 +42,7 @@ static void test_every_form_agrees(void)
         CHECK_EQ_INT(s.has_rest_frame, 1);
         CHECK_CLOSE(s.beta, 0.6, 4e-16, 0);
         CHECK_CLOSE(s.one_minus_beta, 0.4, 1e-15, 0);
-        CHECK_CLOSE(s.speed, 0.6 * 299792458.0, 4e-16, 0);
+        CHECK_CLOSE(s.speed, 0.6 * MECH_C, 4e-16, 0);
         CHECK_CLOSE(s.gamma, 1.25, 4e-16, 0);
         CHECK_CLOSE(s.gamma_minus_one, 0.25, 1e-15, 0);
         CHECK_CLOSE(s.beta_gamma, 0.75, 4e-16, 0);
@@ -127,7 +128,7 @@ static void test_proton_and_massless(void)
     CHECK_CLOSE(s.kinetic, 5.0, 0, 0);
     CHECK_CLOSE(s.beta, 1.0, 0, 0);
     CHECK_CLOSE(s.one_minus_beta, 0.0, 0, 0);
-    CHECK_CLOSE(s.speed, 299792458.0, 0, 0);
+    CHECK_CLOSE(s.speed, MECH_C, 0, 0);
 }
 
 /* Notes §3.4 muon: τ = 2 µs, β = 0.9999: γ = 70.7124459519056355 (for the
@@ -169,7 +170,7 @@ static void test_errors(void)
 {
     expect_error(1, MECH_PARTICLE_GIVEN_BETA, 1.0, MECH_EDOMAIN, "beta");
     expect_error(1, MECH_PARTICLE_GIVEN_BETA, -0.1, MECH_EDOMAIN, "beta");
-    expect_error(1, MECH_PARTICLE_GIVEN_SPEED, 299792458.0, MECH_EDOMAIN, "speed");
+    expect_error(1, MECH_PARTICLE_GIVEN_SPEED, MECH_C, MECH_EDOMAIN, "speed");
     expect_error(1, MECH_PARTICLE_GIVEN_GAMMA, 0.5, MECH_EDOMAIN, "gamma");
     expect_error(1, MECH_PARTICLE_GIVEN_GAMMA_MINUS_ONE, -1e-3, MECH_EDOMAIN, "gamma_minus_one");
     expect_error(1, MECH_PARTICLE_GIVEN_ONE_MINUS_BETA, 0.0, MECH_EDOMAIN, "one_minus_beta");

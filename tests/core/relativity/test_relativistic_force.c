@@ -9,9 +9,9 @@
 #include <string.h>
 
 #include "mech/relativistic_force.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double C = 299792458.0;
 
 static void test_closed_form(void)
 {
@@ -26,17 +26,17 @@ static void test_closed_form(void)
     CHECK_CLOSE(f.force.y, 5.0, 1e-15, 0);
     CHECK_CLOSE(f.longitudinal_mass, 3.90625, 1e-15, 0);
     CHECK_CLOSE(f.transverse_mass, 2.5, 1e-15, 0);
-    CHECK_CLOSE(f.power, 3.90625 * 0.6 * C, 1e-15, 0);
+    CHECK_CLOSE(f.power, 3.90625 * 0.6 * MECH_C, 1e-15, 0);
     /* Second method for the power: d(gamma m c^2)/dt with v(t) = v + a t, central
      * difference at t = 0 with h = 1000 s (a h / c ~ 1e-5: truncation ~1e-10
      * relative, rounding of the gamma difference ~1e-11). */
     const double h = 1000.0;
-    double vp[3] = {0.6 * C + h, 2 * h, 0}, vm[3] = {0.6 * C - h, -2 * h, 0};
-    double gp = 1 / sqrt(1 - (vp[0] * vp[0] + vp[1] * vp[1]) / (C * C));
-    double gm = 1 / sqrt(1 - (vm[0] * vm[0] + vm[1] * vm[1]) / (C * C));
-    CHECK_CLOSE(m * C * C * (gp - gm) / (2 * h), f.power, 1e-8, 0);
+    double vp[3] = {0.6 * MECH_C + h, 2 * h, 0}, vm[3] = {0.6 * MECH_C - h, -2 * h, 0};
+    double gp = 1 / sqrt(1 - (vp[0] * vp[0] + vp[1] * vp[1]) / (MECH_C * MECH_C));
+    double gm = 1 / sqrt(1 - (vm[0] * vm[0] + vm[1] * vm[1]) / (MECH_C * MECH_C));
+    CHECK_CLOSE(m * MECH_C * MECH_C * (gp - gm) / (2 * h), f.power, 1e-8, 0);
     /* K.u = 0: the 4-force is orthogonal to the 4-velocity u = gamma (c, v). */
-    const double u[4] = {1.25 * C, 1.25 * 0.6 * C, 0, 0};
+    const double u[4] = {1.25 * MECH_C, 1.25 * 0.6 * MECH_C, 0, 0};
     const double ku = -f.four_force[0] * u[0] + f.four_force[1] * u[1] + f.four_force[2] * u[2];
     CHECK_CLOSE(ku, 0.0, 0, 1e-15 * fabs(f.four_force[1] * u[1]));
 

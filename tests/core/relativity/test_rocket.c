@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "mech/rocket.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
 static void test_values(void)
@@ -31,7 +32,7 @@ static void test_values(void)
      * fuel fraction 2.2219753269308541e-4, Newton's relative error
      * -8.2418522670638398e-22 (= -(eta - beta)/beta_e: a difference the direct
      * eta - beta would lose entirely). */
-    const double b = 1.0 / 299792458.0, be = 4500.0 / 299792458.0;
+    const double b = 1.0 / MECH_C, be = 4500.0 / MECH_C;
     const double eta = 3.3356409519815204e-09;
     CHECK_EQ_INT(mech_rocket_for_rapidity(eta, b, be, &r, NULL), MECH_OK);
     CHECK_CLOSE(r.log_mass_ratio, 2.2222222222222222e-4, 1e-15, 0);

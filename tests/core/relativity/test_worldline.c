@@ -11,9 +11,9 @@
 #include <string.h>
 
 #include "mech/worldline.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-static const double C = 299792458.0;
 static struct mech_budget bud;
 
 static struct mech_leg coast(int kind, double bx, double amount)
@@ -81,10 +81,10 @@ static void test_muon(void)
     struct mech_leg l = coast(MECH_LEG_COAST_PROPER_TIME, 0.9999, 2e-6);
     struct mech_leg_result r;
     struct mech_worldline_total tot;
-    CHECK_EQ_INT(mech_worldline_run(&l, 1, C, &bud, &r, &tot, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_worldline_run(&l, 1, MECH_C, &bud, &r, &tot, NULL), MECH_OK);
     double g = 1 / sqrt((1 - 0.9999) * (1 + 0.9999));
     CHECK_CLOSE(r.coordinate_time, g * 2e-6, 4e-16, 0);
-    CHECK_CLOSE(r.distance, 0.9999 * g * C * 2e-6, 4e-16, 0);
+    CHECK_CLOSE(r.distance, 0.9999 * g * MECH_C * 2e-6, 4e-16, 0);
     CHECK_CLOSE(r.displacement.x, 42393.876154631258, 1e-15, 0);
 }
 
@@ -95,23 +95,23 @@ static void test_hyperbolic(void)
     struct mech_leg l = accel(a, tau, 1);
     struct mech_leg_result r;
     struct mech_worldline_total tot;
-    CHECK_EQ_INT(mech_worldline_run(&l, 1, C, &bud, &r, &tot, NULL), MECH_OK);
-    long double phi = (long double)a * tau / C;
-    long double t = C / (long double)a * sinhl(phi);
-    long double x = (long double)C * C / a * (coshl(phi) - 1);
+    CHECK_EQ_INT(mech_worldline_run(&l, 1, MECH_C, &bud, &r, &tot, NULL), MECH_OK);
+    long double phi = (long double)a * tau / MECH_C;
+    long double t = MECH_C / (long double)a * sinhl(phi);
+    long double x = (long double)MECH_C * MECH_C / a * (coshl(phi) - 1);
     CHECK_CLOSE(r.coordinate_time, (double)t, 2e-15, 0);
     CHECK_CLOSE(r.displacement.x, (double)x, 2e-15, 0);
     CHECK_CLOSE(r.distance, (double)x, 2e-15, 0);
     CHECK_CLOSE(r.final_velocity.rapidity, (double)phi, 2e-16, 0);
     CHECK_CLOSE(r.age_difference, (double)(t - tau), 1e-14, 0);
     /* Home clock the traveller sees at the end: t − x/c = (c/a)(1 − e^{−φ}). */
-    CHECK_CLOSE(r.home_clock_seen_end, (double)(C / (long double)a * -expm1l(-phi)), 2e-15, 0);
-    CHECK_CLOSE(r.home_receives_end, (double)(C / (long double)a * expm1l(phi)), 2e-15, 0);
+    CHECK_CLOSE(r.home_clock_seen_end, (double)(MECH_C / (long double)a * -expm1l(-phi)), 2e-15, 0);
+    CHECK_CLOSE(r.home_receives_end, (double)(MECH_C / (long double)a * expm1l(phi)), 2e-15, 0);
 
     /* Tiny aτ/c = 3.3e-12: x = ½aτ²(1 + φ²/12), T − τ = τ φ²/6 (1 + φ²/20). */
     l = accel(1e-3, 1.0, 1);
-    CHECK_EQ_INT(mech_worldline_run(&l, 1, C, &bud, &r, &tot, NULL), MECH_OK);
-    double p = 1e-3 / C;
+    CHECK_EQ_INT(mech_worldline_run(&l, 1, MECH_C, &bud, &r, &tot, NULL), MECH_OK);
+    double p = 1e-3 / MECH_C;
     CHECK_CLOSE(r.displacement.x, 0.5e-3 * (1 + p * p / 12), 2e-16, 0);
     CHECK_CLOSE(r.age_difference, p * p / 6, 2e-15, 0);
     CHECK_CLOSE(r.coordinate_time, 1.0, 2e-16, 0);
@@ -150,10 +150,10 @@ static void test_extremes(void)
     struct mech_leg_result r[2];
     struct mech_worldline_total tot;
     /* 1 m/s for 1e6 s out and back: T − τ = 2e6 (γ − 1)/γ ≈ 2e6 (β²/2 + β⁴/8). */
-    double b = 1 / C;
+    double b = 1 / MECH_C;
     struct mech_leg slow[2] = {coast(MECH_LEG_COAST_TIME, b, 1e6),
                                coast(MECH_LEG_COAST_TIME, -b, 1e6)};
-    CHECK_EQ_INT(mech_worldline_run(slow, 2, C, &bud, r, &tot, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_worldline_run(slow, 2, MECH_C, &bud, r, &tot, NULL), MECH_OK);
     CHECK_CLOSE(tot.age_difference, 2e6 * (b * b / 2 + b * b * b * b / 8), 1e-15, 0);
     CHECK(tot.coordinate_time - tot.proper_time == 0); /* what subtraction would give */
     /* 1 − β = 1e-15 for 1 year out and back (c = 1): the traveller sees the

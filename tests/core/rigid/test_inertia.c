@@ -7,12 +7,10 @@
 #include <string.h>
 
 #include "mech/inertia.h"
+#include "mech/constants.h"
 #include "mech/rotation.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static unsigned long rnd_state = 987654321UL;
 static double rnd(void)
@@ -231,7 +229,7 @@ int main(void)
     {
         double m = 0.8, l = 1.7;
         for (int k = 0; k < 12; k++) {
-            double phi = k * M_PI / 6 + 0.1;
+            double phi = k * MECH_PI / 6 + 0.1;
             struct mech_vec3 u = mech_vec3_make(cos(phi), sin(phi), 0);
             struct mech_inertia_part pp[2] = {
                 part(MECH_SHAPE_POINT, m, mech_vec3_scale(u, l / 2), 0, 0, 0),
@@ -253,7 +251,7 @@ int main(void)
         /* with omega: phi = 30 deg, omega = (1, 2, 3) rad/s. By hand:
          * I = f [[1/4, -sqrt3/4, 0], [-sqrt3/4, 3/4, 0], [0, 0, 1]], f = m l^2/2;
          * L = f (1/4 - sqrt3/2, -sqrt3/4 + 3/2, 3); T = omega.L/2. */
-        double phi = M_PI / 6, f = m * l * l / 2, r3 = sqrt(3.0);
+        double phi = MECH_PI / 6, f = m * l * l / 2, r3 = sqrt(3.0);
         struct mech_vec3 u = mech_vec3_make(cos(phi), sin(phi), 0);
         struct mech_inertia_part pp[2] = {
             part(MECH_SHAPE_POINT, m, mech_vec3_scale(u, l / 2), 0, 0, 0),
@@ -643,7 +641,7 @@ int main(void)
         struct mech_vec3 p = mech_vec3_make(1e3, -2e3, 0.5);
         struct mech_inertia_part hh[2] = {part(MECH_SHAPE_HEMISPHERE, Mm / 2, p, R, 0, 0),
                                           part(MECH_SHAPE_HEMISPHERE, Mm / 2, p, R, 0, 0)};
-        mech_rotation_from_axis_angle(mech_vec3_make(1, 1, 0), M_PI, &hh[1].orientation, NULL);
+        mech_rotation_from_axis_angle(mech_vec3_make(1, 1, 0), MECH_PI, &hh[1].orientation, NULL);
         if (compute(hh, 2, NULL, &res)) {
             CHECK(mat_diff(res.tensor_cm, diag(0.4 * Mm * R * R, 0.4 * Mm * R * R,
                                                0.4 * Mm * R * R)) <= 1e-14 * Mm * R * R);
@@ -743,7 +741,7 @@ int main(void)
             CHECK_CLOSE(res.mass, Mt, 1e-15, 0);
         }
         double ba = 0.6, bb = 0.4, bc = 0.25, Mb = 5.0, rh = 0.08, dx = 0.12;
-        double mh = Mb * M_PI * rh * rh / (ba * bb);
+        double mh = Mb * MECH_PI * rh * rh / (ba * bb);
         struct mech_vec3 o = mech_vec3_make(7, -3, 1e6);
         struct mech_inertia_part bh[2] = {
             part(MECH_SHAPE_BOX, Mb, o, ba, bb, bc),

@@ -26,13 +26,11 @@
 #include <string.h>
 
 #include "mech/inertia.h"
+#include "mech/constants.h"
 #include "mech/mesh.h"
 #include "mech/rotation.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* ---- mesh generators ----------------------------------------------------- */
 
@@ -111,7 +109,7 @@ static void gen_revolve(struct gen *g, const double *rho, const double *z, size_
     size_t base = g->nv;
     for (size_t k = first; k <= last; k++)
         for (size_t i = 0; i < n; i++) {
-            double u = 2 * M_PI * (double)i / (double)n;
+            double u = 2 * MECH_PI * (double)i / (double)n;
             addv(g, rho[k] * cos(u), rho[k] * sin(u), z[k]);
         }
 #define RING(k, i) (base + ((k)-first) * n + ((i) % n))
@@ -162,7 +160,7 @@ static void gen_hemisphere(struct gen *g, double r, size_t n, size_t k) /* flat 
     double *rho = malloc((k + 2) * sizeof *rho), *z = malloc((k + 2) * sizeof *z);
     rho[0] = 0;
     z[0] = 0;
-    arc(rho, z, 1, r, 0, M_PI / 2, k);
+    arc(rho, z, 1, r, 0, MECH_PI / 2, k);
     rho[k + 1] = 0; /* the pole exactly on the axis */
     gen_revolve(g, rho, z, k + 2, 0, n);
     free(rho);
@@ -172,7 +170,7 @@ static void gen_hemisphere(struct gen *g, double r, size_t n, size_t k) /* flat 
 static void gen_sphere(struct gen *g, double r, size_t n, size_t k)
 {
     double *rho = malloc((k + 1) * sizeof *rho), *z = malloc((k + 1) * sizeof *z);
-    arc(rho, z, 0, r, -M_PI / 2, M_PI / 2, k);
+    arc(rho, z, 0, r, -MECH_PI / 2, MECH_PI / 2, k);
     rho[0] = rho[k] = 0;
     gen_revolve(g, rho, z, k + 1, 0, n);
     free(rho);
@@ -183,7 +181,7 @@ static void gen_torus(struct gen *g, double big, double r, size_t n, size_t m)
 {
     double *rho = malloc(m * sizeof *rho), *z = malloc(m * sizeof *z);
     for (size_t j = 0; j < m; j++) {
-        double v = 2 * M_PI * (double)j / (double)m;
+        double v = 2 * MECH_PI * (double)j / (double)m;
         rho[j] = big + r * cos(v);
         z[j] = r * sin(v);
     }
@@ -433,7 +431,7 @@ int main(void)
 
         /* a cone 1e6 m out, compared with the faceted closed form (section 3) */
         size_t n = 64;
-        double r = 0.5, h = 1.7, D = 2 * M_PI / (double)n, f = (2 + cos(D)) / 3;
+        double r = 0.5, h = 1.7, D = 2 * MECH_PI / (double)n, f = (2 + cos(D)) / 3;
         gen_cone(&g, r, h, n);
         for (size_t k = 0; k < g.nv; k++)
             g.v[k] = mech_vec3_add(g.v[k], c0);
@@ -464,7 +462,7 @@ int main(void)
         double r = 0.5, h = 1.7, M = 1.3, a = 0.3, b = 0.45, ht = 0.9;
         double worst = 0;
         for (size_t n = 8; n <= 1024; n *= 2) {
-            double D = 2 * M_PI / (double)n, f = (2 + cos(D)) / 3;
+            double D = 2 * MECH_PI / (double)n, f = (2 + cos(D)) / 3;
             struct gen g = {0};
             struct mech_vec3 com;
             gen_cone(&g, r, h, n);
@@ -521,7 +519,7 @@ int main(void)
             size_t m = n / 2;
             struct gen g = {0};
             gen_torus(&g, big, r, n, m);
-            double D = 2 * M_PI / (double)n, Dm = 2 * M_PI / (double)m;
+            double D = 2 * MECH_PI / (double)n, Dm = 2 * MECH_PI / (double)m;
             double ja = r * r / 12 * (2 + cos(Dm));
             double izz = M * (2 + cos(D)) / 3 * (big * big + 3 * ja);
             struct mech_mat3 want = diag(izz / 2 + M * ja, izz / 2 + M * ja, izz);
@@ -715,7 +713,7 @@ int main(void)
         size_t n = 333, m = 300; /* 2 n m = 199800 faces */
         gen_torus(&g, 1.0, 0.35, n, m);
         CHECK(g.nf <= MECH_MESH_MAX_FACES);
-        double D = 2 * M_PI / (double)n, Dm = 2 * M_PI / (double)m, M = 1;
+        double D = 2 * MECH_PI / (double)n, Dm = 2 * MECH_PI / (double)m, M = 1;
         double ja = 0.35 * 0.35 / 12 * (2 + cos(Dm));
         double izz = M * (2 + cos(D)) / 3 * (1 + 3 * ja);
         struct mech_mat3 t = mesh_tensor(&g, M, NULL);

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "mech/attitude.h"
+#include "mech/constants.h"
 #include "mech/closed_form.h"
 #include "mech/rigid_rotation.h"
 #include "testlib.h"
@@ -43,7 +44,7 @@ static struct mech_rigid_problem body(double i1, double i2, double i3, struct me
     p.moments[2] = i3;
     p.omega = w;
     /* an arbitrary initial attitude: 40 degrees about (1, 2, 2)/3 */
-    const double h = 20.0 * 3.14159265358979323846 / 180.0;
+    const double h = 20.0 * MECH_PI / 180.0;
     p.q0[0] = cos(h);
     p.q0[1] = sin(h) / 3.0;
     p.q0[2] = 2.0 * sin(h) / 3.0;

@@ -11,11 +11,9 @@
 #include <string.h>
 
 #include "mech/rigid_problems.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Euler's equations, torque-free, I1 = I2 = ip: w' = f(w) */
 static void euler_rhs(double ip, double i3, const double w[3], double d[3])
@@ -49,7 +47,7 @@ static void check_free_top(void)
         /* RK4 of Euler's equations for one body period: omega's transverse part turns
          * by psi_dot t (its angle measured with atan2) */
         if (t.precession_body != 0) {
-            double T = 2 * M_PI / fabs(t.precession_body), h = T / 20000, y[3] = {w[0], w[1], w[2]};
+            double T = 2 * MECH_PI / fabs(t.precession_body), h = T / 20000, y[3] = {w[0], w[1], w[2]};
             double ang = 0, prev = atan2(y[1], y[0]);
             for (int s = 0; s < 20000 / 4; s++) { /* a quarter period */
                 double k1[3], k2[3], k3[3], k4[3], z[3];
@@ -62,8 +60,8 @@ static void check_free_top(void)
                 euler_rhs(ip, i3, z, k4);
                 for (int i = 0; i < 3; i++) y[i] += h / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
                 double now = atan2(y[1], y[0]), dphi = now - prev;
-                if (dphi > M_PI) dphi -= 2 * M_PI;
-                if (dphi < -M_PI) dphi += 2 * M_PI;
+                if (dphi > MECH_PI) dphi -= 2 * MECH_PI;
+                if (dphi < -MECH_PI) dphi += 2 * MECH_PI;
                 ang += dphi;
                 prev = now;
             }

@@ -11,13 +11,11 @@
 #include <string.h>
 
 #include "mech/attitude.h"
+#include "mech/constants.h"
 #include "mech/rigid_rotation.h"
 #include "mech/rotation.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static double mat_diff(struct mech_mat3 a, struct mech_mat3 b)
 {
@@ -53,8 +51,8 @@ static void test_attitude(void)
     int g;
     mech_attitude_euler_zxz(q2, 0, &p2, &t2, &s2, &g);
     CHECK_CLOSE(t2, th, 0, 1e-15);
-    CHECK_CLOSE(remainder(p2 - phi, 2 * M_PI), 0, 0, 1e-15);
-    CHECK_CLOSE(remainder(s2 - psi, 2 * M_PI), 0, 0, 1e-15);
+    CHECK_CLOSE(remainder(p2 - phi, 2 * MECH_PI), 0, 0, 1e-15);
+    CHECK_CLOSE(remainder(s2 - psi, 2 * MECH_PI), 0, 0, 1e-15);
     CHECK(g == 0);
     /* theta = 0: only phi + psi; the hint picks psi */
     mech_attitude_from_euler_zxz(0.4, 0, 0.9, q2);

@@ -10,12 +10,10 @@
 #include <string.h>
 
 #include "mech/ode.h"
+#include "mech/constants.h"
 #include "mech/stability.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Torque-free Euler equations (notes §2.8): I1 w1' = (I2 - I3) w2 w3, cyclic. */
 static enum mech_status euler_rhs(double t, const double *w, double *dw, void *params)
@@ -74,7 +72,7 @@ static double crossing_frequency(const double *x, size_t n, double h)
             count++;
         }
     if (count < 3) return NAN;
-    return M_PI * (count - 1) / (last - first); /* half a period between crossings */
+    return MECH_PI * (count - 1) / (last - first); /* half a period between crossings */
 }
 
 static struct mech_stability stab(double i1, double i2, double i3, int axis, double spin)
@@ -239,7 +237,7 @@ int main(void)
                 CHECK(mech_stability_principal(bodies[bi], ax, spin, &s, NULL) == MECH_OK);
                 if (s.kind == MECH_STABILITY_STABLE) {
                     size_t n = 40001;
-                    double t_end = 20 * 2 * M_PI / s.frequency;
+                    double t_end = 20 * 2 * MECH_PI / s.frequency;
                     double *eps = malloc(n * sizeof *eps);
                     CHECK(eps && integrate(bodies[bi], ax, spin, delta, t_end, n, eps) == 0);
                     double f = crossing_frequency(eps, n, t_end / (double)(n - 1));

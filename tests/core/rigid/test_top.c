@@ -9,11 +9,9 @@
 #include <string.h>
 
 #include "mech/top.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 enum { NS = 20001 };
 static double ts[NS], th[NS], ph[NS], ps[NS], pps[NS];
@@ -58,7 +56,7 @@ static void run(const struct mech_top_problem *p, struct mech_top_result *r, enu
 static void test_steady_precession(void)
 {
     struct mech_top_problem p = gyro();
-    const double w3 = 100, mgh = 0.980665, th0 = M_PI / 3, c = 0.5;
+    const double w3 = 100, mgh = 0.980665, th0 = MECH_PI / 3, c = 0.5;
     /* slow root of I1 c x^2 - I3 w3 x + M g h = 0 */
     const double B = p.I3 * w3, slow = 2 * mgh / (B + sqrt(B * B - 4 * p.I1 * c * mgh));
     p.theta = th0;

@@ -11,12 +11,10 @@
 #include <string.h>
 
 #include "mech/euler_rates.h"
+#include "mech/constants.h"
 #include "mech/rotation.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static struct mech_mat3 r_at(const double a[3], const double d[3], double t)
 {
@@ -104,7 +102,7 @@ static void test_lock(void)
     double comb = -1;
     mech_error_clear(&e);
     /* theta = pi: w3 = psi' - phi' = 3 - 1 = 2 */
-    const double a[3] = {0.3, M_PI, 0.2}, d[3] = {1, 0.5, 3};
+    const double a[3] = {0.3, MECH_PI, 0.2}, d[3] = {1, 0.5, 3};
     CHECK(mech_euler_kinematics(a, d, &k, &e) == MECH_OK);
     CHECK(k.gimbal_lock);
     CHECK_CLOSE(k.omega_body.z, 2, 0, 1e-15);
@@ -115,7 +113,7 @@ static void test_lock(void)
     CHECK_CLOSE(ki.omega_body.x, k.omega_body.x, 0, 1e-15);
     CHECK_CLOSE(ki.omega_body.y, k.omega_body.y, 0, 1e-15);
     /* theta = 0: omega along the line normal to the nodes cannot be reached */
-    const double a0[3] = {0, 0, M_PI / 2};
+    const double a0[3] = {0, 0, MECH_PI / 2};
     CHECK(mech_euler_rates_from_omega(a0, mech_vec3_make(1, 0, 0), 1, &ki, &comb, &e) ==
           MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "omega_body"));

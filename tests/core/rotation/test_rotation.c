@@ -5,11 +5,9 @@
 #include <string.h>
 
 #include "mech/rotation.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static double max_diff(struct mech_mat3 a, struct mech_mat3 b)
 {
@@ -94,8 +92,8 @@ static double qdiff(const double a[4], const double b[4])
 
 static double angdiff(double a, double b)
 {
-    double d = fmod(fabs(a - b), 2 * M_PI);
-    return fmin(d, 2 * M_PI - d);
+    double d = fmod(fabs(a - b), 2 * MECH_PI);
+    return fmin(d, 2 * MECH_PI - d);
 }
 
 static void test_issue4(void)
@@ -110,11 +108,11 @@ static void test_issue4(void)
     {
         double worst = 0, worst_rt = 0, worst_ang = 0;
         for (int k = 0; k < 200; k++) {
-            double ang[3] = {2 * M_PI * urand(&seed) - M_PI, 0, 2 * M_PI * urand(&seed) - M_PI};
+            double ang[3] = {2 * MECH_PI * urand(&seed) - MECH_PI, 0, 2 * MECH_PI * urand(&seed) - MECH_PI};
             for (int sq = 0; sq < MECH_EULER_SEQUENCE_COUNT; sq++) {
                 const char *nm = mech_euler_sequence_name((enum mech_euler_sequence)sq);
                 int proper = nm[0] == nm[2];
-                ang[1] = proper ? M_PI * urand(&seed) : M_PI * urand(&seed) - M_PI / 2;
+                ang[1] = proper ? MECH_PI * urand(&seed) : MECH_PI * urand(&seed) - MECH_PI / 2;
                 for (int intr = 0; intr < 2; intr++) {
                     struct mech_mat3 want = seq_passive(nm, intr, ang);
                     CHECK(mech_rotation_from_euler((enum mech_euler_sequence)sq, intr, ang, &r,
@@ -199,11 +197,11 @@ static void test_issue4(void)
     {
         double q[4], ang;
         struct mech_vec3 ax;
-        CHECK(mech_quaternion_from_axis_angle(mech_vec3_make(2, 2, 2), 2 * M_PI / 3, q, NULL) ==
+        CHECK(mech_quaternion_from_axis_angle(mech_vec3_make(2, 2, 2), 2 * MECH_PI / 3, q, NULL) ==
               MECH_OK);
         CHECK(qdiff(q, (double[4]){0.5, 0.5, 0.5, 0.5}) <= 2e-16);
         CHECK(mech_quaternion_to_axis_angle(q, &ax, &ang, NULL) == MECH_OK);
-        CHECK_CLOSE(ang, 2 * M_PI / 3, 2e-16, 0);
+        CHECK_CLOSE(ang, 2 * MECH_PI / 3, 2e-16, 0);
         CHECK_CLOSE(ax.x, 1 / sqrt(3.0), 2e-16, 0);
         /* negative angle: the same turn as |angle| about -axis; angle in [0, pi] */
         CHECK(mech_quaternion_from_axis_angle(mech_vec3_make(0, 0, 1), -0.5, q, NULL) == MECH_OK);
@@ -222,17 +220,17 @@ static void test_issue4(void)
         CHECK_CLOSE(ax.x, 0.6, 1e-15, 0);
         CHECK_CLOSE(ax.y, -0.8, 1e-15, 0);
         /* rotation vector (0, 0, pi/2) passive = the notes' R_phi with phi = pi/2 */
-        CHECK(mech_quaternion_from_rotation_vector(mech_vec3_make(0, 0, M_PI / 2), q, NULL) ==
+        CHECK(mech_quaternion_from_rotation_vector(mech_vec3_make(0, 0, MECH_PI / 2), q, NULL) ==
               MECH_OK);
         mech_rotation_matrix_of_quaternion(q, MECH_ROTATION_PASSIVE, &r, NULL);
-        CHECK(max_diff(r, rz(M_PI / 2)) <= 2e-16);
+        CHECK(max_diff(r, rz(MECH_PI / 2)) <= 2e-16);
         mech_rotation_matrix_of_quaternion(q, MECH_ROTATION_ACTIVE, &r, NULL);
-        CHECK(max_diff(r, act(2, M_PI / 2)) <= 2e-16);
+        CHECK(max_diff(r, act(2, MECH_PI / 2)) <= 2e-16);
         /* angle near pi keeps accuracy: 2 atan2(|v|, w) */
-        CHECK(mech_quaternion_from_axis_angle(mech_vec3_make(1, 0, 0), M_PI - 1e-9, q, NULL) ==
+        CHECK(mech_quaternion_from_axis_angle(mech_vec3_make(1, 0, 0), MECH_PI - 1e-9, q, NULL) ==
               MECH_OK);
         CHECK(mech_quaternion_to_axis_angle(q, &ax, &ang, NULL) == MECH_OK);
-        CHECK_CLOSE(ang, M_PI - 1e-9, 2e-16, 0);
+        CHECK_CLOSE(ang, MECH_PI - 1e-9, 2e-16, 0);
         mech_error_clear(&e);
         CHECK(mech_quaternion_from_rotation_vector(mech_vec3_make(NAN, 0, 0), q, &e) ==
               MECH_EINVAL);
@@ -246,7 +244,7 @@ static void test_issue4(void)
     {
         double q[4];
         struct mech_euler_angles ea;
-        double near[2] = {1e-9, M_PI - 1e-9};
+        double near[2] = {1e-9, MECH_PI - 1e-9};
         for (int n = 0; n < 2; n++) {
             double in[3] = {0.7, near[n], -0.4};
             mech_quaternion_from_euler(MECH_EULER_ZXZ, 1, in, q, NULL);
@@ -269,7 +267,7 @@ static void test_issue4(void)
             CHECK(max_diff(back, r) <= 1e-15);
             CHECK(fabs(ea.angles[0] - 0.7) <= 1e-6);
         }
-        double at[2] = {0, M_PI};
+        double at[2] = {0, MECH_PI};
         for (int n = 0; n < 2; n++) {
             double in[3] = {0.7, at[n], -0.4};
             mech_quaternion_from_euler(MECH_EULER_ZXZ, 1, in, q, NULL);
@@ -304,7 +302,7 @@ static void test_issue4(void)
         for (int sq = 0; sq < MECH_EULER_SEQUENCE_COUNT; sq++) {
             const char *nm = mech_euler_sequence_name((enum mech_euler_sequence)sq);
             int proper = nm[0] == nm[2];
-            double locks[2] = {proper ? 0 : M_PI / 2, proper ? M_PI : -M_PI / 2};
+            double locks[2] = {proper ? 0 : MECH_PI / 2, proper ? MECH_PI : -MECH_PI / 2};
             for (int intr = 0; intr < 2; intr++)
                 for (int l = 0; l < 2; l++) {
                     double a0[3] = {0.3, locks[l], 0.5};
@@ -441,9 +439,9 @@ int main(void)
         struct mech_mat3 want = {{{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}};
         CHECK(mech_rotation_from_matrix(want, &r, NULL) == MECH_OK);
         CHECK(max_diff(r, want) <= 1e-15);
-        CHECK(mech_rotation_from_euler_zxz(M_PI / 2, M_PI / 2, 0, &r, NULL) == MECH_OK);
+        CHECK(mech_rotation_from_euler_zxz(MECH_PI / 2, MECH_PI / 2, 0, &r, NULL) == MECH_OK);
         CHECK(max_diff(r, want) <= 1e-15);
-        CHECK(mech_rotation_from_axis_angle(mech_vec3_make(1, 1, 1), 2 * M_PI / 3, &r, NULL) ==
+        CHECK(mech_rotation_from_axis_angle(mech_vec3_make(1, 1, 1), 2 * MECH_PI / 3, &r, NULL) ==
               MECH_OK);
         CHECK(max_diff(r, want) <= 1e-15);
         double q[4] = {0.5, 0.5, 0.5, 0.5};
@@ -556,7 +554,7 @@ int main(void)
         CHECK(strcmp(e.param, "euler_zxz") == 0);
         double qt[4] = {1e-300, 0, 0, 1e-300}; /* tiny quaternion: 90 degrees about z */
         CHECK(mech_rotation_from_quaternion(qt, &r, NULL) == MECH_OK);
-        CHECK(max_diff(r, rz(M_PI / 2)) <= 2e-16);
+        CHECK(max_diff(r, rz(MECH_PI / 2)) <= 2e-16);
     }
 
     /* 6. Many random turns: all four forms agree, orthonormal to round-off. */
@@ -569,7 +567,7 @@ int main(void)
                 s = s * 6364136223846793005UL + 1442695040888963407UL;
                 u[i] = (double)(s >> 11) / 9007199254740992.0;
             }
-            double ph = 2 * M_PI * u[0] - M_PI, th = M_PI * u[1], ps = 2 * M_PI * u[2] - M_PI;
+            double ph = 2 * MECH_PI * u[0] - MECH_PI, th = MECH_PI * u[1], ps = 2 * MECH_PI * u[2] - MECH_PI;
             struct mech_mat3 want = mech_mat3_mul(rz(ps), mech_mat3_mul(rx(th), rz(ph)));
             double qa[4] = {cos(ph / 2), 0, 0, sin(ph / 2)};
             double qb[4] = {cos(th / 2), sin(th / 2), 0, 0};

@@ -11,11 +11,9 @@
 #include <string.h>
 
 #include "mech/vector_algebra.h"
+#include "mech/constants.h"
 #include "testlib.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static struct mech_vec3 v3(double x, double y, double z) { return mech_vec3_make(x, y, z); }
 
@@ -71,7 +69,7 @@ static void test_near_parallel(void)
         CHECK(mech_vector_pair(v3(1, 0, 0), v3(1, d, 0), &p, &e) == MECH_OK);
         CHECK_CLOSE(p.angle, atan(d), 2e-16, 0);
         CHECK(mech_vector_pair(v3(2, 0, 0), v3(-1, d, 0), &p, &e) == MECH_OK);
-        CHECK_CLOSE(p.angle, M_PI - atan(d), 2e-16, 0);
+        CHECK_CLOSE(p.angle, MECH_PI - atan(d), 2e-16, 0);
     }
     CHECK(mech_vector_pair(v3(1, 1, 1), v3(1, 1, 1 + 0x1p-52), &p, &e) == MECH_OK);
     /* |a x b| = 2^-52 sqrt 2, a.b = 3 + 2^-52: angle = atan(2^-52 sqrt2/(3 + 2^-52)) */
