@@ -8,7 +8,12 @@
  * References: Hartle, "Gravity" (2003) §9.2-9.3 (eqs. 9.21-9.35), §11.1
  * (eqs. 11.9-11.14); Carroll, "Spacetime and Geometry" §5.4 (eqs. 5.58-5.62,
  * 5.104); Schutz, "A First Course in General Relativity" §11.1; Byrd &
- * Friedman, "Handbook of Elliptic Integrals", 233.00. */
+ * Friedman, "Handbook of Elliptic Integrals", 233.00.
+ *
+ * Why one file of ~800 lines: its four sections (initial conditions,
+ * classification, exact references, integration) are one operation's steps
+ * and share its file-local helpers (the orbit constants, the effective
+ * potential's roots); the exact references are the integration's own check. */
 #include "mech/geodesic.h"
 #include "mech/constants.h"
 #include "mech/schwarzschild.h"

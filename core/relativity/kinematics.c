@@ -6,6 +6,11 @@
  * non-negative, or whose one difference is exact (Sterbenz) or compensated, so
  * massless, nearly collinear, nonrelativistic (1e-12 c) and ultra-relativistic
  * (γ = 1e6 and beyond) cases keep full relative precision.
+ *
+ * Why one file of ~800 lines: every section (motion, momentum differences,
+ * invariant masses, decays, Compton, collisions) is built on the same
+ * file-local compensated arithmetic and single-particle motion, which stay
+ * private here rather than becoming a header of their own.
  */
 #include "mech/kinematics.h"
 #include "mech/constants.h"
