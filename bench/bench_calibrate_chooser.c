@@ -1,5 +1,5 @@
 /* bench_calibrate_chooser.c — measures the constants of the chooser's model
- * (core/chooser.c, issue 16 "A chooser that predicts cost and error").
+ * (core/ode/chooser.c, issue 16 "A chooser that predicts cost and error").
  *
  * For each scene class and candidate method it runs mech_trajectory_integrate
  * (the path the answers take) at three settings and two run lengths, and fits
@@ -12,7 +12,7 @@
  * (rk8pd at rtol 1e-14: the falling object with Coriolis).
  *
  * Output: one C initialiser line per (class, method), pasted into
- * core/chooser_table.h with this program's name and the date. Run:
+ * core/ode/chooser_table.h with this program's name and the date. Run:
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
  * With --presets it prints instead each preset's choice, CPU and achieved
@@ -328,7 +328,7 @@ static void presets_table(void)
 }
 
 /* --floors: the round-off floor of the Kepler class against eccentricity
- * (the chooser's floor model, core/chooser.c ecc_floor_factor): radau15 at
+ * (the chooser's floor model, core/ode/chooser.c ecc_floor_factor): radau15 at
  * eps 1e-9 and 2e-9 (its floor; two settings give two round-off histories)
  * and rk8pd at rtol 1e-13, over 10, 100 and 1000 orbits from pericentre, each
  * error divided by the e = 0.5 class floor Fm span^g of chooser_table.h. */

@@ -3,7 +3,7 @@
  *
  * The same scene, method and tolerance run two (three) ways, in interleaved
  * rounds on the same thread:
- *   api   mech_trajectory_integrate (core/trajectory.c): force loop, observer
+ *   api   mech_trajectory_integrate (core/frames/trajectory.c): force loop, observer
  *         (term sizes, energy and angular-momentum drift), planar reduction,
  *         reference report; samples = 2 (t0 and t_end, both step ends, so no
  *         sub-steps on either side);
@@ -63,7 +63,7 @@ static double t_end_of(long orbits) { return 2.0 * MECH_PI * (double)orbits; }
 
 /* ---- the bare right-hand sides (GM = 1) ----------------------------------- */
 
-/* a = d (-(GM/|d|^2)/|d|), as core/trajectory.c writes central gravity. */
+/* a = d (-(GM/|d|^2)/|d|), as core/frames/trajectory.c writes central gravity. */
 static void kepler_accel_n(const double *q, double *a, int n)
 {
     double s2 = 0.0;

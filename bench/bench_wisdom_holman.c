@@ -195,7 +195,7 @@ int main(void)
     printf("\n=== wisdom_holman error model (for the chooser) ===\n"
            "err = |r - r_ref| / a at t_end ~ A * (dt/T)^p * span, span in orbits, for a tide of "
            "relative size eps = %.0e;\nA/eps is the constant per unit perturbation (wisdom_holman's error is "
-           "linear in eps: tests/core/test_wisdom_holman.c; wh_corrected's is O(eps^2 dt^2 + eps "
+           "linear in eps: tests/core/ode/test_wisdom_holman.c; wh_corrected's is O(eps^2 dt^2 + eps "
            "dt^4), so its A/eps holds for eps ~ 1e-4 only). Fitted from two step sizes "
            "dt1, dt2 = dt1/2\nover 10 and 100 orbits (span exponent q measured too; p and A "
            "at 100 orbits).\n",

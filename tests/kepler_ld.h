@@ -3,7 +3,7 @@
  * formed from those doubles in long double (a = 1 / (2/q - u^2), e = 1 - q/a,
  * not the nominal a and e: the rounding of q and u moves the mean motion by
  * ~1e-15 relative at e = 0.9, ~5e-10 over 1000 orbits), Kepler's equation
- * solved by Newton in long double. Shared by tests/core/test_reference.c and
+ * solved by Newton in long double. Shared by tests/core/frames/test_reference.c and
  * tests/api/scene_set.h (and through it bench/bench_workprecision.c).
  * Header-only. */
 #ifndef MECHD_TESTS_KEPLER_LD_H

@@ -101,7 +101,7 @@ static enum mech_status cf_root(struct cf_ctx *c, int which, double a, double fa
     return MECH_OK;
 }
 
-/* The integrator's notion of a crossing (core/ode.c). */
+/* The integrator's notion of a crossing (core/ode/ode.c). */
 static int cf_crossed(double g0, double g1, enum mech_stop_direction dir)
 {
     const int down = g0 > 0.0 && g1 <= 0.0, up = g0 < 0.0 && g1 >= 0.0;
@@ -242,7 +242,7 @@ static struct mech_vec3 cf_omega(const struct cf_ctx *c, double t)
 }
 
 /* Energy (or Jacobi integral) at (t, r, v), and the sum of its parts' sizes;
- * the same expression as the integrator's (core/trajectory.c). */
+ * the same expression as the integrator's (core/frames/trajectory.c). */
 static void cf_energy(const struct cf_ctx *c, double t, struct mech_vec3 r, struct mech_vec3 v,
                       double *value, double *scale)
 {

@@ -14,7 +14,7 @@
 /* ---- choosing by accuracy ----------------------------------------------------
  * The presets are targets (draft 1e-3, balanced 1e-8, precise 1e-10, machine
  * 1e-11 relative); the method and its setting come from the predictive
- * chooser (mech/chooser.h, core/chooser.c: a model calibrated by
+ * chooser (mech/chooser.h, core/ode/chooser.c: a model calibrated by
  * bench/bench_calibrate_chooser), which lists every candidate with its
  * predicted error and cost and picks the cheapest predicted to meet the
  * target. The `method`/`rtol` fields of the table below are what the
@@ -25,7 +25,7 @@
  * that the selection says so. */
 static const struct mech_accuracy_preset traj_presets[MECH_ACCURACY_COUNT] = {
     /* typical picks (Kepler e = 0.5, 10 orbits; the falling object with
-     * Coriolis), measured by tests/core/test_chooser.c's output */
+     * Coriolis), measured by tests/core/ode/test_chooser.c's output */
     {"draft", 1e-3, "rk8pd", "rkf45", 3e-7, 1e-4,
      "cheap: the cheapest method predicted to meet 1e-3 relative; for plots and previews"},
     {"balanced", 1e-8, "rk8pd", "rkf45", 4.9e-12, 1e-9,

@@ -1,8 +1,8 @@
 /* particle_state.c — one free particle's γ, β, E, p, T, η from any one of
  * them (see mech/particle_state.h). Velocity forms go through a
- * struct mech_boost (core/boost.c keeps γ − 1, 1 − β, βγ, η exact for the
+ * struct mech_boost (core/relativity/boost.c keeps γ − 1, 1 − β, βγ, η exact for the
  * form given); energy forms through struct mech_kin_motion
- * (core/kinematics.c: T = p²/(E + m), never E − m of a rounded E). */
+ * (core/relativity/kinematics.c: T = p²/(E + m), never E − m of a rounded E). */
 #include "mech/particle_state.h"
 
 #include <math.h>

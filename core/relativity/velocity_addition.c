@@ -136,7 +136,7 @@ enum mech_status mech_velocity_add_light(struct mech_vec3 direction, const struc
     k = mech_vec3_scale(k, 1.0 / mech_vec3_norm(k));
     struct angle_parts ap = angle_between(frame->direction, k);
     /* Photon (1, k): light-cone components along n_f are u = 1 − c, v = 1 + c;
-     * the boost scales u' = e^{η} u, v' = e^{−η} v (core/boost.c). Then
+     * the boost scales u' = e^{η} u, v' = e^{−η} v (core/relativity/boost.c). Then
      * ν'/ν = (u' + v')/2, cos θ' = (v' − u')/(u' + v'), sin θ' = 2 s/(u' + v'). */
     double up = frame->exp_rapidity * ap.omc, vp = frame->exp_neg_rapidity * ap.opc;
     double sum = up + vp;

@@ -58,7 +58,7 @@ static void add_point(struct mech_mat3 *t, double m, struct mech_vec3 r)
  * 0 general (R^T diag(d) R), 1 axial (d[0] = d[1], symmetry axis body z),
  * 2 isotropic (orientation ignored). Sources: standard tables (e.g. Goldstein,
  * Classical Mechanics, and the notes §2.2-2.4 for the method); the cone,
- * hemisphere and torus entries are derived in tests/core/test_inertia.c's
+ * hemisphere and torus entries are derived in tests/core/rigid/test_inertia.c's
  * comments and checked there against an independent mesh integration. */
 static enum mech_status body_form(const struct mech_inertia_part *p, double d[3], double *cz,
                                   int *form, struct mech_error *err)

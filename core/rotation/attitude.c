@@ -1,5 +1,5 @@
 /* attitude.c — unit-quaternion attitude kinematics (see mech/attitude.h).
- * Passive convention of core/rotation.c: R = A(q)^T with A the active matrix. */
+ * Passive convention of core/rotation/rotation.c: R = A(q)^T with A the active matrix. */
 #include "mech/attitude.h"
 
 #include <math.h>

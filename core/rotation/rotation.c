@@ -411,7 +411,7 @@ static double wrap_pi(double x)
  * In every case B = 2 atan2(|Q|, |P|) in [0, pi], S = atan2(P), D = atan2(Q),
  * a = S + D, c = S - D. Locks: B = 0 (only a + c = 2S determined) and B = pi
  * (only a - c = 2D). Checked against products of elementary matrices in
- * tests/core/test_rotation.c for all 24 sequences. */
+ * tests/core/rotation/test_rotation.c for all 24 sequences. */
 enum mech_status mech_quaternion_to_euler(const double q[4], enum mech_euler_sequence seq,
                                           int intrinsic, struct mech_euler_angles *out,
                                           struct mech_error *err)

@@ -9,7 +9,7 @@
  * and CPU seconds, and a verdict: "chosen" (the cheapest predicted to meet
  * the target), "costlier", "misses_target" or "not_applicable", each with why.
  *
- * The model (core/chooser.c, constants in core/chooser_table.h, measured by
+ * The model (core/ode/chooser.c, constants in core/ode/chooser_table.h, measured by
  * bench/bench_calibrate_chooser.c on this machine's build):
  *   adaptive:   error = A tol^a span^b,    evaluations = B span tol^-c
  *   fixed step: error = A (h/T)^a span^b,  evaluations = B span (h/T)^-c

@@ -171,7 +171,7 @@ const struct mech_integrator mech_integrator_yoshida6 = {
            "implicit, as in verlet.",
     .reference = "H. Yoshida, Phys. Lett. A 150 (1990) 262-268, Sect. 5, Table 1, solution A "
                  "(coefficients refined to 30 digits from the order conditions; see "
-                 "core/integrators/yoshida.c).",
+                 "core/ode/integrators/yoshida.c).",
     .alloc = yoshida6_alloc,
     .reset = yoshida_reset,
     .free = yoshida_free,

@@ -1,4 +1,4 @@
-/* test_continuum_waves.c — string and rod waves (core/continuum_waves.c):
+/* test_continuum_waves.c — string and rod waves (core/continuum/continuum_waves.c):
  * wave speeds against sqrt(T/mu), axial mode numbers, the beam's
  * characteristic roots against Blevins (1979) Table 8-1 and an independent
  * solve of cos x cosh x = +-1 in its original form (scipy brentq, quoted),

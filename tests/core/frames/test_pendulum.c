@@ -248,7 +248,7 @@ static void test_full_precession(void)
     check_rate(&p, &r);
     /* the centrifugal anisotropy raises h by (cot^2(lat)/8) h0 on average
      * over the precession (release east, psi0 = 0), and the least-squares
-     * slope over exactly one turn adds 3/(4 pi^2) of that (core/pendulum.c) */
+     * slope over exactly one turn adds 3/(4 pi^2) of that (core/frames/pendulum.c) */
     double cot2 = 1.0 / (tan(lat) * tan(lat));
     CHECK_CLOSE(r.airy_rate_mean, r.airy_rate * (1.0 + cot2 / 8.0 * (1.0 + 3.0 / (4.0 * MECH_PI * MECH_PI))),
                 2e-3, 0);

@@ -1,4 +1,4 @@
-/* test_scenes.c — the chapter-1 scenes (core/scenes.c) against the notes'
+/* test_scenes.c — the chapter-1 scenes (core/frames/scenes.c) against the notes'
  * formulas and their second-order terms, derived by hand:
  *   falling object (h = 100 m, lat 32 deg): first order x_east =
  *     (W cos lat / 3) sqrt(8 h^3 / g) (notes: 1.9 cm); second order, south:

@@ -1,5 +1,5 @@
 /* test_radial_infall.c — proper times of a radial fall from rest
- * (core/radial_infall.c) against the cycloid evaluated in 50-digit Decimal
+ * (core/gr/radial_infall.c) against the cycloid evaluated in 50-digit Decimal
  * (asin by its series; quoted), the Newtonian free-fall time (π/2)
  * sqrt(r0³/2GM) as a second method for τ(r0 → 0), additivity, the limits
  * (4/3) M far out and π M at the horizon, and the domain error. */

@@ -1,5 +1,5 @@
 /* test_phase_area.c — phase-space area of an energy contour and the period
- * as dA/dE (core/phase_area.c): the pendulum against an independent
+ * as dA/dE (core/hamiltonian/phase_area.c): the pendulum against an independent
  * quadrature of ∮ p dθ and ∮ dθ/θ' (scipy quad, quoted), the period against
  * a finite difference of the area (the notes' T = dA/dE, a second method),
  * the small-amplitude limit 2πE/ω0 at k = 1e-10 (where the closed form

@@ -1,5 +1,5 @@
 /* test_rotating_hamiltonian.c — L, p, H in a rotating frame
- * (core/rotating_hamiltonian.c) against hand-derived closed forms, the two
+ * (core/hamiltonian/rotating_hamiltonian.c) against hand-derived closed forms, the two
  * forms of H_rot against each other, E = H_rot + ω·L, and the notes' puck
  * at rest on a rotating table (H_rot = −½mω²r², E = +½mω²r²). */
 #include <gsl/gsl_errno.h>

@@ -1,4 +1,4 @@
-/* test_small_oscillations.c — core/small_oscillations.c against closed forms
+/* test_small_oscillations.c — core/hamiltonian/small_oscillations.c against closed forms
  * and second methods: power-law potentials V = k r^n (apsidal angle
  * pi/sqrt(n + 2): Kepler pi, oscillator pi/2, the logarithm pi/sqrt 2),
  * Kepler's and the oscillator's frequencies and energies, Kepler plus eps/r^2

@@ -1,4 +1,4 @@
-/* test_boost.c — Lorentz boosts (core/boost.c) against closed forms, the
+/* test_boost.c — Lorentz boosts (core/relativity/boost.c) against closed forms, the
  * notes' worked examples (muon §3.4, twin paradox §3.14), a second method
  * (composition of collinear boosts: rapidities add, notes §3.9/§3.10) and an
  * independent long-double evaluation. Extremes: 1 m/s, 1 − β = 1e-15,

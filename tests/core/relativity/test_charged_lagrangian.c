@@ -1,5 +1,5 @@
 /* test_charged_lagrangian.c — L, P, H of a charged particle
- * (core/charged_lagrangian.c): exact rational closed forms at beta = 0.6,
+ * (core/relativity/charged_lagrangian.c): exact rational closed forms at beta = 0.6,
  * H = P.v − L (the Legendre transform) and H from P as two further methods,
  * the slow limit L + mc² → ½mv² (the notes' L = T − V), the uniform-field
  * gauge, and the errors. */

@@ -1,4 +1,4 @@
-/* test_doppler.c — relativistic Doppler factor and aberration (core/doppler.c)
+/* test_doppler.c — relativistic Doppler factor and aberration (core/relativity/doppler.c)
  * against closed forms (notes §3.14, the twin paradox's 1/3 and 3), the
  * identities approaching × receding = 1 and tan(α_S/2) tan(α_O/2) = e^{−η},
  * an independent long-double computation through explicit 4-vector boosts

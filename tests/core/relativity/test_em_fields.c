@@ -1,9 +1,9 @@
-/* test_em_fields.c — E and B under a boost (core/em_fields.c): the notes'
+/* test_em_fields.c — E and B under a boost (core/relativity/em_fields.c): the notes'
  * component formulas for a boost along x, the field of a charge at rest seen
  * moving (B' = −β×E'), invariants before and after (to 1e-14 of the field
  * scale squared up to γ = 1e15), there-and-back identity, a plane wave
  * staying null with its amplitude scaled by the Doppler factor of
- * core/doppler.c, SI against Heaviside–Lorentz, and the extremes. */
+ * core/relativity/doppler.c, SI against Heaviside–Lorentz, and the extremes. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <string.h>
@@ -97,7 +97,7 @@ int main(void)
             if (etas[i] > 5) continue;
             /* There and back: the boosted fields are rounded at their own size,
              * ~e^{η} larger, and that round-off is amplified e^{η} on the way
-             * back (as for 4-vectors, tests/core/test_boost.c). */
+             * back (as for 4-vectors, tests/core/relativity/test_boost.c). */
             struct mech_boost inv = mech_boost_inverse(&b);
             struct mech_em_boosted back = boost_fields(&inv, r.e, r.b, MECH_EM_HEAVISIDE_LORENTZ);
             const double tol = 1e-15 * exp(2 * etas[i]) * 2.5 * 8;
@@ -114,7 +114,7 @@ int main(void)
     /* Plane wave along +x (E = A ŷ, B = A ẑ, E ⟂ B, |E| = |B|): after any
      * boost it stays null (both invariants exactly 0 in the light-cone form)
      * and its amplitude scales by the Doppler factor of an observer with that
-     * velocity: D = γ(1 − β·x̂) (core/doppler.c, independent formula). */
+     * velocity: D = γ(1 − β·x̂) (core/relativity/doppler.c, independent formula). */
     {
         const double amp = 3.5;
         const struct mech_vec3 e = mech_vec3_make(0, amp, 0), bf = mech_vec3_make(0, 0, amp);

@@ -1,5 +1,5 @@
 /* test_four_vector.c — the Minkowski dot product, kinds and relative γ
- * (core/four_vector.c) against exact rational arithmetic (Python Fraction of
+ * (core/relativity/four_vector.c) against exact rational arithmetic (Python Fraction of
  * the binary inputs, quoted) and the velocity-addition closed form. */
 #include <gsl/gsl_errno.h>
 #include <math.h>

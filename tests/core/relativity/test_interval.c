@@ -1,4 +1,4 @@
-/* test_interval.c — the interval of two events (core/interval.c) against an
+/* test_interval.c — the interval of two events (core/relativity/interval.c) against an
  * exact binary128 evaluation of the binary inputs (products of doubles are
  * exact in __float128), the notes' muon (§3.4) and length contraction, the
  * example frames (boosting Δ with them makes Δct' or Δx' vanish), far events

@@ -1,9 +1,9 @@
-/* test_kinematics.c — relativistic particle kinematics (core/kinematics.c)
+/* test_kinematics.c — relativistic particle kinematics (core/relativity/kinematics.c)
  * against closed forms evaluated independently in 60-digit decimal arithmetic
  * (Python decimal; the values are quoted with their derivation), the notes'
  * worked examples and end-of-chapter problems (π⁰ decay, neutron decay,
  * Compton shift, problems 10, 11, 12, 18, 19), boost invariance through
- * core/boost.h, and the extremes: massless daughters, nearly collinear
+ * mech/boost.h, and the extremes: massless daughters, nearly collinear
  * photons, γ = 1e6 parents, a parent at 1e-12 c, thresholds, unphysical input. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
@@ -291,7 +291,7 @@ static void test_invariant_mass(void)
     CHECK(s.mass == 0 && !s.has_rest_frame);
 }
 
-/* Boost invariance through core/boost.h: boost a system and recompute M. */
+/* Boost invariance through mech/boost.h: boost a system and recompute M. */
 static void test_boost_invariance(void)
 {
     struct mech_budget bud = mech_budget_make(1000, 10.0);

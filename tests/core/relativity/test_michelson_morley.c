@@ -1,5 +1,5 @@
 /* test_michelson_morley.c — the ether analysis of Michelson–Morley
- * (core/michelson_morley.c) against 50-digit Decimal closed forms for the
+ * (core/relativity/michelson_morley.c) against 50-digit Decimal closed forms for the
  * notes' numbers (L = 11 m, beta = 1e-4: d = 2 gamma (gamma - 1) L =
  * 110.000001375 nm beside the notes' beta^2 L = 110 nm), the contracted arm
  * (no shift), 1 m/s (gamma - 1 = 5.6e-18 keeps its digits) and the errors. */

@@ -1,5 +1,5 @@
 /* test_particle_state.c — one particle's γ, β, E, p, T, η from any one of
- * them (core/particle_state.c) against closed forms evaluated in 60-digit
+ * them (core/relativity/particle_state.c) against closed forms evaluated in 60-digit
  * decimal arithmetic (Python decimal, quoted), the round trip through every
  * form, the extremes (1 m/s, 1 − β = 1e-15, rapidity 300, massless), the
  * notes' ½mv² approximation, the muon's lifetime (notes §3.4) and the errors. */

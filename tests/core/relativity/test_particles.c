@@ -1,4 +1,4 @@
-/* test_particles.c — the particle mass table (core/particles.c, PDG 2024 /
+/* test_particles.c — the particle mass table (core/relativity/particles.c, PDG 2024 /
  * CODATA 2018) and energy-unit conversion: lookups, aliases agree, every mass
  * finite and ≥ 0, the values the kinematics tests rely on, conversions that
  * round-trip to within one rounding, and hc from the exact SI constants. */

@@ -1,5 +1,5 @@
 /* test_relativistic_force.c — F = dp/dt split along and across v
- * (core/relativistic_force.c): beta = 0.6 closed forms (gamma = 5/4, gamma^3 =
+ * (core/relativity/relativistic_force.c): beta = 0.6 closed forms (gamma = 5/4, gamma^3 =
  * 125/64), the round trip force -> acceleration -> force, the power against
  * d(gamma m c^2)/dt by a finite difference of gamma along the motion (a second
  * method), the 4-force's orthogonality to the 4-velocity, and the errors. */

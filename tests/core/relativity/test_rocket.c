@@ -1,4 +1,4 @@
-/* test_rocket.c — the relativistic rocket (core/rocket.c) against closed
+/* test_rocket.c — the relativistic rocket (core/relativity/rocket.c) against closed
  * forms: the photon rocket m_i/m_f = gamma (1 + beta) (= 2 at beta = 0.6),
  * exhaust at c/2 (= 4), a chemical rocket at 1 m/s (50-digit Decimal,
  * quoted), the inverse, overflow and the errors. */

@@ -1,5 +1,5 @@
 /* test_telescope.c — what the stay-at-home twin sees of the traveller's
- * clock (core/telescope.c), against the notes' twin paradox in closed form:
+ * clock (core/relativity/telescope.c), against the notes' twin paradox in closed form:
  * out at beta = 0.8 for 4 ly (5 yr home time, 3 yr aboard), back the same
  * way. Home sees the outbound clock run at sqrt((1 - b)/(1 + b)) = 1/3 until
  * the turnaround's light arrives at t = 5 + 4 = 9 yr (reading 3 yr), then at

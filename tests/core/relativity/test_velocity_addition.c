@@ -1,4 +1,4 @@
-/* test_velocity_addition.c — velocity addition (core/velocity_addition.c)
+/* test_velocity_addition.c — velocity addition (core/relativity/velocity_addition.c)
  * against the notes' formulas (§3.10 u∥' = (u∥ − v)/(1 − v u∥),
  * u⊥' = u⊥/(γ(1 − v u∥))), against an independent long-double 4x4 boost of
  * the 4-velocity, collinear rapidity arithmetic at the extremes (1e-12 c,

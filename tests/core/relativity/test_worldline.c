@@ -1,4 +1,4 @@
-/* test_worldline.c — trips as legs (core/worldline.c): the notes' twin
+/* test_worldline.c — trips as legs (core/relativity/worldline.c): the notes' twin
  * paradox (§3.15: 8 ly at 0.8c, 20 and 12 years, Doppler ticks 2/18 and
  * 6-over-18 / 6-over-2) and exercise 7 (11 ly at 0.6c), the muon (§3.4),
  * hyperbolic motion against t = (c/a) sinh(aτ/c), x = (c²/a)(cosh(aτ/c) − 1)

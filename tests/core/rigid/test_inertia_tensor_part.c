@@ -1,5 +1,5 @@
 /* test_inertia_tensor_part.c — MECH_SHAPE_TENSOR parts of mech_inertia_compute
- * (core/inertia.c): a box given by its own tensor (from the table formula),
+ * (core/rigid/inertia.c): a box given by its own tensor (from the table formula),
  * turned and placed, against the same box given as a box part (a second
  * route through the code: body_form and R^T diag R); a dumbbell of two tensor
  * parts against the parallel-axis theorem by hand; and the errors (asymmetric,

@@ -1,5 +1,5 @@
 /* test_rigid_rotation.c — mech/attitude.h and mech/rigid_rotation.h:
- * quaternion helpers against core/rotation.c; the exact torque-free solution
+ * quaternion helpers against core/rotation/rotation.c; the exact torque-free solution
  * checked independently (it satisfies Euler's equations by central
  * differences, keeps L^2 and 2E, starts at w0), for both elliptic cases, the
  * separatrix, symmetric bodies (notes §2.9: Omega = (I3 - I12)/I12 w3) and

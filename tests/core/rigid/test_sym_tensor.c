@@ -1,4 +1,4 @@
-/* test_sym_tensor.c — mech_sym_tensor_analyse (core/sym_tensor.c): the notes'
+/* test_sym_tensor.c — mech_sym_tensor_analyse (core/rigid/sym_tensor.c): the notes'
  * cube about a corner (eigenvalues M a^2 (1/6, 11/12, 11/12), the degenerate
  * pair compared as a subspace: normal to (1,1,1)); tensors built as
  * Q diag(l) Q^T from a known rotation and known eigenvalues, some negative;

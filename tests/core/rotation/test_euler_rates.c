@@ -1,5 +1,5 @@
 /* test_euler_rates.c — mech_euler_kinematics and mech_euler_rates_from_omega
- * (core/euler_rates.c): ch. 0 HW 7 (a turn about z at rate w: dR/dt(0) =
+ * (core/rotation/euler_rates.c): ch. 0 HW 7 (a turn about z at rate w: dR/dt(0) =
  * w [[0,1,0],[-1,0,0],[0,0,0]], omega = w z); for random angles and rates,
  * dR/dt against a Richardson-extrapolated central difference of R(t) built by
  * mech_rotation_from_euler_zxz (an independent construction), omega_body read

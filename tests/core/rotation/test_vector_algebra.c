@@ -1,5 +1,5 @@
 /* test_vector_algebra.c — mech_vector_pair and mech_vector_triple
- * (core/vector_algebra.c) against closed forms and second methods: the notes'
+ * (core/rotation/vector_algebra.c) against closed forms and second methods: the notes'
  * ch. 0 homework 1 worked by hand, the antisymmetric tensor entry by entry
  * (a_i b_j - a_j b_i) and back through eps_ijk, angles of nearly parallel and
  * antiparallel vectors against atan of the exact ratio, vectors at 1e-200 and
