@@ -54,7 +54,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/reference.h"
+#include "mech/kepler.h"
 
 enum { WH_MAX_KICK_ITERATIONS = 50 };
 
