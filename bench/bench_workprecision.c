@@ -859,7 +859,7 @@ static void issue_presets_section(void)
             p.mass = 1;
             p.frame.type = MECH_FRAME_EARTH;
             p.frame.latitude_deg = 32;
-            p.frame.omega_magnitude = 7.2921159e-5;
+            p.frame.omega_magnitude = MECH_EARTH_OMEGA;
             p.fictitious = MECH_FICTITIOUS_CORIOLIS;
             p.position = mech_vec3_make(0, 0, 100);
             p.t_end = sqrt(2 * 100 / 9.80665);
@@ -980,7 +980,7 @@ static int ss_rhs_hh(double t, const double y[], double f[], void *p)
 static int ss_rhs_fall(double t, const double y[], double f[], void *p)
 {
     (void)t, (void)p;
-    const double W = 7.2921159e-5, lat = 32.0 * SS_PI / 180.0;
+    const double W = MECH_EARTH_OMEGA, lat = 32.0 * SS_PI / 180.0;
     const double wy = W * cos(lat), wz = W * sin(lat);
     f[0] = y[3], f[1] = y[4], f[2] = y[5];
     /* W x v = (wy vz - wz vy, wz vx, -wy vx) */

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "mech/reference.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 #include "testlib.h"
 
@@ -409,7 +410,7 @@ static void test_lorentz(void)
  * formula to 1e-14. Through the trajectory's first sample: model term size. */
 static void test_tide(void)
 {
-    const double gm = 4.9048695e12, d = 3.844e8;
+    const double gm = MECH_MOON_GM, d = MECH_MOON_DISTANCE;
     struct mech_trajectory_problem p;
     memset(&p, 0, sizeof p);
     p.mass = 1.0;

@@ -445,7 +445,7 @@ static double coriolis_gap(double W, int centrifugal, double *second)
 static void test_coriolis(void)
 {
     /* notes' falling object: x_east = (1/3) W g cos(lat) t^3 */
-    const double W = 7.2921159e-5, lat = 32 * MECH_PI / 180, g = 9.80665, h = 100, t = sqrt(2 * h / g);
+    const double W = MECH_EARTH_OMEGA, lat = 32 * MECH_PI / 180, g = 9.80665, h = 100, t = sqrt(2 * h / g);
     struct mech_vec3 w = mech_vec3_make(0, W * cos(lat), W * sin(lat)), r, v, s;
     mech_coriolis_first_order(w, mech_vec3_make(0, 0, -g), 0, mech_vec3_make(0, 0, h),
                               mech_vec3_make(0, 0, 0), t, &r, &v, &s);

@@ -55,7 +55,7 @@ static void check_series(void)
     for (size_t i = 0; i < sizeof us / sizeof us[0]; i++)
         for (size_t j = 0; j < sizeof thetas / sizeof thetas[0]; j++) {
             double u = us[i], th = thetas[j];
-            double d = 3.844e8, r = u * d, gm = 4.9e12;
+            double d = MECH_MOON_DISTANCE, r = u * d, gm = 4.9e12;
             struct mech_tide_acceleration a;
             CHECK_EQ_INT(mech_tide_acceleration(gm, d, r, th, &a, NULL), MECH_OK);
             double s, c;
@@ -142,7 +142,7 @@ static void check_far(void)
 /* Moderate u: direct subtraction in long double has ~19 - log10(1/u) digits. */
 static void check_long_double(void)
 {
-    const double gm = 4.9e12, d = 3.844e8, r = 6371008.8;
+    const double gm = 4.9e12, d = MECH_MOON_DISTANCE, r = MECH_EARTH_RADIUS_MEAN;
     for (double th = 0; th <= 180; th += 15) {
         double s, c;
         mech_sincos_deg(th, &s, &c);

@@ -211,7 +211,7 @@ static void test_presets_oscillator_falling(void)
     p.n_forces = 1;
     p.frame.type = MECH_FRAME_EARTH;
     p.frame.latitude_deg = 32;
-    p.frame.omega_magnitude = 7.2921159e-5; /* Earth's sidereal rate, rad/s */
+    p.frame.omega_magnitude = MECH_EARTH_OMEGA; /* the Earth's rate, rad/s */
     p.fictitious = MECH_FICTITIOUS_CORIOLIS;
     p.t_end = sqrt(2 * 100 / 9.80665);
     p.samples = 51;

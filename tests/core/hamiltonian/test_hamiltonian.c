@@ -167,7 +167,7 @@ static void test_central(void)
         CHECK(r.conserved_drift[0].max_abs == 0.0);
     }
     /* Earth around the Sun, SI: one sidereal year for a circular 1 au orbit */
-    const double GM = 1.32712440018e20, me = 5.9722e24, au = 1.495978707e11;
+    const double GM = MECH_SUN_GM, me = MECH_EARTH_MASS, au = MECH_AU;
     struct mech_ham_system s = {.kind = MECH_HAM_CENTRAL, .mass = me, .strength = -GM * me,
                                 .power = -1.0};
     const double pphi = me * sqrt(GM * au), T = 2.0 * MECH_PI * sqrt(au * au * au / GM);

@@ -157,7 +157,7 @@ static void test_foucault(void)
     struct mech_foucault_modes f;
     struct mech_error e;
     mech_error_clear(&e);
-    const double l = 67, g = 9.80665, w = 7.2921159e-5, lat = 32 * MECH_PI / 180;
+    const double l = 67, g = 9.80665, w = MECH_EARTH_OMEGA, lat = 32 * MECH_PI / 180;
     CHECK(mech_foucault_modes(l, g, w, lat, &f, &e) == MECH_OK);
     CHECK_CLOSE(f.omega_z, w * sin(lat), 1e-15, 0);
     double a1 = f.ccw, a2 = -f.cw;
