@@ -1,5 +1,5 @@
 /* test_wisdom_holman.c — the Wisdom–Holman splitting (integrators/
- * wisdom_holman.c) and its Kepler drift (mech_kepler_drift, reference.c):
+ * wisdom_holman.c) and its Kepler drift (mech_kepler_drift, core/ode/kepler.c):
  *   the drift against an independent solution of Kepler's equation in long
  *   double (E - e sin E = M, e sinh H - H = M) at e = 0, 0.5, 0.9, 0.99, a
  *   hyperbola and a near-radial ellipse, for short, long and backward steps;
