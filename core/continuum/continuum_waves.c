@@ -5,7 +5,6 @@
 
 #include <math.h>
 
-
 enum mech_status mech_string_wave_speed(double tension, double linear_density, double *c,
                                         struct mech_error *err)
 {

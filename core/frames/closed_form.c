@@ -13,7 +13,6 @@
 
 #include "mech/reference.h"
 
-
 struct cf_ctx {
     const struct mech_trajectory_problem *p;
     struct mech_trajectory_reference ref;

@@ -5,7 +5,6 @@
 
 #include <math.h>
 
-
 void mech_sincos_deg(double deg, double *s, double *c)
 {
     /* Reduce to [0, 360) keeping the sign of sine: sin(-x) = -sin x. */

@@ -5,7 +5,6 @@
 
 #include <math.h>
 
-
 struct mech_vec3 mech_frame_omega(const struct mech_frame *frame)
 {
     switch (frame->type) {

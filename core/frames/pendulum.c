@@ -49,7 +49,6 @@
 
 #include <math.h>
 
-
 const char *mech_pendulum_method_name(enum mech_pendulum_method m)
 {
     switch (m) {

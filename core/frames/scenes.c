@@ -11,7 +11,6 @@
 #include <stdio.h>
 #include <string.h>
 
-
 void mech_scene_ballistic_fix(struct mech_scene_ballistic_result *out)
 {
     out->problem.forces = out->forces;

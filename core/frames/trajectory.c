@@ -692,7 +692,6 @@ static void kepler_split_fill(const struct traj_ctx *c, struct mech_ode_kepler_s
     ks->velocity_dependent = scene_velocity_dependent(c);
 }
 
-
 /* The integrator's side of mech_trajectory_angular_center: its frame terms. */
 static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *center)
 {
@@ -772,7 +771,6 @@ static int scene_time_dependent(const struct traj_ctx *c)
 {
     return (c->coriolis || c->centrifugal || c->euler) && mech_vec3_norm(c->wdot) > 0.0;
 }
-
 
 /* Set up planar integration in c when asked and possible for this method. */
 static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)

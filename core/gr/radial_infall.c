@@ -5,7 +5,6 @@
 
 #include <math.h>
 
-
 /* asin s − s sqrt(1 − s²) = 2 Σ_k C(2k, k)/4^k s^{2k+3}/(2k + 3) (the integral
  * of 2t²/sqrt(1 − t²)), summed for s ≤ 1/2 where the closed form cancels. */
 static double asin_minus(double s)

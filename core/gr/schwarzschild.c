@@ -7,7 +7,6 @@
 
 #include <math.h>
 
-
 /* 1 - sqrt(1 - x) for x <= 1, without cancellation for small x. */
 static double one_minus_sqrt1m(double x)
 {

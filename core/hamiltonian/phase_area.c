@@ -7,7 +7,6 @@
 #include <gsl/gsl_sf_ellint.h>
 #include <math.h>
 
-
 static enum mech_status positive(double x, const char *name, struct mech_error *err)
 {
     if (!isfinite(x) || !(x > 0))

@@ -7,7 +7,6 @@
 #include <math.h>
 #include <stdio.h>
 
-
 static int pos(double x) { return isfinite(x) && x > 0; }
 
 enum mech_status mech_orbit_oscillation(const struct mech_potential_term *terms, size_t n,

@@ -22,7 +22,6 @@
 
 #include <math.h>
 
-
 /* ---- accurate small vector arithmetic ------------------------------------ */
 
 /* Unit vector along d (scaled first so nothing overflows); 0 if d is zero or

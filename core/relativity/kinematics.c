@@ -19,7 +19,6 @@
 #include <float.h>
 #include <math.h>
 
-
 /* ---- compensated arithmetic (Neumaier sums, fma products) ------------------ */
 
 static double sum3(double a, double b, double c)

@@ -151,7 +151,6 @@ enum mech_status mech_rotation_from_quaternion(const double q[4], struct mech_ma
  * Conventions: mech/rotation.h. Quaternions are [w, x, y, z], Hamilton product,
  * and describe the ACTIVE turn; passive matrices are the transposes. */
 
-
 /* Axis letters of the 12 sequences, in enum order. */
 static const char *const euler_names[MECH_EULER_SEQUENCE_COUNT] = {
     "XYZ", "XZY", "YXZ", "YZX", "ZXY", "ZYX", "XYX", "XZX", "YXY", "YZY", "ZXZ", "ZYZ",

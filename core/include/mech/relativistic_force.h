@@ -18,7 +18,6 @@
 #include "mech/status.h"
 #include "mech/vec.h"
 
-
 struct mech_rel_force {
     struct mech_vec3 force, force_parallel, force_perpendicular;              /* N */
     struct mech_vec3 acceleration, acceleration_parallel, acceleration_perpendicular; /* m/s² */

@@ -13,7 +13,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static void test_string(void)
 {
     double c = 0;

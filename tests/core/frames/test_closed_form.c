@@ -28,7 +28,6 @@
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-
 #define NS 201
 static double T_[NS], T2[NS];
 static struct mech_vec3 R_[NS], V_[NS], R2[NS], V2[NS];

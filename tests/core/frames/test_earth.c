@@ -15,7 +15,6 @@
 #include "mech/effective_force.h"
 #include "testlib.h"
 
-
 static const struct mech_earth_sphere EARTH = {MECH_EARTH_GM, MECH_EARTH_RADIUS_MEAN,
                                                MECH_EARTH_OMEGA};
 

@@ -14,7 +14,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 #define CHECK_VEC(got, want, rtol, atol)                                                           \
     do {                                                                                           \
         struct mech_vec3 g_ = (got), w_ = (want);                                                  \

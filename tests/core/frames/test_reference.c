@@ -23,7 +23,6 @@
 #include "kepler_ld.h"
 #include "testlib.h"
 
-
 static double rel3(struct mech_vec3 a, struct mech_vec3 b)
 {
     return mech_vec3_norm(mech_vec3_sub(a, b)) / mech_vec3_norm(b);

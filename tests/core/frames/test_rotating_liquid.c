@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 /* Volume under the surface by composite Simpson on r h(r) (n even). The
  * integrand has a kink at the dry radius, so split there. */
 static double volume(const struct mech_rotating_liquid *p, const struct mech_rotating_liquid_surface *s)

@@ -16,7 +16,6 @@
 #include "mech/tides.h"
 #include "testlib.h"
 
-
 /* Legendre-series tidal acceleration in units of GM/d²: rad, tan; and the
  * sum of the terms n >= 3 alone (the departure from first order). */
 static void legendre(double u, double c, double s, int nmax, double *rad, double *tan_,

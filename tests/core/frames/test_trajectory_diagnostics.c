@@ -25,7 +25,6 @@
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-
 enum { NS = 401 };
 static double ts[NS];
 static struct mech_vec3 pos[NS], vel[NS];

@@ -18,7 +18,6 @@
 #include "mech/schwarzschild.h"
 #include "testlib.h"
 
-
 enum { NS = 2001 };
 static double sp[NS], st[NS], sr[NS], sphi[NS];
 

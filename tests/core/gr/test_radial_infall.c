@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static void test_values(void)
 {
     const struct { double r0, sing, hor, h2s; } t[] = {

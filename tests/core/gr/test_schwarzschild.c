@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 /* Binding efficiency 1 - E of circular orbits (50-digit Decimal of
  * 1 - (1 - 2/r)/sqrt(1 - 3/r)): r = 1e6: 4.99999624998312495e-7 (the direct
  * formula in doubles keeps only ~10 digits here), r = 10: 0.0438171125324850880,

@@ -14,7 +14,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static struct mech_budget budget(void)
 {
     return mech_budget_make(50000000, 120.0);

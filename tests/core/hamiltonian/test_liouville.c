@@ -13,7 +13,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 enum { NS = 5 };
 
 struct run_out {

@@ -14,7 +14,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static void test_pendulum(void)
 {
     const double m = 2.0, l = 1.5, g = 9.81, w0 = sqrt(g / l);

@@ -13,7 +13,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 enum { MAXC = 400 };
 
 struct pc_out {

@@ -15,7 +15,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static double veff(const struct mech_potential_term *t, size_t n, double m, double l, double r)
 {
     double v = l * l / (2 * m * r * r);

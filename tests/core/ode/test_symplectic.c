@@ -39,7 +39,6 @@
 #include "mech/ode.h"
 #include "testlib.h"
 
-
 static const char *const FIXED[] = {"euler",    "symplectic_euler", "rk4",
                                     "verlet",   "yoshida4",         "yoshida6",
                                     "gauss4",   "gauss6",           "boris"};

@@ -24,7 +24,6 @@
 #include "mech/trajectory.h"
 #include "testlib.h"
 
-
 /* ---- an independent Kepler solution (perifocal frame, long double) ------- */
 
 /* State at time t after pericentre of the conic with semi-major axis a > 0

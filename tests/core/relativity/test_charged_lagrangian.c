@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 /* m = 1 kg, q = 2 C, beta = 0.6 x (gamma = 5/4), phi = 3 V, A = (4, 0, 0) T m:
  * L = −c²/γ + q A·v − qφ = −0.8c² + 4.8c − 6; P = (0.75c + 8, 0, 0);
  * H = 1.25c² + 6, and P·v − L = 0.45c² + 4.8c + 0.8c² − 4.8c + 6 = H. */

@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static void test_closed_form(void)
 {
     struct mech_boost b;

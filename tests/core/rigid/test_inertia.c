@@ -11,7 +11,6 @@
 #include "mech/rotation.h"
 #include "testlib.h"
 
-
 static unsigned long rnd_state = 987654321UL;
 static double rnd(void)
 {

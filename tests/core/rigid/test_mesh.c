@@ -31,7 +31,6 @@
 #include "mech/rotation.h"
 #include "testlib.h"
 
-
 /* ---- mesh generators ----------------------------------------------------- */
 
 struct gen {

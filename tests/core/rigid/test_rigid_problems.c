@@ -14,7 +14,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 /* Euler's equations, torque-free, I1 = I2 = ip: w' = f(w) */
 static void euler_rhs(double ip, double i3, const double w[3], double d[3])
 {

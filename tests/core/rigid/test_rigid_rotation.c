@@ -16,7 +16,6 @@
 #include "mech/rotation.h"
 #include "testlib.h"
 
-
 static double mat_diff(struct mech_mat3 a, struct mech_mat3 b)
 {
     double d = 0;

@@ -14,7 +14,6 @@
 #include "mech/stability.h"
 #include "testlib.h"
 
-
 /* Torque-free Euler equations (notes §2.8): I1 w1' = (I2 - I3) w2 w3, cyclic. */
 static enum mech_status euler_rhs(double t, const double *w, double *dw, void *params)
 {

@@ -12,7 +12,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 enum { NS = 20001 };
 static double ts[NS], th[NS], ph[NS], ps[NS], pps[NS];
 static struct mech_vec3 ax[NS];

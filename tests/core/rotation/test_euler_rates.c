@@ -15,7 +15,6 @@
 #include "mech/rotation.h"
 #include "testlib.h"
 
-
 static struct mech_mat3 r_at(const double a[3], const double d[3], double t)
 {
     struct mech_mat3 r;

@@ -8,7 +8,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static double max_diff(struct mech_mat3 a, struct mech_mat3 b)
 {
     double d = 0;

@@ -14,7 +14,6 @@
 #include "mech/constants.h"
 #include "testlib.h"
 
-
 static struct mech_vec3 v3(double x, double y, double z) { return mech_vec3_make(x, y, z); }
 
 static void check_vec(struct mech_vec3 got, struct mech_vec3 want, double rtol, double atol)
