@@ -1,5 +1,5 @@
 /* bench_calibrate_chooser.c — measures the constants of the chooser's model
- * (core/chooser.c, issue 16 "A chooser that predicts cost and error").
+ * (core/ode/chooser.c, issue 16 "A chooser that predicts cost and error").
  *
  * For each scene class and candidate method it runs mech_trajectory_integrate
  * (the path the answers take) at three settings and two run lengths, and fits
@@ -12,13 +12,13 @@
  * (rk8pd at rtol 1e-14: the falling object with Coriolis).
  *
  * Output: one C initialiser line per (class, method), pasted into
- * core/chooser_table.h with this program's name and the date. Run:
+ * core/ode/chooser_table.h with this program's name and the date. Run:
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
  * With --presets it prints instead each preset's choice, CPU and achieved
  * error on the issue's particle scenes (no calibration); --floors the
  * round-off floors; --pendulum the Foucault pendulum's law
- * (core/chooser_pendulum.c). The scenes are tests/chooser_scenes.h's.
+ * (core/frames/chooser_pendulum.c). The scenes are tests/chooser_scenes.h's.
  */
 #include <math.h>
 #include <stdio.h>
@@ -26,12 +26,12 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/trajectory.h"
 
 #include "../tests/chooser_scenes.h"
 
 #define NS 101
-#define CAL_PI 3.14159265358979323846
 
 struct scene {
     const char *cls;
@@ -274,10 +274,10 @@ static void presets_table(void)
         sc[k].p.position = mech_vec3_make(1.0 - e, 0, 0);
         sc[k].p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
         sc[k].T = sqrt(pow(1.0 - e, 3.0));
-        sc[k].spans[0] = orb[k] * 2 * CAL_PI / sc[k].T;
+        sc[k].spans[0] = orb[k] * 2 * MECH_PI / sc[k].T;
     }
     scene_osc(&sc[4]);
-    sc[4].spans[0] = 1e4 * 2 * CAL_PI;
+    sc[4].spans[0] = 1e4 * 2 * MECH_PI;
     scene_fall(&sc[5]);
     sc[5].p.fictitious = MECH_FICTITIOUS_CORIOLIS;
     make_reference(&sc[5]);
@@ -317,7 +317,7 @@ static void presets_table(void)
 }
 
 /* --floors: the round-off floor of the Kepler class against eccentricity
- * (the chooser's floor model, core/chooser.c ecc_floor_factor): radau15 at
+ * (the chooser's floor model, core/ode/chooser.c ecc_floor_factor): radau15 at
  * eps 1e-9 and 2e-9 (its floor; two settings give two round-off histories)
  * and rk8pd at rtol 1e-13, over 10, 100 and 1000 orbits from pericentre, each
  * error divided by the e = 0.5 class floor Fm span^g of chooser_table.h. */
@@ -336,7 +336,7 @@ static void floors_table(void)
             s.p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
             s.T = sqrt(pow(1.0 - e, 3.0));
             s.S = fmin(1.0 - e, sqrt((1.0 + e) / (1.0 - e)));
-            const double span = orb[k] * 2 * CAL_PI / s.T;
+            const double span = orb[k] * 2 * MECH_PI / s.T;
             struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
             struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
             struct meas m3 = run(&s, span, "rk8pd", 1e-13, 1, NS);
@@ -353,7 +353,7 @@ static void floors_table(void)
             struct scene s;
             scene_osc(&s);
             s.p.velocity = mech_vec3_make(0, vy[i], 0);
-            const double span = per[k] * 2 * CAL_PI;
+            const double span = per[k] * 2 * MECH_PI;
             struct meas m1 = run(&s, span, "radau15", 1e-9, 1, NS);
             struct meas m2 = run(&s, span, "radau15", 2e-9, 1, NS);
             const double worst = fmax(m1.err, m2.err);
@@ -364,7 +364,7 @@ static void floors_table(void)
         }
 }
 
-/* --pendulum: the Foucault pendulum's law (core/chooser_pendulum.c): for
+/* --pendulum: the Foucault pendulum's law (core/frames/chooser_pendulum.c): for
  * rattle (p = 2) and rattle_yoshida4 (p = 4) at several steps per swing n,
  * latitudes 32 .. 80 deg, amplitudes 3 .. 30 deg, 100 and 1000 swings, the
  * error max(|period - ref| / ref, |rate - ref| / W) against
@@ -388,7 +388,7 @@ static void pendulum_table(void)
                 if (!cs_foucault_run(lats[i], amps[j], swings[k], MECH_PENDULUM_RATTLE_YOSHIDA4,
                                      12800, &ref))
                     continue;
-                const double alpha = amps[j] * CAL_PI / 180;
+                const double alpha = amps[j] * MECH_PI / 180;
                 const double fl = fmax(1e-14, 1e-13 / (MECH_EARTH_OMEGA_SIDEREAL * ref.swings *
                                                        ref.period));
                 for (int m = 0; m < 2; m++)
@@ -399,7 +399,7 @@ static void pendulum_table(void)
                         cpu[m] += mech_cpu_seconds() - c0;
                         ev[m] += (double)r.force_evaluations;
                         const double e = cs_foucault_err(&r, &ref);
-                        const double C = e / (pow(2 * CAL_PI / ns[m][q], m ? 4 : 2) *
+                        const double C = e / (pow(2 * MECH_PI / ns[m][q], m ? 4 : 2) *
                                               (1 + 3 * alpha * alpha));
                         printf("%-5.0f %-5.0f %-6.0f %-16s %7.0f %10.2e %10.3g%s\n", lats[i],
                                amps[j], swings[k], mech_pendulum_method_name(ms[m]), ns[m][q], e,

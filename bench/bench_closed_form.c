@@ -17,6 +17,7 @@
 #include <time.h>
 
 #include "mech/closed_form.h"
+#include "mech/constants.h"
 
 static double cpu(void)
 {
@@ -31,7 +32,7 @@ static double T[NS];
 
 int main(void)
 {
-    const double PI = 3.14159265358979323846;
+    const double PI = MECH_PI;
     struct mech_force kep = {.type = MECH_FORCE_CENTRAL_GRAVITY}, spr = {.type = MECH_FORCE_SPRING};
     kep.u.central_gravity.gm = 1.0;
     spr.u.spring.k = 1.0;

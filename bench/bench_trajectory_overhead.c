@@ -3,7 +3,7 @@
  *
  * The same scene, method and tolerance run two (three) ways, in interleaved
  * rounds on the same thread:
- *   api   mech_trajectory_integrate (core/trajectory.c): force loop, observer
+ *   api   mech_trajectory_integrate (core/frames/trajectory.c): force loop, observer
  *         (term sizes, energy and angular-momentum drift), planar reduction,
  *         reference report; samples = 2 (t0 and t_end, both step ends, so no
  *         sub-steps on either side);
@@ -39,11 +39,11 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/trajectory.h"
 
-#define OV_PI 3.14159265358979323846
 #define OV_ECC 0.5
 #define OV_MAX_ROUNDS 50
 
@@ -59,11 +59,11 @@ struct outcome {
     double cpu;
 };
 
-static double t_end_of(long orbits) { return 2.0 * OV_PI * (double)orbits; }
+static double t_end_of(long orbits) { return 2.0 * MECH_PI * (double)orbits; }
 
 /* ---- the bare right-hand sides (GM = 1) ----------------------------------- */
 
-/* a = d (-(GM/|d|^2)/|d|), as core/trajectory.c writes central gravity. */
+/* a = d (-(GM/|d|^2)/|d|), as core/frames/trajectory.c writes central gravity. */
 static void kepler_accel_n(const double *q, double *a, int n)
 {
     double s2 = 0.0;

@@ -25,10 +25,10 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/status.h"
 #include "mech/trajectory.h"
 
-#define WH_PI 3.14159265358979323846
 #define WH_D 20.0
 
 struct outcome {
@@ -65,11 +65,11 @@ static int run(double e, double eps, double orbits, const char *method, double s
     p.velocity = mech_vec3_make(0.0, sqrt((1.0 + e) / (1.0 - e)), 0.0);
     p.forces = f;
     p.n_forces = eps > 0.0 ? 2 : 1;
-    p.t_end = orbits * 2.0 * WH_PI;
+    p.t_end = orbits * 2.0 * MECH_PI;
     p.samples = 2;
     p.method = method;
     if (!strncmp(method, "wisdom_holman", 13)) { /* both fixed-step variants */
-        p.opt.dt = setting * 2.0 * WH_PI;
+        p.opt.dt = setting * 2.0 * MECH_PI;
     } else {
         p.opt.rtol = setting;
         p.opt.atol = 0.0;
@@ -195,7 +195,7 @@ int main(void)
     printf("\n=== wisdom_holman error model (for the chooser) ===\n"
            "err = |r - r_ref| / a at t_end ~ A * (dt/T)^p * span, span in orbits, for a tide of "
            "relative size eps = %.0e;\nA/eps is the constant per unit perturbation (wisdom_holman's error is "
-           "linear in eps: tests/core/test_wisdom_holman.c; wh_corrected's is O(eps^2 dt^2 + eps "
+           "linear in eps: tests/core/ode/test_wisdom_holman.c; wh_corrected's is O(eps^2 dt^2 + eps "
            "dt^4), so its A/eps holds for eps ~ 1e-4 only). Fitted from two step sizes "
            "dt1, dt2 = dt1/2\nover 10 and 100 orbits (span exponent q measured too; p and A "
            "at 100 orbits).\n",

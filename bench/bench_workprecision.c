@@ -67,13 +67,13 @@
 #include <unistd.h>
 
 #include "api.h"
+#include "mech/constants.h"
 #include "mech/budget.h"
 #include "mech/ode.h"
 #include "mech/status.h"
 #include "mech/trajectory.h"
 
-#define WP_PI 3.14159265358979323846
-#define WP_TWO_PI_L 6.283185307179586476925286766559L
+#define WP_TWO_PI_L MECH_TWO_PI_L
 #define WP_MAX_ROWS 4096
 #define WP_MAX_CP 24
 #define WP_MAX_METHODS 32
@@ -187,7 +187,7 @@ static double scene_energy(const struct scene *sc, const double *y)
  * for e > 0.8), iterated until the correction stops shrinking. */
 static double kepler_E(double M, double e)
 {
-    double E = e > 0.8 ? WP_PI : M + e * sin(M);
+    double E = e > 0.8 ? MECH_PI : M + e * sin(M);
     double last = INFINITY;
     for (int i = 0; i < 100; i++) {
         double d = (E - e * sin(E) - M) / (1.0 - e * cos(E));
@@ -272,8 +272,8 @@ static void scene_kepler(struct scene *sc, const char *name, const char *title, 
     sc->title = title;
     sc->kind = SCENE_KEPLER;
     sc->e = e;
-    sc->period = 2.0 * WP_PI;
-    sc->t_end = orbits * (2.0 * WP_PI);
+    sc->period = 2.0 * MECH_PI;
+    sc->t_end = orbits * (2.0 * MECH_PI);
     sc->scale = 1.0;
     sc->y0[0] = 1.0 - e;
     sc->y0[4] = sqrt((1.0 + e) / (1.0 - e));
@@ -294,8 +294,8 @@ static void scenes_make(struct scene *s)
     o->name = "oscillator";
     o->title = "Harmonic oscillator, 1e5 periods";
     o->kind = SCENE_OSC;
-    o->period = 2.0 * WP_PI;
-    o->t_end = 1e5 * (2.0 * WP_PI);
+    o->period = 2.0 * MECH_PI;
+    o->t_end = 1e5 * (2.0 * MECH_PI);
     o->scale = 1.0;
     o->y0[0] = 1.0;
     o->has_energy = 1;
@@ -311,7 +311,7 @@ static void scenes_make(struct scene *s)
     f->g0 = 9.80665;
     f->h = 100.0;
     f->W = MECH_EARTH_OMEGA_SIDEREAL;
-    double lat = f->lat_deg * (WP_PI / 180.0);
+    double lat = f->lat_deg * (MECH_PI / 180.0);
     f->nvec[1] = cos(lat);
     f->nvec[2] = sin(lat);
     f->t_end = sqrt(2.0 * f->h / f->g0);
@@ -826,7 +826,7 @@ static void issue_presets_section(void)
            "201 samples, CPU best of 3)\n");
     printf("%-22s %-9s %8s %-8s %9s %10s %-6s %10s %9s\n", "scene", "preset", "promise", "method",
            "rtol", "rel_err", "kept?", "rhs_evals", "cpu_s");
-    const double PI = WP_PI, gm = 3.986004418e14;
+    const double PI = MECH_PI, gm = MECH_EARTH_GM;
     double log_md = 0, log_mb = 0;
     int n_sc = 0;
     for (int sc = 0; sc < 6; sc++) {
@@ -859,7 +859,7 @@ static void issue_presets_section(void)
             p.mass = 1;
             p.frame.type = MECH_FRAME_EARTH;
             p.frame.latitude_deg = 32;
-            p.frame.omega_magnitude = 7.2921159e-5;
+            p.frame.omega_magnitude = MECH_EARTH_OMEGA;
             p.fictitious = MECH_FICTITIOUS_CORIOLIS;
             p.position = mech_vec3_make(0, 0, 100);
             p.t_end = sqrt(2 * 100 / 9.80665);
@@ -980,7 +980,7 @@ static int ss_rhs_hh(double t, const double y[], double f[], void *p)
 static int ss_rhs_fall(double t, const double y[], double f[], void *p)
 {
     (void)t, (void)p;
-    const double W = 7.2921159e-5, lat = 32.0 * SS_PI / 180.0;
+    const double W = MECH_EARTH_OMEGA, lat = 32.0 * SS_PI / 180.0;
     const double wy = W * cos(lat), wz = W * sin(lat);
     f[0] = y[3], f[1] = y[4], f[2] = y[5];
     /* W x v = (wy vz - wz vy, wz vx, -wy vx) */
@@ -1547,7 +1547,7 @@ static int longrun_target(const struct scene *k05, const char *dir, char *summar
 {
     struct scene sc = *k05;
     sc.name = "kepler-e0.5-1e5";
-    sc.t_end = 1e5 * (2.0 * WP_PI);
+    sc.t_end = 1e5 * (2.0 * MECH_PI);
     static const double orbits[] = {1, 2, 5, 10, 20, 50, 100, 200, 500, 1e3, 2e3, 5e3,
                                     1e4, 2e4, 5e4, 1e5};
     size_t n_cp = sizeof orbits / sizeof orbits[0];
@@ -1752,7 +1752,7 @@ int main(int argc, char **argv)
     /* Falling object: the notes' first-order east deflection beside the exact one. */
     {
         const struct scene *f = &scenes[3];
-        double lat = f->lat_deg * (WP_PI / 180.0);
+        double lat = f->lat_deg * (MECH_PI / 180.0);
         double first = f->W * cos(lat) * sqrt(8.0 * f->h * f->h * f->h / f->g0) / 3.0;
         double ex[6];
         scene_exact(f, f->t_end, ex);
@@ -1768,7 +1768,7 @@ int main(int argc, char **argv)
     struct row *base = NULL, *tmp = NULL, *base100 = NULL;
     struct scene k100 = scenes[0];
     k100.name = "kepler-e0.5-100";
-    k100.t_end = 100 * (2.0 * WP_PI);
+    k100.t_end = 100 * (2.0 * MECH_PI);
     size_t nb = scipy_run(bench_dir, &scenes[0], scenes[0].t_end, 1, "1e-6 1e-8 1e-10 1e-12", &tmp);
     for (size_t i = 0; i < nb; i++) print_row(tmp + i);
     if (scipy_run(bench_dir, &scenes[0], scenes[0].t_end, 3, "1e-13", &base) == 1) print_row(base);

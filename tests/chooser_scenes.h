@@ -1,7 +1,7 @@
 /* chooser_scenes.h — the chooser's calibration scenes, defined once for the
  * program that measures the model's constants (bench/bench_calibrate_chooser.c)
- * and the tests that check its predictions (tests/core/test_chooser.c,
- * tests/core/test_chooser_pendulum.c): Kepler orbits from pericentre, the
+ * and the tests that check its predictions (tests/core/ode/test_chooser.c,
+ * tests/core/frames/test_chooser_pendulum.c): Kepler orbits from pericentre, the
  * isotropic oscillator, the falling object with Coriolis (notes §1.3), and
  * the Foucault pendulum (notes §1.3). Header-only (static functions, unused
  * ones allowed); needs libmech. */
@@ -12,11 +12,11 @@
 #include <string.h>
 
 #include "mech/budget.h"
+#include "mech/constants.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
 
 #define CS_UNUSED __attribute__((unused))
-#define CS_PI 3.14159265358979323846
 
 struct chooser_scene {
     const char *name;
@@ -48,7 +48,7 @@ static CS_UNUSED void cs_kepler(struct chooser_scene *s, const char *name, doubl
     s->p.mass = 1.0;
     s->p.position = mech_vec3_make(1.0 - e, 0, 0);
     s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
-    s->period = 2.0 * CS_PI;
+    s->period = 2.0 * MECH_PI;
     s->p.t_end = orbits * s->period;
     s->T = sqrt(pow(1.0 - e, 3.0));
     /* 0.61: the scale the calibration of 2026-11-25 ran with at e = 0.5 */
@@ -69,7 +69,7 @@ static CS_UNUSED void cs_oscillator(struct chooser_scene *s, const char *name, d
     s->p.mass = 1.0;
     s->p.position = mech_vec3_make(1, 0, 0);
     s->p.velocity = mech_vec3_make(0, 0.5, 0);
-    s->period = 2.0 * CS_PI;
+    s->period = 2.0 * MECH_PI;
     s->p.t_end = periods * s->period;
     s->T = 1.0;
     s->S = 0.5;
@@ -117,7 +117,7 @@ static CS_UNUSED void cs_foucault(struct mech_foucault_problem *p, double lat, d
     p->amplitude_deg = amp_deg;
     p->centrifugal = 1;
     p->method = m;
-    p->t_end = swings * mech_pendulum_period(67, 9.80665, amp_deg * CS_PI / 180);
+    p->t_end = swings * mech_pendulum_period(67, 9.80665, amp_deg * MECH_PI / 180);
     p->steps = (long)ceil(swings * n - 1e-9);
 }
 

@@ -3,18 +3,19 @@
  * formed from those doubles in long double (a = 1 / (2/q - u^2), e = 1 - q/a,
  * not the nominal a and e: the rounding of q and u moves the mean motion by
  * ~1e-15 relative at e = 0.9, ~5e-10 over 1000 orbits), Kepler's equation
- * solved by Newton in long double. Shared by tests/core/test_reference.c and
+ * solved by Newton in long double. Shared by tests/core/frames/test_reference.c and
  * tests/api/scene_set.h (and through it bench/bench_workprecision.c).
  * Header-only. */
 #ifndef MECHD_TESTS_KEPLER_LD_H
 #define MECHD_TESTS_KEPLER_LD_H
 
+#include "mech/constants.h"
 #include <math.h>
 
 /* The planar state at time t (s, GM = 1): r[0..1], v[0..1]. */
 static inline void kepler_ld_pericentre(double q, double u, double t, double r[2], double v[2])
 {
-    const long double two_pi = 6.283185307179586476925286766559L;
+    const long double two_pi = MECH_TWO_PI_L;
     long double a = 1.0L / (2.0L / q - (long double)u * u), e = 1.0L - q / a;
     long double n = 1.0L / (a * sqrtl(a));
     long double M = fmodl(n * (long double)t, two_pi), E = M + e * sinl(M);

@@ -32,22 +32,23 @@ export CFLAGS
 # Objects of the program under test, instrumented for coverage (fuzzer-no-link).
 # Rebuilt when the source or any project header is newer than the object.
 mkdir -p "$OUT/obj"
-newest_h=$(ls -t "$SRC"/core/include/mech/*.h "$SRC"/core/*.h "$SRC"/core/integrators/*.h \
-           "$SRC"/api/*.h "$SRC"/server/*.h 2>/dev/null | head -1)
-ls "$SRC"/core/*.c "$SRC"/core/integrators/*.c "$SRC"/api/*.c "$SRC"/server/*.c | grep -v "/server/main\.c$" |
+# An object is named by its source path with / spelled @ (core@frames@earth.c.o),
+# so the path can be read back from the name (core/ has domain folders).
+newest_h=$(ls -t $(find "$SRC/core" -name '*.h') "$SRC"/api/*.h "$SRC"/server/*.h 2>/dev/null | head -1)
+{ find "$SRC/core" -name '*.c'; ls "$SRC"/api/*.c "$SRC"/server/*.c; } | grep -v "/server/main\.c$" |
   while read -r f; do
-    o="$OUT/obj/$(echo "${f#$SRC/}" | tr / _).o"
+    o="$OUT/obj/$(echo "${f#$SRC/}" | tr / @).o"
     [ "$o" -nt "$f" ] && [ "$o" -nt "$newest_h" ] || echo "$f $o"
   done | xargs -r -n 2 -P "$JOBS" sh -c "$CC \$CFLAGS -fsanitize=fuzzer-no-link -c \"\$0\" -o \"\$1\""
 # fuzz_api and fuzz_http: core, api and the static file cache; fuzz_server:
 # every server file but main.c, on libmicrohttpd. (Objects of files that no
 # longer exist are dropped.)
 for o in "$OUT"/obj/*.o; do
-  f=$SRC/$(basename "$o" .c.o | sed 's|^core_integrators_|core/integrators/|; s|^\([a-z]*\)_|\1/|').c
+  f=$SRC/$(basename "$o" .c.o | tr @ /).c
   [ -f "$f" ] || rm -f "$o"
 done
-OBJS=$(ls "$OUT"/obj/core_*.o "$OUT"/obj/api_*.o "$OUT"/obj/server_static.c.o)
-SRV_OBJS="$OBJS $(ls "$OUT"/obj/server_*.o | grep -v -e '/server_main\.c\.o$' -e '/server_static\.c\.o$')"
+OBJS=$(ls "$OUT"/obj/core@*.o "$OUT"/obj/api@*.o "$OUT"/obj/server@static.c.o)
+SRV_OBJS="$OBJS $(ls "$OUT"/obj/server@*.o | grep -v -e '/server@main\.c\.o$' -e '/server@static\.c\.o$')"
 HARNESSES="fuzz_api fuzz_http fuzz_server"
 for h in fuzz_api fuzz_http; do
   # shellcheck disable=SC2086

@@ -75,7 +75,7 @@ enum mech_status mech_boost_from_one_minus_beta(double one_minus_beta, struct me
 
 /* Boost with γ − 1 = gamma_minus_one ≥ 0 along direction: the precise way to
  * build a boost whose γ − 1 was computed without cancellation (e.g. a
- * relative velocity, core/velocity_addition.c). γ = 1 + (γ − 1),
+ * relative velocity, core/relativity/velocity_addition.c). γ = 1 + (γ − 1),
  * βγ = sqrt((γ − 1)(γ + 1)), e^{η} = γ + βγ, η = log1p((γ − 1) + βγ),
  * 1 − β = 1/(γ e^{η}): each to a few ulp. gamma_minus_one = 0 is the identity
  * and then direction may be zero (it is +x then). Statuses: MECH_OK;

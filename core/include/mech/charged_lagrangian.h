@@ -16,11 +16,12 @@
 #ifndef MECH_CHARGED_LAGRANGIAN_H
 #define MECH_CHARGED_LAGRANGIAN_H
 
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/status.h"
 #include "mech/vec.h"
 
-#define MECH_CHARGED_C 299792458.0
+#define MECH_CHARGED_C MECH_C /* the speed of light of mech/constants.h, under the name api/ uses */
 
 struct mech_charged_state {
     double lagrangian;                 /* L, J */

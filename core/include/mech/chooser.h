@@ -9,7 +9,7 @@
  * and CPU seconds, and a verdict: "chosen" (the cheapest predicted to meet
  * the target), "costlier", "misses_target" or "not_applicable", each with why.
  *
- * The model (core/chooser.c, constants in core/chooser_table.h, measured by
+ * The model (core/ode/chooser.c, constants in core/ode/chooser_table.h, measured by
  * bench/bench_calibrate_chooser.c on this machine's build):
  *   adaptive:   error = A tol^a span^b,    evaluations = B span tol^-c
  *   fixed step: error = A (h/T)^a span^b,  evaluations = B span (h/T)^-c
@@ -57,7 +57,7 @@ struct mech_scene_profile {
     int closed_form;        /* the scene has an exact solution (MECH_REFERENCE_EXACT) */
     int closed_form_allowed;/* the request allows it (integrator.closed_form, default 1) */
     const char *closed_form_name; /* e.g. "kepler" (static) or NULL */
-    /* Bound central-body orbits (mech_chooser_profile_orbit, core/chooser_orbit.c;
+    /* Bound central-body orbits (mech_chooser_profile_orbit, core/frames/chooser_orbit.c;
      * all 0 when unknown, and then the span-based laws apply): */
     double cost_span;       /* the run in the cost law's units: dynamical times of the
                                calibration orbit (Kepler e = 0.5) that cost the same

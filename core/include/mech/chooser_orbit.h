@@ -1,5 +1,5 @@
 /* mech/chooser_orbit.h — what the chooser needs to know about a scene's
- * dominant central-body orbit (core/chooser_orbit.c): its period,
+ * dominant central-body orbit (core/frames/chooser_orbit.c): its period,
  * eccentricity, the relative size of the other forces (Wisdom-Holman's
  * eps) and the run's length in the units of the calibrated cost law.
  * Thread-safety: reentrant. */
@@ -16,7 +16,7 @@
  *   cost_span = orbits x 17.77 x ((1 + e) / (3 (1 - e)))^(1/3),
  * the evaluations of an adaptive method per orbit growing as
  * (r_apo / r_peri)^(1/3) (measured 2026-11-27 with rk8pd, radau15 and
- * rkf45 over e = 0 .. 0.99 within 1.6x; tests/core/test_chooser.c), where
+ * rkf45 over e = 0 .. 0.99 within 1.6x; tests/core/ode/test_chooser.c), where
  * 17.77 = 2 pi / 0.5^1.5 is the span per orbit of the calibration scene
  * (Kepler e = 0.5, span counted in pericentre times). The old law (span in
  * pericentre times) over-predicted e = 0.9 by 4-6x and e = 0.99 by 50x.

@@ -28,32 +28,11 @@
 #ifndef MECH_EARTH_H
 #define MECH_EARTH_H
 
+#include "mech/constants.h"
 #include "mech/status.h"
 
-/* Geocentric gravitational constant incl. atmosphere, m^3/s^2
- * (IERS Conventions 2010, Table 1.1; WGS 84 value of TR8350.2 Table 3.1). */
-#define MECH_EARTH_GM 3.986004418e14
-/* Mean radius R1 = (2a + b)/3 of the IUGG (Moritz, Geodetic Reference System
- * 1980, Bull. Géod. 54 (1980) 395), m: the sphere's default radius. */
-#define MECH_EARTH_RADIUS_MEAN 6371008.8
-/* The one default rotation rate of the Earth, rad/s: the nominal mean angular
- * velocity relative to inertial space (IERS Conventions 2010 Table 1.1; the
- * WGS 84 and GRS 80 defining constant). 2 pi / W = 86164.0989 s, the stellar
- * day; the sidereal day (86164.0905 s, relative to the precessing equinox)
- * gives 7.2921159e-5, which mechd used in some operations before: that rate
- * includes the precession of the equinox and is 1.2e-7 relative too fast for
- * the Earth's rotation in an inertial frame. Every operation defaults to this. */
-#define MECH_EARTH_OMEGA 7.292115e-5
-
-/* WGS 84 defining and derived constants (NIMA TR8350.2, 3rd ed., Tables 3.1-3.4). */
-#define MECH_WGS84_A 6378137.0             /* semi-major axis, m */
-#define MECH_WGS84_B 6356752.3142          /* semi-minor axis, m */
-#define MECH_WGS84_F (1.0 / 298.257223563) /* flattening */
-#define MECH_WGS84_E2 6.69437999014e-3     /* first eccentricity squared */
-#define MECH_WGS84_GAMMA_E 9.7803253359    /* normal gravity at the equator, m/s^2 */
-#define MECH_WGS84_GAMMA_P 9.8321849378    /* normal gravity at the poles, m/s^2 */
-#define MECH_WGS84_K 0.00193185265241      /* Somigliana's k = b gamma_p/(a gamma_e) - 1 */
-#define MECH_WGS84_M 0.00344978650684      /* m = W² a² b / GM */
+/* The Earth's constants (MECH_EARTH_GM, MECH_EARTH_RADIUS_MEAN,
+ * MECH_EARTH_OMEGA, the WGS 84 ellipsoid MECH_WGS84_*) are in mech/constants.h. */
 
 /* Lowest and highest heights the functions accept (m): the deepest ocean
  * trench to the Kármán line (the free-air series' next term is ~(h/a)^3). */

@@ -25,12 +25,13 @@
 #ifndef MECH_EM_FIELDS_H
 #define MECH_EM_FIELDS_H
 
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/status.h"
 #include "mech/vec.h"
 
 /* Speed of light in m/s (exact, SI definition of the metre). */
-#define MECH_EM_C 299792458.0
+#define MECH_EM_C MECH_C /* the speed of light of mech/constants.h, under the name api/ uses */
 
 enum mech_em_units {
     MECH_EM_HEAVISIDE_LORENTZ = 0, /* c = 1: E and B in one unit */

@@ -23,10 +23,11 @@
 #define MECH_EULER_RATES_H
 
 #include "mech/status.h"
+#include "mech/constants.h"
 #include "mech/vec.h"
 
 /* |sin theta| at or below this is gimbal lock: theta = 0 or pi within round-off
- * of pi's double (sin(M_PI) = 1.2e-16). */
+ * of pi's double (sin(MECH_PI) = 1.2e-16). */
 #define MECH_EULER_LOCK_SIN 1e-15
 
 struct mech_euler_kinematics {

@@ -13,10 +13,11 @@
 #ifndef MECH_MICHELSON_MORLEY_H
 #define MECH_MICHELSON_MORLEY_H
 
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/status.h"
 
-#define MECH_MM_C 299792458.0
+#define MECH_MM_C MECH_C /* the speed of light of mech/constants.h, under the name api/ uses */
 
 struct mech_michelson_morley {
     double time_parallel;        /* 2γ²L/c, s (ether) */

@@ -2,11 +2,11 @@
  * t_end with any registered method, write evenly spaced samples, stop at an
  * event located by root-finding, honour a compute budget.
  *
- * Methods (registry: core/integrators/registry.c) are looked up by name
+ * Methods (registry: core/ode/integrators/registry.c) are looked up by name
  * with mech_ode_method_find(): adaptive ones take rtol/atol ("rk8pd",
  * "rkck", "rkf45" and the stiff "msbdf" through GSL gsl_odeiv2; "radau15",
  * IAS15-class, written here), fixed-step ones take dt (written on libmech's
- * own stepper interface, core/integrators/integrator.h). GSL's fixed-step
+ * own stepper interface, core/ode/integrators/integrator.h). GSL's fixed-step
  * driver is never used.
  *
  * Off-grid values (samples, the event) are computed by a SUB-STEP from the
@@ -113,7 +113,7 @@ typedef double (*mech_ode_event_fn)(double t, const double *y, void *params);
  * non-OK return stops the integration with that status. */
 typedef enum mech_status (*mech_ode_observe_fn)(double t, const double *y, void *params);
 
-/* An opaque method descriptor (defined in core/integrators/integrator.h). */
+/* An opaque method descriptor (defined in core/ode/integrators/integrator.h). */
 struct mech_integrator;
 
 /* Public view of a method, for catalogs. */

@@ -14,10 +14,11 @@
 #ifndef MECH_PARTICLE_STATE_H
 #define MECH_PARTICLE_STATE_H
 
+#include "mech/constants.h"
 #include "mech/status.h"
 
 /* Speed of light, m/s (exact, SI 2019). */
-#define MECH_PARTICLE_STATE_C 299792458.0
+#define MECH_PARTICLE_STATE_C MECH_C /* the speed of light of mech/constants.h, under the name api/ uses */
 
 /* The quantity the caller gives (its number is taken as exact). */
 enum mech_particle_given {

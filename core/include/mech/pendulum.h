@@ -127,7 +127,7 @@ double mech_pendulum_period_correction(double alpha);
 /* Integrate the Foucault pendulum p from its release for p->steps steps of
  * t_end / steps and measure it (see struct mech_foucault_result).
  *
- * What to expect (derivations in core/pendulum.c): the swing plane turns at
+ * What to expect (derivations in core/frames/pendulum.c): the swing plane turns at
  * -W sin(lat) + (3/8) h / l^2 (counterclockwise positive) to leading order in
  * the amplitude; the second term is Airy's precession of a spherical
  * pendulum's ellipse, (3/8) omega0 a b / l^2, in the sense it is traversed.

@@ -13,11 +13,10 @@
 #ifndef MECH_RELATIVISTIC_FORCE_H
 #define MECH_RELATIVISTIC_FORCE_H
 
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/status.h"
 #include "mech/vec.h"
-
-#define MECH_REL_FORCE_C 299792458.0 /* m/s, exact */
 
 struct mech_rel_force {
     struct mech_vec3 force, force_parallel, force_perpendicular;              /* N */

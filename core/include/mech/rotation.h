@@ -9,7 +9,7 @@
  * (scene) axes to its components in the new (body) axes, v_new = R v_old; the
  * rows of R are the new axes written in the old ones. All four constructors
  * below agree on this: the same physical turn of the axes given any of the four
- * ways yields the same R (pinned by tests/core/test_rotation.c to 1e-15).
+ * ways yields the same R (pinned by tests/core/rotation/test_rotation.c to 1e-15).
  *
  *  - axis-angle (n, a): the axes are turned by a (right-handed, radians) about
  *    the unit axis n: R = cos a 1 + (1 - cos a) n n^T - sin a [n]x, the

@@ -48,25 +48,8 @@
 #include "mech/constants.h"
 #include "mech/status.h"
 
-/* GM of the Moon, m^3/s^2 (JPL DE440, Park et al. 2021, AJ 161:105, Table 8:
- * 4902.800118 km^3/s^2; DE430 had 4902.800066). GM is what the ephemerides
- * measure; the mass is GM/G (G known to 2e-5). */
-#define MECH_MOON_GM 4.902800118e12
-/* Mass of the Moon, kg: MECH_MOON_GM / G = 7.3458e22 (the fact sheet's rounded
- * 7.342e22 kg, used before, gave a GM 0.05 % low). */
-#define MECH_MOON_MASS (MECH_MOON_GM / MECH_GRAVITATIONAL_CONSTANT)
-/* Mean Earth-Moon distance, m (semi-major axis of the lunar orbit, 384 400 km). */
-#define MECH_MOON_DISTANCE 3.844e8
-/* Heliocentric gravitational constant GM_sun, m^3/s^2 (JPL DE440, Park et al.
- * 2021, Table 8: 132712440041.279419 km^3/s^2, TDB-compatible; the value used
- * before, 1.32712440018e20, was DE405's). The Sun's mass is GM_sun / G =
- * 1.98841e30 kg. */
-#define MECH_SUN_GM 1.32712440041279419e20
-/* Astronomical unit, m (IAU 2012 Resolution B2, exact): the mean Sun distance. */
-#define MECH_AU 1.495978707e11
-/* Mass of the Earth, kg (IAU 2015 nominal / CODATA: 5.9722e24); only reported:
- * the tide height uses GM_E = MECH_EARTH_GM of mech/earth.h. */
-#define MECH_EARTH_MASS 5.9722e24
+/* The Moon's and the Sun's GM, the Moon's mass and distance, the AU and the
+ * Earth's mass are in mech/constants.h. */
 
 /* Tidal acceleration components (m/s^2), see the table above. */
 struct mech_tide_components {

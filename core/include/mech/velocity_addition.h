@@ -51,7 +51,7 @@ enum mech_status mech_velocity_add_light(struct mech_vec3 direction, const struc
  * (in F1's axes). B(second) B(first) = R B(total) with total = first ⊕ second
  * (the velocity of F2 in F0). Closed form (Wigner rotation, e.g. Rhodes &
  * Semon, Am. J. Phys. 72 (2004) 943; checked against the 4x4 polar
- * decomposition in tests/core/test_velocity_addition.c):
+ * decomposition in tests/core/relativity/test_velocity_addition.c):
  *   tan(ε/2) = sin θ t1 t2 / (1 + cos θ t1 t2),  t_i = tanh(η_i/2),
  * θ the angle between first and second. F2's axes are F0-boosted axes turned
  * by ε about the unit axis second × first (right-hand rule); *angle in

@@ -1,0 +1,404 @@
+/* chooser.c — the predictive method chooser (see mech/chooser.h): candidates,
+ * the calibrated model of their error and cost (chooser_table.h, measured by
+ * bench/bench_calibrate_chooser.c), the choice of the cheapest predicted to
+ * meet the target. The one place the method-choice policy lives: particle
+ * trajectories (core/frames/trajectory.c, mech_trajectory_choose) and the
+ * first-order operations (api/integrator_block.c) both call mech_choose. */
+#include "mech/chooser.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "chooser_table.h"
+
+/* The setting aims at target / CHOOSER_MARGIN so that the model's scatter
+ * (measured within ~10x across eccentricities and run lengths) still meets the target. */
+#define CHOOSER_MARGIN 10.0
+
+/* first_order's rows were fitted across four different systems (torque-free
+ * body, heavy top, geodesic, Henon-Heiles): the measured errors lie up to 13x
+ * above the law (chooser_table.h), so its margin is 20. general's rows are
+ * copies of the oscillator's, not measured on it: a 10x larger margin. */
+static double margin_of(enum mech_scene_class c)
+{
+    return c == MECH_SCENE_FIRST_ORDER ? 20.0
+         : c == MECH_SCENE_GENERAL     ? 10.0 * CHOOSER_MARGIN
+                                       : CHOOSER_MARGIN;
+}
+
+static const char *const class_names[MECH_SCENE_CLASS_COUNT] = {
+    "central_gravity", "oscillator", "uniform_field", "first_order", "general",
+    "constrained_pendulum"};
+
+const char *mech_scene_class_name(enum mech_scene_class c)
+{
+    return (int)c >= 0 && c < MECH_SCENE_CLASS_COUNT ? class_names[c] : NULL;
+}
+
+const char *mech_verdict_name(enum mech_verdict v)
+{
+    static const char *const n[] = {"chosen", "costlier", "misses_target", "not_applicable"};
+    return (int)v >= 0 && v <= MECH_VERDICT_NOT_APPLICABLE ? n[v] : "not_applicable";
+}
+
+static const struct chooser_row *row_of(enum mech_scene_class cls, const char *method)
+{
+    const char *cn = mech_scene_class_name(cls);
+    if (!cn) return NULL;
+    for (size_t i = 0; i < sizeof chooser_table / sizeof chooser_table[0]; i++)
+        if (!strcmp(chooser_table[i].cls, cn) && !strcmp(chooser_table[i].method, method))
+            return &chooser_table[i];
+    return NULL;
+}
+
+/* The candidates, in the order listed, with their setting's range. */
+struct method_spec {
+    const char *name;
+    int adaptive;
+    double x_min, x_max; /* rtol, or h/T */
+};
+static const struct method_spec specs[] = {
+    {"radau15", 1, 1e-9, 1e-2},  {"rk8pd", 1, 1e-13, 1e-3},   {"rkf45", 1, 1e-12, 1e-3},
+    {"gauss6", 0, 1e-3, 0.2},    {"yoshida6", 0, 1e-3, 0.2},  {"wisdom_holman", 0, 1e-4, 0.25},
+    {"msbdf", 1, 1e-12, 1e-3},
+};
+
+static double floor_of(const struct chooser_row *r, double span)
+{
+    return fmax(1e-16, r->Fm * pow(fmax(span, 1.0), r->g));
+}
+
+/* The shortest calibration run of each class (span in dynamical times, the
+ * order of class_names): below it the power law in span is not trusted and
+ * the error falls only linearly with the run (measured: 1 orbit of a circular
+ * Kepler scene at machine missed by 2x with the span^2 law). */
+static double span_calibrated(const struct chooser_row *r)
+{
+    if (!strcmp(r->cls, "central_gravity"))
+        return 177.7; /* 10 orbits of e = 0.5 over T at perihelion */
+    if (!strcmp(r->cls, "first_order")) return 8.9; /* one orbit of Mercury's geodesic */
+    if (!strcmp(r->cls, "oscillator") || !strcmp(r->cls, "general")) return 62.83; /* 10 periods */
+    return 1.414; /* the fall */
+}
+
+static double model_error_no_floor(const struct chooser_row *r, double x, double span)
+{
+    span = fmax(span, 1e-3);
+    const double s0 = span_calibrated(r);
+    return r->A * pow(x, r->a) * (span >= s0 ? pow(span, r->b) : pow(s0, r->b) * (span / s0));
+}
+
+static double model_error(const struct chooser_row *r, double x, double span)
+{
+    span = fmax(span, 1e-3);
+    const double s0 = span_calibrated(r);
+    double e = r->A * pow(x, r->a) *
+               (span >= s0 ? pow(span, r->b) : pow(s0, r->b) * (span / s0));
+    return fmax(e, floor_of(r, span));
+}
+
+double mech_chooser_predict_error(const struct mech_scene_profile *s, const char *method,
+                                  double x)
+{
+    if (!s || !method || !(x > 0.0)) return -1.0;
+    const struct chooser_row *r = row_of(s->cls, method);
+    return r ? model_error(r, x, s->span) : -1.0;
+}
+
+/* Why a method does not apply, or NULL. */
+static const char *not_applicable(const struct mech_scene_profile *s, const char *m)
+{
+    if (!strcmp(m, "radau15") && !s->second_order)
+        return "needs a second-order system q'' = a(t, q, v); this one is first order";
+    if (!strcmp(m, "yoshida6") && !s->second_order)
+        return "a splitting for q'' = a(q); this system is first order";
+    if (!strcmp(m, "yoshida6") && s->velocity_dependent)
+        return "a splitting for forces that do not depend on velocity; this scene has drag, "
+               "Coriolis or a magnetic force";
+    if (!strcmp(m, "gauss6") && s->cls == MECH_SCENE_FIRST_ORDER)
+        return "fixed-step: not offered by accuracy for first-order operations (their "
+               "dynamical time is not calibrated); give {\"method\": \"gauss6\", \"dt\": ...}";
+    if (!strcmp(m, "msbdf") && !s->stiff)
+        return "for stiff scenes; this one is not stiff (no time scale far shorter than the "
+               "dynamical time)";
+    if (!strcmp(m, "wisdom_holman")) {
+        if (!mech_ode_method_find("wisdom_holman")) return "not in this build's registry";
+        if (s->cls != MECH_SCENE_CENTRAL_GRAVITY)
+            return "a Kepler-drift splitting: the scene is not dominated by one central body";
+        if (s->velocity_dependent) return "the kicks must not depend on velocity";
+        if (!(s->orbit_period > 0.0) || !(s->perturbation >= 0.0))
+            return "needs one central body on a bound orbit in an inertial frame";
+        if (s->perturbation == 0.0)
+            return "no perturbation: the scene is a pure two-body orbit (the closed form, or "
+                   "any integrator at round-off)";
+    } else if (!mech_ode_method_find(m)) {
+        return "not in this build's registry";
+    }
+    return NULL;
+}
+
+/* The loosest setting offered: the method's, except rk8pd on first-order
+ * systems, 1e-7: on the heavy top (spin 99.5 rad/s) rk8pd at rtol 3e-7 and
+ * looser lands 0.06 .. 0.6 relative off (the step control is fooled at
+ * ~1.6 rad of spin per step), at 1e-7 it is 1e-6 .. 1e-4 off over 0.5 .. 50 s
+ * like the law (measured 2026-11-25, rtol 1e-7 / 3e-7 / 1e-6). */
+static double x_max_of(const struct mech_scene_profile *s, const struct method_spec *ms)
+{
+    if (s->cls == MECH_SCENE_FIRST_ORDER && !strcmp(ms->name, "rk8pd")) return 1e-7;
+    return ms->x_max;
+}
+
+/* Predict one method: the loosest setting in range predicted to meet
+ * target / margin (where the model is flat, the error at round-off whatever
+ * the setting on the calibration scene, an adaptive tolerance of target /
+ * margin: other scenes of the class, drag say, are not polynomial). */
+/* Wisdom-Holman's error constant per unit perturbation, err = A(e) eps
+ * (h/P)^2 orbits (bench/bench_wisdom_holman: A = 192 at e = 0.5, 847 at
+ * e = 0.9, span exponent 0.97 and 0.57; a power of (1 + e) / (1 - e)
+ * through both), and its CPU per step (a Kepler drift and a kick: 41 ms for
+ * 1e5 steps, same bench). */
+#define WH_A_E05 192.0
+#define WH_A_EXPONENT 0.8 /* log(847 / 192) / log(19 / 3) */
+#define WH_CPU_PER_STEP 4.1e-7
+#define WH_B0 5e-8
+
+static void predict_wisdom_holman(const struct mech_scene_profile *s, const struct method_spec *ms,
+                                  const struct chooser_row *r, double target,
+                                  struct mech_candidate *c)
+{
+    const double e = s->eccentricity, eps = s->perturbation;
+    const double orbits = fmax(s->span * s->T / s->orbit_period, 1e-3);
+    const double A = WH_A_E05 * pow((1.0 + e) / (3.0 * (1.0 - e)), WH_A_EXPONENT);
+    /* err = k x^2: the perturbation's term, and one that does not fall with
+     * eps, the pericentre passage resolved in steps of x pericentre times
+     * (measured 3e-7 over 100 orbits of e = 0.9 at x = 0.25, eps = 1e-6:
+     * WH_B0 x^2 orbits) */
+    const double k = A * eps * orbits * pow(s->T / s->orbit_period, 2.0) + WH_B0 * orbits;
+    double x = sqrt(target / margin_of(s->cls) / k);
+    if (!(x <= ms->x_max)) x = ms->x_max; /* also NaN: the pericentre must be resolved */
+    if (x < ms->x_min) x = ms->x_min;
+    c->adaptive = 0;
+    c->has_settings = 1;
+    c->opt.dt = x * s->T;
+    c->predicted_error = fmax(k * x * x, floor_of(r, s->span));
+    c->predicted_evaluations = s->span / x + (double)s->samples;
+    c->predicted_cpu_s = c->predicted_evaluations * WH_CPU_PER_STEP;
+    c->predicted = 1;
+}
+
+static void predict(const struct mech_scene_profile *s, const struct method_spec *ms,
+                    const struct chooser_row *r, double target, struct mech_candidate *c)
+{
+    if (!strcmp(ms->name, "wisdom_holman")) {
+        predict_wisdom_holman(s, ms, r, target, c);
+        return;
+    }
+    double x = x_max_of(s, ms);
+    if (r->a > 0.05) {
+        /* invert model_error's power law in x */
+        double want = target / margin_of(s->cls) / (model_error_no_floor(r, 1.0, s->span));
+        x = pow(want, 1.0 / r->a);
+    }
+    else if (ms->adaptive)
+        x = fmin(x, target / margin_of(s->cls)); /* a flat model: at round-off on the
+                                                 calibration scene, not trusted beyond it */
+    if (!(x <= x_max_of(s, ms))) x = x_max_of(s, ms); /* also NaN */
+    /* near the round-off floor the model's scatter is larger than the
+     * margin: take the method's most accurate setting */
+    if (x < ms->x_min || floor_of(r, s->span) > target / margin_of(s->cls)) x = ms->x_min;
+    c->adaptive = ms->adaptive;
+    c->has_settings = 1;
+    if (ms->adaptive) {
+        c->opt.rtol = x;
+        c->opt.atol = x * s->scale;
+    } else {
+        c->opt.dt = x * s->T;
+    }
+    c->predicted_error = model_error(r, x, s->span);
+    /* the cost law counts the run in calibration-orbit units where the
+     * scene has a bound orbit (mech_chooser_profile_orbit): an adaptive
+     * method's evaluations per orbit grow as (r_apo / r_peri)^(1/3), not
+     * with the orbit's length in pericentre times */
+    const double span = fmax(s->cost_span > 0.0 ? s->cost_span : s->span, 1e-3);
+    c->predicted_evaluations = r->B * span * pow(x, -r->c) + r->per_sample * (double)s->samples;
+    double per_eval = r->cpu_per_eval;
+    if (s->rhs_cost_s > per_eval) per_eval = s->rhs_cost_s;
+    c->predicted_cpu_s = c->predicted_evaluations * per_eval;
+    c->predicted = 1;
+}
+
+enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
+                             struct mech_selection *out, struct mech_error *err)
+{
+    if (!s || !out) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
+    memset(out, 0, sizeof *out);
+    out->chosen = -1;
+    if (!(target >= 1e-15 && target <= 0.1))
+        return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
+                              "target_error must be in [1e-15, 0.1], got %.17g", target);
+    if (!mech_scene_class_name(s->cls) || s->cls == MECH_SCENE_CONSTRAINED_PENDULUM ||
+        !(s->span >= 0.0 && isfinite(s->span)) ||
+        !(s->T > 0.0 && isfinite(s->T)) || !(s->scale > 0.0 && isfinite(s->scale)))
+        return mech_error_set(err, MECH_EINVAL, NULL, "invalid scene profile");
+    out->target = target;
+    out->cls = s->cls;
+    out->span = s->span;
+    snprintf(out->model, sizeof out->model,
+             "calibrated table (bench/bench_calibrate_chooser, class %s): error = A tol^a "
+             "span^b, evaluations = B span tol^-c + samples x sub-step; no pilot run",
+             class_names[s->cls]);
+
+    /* closed form first: listed whenever the scene has one; it competes on
+     * cost like any candidate when the request allows it */
+    int cf = -1;
+    if (s->closed_form) {
+        cf = (int)out->n;
+        struct mech_candidate *c = &out->c[out->n++];
+        c->method = "closed_form";
+        c->predicted_error = 4e-16 * fmax(1.0, sqrt(fmax(s->span, 1.0)));
+        /* one evaluation per sample, as the particle closed forms (Kepler,
+         * oscillator, uniform fields) count them in diagnostics.evaluations.
+         * NOT modelled: the torque-free body's attitude adds its
+         * precession-angle quadrature, counted 1404 .. 21126 over 10 .. 1e4 s
+         * and 11 .. 101 samples (1:2:3, 2026-11-27; none for a symmetric
+         * top); bench_workprecision prints both counts */
+        c->predicted_evaluations = (double)(s->samples > 0 ? s->samples : 1);
+        c->predicted_cpu_s = 2e-7 * c->predicted_evaluations;
+        c->predicted = 1;
+        if (!s->closed_form_allowed) {
+            c->verdict = MECH_VERDICT_NOT_APPLICABLE;
+            snprintf(c->why, sizeof c->why, "%s",
+                     "integrator.closed_form is false: integrating instead");
+        } else {
+            c->verdict = c->predicted_error <= target ? MECH_VERDICT_COSTLIER
+                                                      : MECH_VERDICT_MISSES_TARGET;
+        }
+    }
+    double floor_min = INFINITY;
+    for (size_t k = 0; k < sizeof specs / sizeof specs[0]; k++) {
+        struct mech_candidate *c = &out->c[out->n++];
+        c->method = specs[k].name;
+        c->adaptive = specs[k].adaptive;
+        const char *na = not_applicable(s, specs[k].name);
+        const struct chooser_row *r = row_of(s->cls, specs[k].name);
+        if (!na && !r) na = "no calibrated constants for this class of scene";
+        if (na) {
+            c->verdict = MECH_VERDICT_NOT_APPLICABLE;
+            snprintf(c->why, sizeof c->why, "%s", na);
+            continue;
+        }
+        predict(s, &specs[k], r, target, c);
+        floor_min = fmin(floor_min, floor_of(r, s->span));
+        /* meeting the target means within the safety margin of it */
+        c->verdict = c->predicted_error <= target / margin_of(s->cls) * 1.0001
+                         ? MECH_VERDICT_COSTLIER
+                         : MECH_VERDICT_MISSES_TARGET;
+    }
+    out->roundoff_floor = isfinite(floor_min) ? floor_min : 0.0;
+    /* a target within the margin of the floor may not be kept: said */
+    if (out->roundoff_floor > target / margin_of(s->cls)) out->beyond = 1;
+
+    /* the cheapest integrating candidate predicted to meet the target;
+     * else the most accurate (callers that cannot evaluate the closed form
+     * integrate with it) */
+    int best = -1;
+    for (size_t i = 0; i < out->n; i++)
+        if ((int)i != cf && out->c[i].verdict == MECH_VERDICT_COSTLIER &&
+            (best < 0 || out->c[i].predicted_cpu_s < out->c[best].predicted_cpu_s))
+            best = (int)i;
+    if (best < 0) {
+        /* the most accurate prediction; then the cheapest within 2x of it */
+        double emin = INFINITY;
+        for (size_t i = 0; i < out->n; i++)
+            if ((int)i != cf && out->c[i].verdict == MECH_VERDICT_MISSES_TARGET)
+                emin = fmin(emin, out->c[i].predicted_error);
+        for (size_t i = 0; i < out->n; i++)
+            if ((int)i != cf && out->c[i].verdict == MECH_VERDICT_MISSES_TARGET &&
+                out->c[i].predicted_error <= 2.0 * emin &&
+                (best < 0 || out->c[i].predicted_cpu_s < out->c[best].predicted_cpu_s))
+                best = (int)i;
+        out->beyond = best >= 0 && out->c[best].predicted_error > target ? 2 : 1;
+    }
+    out->integrating = best;
+    /* the closed form wins when allowed and predicted cheaper (its cost
+     * grows with the samples only) */
+    if (cf >= 0 && out->c[cf].verdict == MECH_VERDICT_COSTLIER &&
+        (best < 0 || out->c[cf].predicted_cpu_s <= out->c[best].predicted_cpu_s)) {
+        best = cf; /* out->beyond still describes the integrating candidate */
+    }
+    out->chosen = best;
+    /* the request's fixed cost, the same for every candidate (so it never
+     * changes the choice): predicted_cpu_s is then comparable with the
+     * answer's cost.cpu_seconds even for short runs */
+    for (size_t i = 0; i < out->n; i++)
+        if (out->c[i].predicted) out->c[i].predicted_cpu_s += MECH_CHOOSER_REQUEST_CPU_S;
+    for (size_t i = 0; i < out->n; i++) {
+        struct mech_candidate *c = &out->c[i];
+        if (c->verdict == MECH_VERDICT_NOT_APPLICABLE) continue;
+        if ((int)i == cf) {
+            c->verdict = (int)i == best ? MECH_VERDICT_CHOSEN : c->verdict;
+            snprintf(c->why, sizeof c->why,
+                     (int)i == best
+                         ? "the exact %s solution evaluated at each sample: round-off only, "
+                           "its cost grows with the samples, not with the simulated time"
+                         : "the exact %s solution: predicted costlier than the chosen method",
+                     s->closed_form_name ? s->closed_form_name : "closed-form");
+            continue;
+        }
+        const char *set = c->adaptive ? "rtol" : "h/T";
+        const double x = c->adaptive ? c->opt.rtol : c->opt.dt / s->T;
+        if ((int)i == best) {
+            c->verdict = MECH_VERDICT_CHOSEN;
+            snprintf(c->why, sizeof c->why,
+                     out->beyond && c->predicted_error > target / margin_of(s->cls)
+                         ? "no candidate is predicted within the safety margin of the target: "
+                           "the cheapest of the most accurate (%s %.3g, predicted %.2g)"
+                         : "the cheapest predicted to meet the target (%s %.3g, predicted "
+                           "%.2g)",
+                     set, x, c->predicted_error);
+        } else if (c->verdict == MECH_VERDICT_COSTLIER) {
+            snprintf(c->why, sizeof c->why,
+                     "meets the target (%s %.3g, predicted %.2g) at %.3gx the chosen "
+                     "method's predicted CPU",
+                     set, x, c->predicted_error,
+                     best >= 0 && out->c[best].predicted_cpu_s > 0
+                         ? c->predicted_cpu_s / out->c[best].predicted_cpu_s
+                         : 1.0);
+        } else {
+            snprintf(c->why, sizeof c->why,
+                     "predicted %.2g, not within the safety margin (target / %g) at its "
+                     "tightest useful setting (%s %.3g)",
+                     c->predicted_error, margin_of(s->cls), set, x);
+        }
+    }
+    return MECH_OK;
+}
+
+double mech_selection_restated(const struct mech_selection *sel)
+{
+    if (!sel || sel->integrating < 0 || (size_t)sel->integrating >= sel->n) return 0.0;
+    if (!sel->beyond && !(sel->target < sel->roundoff_floor)) return 0.0;
+    const double x = fmax(sel->roundoff_floor, sel->c[sel->integrating].predicted_error);
+    return x > sel->target ? x : 0.0;
+}
+
+void mech_selection_beyond_text(const struct mech_selection *sel, char *buf, size_t n)
+{
+    if (!buf || n == 0) return;
+    buf[0] = '\0';
+    if (!sel) return;
+    const double x = mech_selection_restated(sel);
+    if (x > 0.0)
+        snprintf(buf, n,
+                 "; beyond what the preset can keep: over %.3g dynamical times round-off "
+                 "alone can reach about %.2g relative (the measured envelope of the round-off "
+                 "floor, or the best prediction), so the promise for this run is re-stated "
+                 "as about %.2g",
+                 sel->span, x, x);
+    else if (sel->beyond)
+        snprintf(buf, n,
+                 "; close to the round-off floor (about %.2g relative over %.3g dynamical "
+                 "times): the tightest setting",
+                 sel->roundoff_floor, sel->span);
+}

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""check_includes.py SOURCE_DIR — the include graph stays a tree of layers
+(issue 17): no file includes a .c file, no header includes itself through
+other headers (a cycle), and no source file in core/ is longer than
+MAX_LINES without a stated reason ("Why one file" in its opening comment).
+
+Quoted includes are resolved as the compiler does: beside the including
+file first, then the include folders the build gives (core/include, core,
+api, server, tests). Angle-bracket includes are the system's and skipped.
+Python 3 standard library only; reads the tree, runs nothing."""
+import os
+import re
+import sys
+
+MAX_LINES = 800
+FOLDERS = ("core", "api", "server", "tests", "bench")
+INCLUDE_DIRS = ("core/include", "core", "api", "server", "tests")
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def sources(root):
+    for top in FOLDERS:
+        for d, subdirs, files in os.walk(os.path.join(root, top)):
+            subdirs[:] = [s for s in subdirs if s not in ("node_modules", "cases", "regress")]
+            for f in files:
+                if f.endswith((".c", ".h")):
+                    yield os.path.relpath(os.path.join(d, f), root)
+
+
+def resolve(root, src, name):
+    for base in [os.path.dirname(src)] + list(INCLUDE_DIRS):
+        p = os.path.normpath(os.path.join(base, name))
+        if os.path.isfile(os.path.join(root, p)):
+            return p
+    return None
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else "."
+    problems = []
+    graph = {}
+    for src in sorted(sources(root)):
+        with open(os.path.join(root, src), encoding="utf-8", errors="replace") as fh:
+            text = fh.read()
+        deps = []
+        for name in INCLUDE.findall(text):
+            if name.endswith(".c"):
+                problems.append(f"{src} includes a .c file: \"{name}\"")
+            target = resolve(root, src, name)
+            if target:
+                deps.append(target)
+        graph[src] = deps
+        if src.startswith("core/") and src.endswith(".c"):
+            n = text.count("\n")
+            opening = text[: text.find("*/") + 2] if text.lstrip().startswith("/*") else ""
+            if n > MAX_LINES and "why one file" not in opening.lower():
+                problems.append(f"{src}: {n} lines (over {MAX_LINES}) and its opening comment "
+                                "states no reason (\"Why one file ...\")")
+    # cycles among headers (a .c is never included, so only headers can close one)
+    state, stack = {}, []
+
+    def visit(u):
+        state[u] = 1
+        stack.append(u)
+        for v in graph.get(u, ()):
+            if not v.endswith(".h"):
+                continue
+            if state.get(v) == 1:
+                problems.append("include cycle: " + " -> ".join(stack[stack.index(v):] + [v]))
+            elif v not in state:
+                visit(v)
+        stack.pop()
+        state[u] = 2
+
+    for h in sorted(g for g in graph if g.endswith(".h")):
+        if h not in state:
+            visit(h)
+    for p in problems:
+        print(p)
+    n_files = len(graph)
+    if problems:
+        print(f"0 passed, 1 failed ({len(problems)} problems in {n_files} files)")
+        return 1
+    print(f"1 passed, 0 failed ({n_files} files, {sum(map(len, graph.values()))} includes)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
