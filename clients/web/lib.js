@@ -718,7 +718,8 @@ export function costPreview(form, path, build, {id = 'cost' + (++uid), value = '
     if (mine !== ctl) return;
     ctl = null;
     const sels = rs.map(r => r.ok && r.body && r.body.diagnostics && r.body.diagnostics.selection);
-    if (!sels.every(Boolean)) { put(out); predicted = null; out.dataset.state = 'error'; return; }
+    // a failed prediction says nothing of its own, but keeps what the last run took
+    if (!sels.every(Boolean)) { put(out); predicted = null; out.dataset.state = 'error'; sayTook(); return; }
     const cs = sels.map(chosen);
     const cpu = cs.map(c => c && typeof c.predicted_cpu_s === 'number' ? c.predicted_cpu_s : null);
     predicted = cpu[0];
