@@ -1,8 +1,12 @@
 /* endpoint.h — what an endpoint file (api/ep_<domain>.c) sees of the API layer.
  *
- * An endpoint exports one `const struct api_route` per operation. Its
- * request-body JSON Schema (a documented subset, see schema.h) is enforced
- * before its handler runs, so a handler may assume the types, required keys,
+ * An endpoint file defines one handler per operation, the function its data
+ * file api/ops/<domain>/<operation>.json names ("handler": api_op_<path>);
+ * that handler is all the file exports for the operation. The data file
+ * holds the rest (path, summary, description, request and response schemas,
+ * example, flags), and the build turns it into the route table
+ * (scripts/ops_gen.py -> ops.def -> routes.c). The request-body JSON Schema
+ * (a documented subset, see schema.h) is enforced before the handler runs, so a handler may assume the types, required keys,
  * ranges and array sizes its schema states; it checks only what a schema
  * cannot say (e.g. |beta| < 1) and reports it with api_call_invalid() /
  * api_call_domain() naming the JSON pointer.
@@ -49,6 +53,7 @@ struct api_call {
  * either path. */
 typedef json_t *(*api_op_fn)(struct api_call *call, const json_t *body);
 
+/* One row of the route table (routes.c builds them from ops.def). */
 struct api_route {
     const char *method;      /* "POST" */
     const char *path;        /* "/v1/rigid/inertia" */
@@ -61,14 +66,12 @@ struct api_route {
     int quick;               /* 1: closed form, no integration or search loop; its cost grows at
                                 most linearly with the body, so a small request may be answered
                                 on the server's I/O thread (api_quick_route) */
-    const char *response_schema; /* JSON Schema of the 200 answer, as JSON text; NULL: not described */
+    const char *response_schema; /* JSON Schema of the 200 answer, as JSON text */
 };
 
-/* Route initialisers in api/ep_*.c are positional and end before
- * response_schema (NULL: the OpenAPI document then types the 200 answer as
- * {"type": "object"}) until the routes are generated from data (issue 17);
- * so the trailing member may be left out without a warning. */
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+/* Every handler's prototype (generated from the api/ops data files by
+ * scripts/ops_gen.py), so the compiler checks each definition against it. */
+#include "ops_handlers.h"
 
 /* Record a validation error at a JSON pointer ("/bodies/0/mass"); 422. */
 void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)

@@ -221,23 +221,77 @@ def merge(a, b):
 # ---- C rewrite ------------------------------------------------------------------
 
 
+def rename_in_code(src, old, new, directives=False):
+    """src with the identifier old renamed to new in C code only: not in
+    comments, string or character literals, or (unless directives)
+    preprocessor lines."""
+    out, i, n = [], 0, len(src)
+    ident = re.compile(r"[A-Za-z_]\w*")
+    at_line_start = True
+    while i < n:
+        c = src[i]
+        if src.startswith("/*", i):
+            j = src.index("*/", i) + 2
+        elif src.startswith("//", i):
+            j = src.find("\n", i)
+            j = n if j < 0 else j
+        elif c in "\"'":
+            j = i + 1
+            while src[j] != c:
+                j += 2 if src[j] == "\\" else 1
+            j += 1
+        elif c == "#" and at_line_start and (not directives or src.startswith("#include", i)):
+            j = i
+            while True:  # to the end of the (continued) directive
+                e = src.find("\n", j)
+                if e < 0:
+                    j = n
+                    break
+                if src[e - 1] != "\\":
+                    j = e
+                    break
+                j = e + 1
+        elif c.isalpha() or c == "_":
+            m = ident.match(src, i)
+            j = m.end()
+            out.append(new if m.group(0) == old else m.group(0))
+            i = j
+            at_line_start = False
+            continue
+        else:
+            j = i + 1
+        out.append(src[i:j])
+        if c == "\n":
+            at_line_start = True
+        elif not c.isspace():
+            at_line_start = False
+        i = j
+    return "".join(out)
+
+
+def code_count(src, name):
+    """How often the identifier name occurs in src outside comments and literals."""
+    return rename_in_code(src, name, "\0", directives=True).count("\0")
+
+
 def rewrite_c(path, struct_text, fn, symbol):
     src = open(path, encoding="utf-8").read()
     src = src.replace(struct_text, "")
-    src = re.sub(r"\bstatic (json_t \*\s*)" + re.escape(fn) + r"\(", r"\1" + symbol + "(", src)
-    src = re.sub(r"\b" + re.escape(fn) + r"\b", symbol, src)
+    src = re.sub(r"^static (json_t \*\s*)" + re.escape(fn) + r"\(", r"\1" + symbol + "(", src,
+                 flags=re.M)
+    src = rename_in_code(src, fn, symbol)
     # Drop static const char arrays and #defines nothing uses any more.
     changed = True
     while changed:
         changed = False
-        for m in list(re.finditer(r"^static const char (\w+)\[\] =.*?;\n", src, re.S | re.M)):
+        for m in list(re.finditer(r"^static const char\s+(\w+)\[\] =.*?;\n", src, re.S | re.M)):
             name = m.group(1)
-            if len(re.findall(r"\b%s\b" % name, src)) == 1:
+            if code_count(src, name) == 1:
                 src = src.replace(m.group(0), "", 1)
                 changed = True
         for m in list(re.finditer(r"^#define (\w+)(?:[^\n]*\\\n)*[^\n]*\n", src, re.M)):
             name = m.group(1)
-            if len(re.findall(r"\b%s\b" % name, src)) == 1:
+            if code_count(src, name) == 1:
                 src = src.replace(m.group(0), "", 1)
                 changed = True
     src = re.sub(r"\n{3,}", "\n\n", src)

@@ -21,9 +21,13 @@ JOBS=${JOBS:-2}
 "$SRC/scripts/install-deps.sh" --fuzz
 command -v "$CC" >/dev/null || { echo "run.sh: $CC not found (apt-get install clang libclang-rt-14-dev)" >&2; exit 2; }
 
+# The route table, generated from api/ops/<domain>/<operation>.json as the build does.
+mkdir -p "$OUT/generated"
+python3 "$SRC/scripts/ops_gen.py" "$SRC/api/ops" "$OUT/generated" --sources "$SRC/api" || exit 1
+
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 CFLAGS="-std=c11 -O1 -g -D_POSIX_C_SOURCE=200809L -Wall -Wno-unused-parameter $SAN \
- -I$SRC/core/include -I$SRC/core -I$SRC/api -I$SRC/server -I$SRC/tests/fuzz \
+ -I$SRC/core/include -I$SRC/core -I$SRC/api -I$OUT/generated -I$SRC/server -I$SRC/tests/fuzz \
  -DMECHD_VERSION=\"0.1.0\" -DMECHD_BUILD_ID=\"fuzz\" -DMECHD_STATIC_DIR=\"$SRC/clients/web\" \
  $(pkg-config --cflags jansson gsl zlib libmicrohttpd)"
 LIBS="$(pkg-config --libs jansson gsl zlib) -lm -lpthread"
@@ -33,7 +37,7 @@ export CFLAGS
 # Rebuilt when the source or any project header is newer than the object.
 mkdir -p "$OUT/obj"
 newest_h=$(ls -t "$SRC"/core/include/mech/*.h "$SRC"/core/*.h "$SRC"/core/integrators/*.h \
-           "$SRC"/api/*.h "$SRC"/server/*.h 2>/dev/null | head -1)
+           "$SRC"/api/*.h "$SRC"/server/*.h "$OUT"/generated/* 2>/dev/null | head -1)
 ls "$SRC"/core/*.c "$SRC"/core/integrators/*.c "$SRC"/api/*.c "$SRC"/server/*.c | grep -v "/server/main\.c$" |
   while read -r f; do
     o="$OUT/obj/$(echo "${f#$SRC/}" | tr / _).o"
