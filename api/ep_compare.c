@@ -145,7 +145,7 @@ static int mark_not_run(struct api_call *c, json_t *rows, json_t *row, json_t *c
     if (!row || json_array_append_new(rows, row)) return -1;
     not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, NULL);
     for (size_t j = k + 1; j < n; j++) {
-        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", specs[j].block, "status", "not_run",
+        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", api_call_as_given(c, specs[j].block, specs[j].pointer), "status", "not_run",
                               "reason", reason);
         json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", 0.0));
         if (!r || json_array_append_new(rows, r)) return -1;
@@ -243,7 +243,7 @@ json_t *api_op_compare(struct api_call *c, const json_t *body)
             api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer);
             rq.dry_run = 1;
             json_t *row = json_object();
-            json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
+            json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
             json_object_set_new_nocheck(row, "status", json_string("dry_run"));
             json_object_set_new_nocheck(row, "selection", api_traj_selection(c, &rq, NULL));
             json_array_append_new(rows, row);
@@ -326,7 +326,7 @@ json_t *api_op_compare(struct api_call *c, const json_t *body)
             goto done;
         }
         json_t *row = json_object();
-        json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
+        json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
         if (rq.closed_form) {
             json_object_set_new_nocheck(row, "method", json_string("closed_form"));
             json_object_set_new_nocheck(row, "order", json_null());

@@ -37,7 +37,7 @@ json_t *api_op_continuum_string(struct api_call *c, const json_t *body)
     }
     const double L = api_number(body, "length", 1), T = api_number(body, "tension", 1);
     const double mu = mu_j ? json_number_value(mu_j) : json_number_value(m_j) / L;
-    const int nm = (int)api_number(body, "modes", 5);
+    const int nm = (int)api_number_of(body, "modes");
     double cw;
     struct mech_error e;
     mech_error_clear(&e);
@@ -101,11 +101,11 @@ json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
         I = api_number(sec, "second_moment", 1);
     }
     enum mech_rod_ends ends;
-    if (!ends_of(api_string(body, "ends", "clamped-free"), &ends)) {
+    if (!ends_of(api_string_of(body, "ends"), &ends)) {
         api_call_invalid(c, "/ends", "unknown end conditions");
         return NULL;
     }
-    const int nm = (int)api_number(body, "modes", 5);
+    const int nm = (int)api_number_of(body, "modes");
     /* c = sqrt(E/rho) and a = sqrt(EI/(rho A)) as products of square roots:
      * no overflow or underflow of the quotients at the schema's extremes. */
     const double cl = sqrt(E) / sqrt(rho);

@@ -95,18 +95,18 @@ json_t *api_op_frames_effective_force(struct api_call *c, const json_t *body)
  * twice over. */
 static int earth_sphere_from(struct api_call *c, const json_t *body, struct mech_earth_sphere *e)
 {
-    e->radius = api_number(body, "radius", MECH_EARTH_RADIUS_MEAN);
-    e->gm = api_number(body, "gm", MECH_EARTH_GM);
-    e->omega = api_number(body, "omega", MECH_EARTH_OMEGA);
+    e->radius = api_number_of(body, "radius");
+    e->gm = api_number_of(body, "gm");
+    e->omega = api_number_of(body, "omega");
     if (json_object_get(body, "g0")) {
-        if (json_object_get(body, "gm")) {
+        if (api_call_given(c, "/gm")) {
             api_call_invalid(c, "/g0", "give at most one of gm and g0 (g0 sets GM = g0 R^2)");
             return 0;
         }
         e->gm = api_number(body, "g0", 0) * e->radius * e->radius;
     }
     if (json_object_get(body, "sidereal_day")) {
-        if (json_object_get(body, "omega")) {
+        if (api_call_given(c, "/omega")) {
             api_call_invalid(c, "/sidereal_day",
                              "give at most one of omega and sidereal_day (omega = 2 pi / "
                              "sidereal_day)");
@@ -120,7 +120,7 @@ static int earth_sphere_from(struct api_call *c, const json_t *body, struct mech
 json_t *api_op_earth_gravity(struct api_call *c, const json_t *body)
 {
     double lat = api_number(body, "latitude_deg", 0);
-    double h = api_number(body, "height", 0);
+    double h = api_number_of(body, "height");
     struct mech_earth_sphere earth;
     if (!earth_sphere_from(c, body, &earth)) return NULL;
     struct mech_earth_gravity g;
@@ -131,7 +131,7 @@ json_t *api_op_earth_gravity(struct api_call *c, const json_t *body)
     if (st == MECH_OK) st = mech_earth_normal_gravity(lat, h, &n, &e);
     /* the rate the user set is what is too fast */
     if (st == MECH_EDOMAIN && !strcmp(e.param, "radius")) {
-        if (json_object_get(body, "omega")) snprintf(e.param, sizeof e.param, "omega");
+        if (api_call_given(c, "/omega")) snprintf(e.param, sizeof e.param, "omega");
         if (json_object_get(body, "sidereal_day"))
             snprintf(e.param, sizeof e.param, "sidereal_day");
     }
@@ -285,9 +285,9 @@ static json_t *components(struct api_call *c, const struct mech_tide_components 
 json_t *api_op_earth_tides(struct api_call *c, const json_t *body)
 {
     const json_t *bj = json_object_get(body, "body");
-    double theta = api_number(body, "angle_deg", 0);
-    double radius = api_number(body, "radius", MECH_EARTH_RADIUS_MEAN);
-    double gm_earth = api_number(body, "gm_earth", MECH_EARTH_GM);
+    double theta = api_number_of(body, "angle_deg");
+    double radius = api_number_of(body, "radius");
+    double gm_earth = api_number_of(body, "gm_earth");
     struct td_body b, moon = td_moon(), sun = td_sun();
     const char *dist_pointer;
     if (!td_body_apply(c, json_object_get(body, "moon"), "/moon", &moon) ||

@@ -45,7 +45,7 @@ struct gr_units {
 static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units *u)
 {
     memset(u, 0, sizeof *u);
-    u->geometric = !strcmp(api_string(body, "units", "SI"), "geometric");
+    u->geometric = !strcmp(api_string_of(body, "units"), "geometric");
     const json_t *M = json_object_get(body, "M");
     u->GM = u->m = u->s = NAN;
     if (M) {
@@ -314,7 +314,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             json_decref(out);
             return NULL;
         }
-        const size_t n = (size_t)api_number(ej, "samples", 200);
+        const size_t n = (size_t)api_number_of(ej, "samples");
         double *rr = malloc(n * sizeof *rr), *vm = malloc(n * sizeof *vm),
                *vp = malloc(n * sizeof *vp);
         double *v1 = malloc(n * sizeof *v1);
@@ -461,7 +461,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     struct mech_geodesic_init in;
-    const double phi0 = api_number(body, "phi0", 0);
+    const double phi0 = api_number_of(body, "phi0");
     /* A ray from far away (impact_parameter, no r0) starts at 100 b, at least 1000 GM/c^2:
      * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
      * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
@@ -472,7 +472,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                     : NAN;
     enum mech_status st;
     if (form_energy) {
-        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
                                        gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
                                        &in, &e);
@@ -482,7 +482,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                       phi0, gr_speed_in(&u, api_number(lv, "radial", 0)),
                                       gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
     } else if (form_impact) {
-        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_impact(
             r0, phi0, gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
     } else {
@@ -546,9 +546,9 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         p.param_end = lj ? gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
     } else
         p.param_end = tj ? gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
-    p.constraint_bound = api_number(body, "constraint_bound", 1e-3);
+    p.constraint_bound = api_number_of(body, "constraint_bound");
     if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
-    p.samples = (size_t)api_number(body, "samples", 201);
+    p.samples = (size_t)api_number_of(body, "samples");
     if (!isfinite(p.param_end) || !(p.param_end / T > 0)) {
         api_call_invalid(c, photon ? "/lambda_end" : "/tau_end",
                          "the run's length is not representable");

@@ -270,7 +270,7 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
             }
             out->own = 1;
             out->ch.method = method;
-            out->ch.requested = block;
+            out->ch.requested = api_call_as_given(c, block, pointer);
             out->ch.opt.rtol = api_number(block, "rtol", 1e-10);
             out->ch.opt.atol = api_number(block, "atol", 1e-12);
             out->ch.opt.dt = api_number(block, "dt", 0);
@@ -438,7 +438,7 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     if (!parse_system(c, js, json_array_size(json_object_get(body, "q")), &s)) return NULL;
     if (!parse_state(c, body, "", &s, y0)) return NULL;
     const double t_end = api_number(body, "t_end", 1.0);
-    const size_t ns = (size_t)api_number(body, "samples", 101), n = (size_t)s.dof, dim = 2 * n;
+    const size_t ns = (size_t)api_number_of(body, "samples"), n = (size_t)s.dof, dim = 2 * n;
     const double tau = mech_ham_time_scale(&s, y0);
     struct ham_integ hi;
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
@@ -568,15 +568,15 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
     if (!parse_system(c, js, json_array_size(pt0) / 2, &s)) return NULL;
     const size_t dim = 2 * (size_t)s.dof;
     const double t_end = api_number(body, "t_end", 1.0);
-    const size_t ns = (size_t)api_number(body, "samples", 11);
+    const size_t ns = (size_t)api_number_of(body, "samples");
 
     struct mech_liouville_problem p;
     memset(&p, 0, sizeof p);
     p.sys = &s;
     p.t_end = t_end;
     p.n_samples = ns;
-    p.tol = api_number(body, "tol", 1e-12);
-    p.max_intervals = (size_t)api_number(body, "max_intervals", 256);
+    p.tol = api_number_of(body, "tol");
+    p.max_intervals = (size_t)api_number_of(body, "max_intervals");
     double *verts = NULL, ctr[MECH_HAM_MAX_DIM], u[MECH_HAM_MAX_DIM], w[MECH_HAM_MAX_DIM],
            ref[MECH_HAM_MAX_DIM];
     double *buf = NULL;
@@ -823,7 +823,7 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
     sec.angle = !strcmp(coord, "phi");
     const size_t o = 1 - sec.index;
     const double t_max = api_number(body, "t_max", 1.0);
-    const size_t maxc = (size_t)api_number(body, "max_crossings", 200);
+    const size_t maxc = (size_t)api_number_of(body, "max_crossings");
     const size_t no = json_array_size(orbits);
 
     /* starts */

@@ -185,7 +185,7 @@ json_t *api_op_relativity_interval(struct api_call *c, const json_t *body)
         e1[k] = json_number_value(json_array_get(json_array_get(ev, 0), k));
         e2[k] = json_number_value(json_array_get(json_array_get(ev, 1), k));
     }
-    const int ly = strcmp(api_string(body, "units", "metres"), "years") == 0;
+    const int ly = strcmp(api_string_of(body, "units"), "years") == 0;
     const double c_light = ly ? 1.0 : 299792458.0;
     struct mech_interval iv;
     struct mech_error e;
@@ -253,10 +253,10 @@ static json_t *telescope(struct api_call *c, const char *from_key, double from, 
 json_t *api_op_relativity_worldline(struct api_call *c, const json_t *body)
 {
     const json_t *jl = json_object_get(body, "legs");
-    const int years = strcmp(api_string(body, "units", "seconds"), "years") == 0;
+    const int years = strcmp(api_string_of(body, "units"), "years") == 0;
     const double cl = years ? 1.0 : C_SI;
     const double g = years ? G_STANDARD * JULIAN_YEAR / C_SI : G_STANDARD;
-    const double tick = api_number(body, "tick_interval", 1.0);
+    const double tick = api_number_of(body, "tick_interval");
     size_t n = json_array_size(jl);
     struct mech_leg *legs = calloc(n, sizeof *legs);
     struct mech_leg_result *out = calloc(n, sizeof *out);

@@ -27,7 +27,7 @@ static int unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit
 {
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), u, &e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), u, &e);
     if (st != MECH_OK) {
         api_call_fail_core(c, st, &e, "");
         return 0;

@@ -10,7 +10,7 @@ json_t *api_op_relativity_michelson_morley(struct api_call *c, const json_t *bod
     struct mech_boost b;
     struct mech_error e;
     mech_error_clear(&e);
-    const double v = api_number(body, "speed", 30000);
+    const double v = api_number_of(body, "speed");
     enum mech_status st = mech_boost_from_beta(mech_vec3_make(v / MECH_MM_C, 0, 0), &b, &e);
     if (st != MECH_OK) {
         api_call_domain(c, "/speed", "the speed must be below c");

@@ -70,7 +70,7 @@ json_t *api_op_relativity_particle(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_energy_unit unit;
-    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), &unit, &e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), &unit, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     double m;
     if (!mass_of(c, json_object_get(body, "particle"), unit, &m)) return NULL;

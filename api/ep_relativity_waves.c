@@ -165,7 +165,7 @@ json_t *api_op_relativity_fields(struct api_call *c, const json_t *body)
 {
     struct mech_boost b;
     if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
-    const char *units = api_string(body, "units", "heaviside_lorentz");
+    const char *units = api_string_of(body, "units");
     const int si = !strcmp(units, "si");
     const struct mech_vec3 e = api_vec3_member(body, "E", mech_vec3_make(0, 0, 0));
     const struct mech_vec3 bf = api_vec3_member(body, "B", mech_vec3_make(0, 0, 0));

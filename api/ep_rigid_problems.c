@@ -80,8 +80,8 @@ json_t *api_op_rigid_free_symmetric_top(struct api_call *c, const json_t *body)
 
 json_t *api_op_rigid_struck_ball(struct api_call *c, const json_t *body)
 {
-    double r = api_number(body, "radius", 0), m = api_number(body, "mass", 1);
-    const char *shape = api_string(body, "shape", "solid_sphere");
+    double r = api_number(body, "radius", 0), m = api_number_of(body, "mass");
+    const char *shape = api_string_of(body, "shape");
     double f = !strcmp(shape, "spherical_shell") ? 2.0 / 3 : !strcmp(shape, "solid_cylinder") ? 0.5
                : !strcmp(shape, "hoop")          ? 1.0
                                                  : 0.4;
@@ -92,7 +92,7 @@ json_t *api_op_rigid_struck_ball(struct api_call *c, const json_t *body)
     struct mech_struck_ball s;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_struck_ball(m, r, k2, api_number(body, "impulse", 1), h, &s, &e);
+    enum mech_status st = mech_struck_ball(m, r, k2, api_number_of(body, "impulse"), h, &s, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     json_t *out = json_object();
     if (!out) return NULL;
@@ -118,8 +118,8 @@ json_t *api_op_rigid_topple(struct api_call *c, const json_t *body)
     struct mech_topple t;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_topple_box(api_number(body, "mass", 1), a, api_number(body, "height", a),
-                                          api_number(body, "g", 9.80665), &t, &e);
+    enum mech_status st = mech_topple_box(api_number_of(body, "mass"), a, api_number(body, "height", a),
+                                          api_number_of(body, "g"), &t, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     json_t *out = json_object(), *held = json_object(), *free_ = json_object(),
            *ih = json_object(), *ifr = json_object();

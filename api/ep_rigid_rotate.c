@@ -63,11 +63,15 @@ static int inertia_principal(struct api_call *c, const json_t *in, double moment
         return 0;
     }
     json_decref(errs);
+    json_t *full = api_schema_apply_defaults(sch, in, NULL); /* as the pipeline does */
     struct api_call sub;
     memset(&sub, 0, sizeof sub);
     sub.req = c->req;
+    sub.given = in;
+    sub.body = full;
     sub.budget = c->budget;
-    json_t *r = api_op_rigid_inertia(&sub, in);
+    json_t *r = full ? api_op_rigid_inertia(&sub, full) : NULL;
+    json_decref(full);
     int ok = r && sub.problem == API_PROBLEM_NONE && !sub.nonfinite;
     if (!ok) {
         size_t ne = json_array_size(sub.errors);
@@ -188,7 +192,7 @@ json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
         if (p.torque_frame == MECH_RIGID_TORQUE_BODY) p.torque = mech_mat3_mul_vec(P, p.torque);
     }
     p.t_end = api_number(body, "t_end", 1);
-    p.samples = (size_t)api_number(body, "samples", 101);
+    p.samples = (size_t)api_number_of(body, "samples");
 
     struct api_integrator_choice ch;
     double W = mech_rigid_rate_scale(&p);

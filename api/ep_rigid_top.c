@@ -34,7 +34,7 @@ json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
     p.I3 = api_number(body, "I3", 0);
     p.mass = api_number(body, "mass", 0);
     p.distance = api_number(body, "distance", 0);
-    p.g = api_number(body, "g", 9.80665);
+    p.g = api_number_of(body, "g");
     p.theta = api_number(body, "theta", 0);
     p.phi = api_number(body, "phi", 0);
     p.psi = api_number(body, "psi", 0);
@@ -42,7 +42,7 @@ json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
     p.phi_dot = api_number(body, "phi_dot", 0);
     p.psi_dot = api_number(body, "psi_dot", 0);
     p.t_end = api_number(body, "t_end", 1);
-    p.samples = (size_t)api_number(body, "samples", 101);
+    p.samples = (size_t)api_number_of(body, "samples");
     struct mech_error e;
     mech_error_clear(&e);
     struct api_integrator_choice ch;

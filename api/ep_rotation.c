@@ -41,7 +41,7 @@ json_t *api_op_rotation_compose(struct api_call *c, const json_t *body)
 {
     const json_t *list = json_object_get(body, "rotations");
     size_t n = json_array_size(list);
-    const char *s = api_string(body, "sense", "passive");
+    const char *s = api_string_of(body, "sense");
     enum mech_rotation_sense sense =
         strcmp(s, "active") == 0 ? MECH_ROTATION_ACTIVE : MECH_ROTATION_PASSIVE;
     double(*qs)[4] = calloc(n ? n : 1, sizeof *qs);

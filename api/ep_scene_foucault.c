@@ -58,10 +58,10 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     struct mech_foucault_problem p;
     memset(&p, 0, sizeof p);
     p.latitude_deg = api_number(body, "latitude_deg", 45.0);
-    p.length = api_number(body, "length", 67.0);
-    p.g = api_number(body, "g", 9.80665);
-    p.omega_magnitude = api_number(body, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
-    p.mass = api_number(body, "mass", 28.0);
+    p.length = api_number_of(body, "length");
+    p.g = api_number_of(body, "g");
+    p.omega_magnitude = api_number_of(body, "omega_magnitude");
+    p.mass = api_number_of(body, "mass");
     const json_t *rel = json_object_get(body, "release");
     p.amplitude_deg = api_number(rel, "amplitude_deg", 3.0);
     p.azimuth_deg = api_number(rel, "azimuth_deg", 0.0);
@@ -71,7 +71,7 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     p.method = strcmp(method, "rattle") ? MECH_PENDULUM_RATTLE_YOSHIDA4 : MECH_PENDULUM_RATTLE;
     const int order = p.method == MECH_PENDULUM_RATTLE ? 2 : 4;
     double sps = api_number(integ, "steps_per_swing", 200.0);
-    double target = api_number(body, "target_error", 1e-6);
+    double target = api_number_of(body, "target_error");
     int want_estimate = !json_is_false(json_object_get(body, "error_estimate"));
 
     /* ---- the scene's scales (closed forms, before integrating) ---- */
@@ -85,7 +85,7 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     double a = p.length * sin(alpha);
 
     /* ---- the run's length ---- */
-    int nrun = json_object_get(body, "swings") != NULL;
+    int nrun = api_call_given(c, "/swings") != NULL;
     nrun += json_object_get(body, "precessions") != NULL;
     nrun += json_object_get(body, "duration") != NULL;
     if (nrun > 1) {
@@ -107,7 +107,7 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
         run_field = "duration";
         t_end = api_number(body, "duration", 1.0);
     } else {
-        t_end = api_number(body, "swings", 100.0) * period;
+        t_end = api_number_of(body, "swings") * period;
     }
     double swings_asked = t_end / period;
     if (swings_asked < 2.0) {

@@ -22,8 +22,9 @@ static const double ep_pi = 3.14159265358979323846;
 static double scene_target(struct api_call *c, const json_t *body)
 {
     const json_t *te = json_object_get(body, "target_error");
-    const char *acc = api_string(body, "accuracy", NULL);
-    if (te && acc) {
+    /* accuracy always has a value (its default); an error only when both were given */
+    const char *acc = api_string_of(body, "accuracy");
+    if (te && api_call_given(c, "/accuracy")) {
         api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
         return 0.0;
     }
@@ -125,15 +126,15 @@ static json_t *ballistic_answer(struct api_call *c, const char *scene,
 
 static const char *accuracy_name(const json_t *body)
 {
-    return json_object_get(body, "target_error") ? NULL : api_string(body, "accuracy", "balanced");
+    return json_object_get(body, "target_error") ? NULL : api_string_of(body, "accuracy");
 }
 
 static void earth_params(const json_t *body, struct mech_scene_ballistic *s)
 {
     memset(s, 0, sizeof *s);
     s->latitude_deg = api_number(body, "latitude_deg", 0);
-    s->g = api_number(body, "g", 9.80665);
-    s->omega = api_number(body, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+    s->g = api_number_of(body, "g");
+    s->omega = api_number_of(body, "omega_magnitude");
 }
 
 static json_t *run_ballistic(struct api_call *c, const json_t *body, const char *scene,
@@ -241,7 +242,7 @@ json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
     earth_params(body, &s);
     const double v0 = api_number(body, "speed", 0);
     const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
-    const double ph = api_number(body, "azimuth_deg", 0) * ep_pi / 180.0;
+    const double ph = api_number_of(body, "azimuth_deg") * ep_pi / 180.0;
     const struct mech_vec3 fwd = mech_vec3_make(cos(ph), sin(ph), 0);
     s.v0 = mech_vec3_make(v0 * cos(al) * cos(ph), v0 * cos(al) * sin(ph), v0 * sin(al));
     const double lat = s.latitude_deg * ep_pi / 180.0, g = s.g, W = s.omega;
@@ -297,14 +298,14 @@ json_t *api_op_scenes_rotating_table(struct api_call *c, const json_t *body)
     if (!(target > 0.0)) return NULL;
     struct mech_scene_table s;
     memset(&s, 0, sizeof s);
-    const char *ex = api_string(body, "experiment", "through_center");
+    const char *ex = api_string_of(body, "experiment");
     s.experiment = !strcmp(ex, "at_rest")  ? MECH_TABLE_AT_REST
                    : !strcmp(ex, "custom") ? MECH_TABLE_CUSTOM
                                            : MECH_TABLE_THROUGH_CENTER;
     s.omega = api_number(body, "omega", 0);
-    s.radius = api_number(body, "radius", 1);
-    s.mass = api_number(body, "mass", 1);
-    s.samples = (size_t)api_number(body, "samples", 21);
+    s.radius = api_number_of(body, "radius");
+    s.mass = api_number_of(body, "mass");
+    s.samples = (size_t)api_number_of(body, "samples");
     if (s.experiment == MECH_TABLE_CUSTOM) {
         static const char *const need[] = {"position", "velocity", "t_end"};
         for (int i = 0; i < 3; i++)
