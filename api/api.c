@@ -28,7 +28,7 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
-/* Parsed answer schemas (a route's response_schema; NULL where it has none). */
+/* Parsed answer schemas (each route's response_schema, from its data file). */
 static json_t **route_responses;
 /* Per route: its schema's default for a top-level "samples" (0 if none), and
  * whether its requests can ask for samples at all (its schema names samples,
