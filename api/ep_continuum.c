@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "mech/continuum_waves.h"
+#include "mech/torsion.h"
 
 static const double PI = 3.14159265358979323846;
 
@@ -82,6 +83,70 @@ static int ends_of(const char *s, enum mech_rod_ends *e)
     return 0;
 }
 
+/* The torsional block, or NULL: with no shear modulus (not asked for), with a
+ * section given by area alone (a note says what is missing), or after
+ * recording an error (c->problem set). */
+static json_t *torsional(struct api_call *c, const json_t *body, const json_t *sec, double E,
+                         double rho, double L, enum mech_rod_ends ends, int nm, json_t *notes)
+{
+    const json_t *gj = json_object_get(body, "shear_modulus"), *nj = json_object_get(body, "poisson_ratio");
+    if (gj && nj) {
+        api_call_invalid(c, "/poisson_ratio", "give shear_modulus or poisson_ratio, not both");
+        return NULL;
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    double g = 0, j = 0, k = 0;
+    enum mech_status st = MECH_OK;
+    if (gj)
+        g = json_number_value(gj);
+    else if (nj)
+        st = mech_shear_modulus(E, json_number_value(nj), &g, &e);
+    if (st == MECH_OK && (gj || nj)) {
+        if (json_object_get(sec, "radius")) {
+            const double r = api_number(sec, "radius", 1);
+            j = k = 0.5 * PI * (r * r) * (r * r);
+        } else if (json_object_get(sec, "width")) {
+            st = mech_torsion_rectangle(api_number(sec, "width", 1), api_number(sec, "height", 1), &j,
+                                        &k, &e);
+            if (st != MECH_OK) snprintf(e.param, sizeof e.param, "section");
+        } else if (json_object_get(sec, "polar_moment")) {
+            j = api_number(sec, "polar_moment", 1);
+            k = api_number(sec, "torsion_constant", j);
+        } else {
+            json_array_append_new(notes, json_string(
+                "torsional waves need the section's polar_moment (and torsion_constant) when it "
+                "is given by area and second_moment: torsional is null"));
+            return NULL;
+        }
+    }
+    if (st == MECH_OK && !gj && !nj) return NULL; /* not asked for: torsional is null */
+    double ct = 0;
+    if (st == MECH_OK) st = mech_torsional_wave_speed(g, rho, k, j, &ct, &e);
+    if (st != MECH_OK) {
+        api_call_fail_core(c, st, &e, "");
+        return NULL;
+    }
+    json_t *o = json_object(), *modes = json_array();
+    if (!o || !modes) {
+        json_decref(o), json_decref(modes);
+        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+        return NULL;
+    }
+    for (int n = 1; n <= nm; n++) {
+        double kl;
+        if (mech_rod_axial_mode(ends, n, &kl, NULL) != MECH_OK) break;
+        struct mech_wave_mode m = mech_wave_mode_nondispersive(ct, L, kl);
+        json_array_append_new(modes, mode_json(c, n, &m));
+    }
+    json_object_set_new_nocheck(o, "shear_modulus", api_real(c, g));
+    json_object_set_new_nocheck(o, "polar_moment", api_real(c, j));
+    json_object_set_new_nocheck(o, "torsion_constant", api_real(c, k));
+    json_object_set_new_nocheck(o, "wave_speed", api_real(c, ct));
+    json_object_set_new_nocheck(o, "modes", modes);
+    return o;
+}
+
 json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
 {
     const double L = api_number(body, "length", 1), rho = api_number(body, "density", 1);
@@ -151,6 +216,12 @@ json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(ben, "modes", bm);
     json_object_set_new_nocheck(out, "longitudinal", lon);
     json_object_set_new_nocheck(out, "bending", ben);
+    json_t *tor = torsional(c, body, sec, E, rho, L, ends, nm, notes);
+    if (!tor && c->problem != API_PROBLEM_NONE) {
+        json_decref(out), json_decref(notes);
+        return NULL;
+    }
+    json_object_set_new_nocheck(out, "torsional", tor ? tor : json_null());
     if (thick)
         json_array_append_new(notes, json_string(
             "some bending modes have k r_g > 0.1: their wavelength is not long against the "

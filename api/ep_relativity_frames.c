@@ -363,6 +363,7 @@ json_t *api_op_relativity_worldline(struct api_call *c, const json_t *body)
                                                     ? "coast"
                                                     : "accelerate"));
         json_object_set_new_nocheck(o, "proper_time", api_real(c, r->proper_time));
+        json_object_set_new_nocheck(o, "proper_time_ct", api_real(c, r->proper_time * cl));
         json_object_set_new_nocheck(o, "coordinate_time", api_real(c, r->coordinate_time));
         json_object_set_new_nocheck(o, "age_difference", api_real(c, r->age_difference));
         json_object_set_new_nocheck(o, "distance", api_real(c, r->distance));
@@ -388,6 +389,7 @@ json_t *api_op_relativity_worldline(struct api_call *c, const json_t *body)
     if (views) json_object_set_new_nocheck(res, "home_telescope", views);
     json_t *t = json_object();
     json_object_set_new_nocheck(t, "proper_time", api_real(c, tot.proper_time));
+    json_object_set_new_nocheck(t, "proper_time_ct", api_real(c, tot.proper_time * cl));
     json_object_set_new_nocheck(t, "coordinate_time", api_real(c, tot.coordinate_time));
     json_object_set_new_nocheck(t, "stay_at_home_time", api_real(c, tot.coordinate_time));
     json_object_set_new_nocheck(t, "age_difference", api_real(c, tot.age_difference));

@@ -15,11 +15,21 @@
 
 #include "endpoint.h"
 #include "mech/boost.h"
+#include "mech/decay_estimate.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
 #include "velocity_request.h"
 
 static const double PI = 3.14159265358979323846;
+
+/* ---- shared schema fragments --------------------------------------------------- */
+
+/* clang-format off */
+
+/* The particle table as catalog text (names with masses in MeV/c²). */
+
+/* A particle with an optional state of motion (none given: at rest). */
+/* clang-format on */
 
 /* ---- shared request readers -------------------------------------------------- */
 
@@ -356,6 +366,38 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
     return res;
 }
 
+/* The notes' estimate of daughter i's endpoint (notes §3.16 Neutron Decay)
+ * beside the exact one, labelled; null when the others are all massless. */
+static json_t *notes_estimate_json(struct api_call *c, double mp, const double m[3], size_t i)
+{
+    struct mech_decay_estimate d;
+    if (mech_decay_endpoint_estimate(mp, m, 3, i, &d, NULL) != MECH_OK) return json_null();
+    json_t *o = json_object(), *mid = json_object();
+    json_object_set_new_nocheck(
+        o, "label",
+        json_string("approximation (notes 3.16, Neutron Decay): the other daughters recoil as "
+                    "one body of mass recoil_mass taking no kinetic energy, E ~ M - recoil_mass, "
+                    "p ~ sqrt((M - recoil_mass)^2 - m^2), T ~ Q; good when recoil_mass >> Q; "
+                    "the exact endpoint is beside it"));
+    json_object_set_new_nocheck(o, "recoil_mass", api_real(c, d.recoil_mass));
+    json_object_set_new_nocheck(o, "energy", api_real(c, d.energy));
+    json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, d.kinetic));
+    json_object_set_new_nocheck(o, "momentum", api_real(c, d.momentum));
+    json_object_set_new_nocheck(o, "kinetic_energy_minus_exact", api_real(c, d.kinetic_minus_exact));
+    json_object_set_new_nocheck(o, "momentum_minus_exact", api_real(c, d.momentum_minus_exact));
+    json_object_set_new_nocheck(
+        mid, "label",
+        json_string("the notes' step before: the recoil non-relativistic, p^2 (1 + (M - "
+                    "recoil_mass)/recoil_mass) = (M - recoil_mass)^2 - m^2 (its p^4 term dropped)"));
+    json_object_set_new_nocheck(mid, "momentum", api_real(c, d.mid_momentum));
+    json_object_set_new_nocheck(mid, "kinetic_energy", api_real(c, d.mid_kinetic));
+    json_object_set_new_nocheck(mid, "kinetic_energy_minus_exact",
+                                api_real(c, d.mid_kinetic_minus_exact));
+    json_object_set_new_nocheck(mid, "momentum_minus_exact", api_real(c, d.mid_momentum_minus_exact));
+    json_object_set_new_nocheck(o, "intermediate", mid);
+    return o;
+}
+
 static json_t *three_body(struct api_call *c, const json_t *body, const struct mech_boost *b,
                           double mp, const double m[3], json_t *res)
 {
@@ -388,6 +430,7 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
         json_object_set_new_nocheck(o, "energy", api_real(c, em));
         json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, tm));
         json_object_set_new_nocheck(o, "momentum", api_real(c, pm));
+        json_object_set_new_nocheck(o, "notes_estimate", notes_estimate_json(c, mp, m, i));
         json_array_append_new(ends, o);
         if (labmax) {
             struct mech_kin_lab l;
@@ -648,6 +691,8 @@ json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t 
     (void)gb;
     return finish(c, res);
 }
+
+/* ---- routes ------------------------------------------------------------------------ */
 
 /* ---- GET /v1/relativity/particles ------------------------------------------ */
 

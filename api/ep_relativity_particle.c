@@ -150,6 +150,7 @@ json_t *api_op_relativity_particle(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(lo, "proper", api_real(c, life.proper));
         json_object_set_new_nocheck(lo, "c_tau", api_real(c, life.c_tau));
         json_object_set_new_nocheck(lo, "lab", api_real(c, life.lab));
+        json_object_set_new_nocheck(lo, "lab_c_tau", api_real(c, life.lab * MECH_PARTICLE_STATE_C));
         json_object_set_new_nocheck(lo, "decay_length", api_real(c, life.decay_length));
         json_object_set_new_nocheck(out, "lifetime", lo);
     }

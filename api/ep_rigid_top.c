@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "integrator_block.h"
+#include "mech/euler_rates.h"
 #include "mech/top.h"
 #include "trajectory_request.h"
 
@@ -95,6 +96,18 @@ json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "axis", ja);
     json_object_set_new_nocheck(out, "pole_samples", jp);
     json_object_set_new_nocheck(out, "omega3", api_real(c, r.omega3));
+    {
+        /* the body (and space) angular velocity at t = 0 from the Euler rates */
+        const double ang[3] = {p.phi, p.theta, p.psi}, rt[3] = {p.phi_dot, p.theta_dot, p.psi_dot};
+        struct mech_euler_kinematics k;
+        json_t *w0 = json_object();
+        if (mech_euler_kinematics(ang, rt, &k, NULL) == MECH_OK) {
+            json_object_set_new_nocheck(w0, "body", api_vec3(c, k.omega_body));
+            json_object_set_new_nocheck(w0, "space", api_vec3(c, k.omega_space));
+            json_object_set_new_nocheck(w0, "magnitude", api_real(c, mech_vec3_norm(k.omega_body)));
+        }
+        json_object_set_new_nocheck(out, "initial_omega", w0);
+    }
 
     json_t *nu = json_object();
     json_object_set_new_nocheck(nu, "theta_min", api_real(c, r.turning.theta_min));

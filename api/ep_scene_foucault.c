@@ -10,9 +10,13 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "earth_rotation.h"
 #include "endpoint.h"
+#include "integrator_block.h"
+#include "mech/chooser_pendulum.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
+#include "trajectory_request.h"
 
 static const double fc_pi = 3.14159265358979323846;
 
@@ -20,6 +24,51 @@ struct fc_run {
     struct mech_foucault_problem p;
     struct mech_foucault_result r;
 };
+
+/* How the method was picked: given, or by the chooser. */
+struct fc_choice {
+    int chosen;            /* 1: by the chooser (sel, reason) */
+    double target;         /* relative error aimed at */
+    const char *accuracy;  /* preset name or NULL */
+    struct mech_selection sel;
+    char reason[700];
+};
+
+/* diagnostics.selection, the shape every time-evolution operation gives it
+ * (api/integrator_block.c): requested, method, steps_per_swing, dt, and when
+ * chosen target_error, reason, the candidates with their predictions and,
+ * after a run, achieved: the error evidence (>= 0), or -2 for none; -1 is a
+ * dry run (no achieved block). New reference. */
+static json_t *fc_selection(struct api_call *c, const json_t *integ, const struct fc_choice *ch,
+                            const char *method, double sps, double dt, double achieved)
+{
+    json_t *s = json_object();
+    json_object_set_new_nocheck(s, "requested", integ ? json_deep_copy(integ) : json_null());
+    json_object_set_new_nocheck(s, "method", json_string(method));
+    json_object_set_new_nocheck(s, "steps_per_swing", api_real(c, sps));
+    json_object_set_new_nocheck(s, "dt", api_real(c, dt));
+    if (!ch->chosen) {
+        json_object_set_new_nocheck(s, "reason",
+                                    json_string("method and steps per swing given in the request"));
+        return s;
+    }
+    if (ch->accuracy) json_object_set_new_nocheck(s, "accuracy", json_string(ch->accuracy));
+    json_object_set_new_nocheck(s, "target_error", api_real(c, ch->target));
+    json_object_set_new_nocheck(s, "reason", json_string(ch->reason));
+    api_selection_predictions(c, &ch->sel, s);
+    if (achieved != -1.0)
+        json_object_set_new_nocheck(
+            s, "achieved",
+            api_selection_achieved(c, &ch->sel.c[ch->sel.chosen], ch->target,
+                                   achieved >= 0.0 ? achieved : -1.0,
+                                   achieved >= 0.0
+                                       ? "Richardson: the same method at half the steps per "
+                                         "swing, max(|period difference| / period, |rate "
+                                         "difference| / W) / (2^p - 1)"
+                                       : "none: error_estimate is false or its run was skipped",
+                                   -1.0));
+    return s;
+}
 
 /* Map the core's parameter names to the request's. */
 /* The sense of a precession rate (rad/s, counterclockwise positive seen from above). */
@@ -60,7 +109,9 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     p.latitude_deg = api_number(body, "latitude_deg", 45.0);
     p.length = api_number_of(body, "length");
     p.g = api_number_of(body, "g");
-    p.omega_magnitude = api_number_of(body, "omega_magnitude");
+    if (!api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL,
+                            &p.omega_magnitude))
+        return NULL;
     p.mass = api_number_of(body, "mass");
     const json_t *rel = json_object_get(body, "release");
     p.amplitude_deg = api_number(rel, "amplitude_deg", 3.0);
@@ -69,10 +120,30 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     const json_t *integ = json_object_get(body, "integrator");
     const char *method = api_string(integ, "method", "rattle_yoshida4");
     p.method = strcmp(method, "rattle") ? MECH_PENDULUM_RATTLE_YOSHIDA4 : MECH_PENDULUM_RATTLE;
-    const int order = p.method == MECH_PENDULUM_RATTLE ? 2 : 4;
+    int order = p.method == MECH_PENDULUM_RATTLE ? 2 : 4;
     double sps = api_number(integ, "steps_per_swing", 200.0);
-    double target = api_number_of(body, "target_error");
     int want_estimate = !json_is_false(json_object_get(body, "error_estimate"));
+    /* the target: target_error (default 1e-6) or an accuracy preset's
+     * promise; without an explicit method or steps per swing it also picks
+     * them (the predictive chooser, core/chooser_pendulum.c) */
+    const char *accuracy = api_string(body, "accuracy", NULL);
+    /* given, not defaulted (method, steps_per_swing and target_error have defaults) */
+    const int explicit_integrator = api_call_given(c, "/integrator/method") != NULL ||
+                                    api_call_given(c, "/integrator/steps_per_swing") != NULL;
+    if (accuracy && api_call_given(c, "/target_error")) {
+        api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
+        return NULL;
+    }
+    if (accuracy && explicit_integrator) {
+        api_call_invalid(c, "/accuracy",
+                         "accuracy chooses the method and the steps per swing: give it or "
+                         "integrator.method / integrator.steps_per_swing, not both");
+        return NULL;
+    }
+    double target = api_number_of(body, "target_error");
+    for (int i = 0; accuracy && i < MECH_ACCURACY_COUNT; i++)
+        if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, accuracy))
+            target = mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
 
     /* ---- the scene's scales (closed forms, before integrating) ---- */
     double lat = p.latitude_deg * deg, alpha = p.amplitude_deg * deg;
@@ -119,6 +190,41 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
                         swings_asked, period);
         return NULL;
     }
+    /* ---- the method: given, or chosen by its predicted error and cost ---- */
+    struct fc_choice ch;
+    memset(&ch, 0, sizeof ch);
+    ch.target = target;
+    ch.accuracy = accuracy;
+    if (!explicit_integrator) {
+        struct mech_pendulum_profile prof = {period, swings_asked, alpha, W * t_end,
+                                             want_estimate};
+        enum mech_pendulum_method cm;
+        struct mech_error ce;
+        mech_error_clear(&ce);
+        if (mech_choose_pendulum(&prof, target, &ch.sel, &cm, &sps, &ce) != MECH_OK)
+            return api_call_fail_core(c, MECH_EINVAL, &ce, "");
+        ch.chosen = 1;
+        p.method = cm;
+        order = cm == MECH_PENDULUM_RATTLE ? 2 : 4;
+        const struct mech_candidate *k = &ch.sel.c[ch.sel.chosen];
+        char beyond[320];
+        mech_selection_beyond_text(&ch.sel, beyond, sizeof beyond);
+        snprintf(ch.reason, sizeof ch.reason,
+                 ch.sel.beyond == 2
+                     ? "%s%s at %.0f steps per swing is the cheapest of the most accurate "
+                       "candidates; none is predicted to meet %.0e relative on the period and "
+                       "the precession rate / W over %.6g swings (predicted %.2g, %.0f force "
+                       "evaluations%s)%s"
+                     : "%s%s at %.0f steps per swing is the cheapest candidate predicted to "
+                       "meet %.0e relative on the period and the precession rate / W over %.6g "
+                       "swings (predicted %.2g, %.0f force evaluations%s)%s",
+                 accuracy ? "" : api_call_given(c, "/target_error")
+                                     ? ""
+                                     : "target_error 1e-6 by default: ",
+                 k->method, sps, target, swings_asked, k->predicted_error,
+                 k->predicted_evaluations, want_estimate ? " with the error estimate's run" : "",
+                 beyond);
+    }
     if (swings_asked * sps > 1e12) {
         char ptr[32];
         snprintf(ptr, sizeof ptr, "/%s", run_field);
@@ -162,6 +268,10 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     double cf_rel = fmax(cf_rate_rel, cf_period);
     int include_cf = auto_mode ? (W > 0.0 && cf_rel > target / 10.0) : given_centrifugal;
     p.centrifugal = include_cf;
+
+    if (api_dry_run_requested(body))
+        return api_dry_run_answer(c, fc_selection(c, integ, &ch, mech_pendulum_method_name(p.method),
+                                                  sps, p.t_end / (double)p.steps, -1.0));
 
     /* ---- the run, and a second at half the steps ---- */
     struct mech_error e;
@@ -358,8 +468,9 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
         json_string("a fixed-step symplectic, symmetric method on the exact constraint: the "
                     "energy error stays bounded over 10^4 swings, the Coriolis rotation is "
                     "exact (Cayley form), the discrete linear motion precesses at W sin(lat) "
-                    "to first order in W for any step, and the work is a fixed ~600 force "
-                    "evaluations per swing (order 4: the period to ~1e-7 at 200 steps)"));
+                    "to first order in W for any step, and the work is a fixed 1 (rattle) or 3 "
+                    "(rattle_yoshida4) force evaluations per step (order 4: the period to "
+                    "~1e-7 at 183 steps per swing)"));
     json_t *en = json_object();
     json_object_set_new_nocheck(en, "name", json_string("jacobi_integral"));
     json_object_set_new_nocheck(en, "initial", api_real(c, r.energy_initial));
@@ -382,6 +493,17 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     } else {
         json_object_set_new_nocheck(d, "error_estimate", json_null());
         json_object_set_new_nocheck(d, "error_estimate_reason", json_string(est_skip));
+    }
+    {
+        /* the achieved error beside the prediction: the Richardson estimates
+         * of the period (relative) and the rate (relative to W) */
+        double achieved = -2.0; /* no evidence */
+        if (est_done)
+            achieved = fmax(r.period > 0.0 ? num_period / r.period : 0.0,
+                            W > 0.0 ? num_rate / W : 0.0);
+        json_object_set_new_nocheck(d, "selection",
+                                    fc_selection(c, integ, &ch, mech_pendulum_method_name(p.method),
+                                                 sps, p.t_end / (double)p.steps, achieved));
     }
     json_object_set_new_nocheck(res, "diagnostics", d);
 

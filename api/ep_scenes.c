@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "earth_rotation.h"
 #include "endpoint.h"
 #include "mech/scenes.h"
 #include "mech/trajectory.h"
@@ -129,12 +130,13 @@ static const char *accuracy_name(const json_t *body)
     return json_object_get(body, "target_error") ? NULL : api_string_of(body, "accuracy");
 }
 
-static void earth_params(const json_t *body, struct mech_scene_ballistic *s)
+/* 0 after recording an error (both omega_magnitude and sidereal_day). */
+static int earth_params(struct api_call *c, const json_t *body, struct mech_scene_ballistic *s)
 {
     memset(s, 0, sizeof *s);
     s->latitude_deg = api_number(body, "latitude_deg", 0);
     s->g = api_number_of(body, "g");
-    s->omega = api_number_of(body, "omega_magnitude");
+    return api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL, &s->omega);
 }
 
 static json_t *run_ballistic(struct api_call *c, const json_t *body, const char *scene,
@@ -185,7 +187,7 @@ json_t *api_op_scenes_falling_object(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const double h = api_number(body, "height", 0);
     s.r0 = mech_vec3_make(0, 0, h);
     json_t *par = json_object();
@@ -206,7 +208,7 @@ json_t *api_op_scenes_vertical_shot(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const int has_v = json_object_get(body, "speed") != NULL;
     const int has_h = json_object_get(body, "height") != NULL;
     if (has_v == has_h) {
@@ -239,7 +241,7 @@ json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_ballistic s;
-    earth_params(body, &s);
+    if (!earth_params(c, body, &s)) return NULL;
     const double v0 = api_number(body, "speed", 0);
     const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
     const double ph = api_number_of(body, "azimuth_deg") * ep_pi / 180.0;

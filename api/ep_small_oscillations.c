@@ -9,6 +9,7 @@
 
 #include "endpoint.h"
 #include "mech/earth.h"
+#include "earth_rotation.h"
 #include "mech/small_oscillations.h"
 
 #ifndef M_PI
@@ -16,6 +17,9 @@
 #endif
 
 #define MAX_TERMS 16
+
+/* clang-format off */
+/* clang-format on */
 
 static json_t *nomem(struct api_call *c, json_t *o)
 {
@@ -164,9 +168,13 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
     struct mech_foucault_modes f;
     struct mech_error e;
     mech_error_clear(&e);
+    double w_earth;
+    if (!api_earth_rotation(c, s, "/system", "omega_earth", MECH_EARTH_OMEGA, &w_earth)) {
+        json_decref(out);
+        return NULL;
+    }
     enum mech_status st = mech_foucault_modes(
-        api_number(s, "length", 1), api_number(s, "g", 9.80665),
-        api_number(s, "omega_earth", MECH_EARTH_OMEGA),
+        api_number(s, "length", 1), api_number(s, "g", 9.80665), w_earth,
         api_number(s, "latitude_deg", 0) * (M_PI / 180), &f, &e);
     if (st != MECH_OK) {
         json_decref(out);

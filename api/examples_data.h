@@ -365,6 +365,14 @@ static const char *const api_examples_data[] = {
     "  \"notes_answer\": {\"pointer\": \"/maximum_energies/1/kinetic_energy\", \"value\": 0.7815821977019556, \"rounding\": {\"relative\": 1e-09}, \"text\": \"The electron takes the most energy when the neutrino has none: T_max = Q (m_n − m_e + m_p)/(2 m_n) = 0.781582 MeV, Q = m_n − m_p − m_e minus the proton's small recoil.\"}\n"
     "}",
     "{\n"
+    "  \"id\": \"neutron-decay-notes-estimate\",\n"
+    "  \"title\": \"Neutron decay: the notes' estimate of the electron's largest momentum\",\n"
+    "  \"section\": \"3.16 Kinematics Problems in Electron Volts — Neutron Decay\",\n"
+    "  \"operation\": \"/v1/relativity/kinematics/decay\",\n"
+    "  \"request\": {\"energy_unit\": \"MeV\", \"parent\": {\"particle\": \"neutron\"}, \"daughters\": [\"proton\", \"electron\", \"antineutrino\"]},\n"
+    "  \"notes_answer\": {\"pointer\": \"/maximum_energies/1/notes_estimate/momentum\", \"value\": 1.1849050594878, \"rounding\": {\"relative\": 0.01}, \"text\": \"The notes' approximation (the proton recoils non-relativistically and, Δm ≪ m_p, takes no energy): p_e ≈ √((Δm)² − m_e²) = √(1.29² − 0.51²) ≈ 1.18 MeV and E_e ≈ Δm = 1.29 MeV. The answer gives it with the exact endpoint beside it (p = 1.18729 MeV, T = 0.781582 MeV: the estimate is 0.75 keV high, the proton's recoil energy).\"}\n"
+    "}",
+    "{\n"
     "  \"id\": \"compton-shift\",\n"
     "  \"title\": \"Compton scattering at 90°\",\n"
     "  \"section\": \"3.16 Kinematics Problems in Electron Volts — Compton Scattering\",\n"
@@ -467,6 +475,22 @@ static const char *const api_examples_data[] = {
     "  \"operation\": \"/v1/rigid/topple\",\n"
     "  \"request\": {\"width\": 0.1},\n"
     "  \"notes_answer\": {\"pointer\": \"/edge_held/omega\", \"value\": 7.8058126720855725, \"rounding\": {\"relative\": 1e-12}, \"text\": \"With the edge held, m g l(√2 − 1)/2 = ½ (2/3 m l²) ω²: ω = √((3g/2l)(√2 − 1)) = 7.81 rad/s for l = 10 cm (frictionless floor: √((12g/5l)(√2 − 1))).\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"elastic-equal-masses\",\n"
+    "  \"title\": \"A particle scattered through θ by a target of equal mass\",\n"
+    "  \"section\": \"3.19 Homework 16\",\n"
+    "  \"operation\": \"/v1/relativity/kinematics/elastic\",\n"
+    "  \"request\": {\"projectile\": {\"particle\": \"proton\", \"kinetic_energy\": 500}, \"target\": \"proton\", \"angle_deg\": 30},\n"
+    "  \"notes_answer\": {\"pointer\": \"/lab/projectile/kinetic_energy\", \"value\": 351.58058185546344, \"rounding\": {\"relative\": 1e-12}, \"text\": \"Energy and momentum conservation with the target at rest give T' = T cos²θ/(1 + T sin²θ/(2mc²)): a 500 MeV proton scattered through 30° by a proton keeps 351.58 MeV (T cos²θ = 375 MeV non-relativistically), and the opening angle is 83.8°, not 90°.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"circular-orbit-for-l\",\n"
+    "  \"title\": \"The circular orbit of a given angular momentum: the Earth about the Sun\",\n"
+    "  \"section\": \"Extra: 5 Hamiltonian Mechanics — Motion in a Central Potential\",\n"
+    "  \"operation\": \"/v1/hamiltonian/circular-orbit\",\n"
+    "  \"request\": {\"mass\": 5.9722e24, \"angular_momentum\": 2.6617e40, \"gm\": 1.32712440018e20},\n"
+    "  \"notes_answer\": {\"pointer\": \"/orbits/0/radius\", \"value\": 149671078734.58072, \"rounding\": {\"relative\": 1e-12}, \"text\": \"V_eff = L²/(2mr²) − GMm/r is least where m r³ V' = L²: r = L²/(GM m²) = 1.4967e11 m for L = 2.6617e40 kg m²/s; there ω_r = ω_φ (apsidal angle π, Bertrand) and the period is 2π√(r³/GM) = 365.5 days.\"}\n"
     "}",
 };
 

@@ -97,7 +97,11 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     } else if (strcmp(ft, "earth") == 0) {
         p->frame.type = MECH_FRAME_EARTH;
         p->frame.latitude_deg = api_number(frame, "latitude_deg", 0);
-        p->frame.omega_magnitude = api_number(frame, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL);
+        char fptr[128];
+        snprintf(fptr, sizeof fptr, "%s/frame", prefix);
+        if (!api_earth_rotation(c, frame, fptr, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL,
+                                &p->frame.omega_magnitude))
+            return 0;
     } else {
         p->frame.type = MECH_FRAME_INERTIAL;
     }

@@ -7,6 +7,7 @@
 #ifndef API_TRAJECTORY_REQUEST_H
 #define API_TRAJECTORY_REQUEST_H
 
+#include "earth_rotation.h"
 #include "endpoint.h"
 #include "mech/closed_form.h"
 #include "mech/trajectory.h"

@@ -16,7 +16,9 @@
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
  * With --presets it prints instead each preset's choice, CPU and achieved
- * error on the issue's particle scenes (no calibration).
+ * error on the issue's particle scenes (no calibration); --floors the
+ * round-off floors; --pendulum the Foucault pendulum's law
+ * (core/chooser_pendulum.c). The scenes are tests/chooser_scenes.h's.
  */
 #include <math.h>
 #include <stdio.h>
@@ -25,6 +27,8 @@
 
 #include "mech/budget.h"
 #include "mech/trajectory.h"
+
+#include "../tests/chooser_scenes.h"
 
 #define NS 101
 #define CAL_PI 3.14159265358979323846
@@ -39,57 +43,42 @@ struct scene {
     double S;             /* atol = rtol x S, the chooser's scale of the scene */
 };
 
-static void scene_kepler(struct scene *s)
+/* The calibration scenes are tests/chooser_scenes.h's (the tests that check
+ * the model use the same definitions); here with the two run lengths. */
+static void from_cs(struct scene *s, const struct chooser_scene *c, double orbits0,
+                    double orbits1)
 {
     memset(s, 0, sizeof *s);
-    s->cls = "central_gravity";
-    const double e = 0.5;
-    s->f[0].type = MECH_FORCE_CENTRAL_GRAVITY;
-    s->f[0].u.central_gravity.gm = 1.0;
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(1.0 - e, 0, 0);
-    s->p.velocity = mech_vec3_make(0, sqrt((1.0 + e) / (1.0 - e)), 0);
-    s->T = sqrt(pow(1.0 - e, 3.0));
-    /* 10 and 100 orbits */
-    s->spans[0] = 10 * 2 * CAL_PI / s->T;
-    s->spans[1] = 1000 * 2 * CAL_PI / s->T;
-    s->exact = 1;
-    s->S = 0.61;
+    s->cls = c->cls;
+    s->p = c->p;
+    s->f[0] = c->f[0];
+    s->T = c->T;
+    s->S = c->S;
+    s->exact = c->exact;
+    s->spans[0] = orbits0 * c->period / c->T;
+    s->spans[1] = orbits1 * c->period / c->T;
+}
+
+static void scene_kepler(struct scene *s)
+{
+    struct chooser_scene c;
+    cs_kepler(&c, "kepler e=0.5", 0.5, 10); /* 10 and 1000 orbits */
+    from_cs(s, &c, 10, 1000);
 }
 
 static void scene_osc(struct scene *s)
 {
-    memset(s, 0, sizeof *s);
-    s->cls = "oscillator";
-    s->f[0].type = MECH_FORCE_SPRING;
-    s->f[0].u.spring.k = 1.0;
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(1, 0, 0);
-    s->p.velocity = mech_vec3_make(0, 0.5, 0);
-    s->T = 1.0;
-    s->spans[0] = 10 * 2 * CAL_PI;
-    s->spans[1] = 10000 * 2 * CAL_PI;
-    s->exact = 1;
-    s->S = 0.5;
+    struct chooser_scene c;
+    cs_oscillator(&c, "oscillator", 10); /* 10 and 1e4 periods */
+    from_cs(s, &c, 10, 10000);
 }
 
 static void scene_fall(struct scene *s)
 {
-    memset(s, 0, sizeof *s);
-    s->cls = "uniform_field";
-    s->f[0].type = MECH_FORCE_UNIFORM_GRAVITY;
-    s->f[0].u.uniform_gravity.g = mech_vec3_make(0, 0, -9.80665);
-    s->p.mass = 1.0;
-    s->p.position = mech_vec3_make(0, 0, 100);
-    s->p.frame.type = MECH_FRAME_EARTH;
-    s->p.frame.latitude_deg = 32.0;
-    s->p.frame.omega_magnitude = MECH_EARTH_OMEGA_SIDEREAL;
-    s->p.fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
-    s->T = sqrt(100 / 9.80665);
+    struct chooser_scene c;
+    cs_fall(&c, "falling object");
     /* the fall lasts sqrt(2) T whatever the height: one span, b = 0 */
-    s->spans[0] = s->spans[1] = sqrt(2.0);
-    s->exact = 0;
-    s->S = 31.3;
+    from_cs(s, &c, 1, 1);
 }
 
 struct meas {
@@ -375,8 +364,64 @@ static void floors_table(void)
         }
 }
 
+/* --pendulum: the Foucault pendulum's law (core/chooser_pendulum.c): for
+ * rattle (p = 2) and rattle_yoshida4 (p = 4) at several steps per swing n,
+ * latitudes 32 .. 80 deg, amplitudes 3 .. 30 deg, 100 and 1000 swings, the
+ * error max(|period - ref| / ref, |rate - ref| / W) against
+ * rattle_yoshida4 at 12800 steps per swing, divided by (2 pi / n)^p
+ * (1 + 3 alpha^2): the constant C (its largest value is the table's), and
+ * the CPU seconds per force evaluation. Points within 30x of the round-off
+ * floor are left out. */
+static void pendulum_table(void)
+{
+    static const double lats[] = {32, 45, 80}, amps[] = {3, 10, 30}, swings[] = {100, 1000};
+    static const double ns[2][4] = {{160, 320, 640, 1280}, {20, 40, 80, 160}};
+    const enum mech_pendulum_method ms[2] = {MECH_PENDULUM_RATTLE, MECH_PENDULUM_RATTLE_YOSHIDA4};
+    double cmax[2] = {0, 0}, cmin[2] = {INFINITY, INFINITY}, cpu[2] = {0, 0}, ev[2] = {0, 0};
+    printf("%-5s %-5s %-6s %-16s %7s %10s %10s\n", "lat", "amp", "swings", "method", "n",
+           "error", "C");
+    for (size_t i = 0; i < 3; i++)
+        for (size_t j = 0; j < 3; j++)
+            for (size_t k = 0; k < 2; k++) {
+                if (j > 0 && i != 1) continue; /* amplitudes at 45 deg only */
+                static struct mech_foucault_result ref, r;
+                if (!cs_foucault_run(lats[i], amps[j], swings[k], MECH_PENDULUM_RATTLE_YOSHIDA4,
+                                     12800, &ref))
+                    continue;
+                const double alpha = amps[j] * CAL_PI / 180;
+                const double fl = fmax(1e-14, 1e-13 / (MECH_EARTH_OMEGA_SIDEREAL * ref.swings *
+                                                       ref.period));
+                for (int m = 0; m < 2; m++)
+                    for (int q = 0; q < 4; q++) {
+                        const double c0 = mech_cpu_seconds();
+                        if (!cs_foucault_run(lats[i], amps[j], swings[k], ms[m], ns[m][q], &r))
+                            continue;
+                        cpu[m] += mech_cpu_seconds() - c0;
+                        ev[m] += (double)r.force_evaluations;
+                        const double e = cs_foucault_err(&r, &ref);
+                        const double C = e / (pow(2 * CAL_PI / ns[m][q], m ? 4 : 2) *
+                                              (1 + 3 * alpha * alpha));
+                        printf("%-5.0f %-5.0f %-6.0f %-16s %7.0f %10.2e %10.3g%s\n", lats[i],
+                               amps[j], swings[k], mech_pendulum_method_name(ms[m]), ns[m][q], e,
+                               C, e > 30 * fl ? "" : " (near the floor: left out)");
+                        if (e > 30 * fl) {
+                            cmax[m] = fmax(cmax[m], C);
+                            cmin[m] = fmin(cmin[m], C);
+                        }
+                    }
+                fflush(stdout);
+            }
+    for (int m = 0; m < 2; m++)
+        printf("%s: C in [%.3g, %.3g], CPU per force evaluation %.3g s\n",
+               mech_pendulum_method_name(ms[m]), cmin[m], cmax[m], ev[m] > 0 ? cpu[m] / ev[m] : 0);
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && !strcmp(argv[1], "--pendulum")) {
+        pendulum_table();
+        return 0;
+    }
     if (argc > 1 && !strcmp(argv[1], "--presets")) {
         presets_table();
         return 0;

@@ -935,7 +935,7 @@ static void issue_presets_section(void)
  * floor) and the CPU of that run. */
 #include "../tests/api/scene_set.h"
 
-enum { SS_ROUNDS = 5 };
+enum { SS_ROUNDS = 3 };
 
 struct ss_bare {
     const char *scipy; /* scene name for workprecision_scipy.py, NULL: none */
@@ -1169,6 +1169,140 @@ static int ss_cmp_double(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The chosen candidate's predicted evaluations and CPU in an answer's
+ * diagnostics.selection (0 when absent). */
+static void ss_predicted(const json_t *ans, double *evals, double *cpu)
+{
+    *evals = *cpu = 0;
+    const json_t *c = at(ans, "diagnostics/selection/candidates");
+    for (size_t i = 0; i < json_array_size(c); i++) {
+        const json_t *k = json_array_get(c, i);
+        const char *v = json_string_value(json_object_get(k, "verdict"));
+        if (v && !strcmp(v, "chosen")) {
+            *evals = json_number_value(json_object_get(k, "predicted_evaluations"));
+            *cpu = json_number_value(json_object_get(k, "predicted_cpu_s"));
+        }
+    }
+}
+
+/* The closed form as a client gets it (balanced, no "closed_form": false),
+ * in the same columns as the integrating presets: its error against the
+ * scene's reference, predicted and counted evaluations, CPU. */
+static void ss_closed_form_row(const struct scene_def *sc)
+{
+    double cpu[SS_ROUNDS], err = INFINITY, pev = 0, pcpu = 0, nev = 0;
+    const char *m = "?";
+    char method[32] = "?";
+    for (int r = 0; r < SS_ROUNDS; r++) {
+        json_t *b = with_integrator(sc->body, json_pack("{ss}", "accuracy", "balanced"));
+        int st;
+        const double c0 = mech_cpu_seconds();
+        json_t *ans = post(sc->path, b, &st);
+        cpu[r] = mech_cpu_seconds() - c0;
+        json_decref(b);
+        if (st != 200 || !ans) {
+            json_decref(ans);
+            printf("%-34s closed form: FAILED\n", sc->name);
+            return;
+        }
+        if (r == 0) {
+            m = json_string_value(at(ans, "diagnostics/selection/method"));
+            snprintf(method, sizeof method, "%s", m ? m : "?");
+            ss_predicted(ans, &pev, &pcpu);
+            const json_t *d = json_object_get(ans, "diagnostics");
+            const json_t *ne = json_object_get(d, "evaluations");
+            if (!ne) ne = json_object_get(d, "rhs_evaluations");
+            nev = json_number_value(ne);
+            json_t *rf = sc->ref == REF_KEPLER ? exact_trajectory(ans, 1, sc->body)
+                       : sc->ref == REF_OSC    ? exact_trajectory(ans, 0, sc->body)
+                                               : exact_rigid(ans);
+            err = rf ? 0 : INFINITY;
+            for (int k = 0; rf && k < 3 && sc->arrays[k]; k++)
+                err = fmax(err, tree_err(at(ans, sc->arrays[k]), at(rf, sc->arrays[k]),
+                                         sc->floor_));
+            json_decref(rf);
+        }
+        json_decref(ans);
+    }
+    qsort(cpu, SS_ROUNDS, sizeof cpu[0], ss_cmp_double);
+    const double med = cpu[SS_ROUNDS / 2];
+    printf("%-34s %-9s %7.0e %-26s %10.2e %-9s %9.5f %10.0f/%-10.0f %8.2f\n", sc->name,
+           "(client)", 1e-8, method, err, err <= 1e-8 ? "yes" : "NO", med, pev, nev,
+           pcpu > 0 ? med / pcpu : 0.0);
+}
+
+/* The Foucault pendulum, 100 swings at 48.846 deg (Paris), through
+ * /v1/scenes/foucault by accuracy: error = max(|period - ref| / ref, |rate -
+ * ref| / W) against rattle_yoshida4 at 12800 steps per swing (its own
+ * error ~1e-14 on the period, ~1e-12 on the rate: the round-off of the
+ * azimuth over 0.12 rad of Earth's turn). The count includes the error
+ * estimate's run. Returns 1 with the machine/draft and machine/balanced
+ * CPU ratios. */
+static int foucault_rows(double *md, double *mb)
+{
+    static const char *const presets[] = {"draft", "balanced", "precise", "machine"};
+    static const double promise[] = {1e-3, 1e-8, 1e-10, 1e-11};
+    const char *base = "{\"latitude_deg\":48.846,\"swings\":100,\"cost\":false";
+    const double W = 7.292115e-05;
+    char body[256];
+    snprintf(body, sizeof body, "%s,\"integrator\":{\"steps_per_swing\":12800}}", base);
+    json_t *b = json_loads(body, 0, NULL);
+    int st;
+    json_t *ref = post("/v1/scenes/foucault", b, &st);
+    json_decref(b);
+    if (st != 200 || !ref) {
+        json_decref(ref);
+        printf("%-34s FAILED (reference)\n", "Foucault 100 swings");
+        return 0;
+    }
+    const double P0 = json_number_value(at(ref, "swing/period"));
+    const double R0 = json_number_value(at(ref, "precession/measured_rate"));
+    json_decref(ref);
+    double cpu[4][SS_ROUNDS], err[4] = {0}, pev[4] = {0}, pcpu[4] = {0}, nev[4] = {0};
+    char how[4][64] = {{0}};
+    for (int r = 0; r < SS_ROUNDS; r++)
+        for (int p = 0; p < 4; p++) {
+            snprintf(body, sizeof body, "%s,\"accuracy\":\"%s\"}", base, presets[p]);
+            b = json_loads(body, 0, NULL);
+            const double c0 = mech_cpu_seconds();
+            json_t *ans = post("/v1/scenes/foucault", b, &st);
+            cpu[p][r] = mech_cpu_seconds() - c0;
+            json_decref(b);
+            if (st != 200 || !ans) {
+                json_decref(ans);
+                return 0;
+            }
+            if (r == 0) {
+                const json_t *d = json_object_get(ans, "diagnostics");
+                const char *m = json_string_value(json_object_get(d, "method"));
+                snprintf(how[p], sizeof how[p], "%s (%.0f/swing)", m ? m : "?",
+                         json_number_value(json_object_get(d, "steps_per_swing")));
+                ss_predicted(ans, &pev[p], &pcpu[p]);
+                const double per = m && !strcmp(m, "rattle") ? 1 : 3;
+                nev[p] = json_number_value(json_object_get(d, "force_evaluations")) +
+                         json_number_value(at(ans, "diagnostics/error_estimate/steps")) * per + 1;
+                err[p] = fmax(fabs(json_number_value(at(ans, "swing/period")) - P0) / P0,
+                              fabs(json_number_value(at(ans, "precession/measured_rate")) - R0) /
+                                  W);
+            }
+            json_decref(ans);
+        }
+    double med[4];
+    for (int p = 0; p < 4; p++) {
+        qsort(cpu[p], SS_ROUNDS, sizeof cpu[p][0], ss_cmp_double);
+        med[p] = cpu[p][SS_ROUNDS / 2];
+        printf("%-34s %-9s %7.0e %-26s %10.2e %-9s %9.5f %10.0f/%-10.0f %8.2f\n",
+               "Foucault 100 swings", presets[p], promise[p], how[p], err[p],
+               err[p] <= promise[p] ? "yes" : "NO", med[p], pev[p], nev[p],
+               pcpu[p] > 0 ? med[p] / pcpu[p] : 0.0);
+    }
+    *md = med[3] / med[0];
+    *mb = med[3] / med[1];
+    printf("%-34s machine/draft %.2fx  machine/balanced %.2fx  (reference: rattle_yoshida4 at "
+           "12800 steps per swing)\n", "Foucault 100 swings", *md, *mb);
+    return 1;
+}
+
 static void scene_set_section(const char *bench_dir)
 {
     static const char *const presets[] = {"draft", "balanced", "precise", "machine"};
@@ -1183,13 +1317,17 @@ static void scene_set_section(const char *bench_dir)
                "scripts/install-deps.sh --bench)\n");
     printf("# kept?: yes, re-stated (beyond the promise but within the figure the answer's "
            "selection re-states for round-off), NO\n");
-    printf("%-34s %-9s %7s %-26s %10s %-9s %9s\n", "scene", "preset", "promise", "method (settings)",
-           "error", "kept?", "cpu_s");
+    printf("# evals: the chosen candidate's predicted_evaluations / the answer's count; "
+           "cpu/pred: the measured CPU of the whole request over the chosen candidate's "
+           "predicted_cpu_s (the model predicts the integration only)\n");
+    printf("%-34s %-9s %7s %-26s %10s %-9s %9s %21s %8s\n", "scene", "preset", "promise",
+           "method (settings)", "error", "kept?", "cpu_s", "evals pred/count", "cpu/pred");
     double log_md = 0, log_mb = 0;
     int n_md = 0;
     for (size_t s = 0; s < N_SCENES; s++) {
         const struct scene_def *sc = &SCENES[s];
         double cpu[4][SS_ROUNDS], err[4] = {0}, restated[4] = {0};
+        double pev[4] = {0}, pcpu[4] = {0}, nev[4] = {0};
         char how[4][64] = {{0}};
         const char *evidence = "exact";
         json_t *ref = NULL;
@@ -1213,6 +1351,8 @@ static void scene_set_section(const char *bench_dir)
                 if (r == 0) {
                     const json_t *d = json_object_get(ans, "diagnostics");
                     const char *m = json_string_value(json_object_get(d, "method"));
+                    ss_predicted(ans, &pev[p], &pcpu[p]);
+                    nev[p] = json_number_value(json_object_get(d, "rhs_evaluations"));
                     const json_t *rt = json_object_get(d, "rtol"), *dt = json_object_get(d, "dt");
                     if (rt)
                         snprintf(how[p], sizeof how[p], "%s (rtol %.1e)", m ? m : "?",
@@ -1251,11 +1391,12 @@ static void scene_set_section(const char *bench_dir)
         for (int p = 0; p < 4; p++) {
             qsort(cpu[p], SS_ROUNDS, sizeof cpu[p][0], ss_cmp_double);
             med[p] = cpu[p][SS_ROUNDS / 2];
-            printf("%-34s %-9s %7.0e %-26s %10.2e %-9s %9.5f\n", sc->name, presets[p], promise[p],
-                   how[p], err[p],
+            printf("%-34s %-9s %7.0e %-26s %10.2e %-9s %9.5f %10.0f/%-10.0f %8.2f\n", sc->name,
+                   presets[p], promise[p], how[p], err[p],
                    err[p] <= promise[p] ? "yes" : err[p] <= restated[p] ? "re-stated" : "NO",
-                   med[p]);
+                   med[p], pev[p], nev[p], pcpu[p] > 0 ? med[p] / pcpu[p] : 0.0);
         }
+        if (sc->ref != REF_RUN) ss_closed_form_row(sc);
         const double md = med[3] / med[0], mb = med[3] / med[1];
         log_md += log(md), log_mb += log(mb), n_md++;
         printf("%-34s machine/draft %.2fx  machine/balanced %.2fx  (reference: %s)\n", sc->name, md,
@@ -1286,6 +1427,10 @@ static void scene_set_section(const char *bench_dir)
         }
         json_decref(ref);
         fflush(stdout);
+    }
+    double fmd, fmb;
+    if (foucault_rows(&fmd, &fmb)) {
+        log_md += log(fmd), log_mb += log(fmb), n_md++;
     }
     if (n_md)
         printf("geometric mean over %d scenes: machine/draft %.2fx (issue: >= 10), "

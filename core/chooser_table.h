@@ -95,8 +95,9 @@ static const struct chooser_row chooser_table[] = {
     {"general", "msbdf", 2.25, 0.855, 1.003, 7.76, 0.107, 146, 1.5e-07, 1e-16, 1.097, 1e-16},
     {"general", "gauss6", 7.07e-06, 6.009, 1.095, 60.1, 0.762, 33.2, 3.48e-08, 1e-16, 1.097, 1e-16},
     {"general", "yoshida6", 0.00264, 6.000, 1.095, 7.03, 0.999, 9, 5.46e-08, 1e-16, 1.097, 1e-16},
-    /* wisdom_holman: PLACEHOLDER, not measured (the method is H13's; used
-     * only when the registry has it): a second-order map, error ~ (h/T)^2
-     * span, conservative constants (10x yoshida6's error constant). */
+    /* wisdom_holman: only the floor columns (F, g, Fm) are used: its error
+     * and cost come from the measured law with the scene's perturbation,
+     * core/chooser.c predict_wisdom_holman (A(e) eps (h/P)^2 orbits,
+     * bench/bench_wisdom_holman; 4.1e-7 s a step). */
     {"central_gravity", "wisdom_holman", 0.4, 2.0, 1.0, 2.0, 1.0, 2, 6e-08, 2.5e-16, 1.500, 2.5e-16},
 };

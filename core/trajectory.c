@@ -9,6 +9,7 @@
  */
 #include "mech/trajectory.h"
 #include "mech/chooser.h"
+#include "mech/chooser_orbit.h"
 #include "mech/reference.h"
 
 #include <math.h>
@@ -1520,6 +1521,7 @@ static void traj_profile(const struct mech_trajectory_problem *p, struct traj_ct
     s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;
+    mech_chooser_profile_orbit(s, p); /* core/chooser_orbit.c */
 }
 
 enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p, double target,

@@ -601,7 +601,7 @@ class _Operations:
             momentum: momentum |p| >= 0, in energy_unit/c
             kinetic_energy: kinetic energy T = E - m c^2 >= 0, in energy_unit
             proper_lifetime: mean lifetime tau in the rest frame, s (> 0): adds lifetime {proper, c_tau,
-                    lab, decay_length}
+                    lab, lab_c_tau, decay_length}
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
@@ -893,6 +893,35 @@ class _Operations:
         """
         return self._operation('/v1/relativity/kinematics/compton', body, (('energy_unit', energy_unit), ('energy', energy), ('wavelength', wavelength), ('angle', angle), ('angle_deg', angle_deg), ('target', target), ('cost', cost)))
 
+    def relativity_kinematics_elastic(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, projectile: Optional[Dict[str, Any]] = None, target: Optional[Any] = None, cm_angle: Optional[float] = None, cm_angle_deg: Optional[float] = None, angle: Optional[float] = None, angle_deg: Optional[float] = None, recoil_angle: Optional[float] = None, recoil_angle_deg: Optional[float] = None, branch: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Relativistic elastic scattering at a given CM, lab or recoil angle: lab energies, momenta and angles of both particles, the recoil, the CM frame, s, t, u
+
+        POST /v1/relativity/kinematics/elastic. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            energy_unit: unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1; default
+                    "MeV"
+            projectile (required): the incoming particle and its lab motion along +z: exactly one of
+                    energy, kinetic_energy, momentum, velocity
+            target (required): the target, at rest in the lab (mass > 0): a particle name (as
+                    /v1/relativity/particles lists them) or a mass >= 0 in energy_unit/c^2
+            cm_angle: the projectile's scattering angle theta* in the CM frame (radians)
+            cm_angle_deg: the projectile's scattering angle theta* in the CM frame (degrees)
+            angle: the projectile's scattering angle in the lab (radians)
+            angle_deg: the projectile's scattering angle in the lab (degrees)
+            recoil_angle: the recoil's lab angle to the beam, below pi/2 (radians)
+            recoil_angle_deg: the recoil's lab angle to the beam, below 90 (degrees)
+            branch: which of two CM solutions a lab angle has (a projectile heavier than the target): 0
+                    the smaller theta* (the faster projectile), 1 the larger; default 0
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/kinematics/elastic', body, (('energy_unit', energy_unit), ('projectile', projectile), ('target', target), ('cm_angle', cm_angle), ('cm_angle_deg', cm_angle_deg), ('angle', angle), ('angle_deg', angle_deg), ('recoil_angle', recoil_angle), ('recoil_angle_deg', recoil_angle_deg), ('branch', branch), ('cost', cost)))
+
     def relativity_kinematics_collision(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, beam: Optional[Dict[str, Any]] = None, target: Optional[Dict[str, Any]] = None, crossing_angle: Optional[float] = None, crossing_angle_deg: Optional[float] = None, sqrt_s: Optional[float] = None, final_state: Optional[List[Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """sqrt(s) of fixed-target and colliding beams, the beam energy for a given sqrt(s), production thresholds
 
@@ -1118,6 +1147,26 @@ class _Operations:
         """
         return self._operation('/v1/hamiltonian/rotating-frame', body, (('mass', mass), ('omega', omega), ('position', position), ('velocity', velocity), ('potential_energy', potential_energy), ('cost', cost)))
 
+    def hamiltonian_circular_orbit(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, angular_momentum: Optional[float] = None, terms: Optional[List[Dict[str, Any]]] = None, gm: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """The circular orbits of a given angular momentum in a central potential: radius, energy, angular and radial frequencies, periods, apsidal angle, stability
+
+        POST /v1/hamiltonian/circular-orbit. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): kg, the orbiting particle (the reduced mass for two bodies)
+            angular_momentum (required): kg m^2/s, L = m r^2 phi_dot
+            terms: V(r) = sum of the terms (Kepler: n = -1, k = -G M m; isotropic oscillator: n = 2, k =
+                    m w^2/2)
+            gm: m^3/s^2: adds the Kepler term V = -gm m/r (G M of the centre)
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/hamiltonian/circular-orbit', body, (('mass', mass), ('angular_momentum', angular_momentum), ('terms', terms), ('gm', gm), ('cost', cost)))
+
     def continuum_string(self, body: Optional[Dict[str, Any]] = None, *, tension: Optional[float] = None, linear_density: Optional[float] = None, mass: Optional[float] = None, length: Optional[float] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Continuum mechanics: transverse waves on a string with fixed ends — wave speed and normal modes
 
@@ -1138,8 +1187,8 @@ class _Operations:
         """
         return self._operation('/v1/continuum/string', body, (('tension', tension), ('linear_density', linear_density), ('mass', mass), ('length', length), ('modes', modes), ('cost', cost)))
 
-    def continuum_rod(self, body: Optional[Dict[str, Any]] = None, *, length: Optional[float] = None, density: Optional[float] = None, youngs_modulus: Optional[float] = None, section: Optional[Any] = None, ends: Optional[str] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
-        """Continuum mechanics: axial and bending waves of a rod — speeds, the dispersion of bending waves and the normal modes free, clamped, cantilevered or pinned
+    def continuum_rod(self, body: Optional[Dict[str, Any]] = None, *, length: Optional[float] = None, density: Optional[float] = None, youngs_modulus: Optional[float] = None, section: Optional[Any] = None, ends: Optional[str] = None, shear_modulus: Optional[float] = None, poisson_ratio: Optional[float] = None, modes: Optional[int] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Continuum mechanics: axial, torsional and bending waves of a rod — speeds, the dispersion of bending waves and the normal modes free, clamped, cantilevered or pinned
 
         POST /v1/continuum/rod. The request is `body` (a dict) and/or the keyword arguments below
         (merged; a keyword that is not None wins). Returns the answer as a dict; raises
@@ -1153,12 +1202,14 @@ class _Operations:
             section (required): the cross-section: a solid circle, a rectangle (bending across its
                     height), or its area and second moment of area
             ends: end conditions (clamped-free: a cantilever); default "clamped-free"
+            shear_modulus: shear modulus G, Pa (torsional waves; or give poisson_ratio)
+            poisson_ratio: Poisson's ratio nu: G = E/(2(1 + nu)) for the torsional waves
             modes: how many modes to list, 1 .. 1000 (the lowest ones); default 5
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('modes', modes), ('cost', cost)))
+        return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('shear_modulus', shear_modulus), ('poisson_ratio', poisson_ratio), ('modes', modes), ('cost', cost)))
 
     def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
@@ -1310,7 +1361,7 @@ class _Operations:
         """
         return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
 
-    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
 
         POST /v1/scenes/falling-object. The request is `body` (a dict) and/or the keyword arguments below
@@ -1323,6 +1374,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1333,9 +1387,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical
 
         POST /v1/scenes/vertical-shot. The request is `body` (a dict) and/or the keyword arguments below
@@ -1349,6 +1403,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1359,9 +1416,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change
 
         POST /v1/scenes/cannonball. The request is `body` (a dict) and/or the keyword arguments below
@@ -1377,6 +1434,9 @@ class _Operations:
             latitude_deg (required): geographic latitude, degrees (north > 0)
             g: local effective g, m/s^2 (its centrifugal part included, notes §1.3); default 9.80665
             omega_magnitude: Earth rotation rate, rad/s (IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1387,9 +1447,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, accuracy: Optional[str] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
 
         POST /v1/scenes/foucault. The request is `body` (a dict) and/or the keyword arguments below
@@ -1403,6 +1463,9 @@ class _Operations:
             g: local effective gravity, m/s^2 (includes the centrifugal acceleration of the origin, as
                     in the notes); default 9.80665
             omega_magnitude: Earth's rotation rate W, rad/s (default IERS 2010); default 7.292115e-05
+            sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
+                    default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
+                    not both
             mass: bob mass, kg (scales the energy only; Foucault's bob: 28 kg); default 28
             release: default: from rest at 3 degrees, towards the east
             swings: length of the run in swings (full periods of the planar pendulum at this amplitude);
@@ -1410,19 +1473,29 @@ class _Operations:
             precessions: length of the run in full turns of the swing plane, 2 pi / (W |sin lat|)
             duration: length of the run, s
             integrator: constrained symplectic methods: rattle (order 2) or its Yoshida triple jump
-                    (order 4)
+                    (order 4); given (method or steps_per_swing), used as given (200 steps per swing by
+                    default); absent, the predictive chooser picks both for accuracy or target_error
+                    (diagnostics.selection)
+            accuracy: preset: relative error 1e-3, 1e-8, 1e-10, 1e-11 of the swing period and of the
+                    precession rate (relative to W); the chooser picks the method and steps per swing
+                    predicted cheapest to meet it (not with target_error, nor with integrator.method /
+                    steps_per_swing)
             fictitious: "auto" (default) or the list of terms to model; coriolis is the effect and must
                     be in it
-            target_error: relative accuracy wanted of the precession rate (relative to W) and the
-                    period; fictitious auto leaves out a term whose estimated effect is below target/10;
-                    default 1e-06
+            target_error: relative accuracy wanted of the precession rate (relative to W) and the period
+                    (or the accuracy preset's): without integrator.method / steps_per_swing the chooser
+                    picks the cheapest method and steps per swing predicted to meet it; fictitious auto
+                    leaves out a term whose estimated effect is below target/10; default 1e-06
             error_estimate: run again with half the steps per swing and report the Richardson estimate
                     of the error; default true
+            dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
+                    error, evaluations and CPU seconds from the calibrated model) without integrating:
+                    no samples, no pilot run; default false
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('cost', cost)))
+        return self._operation('/v1/scenes/foucault', body, (('latitude_deg', latitude_deg), ('length', length), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('mass', mass), ('release', release), ('swings', swings), ('precessions', precessions), ('duration', duration), ('integrator', integrator), ('accuracy', accuracy), ('fictitious', fictitious), ('target_error', target_error), ('error_estimate', error_estimate), ('dry_run', dry_run), ('cost', cost)))
 
     def scenes_rotating_table(self, body: Optional[Dict[str, Any]] = None, *, experiment: Optional[str] = None, omega: Optional[float] = None, radius: Optional[float] = None, mass: Optional[float] = None, position: Optional[List[float]] = None, velocity: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The notes' rotating-table puck experiments seen from the inertial and the rotating frame
@@ -1484,6 +1557,7 @@ OPERATIONS = {
     'relativity_kinematics_invariant_mass': '/v1/relativity/kinematics/invariant-mass',
     'relativity_kinematics_decay': '/v1/relativity/kinematics/decay',
     'relativity_kinematics_compton': '/v1/relativity/kinematics/compton',
+    'relativity_kinematics_elastic': '/v1/relativity/kinematics/elastic',
     'relativity_kinematics_collision': '/v1/relativity/kinematics/collision',
     'gr_schwarzschild': '/v1/gr/schwarzschild',
     'gr_geodesic': '/v1/gr/geodesic',
@@ -1492,6 +1566,7 @@ OPERATIONS = {
     'hamiltonian_poincare': '/v1/hamiltonian/poincare',
     'hamiltonian_phase_area': '/v1/hamiltonian/phase-area',
     'hamiltonian_rotating_frame': '/v1/hamiltonian/rotating-frame',
+    'hamiltonian_circular_orbit': '/v1/hamiltonian/circular-orbit',
     'continuum_string': '/v1/continuum/string',
     'continuum_rod': '/v1/continuum/rod',
     'trajectory': '/v1/trajectory',

@@ -141,9 +141,15 @@ export function curlCommand(path, body) {
     : `curl -s${auth} --json ${q(toJSON(body))} ${q(location.origin + path)}`;
 }
 
-// The request as a call of the Python client (clients/python/mechd.py): its
-// generic form client.call(path, body), which every operation takes (the
-// client on main has no per-operation methods with named parameters yet).
+// The request as a call of the Python client (clients/python/mechd.py): the
+// method generated for the operation (/v1/rigid/inertia -> m.rigid_inertia,
+// its fields as keyword arguments), Client.batch for /v1/batch (each answer, or
+// the error of that item), Client.call for a GET. The client reads the token
+// from $MECHD_TOKEN: with a token in use the line says so, never the token.
+const PY_KEYWORDS = new Set(['False', 'None', 'True', 'and', 'as', 'assert', 'async', 'await', 'break', 'class', 'continue',
+  'def', 'del', 'elif', 'else', 'except', 'finally', 'for', 'from', 'global', 'if', 'import', 'in', 'is', 'lambda',
+  'nonlocal', 'not', 'or', 'pass', 'raise', 'return', 'try', 'while', 'with', 'yield', 'body']);
+export const pyMethod = (path) => path.replace(/^\/v1\//, '').replace(/[/-]/g, '_'); // mechd.py method_name()
 export function pythonCommand(path, body) {
   const py = (v, ind) => {
     if (v === null || v === undefined) return 'None';
@@ -160,11 +166,20 @@ export function pythonCommand(path, body) {
     const flat = '{' + items.join(', ') + '}';
     return flat.length <= 72 ? flat : '{\n' + items.map(x => pad + x).join(',\n') + ',\n' + ind + '}';
   };
-  return 'from mechd import Client  # clients/python/mechd.py\n' +
-    `client = Client(${JSON.stringify(location.origin)})` +
-    (getToken() ? '  # this server wants a token: the client on main cannot send one yet; use the curl line' : '') + '\n' +
-    (body === undefined ? `answer = client.call(${JSON.stringify(path)})\n`
-      : `answer = client.call(${JSON.stringify(path)}, ${py(JSON.parse(toJSON(body)), '')})\n`);
+  const head = 'import mechd  # clients/python/mechd.py (pip install ./clients/python)\n' +
+    `m = mechd.Client(${JSON.stringify(location.origin)})` +
+    (getToken() ? '  # this server wants a token: export MECHD_TOKEN=… first (the client reads it)' : '') + '\n';
+  if (body === undefined) return head + `answer = m.call(${JSON.stringify(path)})\n`;
+  const b = JSON.parse(toJSON(body));
+  if (path === '/v1/batch' && b && Array.isArray(b.operations) && Object.keys(b).every(k => k === 'operations'))
+    return head + '# each answer, or the mechd error of that item\nanswers = m.batch([\n' +
+      b.operations.map(o => `    (${JSON.stringify(o.operation)}, ${py(o.request, '    ')}),\n`).join('') + '])\n';
+  const keys = Object.keys(b || {});
+  const named = keys.length > 0 && keys.every(k => /^[A-Za-z_][A-Za-z0-9_]*$/.test(k) && !PY_KEYWORDS.has(k));
+  if (!named) return head + `answer = m.${pyMethod(path)}(${py(b, '')})\n`;
+  const args = keys.map(k => `${k}=${py(b[k], '    ')}`);
+  const flat = `answer = m.${pyMethod(path)}(${args.join(', ')})\n`;
+  return head + (flat.length <= 80 ? flat : `answer = m.${pyMethod(path)}(\n${args.map(a => '    ' + a + ',\n').join('')})\n`);
 }
 
 // A copy button for the text of pre (falls back to selecting it).
@@ -733,4 +748,76 @@ export function costPreview(form, path, build, {id = 'cost' + (++uid), value = '
     sayTook();
   };
   return {wrap, select: sel, out, withAccuracy, after, predict};
+}
+
+// --- "What the notes say": the course notes' formula beside the API's answer ---
+// A quantity in words a student reads: the unit's SI prefix chosen so the
+// number is between 1 and 1000 (0.3 mm, 12 µs), two significant figures.
+const PREFIXED = new Set(['m', 's', 'N', 'J', 'eV', 'Hz']);
+const PREFIX = [[1e9, 'G'], [1e6, 'M'], [1e3, 'k'], [1, ''], [1e-3, 'm'], [1e-6, 'µ'], [1e-9, 'n'], [1e-12, 'p'], [1e-15, 'f']];
+export function amount(x, unit = '') {
+  if (typeof x !== 'number' || !Number.isFinite(x)) return '—';
+  const a = Math.abs(x);
+  if (a === 0) return '0' + (unit ? ' ' + unit : '');
+  if (PREFIXED.has(unit) && a >= 1e-15 && a < (unit === 'm' ? 1e6 : 1e12)) {
+    const [k, p] = PREFIX.find(([k]) => a >= k * 0.9995) || PREFIX[PREFIX.length - 1];
+    return `${fmt(x / k, 2)} ${p}${unit}`;
+  }
+  return sci(x) + (unit ? ' ' + unit : '');
+}
+// A relative difference in words: "0.02 %", or "3 parts in 10¹³" when smaller than 10⁻⁶.
+export function relWords(r) {
+  if (typeof r !== 'number' || !Number.isFinite(r)) return '—';
+  if (r === 0) return '0 %';
+  if (r >= 1e-6) return `${fmt(r * 100, 2)} %`;
+  const e = Math.floor(Math.log10(r)), m = Math.round(r / 10 ** e);
+  return m >= 10 ? `1 part in ${pow10(-e - 1)}` : `${m} part${m === 1 ? '' : 's'} in ${pow10(-e)}`;
+}
+
+// notesBox(id) -> {box, update(spec)}: the lab's "What the notes say" section.
+// spec: {section: '1.4' (the notes' section number as their text carries it),
+//   heading (the title under it), inferred (the number is not in the extracted
+//   text: taken from the contents' order, said so), formula (nodes: the
+//   formula rebuilt from its derivation, Unicode/HTML), what ('the first-order
+//   formula'), formulaValue, apiValue (numbers) or formulaShown/apiShown (text,
+//   for vectors and matrices) with abs and rel given, unit, diff (the API's own
+//   formula − full difference when it reports one, kept to its digits),
+//   source: 'api' (the formula's value is the API's) or 'page' (computed here
+//   from the inputs), sourceText (says it otherwise), diffUnit and diffScale (the
+//   difference said in that unit: 'eV' and 1e6 for values in MeV), how (one line: what is compared), note (more words)}.
+// The box carries data-abs and data-rel (finite numbers) for tests.
+export function notesBox(id) {
+  const box = el('section', {class: 'teach', 'data-role': 'teach', id, 'aria-label': 'What the notes say'});
+  const update = (s) => {
+    let abs = s.abs, rel = s.rel;
+    if (typeof s.formulaValue === 'number' && typeof s.apiValue === 'number') {
+      const d = typeof s.diff === 'number' ? s.diff : s.formulaValue - s.apiValue;
+      abs = Math.abs(d);
+      // relative to the full answer (to the larger of the two when the full answer is 0)
+      const ref = Math.abs(s.apiValue) || Math.abs(s.formulaValue);
+      rel = abs === 0 ? 0 : abs / ref;
+      s = {...s, sign: d};
+    }
+    const ok = Number.isFinite(abs) && Number.isFinite(rel);
+    const what = s.what || 'the notes\' formula';
+    const k = s.diffScale || 1, u = s.diffUnit || s.unit; // the difference said in another unit (pm as m, MeV as eV)
+    const words = !ok ? 'cannot be compared here (the API gave no finite number)'
+      : abs === 0 ? `${what} and the full answer agree to every digit: the difference is 0`
+      : rel < 1e-12 ? `they agree to round-off: ${amount(abs * k, u)}, ${relWords(rel)}`
+      : `${what} is ${typeof s.sign === 'number' ? (s.sign > 0 ? 'high' : 'low') + ' by' : 'off by'} ${amount(abs * k, u)}, ${relWords(rel)}`;
+    const shown = (x, t) => t !== undefined ? t : fmt(x) + (s.unit && typeof x === 'number' ? ' ' + s.unit : '');
+    put(box, el('h3', {}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
+      s.inferred ? el('p', {class: 'muted'}, `(The number §${s.section} is read from the notes' contents: the extracted text lost it.)`) : null,
+      el('div', {class: 'formula', 'data-role': 'formula'}, s.formula),
+      s.how ? el('p', {class: 'muted'}, s.how) : null,
+      el('dl', {class: 'nums'},
+        el('dt', {}, 'the formula gives'), el('dd', {'data-role': 'formula-value', 'data-value': String(s.formulaValue)},
+          shown(s.formulaValue, s.formulaShown), el('span', {class: 'muted'}, ' (' + (s.sourceText || (s.source === 'api' ? 'the API\'s first-order value'
+            : 'computed in this page from your inputs')) + ')')),
+        el('dt', {}, 'the full answer (API)'), el('dd', {'data-role': 'api-value', 'data-value': String(s.apiValue)}, shown(s.apiValue, s.apiShown)),
+        el('dt', {}, 'difference'), el('dd', {'data-role': 'diff', 'data-abs': String(abs), 'data-rel': String(rel)}, words)),
+      s.note ? el('p', {class: 'muted'}, s.note) : null);
+    box.dataset.abs = String(abs); box.dataset.rel = String(rel); box.dataset.section = s.section;
+  };
+  return {box, update};
 }

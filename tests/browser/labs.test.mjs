@@ -314,12 +314,155 @@ async function everyExample(id) {
   }
 }
 
-for (const id of LABS) await lab(id, async () => {
+
+// --- each lab teaches (issue 19): the notes' formula, its section, its value beside the API's, the
+// difference in words; "Copy as curl" and "Copy as Python" put the request on the clipboard; changing an
+// input changes the answer; at desktop and at phone size (where every worked example is loaded again) ----
+// For each lab: an input, a new value for it, the button that runs it, and a number the answer shows.
+const CHANGE = {
+  rotations: ['#rot-phi', '61', '#rot-submit', '#rot-matrix-00'], table: ['#table-omega', '2.3', '#table-submit', '#table-total'],
+  inertia: ['#inertia-mass-0', '2.7', '#inertia-submit', '#inertia-moment-0'], tops: ['#top-psidot', '83', '#top-submit', '#top-prec'],
+  earth: ['#fall-height', '217', '#fall-submit', '#fall-east'], tides: ['#tides-point', '33', '#tides-submit', '#tides-moon-radial'],
+  orbits: ['#orb-e', '0.31', '#orb-submit', '#orb-measured'], phase: ['#ph-b', '0.27', '#ph-submit', '#ph-area0'],
+  spacetime: ['#st-beta', '0.77', '#st-submit', '#st-gamma'], particles: ['#dk-T', '123', '#dk-submit', '#dk-gamma'],
+  accuracy: ['#acc-v', '1.13', '#acc-submit', '#acc-table'],
+};
+await page.context().grantPermissions(['clipboard-read', 'clipboard-write'], {origin});
+// What every "What the notes say" box on the page shows: its formula, section and difference.
+const teachBoxes = () => page.$$eval('[data-role=teach]', (bs) => bs.filter(b => b.querySelector('h3')).map(b => ({
+  id: b.id, formula: (b.querySelector('[data-role=formula]') || {}).innerText || '',
+  section: (b.querySelector('[data-role=section]') || {}).textContent || '',
+  abs: Number(b.dataset.abs), rel: Number(b.dataset.rel),
+  words: (b.querySelector('[data-role=diff]') || {}).innerText || '',
+  shown: !!b.getClientRects().length,
+})));
+async function teaches(where, id) {
+  const boxes = await teachBoxes();
+  check(boxes.length >= 1, `${where} ${id}: a "What the notes say" section (${boxes.length})`);
+  for (const b of boxes) {
+    check(b.shown && b.formula.trim().length > 5, `${where} ${id}: #${b.id} shows a formula ("${b.formula.slice(0, 60)}")`);
+    check(/^§\d+(\.\d+)?$/.test(b.section.trim()), `${where} ${id}: #${b.id} names the notes' section ("${b.section}")`);
+    check(Number.isFinite(b.abs) && b.abs >= 0 && Number.isFinite(b.rel) && b.rel >= 0 && /\d/.test(b.words),
+      `${where} ${id}: #${b.id} gives the difference as a finite number (abs ${b.abs}, rel ${b.rel}: "${b.words}")`);
+  }
+}
+// The copy buttons of the lab's first request box: the clipboard then holds the text shown (or, where
+// the clipboard is refused, the text is selected for Ctrl+C and the button says so).
+async function copies(where, id) {
+  const curlBox = page.locator('main section.curl').first();
+  await curlBox.scrollIntoViewIfNeeded();
+  for (const kind of ['curl', 'python']) {
+    if (kind === 'python') await curlBox.locator('details.python > summary').click();
+    const pre = curlBox.locator(kind === 'curl' ? 'pre[aria-label="curl command"]' : 'pre[data-role=python]');
+    const want = await pre.textContent();
+    await page.evaluate(() => navigator.clipboard.writeText('').catch(() => {}));
+    await curlBox.locator(`button[data-copy=${kind}]`).click();
+    await page.waitForFunction((k) => /Copied|Selected/.test(document.querySelector(`main section.curl button[data-copy=${k}]`).textContent),
+      kind, {timeout: 5000}).catch(() => {});
+    const said = await curlBox.locator(`button[data-copy=${kind}]`).textContent();
+    // the clipboard, or (the clipboard refused) the selection the button made for Ctrl+C
+    const clip = await page.evaluate(() => navigator.clipboard.readText()).catch(() => null);
+    const got = clip === want ? clip : await page.evaluate(() => String(getSelection()));
+    // the operation, from the curl line (its URL's path); the Python calls its method (or Client.batch)
+    const curlText = await curlBox.locator('pre[aria-label="curl command"]').textContent();
+    const path0 = (curlText.match(/'https?:\/\/[^/']+(\/v1\/[a-z/-]+)'$/) || [])[1] || '';
+    const call = (want.match(/^answers? = m\.([a-z_]+)\(/m) || [])[1];
+    check(got === want && path0 !== '' && (kind === 'curl' ? /^curl -s .*--json '\{/.test(want)
+      : call === (path0 === '/v1/batch' ? 'batch' : path0.slice(4).replace(/[/-]/g, '_'))),
+      `${where} ${id}: Copy as ${kind} puts the request (${path0}) on the clipboard ("${said}"; ${got.length} of ${want.length} characters)`);
+    // at desktop size the copied Python runs, with the real client, against this server
+    if (kind === 'python' && where === 'desktop') {
+      let out = '';
+      try {
+        out = execFileSync('/usr/bin/python3', ['-c', got + '\nimport json\nr = answers if "answers" in dir() else answer\n' +
+          'print(json.dumps(isinstance(r, dict) or (isinstance(r, list) and all(isinstance(a, dict) for a in r))))'],
+          {env: {...process.env, PYTHONPATH: path.resolve(webRoot, '..', 'python')}, encoding: 'utf8', timeout: 60000}).trim();
+      } catch (e) { out = String(e.stderr || e).trim().split('\n').slice(-1)[0]; }
+      check(out === 'true', `${where} ${id}: the copied Python runs with clients/python/mechd.py and gets its answer (${out.slice(0, 160)})`);
+    }
+  }
+  await curlBox.locator('details.python > summary').click(); // folded again
+}
+// Change one input, run, and the number shown changes.
+async function changes(where, id) {
+  const [input, v, submit, out] = CHANGE[id];
+  const before = (await page.textContent(out)).trim();
+  const isRange = await page.$eval(input, (e) => e.type === 'range');
+  if (isRange) await page.$eval(input, (e, x) => { e.value = x; e.dispatchEvent(new Event('input', {bubbles: true})); }, v);
+  else await page.fill(input, v);
+  await page.evaluate((s) => { delete document.querySelector(s).closest('form').dataset.state; }, submit);
+  await page.click(submit);
+  await page.waitForFunction((s) => document.querySelector(s).closest('form').dataset.state === 'done', submit, {timeout: 30000}).catch(() => {});
+  const after = (await page.textContent(out)).trim();
+  check(after !== before && !/NaN|undefined|null/.test(after), `${where} ${id}: ${input} = ${v} changes ${out} ("${before.slice(0, 40)}" → "${after.slice(0, 40)}")`);
+}
+// the teaching sections against closed forms: the value each shows for the notes' formula is the formula's,
+// and the difference it states is the one between the two numbers it shows
+await lab('earth', async () => {
   await settled();
-  const bad = await blemishes();
-  check(bad.length === 0, `${id}: the default page is clean (${bad.join(' | ')})`);
-  await everyExample(id);
-}, `examples-${id}`);
+  const w = 7.292115e-5, g = 9.80665, D = Math.PI / 180;
+  const box = async (id) => page.$eval(id, (b) => ({f: Number(b.querySelector('[data-role=formula-value]').dataset.value),
+    a: Number(b.querySelector('[data-role=api-value]').dataset.value), abs: Number(b.dataset.abs), rel: Number(b.dataset.rel),
+    words: b.querySelector('[data-role=diff]').textContent, section: b.dataset.section}));
+  const fall = await box('#fall-notes');
+  // notes §1.4: x_east = (1/3) ω cos λ √(8h³/g) = 1.862 cm for 100 m at 32° ("about 1.9 cm")
+  close(fall.f, w * Math.cos(32 * D) / 3 * Math.sqrt(8 * 100 ** 3 / g), 1e-12, 'teach: the falling object\'s formula value is (1/3) ω cos λ √(8h³/g)');
+  close(fall.abs, Math.abs(fall.a - fall.f), 1e-6, 'teach: the falling object\'s stated difference is numerical − first order');
+  close(fall.rel, fall.abs / Math.abs(fall.a), 1e-12, 'teach: its relative difference is |difference| / numerical');
+  check(fall.section === '1.4' && /pm, \d parts? in 10⁸/.test(fall.words),
+    `teach: the falling object cites §1.4 (the notes' text) and says the difference in pm and parts in 10⁸ ("${fall.words}", §${fall.section})`);
+  const fou = await box('#fou-notes');
+  // notes §1.4: the plane turns at ω_z = ω sin λ, clockwise in the north: −11.3 °/h at 48.846° N
+  close(fou.f, -w * Math.sin(48.846 * D) / D * 3600, 1e-9, 'teach: the Foucault formula value is −ω sin λ in °/h');
+  check(fou.abs > 0 && fou.rel < 0.01, `teach: the measured Foucault rate is within 1 % of ω sin λ (rel ${fou.rel})`);
+}, 'teach-earth');
+await lab('spacetime', async () => {
+  await settled();
+  const f = Number(await page.getAttribute('#tw-notes [data-role=formula-value]', 'data-value'));
+  close(f, 12, 1e-12, 'teach: the twins\' τ = t/γ summed over the legs is 12 yr (8 ly at β = 0.8 and back)');
+  check(await page.getAttribute('#tw-notes', 'data-section') === '3.15', 'teach: the twins cite §3.15 (from the contents)');
+  check(/lost it/.test(await page.textContent('#tw-notes')), 'teach: and say that number is not in the extracted text');
+  check(Number(await page.getAttribute('#st-notes', 'data-abs')) < 1e-14, 'teach: the boost formula agrees with the API to round-off');
+  // near the cancellation: β = 1 − 10⁻¹⁰ and an event on the light cone, ct′ = x′ = γ(1 − β) = √((1 − β)/(1 + β)) = 7.07·10⁻⁶,
+  // beside an event off it (2, 1) whose ct′ is 7·10⁴: the page's formula takes 1 − β² as (1 − β)(1 + β) and keeps the digits
+  const b = 0.9999999999;
+  await page.fill('#st-events', '1, 1; 2, 1'); await page.fill('#st-beta', String(b));
+  await page.evaluate(() => { delete document.querySelector('#st-submit').closest('form').dataset.state; });
+  await page.click('#st-submit');
+  await page.waitForFunction(() => document.querySelector('#st-submit').closest('form').dataset.state === 'done', null, {timeout: 20000});
+  const want = Math.sqrt((1 - b) / (1 + b)), gam = 1 / Math.sqrt((1 - b) * (1 + b));
+  close(await value('#st-ctp-0'), want, 1e-12, 'teach: on the light cone at β = 1 − 10⁻¹⁰ the API\'s ct′ is √((1 − β)/(1 + β))');
+  close(await value('#st-ctp-1'), gam * (2 - b), 1e-12, 'teach: and off it ct′ = γ(2 − β)');
+  const near = await page.$eval('#st-notes [data-role=formula-value]', (d) => d.textContent);
+  check(/ct′ = 7\.071068e-6, x′ = 7\.071068e-6/.test(near), `teach: the page's formula gives the light-cone event's 7.071068·10⁻⁶ too ("${near}")`);
+  check(Number(await page.getAttribute('#st-notes', 'data-rel')) < 1e-14, 'teach: and agrees with the API to round-off at β = 1 − 10⁻¹⁰');
+}, 'teach-spacetime');
+await lab('accuracy', async () => {
+  await settled();
+  // H = v²/2 − GM/r = 0.72 − 1 = −0.28 for the Kepler scene (m = 1, GM = 1, r = 1, v = 1.2)
+  check(/H = −?-?0\.28\b/.test(await page.textContent('#acc-notes [data-role=formula-value]')), 'teach: the Kepler scene\'s energy is −0.28');
+  const rel = Number(await page.getAttribute('#acc-notes', 'data-rel'));
+  check(rel > 0 && rel < 1e-6, `teach: the best run keeps the energy to better than 10⁻⁶ (${rel})`);
+}, 'teach-accuracy');
+
+// no form of the lab busy (after the examples, the forms no example ran keep no state)
+const quiet = () => page.waitForFunction(() => ![...document.querySelectorAll('main form')].some(f => f.dataset.state === 'busy'),
+  null, {timeout: 30000});
+for (const [where, size] of [['desktop', {width: 1280, height: 900}], ['phone', {width: 390, height: 844}]]) {
+  await page.setViewportSize(size);
+  for (const id of LABS) await lab(id, async () => {
+    await settled();
+    const bad = await blemishes();
+    check(bad.length === 0, `${where} ${id}: the default page is clean (${bad.join(' | ')})`);
+    await teaches(where, id);
+    await everyExample(where === 'desktop' ? id : `phone ${id}`);
+    await quiet();
+    await teaches(where, id); // after the last example too
+    await copies(where, id);
+    await changes(where, id);
+  }, where === 'desktop' ? `examples-${id}` : `examples-phone-${id}`);
+}
+await page.setViewportSize({width: 1280, height: 900});
 
 // a body whose principal moments all differ: a 1 × 2 × 3 m box of 1 kg about its
 // centre has I = M(b² + c²)/12 … = 5/12, 10/12, 13/12 kg m², no "degenerate" note
@@ -697,7 +840,7 @@ await lab('rotations', async () => {
   check(await value('#order-verdict') < 1e-12 && /agree/.test(await page.textContent('#order-verdict')), 'rotations: two turns about x commute, and it says so');
   // copy as Python: the shown call runs with the Python client and gives the page's numbers
   const py = await page.textContent('main [data-role=python]');
-  check(/client\.call\("\/v1\/rotation\/convert", \{"euler_zxz": \[/.test(py), `rotations: the Python box calls client.call("/v1/rotation/convert", …) (${py.split('\n')[2]})`);
+  check(/m\.rotation_convert\(\s*euler_zxz=\[/.test(py), `rotations: the Python box calls the client's m.rotation_convert(euler_zxz=…) (${py.split('\n')[2]})`);
   let out = '';
   try {
     out = execFileSync('/usr/bin/python3', ['-c', py + '\nimport json\nprint(json.dumps(answer["matrix"]))'],

@@ -4,7 +4,7 @@
 // magnified and labelled; and the Foucault pendulum (POST /v1/scenes/foucault):
 // its trace from above, and its swing plane standing on the turning Earth in
 // 3-D over one sidereal day (drawn to scale in angle: nothing exaggerated).
-import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, label} from '../view3d.js';
 
@@ -61,14 +61,22 @@ export default {
     const fl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 32, unit: '°', id: 'fall-lat'});
     const fallS = section(main, 'Falling object', 'Dropped from rest, it lands east of the point below (and a little south). ' +
       'Without the Earth\'s rotation it would land exactly below.', [fh, fl], 'Drop', 'fall');
+    const fallNotes = notesBox('fall-notes');
     const fall = runner(fallS, '/v1/scenes/falling-object', () => ({height: val(fh.input), latitude_deg: val(fl.input)}), (a) => {
       put(fallS.results, el('dl', {class: 'nums'},
         el('dt', {}, 'fall time'), num('fall-t', a.numerical.t, 's'),
         el('dt', {}, 'east (numerical)'), num('fall-east', a.numerical.east, 'm'),
         el('dt', {}, 'east (first order)'), num('fall-east-1', a.first_order.east, 'm'),
         el('dt', {}, 'south (numerical)'), num('fall-south', a.numerical.south, 'm'),
-        el('dt', {}, 'numerical − first order'), num('fall-diff', a.difference.east, 'm')),
-        el('p', {class: 'muted'}, a.first_order.formula || ''));
+        el('dt', {}, 'numerical − first order'), num('fall-diff', a.difference.east, 'm')), fallNotes.box);
+      // notes §1.4 (the example follows "1.4 The Tides" and precedes "1.5 Homework"): v_east = ω g t² cos λ
+      // integrated once more, t = √(2h/g). The API carries the first-order value and its own difference.
+      fallNotes.update({section: '1.4', heading: 'Example: Deflection of a Falling Object',
+        formula: ['x', el('sub', {}, 'east'), ' = ⅓ ω g t³ cos λ = ⅓ ω cos λ √(8h³/g),  t = √(2h/g)'],
+        what: 'the first-order formula', formulaValue: a.first_order.east, apiValue: a.numerical.east, diff: -a.difference.east,
+        unit: 'm', source: 'api', how: 'The eastward drift at the ground: the notes keep only the Coriolis term, first order in ω; ' +
+          'the API integrates the full equations (Coriolis and centrifugal) to the landing.',
+        note: 'The notes: "for a height of 100 meters, at 32 degrees latitude, the displacement is about 1.9 cm."'});
       drawPlot(fallS.plot, () => planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`));
       fallPath(a);
     });
@@ -92,9 +100,11 @@ export default {
       const r = await api('/v1/trajectory', body, {signal: mine.signal});
       if (mine !== pathCtl || r.aborted) return;
       if (!r.ok || !r.body || !Array.isArray(r.body.t)) { pathNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
-      const t = r.body.t.slice(), pos = r.body.position.slice();
-      if (r.body.stopped && r.body.stopped.t > t[t.length - 1]) { t.push(r.body.stopped.t); pos.push(r.body.stopped.position); }
-      const pts = pos.map(p => [p[0] * 100, p[2]]);
+      let t = r.body.t.slice(), pos = r.body.position.slice();
+      const st = r.body.stopped; // nothing after the landing
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      const pts = pos.map(p => [p[0] * 100, Math.abs(p[2]) < 1e-9 ? 0 : p[2]]); // the landing's −1.4e-14 m is the ground
       const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
       let XY = null, cur = pts[0];
       linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
@@ -119,13 +129,23 @@ export default {
     const canS = section(main, 'Cannonball', 'Fired over the rotating Earth it is deflected to the right in the northern ' +
       'hemisphere (to the left in the southern). The picture shows the landing point relative to where it would land on a ' +
       'non-rotating Earth.', [cs, ce, ca, cl], 'Fire', 'can');
+    const canNotes = notesBox('can-notes');
     const cannon = runner(canS, '/v1/scenes/cannonball', () => ({speed: val(cs.input), elevation_deg: val(ce.input),
       azimuth_deg: val(ca.input), latitude_deg: val(cl.input)}), (a) => {
       put(canS.results, el('dl', {class: 'nums'},
         el('dt', {}, 'time of flight'), num('can-t', a.numerical.t, 's'),
         el('dt', {}, 'range'), num('can-range', a.numerical.range, 'm'),
         el('dt', {}, 'deflection to the right'), num('can-right', a.numerical.right, 'm'),
-        el('dt', {}, 'right (first order)'), num('can-right-1', a.first_order.right, 'm')));
+        el('dt', {}, 'right (first order)'), num('can-right-1', a.first_order.right, 'm')), canNotes.box);
+      // notes §1.4, Example: Deflection of Cannon Balls: a = −2 ω × v; to first order in ω the
+      // displacement is r₁ = −ω × (v₀ t² + g t³/3) (integrated twice), read at the landing
+      canNotes.update({section: '1.4', heading: 'Example: Deflection of Cannon Balls',
+        formula: ['a = −2 ω × v  ⇒  r', el('sub', {}, '1'), ' = −ω × (v', el('sub', {}, '0'), ' t² + g t³/3)  (first order in ω, at the landing)'],
+        what: 'the first-order formula', formulaValue: a.first_order.right, apiValue: a.numerical.right, diff: -a.difference.right,
+        unit: 'm', source: 'api', how: 'The deflection to the right of the aim: to the right in the northern hemisphere, ' +
+          'to the left in the southern (the notes\' first two terms of a).',
+        note: 'Most of the difference is the second order in ω (Coriolis acting on the first-order drift, and the centrifugal term): ' +
+          'it grows with the time of flight.'});
       // relative to the non-rotating landing point (range v² sin 2α / g along the azimuth)
       const g = a.parameters.g, v = a.parameters.speed, al = a.parameters.elevation_deg * Math.PI / 180;
       const az = a.parameters.azimuth_deg * Math.PI / 180, R0 = v * v * Math.sin(2 * al) / g;
@@ -185,6 +205,7 @@ export default {
     const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings'});
     const fouS = section(main, 'Foucault pendulum', 'The swing plane turns clockwise (northern hemisphere) at ω sin λ. ' +
       'The trace (and the bob when played) is drawn from the measured rate and swing period, with the turn exaggerated so that it shows; the exaggeration is written under it.', [pl, pL, pa, ps], 'Swing', 'fou');
+    const fouNotes = notesBox('fou-notes');
     const pend = runner(fouS, '/v1/scenes/foucault', () => ({latitude_deg: val(pl.input), length: val(pL.input),
       release: {amplitude_deg: val(pa.input)}, swings: val(ps.input)}), (a) => {
       const p = a.precession;
@@ -196,7 +217,18 @@ export default {
         el('dt', {}, 'full turn'), still || p.full_precession_hours === null
           ? el('dd', {id: 'fou-hours'}, 'none: no precession at the equator (ω sin λ = 0)')
           : num('fou-hours', p.full_precession_hours, 'h'),
-        el('dt', {}, 'swing period'), num('fou-period', a.swing.period, 's')));
+        el('dt', {}, 'swing period'), num('fou-period', a.swing.period, 's')), fouNotes.box);
+      // notes §1.4, Example: The Foucault Pendulum: q = x + iy = q₀ e^(−iω_z t) cos(√(g/l) t), ω_z = ω sin λ
+      const h = 180 / Math.PI * 3600; // rad/s -> °/h
+      fouNotes.update({section: '1.4', heading: 'Example: The Foucault Pendulum',
+        formula: ['x + iy = q', el('sub', {}, '0'), ' e', el('sup', {}, '−iω_z t'), ' cos(√(g/l) t),  ω', el('sub', {}, 'z'),
+          ' = ω sin λ  (clockwise seen from above in the north)'],
+        what: 'the notes\' rate', formulaValue: p.first_order_rate * h, apiValue: p.measured_rate * h,
+        diff: typeof p.difference === 'number' ? -p.difference * h : undefined, unit: '°/h', source: 'api',
+        how: 'The rate the swing plane turns: the notes keep first order in the swing\'s size over l; the API integrates the ' +
+          'pendulum and fits the plane\'s turn over every swing.',
+        note: still ? 'At the equator sin λ = 0: in the notes the plane does not turn at all.' : typeof p.airy_correction === 'number'
+          ? `Most of the difference is the Airy precession of a slightly elliptical swing (${fmt(p.airy_correction * h, 2)} °/h by its formula), not the Earth.` : null});
       const flat = a.swing.semi_major_axis > 0 ? Math.min(1, Math.abs(a.swing.semi_minor_axis / a.swing.semi_major_axis)) : 0;
       let bob = null;
       drawPlot(fouS.plot, () => { bob = rosette(fouS.plot, p.measured_rate, a.swing.period, still, flat); });

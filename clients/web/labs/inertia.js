@@ -1,7 +1,7 @@
 // Inertia lab: build a body from parts (POST /v1/rigid/inertia), see the
 // tensor, the principal moments and the principal axes drawn over the body in
 // a small 3D view (drag or arrow keys to rotate).
-import {el, put, add, field, val, fmt, num, labLayout, runner, examplePicker} from '../lib.js';
+import {el, put, add, field, val, fmt, num, labLayout, runner, examplePicker, notesBox} from '../lib.js';
 import {THREE, view3d, axesArrows, sceneAxes, label as tag} from '../view3d.js';
 
 const SHAPES = {
@@ -110,6 +110,7 @@ export default {
     const world = new THREE.Group();
     V.scene.add(world);
     const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
+    const notes = notesBox('inertia-notes'); L.figure.after(notes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
@@ -131,6 +132,25 @@ export default {
           el('dt', {}, 'ω'), el('dd', {}, `(${state.req.omega.map(v => fmt(v)).join(', ')}) rad/s`),
           el('dt', {}, 'L = I ω'), el('dd', {id: 'inertia-L'}, `(${a.angular_momentum.map(v => fmt(v)).join(', ')}) kg m²/s`),
           el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null);
+      // notes §2.3 Parallel Axis Theorem: about a point O with the centre of mass at a from it,
+      // I_ij = I_ij(cm) + M (a² δ_ij − a_i a_j); computed here from the API's tensor about the centre of mass
+      const o = Array.isArray(a.origin) ? a.origin : a.center_of_mass, d = a.center_of_mass.map((c, k) => c - o[k]);
+      const d2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2], Icm = a.tensor_center_of_mass;
+      if (Array.isArray(Icm)) {
+        const P = Icm.map((row, i) => row.map((v, j) => v + a.mass * ((i === j ? d2 : 0) - d[i] * d[j])));
+        const big = Math.max(...a.tensor.flat().map(Math.abs)) || 1;
+        const abs = Math.max(...P.flatMap((row, i) => row.map((v, j) => Math.abs(v - a.tensor[i][j]))));
+        const show = (T) => `I_xx = ${fmt(T[0][0], 7)}, I_xy = ${fmt(T[0][1], 7)}, I_zz = ${fmt(T[2][2], 7)} kg m²`;
+        notes.update({section: '2.3', heading: 'Parallel Axis Theorem',
+          formula: ['I', el('sub', {}, 'ij'), ' = I', el('sub', {}, 'ij'), el('sup', {}, '(cm)'), ' + M (a² δ', el('sub', {}, 'ij'),
+            ' − a', el('sub', {}, 'i'), ' a', el('sub', {}, 'j'), '),  a = the centre of mass seen from the origin'],
+          what: 'the parallel-axis tensor', formulaShown: show(P), apiShown: show(a.tensor), abs, rel: abs / big, unit: 'kg m²',
+          sourceText: 'computed in this page from the API\'s tensor about the centre of mass, the mass and a',
+          how: d2 === 0 ? 'The origin is the centre of mass: a = 0 and the theorem adds nothing.'
+            : `The tensor about the origin, a = (${d.map(v => fmt(v, 4)).join(', ')}) m; the difference is the largest of the nine entries'.`,
+          note: 'The notes\' worked example, a cube of side s about a corner: I = M s² (⅔ δ − ¼) (§2.4, its number read from the contents), ' +
+            'principal moments M s²/6 and 11 M s²/12 twice (§2.5, Example: Cube Rotating about a Corner).'});
+      }
       draw();
     });
     draw();

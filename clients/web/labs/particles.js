@@ -4,7 +4,7 @@
 // recoiling electron (/v1/relativity/kinematics/compton) beside
 // λ′ − λ = (h/mc)(1 − cos θ); and the Doppler shift of light with its colour
 // before and after (/v1/relativity/doppler).
-import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, plotSize} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, plotSize, notesBox} from '../lib.js';
 
 const D = Math.PI / 180;
 const st = {parent: 'pi0', daughters: 'photon, photon', T: 200, E: 100, lambda: '', angle: 90, beta: 0.1, nm: 500};
@@ -71,6 +71,7 @@ export default {
     }, {fits: (ex) => ex.operation !== '/v1/relativity/doppler' || (ex.request.source_velocity && ex.request.source_velocity.beta &&
       !ex.request.observer_velocity && Array.isArray(ex.request.arrival_direction) && !ex.request.arrival_direction[1] && !ex.request.arrival_direction[2])}),
     parent.wrap, daughters.wrap, T.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dk-submit'}, 'Decay')));
+    const dkNotes = notesBox('dk-notes'), EV = {eV: 1, keV: 1e3, MeV: 1e6, GeV: 1e9, TeV: 1e12}; L.figure.after(dkNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/relativity/kinematics/decay', () => {
       if (pendingDecay) return pendingDecay;
       const ds = daughters.input.value.split(',').map(s => s.trim()).filter(Boolean).map(s => (isFinite(Number(s)) ? Number(s) : s));
@@ -91,12 +92,26 @@ export default {
       (a.maximum_lab_angles || []).forEach((m, i) => { if (Number.isFinite(m)) items.push(el('dt', {}, `daughter ${i + 1}: widest lab angle`), num(`dk-maxang-${i}`, m / D, '°')); });
       if (a.minimum_opening_angle && Number.isFinite(a.minimum_opening_angle.angle))
         items.push(el('dt', {}, 'smallest opening angle'), num('dk-open', a.minimum_opening_angle.angle / D, '°'));
-      put(L.results, el('h3', {}, 'Answer'), el('dl', {class: 'nums'}, items),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§3.16 Kinematics Problems in Electron Volts)'),
-          el('p', {}, 'Two bodies at rest: p* = √[(M² − (m₁ + m₂)²)(M² − (m₁ − m₂)²)] / 2M,  E₁ = (M² + m₁² − m₂²) / 2M'),
-          el('p', {id: 'dk-compare'}, two ? `With M = ${fmt(M, 7)} and m = ${fmt(masses[0], 6)}, ${fmt(masses[1], 6)} ${u}: p* = ${fmt(notes, 7)} ${u}/c; ` +
-            `the API: ${fmt(rf.momentum, 7)}; difference ${fmt(Math.abs(notes - rf.momentum), 2)}.`
-            : 'Three bodies share the energy in a continuous spectrum: a daughter gets the most when the other two fly off together.')));
+      put(L.results, el('h3', {}, 'Answer'), el('dl', {class: 'nums'}, items));
+      // notes, Kinematics Problems in Electron Volts (π⁰ decay, neutron decay; after §3.14, numbered 3.16 in the contents):
+      // two bodies at rest share p* = √[(M² − (m₁ + m₂)²)(M² − (m₁ − m₂)²)] / 2M. With three, daughter k gets the most
+      // when the other two fly off together as one of mass m_i + m_j: E_k = (M² + m_k² − (m_i + m_j)²) / 2M.
+      const mx = a.maximum_energies || [];
+      if (two) dkNotes.update({section: '3.16', inferred: true, heading: 'Kinematics Problems in Electron Volts',
+        formula: ['p* = √[(M² − (m', el('sub', {}, '1'), ' + m', el('sub', {}, '2'), ')²)(M² − (m', el('sub', {}, '1'), ' − m', el('sub', {}, '2'),
+          ')²)] / 2M,  E', el('sub', {}, '1'), ' = (M² + m', el('sub', {}, '1'), '² − m', el('sub', {}, '2'), '²) / 2M  (c = 1)'],
+        what: 'the formula', formulaValue: notes, apiValue: rf.momentum, unit: u, diffUnit: 'eV', diffScale: EV[u] || 1,
+        how: `Each daughter's momentum in the parent's rest frame, M = ${fmt(M, 7)} and m = ${fmt(masses[0], 6)}, ${fmt(masses[1], 6)} ${u}.`});
+      else if (mx.length === 3 && mx.every(e => e && Number.isFinite(e.energy))) {
+        const m3 = mx.map(e => e.energy - e.kinetic_energy), k = 1, [i1, i2] = [0, 2];
+        const Ek = (M * M + m3[k] ** 2 - (m3[i1] + m3[i2]) ** 2) / (2 * M);
+        dkNotes.update({section: '3.16', inferred: true, heading: 'Kinematics Problems in Electron Volts: Neutron Decay',
+          formula: ['E', el('sub', {}, '2, max'), ' = (M² + m', el('sub', {}, '2'), '² − (m', el('sub', {}, '1'), ' + m', el('sub', {}, '3'), ')²) / 2M',
+            '  (daughters 1 and 3 fly off together, c = 1)'],
+          what: 'the formula', formulaValue: Ek - m3[k], apiValue: mx[k].kinetic_energy, unit: u, diffUnit: 'eV', diffScale: EV[u] || 1,
+          how: `Daughter 2's largest kinetic energy E − m: three bodies share the energy in a continuous spectrum, and it is ` +
+            'largest when the other two move as one.'});
+      } else put(dkNotes.box);
       drawDecay(decayPlot, a, two, req);
     });
     const decayPlot = svg('svg', {class: 'plot', id: 'dk-plot', role: 'img', 'aria-label': 'The decay in the rest frame and in the lab'});
@@ -117,6 +132,7 @@ export default {
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'cp-submit'}, 'Scatter')));
     const cplot = svg('svg', {class: 'plot', id: 'cp-plot', role: 'img', 'aria-label': 'Compton scattering: photon in, photon out and the recoiling electron'});
     add(C.figure, cplot);
+    const cpNotes = notesBox('cp-notes'); C.figure.after(cpNotes.box); // under the figure: the picture stays by the answer
     const crun = runner(C, '/v1/relativity/kinematics/compton', () => {
       const lam = cL.input.value.trim();
       return lam !== '' ? {wavelength: Number(lam) * 1e-12, angle_deg: Number(ang.value)} : {energy: val(cE.input), energy_unit: 'keV', angle_deg: Number(ang.value)};
@@ -128,11 +144,13 @@ export default {
         el('dt', {}, 'scattered: energy, λ′'), el('dd', {id: 'cp-out', 'data-value': a.scattered.wavelength}, `${fmt(a.scattered.energy, 6)} ${u}, ${fmt(a.scattered.wavelength * 1e12, 6)} pm`),
         el('dt', {}, 'λ′ − λ'), num('cp-shift', a.wavelength_shift * 1e12, 'pm'),
         el('dt', {}, 'electron: kinetic energy'), num('cp-recoil', a.recoil.kinetic_energy, u),
-        el('dt', {}, 'electron: angle'), num('cp-recoil-angle', a.recoil.angle / D, '°')),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§3.16 Compton Scattering)'),
-          el('p', {}, 'λ′ − λ = (h / m c)(1 − cos θ),  h / m c = ' + fmt(a.compton_wavelength * 1e12, 6) + ' pm for the electron'),
-          el('p', {id: 'cp-compare'}, `By the formula: ${fmt(notes * 1e12, 7)} pm; the API: ${fmt(a.wavelength_shift * 1e12, 7)} pm; ` +
-            `difference ${fmt(Math.abs(notes - a.wavelength_shift) * 1e12, 2)} pm.`)));
+        el('dt', {}, 'electron: angle'), num('cp-recoil-angle', a.recoil.angle / D, '°')));
+      // notes, Compton Scattering (in the section numbered 3.16 in the contents): λ′ − λ = (h / m c)(1 − cos θ)
+      cpNotes.update({section: '3.16', inferred: true, heading: 'Kinematics Problems in Electron Volts: Compton Scattering',
+        formula: ['λ′ − λ = (h / m c)(1 − cos θ),  h / m c = ' + fmt(a.compton_wavelength * 1e12, 6) + ' pm for the electron'],
+        what: 'the formula', formulaValue: notes * 1e12, apiValue: a.wavelength_shift * 1e12, unit: 'pm', diffUnit: 'm', diffScale: 1e-12,
+        how: 'The scattered photon\'s wavelength shift at this angle: the formula in this page from h/mc and θ; the API from energy ' +
+          'and momentum conservation.'});
       drawCompton(cplot, a);
     });
     crun();
@@ -154,6 +172,7 @@ export default {
     add(Dp.form, el('div', {class: 'figure-control'}, el('label', {for: 'dp-beta'}, 'β (positive: coming towards you)'), bs, bOut),
       el('div', {class: 'figure-control'}, el('label', {for: 'dp-angle'}, 'angle from head-on (your frame)'), as, aOut), dL.wrap,
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'dp-submit'}, 'Shift')));
+    const dpNotes = notesBox('dp-notes'); Dp.figure.after(dpNotes.box); // under the figure: the picture stays by the answer
     const drun = runner(Dp, '/v1/relativity/doppler', () => {
       st.nm = val(dL.input);
       const t = Number(as.value) * D, c = Math.abs(Math.cos(t)) < 1e-15 ? 0 : Math.cos(t), s = Math.abs(Math.sin(t)) < 1e-15 ? 0 : Math.sin(t);
@@ -166,11 +185,13 @@ export default {
         el('div', {}, el('h3', {}, 'Emitted'), swatch('dp-swatch-emitted', a.wavelength_emitted * 1e9)),
         el('div', {}, el('h3', {}, 'Seen'), swatch('dp-swatch-seen', a.wavelength_observed * 1e9))),
         el('dl', {class: 'nums'}, el('dt', {}, 'f′ / f'), num('dp-factor', f), el('dt', {}, 'seen wavelength'), num('dp-seen', a.wavelength_observed * 1e9, 'nm'),
-          el('dt', {}, 'case'), el('dd', {id: 'dp-case'}, a.case.replace(/_/g, ' '))),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§3.14 The Relativistic Doppler Effect)'),
-          el('p', {}, 'f′ = f / (γ (1 − β cos α)), α the angle in your frame between the source\'s velocity and the light reaching you: ' +
-            '√((1 + β) / (1 − β)) head-on (α = 0), 1/γ at α = 90°'),
-          el('p', {id: 'dp-compare'}, `By the formula: ${fmt(notes, 7)}; the API: ${fmt(f, 7)}; difference ${fmt(Math.abs(notes - f), 2)}.`)));
+          el('dt', {}, 'case'), el('dd', {id: 'dp-case'}, a.case.replace(/_/g, ' '))));
+      // notes §3.14 The Relativistic Doppler Effect: along the line of sight f′ = f √((1 + β)/(1 − β)); at an
+      // angle α in the observer's frame f′ = f / (γ (1 − β cos α)) (the phase k·x − ωt is invariant)
+      dpNotes.update({section: '3.14', heading: 'The Relativistic Doppler Effect',
+        formula: ['f′ = f / (γ (1 − β cos α)):  √((1 + β)/(1 − β)) head-on (α = 0),  1/γ at α = 90°  (α in your frame)'],
+        what: 'the formula', formulaValue: notes, apiValue: f, unit: '',
+        how: 'The factor f′/f: the formula in this page from β and α; the API boosts the light\'s 4-momentum.'});
     });
     drun();
   },

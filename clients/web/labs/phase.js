@@ -5,7 +5,7 @@
 // /v1/hamiltonian/liouville in the same batch) — and Poincaré sections of the
 // Hénon–Heiles system (/v1/hamiltonian/poincare): closed curves for regular
 // orbits, a scatter for chaotic ones.
-import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, plotSize, plotTools} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, plotSize, plotTools, notesBox} from '../lib.js';
 import {player, lerp} from '../anim.js';
 
 const LOOP = 40, SAMPLES = 81;
@@ -69,6 +69,7 @@ export default {
     const aplot = svg('svg', {class: 'plot', id: 'ph-area', role: 'img', 'aria-label': 'Area of the loop against time'});
     add(L.figure, el('h3', {}, 'The loop in phase space'), plot, play.root, areaOut, el('h3', {}, 'Its area against time'), aplot);
 
+    const phNotes = notesBox('ph-notes');
     const run = runner(L, '/v1/batch', () => {
       const req = pending || {system: {name: 'pendulum', mass: 1, length: 1},
         curve: {type: 'ellipse', center: [val(th.input), val(p0.input)], semi_axes: [val(a.input), val(b.input)]}, t_end: val(te.input)};
@@ -100,10 +101,18 @@ export default {
         el('p', {id: 'ph-verdict'}, runs.map(r => r.symplectic
           ? `With ${r.method}, a symplectic method, the area stays the same to ${fmt(r.max_relative_area_drift, 2)}: round-off.`
           : `With ${r.method} at a step of ${fmt(r.diagnostics.dt, 3)} s (not symplectic) it ${r.max_relative_area_drift > 1e-6 ? 'drifts' : 'changes'} by ${fmt(r.max_relative_area_drift, 2)}: the numerical flow, not the physics.`).join(' ')),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (Liouville\'s theorem)'),
-          el('p', {}, 'd/dt ∮ p dq = 0; for an ellipse of half-axes a, b the area is π a b'),
-          el('p', {id: 'ph-compare'}, notes === null ? 'The measured area is Poincaré\'s integral invariant ½ Σ ∮ (q dp − p dq) over the loop.'
-            : `π a b = ${fmt(notes, 7)}; the API's area at the start ${fmt(A0, 7)}, difference ${fmt(Math.abs(notes - A0), 2)}.`)));
+        phNotes.box);
+      // chapter 5, Phase Space and Liouville's Theorem: the flow keeps phase-space area, d/dt ∮ p dq = 0;
+      // an ellipse of half-axes a, b has area π a b. Against it: the loop's area at the end of the best-keeping run.
+      const keep = runs.find(r => r.symplectic) || runs[0], Aend = keep.area[keep.area.length - 1];
+      phNotes.update({section: '5', heading: 'Hamiltonian Mechanics: Phase Space and Liouville\'s Theorem',
+        formula: ['d/dt ∮ p dq = 0  (the area of a loop of states carried by the flow does not change);  ellipse: A = π a b'],
+        what: notes === null ? 'Liouville\'s constant area' : 'π a b', formulaValue: notes === null ? A0 : notes, apiValue: Aend,
+        unit: lv.system.degrees_of_freedom === 1 ? 'J s' : '',
+        sourceText: notes === null ? 'the API\'s area at the start, which Liouville says stays' : 'computed in this page from the half-axes',
+        how: `The loop's area after the flow, with ${keep.method}${keep.symplectic ? ' (symplectic)' : ''}: Liouville says it is the area it started with.`,
+        note: 'The extracted notes end at §4.2: the Hamiltonian chapter\'s section numbers are not in their text. A non-symplectic ' +
+          'method does not keep the area: the change it shows is the numerical flow, not the physics.'});
       linePlot(aplot, runs.map((r, k) => ({points: lv.t.map((t, i) => [t, r.area[i] / A0 - 1]), label: `${r.method}: A/A₀ − 1`})),
         {xlabel: 't [s]', ylabel: 'A/A₀ − 1'});
       drawLoop(plot, flows, lv, play, areaOut);

@@ -4,7 +4,7 @@
 // R = Rψ Rθ Rφ entries beside the API's; gimbal lock at θ = 0 (and 180°) said
 // in words; and two turns composed in both orders (POST /v1/batch of two
 // /v1/rotation/compose) to show that rotations do not commute.
-import {el, put, add, fmt, num, api, labLayout, labSection, runner, examplePicker} from '../lib.js';
+import {el, put, add, fmt, num, api, labLayout, labSection, runner, examplePicker, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, axesArrows, sceneAxes} from '../view3d.js';
 
@@ -115,6 +115,7 @@ export default {
       }, 250);
     };
 
+    const rotNotes = notesBox('rot-notes');
     const run = runner(L, () => (pending ? pending.operation : '/v1/rotation/convert'),
       () => (pending ? pending.request : {euler_zxz: [st.phi * D, st.theta * D, st.psi * D]}),
       (a, req) => {
@@ -139,12 +140,20 @@ export default {
             el('dt', {}, 'quaternion (w, x, y, z)'), el('dd', {id: 'rot-quat', 'data-value': a.quaternion.join(',')}, '(' + a.quaternion.map(v => fmt(v, 5)).join(', ') + ')'),
             el('dt', {}, 'axis'), el('dd', {id: 'rot-axis'}, '(' + a.axis_angle.axis.map(v => fmt(v, 4)).join(', ') + ')'),
             el('dt', {}, 'angle about it'), num('rot-angle', a.axis_angle.angle / D, '°')),
-          el('section', {class: 'teach', 'aria-label': 'The notes\' formula'}, el('h3', {}, 'The notes\' formula (§2.6 Euler Angles)'),
-            el('p', {}, 'R₁₁ = cos ψ cos φ − cos θ sin φ sin ψ,  R₁₃ = sin ψ sin θ,  R₃₃ = cos θ'),
-            el('p', {id: 'rot-compare'}, `By the formula: R₁₁ = ${fmt(N[0][0], 6)}, R₁₃ = ${fmt(N[0][2], 6)}, R₃₃ = ${fmt(N[2][2], 6)}; ` +
-              `the largest difference from the API's nine entries is ${diff < 1e-15 ? 'below 10⁻¹⁵' : fmt(diff, 2)}.`),
-            el('p', {class: 'muted'}, 'The quaternion is (cos(α/2), n sin(α/2)) for the turn α about the axis n; ' +
-              'a quaternion never locks, which is why attitude is integrated with one (§2.6).')));
+          rotNotes.box);
+        // notes §2.6: R = Rψ Rθ Rφ multiplied out (the notes' matrix, its minus signs restored from the product)
+        const show = (M) => `R₁₁ = ${fmt(M[0][0], 7)}, R₁₃ = ${fmt(M[0][2], 7)}, R₃₂ = ${fmt(M[2][1], 7)}`;
+        rotNotes.update({section: '2.6', heading: 'Euler Angles',
+          formula: ['R = R', el('sub', {}, 'ψ'), ' R', el('sub', {}, 'θ'), ' R', el('sub', {}, 'φ'), ' = ',
+            el('table', {class: 'matrix formula-matrix', 'aria-label': 'the notes\' matrix'}, [
+              ['cos ψ cos φ − cos θ sin φ sin ψ', 'cos ψ sin φ + cos θ cos φ sin ψ', 'sin ψ sin θ'],
+              ['−sin ψ cos φ − cos θ sin φ cos ψ', '−sin ψ sin φ + cos θ cos φ cos ψ', 'cos ψ sin θ'],
+              ['sin θ sin φ', '−sin θ cos φ', 'cos θ']].map(r => el('tr', {}, r.map(c => el('td', {}, c)))))],
+          what: 'the notes\' matrix', formulaShown: show(N), apiShown: show(a.matrix), abs: diff, rel: diff,
+          how: 'All nine entries by the formula (in this page, from the angles asked) against the API\'s matrix; the difference is ' +
+            'the largest of the nine (entries are at most 1, so it is also the relative one).',
+          note: 'The quaternion is (cos(α/2), n sin(α/2)) for the turn α about the axis n; a quaternion never locks, which is ' +
+            'why attitude is integrated with one.'});
         orient(a.matrix);
         stages([f, t, p]);
       });

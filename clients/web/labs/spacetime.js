@@ -4,7 +4,7 @@
 // (played: both twins move up their worldlines, each clock showing its proper time).
 import {player} from '../anim.js';
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot,
-        drawPlot, plotSize, plotTools} from '../lib.js';
+        drawPlot, plotSize, plotTools, notesBox} from '../lib.js';
 
 const BUILTIN = [
   {title: 'Boost by β = 0.6: the event (ct, x) = (1, 0) → (1.25, −0.75)', operation: '/v1/relativity/boost',
@@ -53,6 +53,7 @@ export default {
       el('div', {class: 'figure-control'}, el('label', {for: 'st-beta-slider'}, 'Drag β:'), slider, shown),
       el('p', {class: 'muted'}, 'grey: light cone x = ±ct; ', el('span', {class: 'c3'}, 'blue: ct′ and x′ axes, dots evenly spaced ' +
         'in the moving frame', tickNote), '; ', el('span', {class: 'c1'}, 'red: events'), '; dashed: their hyperbolae'));
+    const boostNotes = notesBox('st-notes'); L.figure.after(boostNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/relativity/boost', () => {
       st.events = ev.input.value; st.beta = val(beta.input);
       return {vectors: parse(), velocity: {beta: [val(beta.input), 0, 0]}};
@@ -64,6 +65,19 @@ export default {
             el('td', {id: `st-ctp-${i}`, 'data-value': a.vectors[i][0]}, fmt(a.vectors[i][0])),
             el('td', {id: `st-xp-${i}`, 'data-value': a.vectors[i][1]}, fmt(a.vectors[i][1])),
             el('td', {}, fmt(-a.invariants_after[i]))))));
+      // notes §3.3 The Lorentz Transformation: x′ = γ(x − βct), ct′ = γ(ct − βx), γ = 1/√((1 − β)(1 + β))
+      // computed here from the inputs (β near 1 kept as (1 − β)(1 + β), never 1 − β²)
+      const b = body.velocity.beta[0], g = 1 / Math.sqrt((1 - b) * (1 + b));
+      const mine = body.vectors.map(v => [g * (v[0] - b * v[1]), g * (v[1] - b * v[0])]);
+      const big = Math.max(...a.vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])])) || 1;
+      const abs = Math.max(0, ...mine.map((v, i) => Math.max(Math.abs(v[0] - a.vectors[i][0]), Math.abs(v[1] - a.vectors[i][1]))));
+      const ev1 = (v) => v ? `event 1: ct′ = ${fmt(v[0], 7)}, x′ = ${fmt(v[1], 7)}` : '—';
+      boostNotes.update({section: '3.3', heading: 'The Lorentz Transformation',
+        formula: ['x′ = γ (x − β ct),  ct′ = γ (ct − β x),  γ = 1/√(1 − β²)'],
+        what: 'the formula', formulaShown: ev1(mine[0]), apiShown: ev1(a.vectors[0]), abs, rel: abs / big,
+        how: 'Every event boosted by the formula in this page and by the API; the difference is the largest over the events\' ct′ and x′.',
+        note: 'The API keeps its digits near β = 1 by working with the rapidity (γ = cosh η, βγ = sinh η); this page takes ' +
+          '1 − β² as (1 − β)(1 + β), which loses nothing when β is typed in.'});
       drawPlot(plot, () => diagram(plot, body.vectors, a.beta[0], tickNote));
       plotTools(plot, {name: 'minkowski', csv: () => 'event,ct,x,ct_boosted,x_boosted,beta\n' +
         body.vectors.map((v, i) => [i + 1, v[0], v[1], a.vectors[i][0], a.vectors[i][1], a.beta[0]].join(',')).join('\n') + '\n'});
@@ -85,6 +99,7 @@ export default {
     add(T.figure, tplot, tplay.root, clocks,
       el('p', {class: 'muted'}, 'Played in the stay-at-home frame\'s time ct: each twin\'s dot moves along its worldline and its clock ',
         'shows its own proper time (the traveller\'s between the legs\' ends at each leg\'s constant rate).'));
+    const twinNotes = notesBox('tw-notes'); T.figure.after(twinNotes.box); // under the figure: the picture stays by the answer
     const trun = runner(T, '/v1/relativity/worldline', () => {
       const b = val(tb.input), d = val(td.input);
       return {units: 'years', legs: [{velocity: {beta: [b, 0, 0]}, distance: d}, {velocity: {beta: [-b, 0, 0]}, distance: d}]};
@@ -94,6 +109,16 @@ export default {
         el('dt', {}, 'traveller ages'), num('tw-proper', t.proper_time, 'yr'),
         el('dt', {}, 'stay-at-home ages'), num('tw-home', t.stay_at_home_time, 'yr'),
         el('dt', {}, 'difference'), num('tw-diff', t.age_difference, 'yr')));
+      // notes, The Twin Paradox (after §3.14): the traveller's proper time dτ = dt √(1 − β²) on each leg
+      const coast = r.legs.every(l => !l.kind || l.kind === 'coast'); // straight legs: τ = √(Δt² − Δx²) each
+      const tau = r.legs.reduce((sum, l) => { const dt = l.end[0] - l.start[0], dx = Math.hypot(...[1, 2, 3].map(k => l.end[k] - l.start[k]));
+        return sum + (coast ? Math.sqrt((dt - dx) * (dt + dx)) : l.proper_time); }, 0);
+      twinNotes.update({section: '3.15', inferred: true, heading: 'The Twin Paradox',
+        formula: ['τ = ∫ dt √(1 − β²) = t / γ  on each straight leg'],
+        what: 'the formula', formulaValue: tau, apiValue: t.proper_time, unit: 'yr',
+        sourceText: coast ? 'computed in this page from the API\'s leg ends: τ = √(Δt² − Δx²) for each leg (c = 1 ly/yr)'
+          : 'a leg that accelerates is not a straight line: the sum of the API\'s legs',
+        how: 'The traveller\'s age at the reunion, summed over the legs.'});
       const trav = [[0, 0], ...r.legs.map(l => [l.end[1], l.end[0]])];
       // the played state at coordinate time ct: the traveller's place and proper time within its leg
       const legs = r.legs.map(l => ({t0: l.start[0], t1: l.end[0], x0: l.start[1], x1: l.end[1], tau: l.proper_time}));

@@ -4,7 +4,7 @@
 // table's frame sees, integrated by the API with centrifugal and Coriolis
 // forces (POST /v1/scenes/rotating-table), with the exact rotated line dashed
 // and the effective force at the start beside the notes' formula.
-import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, notesBox} from '../lib.js';
 import {player, lerp} from '../anim.js';
 
 const st = {experiment: 'through_center', omega: 1, radius: 1, mass: 1, px: 0.5, py: 0, vx: 0, vy: 0.8, t_end: 4};
@@ -70,6 +70,7 @@ export default {
       el('span', {class: 'c3'}, 'blue: a line painted on the table'), '; dashed: the whole path (right: the API\'s exact ' +
       'rotated line, under the integrated one).'));
 
+    const tableNotes = notesBox('table-notes');
     const run = runner(L, '/v1/scenes/rotating-table', () => {
       const e = exp.input.value;
       Object.assign(st, {experiment: e, omega: val(omega.input), radius: val(radius.input), mass: val(mass.input)});
@@ -77,21 +78,25 @@ export default {
       if (e === 'custom') Object.assign(b, {position: [val(px.input), val(py.input), 0], velocity: [val(vx.input), val(vy.input), 0], t_end: val(tEnd.input)});
       else b.radius = val(radius.input);
       return b;
-    }, (a) => {
+    }, (a, req) => {
       const p = a.parameters, f = a.effective_force_at_start, w = p.omega, r1 = p.radius, m = p.mass;
-      const teach = [];
-      if (p.experiment === 'through_center') {
-        const notes = [-m * w * w * r1 * (4 / Math.PI) * Math.sign(w), -m * w * w * r1];
-        teach.push(el('p', {}, 'F′ = −m ω² r₁ (ê_y + (4/π) ê_x) at the start (for ω > 0)'),
-          el('p', {id: 'table-compare'}, `By the formula: (${fmt(notes[0], 6)}, ${fmt(notes[1], 6)}) N; the API: (${fmt(f.total[0], 6)}, ${fmt(f.total[1], 6)}) N; ` +
-            `difference ${fmt(Math.hypot(notes[0] - f.total[0], notes[1] - f.total[1]), 2)} N.`),
-          el('p', {class: 'muted'}, 'Seen from the table the puck comes back to where it started after half a turn: it was aimed so the centre ' +
-            'passes under it just as the table turns by π.'));
-      } else if (p.experiment === 'at_rest') {
-        teach.push(el('p', {}, 'F′ = −m ω² r₁ ê_y: the Coriolis force (2 m ω² r₁, inwards) is twice the centrifugal force (outwards)'),
-          el('p', {id: 'table-compare'}, `By the formula: ${fmt(-m * w * w * r1, 6)} N along y; the API: centrifugal ${fmt(f.centrifugal[1], 6)} N, ` +
-            `Coriolis ${fmt(f.coriolis[1], 6)} N, total ${fmt(f.total[1], 6)} N.`));
-      } else teach.push(el('p', {}, 'F′ = −m ω × (ω × r′) − 2 m ω × v′ (centrifugal and Coriolis; the table turns steadily, so no Euler force)'));
+      // notes §1.1 (Calculating the Effective Force, simple rotation): F′ = F − m ω × (ω × r′) − 2 m ω × v′, at t = 0
+      // where the frames coincide (r′ = r, v′ = v − ω × r); computed here from the puck's start
+      const [r0, v0] = p.experiment === 'custom' ? [req.position, req.velocity]
+        : [[0, r1, 0], [0, p.experiment === 'through_center' ? -2 * r1 * Math.abs(w) / Math.PI : 0, 0]];
+      const vp = [v0[0] + w * r0[1], v0[1] - w * r0[0]]; // v′ = v − ω × r, ω = ω ẑ
+      const F = [m * w * w * r0[0] + 2 * m * w * vp[1], m * w * w * r0[1] - 2 * m * w * vp[0]];
+      const abs = Math.hypot(F[0] - f.total[0], F[1] - f.total[1]), big = Math.hypot(f.total[0], f.total[1]);
+      const vec = (x) => `(${fmt(x[0], 7)}, ${fmt(x[1], 7)}) N`;
+      tableNotes.update({section: '1.1', inferred: true, heading: 'Rotating Coordinate System: Calculating the Effective Force',
+        formula: [el('div', {}, 'F′ = F − m ω × (ω × r′) − 2 m ω × v′  (centrifugal, Coriolis; the table turns steadily: no Euler force)'),
+          p.experiment === 'through_center' ? el('div', {}, 'through the centre, at the start: F′ = −m ω² r₁ (ê', el('sub', {}, 'y'), ' + (4/π) ê',
+            el('sub', {}, 'x'), ')  (ω > 0)')
+            : p.experiment === 'at_rest' ? el('div', {}, 'at rest in the room: F′ = −m ω² r₁ ê', el('sub', {}, 'y'), ' (Coriolis 2 m ω² r₁ inwards, twice the centrifugal outwards)') : null],
+        what: 'the formula', formulaShown: vec(F), apiShown: vec(f.total), abs, rel: big ? abs / big : (abs ? 1 : 0), unit: 'N',
+        how: 'The total effective force on the puck at the start, seen from the table.',
+        note: p.experiment === 'through_center' ? 'Seen from the table the puck comes back to where it started after half a turn: it was ' +
+          'aimed so the centre passes under it just as the table turns by π.' : null});
       const inv = a.diagnostics && a.diagnostics.invariant;
       put(L.results, el('h3', {}, 'Effective force at the start (table\'s frame)'),
         el('dl', {class: 'nums'},
@@ -101,7 +106,7 @@ export default {
           el('dt', {}, 'duration'), num('table-t', p.t_end, 's'),
           el('dt', {}, 'integrated vs exact'), num('table-err', a.rotating_vs_exact.max_position_error, 'm'),
           inv ? el('dt', {}, 'Jacobi integral drift') : null, inv ? num('table-jacobi', inv.max_relative_drift) : null),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§1.1 Rotating Coordinate System)'), teach));
+        tableNotes.box);
       draw(room, onTable, a, play);
       plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
         a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});

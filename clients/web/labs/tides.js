@@ -3,7 +3,7 @@
 // Sun aligned (spring tide) or at a quarter Moon (neap tide). One
 // POST /v1/batch of /v1/earth/tides at every 15° (the field is symmetric about
 // the line to each body, so 0…180° is enough), plus the marked point.
-import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 
 const MONTH = 29.53; // days from new Moon to new Moon (the synodic month)
@@ -49,6 +49,7 @@ export default {
     const phase = el('p', {id: 'tides-phase', class: 'muted'});
     add(L.figure, el('h3', {}, 'The tidal field and the bulges'), plot, month.root, phase, note);
 
+    const tideNotes = notesBox('tides-notes');
     const run = runner(L, '/v1/batch', () => {
       const s = show.input.value, a = Number(sun.input.value), p = val(point.input);
       Object.assign(st, {show: s, sun: a, point: p});
@@ -75,7 +76,7 @@ export default {
       const [moon, sunA] = [body(0), body(1)];
       const s = st.show, alpha = st.sun;
       const M = moon[0], S = sunA[0];
-      const a1 = M.acceleration, notesA = 2 * M.body.gm * M.radius / M.body.distance ** 3;
+      const a1 = M.acceleration;
       put(L.results, el('h3', {}, `At ${fmt(st.point)}° from the Moon`),
         el('dl', {class: 'nums'},
           el('dt', {}, 'Moon: radial pull (exact)'), num('tides-moon-radial', a1.exact.radial, 'm/s²'),
@@ -90,12 +91,20 @@ export default {
           el('dt', {}, 'spring range (sum)'), num('tides-spring', M.spring_neap.spring_range, 'm'),
           el('dt', {}, 'neap range (difference)'), num('tides-neap', M.spring_neap.neap_range, 'm'),
           el('dt', {}, 'Sun / Moon'), num('tides-ratio', M.spring_neap.sun_to_moon)),
-        el('section', {class: 'teach'}, el('h3', {}, 'The notes\' formula (§1.4 The Tides)'),
-          el('p', {}, 'a = (GM r / d³)(2 cos θ along the body, −sin θ across), so 2GMr/d³ below the Moon;  g h = (3/2) GM r² / d³'),
-          el('p', {id: 'tides-compare'}, `Below the Moon: the formula's 2GMr/d³ = ${fmt(notesA, 5)} m/s², the exact pull ` +
-            `${fmt(moon[1].acceleration.exact.radial, 5)} m/s²: the first-order formula is ${fmt(100 * moon[1].acceleration.relative_difference, 3)}% low ` +
-            `(about (3/2) r/d = ${fmt(150 * M.r_over_d, 3)}%: the next term of the series). The range ` +
-            `(3/2) GM r⁴/(GM_E d³) = ${fmt(M.spring_neap.moon_range, 3)} m for the Moon and ${fmt(M.spring_neap.sun_range, 3)} m for the Sun (the notes: 0.54 and 0.25 m).`)));
+        tideNotes.box);
+      // notes §1.4 The Tides: the Moon's pull less its pull at the Earth's centre, to first order in r/d:
+      // a = (GM r/d³)(2 cos θ radially, −sin θ across), 2GMr/d³ straight below the Moon; the API's exact pull beside it
+      const below = moon[1].acceleration;
+      tideNotes.update({section: '1.4', heading: 'The Tides',
+        formula: ['a = (G M r / d³) (2 cos θ ê', el('sub', {}, 'r'), ' − sin θ ê', el('sub', {}, 'θ'), '),  so 2 G M r / d³ below the Moon;  ',
+          'g h = (3/2) G M r² / d³ for the water'],
+        what: 'the first-order formula', formulaValue: below.first_order.radial, apiValue: below.exact.radial,
+        diff: -below.difference.radial, unit: 'm/s²', source: 'api',
+        how: 'The tidal pull straight below the Moon: the first order in r/d against the exact difference of the Moon\'s pulls ' +
+          'at the surface and at the centre.',
+        note: `The next term of the series is about (3/2) r/d = ${fmt(150 * M.r_over_d, 3)} % of the first. The range ` +
+          `(3/2) GM r⁴/(GM_E d³) = ${fmt(M.spring_neap.moon_range, 3)} m for the Moon and ${fmt(M.spring_neap.sun_range, 3)} m for the Sun ` +
+          '(the notes: 0.54 and 0.25 m).'});
       // a month: the Sun's angle from the Moon goes round once in 29.53 days (the same answers,
       // the Sun's every 15°, drawn at each angle); spring at new and full Moon, neap at the quarters
       const days = Array.from({length: 49}, (_, k) => k * MONTH / 48);

@@ -1,7 +1,7 @@
 // Tops lab: the heavy symmetric top (POST /v1/rigid/top): the symmetry axis
 // tracing nutation loops on the unit sphere and θ(t); and the Dzhanibekov flip
 // of an asymmetric free body (POST /v1/rigid/rotate).
-import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
 
@@ -53,6 +53,7 @@ export default {
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
     let trace = null;
+    const topNotes = notesBox('top-notes'); L.figure.after(topNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/rigid/top', () => cost.withAccuracy(topBody()), (a, req) => {
       cost.after(a);
       put(L.results, el('dl', {class: 'nums'},
@@ -61,6 +62,20 @@ export default {
         el('dt', {}, 'mean precession'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
         el('dt', {}, 'sleeping top stable'), el('dd', {id: 'top-sleeping'}, String(a.sleeping_top.stable)),
         el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
+      // notes (Lagrange Equations for Top with One Fixed Point): p_φ and p_ψ conserved, and the energy
+      // E′ = ½ I₁₂ θ̇² + V(θ): θ nutates between the turning points where V(θ) = E′ (θ̇ = 0). The API solves
+      // the notes' cubic in u = cos θ for them (nutation.theta_min/max) and measures θ's extremes in its samples.
+      const N = a.nutation, th0 = req.theta, D = 180 / Math.PI;
+      const other = Math.abs(N.theta_max - th0) >= Math.abs(N.theta_min - th0); // the turning point the top is not released at
+      topNotes.update({section: '2.10', inferred: true, heading: 'Lagrange Equations for Top with One Fixed Point',
+        formula: ['E − p', el('sub', {}, 'ψ'), '²/2I', el('sub', {}, '3'), ' = ½ I', el('sub', {}, '12'), ' (dθ/dt)² + (p', el('sub', {}, 'φ'),
+          ' − p', el('sub', {}, 'ψ'), ' cos θ)² / (2 I', el('sub', {}, '12'), ' sin²θ) + M g h cos θ;  θ turns where dθ/dt = 0'],
+        what: 'the notes\' turning point', formulaValue: (other ? N.theta_max : N.theta_min) * D,
+        apiValue: (other ? N.measured_theta_max : N.measured_theta_min) * D, unit: '°',
+        sourceText: 'the root of the notes\' cubic in cos θ, as the API solves it',
+        how: `The ${other ? 'largest' : 'smallest'} θ of the nutation: from the conserved p_φ, p_ψ and E (the formula), against ` +
+          'the extreme of θ in the integrated samples.',
+        note: 'Between two samples the integrated θ may pass its extreme unseen: more samples bring the two closer.'});
       const d = req.distance > 0 ? req.distance : 0.1, Lx = d * 1.5;
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
       let Xs = null, tCur = 0;
@@ -124,8 +139,9 @@ export default {
     const DV = view3d(dbox, {label: 'The free rigid body in 3-D', id: 'dz-view'});
     const body = new THREE.Group(), dworld = new THREE.Group();
     DV.scene.add(dworld);
+    const dzNotes = notesBox('dz-notes'); D.figure.after(dzNotes.box); // under the figure: the picture stays by the answer
     const drun = runner(D, '/v1/rigid/rotate', () => ({moments: dm.map(c => val(c.input)), omega: dw.map(c => val(c.input)),
-      t_end: val(dt.input), samples: 601}), (a) => {
+      t_end: val(dt.input), samples: 601}), (a, req) => {
       const om = a.omega || (a.samples && a.samples.omega) || [];
       const t = a.t || (a.samples && a.samples.t) || [];
       const q = a.orientation || (a.samples && a.samples.orientation) || [];
@@ -134,6 +150,21 @@ export default {
         el('dt', {}, 'period (exact, elliptic)'), num('dz-period', a.flip.exact_period, 's'),
         el('dt', {}, 'flips seen'), el('dd', {id: 'dz-seen'}, String(a.flip.sign_changes_seen))]
         : [el('dt', {}, 'flips'), el('dd', {id: 'dz-seen'}, 'none: not spun near the middle axis')]));
+      // notes §2.8 Euler's equations, no torque: T = ½ Σ I₍ₖ₎ ωₖ² stays what it was at the start; and
+      // (Stability of Rigid Body Rotations) about axis k a small wobble obeys ε̈ = (I_j − I_k)(I_k − I_i)/(I_i I_j) ω_k² ε
+      const I0 = req.moments, w0 = req.omega;
+      const T0 = 0.5 * I0.reduce((sum, Ik, k) => sum + Ik * w0[k] * w0[k], 0);
+      const KE = Array.isArray(a.kinetic_energy) ? a.kinetic_energy[a.kinetic_energy.length - 1] : a.kinetic_energy;
+      const k = [0, 1, 2].reduce((b, j) => Math.abs(w0[j]) > Math.abs(w0[b]) ? j : b, 0), i = (k + 1) % 3, j = (k + 2) % 3;
+      const c = (I0[j] - I0[k]) * (I0[k] - I0[i]) / (I0[i] * I0[j]) * w0[k] * w0[k];
+      dzNotes.update({section: '2.8', heading: 'Euler\'s Equations (no torque)',
+        formula: ['I', el('sub', {}, '(1)'), ' dω', el('sub', {}, '1'), '/dt + (I', el('sub', {}, '(3)'), ' − I', el('sub', {}, '(2)'), ') ω',
+          el('sub', {}, '2'), 'ω', el('sub', {}, '3'), ' = 0 (and cyclic)  ⇒  T = ½ Σ I', el('sub', {}, '(k)'), ' ω', el('sub', {}, 'k'), '² is constant'],
+        what: 'the kinetic energy at the start', formulaValue: T0, apiValue: KE, unit: 'J',
+        how: 'The kinetic energy from your moments and ω at the start, against the API\'s at the end of the run.',
+        note: Number.isFinite(c) ? `Stability (the notes' next section): about axis ${k + 1} a small wobble obeys d²ε/dt² = ` +
+          `(I${j + 1} − I${k + 1})(I${k + 1} − I${i + 1})/(I${i + 1} I${j + 1}) ω${k + 1}² ε = ${fmt(c, 3)} s⁻² ε: ` +
+          (c > 0 ? `positive, so it grows like e^(${fmt(Math.sqrt(c), 3)} t) — the flip.` : 'negative, so it only oscillates: no flip.') : null});
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
       let Xs = null, tCur = 0;
       if (t.length && om.length) linePlot(dplot, [0, 1, 2].map(k => ({points: t.map((tt, i) => [tt, om[i][k]]), label: `ω${k + 1}`})),

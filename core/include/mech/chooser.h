@@ -15,7 +15,8 @@
  *   fixed step: error = A (h/T)^a span^b,  evaluations = B span (h/T)^-c
  *   + evals_per_sample x samples (each sample is a sub-step),
  *   error >= F span^g (round-off accumulated over the run, F and g measured),
- *   CPU = evaluations x CPU seconds per evaluation (measured per method).
+ *   CPU = evaluations x CPU seconds per evaluation (measured per method)
+ *         + MECH_CHOOSER_REQUEST_CPU_S (the request's fixed cost).
  * It costs microseconds and integrates nothing (dry runs use it alone).
  *
  * Thread-safety: reentrant; the table is constant. */
@@ -34,11 +35,13 @@ enum mech_scene_class {
     MECH_SCENE_FIRST_ORDER,         /* first-order systems: rigid bodies, geodesics, flows */
     MECH_SCENE_GENERAL,             /* other particle scenes: drag, magnetic fields, tides,
                                        rotating frames without a dominant force */
+    MECH_SCENE_CONSTRAINED_PENDULUM,/* the Foucault pendulum on its rod, RATTLE family
+                                       (mech/chooser_pendulum.h; not given to mech_choose) */
     MECH_SCENE_CLASS_COUNT
 };
 
-/* "central_gravity", "oscillator", "uniform_field", "first_order", "general";
- * NULL if out of range. */
+/* "central_gravity", "oscillator", "uniform_field", "first_order", "general",
+ * "constrained_pendulum"; NULL if out of range. */
 const char *mech_scene_class_name(enum mech_scene_class c);
 
 struct mech_scene_profile {
@@ -54,6 +57,16 @@ struct mech_scene_profile {
     int closed_form;        /* the scene has an exact solution (MECH_REFERENCE_EXACT) */
     int closed_form_allowed;/* the request allows it (integrator.closed_form, default 1) */
     const char *closed_form_name; /* e.g. "kepler" (static) or NULL */
+    /* Bound central-body orbits (mech_chooser_profile_orbit, core/chooser_orbit.c;
+     * all 0 when unknown, and then the span-based laws apply): */
+    double cost_span;       /* the run in the cost law's units: dynamical times of the
+                               calibration orbit (Kepler e = 0.5) that cost the same
+                               evaluations; 0: span */
+    double orbit_period;    /* the osculating orbit's period 2 pi sqrt(a^3 / GM), s */
+    double eccentricity;    /* of that orbit, [0, 1) */
+    double perturbation;    /* the other forces' acceleration relative to the central
+                               one, both at distance a (Wisdom-Holman's eps); < 0:
+                               unknown (no splitting is offered) */
 };
 
 enum mech_verdict {
@@ -67,6 +80,13 @@ enum mech_verdict {
 const char *mech_verdict_name(enum mech_verdict v);
 
 #define MECH_CHOOSER_MAX_CANDIDATES 10
+
+/* The fixed CPU of a request beside its method's evaluations (parsing, the
+ * model's first pass, references, encoding the samples), added to every
+ * candidate's predicted_cpu_s: measured 0.08 .. 0.15 ms on the scene set
+ * (bench_workprecision, 2026-11-27: the falling object's 44 evaluations
+ * cost 0.09 ms, closed forms 0.10 .. 0.15 ms). */
+#define MECH_CHOOSER_REQUEST_CPU_S 1e-4
 
 struct mech_candidate {
     const char *method;           /* registry name or "closed_form" (static) */
@@ -105,8 +125,11 @@ struct mech_selection {
  * when s->closed_form_allowed (it is then chosen: its cost grows with the
  * samples only); out->integrating is the best integrating candidate all the
  * same, for callers that cannot evaluate the closed form. wisdom_holman when the registry
- * has it (central_gravity, placeholder constants). Statuses: MECH_OK,
- * MECH_EINVAL (NULL argument, target out of range, span/T/scale invalid). */
+ * has it, on a central_gravity scene with a bound orbit and a perturbation
+ * (s->orbit_period > 0, s->perturbation > 0: its measured law in eps). For a
+ * bound orbit the cost law counts s->cost_span when set. Statuses: MECH_OK,
+ * MECH_EINVAL (NULL argument, target out of range, span/T/scale invalid, the
+ * constrained_pendulum class: mech_choose_pendulum serves it). */
 enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
                              struct mech_selection *out, struct mech_error *err);
 

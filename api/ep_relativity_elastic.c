@@ -1,0 +1,246 @@
+/* ep_relativity_elastic.c — POST /v1/relativity/kinematics/elastic: two-body
+ * relativistic elastic scattering off a target at rest at a given CM, lab or
+ * recoil angle, answered in the lab and the CM frame (notes §3 kinematics,
+ * problem 16; Compton is the massless-projectile case). JSON <-> core only;
+ * the physics is core/elastic_scattering.c. The small request readers below
+ * mirror the static ones of ep_relativity_kinematics.c (same schema words),
+ * kept apart so each operation's file stands alone until issue 17's
+ * generated handlers share them. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "endpoint.h"
+#include "mech/elastic_scattering.h"
+#include "mech/kinematics.h"
+#include "mech/particles.h"
+#include "velocity_request.h"
+
+static const double PI = 3.14159265358979323846;
+
+static json_t *deg_of(struct api_call *c, double rad)
+{
+    return api_real(c, rad * (180.0 / PI));
+}
+
+/* Mass of a particle field (name or number) in unit u; 0 after recording an error. */
+static int mass_of(struct api_call *c, const json_t *v, const char *ptr, enum mech_energy_unit u,
+                   double *m)
+{
+    if (json_is_string(v)) {
+        const struct mech_particle *p = mech_particle_find(json_string_value(v));
+        if (!p) {
+            api_call_invalid(c, ptr, "unknown particle name \"%s\"", json_string_value(v));
+            return 0;
+        }
+        *m = mech_energy_convert(p->mass, MECH_MEV, u);
+        return 1;
+    }
+    const double x = json_number_value(v);
+    if (x < 0) {
+        api_call_domain(c, ptr, "a mass cannot be negative (m c^2 is the rest energy), got %.17g", x);
+        return 0;
+    }
+    *m = x;
+    return 1;
+}
+
+/* The projectile's lab motion; 0 after recording an error. */
+static int motion_of(struct api_call *c, const json_t *obj, double m, struct mech_kin_motion *k)
+{
+    static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
+    const char *which = NULL;
+    char p[96];
+    for (int i = 0; i < 4; i++) {
+        if (!json_object_get(obj, keys[i])) continue;
+        if (which) {
+            snprintf(p, sizeof p, "/projectile/%s", keys[i]);
+            api_call_invalid(c, p, "give only one of energy, kinetic_energy, momentum, velocity "
+                                   "(both %s and %s were given)", which, keys[i]);
+            return 0;
+        }
+        which = keys[i];
+    }
+    if (!which) {
+        api_call_invalid(c, "/projectile", "give the projectile's energy, kinetic_energy, "
+                                           "momentum or velocity: a projectile at rest does not "
+                                           "reach the target");
+        return 0;
+    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st;
+    if (!strcmp(which, "velocity")) {
+        struct mech_boost b;
+        if (!api_velocity_parse(c, json_object_get(obj, "velocity"), "/projectile/velocity", &b))
+            return 0;
+        st = mech_kin_motion_from_boost(m, &b, k, &e);
+    } else {
+        const double x = api_number(obj, which, 0);
+        if (!strcmp(which, "energy"))
+            st = mech_kin_motion_from_energy(m, x, k, &e);
+        else if (!strcmp(which, "kinetic_energy"))
+            st = mech_kin_motion_from_kinetic(m, x, k, &e);
+        else
+            st = mech_kin_motion_from_momentum(m, x, k, &e);
+    }
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "mass")) snprintf(e.param, sizeof e.param, "particle");
+        api_call_fail_core(c, st, &e, "/projectile");
+        return 0;
+    }
+    if (!(k->momentum > 0)) {
+        snprintf(p, sizeof p, "/projectile/%s", which);
+        api_call_domain(c, p, "the projectile must move (momentum > 0) to reach a target at rest");
+        return 0;
+    }
+    return 1;
+}
+
+static const struct {
+    const char *key;
+    enum mech_elastic_angle kind;
+} angle_keys[] = {
+    {"cm_angle", MECH_ELASTIC_CM_ANGLE},
+    {"angle", MECH_ELASTIC_LAB_ANGLE},
+    {"recoil_angle", MECH_ELASTIC_RECOIL_ANGLE},
+};
+
+/* Exactly one angle of the six keys; writes its kind, value (radians) and
+ * pointer. 0 after recording an error. */
+static int angle_of(struct api_call *c, const json_t *body, enum mech_elastic_angle *kind,
+                    double *rad, char ptr[48])
+{
+    const char *seen = NULL;
+    for (size_t i = 0; i < 3; i++) {
+        for (int d = 0; d < 2; d++) {
+            char key[32];
+            snprintf(key, sizeof key, "%s%s", angle_keys[i].key, d ? "_deg" : "");
+            const json_t *v = json_object_get(body, key);
+            if (!v) continue;
+            if (seen) {
+                char p[40];
+                snprintf(p, sizeof p, "/%s", key);
+                api_call_invalid(c, p, "give exactly one angle (%s was given too)", seen);
+                return 0;
+            }
+            seen = angle_keys[i].key;
+            *kind = angle_keys[i].kind;
+            *rad = d ? json_number_value(v) / 180.0 * PI : json_number_value(v);
+            snprintf(ptr, 48, "/%s", key);
+        }
+    }
+    if (!seen) {
+        api_call_invalid(c, "", "give one angle: cm_angle, angle (the projectile's lab angle) or "
+                                "recoil_angle (each also as *_deg)");
+        return 0;
+    }
+    return 1;
+}
+
+static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
+{
+    json_t *o = json_object();
+    json_object_set_new_nocheck(o, "energy", api_real(c, l->energy));
+    json_object_set_new_nocheck(o, "kinetic_energy", api_real(c, l->kinetic));
+    json_object_set_new_nocheck(o, "momentum", api_real(c, l->momentum));
+    json_object_set_new_nocheck(o, "momentum_parallel", api_real(c, l->momentum_parallel));
+    json_object_set_new_nocheck(o, "momentum_transverse", api_real(c, l->momentum_transverse));
+    json_object_set_new_nocheck(o, "angle", api_real(c, l->angle));
+    json_object_set_new_nocheck(o, "angle_deg", deg_of(c, l->angle));
+    return o;
+}
+
+json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), &u, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    const json_t *pj = json_object_get(body, "projectile");
+    double m1 = 0, m2 = 0;
+    int ok = mass_of(c, json_object_get(pj, "particle"), "/projectile/particle", u, &m1);
+    ok &= mass_of(c, json_object_get(body, "target"), "/target", u, &m2);
+    enum mech_elastic_angle kind = MECH_ELASTIC_CM_ANGLE;
+    double angle = 0;
+    char aptr[48] = "";
+    ok &= angle_of(c, body, &kind, &angle, aptr);
+    if (!ok || c->problem != API_PROBLEM_NONE) return NULL;
+    if (!(m2 > 0)) {
+        api_call_domain(c, "/target", "the target must have a mass > 0: a massless particle "
+                                      "cannot be at rest");
+        return NULL;
+    }
+    struct mech_kin_motion k;
+    if (!motion_of(c, pj, m1, &k)) return NULL;
+    const int branch = (int)json_integer_value(json_object_get(body, "branch"));
+    struct mech_elastic o;
+    mech_error_clear(&e);
+    st = mech_elastic_scatter(&k, m2, kind, angle, branch, &o, &e);
+    if (st != MECH_OK) {
+        if (!strcmp(e.param, "angle")) snprintf(e.param, sizeof e.param, "%s", aptr + 1);
+        return api_call_fail_core(c, st, &e, "");
+    }
+
+    json_t *res = json_object(), *in = json_object(), *cm = json_object(), *vel = json_object();
+    json_t *lab = json_object(), *sol = json_object();
+    if (!res || !in || !cm || !vel || !lab || !sol) {
+        json_decref(res), json_decref(in), json_decref(cm), json_decref(vel), json_decref(lab);
+        json_decref(sol);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
+    json_object_set_new_nocheck(in, "mass", api_real(c, k.mass));
+    json_object_set_new_nocheck(in, "energy", api_real(c, k.energy));
+    json_object_set_new_nocheck(in, "kinetic_energy", api_real(c, k.kinetic));
+    json_object_set_new_nocheck(in, "momentum", api_real(c, k.momentum));
+    struct mech_boost pb;
+    if (k.mass > 0 && mech_kin_motion_boost(&k, mech_vec3_make(0, 0, 1), &pb, NULL) == MECH_OK) {
+        json_object_set_new_nocheck(in, "gamma", api_real(c, pb.gamma));
+        json_object_set_new_nocheck(in, "beta", api_real(c, pb.beta));
+        json_object_set_new_nocheck(in, "rapidity", api_real(c, pb.rapidity));
+    }
+    json_object_set_new_nocheck(res, "projectile", in);
+    json_object_set_new_nocheck(res, "target_mass", api_real(c, m2));
+    json_object_set_new_nocheck(res, "s", api_real(c, o.s));
+    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, o.sqrt_s));
+    json_object_set_new_nocheck(res, "t", api_real(c, o.t));
+    json_object_set_new_nocheck(res, "u", api_real(c, o.u));
+    json_object_set_new_nocheck(res, "momentum_transfer", api_real(c, o.momentum_transfer));
+
+    json_object_set_new_nocheck(vel, "beta", api_real(c, o.cm.beta));
+    json_object_set_new_nocheck(vel, "gamma", api_real(c, o.cm.gamma));
+    json_object_set_new_nocheck(vel, "gamma_minus_one", api_real(c, o.cm.gamma_minus_one));
+    json_object_set_new_nocheck(vel, "beta_gamma", api_real(c, o.cm.beta_gamma));
+    json_object_set_new_nocheck(vel, "rapidity", api_real(c, o.cm.rapidity));
+    json_object_set_new_nocheck(vel, "one_minus_beta", api_real(c, o.cm.one_minus_beta));
+    json_object_set_new_nocheck(cm, "velocity", vel);
+    json_object_set_new_nocheck(cm, "momentum", api_real(c, o.cm_momentum));
+    json_object_set_new_nocheck(cm, "energies", api_reals(c, o.cm_energy, 2));
+    json_object_set_new_nocheck(cm, "kinetic_energies", api_reals(c, o.cm_kinetic, 2));
+    json_object_set_new_nocheck(cm, "angle", api_real(c, o.cm_angle));
+    json_object_set_new_nocheck(cm, "angle_deg", deg_of(c, o.cm_angle));
+    json_object_set_new_nocheck(cm, "recoil_angle", api_real(c, PI - o.cm_angle));
+    json_object_set_new_nocheck(cm, "recoil_angle_deg", api_real(c, 180.0 - o.cm_angle * (180.0 / PI)));
+    json_object_set_new_nocheck(res, "cm", cm);
+
+    json_object_set_new_nocheck(lab, "projectile", lab_json(c, &o.projectile));
+    json_object_set_new_nocheck(lab, "recoil", lab_json(c, &o.recoil));
+    json_object_set_new_nocheck(lab, "opening_angle", api_real(c, o.opening_angle));
+    json_object_set_new_nocheck(lab, "opening_angle_deg", deg_of(c, o.opening_angle));
+    json_object_set_new_nocheck(res, "lab", lab);
+    json_object_set_new_nocheck(res, "velocity_ratio", api_real(c, o.velocity_ratio));
+    json_object_set_new_nocheck(res, "max_lab_angle",
+                                o.has_max_angle ? api_real(c, o.max_angle) : json_null());
+    json_object_set_new_nocheck(res, "max_lab_angle_deg",
+                                o.has_max_angle ? deg_of(c, o.max_angle) : json_null());
+    json_object_set_new_nocheck(sol, "count", json_integer((json_int_t)o.n_solutions));
+    json_object_set_new_nocheck(sol, "branch",
+                                json_integer(branch < (int)o.n_solutions ? branch : 0));
+    json_object_set_new_nocheck(sol, "cm_angles", api_reals(c, o.cm_angle_solutions, o.n_solutions));
+    double degs[2] = {o.cm_angle_solutions[0] * (180.0 / PI), o.cm_angle_solutions[1] * (180.0 / PI)};
+    json_object_set_new_nocheck(sol, "cm_angles_deg", api_reals(c, degs, o.n_solutions));
+    json_object_set_new_nocheck(res, "solutions", sol);
+    return res;
+}
