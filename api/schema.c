@@ -748,9 +748,18 @@ static json_t *shallow_copy(const json_t *inst)
     return out;
 }
 
-/* The oneOf branch inst matches (it was validated, so exactly one), or NULL. */
+/* The oneOf branch inst matches (it was validated, so exactly one), or NULL.
+ * When the discriminators (a const "shape", "type") leave one candidate, that
+ * is the branch, with no second validation (an inertia request's bodies). */
 static const struct snode *matching_branch(const struct snode *s, const json_t *inst)
 {
+    size_t left = 0, last = 0;
+    for (size_t i = 0; i < s->noneof; i++)
+        if (!discriminator_mismatch(&s->oneof[i], inst)) {
+            left++;
+            last = i;
+        }
+    if (left == 1) return s->oneof[last].node;
     for (size_t i = 0; i < s->noneof; i++) {
         if (discriminator_mismatch(&s->oneof[i], inst)) continue;
         struct vctx t = {NULL, 0};
