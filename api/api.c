@@ -28,7 +28,7 @@
  * through these pointers, which leak checkers do not report). */
 static json_t **route_schemas;
 static struct api_schema **route_compiled;
-/* Parsed answer schemas (a route's response_schema; NULL where it has none). */
+/* Parsed answer schemas (each route's response_schema, from its data file). */
 static json_t **route_responses;
 /* Per route: its schema's default for a top-level "samples" (0 if none), and
  * whether its requests can ask for samples at all (its schema names samples,
@@ -621,9 +621,22 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
         return api_problem_status(API_PROBLEM_ANSWER_TOO_LARGE);
     }
 
+    /* The handler sees the body with its schema's defaults filled in (a
+     * copy; the caller's body is left as it is), so no handler restates a
+     * default. The envelope keys are the framework's and stay as given. */
+    static const char *const envelope_keys[] = {"cost", NULL};
+    json_t *full = api_schema_apply_defaults(route_compiled[ri], body, envelope_keys);
+    if (!full) {
+        if (note) snprintf(note, note_n, "%.40s: out of memory filling defaults", r->path);
+        *out = problem_json(API_PROBLEM_INTERNAL, "internal error", NULL, NULL);
+        return api_problem_status(API_PROBLEM_INTERNAL);
+    }
+
     struct api_call call;
     memset(&call, 0, sizeof call);
     call.req = req;
+    call.given = body;
+    call.body = full;
     call.budget.max_steps = req->max_steps > 0 ? req->max_steps : 1;
     call.budget.deadline = isfinite(req->deadline) ? req->deadline : 0;
     call.budget.cancel = req->cancel;
@@ -634,8 +647,9 @@ static int run_parsed(size_t ri, const struct api_request *req, const json_t *bo
     /* The thread CPU clock is a system call, not a vDSO read: only for routes
      * that report it. */
     double cpu0 = r->reports_cost ? mech_cpu_seconds() : 0.0;
-    json_t *result = r->fn(&call, body);
+    json_t *result = r->fn(&call, full);
     double cpu = r->reports_cost ? mech_cpu_seconds() - cpu0 : 0.0;
+    json_decref(full);
 
     if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
         call.problem = API_PROBLEM_NUMERIC;

@@ -22,6 +22,47 @@ static void add_error(struct api_call *c, enum api_problem kind, const char *poi
         json_array_append_new(c->errors, api_error_entry(pointer, detail));
 }
 
+/* The value at a JSON pointer in root, or NULL. */
+static const json_t *pointer_get(const json_t *v, const char *pointer)
+{
+    const char *p = pointer ? pointer : "";
+    while (v && *p == '/') {
+        p++;
+        char tok[128];
+        size_t n = 0;
+        for (; *p && *p != '/'; p++) {
+            char ch = *p;
+            if (ch == '~' && (p[1] == '0' || p[1] == '1')) ch = *++p == '0' ? '~' : '/';
+            if (n + 1 >= sizeof tok) return NULL; /* no key of a route schema is this long */
+            tok[n++] = ch;
+        }
+        tok[n] = '\0';
+        if (json_is_object(v)) {
+            v = json_object_get(v, tok);
+        } else if (json_is_array(v)) {
+            char *end;
+            unsigned long i = strtoul(tok, &end, 10);
+            v = n && *end == '\0' ? json_array_get(v, i) : NULL;
+        } else {
+            v = NULL;
+        }
+    }
+    return *p ? NULL : v;
+}
+
+const json_t *api_call_given(const struct api_call *c, const char *pointer)
+{
+    return c ? pointer_get(c->given, pointer) : NULL;
+}
+
+const json_t *api_call_as_given(const struct api_call *c, const json_t *value,
+                                const char *pointer)
+{
+    if (!c || !value || !c->body || pointer_get(c->body, pointer) != value) return value;
+    const json_t *g = pointer_get(c->given, pointer);
+    return g ? g : value;
+}
+
 void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)
 {
     va_list ap;
@@ -134,6 +175,18 @@ double api_number(const json_t *obj, const char *key, double def)
 {
     const json_t *v = json_object_get(obj, key);
     return json_is_number(v) ? json_number_value(v) : def;
+}
+
+double api_number_of(const json_t *obj, const char *key)
+{
+    const json_t *v = json_object_get(obj, key);
+    return json_is_number(v) ? json_number_value(v) : NAN;
+}
+
+const char *api_string_of(const json_t *obj, const char *key)
+{
+    const json_t *v = json_object_get(obj, key);
+    return json_is_string(v) ? json_string_value(v) : "";
 }
 
 struct mech_vec3 api_vec3_of(const json_t *a)

@@ -129,8 +129,9 @@ static json_t *unauthorized_response(void)
                      "schema", "$ref", "#/components/schemas/Problem");
 }
 
-/* The content of a 200 answer of route i: its response schema when the route
- * describes its answer, else any JSON object. */
+/* The content of a 200 answer of route i: its response schema (every route
+ * has one, from its data file api/ops/<domain>/<operation>.json; the
+ * fallback, any JSON object, is for a table built without one). */
 static json_t *answer_content(size_t i)
 {
     const json_t *rs = response_schemas ? response_schemas[i] : NULL;

@@ -12,7 +12,11 @@ int api_earth_rotation(struct api_call *c, const json_t *obj, const char *prefix
     const json_t *day = json_object_get(obj, "sidereal_day");
     *omega = api_number(obj, rate_key, def);
     if (!day) return 1;
-    if (json_object_get(obj, rate_key)) {
+    /* The rate has a schema default, so the body always has one: ask whether
+     * the client gave it. */
+    char given[160];
+    snprintf(given, sizeof given, "%s/%s", prefix ? prefix : "", rate_key);
+    if (api_call_given(c, given)) {
         char ptr[160];
         snprintf(ptr, sizeof ptr, "%s/sidereal_day", prefix ? prefix : "");
         api_call_invalid(c, ptr, "give at most one of %s and sidereal_day (%s = 2 pi / "

@@ -12,13 +12,6 @@
 
 #include "endpoint.h"
 
-/* The schema property (JSON text, no braces around it) an Earth block adds. */
-#define API_SIDEREAL_DAY_PROP                                                                      \
-    "\"sidereal_day\":{\"type\":\"number\",\"minimum\":1000,\"maximum\":1e10,"                     \
-    "\"description\":\"s, the Earth's rotation period relative to the stars (86164.0989 s for "   \
-    "the default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate, "     \
-    "not both\"}"
-
 /* The rotation rate (rad/s) of obj: 2 pi / obj.sidereal_day when given, else
  * obj[rate_key] or def. Both given: a validation error at
  * prefix + "/sidereal_day" and 0 returned; 1 otherwise. obj may be NULL

@@ -1,8 +1,12 @@
 /* endpoint.h — what an endpoint file (api/ep_<domain>.c) sees of the API layer.
  *
- * An endpoint exports one `const struct api_route` per operation. Its
- * request-body JSON Schema (a documented subset, see schema.h) is enforced
- * before its handler runs, so a handler may assume the types, required keys,
+ * An endpoint file defines one handler per operation, the function its data
+ * file api/ops/<domain>/<operation>.json names ("handler": api_op_<path>);
+ * that handler is all the file exports for the operation. The data file
+ * holds the rest (path, summary, description, request and response schemas,
+ * example, flags), and the build turns it into the route table
+ * (scripts/ops_gen.py -> ops.def -> routes.c). The request-body JSON Schema
+ * (a documented subset, see schema.h) is enforced before the handler runs, so a handler may assume the types, required keys,
  * ranges and array sizes its schema states; it checks only what a schema
  * cannot say (e.g. |beta| < 1) and reports it with api_call_invalid() /
  * api_call_domain() naming the JSON pointer.
@@ -38,6 +42,12 @@ struct api_call {
     int nonfinite;               /* set when a non-finite number was encoded */
     int no_cost;                 /* the request asked for no measured cost ("cost": false,
                                     or GET ?request=); inner operations inherit it */
+    const json_t *given;         /* the body as the client sent it, before the schema's defaults
+                                    were filled in (borrowed; the handler's body has them): for
+                                    the few handlers that must know whether a key was given
+                                    (alternatives such as gm | g0) or echo a block as given; read
+                                    it with api_call_given() */
+    const json_t *body;          /* the handler's body (defaults filled in; borrowed) */
     int depends_on_load;         /* set by a handler whose answer depended on load or time (an
                                     item or run stopped by the deadline or a budget, a partial
                                     result): the answer is then never cached and gets no ETag
@@ -49,6 +59,7 @@ struct api_call {
  * either path. */
 typedef json_t *(*api_op_fn)(struct api_call *call, const json_t *body);
 
+/* One row of the route table (routes.c builds them from ops.def). */
 struct api_route {
     const char *method;      /* "POST" */
     const char *path;        /* "/v1/rigid/inertia" */
@@ -61,14 +72,26 @@ struct api_route {
     int quick;               /* 1: closed form, no integration or search loop; its cost grows at
                                 most linearly with the body, so a small request may be answered
                                 on the server's I/O thread (api_quick_route) */
-    const char *response_schema; /* JSON Schema of the 200 answer, as JSON text; NULL: not described */
+    const char *response_schema; /* JSON Schema of the 200 answer, as JSON text */
 };
 
-/* Route initialisers in api/ep_*.c are positional and end before
- * response_schema (NULL: the OpenAPI document then types the 200 answer as
- * {"type": "object"}) until the routes are generated from data (issue 17);
- * so the trailing member may be left out without a warning. */
-#pragma GCC diagnostic ignored "-Wmissing-field-initializers"
+/* Every handler's prototype (generated from the api/ops data files by
+ * scripts/ops_gen.py), so the compiler checks each definition against it. */
+#include "ops_handlers.h"
+
+/* The value at JSON pointer `pointer` ("/integrator", "/runs/2"; "" the
+ * root) of the body as the client sent it (c->given), or NULL when it was
+ * not given (or c->given is NULL). Borrowed. Use it only to tell a given key
+ * from a filled-in default, or to echo a block as given; read values from
+ * the handler's body. */
+const json_t *api_call_given(const struct api_call *c, const char *pointer);
+
+/* A block to echo in an answer (an integrator block as "requested"): when
+ * `value` is the handler's body's value at `pointer`, the same value as the
+ * client gave it (without filled-in defaults); otherwise (a block the
+ * handler built) `value` itself. Borrowed. */
+const json_t *api_call_as_given(const struct api_call *c, const json_t *value,
+                                const char *pointer);
 
 /* Record a validation error at a JSON pointer ("/bodies/0/mass"); 422. */
 void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)
@@ -99,5 +122,13 @@ double api_number(const json_t *obj, const char *key, double def);   /* def if a
 struct mech_vec3 api_vec3_of(const json_t *array3);                  /* a [x,y,z] array */
 struct mech_vec3 api_vec3_member(const json_t *obj, const char *key, struct mech_vec3 def);
 const char *api_string(const json_t *obj, const char *key, const char *def);
+
+/* Readers for a key the handler's body always has: one its schema requires,
+ * or one with a "default" (filled in before the handler runs, see
+ * api_schema_apply_defaults), so no handler restates a default. Absent (a
+ * handler that does not match its schema: a bug) reads as NaN, which every
+ * core function refuses, or as "" — never as a silent number. */
+double api_number_of(const json_t *obj, const char *key);
+const char *api_string_of(const json_t *obj, const char *key);
 
 #endif

@@ -43,59 +43,6 @@
 #define COMPARE_REFERENCE_METHOD "radau15"
 #define COMPARE_REFERENCE_RTOL 1e-10
 
-static const char compare_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"operation\",\"request\"],\"properties\":{"
-    "\"operation\":{\"const\":\"/v1/trajectory\",\"description\":\"the operation compared\"},"
-    "\"request\":" API_TRAJ_REQUEST_SCHEMA_WITH(",\"cost\":" API_ENVELOPE_COST_SCHEMA) ","
-    "\"runs\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":64,\"items\":"
-    API_TRAJ_INTEGRATOR_SCHEMA ",\"description\":\"integrator blocks, one row each; give "
-    "runs or sweep\"},"
-    "\"sweep\":" API_TRAJ_OBJ(
-        "\"methods\"",
-        "\"methods\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":14,\"uniqueItems\":true,"
-        "\"items\":{\"enum\":[" API_TRAJ_ADAPTIVE_METHODS "," API_TRAJ_FIXED_METHODS "]}},"
-        "\"tolerances\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"
-        "{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1},\"description\":\"rtol of "
-        "every adaptive method (atol = rtol x the scene's scale)\"},"
-        "\"dts\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"
-        "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15},\"description\":\"dt of "
-        "every fixed-step method, s\"}") ","
-    API_DRY_RUN_PROP
-    "}}";
-
-static const char compare_example[] =
-    "{\"operation\": \"/v1/trajectory\", \"request\": {\"particle\": {\"mass\": 1, "
-    "\"position\": [1, 0, 0], \"velocity\": [0, 1.2, 0]}, \"forces\": [{\"type\": "
-    "\"central_gravity\", \"gm\": 1}], \"t_end\": 20, \"samples\": 21}, \"sweep\": "
-    "{\"methods\": [\"rk8pd\", \"radau15\", \"verlet\", \"yoshida4\"], \"tolerances\": [1e-6, "
-    "1e-10], \"dts\": [0.01]}}";
-
-static const char compare_description[] =
-    "Runs one /v1/trajectory scene (request) with several integrator settings - runs: a list "
-    "of integrator blocks as in /v1/trajectory (a method, an accuracy preset or a "
-    "target_error; a preset or target_error on a scene with an exact solution is answered "
-    "from it, method closed_form with 0 steps, unless the block says \"closed_form\": false), "
-    "or sweep: methods x tolerances (rtol of the adaptive methods, atol = rtol "
-    "x the scene's scale as for target_error) and methods x dts (the fixed-step methods) - "
-    "at most 64 runs (the request's own integrator, error_estimate and cost are ignored). Every run is compared with the best reference available: the scene's "
-    "exact solution (kepler, harmonic_oscillator, uniform_gravity[_linear_drag]) or else a "
-    "radau15 run at its round-off setting (rtol 1e-10); reference says which. Each row, in "
-    "order: the settings, max/final position error and max velocity error (m, m/s, over the "
-    "common samples and the stop point), relative errors (over the largest |r|, |v| of the "
-    "reference), the drift of each conserved quantity, steps, rejected steps, rhs "
-    "evaluations; the CPU seconds of row i are cost.runs[i].cpu_seconds (measured times "
-    "live only under cost, so the rest is byte-identical; \"cost\": false drops them). "
-    "One step budget and deadline cover the reference run "
-    "and all runs, in order. When they run out, the runs that finished are answered (200) "
-    "with \"partial\": true, and the run that was stopped and every later one are rows "
-    "{\"status\": \"not_run\", \"reason\": ...} (the stopped one with its progress); a "
-    "partial answer is never cached (no ETag on GET). Only when no run finished, or the "
-    "reference run itself ran out, is the answer compute-budget-exceeded (422, naming the run, "
-    "progress.steps counting every step of the request). A run that fails numerically or whose "
-    "method does not apply is a row with status failed. \"partial\" is false when every run "
-    "ran. The numbers equal those of /v1/trajectory with the same settings.";
-
 struct run_spec {
     const json_t *block; /* borrowed from the body or owned by `owned` */
     char pointer[48];
@@ -198,7 +145,7 @@ static int mark_not_run(struct api_call *c, json_t *rows, json_t *row, json_t *c
     if (!row || json_array_append_new(rows, row)) return -1;
     not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, NULL);
     for (size_t j = k + 1; j < n; j++) {
-        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", specs[j].block, "status", "not_run",
+        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", api_call_as_given(c, specs[j].block, specs[j].pointer), "status", "not_run",
                               "reason", reason);
         json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", 0.0));
         if (!r || json_array_append_new(rows, r)) return -1;
@@ -206,7 +153,7 @@ static int mark_not_run(struct api_call *c, json_t *rows, json_t *row, json_t *c
     return 0;
 }
 
-static json_t *compare_op(struct api_call *c, const json_t *body)
+json_t *api_op_compare(struct api_call *c, const json_t *body)
 {
     struct api_traj_request base;
     if (!api_traj_request_parse(c, json_object_get(body, "request"), "/request", &base))
@@ -296,7 +243,7 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
             api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer);
             rq.dry_run = 1;
             json_t *row = json_object();
-            json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
+            json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
             json_object_set_new_nocheck(row, "status", json_string("dry_run"));
             json_object_set_new_nocheck(row, "selection", api_traj_selection(c, &rq, NULL));
             json_array_append_new(rows, row);
@@ -379,7 +326,7 @@ static json_t *compare_op(struct api_call *c, const json_t *body)
             goto done;
         }
         json_t *row = json_object();
-        json_object_set_new_nocheck(row, "requested", json_deep_copy(specs[k].block));
+        json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
         if (rq.closed_form) {
             json_object_set_new_nocheck(row, "method", json_string("closed_form"));
             json_object_set_new_nocheck(row, "order", json_null());
@@ -525,14 +472,3 @@ done:
     return res;
 }
 
-const struct api_route api_route_compare = {
-    "POST",
-    "/v1/compare",
-    "Run one scene with many integrator settings: error, drift, steps and CPU per run",
-    compare_description,
-    compare_schema,
-    compare_example,
-    compare_op,
-    1,
-    0,
-};

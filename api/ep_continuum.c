@@ -13,40 +13,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-#define CHAPTER                                                                                    \
-    "Continuum mechanics (the notes' last chapter is only a heading; mechd serves its "          \
-    "standard content at the course's level: waves on strings and rods, their speeds and "       \
-    "normal modes — /v1/continuum/string and /v1/continuum/rod). "
-
-/* clang-format off */
-#define C_POS(lo, hi, desc)                                                                        \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"minimum\":" #lo ",\"maximum\":" #hi ","        \
-    "\"description\":\"" desc "\"}"
-#define C_MODES                                                                                    \
-    "{\"type\":\"integer\",\"minimum\":1,\"maximum\":1000,\"default\":5,\"description\":\"how "   \
-    "many modes to list, 1 .. 1000 (the lowest ones)\"}"
-static const char string_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"tension\",\"length\"],"
-    "\"properties\":{"
-    "\"tension\":" C_POS(0, 1e12, "tension T, N") ","
-    "\"linear_density\":" C_POS(0, 1e12, "mass per length mu, kg/m (or give mass)") ","
-    "\"mass\":" C_POS(0, 1e12, "the string's mass, kg: mu = mass/length (or give linear_density)") ","
-    "\"length\":" C_POS(0, 1e9, "length L between the fixed ends, m") ","
-    "\"modes\":" C_MODES "}}";
-/* clang-format on */
-
-static const char string_description[] =
-    CHAPTER
-    "A string of tension T and linear density mu (or mass m, mu = m/L) fixed at both ends, "
-    "length L: transverse waves obey the wave equation mu y_tt = T y_ss with speed "
-    "wave_speed = sqrt(T/mu) (m/s), no dispersion. Normal modes n = 1, 2, ...: y_n(s, t) = "
-    "sin(n pi s/L) cos(omega_n t), wavenumber k_n = n pi/L, wavelength 2L/n, frequency f_n = "
-    "n c/(2L) (Hz) = n f_1, angular_frequency 2 pi f_n; nodes at s = jL/n. Answers "
-    "wave_speed, fundamental_frequency and modes [{n, wavenumber, wavelength, frequency, "
-    "angular_frequency}]. Exactly one of linear_density and mass.";
-
-static const char string_example[] = "{\"tension\": 100, \"linear_density\": 0.01, \"length\": 0.5}";
-
 static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode *m)
 {
     json_t *o = json_object();
@@ -59,7 +25,7 @@ static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode 
     return o;
 }
 
-static json_t *string_op(struct api_call *c, const json_t *body)
+json_t *api_op_continuum_string(struct api_call *c, const json_t *body)
 {
     const json_t *mu_j = json_object_get(body, "linear_density"), *m_j = json_object_get(body, "mass");
     if (mu_j && m_j) {
@@ -72,7 +38,7 @@ static json_t *string_op(struct api_call *c, const json_t *body)
     }
     const double L = api_number(body, "length", 1), T = api_number(body, "tension", 1);
     const double mu = mu_j ? json_number_value(mu_j) : json_number_value(m_j) / L;
-    const int nm = (int)api_number(body, "modes", 5);
+    const int nm = (int)api_number_of(body, "modes");
     double cw;
     struct mech_error e;
     mech_error_clear(&e);
@@ -100,71 +66,6 @@ static json_t *string_op(struct api_call *c, const json_t *body)
 }
 
 /* ---- rods --------------------------------------------------------------------- */
-
-/* clang-format off */
-static const char rod_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"length\",\"density\",\"youngs_modulus\",\"section\"],\"properties\":{"
-    "\"length\":" C_POS(0, 1e9, "length L, m") ","
-    "\"density\":" C_POS(0, 1e9, "density rho, kg/m^3") ","
-    "\"youngs_modulus\":" C_POS(0, 1e15, "Young's modulus E, Pa") ","
-    "\"section\":{\"description\":\"the cross-section: a solid circle, a rectangle (bending "
-    "across its height), or its area and second moment of area\",\"oneOf\":["
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"radius\"],"
-    "\"properties\":{\"radius\":" C_POS(0, 1e6, "radius r, m: A = pi r^2, I = pi r^4/4") "}},"
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"width\",\"height\"],"
-    "\"properties\":{\"width\":" C_POS(0, 1e6, "width b, m") ","
-    "\"height\":" C_POS(0, 1e6, "height h in the bending plane, m: A = b h, I = b h^3/12") "}},"
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"area\",\"second_moment\"],"
-    "\"properties\":{\"area\":" C_POS(0, 1e12, "area A, m^2") ","
-    "\"second_moment\":" C_POS(0, 1e24, "second moment of area I about the bending axis, m^4") ","
-    "\"polar_moment\":" C_POS(0, 1e24, "polar moment J = integral of r^2 dA, m^4 (torsional waves)") ","
-    "\"torsion_constant\":" C_POS(0, 1e24, "torsion constant K <= J, m^4 (default J: a circle "
-    "or tube)") "}}"
-    "]},"
-    "\"ends\":{\"type\":\"string\",\"enum\":[\"clamped-free\",\"clamped-clamped\",\"free-free\","
-    "\"pinned-pinned\"],\"default\":\"clamped-free\",\"description\":\"end conditions "
-    "(clamped-free: a cantilever)\"},"
-    "\"shear_modulus\":" C_POS(0, 1e15, "shear modulus G, Pa (torsional waves; or give "
-    "poisson_ratio)") ","
-    "\"poisson_ratio\":{\"type\":\"number\",\"exclusiveMinimum\":-1,\"maximum\":0.5,"
-    "\"description\":\"Poisson's ratio nu: G = E/(2(1 + nu)) for the torsional waves\"},"
-    "\"modes\":" C_MODES "}}";
-/* clang-format on */
-
-static const char rod_description[] =
-    CHAPTER
-    "A uniform rod of length L, density rho, Young's modulus E and cross-section (area A, "
-    "second moment I). longitudinal: axial waves rho u_tt = E u_ss, wave_speed = sqrt(E/rho), "
-    "modes k_n L = n pi (free-free, clamped-clamped, pinned-pinned: a pin holds the end "
-    "axially) or (n - 1/2) pi (clamped-free, a quarter-wave fundamental f_1 = c/(4L)). "
-    "bending: the Euler-Bernoulli beam rho A w_tt + E I w_ssss = 0, dispersive, omega = a k^2 "
-    "with a = sqrt(EI/(rho A)) (stiffness_ratio, m^2/s); phase speed a k, group speed 2 a k. "
-    "Modes: beta_L = k_n L is the n-th root of cos x cosh x = 1 (free-free, clamped-clamped: "
-    "4.7300407448627, 7.8532046240958, ...), cos x cosh x = -1 (clamped-free: "
-    "1.8751040687120, 4.6940911329742, ...) or sin x = 0 (pinned-pinned: n pi), solved as "
-    "cos x = +-sech x by bisection to the last bit (any n up to 1000; cosh never "
-    "overflows), omega_n = beta_L^2 a/L^2. sigma is the mode shape's ratio (Blevins 1979, "
-    "Table 8-1): w = cosh(beta s) - cos(beta s) - sigma (sinh(beta s) - sin(beta s)) "
-    "(clamped-clamped, clamped-free), cosh + cos - sigma (sinh + sin) (free-free), "
-    "sin(n pi s/L) (pinned-pinned, sigma 0). Free-free rods also have rigid-body modes at "
-    "omega = 0 (one axial, two bending), not listed. Each bending mode gives "
-    "k_radius_of_gyration = k_n sqrt(I/A): Euler-Bernoulli theory (no shear, no rotary "
-    "inertia) holds while it is small; above 0.1 the notes say so (Timoshenko corrections "
-    "of order (k r_g)^2 lower the true frequency). torsional (with shear_modulus G, or "
-    "poisson_ratio nu: G = E/(2(1 + nu)); null without either): Saint-Venant twist waves "
-    "rho J theta_tt = G K theta_ss, wave_speed = sqrt(G K/(rho J)) = sqrt(G/rho) for a "
-    "circle (K = J = pi r^4/2); a rectangle b x h has J = b h (b^2 + h^2)/12 and K = (b h^3/3)"
-    "(1 - (192/pi^5)(h/b) sum_{n odd} tanh(n pi b/2h)/n^5) (Timoshenko & Goodier; b >= h), "
-    "so a square bar is slower by sqrt(K/J) = 0.9184; with area and second_moment give "
-    "polar_moment (and torsion_constant, default J). Torsional modes have the axial "
-    "wavenumbers: a clamped end holds the twist, a free end carries no torque, so k_n L = n "
-    "pi or (n - 1/2) pi as for longitudinal waves (a pinned end is taken to hold the twist, "
-    "like a fork support).";
-
-static const char rod_example[] =
-    "{\"length\": 1, \"density\": 7850, \"youngs_modulus\": 2e11, \"poisson_ratio\": 0.3, "
-    "\"section\": {\"width\": 0.02, \"height\": 0.005}, \"ends\": \"clamped-free\"}";
 
 static int ends_of(const char *s, enum mech_rod_ends *e)
 {
@@ -246,7 +147,7 @@ static json_t *torsional(struct api_call *c, const json_t *body, const json_t *s
     return o;
 }
 
-static json_t *rod_op(struct api_call *c, const json_t *body)
+json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
 {
     const double L = api_number(body, "length", 1), rho = api_number(body, "density", 1);
     const double E = api_number(body, "youngs_modulus", 1);
@@ -265,11 +166,11 @@ static json_t *rod_op(struct api_call *c, const json_t *body)
         I = api_number(sec, "second_moment", 1);
     }
     enum mech_rod_ends ends;
-    if (!ends_of(api_string(body, "ends", "clamped-free"), &ends)) {
+    if (!ends_of(api_string_of(body, "ends"), &ends)) {
         api_call_invalid(c, "/ends", "unknown end conditions");
         return NULL;
     }
-    const int nm = (int)api_number(body, "modes", 5);
+    const int nm = (int)api_number_of(body, "modes");
     /* c = sqrt(E/rho) and a = sqrt(EI/(rho A)) as products of square roots:
      * no overflow or underflow of the quotients at the schema's extremes. */
     const double cl = sqrt(E) / sqrt(rho);
@@ -334,28 +235,3 @@ static json_t *rod_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_continuum_string = {
-    "POST",
-    "/v1/continuum/string",
-    "Continuum mechanics: transverse waves on a string with fixed ends — wave speed and "
-    "normal modes",
-    string_description,
-    string_schema,
-    string_example,
-    string_op,
-    0,
-    1, /* quick */
-};
-
-const struct api_route api_route_continuum_rod = {
-    "POST",
-    "/v1/continuum/rod",
-    "Continuum mechanics: axial, torsional and bending waves of a rod — speeds, the dispersion "
-    "of bending waves and the normal modes free, clamped, cantilevered or pinned",
-    rod_description,
-    rod_schema,
-    rod_example,
-    rod_op,
-    0,
-    1, /* quick */
-};

@@ -11,45 +11,7 @@
 #include "endpoint.h"
 #include "mech/euler_rates.h"
 
-/* clang-format off */
-#define S_TRIPLE(lim, desc)                                                             \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","    \
-    "\"minimum\":-" lim ",\"maximum\":" lim "},\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"euler_zxz\"],"
-    "\"properties\":{"
-    "\"euler_zxz\":" S_TRIPLE("1e6", "[phi, theta, psi], rad, z-x-z (notes §2.6), R = R_psi "
-                              "R_theta R_phi (passive)") ","
-    "\"rates\":" S_TRIPLE("1e100", "[phi', theta', psi'], rad/s") ","
-    "\"omega_body\":" S_TRIPLE("1e100", "omega in body components, rad/s (instead of rates)") ","
-    "\"omega_space\":" S_TRIPLE("1e100", "omega in space components, rad/s (instead of rates)")
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "Euler-angle kinematics for z-x-z angles euler_zxz = [phi, theta, psi] (rad; passive R "
-    "= R_psi R_theta R_phi, as /v1/rotation/convert) and exactly one of rates = [phi', "
-    "theta', psi'] (rad/s), omega_body or omega_space (rad/s; then the rates are solved "
-    "for). Answers rates {phi_dot, theta_dot, psi_dot}; omega_body = (phi' sin theta sin "
-    "psi + theta' cos psi, phi' sin theta cos psi - theta' sin psi, phi' cos theta + psi') "
-    "and omega_space = (theta' cos phi + psi' sin theta sin phi, theta' sin phi - psi' sin "
-    "theta cos phi, phi' + psi' cos theta) = R^T omega_body; omega_magnitude; rotation (R) "
-    "and rotation_rate (dR/dt by the product rule on R_psi R_theta R_phi, independent of "
-    "the omega formulas); omega_cross_body = -dR/dt R^T = [omega_body]x and "
-    "omega_cross_space = -R^T dR/dt = [omega_space]x ([w]x v = w x v): for the passive R, "
-    "dR/dt = -[omega_body]x R = -R [omega_space]x (the active A = R^T has dA/dt = "
-    "[omega_space]x A; ch. 0 HW 7: about z at rate w, dR/dt(0) = w [[0,1,0],[-1,0,0],"
-    "[0,0,0]]); residual = max |dR/dt + [omega_body]x R| (round-off); gimbal_lock (|sin "
-    "theta| <= 1e-15, theta = 0 or pi). At the lock the forward map is exact, but phi' and "
-    "psi' enter omega only as phi' + psi' (theta = 0) or psi' - phi' (theta = pi): given "
-    "omega there, rates.phi_dot and rates.psi_dot are null and rates.phi_dot_plus_psi_dot "
-    "(theta = 0) or rates.psi_dot_minus_phi_dot (theta = pi) is given, with a note; an "
-    "omega there with a component along (sin psi, cos psi, 0) in body axes would need an "
-    "infinite phi' and is refused with a 422 at /omega_body (or /omega_space).";
-
-static const char example[] = "{\"euler_zxz\":[0.3,0.6,0.1],\"rates\":[1.5,0,20]}";
-
-static json_t *euler_rates(struct api_call *c, const json_t *body)
+json_t *api_op_rotation_euler_rates(struct api_call *c, const json_t *body)
 {
     static const char *const forms[3] = {"rates", "omega_body", "omega_space"};
     int given = -1;
@@ -121,15 +83,3 @@ static json_t *euler_rates(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_rotation_euler_rates = {
-    "POST",
-    "/v1/rotation/euler-rates",
-    "Euler-angle kinematics: angular velocity in body and space axes from z-x-z angles and "
-    "rates (or the rates from omega), dR/dt and its relation to omega, gimbal lock typed",
-    description,
-    schema,
-    example,
-    euler_rates,
-    0,
-    1, /* quick */
-};

@@ -45,7 +45,7 @@ static void examples_build(void)
                                 "examples", list);
 }
 
-static json_t *examples_resource(struct api_call *c, const json_t *body)
+json_t *api_op_examples(struct api_call *c, const json_t *body)
 {
     (void)c;
     (void)body;
@@ -53,18 +53,3 @@ static json_t *examples_resource(struct api_call *c, const json_t *body)
     return examples_answer ? json_incref(examples_answer) : NULL;
 }
 
-const struct api_route api_route_examples = {
-    "GET",
-    "/v1/examples",
-    "The course notes' worked examples as ready requests, with the notes' answers",
-    "Every worked example of the notes (rotations, non-inertial frames, rigid bodies, special "
-    "relativity) and the classic extras the labs use (Kepler, Mercury, light bending, GPS, heavy "
-    "top, Dzhanibekov, Henon-Heiles): id, title, the notes' section, the operation to POST to, "
-    "a ready request body, and the notes' answer (a JSON pointer into the response, its value "
-    "and the rounding the notes print it with).",
-    NULL,
-    NULL,
-    examples_resource,
-    0,
-    0,
-};

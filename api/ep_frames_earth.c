@@ -18,11 +18,6 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* A 3-vector schema with each component in [-lim, lim]. */
-#define FE_VEC3(lim, desc)                                                                         \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-" lim ",\"maximum\":" lim "},\"description\":\"" desc "\"}"
-
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */
 static void put(json_t *obj, const char *key, json_t *value)
@@ -41,63 +36,7 @@ static json_t *out_of_memory(struct api_call *c, json_t *partial)
 
 /* ========================= frames/effective-force ========================== */
 
-/* clang-format off */
-static const char ef_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"frame\",\"particle\"],\"properties\":{"
-    "\"frame\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
-    "\"omega\":" FE_VEC3("1e6", "angular velocity of the frame's axes relative to an inertial "
-                               "frame, rad/s, components on the frame's axes; default [0,0,0]") ","
-    "\"omega_dot\":" FE_VEC3("1e9", "its time derivative, rad/s^2 (the same seen from either "
-                                   "frame); default [0,0,0]") ","
-    "\"acceleration\":" FE_VEC3("1e15", "acceleration of the frame's origin relative to an "
-                                       "inertial frame, m/s^2, components on the frame's axes; "
-                                       "default [0,0,0]")
-    "},\"description\":\"how the frame moves (at the instant considered)\"},"
-    "\"particle\":{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"mass\",\"position\"],\"properties\":{"
-    "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,\"description\":\"kg\"},"
-    "\"position\":" FE_VEC3("1e15", "m, measured from the frame's origin on the frame's axes") ","
-    "\"velocity\":" FE_VEC3("3e8", "m/s, the velocity seen in the frame (Newtonian); default "
-                                  "[0,0,0]")
-    "}},"
-    "\"force\":" FE_VEC3("1e30", "the real (inertial) force on the particle, N, components on "
-                                "the frame's axes; default [0,0,0]")
-    "}}";
-/* clang-format on */
-
-static const char ef_description[] =
-    "The effective force in an accelerating, rotating frame, term by term (notes §1.2, "
-    "\"a more general derivation\"). Writing the inertial position as x_I = X + x_j u_j "
-    "(X the frame's origin, u_j its axes, du_j/dt = w x u_j) and differentiating twice gives "
-    "a_I = A + a + 2 w x v + (dw/dt) x r + w x (w x r), so the force seen in the frame is "
-    "F_eff = m a = F - m A - m (dw/dt) x r - 2 m w x v - m w x (w x r): the real force F plus "
-    "the translational (-m A), Euler (-m (dw/dt) x r), Coriolis (-2 m w x v) and centrifugal "
-    "(-m w x (w x r) = m (w^2 r - (w.r) w), away from the axis) forces. (The notes' PDF text "
-    "lost these minus signs; the signs here are rebuilt from the derivation and checked "
-    "against an independent kinematic computation in tests/core/test_effective_force.c.) "
-    "Input: `frame` {omega (rad/s), omega_dot (rad/s^2), acceleration of the origin (m/s^2)}, "
-    "`particle` {mass (kg), position r (m), velocity v (m/s), both measured in the frame} and "
-    "the real `force` F (N); every vector has components on the frame's axes at this "
-    "instant. Answer (N unless stated, frame axes): `terms` {translational, euler, coriolis, "
-    "centrifugal}; `magnitudes` of each term; `fictitious_total` (their sum); `force` (F); "
-    "`effective_force` (F + the sum); `acceleration` (effective_force / m, m/s^2: the "
-    "acceleration seen in the frame); `inertial_acceleration` (F / m, m/s^2); "
-    "`velocity_rotation_part` (w x r, m/s: what the frame's rotation adds to v in the inertial "
-    "frame, v_I = v + w x r + the origin's velocity). Sums are compensated, so the total is "
-    "right to about one rounding even when terms cancel. Example: the notes' puck at rest on "
-    "the inertial floor above a table turning at w is seen circling; Coriolis (-2 m w^2 r) "
-    "plus centrifugal (+m w^2 r) leave the centripetal -m w^2 r. Refused (422, naming the "
-    "field): unknown keys, a vector without 3 components, mass <= 0, components out of range "
-    "(|omega| <= 1e6 rad/s, |omega_dot| <= 1e9, |A| <= 1e15, |r| <= 1e15 m, |v| <= 3e8 m/s, "
-    "|F| <= 1e30 N).";
-
-static const char ef_example[] =
-    "{\"frame\": {\"omega\": [0, 0, 2], \"omega_dot\": [0, 0, 0.1], \"acceleration\": "
-    "[0.5, 0, 0]}, \"particle\": {\"mass\": 0.3, \"position\": [0, 0.5, 0], \"velocity\": "
-    "[1, -0.6366197723675814, 0]}, \"force\": [0, 0, -2.94]}";
-
-static json_t *effective_force(struct api_call *c, const json_t *body)
+json_t *api_op_frames_effective_force(struct api_call *c, const json_t *body)
 {
     const struct mech_vec3 zero = {0, 0, 0};
     const json_t *fj = json_object_get(body, "frame");
@@ -149,108 +88,25 @@ static json_t *effective_force(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_frames_effective_force = {
-    "POST",
-    "/v1/frames/effective-force",
-    "The fictitious forces in an accelerating, rotating frame, term by term (translational, "
-    "Euler, Coriolis, centrifugal), and the effective force and acceleration seen in the frame",
-    ef_description,
-    ef_schema,
-    ef_example,
-    effective_force,
-    0,
-    1, /* quick */
-};
-
 /* ============================== earth/gravity =============================== */
-
-/* clang-format off */
-static const char gr_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"latitude_deg\"],\"properties\":{"
-    "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90,\"description\":"
-    "\"degrees, north positive: geocentric on the sphere, geodetic on the ellipsoid\"},"
-    "\"height\":{\"type\":\"number\",\"minimum\":-12000,\"maximum\":100000,\"default\":0,"
-    "\"description\":\"m above the sphere / the ellipsoid, from the deepest trench to 100 km\"},"
-    "\"radius\":{\"type\":\"number\",\"minimum\":1e6,\"maximum\":1e7,\"default\":6371008.8,"
-    "\"description\":\"m, radius of the spherical model; default the IUGG mean radius "
-    "6371008.8 m (use 6378137 for the equatorial radius)\"},"
-    "\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e18,\"default\":3.986004418e14,"
-    "\"description\":\"m^3/s^2, the sphere's GM (default IERS 2010 / WGS 84); at most one of gm, "
-    "g0\"},"
-    "\"g0\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1000,"
-    "\"description\":\"m/s^2, gravitation GM/R^2 at the sphere's surface (radius R, without the "
-    "centrifugal part): sets GM = g0 R^2; at most one of gm, g0\"},"
-    "\"omega\":{\"type\":\"number\",\"minimum\":0,\"maximum\":0.01,\"default\":7.292115e-05,"
-    "\"description\":\"rad/s, the rotation rate (default IERS 2010 / WGS 84, the one default of "
-    "every operation); at most one of omega, sidereal_day\"},"
-    "\"sidereal_day\":{\"type\":\"number\",\"minimum\":1000,\"maximum\":1e10,"
-    "\"description\":\"s, the rotation period relative to the stars: sets omega = 2 pi / "
-    "sidereal_day; at most one of omega, sidereal_day\"}"
-    "}}";
-/* clang-format on */
-
-static const char gr_description[] =
-    "Effective gravity on a rotating spherical Earth (notes §1.3, \"Motion Near the Earth\") "
-    "beside the WGS 84 normal gravity of the ellipsoid. Sphere: GM = 3.986004418e14 m^3/s^2 "
-    "(IERS Conventions 2010 / WGS 84), radius R = 6371008.8 m (IUGG mean radius; `radius` "
-    "overrides it), W = 7.292115e-5 rad/s (IERS / WGS 84 nominal rotation rate relative to "
-    "inertial space, 2 pi/W = 86164.0989 s; the default of every operation). Any of them can "
-    "be set: `gm` or `g0` (gravitation GM/R^2 at the radius R, so GM = g0 R^2), `omega` or "
-    "`sidereal_day` (W = 2 pi / sidereal_day), `radius`, so the notes' problems that give g "
-    "and w can be posed; `constants` echoes what was used. The point is "
-    "at r = R + height. Gravitation g0 = GM/r^2 points to the centre; the centrifugal "
-    "acceleration -w x (w x r) has magnitude W^2 r cos L away from the axis, so in local axes "
-    "(east, north, up) g_eff = (0, -W^2 r cos L sin L, -(g0 - W^2 r cos^2 L)): radial "
-    "(downward) component g0 - W^2 r cos^2 L (the notes' g = g0 - w^2 r cos^2 L) and "
-    "horizontal component W^2 r cos L |sin L| towards the equator. The plumb line hangs along "
-    "g_eff, deviating from the direction to the centre by alpha = atan(horizontal / radial); "
-    "over latitude it peaks where tan L = sqrt(1 - k) (k = W^2 r / g0, so just below 45 deg) "
-    "at tan alpha = k / (2 sqrt(1 - k)), about W^2 R/(2 g) = 0.0017 rad = 0.099 deg; the "
-    "deviation is answered in rad, mrad (the notes' HW 6 asks for milliradians), deg and as "
-    "tan (horizontal / radial). At the "
-    "equator the reduction g0 - |g_eff| is exactly W^2 r (0.0339 m/s^2). Ellipsoid: WGS 84 "
-    "normal gravity by Somigliana's closed formula gamma0 = gamma_e (1 + k sin^2 L) / "
-    "sqrt(1 - e^2 sin^2 L) (NIMA TR8350.2, 3rd ed. 2000, eq. 4-1; gamma_e = 9.7803253359, "
-    "gamma_p = 9.8321849378 m/s^2, k = 0.00193185265241, e^2 = 6.69437999014e-3) and the "
-    "free-air series gamma = gamma0 [1 - 2/a (1 + f + m - 2 f sin^2 L) h + 3 h^2/a^2] "
-    "(TR8350.2 eq. 4-3; a = 6378137 m, f = 1/298.257223563, m = 0.00344978650684), about "
-    "-0.3086 mGal per metre. Beside it the 1980 International Gravity Formula (GRS 80 series, "
-    "IAG 1980; sea level): igf1980 = 9.780327 (1 + 0.0053024 sin^2 L - 0.0000058 sin^2 2L), "
-    "within 1e-6 m/s^2 of the closed formula (0.1 mGal, the series' truncation; WGS 84 and "
-    "GRS 80 ellipsoids differ by less). Answer: `constants`; `sphere` {r, gravitation, centrifugal "
-    "{magnitude, up, north}, g_effective {vector (east, north, up), magnitude, radial, "
-    "horizontal, north}, reduction (g0 - |g_eff|, computed without cancellation), deviation "
-    "{rad, mrad, deg, tan, towards}, deviation_max {rad, mrad, deg, latitude_deg}, k}; `ellipsoid` {gamma_surface, "
-    "free_air_correction, gamma, igf1980 {gamma, minus_somigliana, formula}}; `difference` {sphere_minus_ellipsoid (|g_eff| - gamma, "
-    "m/s^2), relative, explanation}. The two differ by up to 0.12 %: the sphere leaves out the "
-    "Earth's flattening (the equator is 21 km farther from the centre than the poles) and the "
-    "equatorial bulge's mass (J2), which the ellipsoid's normal field includes; the latitude "
-    "is geocentric on the sphere but geodetic on the ellipsoid (they differ by up to 0.19 "
-    "deg). Refused (422, naming the field): latitude outside [-90, 90], height outside "
-    "[-12000, 100000] m, radius outside [1e6, 1e7] m, gm outside (0, 1e18], g0 outside (0, 1000], omega outside "
-    "[0, 0.01], sidereal_day outside [1000, 1e10] s, both gm and g0 or both omega and "
-    "sidereal_day, a rotation so fast that W^2 r >= GM/r^2 (at /omega), unknown keys.";
-
-static const char gr_example[] = "{\"latitude_deg\": 45, \"height\": 100}";
 
 /* The sphere of a request: radius, gm | g0, omega | sidereal_day (defaults:
  * IUGG mean radius, IERS GM and W). Returns 0 after reporting a field given
  * twice over. */
 static int earth_sphere_from(struct api_call *c, const json_t *body, struct mech_earth_sphere *e)
 {
-    e->radius = api_number(body, "radius", MECH_EARTH_RADIUS_MEAN);
-    e->gm = api_number(body, "gm", MECH_EARTH_GM);
-    e->omega = api_number(body, "omega", MECH_EARTH_OMEGA);
+    e->radius = api_number_of(body, "radius");
+    e->gm = api_number_of(body, "gm");
+    e->omega = api_number_of(body, "omega");
     if (json_object_get(body, "g0")) {
-        if (json_object_get(body, "gm")) {
+        if (api_call_given(c, "/gm")) {
             api_call_invalid(c, "/g0", "give at most one of gm and g0 (g0 sets GM = g0 R^2)");
             return 0;
         }
         e->gm = api_number(body, "g0", 0) * e->radius * e->radius;
     }
     if (json_object_get(body, "sidereal_day")) {
-        if (json_object_get(body, "omega")) {
+        if (api_call_given(c, "/omega")) {
             api_call_invalid(c, "/sidereal_day",
                              "give at most one of omega and sidereal_day (omega = 2 pi / "
                              "sidereal_day)");
@@ -261,10 +117,10 @@ static int earth_sphere_from(struct api_call *c, const json_t *body, struct mech
     return 1;
 }
 
-static json_t *earth_gravity(struct api_call *c, const json_t *body)
+json_t *api_op_earth_gravity(struct api_call *c, const json_t *body)
 {
     double lat = api_number(body, "latitude_deg", 0);
-    double h = api_number(body, "height", 0);
+    double h = api_number_of(body, "height");
     struct mech_earth_sphere earth;
     if (!earth_sphere_from(c, body, &earth)) return NULL;
     struct mech_earth_gravity g;
@@ -275,7 +131,7 @@ static json_t *earth_gravity(struct api_call *c, const json_t *body)
     if (st == MECH_OK) st = mech_earth_normal_gravity(lat, h, &n, &e);
     /* the rate the user set is what is too fast */
     if (st == MECH_EDOMAIN && !strcmp(e.param, "radius")) {
-        if (json_object_get(body, "omega")) snprintf(e.param, sizeof e.param, "omega");
+        if (api_call_given(c, "/omega")) snprintf(e.param, sizeof e.param, "omega");
         if (json_object_get(body, "sidereal_day"))
             snprintf(e.param, sizeof e.param, "sidereal_day");
     }
@@ -366,94 +222,9 @@ static json_t *earth_gravity(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_earth_gravity = {
-    "POST",
-    "/v1/earth/gravity",
-    "Effective gravity on a rotating spherical Earth at a latitude and height (magnitude, "
-    "radial and horizontal parts, plumb-line deviation), beside the WGS 84 ellipsoid's normal "
-    "gravity",
-    gr_description,
-    gr_schema,
-    gr_example,
-    earth_gravity,
-    0,
-    1, /* quick */
-};
-
 /* =============================== earth/tides ================================ */
 
 /* A body's properties: gm or mass (at most one), distance. */
-#define TD_BODY_PROPS                                                                              \
-    "{\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e22,"                  \
-    "\"description\":\"m^3/s^2, the body's GM (the precisely known quantity); at most one of gm, "  \
-    "mass\"},"                                                                                     \
-    "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e32,"                     \
-    "\"description\":\"kg; GM = G mass, G = 6.67430e-11\"},"                                      \
-    "\"distance\":{\"type\":\"number\",\"minimum\":1,\"maximum\":1e16,"                          \
-    "\"description\":\"m, from the Earth's centre; must exceed radius\"}}"
-
-/* clang-format off */
-static const char td_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"body\"],\"properties\":{"
-    "\"body\":{\"description\":\"the tide-raising body: \\\"moon\\\", \\\"sun\\\" or "
-    "{gm (m^3/s^2) or mass (kg), distance (m, centre to centre)}\",\"oneOf\":["
-    "{\"type\":\"string\",\"enum\":[\"moon\",\"sun\"]},"
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"distance\"],"
-    "\"properties\":" TD_BODY_PROPS "}]},"
-    "\"moon\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":" TD_BODY_PROPS ","
-    "\"description\":\"the Moon used by body \\\"moon\\\" and by spring_neap: any of gm or mass, "
-    "distance; default DE440 GM, 3.844e8 m\"},"
-    "\"sun\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":" TD_BODY_PROPS ","
-    "\"description\":\"the Sun used by body \\\"sun\\\" and by spring_neap: any of gm or mass, "
-    "distance; default DE440 GM, 1 au\"},"
-    "\"gm_earth\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e22,"
-    "\"default\":3.986004418e14,\"description\":\"m^3/s^2, the Earth's GM in the tide height "
-    "(g = GM_E / r^2); default IERS 2010\"},"
-    "\"angle_deg\":{\"type\":\"number\",\"minimum\":0,\"maximum\":180,\"default\":0,"
-    "\"description\":\"degrees, angle at the Earth's centre between the body and the point\"},"
-    "\"radius\":{\"type\":\"number\",\"minimum\":1,\"maximum\":1e12,"
-    "\"default\":6371008.8,\"description\":\"m, distance of the point from the Earth's centre\"}"
-    "}}";
-/* clang-format on */
-
-static const char td_description[] =
-    "Tides (notes §1.4). The Earth falls freely towards the body, so what is left at a point "
-    "is the difference between the body's pull there and at the centre: a = GM [(d e - r) / "
-    "|d e - r|^3 - e / d^2], e the unit vector to the body, d its distance, r the point at "
-    "radius r and angle theta from e. `acceleration.exact` is computed without the "
-    "cancellation a direct subtraction suffers (it loses log10(d/r) digits, 10 at r/d = "
-    "1e-10): with u = r/d, q = u (u - 2 cos theta) and E = (1+q)^(-3/2) - 1 = "
-    "expm1(-3/2 log1p(q)), a = GM/d^2 [E e - u (1+E) r_hat], and the departure from first "
-    "order uses R = E + 3/2 q (a binomial series) and E - 3u cos theta = R - 3/2 u^2, so "
-    "`acceleration.difference` (exact - first order) keeps full relative precision too "
-    "(tests: against the Legendre series of the tidal potential, 2e-16 at r/d = 1e-10). "
-    "`acceleration.first_order` is the notes' GM r/d^3 [2 cos theta along e, -sin theta "
-    "perpendicular]: radial GM r/d^3 (3 cos^2 theta - 1), tangential -(3/2) GM r/d^3 sin "
-    "2theta. Components, m/s^2: radial (up, along r_hat), tangential (along increasing theta, "
-    "i.e. away from the point below the body; negative values pull water towards it), along "
-    "(towards the body), perpendicular (in the plane of e and the point, towards the point's "
-    "side); plus magnitude and relative_difference = |exact - first| / |first| (about r/d). "
-    "`equilibrium_tide` (notes §1.4, after Taylor's equipotential surface): h(theta) = GM r^4 "
-    "(3 cos^2 theta - 1) / (2 GM_E d^3) above the undisturbed sphere, high water h(0) and low "
-    "water h(90 deg), range = high - low = 3 GM r^4 / (2 GM_E d^3), i.e. the notes' "
-    "g h = 3 GM r^2 / (2 d^3): 0.535 m for the Moon, 0.246 m for the Sun (the notes: 0.54 "
-    "and 0.25). `spring_neap` combines Moon and Sun (the built-in ones or `moon`/`sun` as given): "
-    "spring range = sum of the ranges (new and full Moon, aligned), neap range = |difference| "
-    "(quarter Moon, at 90 deg), their ratio, and the heights at this angle with the Sun "
-    "aligned (spring) or at 90 deg (neap); `moon` and `sun` objects (gm or mass, distance) "
-    "replace the built-in ones there and for body \"moon\"/\"sun\". Constants: G = 6.67430e-11 "
-    "(CODATA 2018); GM_moon = 4.902800118e12 m^3/s^2 (JPL DE440; mass GM/G = 7.3458e22 kg), "
-    "mean distance 3.844e8 m; GM_sun = 1.32712440041279419e20 m^3/s^2 (JPL DE440; mass GM/G = "
-    "1.98841e30 kg), distance 1 au = 1.495978707e11 m (IAU 2012); GM_E = 3.986004418e14 "
-    "m^3/s^2 (IERS 2010, TT-compatible; DE440's 3.98600435507e14 is the same in TDB units; "
-    "`gm_earth` overrides it); radius default 6371008.8 m (IUGG mean). A body is given by "
-    "its gm (the precisely known quantity) or its mass (GM = G mass). Refused (422, naming the field): unknown body "
-    "or keys, mass (0, 1e32] kg, distance [1, 1e16] m or radius [1, 1e12] m out of range, angle "
-    "outside [0, 180], a body not outside the point's sphere (distance <= radius), both gm and "
-    "mass for one body, a custom body with neither.";
-
-static const char td_example[] = "{\"body\": \"moon\", \"angle_deg\": 30}";
 
 struct td_body {
     const char *name;
@@ -511,12 +282,12 @@ static json_t *components(struct api_call *c, const struct mech_tide_components 
     return o;
 }
 
-static json_t *earth_tides(struct api_call *c, const json_t *body)
+json_t *api_op_earth_tides(struct api_call *c, const json_t *body)
 {
     const json_t *bj = json_object_get(body, "body");
-    double theta = api_number(body, "angle_deg", 0);
-    double radius = api_number(body, "radius", MECH_EARTH_RADIUS_MEAN);
-    double gm_earth = api_number(body, "gm_earth", MECH_EARTH_GM);
+    double theta = api_number_of(body, "angle_deg");
+    double radius = api_number_of(body, "radius");
+    double gm_earth = api_number_of(body, "gm_earth");
     struct td_body b, moon = td_moon(), sun = td_sun();
     const char *dist_pointer;
     if (!td_body_apply(c, json_object_get(body, "moon"), "/moon", &moon) ||
@@ -625,15 +396,3 @@ static json_t *earth_tides(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_earth_tides = {
-    "POST",
-    "/v1/earth/tides",
-    "Tidal acceleration of the Moon, the Sun or any body, exact (without cancellation) and to "
-    "first order in r/d, equilibrium tide heights, spring and neap tides",
-    td_description,
-    td_schema,
-    td_example,
-    earth_tides,
-    0,
-    0,
-};

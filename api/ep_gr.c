@@ -30,32 +30,6 @@
 #define GR_ARCSEC (180.0 * 3600.0 / M_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
 
-/* clang-format off */
-#define GR_M_SCHEMA                                                                           \
-    "\"M\":{\"description\":\"the central mass: kg, or {gm: m^3/s^2} (GM, the precisely "   \
-    "known quantity), or \\\"sun\\\" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "   \
-    "\\\"earth\\\" (GM = 3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = "          \
-    "6.67430e-11. Required with units SI; optional with units geometric (then it only adds "  \
-    "the SI scale GM/c^2 to the answer).\",\"oneOf\":["                                      \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e42},"                          \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"gm\"],"             \
-    "\"properties\":{\"gm\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e32,"   \
-    "\"description\":\"m^3/s^2\"}}},"                                                       \
-    "{\"enum\":[\"sun\",\"earth\"]}]}"
-#define GR_UNITS_SCHEMA                                                                       \
-    "\"units\":{\"enum\":[\"SI\",\"geometric\"],\"default\":\"SI\",\"description\":\"SI: "   \
-    "lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c = 1 "  \
-    "with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in GM/c, "   \
-    "speeds in c.\"}"
-#define GR_LEN(desc) \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,\"description\":\"" desc "\"}"
-#define GR_OBJ(req, props) \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[" req "],\"properties\":{" props "}}"
-#define GR_DIR                                                                                \
-    "\"radial_direction\":{\"enum\":[\"inward\",\"outward\"],\"default\":\"inward\","        \
-    "\"description\":\"sign of dr/dtau (dr/dlambda) at r0\"}"
-/* clang-format on */
-
 /* ---- units ------------------------------------------------------------------------ */
 
 struct gr_units {
@@ -71,7 +45,7 @@ struct gr_units {
 static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units *u)
 {
     memset(u, 0, sizeof *u);
-    u->geometric = !strcmp(api_string(body, "units", "SI"), "geometric");
+    u->geometric = !strcmp(api_string_of(body, "units"), "geometric");
     const json_t *M = json_object_get(body, "M");
     u->GM = u->m = u->s = NAN;
     if (M) {
@@ -166,73 +140,7 @@ static const char *stability_name(enum mech_schw_stability s)
 /* ===================================================================================== */
 /* POST /v1/gr/schwarzschild                                                              */
 
-/* clang-format off */
-static const char schw_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{" GR_M_SCHEMA
-    "," GR_UNITS_SCHEMA ","
-    "\"r\":" GR_LEN("radius (Schwarzschild r: circumference / 2 pi) for the clocks and the "
-                    "circular orbit; > r_s") ","
-    "\"infall_from\":" GR_LEN("radius of rest from which a body falls radially: adds "
-                              "radial_infall, the proper times to the horizon and to r = 0; "
-                              "> r_s") ","
-    "\"reference_r\":" GR_LEN("radius of a static reference clock (e.g. the ground: 6371000 m "
-                              "mean or 6378137 m equatorial for the Earth): compares it with a "
-                              "clock on a circular orbit at r (GPS). Needs r.") ","
-    "\"effective_potential\":" GR_OBJ(
-        "\"angular_momentum\"",
-        "\"angular_momentum\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,"
-        "\"description\":\"specific angular momentum L/m (m^2/s, or GM/c in geometric units)\"},"
-        "\"r_min\":" GR_LEN("first sample radius, >= r_s; default r_s") ","
-        "\"r_max\":" GR_LEN("last sample radius; default max(30 GM/c^2, 3 x the stable circular "
-                            "orbit)") ","
-        "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":10000,\"default\":200}")
-    "}}";
-/* clang-format on */
-
-static const char schw_description[] =
-    "The Schwarzschild geometry of a mass M (Hartle ch. 9, Carroll ch. 5): r_s = 2GM/c^2, the "
-    "photon sphere 3GM/c^2, the ISCO 6GM/c^2, the critical impact parameter 3 sqrt(3) GM/c^2. "
-    "With r: a static clock's rate dtau/dt = sqrt(1 - r_s/r) (Hartle eq. 9.17) and the red shift "
-    "of light sent from r to infinity z = 1/sqrt(1 - r_s/r) - 1 (eq. 9.18), both with their "
-    "deficits 1 - dtau/dt formed as x/(1 + sqrt(1 - x)) so GPS-size effects (1e-10) keep full "
-    "relative precision; the circular geodesic at r (none inside the photon sphere, unstable for "
-    "3 < r < 6 GM/c^2, marginal at 6, stable beyond): clock rate dtau/dt = sqrt(1 - 3GM/(c^2 r)), "
-    "E/(m c^2) = (1 - r_s/r)/sqrt(1 - 3GM/(c^2 r)), L/m = sqrt(GM r)/sqrt(1 - 3GM/(c^2 r)), the "
-    "speed a static observer measures sqrt(GM/(c^2 r - 2GM)) c, angular velocity dphi/dt = "
-    "sqrt(GM/r^3) and its periods. With reference_r: a static clock at reference_r (the ground; "
-    "the Earth's rotation, ~0.1 us/day at the equator, is left out) against a clock on the "
-    "circular orbit at r, relative to the reference clock: gravitational (static at r vs "
-    "reference), velocity (orbiting vs static at r) and net, as fractions and in microseconds "
-    "per day (86400 s of the reference clock), beside their first-order forms GM/c^2 (1/R - "
-    "1/r) and -GM/(2 c^2 r). Each is a ratio of rates minus one formed as (u0 - u1)/(a0 (a1 + "
-    "a0)) with u0 - u1 in closed form on the radii as given (2GM (r - R)/(c^2 r R), ...), so a "
-    "22.5 m tower (2.5e-15) or a 1 cm step keeps full precision and net is exactly 0 at r = 1.5 "
-    "R. GPS: M earth, reference_r 6371000, r 26561750 gives +45.7, -7.2 "
-    "and +38.5 us/day. effective_potential: samples of the massive potential in the E^2 "
-    "normalisation, (dr/dtau)^2/c^2 + V(r) = (E/mc^2)^2 with V = (1 - r_s/r)(1 + L^2/(c^2 r^2)) "
-    "(dimensionless; Hartle's V_eff of eq. 9.29 is (V - 1) c^2/2), and of the photon potential "
-    "W(r) = (1 - r_s/r)/r^2 (1/m^2 or (GM/c^2)^-2; (1/L^2)(dr/dlambda)^2 = 1/b^2 - W, Hartle eq. "
-    "11.10), with the extrema (circular orbits at r = (L^2/2GM)(1 +- sqrt(1 - 12 (GM/cL)^2)), "
-    "eq. 9.33; the photon maximum at 3GM/c^2). Constants: c = 299792458 m/s (exact), G = "
-    "6.67430e-11 (CODATA 2018, only for M in kg), GM_sun = 1.32712440041279419e20 (JPL "
-    "DE440), GM_earth = 3.986004418e14 m^3/s^2. Units: SI, or geometric (lengths GM/c^2, times GM/c^3); the answer's "
-    "units block says which (and, with M, mass_kg = GM/G). Also: isco_binding_efficiency = 1 - "
-    "sqrt(8/9) = 5.72 % (the rest energy released spiralling in to the ISCO); with r, "
-    "at_r.weak_field_potential = GM/(r c^2) and circular_orbit.binding_efficiency = 1 - "
-    "E/(m c^2) (1/(2r) far out, 0 at r = 4GM/c^2, negative inside: unbound), formed without "
-    "cancellation; with reference_r, clock_comparison.uniform_field: the notes' uniform-field "
-    "red shift g h/c^2 (g = GM/R^2 at reference_r, h = r - R), labelled as the approximation it "
-    "is, beside the exact gravitational part; with infall_from r0: radial_infall, a fall from "
-    "rest at r0 along the cycloid r = (r0/2)(1 + cos eta), tau = sqrt(r0^3/(8GM)) (eta + sin "
-    "eta): proper_time_to_horizon, proper_time_to_singularity = (pi/2) sqrt(r0^3/(2GM)) "
-    "(the Newtonian free-fall time, exactly), proper_time_horizon_to_singularity (at most pi "
-    "GM/c^3; 4/3 GM/c^3 from far away), and coordinate_time_to_horizon null (infinite).";
-
-static const char schw_example[] =
-    "{\"M\": \"earth\", \"r\": 26561750, \"reference_r\": 6371000, "
-    "\"effective_potential\": {\"angular_momentum\": 1e11, \"samples\": 5}}";
-
-static json_t *schwarzschild(struct api_call *c, const json_t *body)
+json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 {
     struct gr_units u;
     if (!gr_units_read(c, body, &u)) return NULL;
@@ -406,7 +314,7 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
             json_decref(out);
             return NULL;
         }
-        const size_t n = (size_t)api_number(ej, "samples", 200);
+        const size_t n = (size_t)api_number_of(ej, "samples");
         double *rr = malloc(n * sizeof *rr), *vm = malloc(n * sizeof *vm),
                *vp = malloc(n * sizeof *vp);
         double *v1 = malloc(n * sizeof *v1);
@@ -468,115 +376,8 @@ static json_t *schwarzschild(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_gr_schwarzschild = {
-    "POST",
-    "/v1/gr/schwarzschild",
-    "Schwarzschild radius, clock rates and red shift, circular orbits and their stability, "
-    "ISCO, photon sphere, effective potentials; GPS-style clock comparison",
-    schw_description,
-    schw_schema,
-    schw_example,
-    schwarzschild,
-    0,
-    0,
-};
-
 /* ===================================================================================== */
 /* POST /v1/gr/geodesic                                                                   */
-
-/* clang-format off */
-static const char geo_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"kind\",\"initial\"],"
-    "\"properties\":{" GR_M_SCHEMA "," GR_UNITS_SCHEMA ","
-    "\"kind\":{\"enum\":[\"timelike\",\"null\"],\"description\":\"timelike: a massive "
-    "particle (proper time tau); null: light (affine parameter lambda, normalised to "
-    "dt/dlambda -> 1 far away)\"},"
-    "\"r0\":" GR_LEN("start radius (not with the orbit forms, which start at periapsis); "
-                    "for light given by impact_parameter, default 100 b (at least 1000 GM/c^2), "
-                    "a ray from far away") ","
-    "\"phi0\":{\"type\":\"number\",\"minimum\":-1000,\"maximum\":1000,\"default\":0,"
-    "\"description\":\"rad\"},"
-    "\"initial\":{\"description\":\"one of: conserved energy and angular momentum "
-    "(timelike); the velocity measured by a static observer at r0; an impact parameter "
-    "(null); the turning points or a, e of a bound orbit (timelike, start at periapsis)\","
-    "\"oneOf\":["
-    GR_OBJ("\"energy\",\"angular_momentum\"",
-           "\"energy\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e6,"
-           "\"description\":\"E/(m c^2), specific energy at infinity (1 - E is the binding)\"},"
-           "\"angular_momentum\":{\"type\":\"number\",\"minimum\":-1e30,\"maximum\":1e30,"
-           "\"description\":\"L/m, m^2/s (GM/c geometric); the sign is the sense of phi\"},"
-           GR_DIR) ","
-    GR_OBJ("\"local_velocity\"",
-           "\"local_velocity\":" GR_OBJ("\"radial\",\"tangential\"",
-               "\"radial\":{\"type\":\"number\",\"minimum\":-1e9,\"maximum\":1e9},"
-               "\"tangential\":{\"type\":\"number\",\"minimum\":-1e9,\"maximum\":1e9}")) ","
-    GR_OBJ("\"impact_parameter\"",
-           "\"impact_parameter\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e20,"
-           "\"description\":\"b = L/E (m, GM/c^2 geometric); light only\"}," GR_DIR) ","
-    GR_OBJ("\"periapsis\",\"apoapsis\"",
-           "\"periapsis\":" GR_LEN("r_p") ",\"apoapsis\":" GR_LEN("r_a >= r_p")) ","
-    GR_OBJ("\"semi_major_axis\",\"eccentricity\"",
-           "\"semi_major_axis\":" GR_LEN("a = (r_p + r_a)/2") ","
-           "\"eccentricity\":{\"type\":\"number\",\"minimum\":0,\"exclusiveMaximum\":1,"
-           "\"description\":\"e = (r_a - r_p)/(r_a + r_p)\"}")
-    "]},"
-    "\"tau_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,"
-    "\"description\":\"timelike: proper time to integrate (s, GM/c^3 geometric)\"},"
-    "\"orbits\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":100000,\"description\":"
-    "\"timelike bound orbits: integrate this many radial periods (exact, by quadrature)\"},"
-    "\"lambda_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e20,"
-    "\"description\":\"null: affine parameter to integrate (s, GM/c^3 geometric); default "
-    "1.02 x the straight-line path from r0 to r_escape + 600 pi GM/c^3 (100 loops of the "
-    "photon sphere)\"},"
-    "\"r_escape\":" GR_LEN("escape when r passes it moving outward; default 2 r0 (2 r_a for "
-                           "bound orbits)") ","
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":201},"
-    "\"constraint_bound\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.5,"
-    "\"default\":1e-3,\"description\":\"stop with a numerical-failure error when the "
-    "constraint g(u,u) = -1 (0 for light) drifts by more than this, relative to the size of "
-    "its terms\"},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
-    API_DRY_RUN_PROP
-    "}}";
-/* clang-format on */
-
-static const char geo_description[] =
-    "An equatorial geodesic of the Schwarzschild metric (Hartle §9.2-9.3, 11.1; Carroll §5.4). "
-    "Massive (kind timelike, proper time tau) or light (kind null, affine lambda with E = 1 so "
-    "lambda -> t far away; given in time units). Initial data: {energy, angular_momentum, "
-    "radial_direction} (E/(mc^2) and L/m, timelike), {local_velocity: {radial, tangential}} "
-    "measured by a static observer at r0 (m/s or c; for light only the direction counts), "
-    "{impact_parameter, radial_direction} (light), or a bound orbit {periapsis, apoapsis} or "
-    "{semi_major_axis, eccentricity} (r_p = a(1 - e), r_a = a(1 + e): the turning points; "
-    "start at periapsis; then no r0). Integrated, in a form without turning-point "
-    "singularities, as the second-order radial equation d^2r/dtau^2 = -GM/r^2 + L^2/r^3 - "
-    "3GM L^2/(c^2 r^4) (no GM/r^2 term for light) with dphi/dtau = L/r^2 and dt/dtau = "
-    "E/(1 - r_s/r), on a state scaled to O(1) (r/r0 and tau in units of sqrt(r0^3/GM), or "
-    "lambda in r0/c), by the shared integrator block (first-order methods; accuracy presets "
-    "pick rk8pd). The constraint g(u,u) = -1 (0) is checked at every step: "
-    "diagnostics.constraint reports its largest drift relative to the size of its terms, and "
-    "past constraint_bound the run stops with a numerical-failure problem naming "
-    "/constraint_bound. Stops at capture (r falls to r_s (1 + 1e-6): captured true) or escape "
-    "(r passes r_escape outward). Answers samples of tau (or lambda), t, r, phi; "
-    "for bound orbits the periapses located by the driver's event root-finding on dr/dtau = 0 "
-    "and precession: the measured advance per orbit (phi between the first and last periapsis "
-    "over the orbits between, minus 2 pi) beside the exact one, 4K(k)/sqrt(2(u3 - u1)) - 2 pi "
-    "with the roots u1 < u2 < u3 of (du/dphi)^2 = 2(u - u1)(u - u2)(u - u3) in u = GM/(c^2 r) "
-    "(Byrd & Friedman 233.00; formed without cancellation), the same by an independent "
-    "quadrature, and the 1PN 6 pi GM/(c^2 a (1 - e^2)); in SI also per Julian century of "
-    "coordinate time (arcsec). For light that came in and escaped, deflection: measured "
-    "(integrated Delta phi plus the asymptotic tails beyond r0 and r_escape by quadrature, "
-    "minus pi) beside the exact 2 int_0^{u_max} du / sqrt(1/b^2 - u^2 (1 - 2u)) - pi by a "
-    "quadrature without cancellation (exact) and as an elliptic integral (exact_elliptic), "
-    "4GM/(c^2 b) and the second order + 15 pi (GM/c^2 "
-    "b)^2/4. Typed errors: r0 at or inside the horizon (/r0), E^2 below V(r0) (/initial/"
-    "energy), a photon that cannot be at r0 (/initial/impact_parameter), a speed >= c "
-    "(/initial/local_velocity). Constants as in /v1/gr/schwarzschild.";
-
-static const char geo_example[] =
-    "{\"M\": \"sun\", \"kind\": \"timelike\", \"initial\": {\"semi_major_axis\": 5.7909050e10, "
-    "\"eccentricity\": 0.20563593}, \"orbits\": 3, \"samples\": 5, "
-    "\"integrator\": {\"accuracy\": \"precise\"}}";
 
 static const char *class_name(enum mech_geodesic_class k)
 {
@@ -606,7 +407,7 @@ static json_t *init_fail(struct api_call *c, enum mech_status st, struct mech_er
     return api_call_fail_core(c, st, e, ptr);
 }
 
-static json_t *geodesic(struct api_call *c, const json_t *body)
+json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
 {
     struct gr_units u;
     if (!gr_units_read(c, body, &u)) return NULL;
@@ -660,7 +461,7 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     struct mech_geodesic_init in;
-    const double phi0 = api_number(body, "phi0", 0);
+    const double phi0 = api_number_of(body, "phi0");
     /* A ray from far away (impact_parameter, no r0) starts at 100 b, at least 1000 GM/c^2:
      * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
      * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
@@ -671,7 +472,7 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
                                     : NAN;
     enum mech_status st;
     if (form_energy) {
-        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
                                        gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
                                        &in, &e);
@@ -681,7 +482,7 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
                                       phi0, gr_speed_in(&u, api_number(lv, "radial", 0)),
                                       gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
     } else if (form_impact) {
-        int dir = !strcmp(api_string(ini, "radial_direction", "inward"), "outward") ? 1 : -1;
+        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_impact(
             r0, phi0, gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
     } else {
@@ -745,9 +546,9 @@ static json_t *geodesic(struct api_call *c, const json_t *body)
         p.param_end = lj ? gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
     } else
         p.param_end = tj ? gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
-    p.constraint_bound = api_number(body, "constraint_bound", 1e-3);
+    p.constraint_bound = api_number_of(body, "constraint_bound");
     if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
-    p.samples = (size_t)api_number(body, "samples", 201);
+    p.samples = (size_t)api_number_of(body, "samples");
     if (!isfinite(p.param_end) || !(p.param_end / T > 0)) {
         api_call_invalid(c, photon ? "/lambda_end" : "/tau_end",
                          "the run's length is not representable");
@@ -1007,15 +808,3 @@ done:
     return out;
 }
 
-const struct api_route api_route_gr_geodesic = {
-    "POST",
-    "/v1/gr/geodesic",
-    "Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light "
-    "deflection measured beside the exact values and 1PN formulas",
-    geo_description,
-    geo_schema,
-    geo_example,
-    geodesic,
-    1,
-    0,
-};

@@ -18,7 +18,6 @@
 #include "respond.h"
 #include "schema.h"
 
-#define API_BATCH_MAX 100                 /* operations in one /v1/batch */
 #define CHECK_DEFAULT_RELATIVE 1e-2       /* tolerance when none is given */
 #define CHECK_CLOSED_FORM_RELATIVE 1e-12  /* numerical error assumed without evidence */
 #define CHECK_EVIDENCE_FACTOR 10.0        /* safety factor on the operation's own error figures */
@@ -380,84 +379,6 @@ static int numeric_tree(const json_t *j, int depth)
 
 /* ---- POST /v1/check ------------------------------------------------------------------ */
 
-#define OPERATION_PATH                                                                             \
-    "{\"type\":\"string\",\"description\":\"path of a POST operation, e.g. "                       \
-    "\\\"/v1/rigid/inertia\\\" (not /v1/check or /v1/batch)\"}"
-
-#define KIND_ENUM                                                                                  \
-    "[\"number\",\"vector\",\"matrix\",\"axis\",\"quaternion\",\"angle\",\"subspace\","         \
-    "\"eigenvectors\",\"axis_angle\"]"
-
-static const char check_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"operation\",\"request\",\"answer\"],\"properties\":{"
-    "\"operation\":" OPERATION_PATH ","
-    "\"request\":{\"type\":\"object\",\"description\":\"the operation's request body; validated "
-    "against that operation's schema (errors are reported under /request)\"},"
-    "\"answer\":{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"pointer\",\"value\"],\"properties\":{"
-    "\"pointer\":{\"type\":\"string\",\"description\":\"RFC 6901 JSON pointer into the "
-    "operation's answer, e.g. /principal/moments/0\"},"
-    "\"value\":{\"type\":[\"number\",\"array\",\"object\"],\"description\":\"the student's "
-    "number, or an array of the shape of the expected value (nested arrays for matrices); an "
-    "object {\\\"axis\\\": [x,y,z], \\\"angle\\\": a} for kind axis_angle\"},"
-    "\"kind\":{\"enum\":" KIND_ENUM ",\"description\":\"what the quantity is, and so which "
-    "answers are the same: number (element-wise), vector and matrix (compared as a whole), "
-    "axis (a direction: either sign, any length), quaternion (q or -q), angle (modulo 2 pi), "
-    "subspace (rows spanning the same subspace), eigenvectors (rows, each of either sign; rows "
-    "of equal eigenvalues compared as their subspace), axis_angle (the same rotation); default: "
-    "mechd's table for the field (e.g. eigenvectors for /v1/rigid/inertia /principal/axes), "
-    "else number\"},"
-    "\"unit\":{\"type\":\"string\",\"description\":\"the unit of the "
-    "student's value (km, eV, deg, rpm, g cm^2, ...); mechd converts it to the field's unit "
-    "(SI). Default: the field's unit\"}}},"
-    "\"tolerance\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
-    "\"relative\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e6},"
-    "\"absolute\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e300},"
-    "\"significant_figures\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":17},"
-    "\"scale\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e300,\"description\":\"the size "
-    "of the problem, in the field's unit: an expected value and an answer both within the "
-    "tolerance applied to the scale count as zero (default: the largest |number| of the "
-    "expected value and its siblings; pi for angles)\"}},"
-    "\"description\":\"correct when the error is within ANY criterion given (or within the "
-    "recommended tolerance); default {\\\"relative\\\": 0.01}\"},"
-    "\"reveal\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true: the feedback "
-    "names the expected value (in the student's unit); false: only its shape, kind and "
-    "unit\"}}}";
-
-static const char check_example[] =
-    "{\"operation\":\"/v1/rigid/inertia\",\"request\":{\"bodies\":[{\"shape\":\"box\",\"mass\":12,"
-    "\"size\":[1,2,3],\"position\":[0,0,0]}]},\"answer\":{\"pointer\":\"/principal/moments/0\","
-    "\"value\":5.001},\"tolerance\":{\"significant_figures\":3}}";
-
-static const char check_description[] =
-    "Runs `operation` on `request` in-process (exactly as POST to that path would; errors in the "
-    "request are reported with pointers under /request) and compares the value at "
-    "`answer.pointer` (RFC 6901) of its answer with `answer.value`, as the quantity's `kind` "
-    "says (answer.kind, else mechd's table for the field, else number; see docs/grading.md): "
-    "number and angle element-wise (angles modulo 2 pi), vector and matrix as a whole "
-    "(|a - e| against the tolerance at |e|), axis up to sign and length, quaternion up to sign, "
-    "axis_angle as the same rotation (error = the angle between the rotations), subspace and "
-    "eigenvectors as spans (rows of equal eigenvalues may be any orthonormal basis of their "
-    "subspace). `answer.unit` (km, eV, deg, ...) is converted to the field's SI unit; a unit of "
-    "another dimension is 422 at /answer/unit. A quantity is correct when its error <= the "
-    "largest of: relative*|expected|, absolute, half a unit in the n-th significant figure of "
-    "|expected| (significant_figures: n), and the recommended tolerance; i.e. passing ANY given "
-    "criterion is enough, and no tolerance is ever tighter than mechd's own numerical error; an "
-    "expected value and an answer that are both within the tolerance at the problem's scale "
-    "(tolerance.scale, default the largest |number| of the expected value and its siblings, at "
-    "least pi for angles) count as zero. Without `tolerance`, relative 0.01 applies. "
-    "recommended_tolerance: relative = max(1e-12, 10 x the largest relative-error figure found "
-    "in the answer's diagnostics on the way to the pointer: max_relative_* errors and drifts of "
-    "conserved quantities, target_error of the chosen integrator; not differences from a "
-    "first-order reference), absolute = relative x the "
-    "largest |number| among the expected value and its siblings (so a component that should be "
-    "0 is not judged relative to 0). Answer: correct, feedback (for the student: the expected "
-    "shape, kind and unit, never the value unless reveal is true), kind, unit, expected (for the "
-    "grader), absolute_error, relative_error (largest over quantities with expected != 0; null "
-    "if there is none), tolerance_applied, recommended_tolerance, and wrong (pointers of the "
-    "wrong elements or rows, at most 20).";
-
 /* What a kind means, for the feedback. */
 static const char *kind_words(enum api_check_kind k)
 {
@@ -624,7 +545,7 @@ static int grade_whole(struct api_call *c, struct grade *g, const json_t *want,
     return 0;
 }
 
-static json_t *check(struct api_call *c, const json_t *body)
+json_t *api_op_check(struct api_call *c, const json_t *body)
 {
     const char *op = api_string(body, "operation", "");
     const json_t *request = json_object_get(body, "request");
@@ -818,49 +739,9 @@ static json_t *check(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_check = {
-    "POST",
-    "/v1/check",
-    "Grade a student's answer: the expected value at a JSON pointer of any operation's answer, "
-    "the error, and a recommended tolerance.",
-    check_description,
-    check_schema,
-    check_example,
-    check,
-    0,
-    0,
-};
-
 /* ---- POST /v1/batch --------------------------------------------------------------- */
 
-static const char batch_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"operations\"],"
-    "\"properties\":{\"operations\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":100,"
-    "\"items\":{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"operation\",\"request\"],\"properties\":{"
-    "\"operation\":" OPERATION_PATH ","
-    "\"request\":{\"type\":\"object\",\"description\":\"the operation's request body\"}}}}}}";
-
-static const char batch_example[] =
-    "{\"operations\":[{\"operation\":\"/v1/rigid/inertia\",\"request\":{\"bodies\":[{\"shape\":"
-    "\"box\",\"mass\":12,\"size\":[1,2,3],\"position\":[0,0,0]}]}},{\"operation\":"
-    "\"/v1/relativity/boost\",\"request\":{\"vectors\":[[1,0,0,0]],\"velocity\":{\"beta\":"
-    "[0.6,0,0]}}}]}";
-
-static const char batch_description[] =
-    "Runs up to 100 operations, each exactly as POST to its path would, and answers "
-    "{\"results\": [...]} in the same order: {\"status\": 200, \"body\": answer} or "
-    "{\"status\": 4xx/5xx, \"problem\": problem details}. A failing operation does not affect "
-    "the others; its error pointers are prefixed with /operations/<i>/request and its instance is "
-    "/v1/batch#/operations/<i>. All operations share this request's deadline and step budget per "
-    "integration: an operation running when the deadline passes stops there, and the remaining "
-    "ones answer compute-budget-exceeded; such a partial answer is never cached (Cache-Control: "
-    "no-store, no ETag, also for GET ?request=). The samples of all operations together count "
-    "against the server's --max-samples (default 200000): a batch asking for more is refused "
-    "whole with answer-too-large (422) before anything runs. /v1/check and /v1/batch cannot be "
-    "nested (422 for that entry). The batch itself is 200 whenever its envelope is valid.";
-
-static json_t *batch(struct api_call *c, const json_t *body)
+json_t *api_op_batch(struct api_call *c, const json_t *body)
 {
     const json_t *ops = json_object_get(body, "operations");
     json_t *results = json_array();
@@ -916,14 +797,3 @@ static json_t *batch(struct api_call *c, const json_t *body)
     return json_pack("{s:o}", "results", results);
 }
 
-const struct api_route api_route_batch = {
-    "POST",
-    "/v1/batch",
-    "Several operations in one request, each answered independently, in order.",
-    batch_description,
-    batch_schema,
-    batch_example,
-    batch,
-    0,
-    0,
-};

@@ -28,105 +28,6 @@
 
 static const double H_PI = 3.14159265358979323846;
 
-/* ---- schema ------------------------------------------------------------------ */
-/* clang-format off */
-#define H_POS(hi, desc) \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":" hi ",\"description\":\"" desc "\"}"
-#define H_NUM(lo, hi, desc) \
-    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"description\":\"" desc "\"}"
-#define H_OBJ(req, props) \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[" req "],\"properties\":{" props "}}"
-#define H_ARR(lo, hi, item) \
-    "{\"type\":\"array\",\"minItems\":" lo ",\"maxItems\":" hi ",\"items\":" item "}"
-#define H_MASS "\"mass\":" H_POS("1e30", "kg")
-#define H_G "\"g\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e15,\"default\":9.80665,\"description\":\"m/s^2\"}"
-#define H_SYSTEM_SCHEMA                                                                          \
-    "{\"description\":\"a system of the catalog, chosen by name (see the route description)\","  \
-    "\"oneOf\":["                                                                                 \
-    H_OBJ("\"name\",\"mass\"", "\"name\":{\"const\":\"oscillator\"}," H_MASS ","                  \
-          "\"k\":" H_ARR("1", "2", H_POS("1e50", "N/m")) ","                                     \
-          "\"omega\":" H_ARR("1", "2", H_POS("1e9", "rad/s"))) ","                               \
-    H_OBJ("\"name\",\"mass\",\"length\"", "\"name\":{\"const\":\"pendulum\"}," H_MASS ","         \
-          "\"length\":" H_POS("1e15", "m") "," H_G) ","                                           \
-    H_OBJ("\"name\",\"mass\",\"length\"", "\"name\":{\"const\":\"spherical_pendulum\"}," H_MASS "," \
-          "\"length\":" H_POS("1e15", "m") "," H_G) ","                                           \
-    H_OBJ("\"name\",\"mass\",\"radius\",\"k\"", "\"name\":{\"const\":\"cylinder\"}," H_MASS ","   \
-          "\"radius\":" H_POS("1e15", "m") ","                                                   \
-          "\"k\":" H_NUM("0", "1e50", "N/m: F = -k r towards the origin")) ","                   \
-    H_OBJ("\"name\",\"mass\",\"k\",\"n\"", "\"name\":{\"const\":\"central\"}," H_MASS ","         \
-          "\"k\":" H_NUM("-1e50", "1e50", "V = k r^n, J m^-n, non-zero (Kepler: k = -G M m)") "," \
-          "\"n\":" H_NUM("-20", "20", "exponent, non-zero (Kepler: -1)")) ","                    \
-    H_OBJ("\"name\"", "\"name\":{\"const\":\"henon_heiles\"}") ","                                \
-    H_OBJ("\"name\",\"potential\",\"mass\",\"k\"", "\"name\":{\"const\":\"potential_3d\"},"       \
-          "\"potential\":{\"const\":\"harmonic\"}," H_MASS ","                                   \
-          "\"k\":" H_ARR("3", "3", H_POS("1e50", "N/m")) ) ","                                  \
-    H_OBJ("\"name\",\"potential\",\"mass\",\"k\",\"n\"", "\"name\":{\"const\":\"potential_3d\"}," \
-          "\"potential\":{\"const\":\"power\"}," H_MASS ","                                      \
-          "\"k\":" H_NUM("-1e50", "1e50", "V = k r^n, non-zero") ","                             \
-          "\"n\":" H_NUM("-20", "20", "non-zero")) ","                                            \
-    H_OBJ("\"name\",\"potential\",\"mass\",\"gm\"", "\"name\":{\"const\":\"potential_3d\"},"      \
-          "\"potential\":{\"const\":\"kepler\"}," H_MASS ","                                     \
-          "\"gm\":" H_POS("1e30", "G M, m^3/s^2: V = -G M m / r"))                               \
-    "]}"
-#define H_Q "\"q\":" H_ARR("1", "3", H_NUM("-1e15", "1e15", "")) 
-#define H_P "\"p\":" H_ARR("1", "3", H_NUM("-1e50", "1e50", ""))
-#define H_TEND "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"}"
-/* clang-format on */
-
-static const char flow_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"system\",\"q\",\"p\",\"t_end\"],\"properties\":{"
-    "\"system\":" H_SYSTEM_SCHEMA "," H_Q "," H_P "," H_TEND ","
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," API_DRY_RUN_PROP "}}";
-
-static const char liouville_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"system\",\"curve\",\"t_end\"],\"properties\":{"
-    "\"system\":" H_SYSTEM_SCHEMA ","
-    "\"curve\":{\"description\":\"the closed curve of initial conditions, points (q..., p...)\","
-    "\"oneOf\":["
-    H_OBJ("\"type\",\"vertices\"", "\"type\":{\"const\":\"polygon\"},"
-          "\"vertices\":" H_ARR("3", "1000", H_ARR("2", "6", H_NUM("-1e50", "1e50", "")))) ","
-    H_OBJ("\"type\",\"points\"", "\"type\":{\"const\":\"cloud\"},"
-          "\"points\":" H_ARR("3", "1000", H_ARR("2", "6", H_NUM("-1e50", "1e50", "")))) ","
-    H_OBJ("\"type\",\"center\"", "\"type\":{\"const\":\"ellipse\"},"
-          "\"center\":" H_ARR("2", "6", H_NUM("-1e50", "1e50", "")) ","
-          "\"semi_axes\":" H_ARR("2", "2", H_POS("1e50", "")) ","
-          "\"u\":" H_ARR("2", "6", H_NUM("-1e50", "1e50", "")) ","
-          "\"w\":" H_ARR("2", "6", H_NUM("-1e50", "1e50", "")))
-    "]},"
-    "\"reference\":" H_ARR("2", "6", H_NUM("-1e50", "1e50", "start (q..., p...) of the reference "
-                                       "orbit for the tangent map; default the vertex mean / "
-                                       "the centre")) ","
-    H_TEND ","
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":1001,\"default\":11},"
-    "\"integrators\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":2,\"items\":"
-    API_TRAJ_INTEGRATOR_SCHEMA ",\"description\":\"one or two integrator blocks run side by "
-    "side; default gauss4 (dt = time scale/20) and rk4 (dt = time scale/2)\"},"
-    "\"tol\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.01,\"default\":1e-12,"
-    "\"description\":\"relative quadrature bound on the area\"},"
-    "\"max_intervals\":{\"type\":\"integer\",\"minimum\":4,\"maximum\":4096,\"default\":256},"
-    API_DRY_RUN_PROP
-    "}}";
-
-static const char poincare_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"system\",\"orbits\",\"t_max\"],\"properties\":{"
-    "\"system\":" H_SYSTEM_SCHEMA ","
-    "\"section\":" H_OBJ("\"coordinate\"",
-                         "\"coordinate\":{\"enum\":[\"x\",\"y\",\"theta\",\"phi\",\"z\",\"r\"]},"
-                         "\"value\":" H_NUM("-1e15", "1e15", "default 0 (angles: rad, mod 2 pi)")) ","
-    "\"orbits\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":50,\"items\":{\"oneOf\":["
-    H_OBJ("\"q\",\"p\"", H_Q "," H_P) ","
-    H_OBJ("\"energy\",\"on_section\"",
-          "\"energy\":" H_NUM("-1e50", "1e50", "J: the section's own momentum follows from H = E") ","
-          "\"on_section\":" H_ARR("2", "2", H_NUM("-1e50", "1e50", "")))
-    "]}},"
-    "\"t_max\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s, per orbit\"},"
-    "\"max_crossings\":{\"type\":\"integer\",\"minimum\":1,\"maximum\":10000,\"default\":200},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA "," API_DRY_RUN_PROP "}}";
-
 /* ---- the system ---------------------------------------------------------------- */
 
 static const char *const kind_names[MECH_HAM_KIND_COUNT] = {
@@ -369,7 +270,7 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
             }
             out->own = 1;
             out->ch.method = method;
-            out->ch.requested = block;
+            out->ch.requested = api_call_as_given(c, block, pointer);
             out->ch.opt.rtol = api_number(block, "rtol", 1e-10);
             out->ch.opt.atol = api_number(block, "atol", 1e-12);
             out->ch.opt.dt = api_number(block, "dt", 0);
@@ -529,7 +430,7 @@ static json_t *apsides(struct api_call *c, const struct mech_ham_system *s, cons
     return o;
 }
 
-static json_t *flow(struct api_call *c, const json_t *body)
+json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
 {
     const json_t *js = json_object_get(body, "system");
     struct mech_ham_system s;
@@ -537,7 +438,7 @@ static json_t *flow(struct api_call *c, const json_t *body)
     if (!parse_system(c, js, json_array_size(json_object_get(body, "q")), &s)) return NULL;
     if (!parse_state(c, body, "", &s, y0)) return NULL;
     const double t_end = api_number(body, "t_end", 1.0);
-    const size_t ns = (size_t)api_number(body, "samples", 101), n = (size_t)s.dof, dim = 2 * n;
+    const size_t ns = (size_t)api_number_of(body, "samples"), n = (size_t)s.dof, dim = 2 * n;
     const double tau = mech_ham_time_scale(&s, y0);
     struct ham_integ hi;
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
@@ -653,7 +554,7 @@ static void fail_run(struct api_call *c, enum mech_status st, struct mech_error 
     api_call_fail_core(c, st, e, "");
 }
 
-static json_t *liouville(struct api_call *c, const json_t *body)
+json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
 {
     const json_t *js = json_object_get(body, "system"), *cv = json_object_get(body, "curve");
     const char *type = api_string(cv, "type", "polygon");
@@ -667,15 +568,15 @@ static json_t *liouville(struct api_call *c, const json_t *body)
     if (!parse_system(c, js, json_array_size(pt0) / 2, &s)) return NULL;
     const size_t dim = 2 * (size_t)s.dof;
     const double t_end = api_number(body, "t_end", 1.0);
-    const size_t ns = (size_t)api_number(body, "samples", 11);
+    const size_t ns = (size_t)api_number_of(body, "samples");
 
     struct mech_liouville_problem p;
     memset(&p, 0, sizeof p);
     p.sys = &s;
     p.t_end = t_end;
     p.n_samples = ns;
-    p.tol = api_number(body, "tol", 1e-12);
-    p.max_intervals = (size_t)api_number(body, "max_intervals", 256);
+    p.tol = api_number_of(body, "tol");
+    p.max_intervals = (size_t)api_number_of(body, "max_intervals");
     double *verts = NULL, ctr[MECH_HAM_MAX_DIM], u[MECH_HAM_MAX_DIM], w[MECH_HAM_MAX_DIM],
            ref[MECH_HAM_MAX_DIM];
     double *buf = NULL;
@@ -888,7 +789,7 @@ done:
 
 /* ---- /v1/hamiltonian/poincare --------------------------------------------------------- */
 
-static json_t *poincare(struct api_call *c, const json_t *body)
+json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
 {
     const json_t *js = json_object_get(body, "system"), *orbits = json_object_get(body, "orbits");
     /* the oscillator's dof from the first orbit with q */
@@ -922,7 +823,7 @@ static json_t *poincare(struct api_call *c, const json_t *body)
     sec.angle = !strcmp(coord, "phi");
     const size_t o = 1 - sec.index;
     const double t_max = api_number(body, "t_max", 1.0);
-    const size_t maxc = (size_t)api_number(body, "max_crossings", 200);
+    const size_t maxc = (size_t)api_number_of(body, "max_crossings");
     const size_t no = json_array_size(orbits);
 
     /* starts */
@@ -1048,126 +949,3 @@ done:
     return out;
 }
 
-/* ---- routes ------------------------------------------------------------------------------ */
-
-#define H_CATALOG_DOC                                                                            \
-    "Systems (system.name; SI units; state y = (q, p), q and p arrays of the degrees of "        \
-    "freedom): oscillator (1 or 2 dof, q = [x(, y)], H = sum p^2/2m + k q^2/2, k or omega = "     \
-    "sqrt(k/m) per axis, one value = isotropic); pendulum (q = [theta] from the downward "       \
-    "vertical, p = [m l^2 theta'], V = m g l (1 - cos theta)); spherical_pendulum (q = [theta, " \
-    "phi], p_theta = m l^2 theta', p_phi = m l^2 sin^2(theta) phi' conserved, phi cyclic); "     \
-    "cylinder (a particle on a cylinder of radius R attracted to the origin by F = -k r: q = "   \
-    "[z, phi], H = p_z^2/2m + p_phi^2/(2 m R^2) + k (R^2 + z^2)/2, p_phi conserved); central "   \
-    "(plane polar q = [r, phi], H = p_r^2/2m + p_phi^2/(2 m r^2) + k r^n; Kepler: n = -1, "     \
-    "k = -G M m; p_phi conserved); henon_heiles (dimensionless, q = [x, y]); potential_3d "      \
-    "(Cartesian q = [x, y, z], p = m v: potential harmonic with k = [k_x, k_y, k_z], power "     \
-    "V = k r^n, or kepler with gm: V = -G M m / r; L conserved for the central ones). "         \
-    "Integrators: gauss4/gauss6 (implicit Gauss-Legendre, symplectic for any H) and every "     \
-    "other first-order method apply to all systems; verlet, yoshida4, yoshida6, "               \
-    "symplectic_euler, boris and radau15 need the second-order form and apply only to "         \
-    "separable H = sum p^2/(2 M_i) + V(q) (oscillator, pendulum, cylinder, henon_heiles, "      \
-    "potential_3d; integrated as (q, v = p/M)); for spherical_pendulum and central they are "   \
-    "refused at /integrator/method. "
-
-static const char flow_description[] =
-    "Hamilton's equations q' = dH/dp, p' = -dH/dq (Goldstein §8.1; Taylor §13.2-13.3) for a "
-    "system of the catalog from initial canonical coordinates (q, p). " H_CATALOG_DOC
-    "Without an integrator block: gauss6 at dt = time scale / 50 (the time scale, reported in "
-    "diagnostics, is 1 / (small-oscillation or circular-orbit rate + the coordinate rates) at "
-    "the start; eccentric orbits need a smaller dt or an adaptive method). Accuracy presets and "
-    "target_error choose the shared block's adaptive rk8pd (not symplectic). Answers sampled "
-    "t, q, p; the energy and the conserved momenta (of cyclic coordinates, and symmetry "
-    "invariants such as L_z in Cartesian coordinates) with their largest drift over every "
-    "accepted step (max_rel_drift = max |X - X0| / |X0|, null when X0 = 0). spherical_pendulum "
-    "adds the conical motion at the initial theta (phi' = sqrt(g/(l cos theta))); central adds "
-    "the circular orbit at the initial r (p_phi^2 = m k n r^(n+2), period 2 pi m r^2/p_phi) and "
-    "the apsides: pericentres located by root-finding (p_r = 0 upwards) and the measured "
-    "apsidal angle beside pi/sqrt(n+2) (near-circular limit, Goldstein §3.6). Errors: r <= 0 "
-    "(central, power) or a pole with p_phi != 0 at the start are domain errors at /q or /p; an "
-    "orbit that reaches the centre is a numerical-failure problem, never NaN.";
-
-static const char flow_example[] =
-    "{\"system\": {\"name\": \"central\", \"mass\": 1, \"k\": -1, \"n\": -1}, "
-    "\"q\": [1, 0], \"p\": [0, 1.1], \"t_end\": 20, \"samples\": 5}";
-
-static const char liouville_description[] =
-    "Liouville's theorem (Goldstein §9.9; Taylor §13.7) measured on a closed curve of initial "
-    "conditions: a polygon (vertices (q..., p...), straight edges) or an ellipse (center and "
-    "semi_axes [a, b] along q and p for 1 degree of freedom, or semi-axis vectors u and w: "
-    "y(s) = center + u cos 2 pi s + w sin 2 pi s). It answers A(t) = (1/2) sum_i oint (q_i "
-    "dp_i - p_i dq_i) over the image curve (for 1 dof the enclosed area, counter-clockwise "
-    "positive; for more, the sum of the projected areas, Poincaré's integral invariant), "
-    "computed by Gauss-Kronrod quadrature on the image with tangents from the variational "
-    "equations, refined until the |Kronrod - Gauss| bound is below tol |A0| "
-    "(quadrature_converged, max_relative_quadrature_bound); the vertex polygon's shoelace area "
-    "for comparison; det and the symplecticity defect of the tangent map along a reference "
-    "orbit (variational equations, same method). Two integrator blocks run side by side "
-    "(integrators; default gauss4 at time scale/20 and rk4 at time scale/2): with a "
-    "symplectic method the area is conserved to round-off, with rk4 at a coarse step it drifts. " H_CATALOG_DOC
-    "A cloud (points, at least 2 dof + 1 of them) is measured instead by its covariance volume "
-    "sqrt(det C) and, for exactly 2 dof + 1 points, its simplex volume: both exact only for "
-    "linear flows, stated in the answer's `measured`. The step budget counts every node "
-    "trajectory of both runs.";
-
-static const char liouville_example[] =
-    "{\"system\": {\"name\": \"oscillator\", \"mass\": 2, \"k\": [8]}, "
-    "\"curve\": {\"type\": \"ellipse\", \"center\": [0, 0], \"semi_axes\": [0.5, 2]}, "
-    "\"t_end\": 31.41592653589793, \"samples\": 3}";
-
-static const char poincare_description[] =
-    "A Poincaré section of a 2-degree-of-freedom system: the points where each orbit crosses "
-    "coordinate = value upwards (its momentum > 0), recorded in the plane of the other "
-    "coordinate and its momentum. Defaults: henon_heiles and the 2D oscillator x = 0 -> (y, "
-    "p_y) (Hénon & Heiles 1964); spherical_pendulum, cylinder and central phi = 0 mod 2 pi in "
-    "the direction of rotation -> (theta, p_theta) etc. (the spherical pendulum is "
-    "integrable: its points lie on closed invariant curves). Crossings are located by "
-    "root-finding (the ODE driver's stop event, Brent's method on the step's own sub-step "
-    "solution) and the integration restarts from each, up to max_crossings per orbit or t_max. "
-    "Orbits start from (q, p), or from {energy, on_section: [u, v]}: on the section with the "
-    "plane's pair (u, v) and the section's momentum > 0 from H = E (E below the potential there "
-    "is a domain error at /orbits/i/energy). Answers each orbit's crossing times and points, "
-    "the energy drift and the conserved momenta, max_section_residual (an angle phi in the plane "
-    "is reduced to [0, 2 pi)). " H_CATALOG_DOC;
-
-static const char poincare_example[] =
-    "{\"system\": {\"name\": \"henon_heiles\"}, \"orbits\": [{\"energy\": 0.08333333333333333, "
-    "\"on_section\": [0.1, 0.05]}], \"t_max\": 1000, \"max_crossings\": 20}";
-
-const struct api_route api_route_hamiltonian_flow = {
-    "POST",
-    "/v1/hamiltonian/flow",
-    "Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, "
-    "Hénon–Heiles, 3D potentials) with conserved momenta and energy",
-    flow_description,
-    flow_schema,
-    flow_example,
-    flow,
-    1,
-    0,
-};
-
-const struct api_route api_route_hamiltonian_liouville = {
-    "POST",
-    "/v1/hamiltonian/liouville",
-    "Phase-space area of a closed curve of initial conditions over time and the tangent map's "
-    "determinant, symplectic beside non-symplectic",
-    liouville_description,
-    liouville_schema,
-    liouville_example,
-    liouville,
-    1,
-    0,
-};
-
-const struct api_route api_route_hamiltonian_poincare = {
-    "POST",
-    "/v1/hamiltonian/poincare",
-    "Poincaré sections (Hénon–Heiles, spherical pendulum, ...) with crossings located by "
-    "root-finding",
-    poincare_description,
-    poincare_schema,
-    poincare_example,
-    poincare,
-    1,
-    0,
-};

@@ -12,67 +12,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* clang-format off */
-#define C_POS(desc) "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100," \
-    "\"description\":\"" desc "\"}"
-#define C_NUM(lim, desc) "{\"type\":\"number\",\"minimum\":-" lim ",\"maximum\":" lim "," \
-    "\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"mass\",\"angular_momentum\"],\"properties\":{"
-    "\"mass\":" C_POS("kg, the orbiting particle (the reduced mass for two bodies)") ","
-    "\"angular_momentum\":" C_POS("kg m^2/s, L = m r^2 phi_dot") ","
-    "\"terms\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":15,\"items\":"
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"k\",\"n\"],"
-    "\"properties\":{\"k\":" C_NUM("1e100", "J m^-n") ",\"n\":" C_NUM("100",
-    "exponent: V = k r^n, or k ln r for n = 0") "}},"
-    "\"description\":\"V(r) = sum of the terms (Kepler: n = -1, k = -G M m; isotropic "
-    "oscillator: n = 2, k = m w^2/2)\"},"
-    "\"gm\":" C_POS("m^3/s^2: adds the Kepler term V = -gm m/r (G M of the centre)") "}}";
-
-#define C_R "{\"type\":\"number\"}"
-#define C_RN "{\"type\":[\"number\",\"null\"]}"
-static const char response_schema[] =
-    "{\"type\":\"object\",\"required\":[\"count\",\"orbits\",\"method\"],\"properties\":{"
-    "\"count\":{\"type\":\"integer\"},"
-    "\"method\":{\"type\":\"string\",\"enum\":[\"closed_form\",\"bracketed\"]},"
-    "\"note\":{\"type\":\"string\"},"
-    "\"bertrand\":{\"type\":\"object\",\"properties\":{\"n\":" C_R ","
-    "\"all_bound_orbits_closed\":{\"type\":\"boolean\"},\"text\":{\"type\":\"string\"}}},"
-    "\"orbits\":{\"type\":\"array\",\"items\":{\"type\":\"object\",\"required\":[\"radius\","
-    "\"energy\",\"omega_phi\",\"period_phi\",\"stable\",\"stability\"],\"properties\":{"
-    "\"radius\":" C_R ",\"energy\":" C_R ",\"speed\":" C_R ",\"angular_momentum\":" C_R ","
-    "\"omega_phi\":" C_R ",\"period_phi\":" C_R ",\"V\":" C_R ",\"dV\":" C_R ",\"d2V\":" C_R ","
-    "\"k_eff\":" C_R ",\"stable\":{\"type\":\"boolean\"},\"stability\":{\"type\":\"string\"},"
-    "\"omega_r\":" C_RN ",\"period_r\":" C_RN ",\"frequency_ratio\":" C_RN ","
-    "\"apsidal_angle\":" C_RN ",\"apsidal_angle_deg\":" C_RN ",\"pericentre_angle\":" C_RN ","
-    "\"growth_rate\":" C_RN ",\"residual\":" C_R "}}}}}";
-/* clang-format on */
-
-static const char description[] =
-    "The circular orbits of a given angular momentum L in a central potential (notes ch. 5, "
-    "Motion in a Central Potential): V(r) = sum of terms k r^n (k ln r for n = 0), plus "
-    "-gm m/r when gm is given (at least one of terms and gm). A circular orbit sits where "
-    "V_eff = L^2/(2 m r^2) + V(r) is stationary, m r^3 V'(r) = L^2: one power law in closed "
-    "form, r = (L^2/(m k n))^(1/(n + 2)) (Kepler r = L^2/(m k) with k = G M m; oscillator r = "
-    "sqrt(L/(m w))); several terms by bracketing every sign change of r^3 V' - L^2/m in ln r "
-    "over the interval outside which one term outweighs the rest, then bisection and a "
-    "Newton polish (method says which; a tangent double root, two orbits merging, can be "
-    "missed). Answers count and orbits (ascending radius), each with radius, energy = "
-    "L^2/(2 m r^2) + V, speed = r omega_phi, omega_phi = L/(m r^2) and period_phi, V, dV, "
-    "d2V at r, k_eff = V'' + 3V'/r = V_eff'', stable (k_eff > 0) and stability (stable, "
-    "unstable or marginal), omega_r = sqrt(k_eff/m), period_r, frequency_ratio = "
-    "omega_r/omega_phi, apsidal_angle = pi omega_phi/omega_r (pericentre to apocentre; V = "
-    "k r^n: pi/sqrt(n + 2), Kepler pi, oscillator pi/2) with _deg and pericentre_angle, "
-    "growth_rate sqrt(-k_eff/m) of an unstable one (its frequencies null), and residual = "
-    "m r^3 V'/L^2 - 1. count 0 comes with a note (no attraction strong enough at any "
-    "radius). For one power law, bertrand states Bertrand's theorem: every bound orbit is "
-    "closed only for n = -1 and n = 2. Same potential and frequencies as /v1/small-"
-    "oscillations' central_orbit, which starts from the radius instead of L.";
-
-static const char example[] =
-    "{\"mass\": 5.9722e24, \"angular_momentum\": 2.6617e40, \"gm\": 1.32712440018e20}";
-
 #define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))
 
 static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillation *o, double r,
@@ -104,7 +43,7 @@ static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillatio
     return j;
 }
 
-static json_t *circular_orbit_op(struct api_call *c, const json_t *body)
+json_t *api_op_hamiltonian_circular_orbit(struct api_call *c, const json_t *body)
 {
     const json_t *tj = json_object_get(body, "terms"), *gj = json_object_get(body, "gm");
     if (!tj && !gj) {
@@ -167,17 +106,3 @@ static json_t *circular_orbit_op(struct api_call *c, const json_t *body)
     }
     return out;
 }
-
-const struct api_route api_route_hamiltonian_circular_orbit = {
-    "POST",
-    "/v1/hamiltonian/circular-orbit",
-    "The circular orbits of a given angular momentum in a central potential: radius, energy, "
-    "angular and radial frequencies, periods, apsidal angle, stability",
-    description,
-    schema,
-    example,
-    circular_orbit_op,
-    0,
-    1, /* quick: a fixed grid and bisection */
-    response_schema,
-};

@@ -11,42 +11,7 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* clang-format off */
-#define PA_POS(desc)                                                                               \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"system\",\"mass\","
-    "\"energy\"],\"properties\":{"
-    "\"system\":{\"enum\":[\"oscillator\",\"pendulum\"],\"description\":\"oscillator: H = "
-    "p^2/2m + m omega^2 q^2/2; pendulum: H = p^2/(2 m l^2) + m g l (1 - cos theta)\"},"
-    "\"mass\":" PA_POS("mass m, kg") ","
-    "\"omega\":" PA_POS("oscillator's angular frequency, rad/s (oscillator only)") ","
-    "\"length\":" PA_POS("pendulum length l, m (pendulum only)") ","
-    "\"g\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
-    "\"description\":\"gravity, m/s^2 (pendulum only; absent: 9.80665, not a schema default "
-    "because an oscillator must not receive it)\"},"
-    "\"energy\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30,\"description\":\"energy "
-    "above the minimum of the potential, J\"}}}";
-/* clang-format on */
-
-static const char description[] =
-    "The phase-space area A(E) = closed integral of p dq enclosed by the energy contour H = E "
-    "of a one-dimensional system (notes, Hamiltonian mechanics: phase space and Liouville's "
-    "theorem), the action J = A/(2 pi) and the period as its energy derivative T = dA/dE. "
-    "oscillator (mass, omega): A = 2 pi E/omega, T = 2 pi/omega. pendulum (mass, length, g): "
-    "with omega0 = sqrt(g/l) and E = 2 m g l k^2, a libration (k < 1, amplitude 2 asin k) "
-    "encloses A = 16 m l^2 omega0 [E(k) - (1 - k^2) K(k)] with T = 4 K(k)/omega0; a rotation "
-    "(k > 1) bounds A = 8 m l^2 omega0 k E(1/k) between its p > 0 branch and p = 0 over one "
-    "turn, with T = 2 K(1/k)/(k omega0) per turn; the separatrix (k = 1) encloses 16 m l^2 "
-    "omega0 and its period is infinite (null). K, E: complete elliptic integrals (GSL; for k^2 "
-    "< 1/2 the libration area is summed as a series, exact to round-off at tiny amplitudes). "
-    "For the pendulum, small_amplitude gives the harmonic approximation 2 pi E/omega0 and "
-    "2 pi/omega0, labelled, beside the exact values.";
-
-static const char example[] =
-    "{\"system\": \"pendulum\", \"mass\": 1, \"length\": 1, \"energy\": 5}";
-
-static json_t *phase_area_op(struct api_call *c, const json_t *body)
+json_t *api_op_hamiltonian_phase_area(struct api_call *c, const json_t *body)
 {
     const int pend = !strcmp(api_string(body, "system", "oscillator"), "pendulum");
     const char *own = pend ? "length" : "omega", *other = pend ? "omega" : "length";
@@ -102,15 +67,3 @@ static json_t *phase_area_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_hamiltonian_phase_area = {
-    "POST",
-    "/v1/hamiltonian/phase-area",
-    "Phase-space area enclosed by an energy contour of the oscillator or the pendulum, the "
-    "action, and the period as dA/dE",
-    description,
-    schema,
-    example,
-    phase_area_op,
-    0,
-    1, /* quick */
-};

@@ -52,24 +52,10 @@ json_t *api_integrators_catalog(void)
                      "no integrator block means {\"accuracy\": \"balanced\"}");
 }
 
-static json_t *integrators_resource(struct api_call *c, const json_t *body)
+json_t *api_op_integrators(struct api_call *c, const json_t *body)
 {
     (void)c;
     (void)body;
     return api_integrators_catalog();
 }
 
-const struct api_route api_route_integrators = {
-    "GET",
-    "/v1/integrators",
-    "Every ODE method (order, properties, doc, reference) and the accuracy presets",
-    "The methods the integrator block of every time-evolution operation accepts, each with its "
-    "order, whether it is adaptive (rtol/atol) or fixed-step (dt), symplectic, implicit, "
-    "symmetric or second-order, a paragraph on when to use it and its reference; and what the "
-    "accuracy presets and target_error choose.",
-    NULL,
-    NULL,
-    integrators_resource,
-    0,
-    0,
-};

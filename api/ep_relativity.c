@@ -8,48 +8,9 @@
 #include "mech/boost.h"
 #include "velocity_request.h"
 
-/* ---- request schema -------------------------------------------------------
+/* ---- request bounds (api/ops/relativity/boost.json) ----------------------
  * Component bounds keep every intermediate finite: |x| ≤ 1e150 and γ ≤ 5e151
  * (|η| ≤ 350) give boosted components ≤ 2e302 and squares ≤ 1e301. */
-#define BOOST_NUM4 "{\"type\":\"number\",\"minimum\":-1e150,\"maximum\":1e150}"
-#define BOOST_VEC4                                                                                 \
-    "{\"type\":\"array\",\"minItems\":4,\"maxItems\":4,\"items\":" BOOST_NUM4                      \
-    ",\"description\":\"a 4-vector [x0, x1, x2, x3] with x0 = ct (or E/c), any one unit, "         \
-    "each |component| <= 1e150\"}"
-static const char boost_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"vectors\",\"velocity\"],"
-    "\"properties\":{"
-    "\"vectors\":{\"description\":\"one 4-vector, or a list of 1 to 100000; the answer has "
-    "the same shape\",\"oneOf\":["
-    "{\"type\":\"array\",\"minItems\":1,\"maxItems\":100000,\"items\":" BOOST_VEC4 "}," BOOST_VEC4
-    "]},"
-    "\"velocity\":" API_VELOCITY_SCHEMA ","
-    "\"matrix\":{\"type\":\"boolean\",\"default\":false,\"description\":\"true adds matrix, "
-    "the 4x4 Lorentz matrix of the boost (x' = matrix x, rows and columns in the order ct, x, "
-    "y, z)\"}}}";
-
-static const char boost_example[] =
-    "{\"vectors\": [[1, 0, 0, 0], [1, 1, 0, 0]], \"velocity\": {\"beta\": [0.6, 0, 0]}}";
-
-static const char boost_description[] =
-    "Passive Lorentz boost (notes §3.3): the components of the same events in the frame "
-    "moving with velocity beta*c, x' = gamma(x - beta ct), ct' = gamma(ct - beta x), "
-    "transverse components unchanged. Metric (-,+,+,+), x0 = ct. The velocity is given as "
-    "beta, as a rapidity, as gamma or as 1 - beta, each with a direction; the answer's "
-    "gamma, gamma_minus_one, rapidity (>= 0) and one_minus_beta describe the speed |beta|, "
-    "and beta is the velocity vector. All are computed from the form given without "
-    "cancellation (gamma - 1 right to round-off at 1 m/s, gamma right at 1 - beta = 1e-15 "
-    "and rapidity 35). Vectors are boosted with light-cone components x0 -+ x_par, which "
-    "scale by exp(+-eta), or the gamma - 1 form, whichever is more accurate: a light-like "
-    "vector along the boost keeps full relative precision. invariants_before is "
-    "-x0^2 + |x|^2 of each input (compensated); invariants_after is the same invariant of "
-    "the boosted vector from its light-cone product -u'v' + |x_perp|^2, since recomputing "
-    "it from large boosted components would cancel. |beta| >= 1, gamma < 1, "
-    "1 - beta outside (0, 2) or a zero direction is a 422 naming the field. With "
-    "\"matrix\": true the answer adds matrix, the 4x4 Lorentz matrix Lambda (notes §3, a "
-    "boost in an arbitrary direction): Lambda00 = gamma, Lambda0i = Lambdai0 = -beta_i gamma, "
-    "Lambdaij = delta_ij + (gamma - 1) n_i n_j, from the exact gamma - 1 and beta gamma.";
 
 static const double *vector_at(const json_t *vectors, int single, size_t i, double buf[4])
 {
@@ -59,7 +20,7 @@ static const double *vector_at(const json_t *vectors, int single, size_t i, doub
     return buf;
 }
 
-static json_t *boost_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_boost(struct api_call *c, const json_t *body)
 {
     const json_t *vel = json_object_get(body, "velocity");
     const json_t *vectors = json_object_get(body, "vectors");
@@ -116,14 +77,3 @@ static json_t *boost_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_boost = {
-    "POST",
-    "/v1/relativity/boost",
-    "Lorentz-boost 4-vectors, precise from 1 m/s to gamma = 1e15",
-    boost_description,
-    boost_schema,
-    boost_example,
-    boost_op,
-    0,
-    1, /* quick */
-};

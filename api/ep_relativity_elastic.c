@@ -18,108 +18,6 @@
 
 static const double PI = 3.14159265358979323846;
 
-/* clang-format off */
-#define EL_NAME_JSON(name, mass, source) "\"" name "\""
-#define EL_COMMA ","
-#define EL_NUM(desc) "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60,\"description\":\"" desc "\"}"
-#define EL_PARTICLE(desc)                                                                        \
-    "{\"description\":\"" desc ": a particle name (as /v1/relativity/particles lists them) or "  \
-    "a mass >= 0 in energy_unit/c^2\",\"oneOf\":[{\"type\":\"string\",\"enum\":["                 \
-    MECH_PARTICLE_TABLE(EL_NAME_JSON, EL_COMMA) "]},{\"type\":\"number\",\"minimum\":-1e60,"        \
-    "\"maximum\":1e60}]}"
-#define EL_RAD(max, desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":" max ",\"description\":\"" desc " (radians)\"}"
-#define EL_DEG(max, desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":" max ",\"description\":\"" desc " (degrees)\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"projectile\",\"target\"],"
-    "\"properties\":{"
-    "\"energy_unit\":{\"type\":\"string\",\"enum\":[\"eV\",\"keV\",\"MeV\",\"GeV\",\"TeV\"],"
-    "\"default\":\"MeV\",\"description\":\"unit of every energy, mass (unit/c^2) and momentum "
-    "(unit/c), c = 1\"},"
-    "\"projectile\":{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\"],"
-    "\"description\":\"the incoming particle and its lab motion along +z: exactly one of energy, "
-    "kinetic_energy, momentum, velocity\",\"properties\":{"
-    "\"particle\":" EL_PARTICLE("the projectile") ","
-    "\"energy\":" EL_NUM("total lab energy E >= m") ","
-    "\"kinetic_energy\":" EL_NUM("lab kinetic energy T = E - m > 0") ","
-    "\"momentum\":" EL_NUM("lab momentum |p| > 0") ","
-    "\"velocity\":" API_VELOCITY_SCHEMA "}},"
-    "\"target\":" EL_PARTICLE("the target, at rest in the lab (mass > 0)") ","
-    "\"cm_angle\":" EL_RAD("3.141592653589793", "the projectile's scattering angle theta* in the CM frame") ","
-    "\"cm_angle_deg\":" EL_DEG("180", "the projectile's scattering angle theta* in the CM frame") ","
-    "\"angle\":" EL_RAD("3.141592653589793", "the projectile's scattering angle in the lab") ","
-    "\"angle_deg\":" EL_DEG("180", "the projectile's scattering angle in the lab") ","
-    "\"recoil_angle\":" EL_RAD("1.5707963267948966", "the recoil's lab angle to the beam, below pi/2") ","
-    "\"recoil_angle_deg\":" EL_DEG("90", "the recoil's lab angle to the beam, below 90") ","
-    "\"branch\":{\"type\":\"integer\",\"minimum\":0,\"maximum\":1,\"default\":0,\"description\":"
-    "\"which of two CM solutions a lab angle has (a projectile heavier than the target): 0 the "
-    "smaller theta* (the faster projectile), 1 the larger\"}}}";
-
-#define EL_R "{\"type\":\"number\"}"
-#define EL_RN "{\"type\":[\"number\",\"null\"]}"
-#define EL_LAB "{\"type\":\"object\",\"required\":[\"energy\",\"kinetic_energy\",\"momentum\"," \
-    "\"momentum_parallel\",\"momentum_transverse\",\"angle\",\"angle_deg\"],\"properties\":{"    \
-    "\"energy\":" EL_R ",\"kinetic_energy\":" EL_R ",\"momentum\":" EL_R ","                     \
-    "\"momentum_parallel\":" EL_R ",\"momentum_transverse\":" EL_R ",\"angle\":" EL_R ","        \
-    "\"angle_deg\":" EL_R "}}"
-static const char response_schema[] =
-    "{\"type\":\"object\",\"required\":[\"energy_unit\",\"projectile\",\"target_mass\",\"s\","
-    "\"sqrt_s\",\"t\",\"u\",\"momentum_transfer\",\"cm\",\"lab\",\"max_lab_angle\","
-    "\"solutions\"],\"properties\":{"
-    "\"energy_unit\":{\"type\":\"string\"},"
-    "\"projectile\":{\"type\":\"object\",\"description\":\"the incoming projectile: mass, energy, "
-    "kinetic_energy, momentum (and its speed when massive)\"},"
-    "\"target_mass\":" EL_R ",\"s\":" EL_R ",\"sqrt_s\":" EL_R ",\"t\":" EL_R ",\"u\":" EL_R ","
-    "\"momentum_transfer\":" EL_R ","
-    "\"cm\":{\"type\":\"object\",\"required\":[\"velocity\",\"momentum\",\"energies\","
-    "\"kinetic_energies\",\"angle\",\"angle_deg\",\"recoil_angle\",\"recoil_angle_deg\"],"
-    "\"properties\":{\"velocity\":{\"type\":\"object\"},\"momentum\":" EL_R ","
-    "\"energies\":{\"type\":\"array\",\"items\":" EL_R "},"
-    "\"kinetic_energies\":{\"type\":\"array\",\"items\":" EL_R "},"
-    "\"angle\":" EL_R ",\"angle_deg\":" EL_R ",\"recoil_angle\":" EL_R ",\"recoil_angle_deg\":" EL_R "}},"
-    "\"lab\":{\"type\":\"object\",\"required\":[\"projectile\",\"recoil\",\"opening_angle\","
-    "\"opening_angle_deg\"],\"properties\":{\"projectile\":" EL_LAB ",\"recoil\":" EL_LAB ","
-    "\"opening_angle\":" EL_R ",\"opening_angle_deg\":" EL_R "}},"
-    "\"velocity_ratio\":" EL_R ","
-    "\"max_lab_angle\":" EL_RN ",\"max_lab_angle_deg\":" EL_RN ","
-    "\"solutions\":{\"type\":\"object\",\"required\":[\"count\",\"branch\",\"cm_angles\"],"
-    "\"properties\":{\"count\":{\"type\":\"integer\"},\"branch\":{\"type\":\"integer\"},"
-    "\"cm_angles\":{\"type\":\"array\",\"items\":" EL_R "},"
-    "\"cm_angles_deg\":{\"type\":\"array\",\"items\":" EL_R "}}}}}";
-/* clang-format on */
-
-static const char description[] =
-    "Relativistic elastic scattering m1 + m2 -> m1 + m2 off a target at rest in the lab (notes "
-    "§3 kinematics; problem 16: a particle scattered by a target of equal mass). Give the "
-    "projectile (a particle name or mass, and one of energy, kinetic_energy, momentum or "
-    "velocity - beta, rapidity, gamma or one_minus_beta - along +z), the target, and one angle: "
-    "cm_angle (the projectile's CM angle theta*, [0, pi]), angle (the projectile's lab angle) "
-    "or recoil_angle (the target's lab angle, [0, pi/2)), each also as *_deg. Answers the "
-    "invariants s = m1^2 + m2^2 + 2 m2 E1, sqrt_s, t = -4 p*^2 sin^2(theta*/2) (the same from "
-    "either particle: t = -2 m2 T_recoil), u = 2 m1^2 + 2 m2^2 - s - t and the momentum "
-    "transfer sqrt(-t); cm: the CM velocity (beta = p1/(E1 + m2), gamma, gamma_minus_one, "
-    "beta_gamma, rapidity, one_minus_beta), the momentum p* = p1 m2/sqrt(s) of both particles, "
-    "their energies and kinetic energies (unchanged by the collision), the projectile's angle "
-    "theta* and the recoil's pi - theta*; lab: the scattered projectile and the recoil, each "
-    "with energy, kinetic_energy, momentum, momentum_parallel (along the beam), "
-    "momentum_transverse (signed: the two are opposite), angle and angle_deg, and their "
-    "opening_angle (90 degrees for equal masses only in the non-relativistic limit: tan "
-    "theta3 tan theta4 = 2/(gamma1 + 1)). velocity_ratio g = beta_cm/beta1* = (m1^2 + m2 "
-    "E1)/(m2 (E1 + m2)): a projectile heavier than the target (g > 1) is deflected at most by "
-    "max_lab_angle, sin = m2/m1 at every energy (null otherwise), and a lab angle below it "
-    "has two CM solutions (solutions.count 2, cm_angles ascending; branch 0 answers the "
-    "smaller theta*, 1 the larger). Equal masses never send the projectile to 90 degrees or "
-    "more; a recoil at 90 degrees or more, or a lab angle above the maximum, is a 422 at the "
-    "angle. Precision: every lab quantity is built from sin^2 and cos^2 of theta*/2, the "
-    "recoil's kinetic energy as 2 p*^2 sin^2(theta*/2)/m2, the backward energies without "
-    "cancellation, so T3 + T4 = T1 holds to round-off from 1e-12 of the rest energy to "
-    "gamma = 1e6; a massless projectile gives Compton's formula. Units: every energy, mass "
-    "(unit/c^2) and momentum (unit/c) in energy_unit (default MeV), c = 1; angles in "
-    "radians or *_deg degrees.";
-
-static const char example[] =
-    "{\"projectile\": {\"particle\": \"proton\", \"kinetic_energy\": 500}, \"target\": "
-    "\"proton\", \"angle_deg\": 30}";
-
 static json_t *deg_of(struct api_call *c, double rad)
 {
     return api_real(c, rad * (180.0 / PI));
@@ -253,12 +151,12 @@ static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
     return o;
 }
 
-static json_t *elastic_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), &u, &e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), &u, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     const json_t *pj = json_object_get(body, "projectile");
     double m1 = 0, m2 = 0;
@@ -346,17 +244,3 @@ static json_t *elastic_op(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "solutions", sol);
     return res;
 }
-
-const struct api_route api_route_relativity_elastic = {
-    "POST",
-    "/v1/relativity/kinematics/elastic",
-    "Relativistic elastic scattering at a given CM, lab or recoil angle: lab energies, momenta "
-    "and angles of both particles, the recoil, the CM frame, s, t, u",
-    description,
-    schema,
-    example,
-    elastic_op,
-    0,
-    1, /* quick */
-    response_schema,
-};

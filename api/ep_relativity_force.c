@@ -6,38 +6,7 @@
 #include "mech/relativistic_force.h"
 #include "velocity_request.h"
 
-/* clang-format off */
-#define F_VEC(desc)                                                                                \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-1e100,\"maximum\":1e100},\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"mass\",\"velocity\"],"
-    "\"properties\":{"
-    "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e60,\"description\":"
-    "\"rest mass m, kg\"},"
-    "\"velocity\":" API_VELOCITY_SCHEMA ","
-    "\"acceleration\":" F_VEC("the acceleration dv/dt, m/s^2 (or give force)") ","
-    "\"force\":" F_VEC("the force F = dp/dt, N (or give acceleration)")
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "Newton's second law in special relativity (notes §3, the force 4-vector): F = dp/dt with "
-    "p = gamma m v, so F = gamma m a_perp + gamma^3 m a_par, the parts of the acceleration "
-    "across and along v (transverse mass gamma m, longitudinal mass gamma^3 m). Give the mass "
-    "(kg), the velocity (any of the shared forms: beta, rapidity, gamma, one_minus_beta with a "
-    "direction) and exactly one of acceleration (m/s^2) or force (N); the other follows "
-    "(a_par = F_par/(gamma^3 m), a_perp = F_perp/(gamma m)). Answers gamma, force, "
-    "force_parallel, force_perpendicular, acceleration and its two parts (vectors), "
-    "transverse_mass, longitudinal_mass, power = F.v = d(gamma m c^2)/dt (W) and four_force "
-    "K = gamma (F.v/c, F) (N), which is orthogonal to the 4-velocity. At rest the split has "
-    "no meaning beyond gamma = 1: everything is Newton's.";
-
-static const char example[] =
-    "{\"mass\": 9.1093837015e-31, \"velocity\": {\"beta\": [0.6, 0, 0]}, "
-    "\"acceleration\": [1e15, 2e15, 0]}";
-
-static json_t *force_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_force(struct api_call *c, const json_t *body)
 {
     const json_t *aj = json_object_get(body, "acceleration"), *fj = json_object_get(body, "force");
     if (aj && fj) {
@@ -74,15 +43,3 @@ static json_t *force_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_relativity_force = {
-    "POST",
-    "/v1/relativity/force",
-    "F = dp/dt split along and across v (gamma^3 m a and gamma m a), either way round, with "
-    "the power and the 4-force",
-    description,
-    schema,
-    example,
-    force_op,
-    0,
-    1, /* quick */
-};

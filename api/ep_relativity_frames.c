@@ -17,59 +17,7 @@
 #include "mech/worldline.h"
 #include "velocity_request.h"
 
-#define FR_DIR3                                                                                    \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-1e150,\"maximum\":1e150},\"description\":\"a direction; any nonzero length\"}"
-
 /* ======================= velocity addition ================================= */
-
-#define VA_LIGHT                                                                                   \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"light\"],"                \
-    "\"properties\":{\"light\":" FR_DIR3 "},\"description\":\"light (|beta| = 1) moving along "    \
-    "this direction, e.g. a photon\"}"
-
-static const char va_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"properties\":{"
-    "\"velocity\":{\"description\":\"the object's velocity in the original frame: a velocity, "
-    "or {\\\"light\\\": direction} for light\",\"oneOf\":[" API_VELOCITY_SCHEMA "," VA_LIGHT "]},"
-    "\"frame_velocity\":" API_VELOCITY_SCHEMA ","
-    "\"compose\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":1000,"
-    "\"items\":" API_VELOCITY_SCHEMA
-    ",\"description\":\"boosts applied in order: the first is the velocity "
-    "of frame 1 in the original frame, each next one the velocity of the next frame relative "
-    "to the previous one, in the previous frame's axes\"}"
-    "}}";
-
-static const char va_example[] =
-    "{\"velocity\": {\"beta\": [0, 0.6, 0]}, \"frame_velocity\": {\"beta\": [0.8, 0, 0]}, "
-    "\"compose\": [{\"beta\": [0.6, 0, 0]}, {\"beta\": [0, 0.6, 0]}]}";
-
-static const char va_description[] =
-    "Relativistic velocity addition (notes §3.10) and composition of boosts (§3.9). "
-    "With `velocity` (the object's velocity in the original frame) and `frame_velocity` (the "
-    "velocity of the new frame, same axes), answers `velocity_in_frame`: the object's velocity "
-    "in the new frame (u_par' = (u_par - v)/(1 - v u_par), u_perp' = u_perp/(gamma(1 - v "
-    "u_par))) as gamma, gamma_minus_one, beta (vector), rapidity, one_minus_beta, all computed "
-    "from rapidities and 4-velocities without cancellation: gamma' - 1 = 2 sinh^2((eta_o - "
-    "eta_f)/2) + sinh(eta_o) sinh(eta_f)(1 - cos theta), so nearly equal velocities, 1e-12 c "
-    "and gamma = 1e15 keep full precision and collinear rapidities subtract exactly. The "
-    "object may be light, {\"light\": direction}: light stays light; the answer gives its "
-    "direction in the new frame (aberration), beta (unit vector), one_minus_beta = 0 and "
-    "frequency_ratio nu'/nu = gamma(1 - beta cos theta) (Doppler, notes §3.14). "
-    "`object_velocity` and `frame_velocity` echo the inputs in every form (one_minus_beta "
-    "states the 1 - beta actually used when beta was typed as a decimal). "
-    "With `compose` (a list of boosts applied in order, each velocity measured in the previous "
-    "frame's axes), answers `composition`: Lambda = B(v_n)...B(v_1) = R B(total), with "
-    "`velocity` the total boost (the last frame's velocity in the first frame; collinear "
-    "rapidities add), and `wigner_rotation`: the last frame's axes are the pure boost's axes "
-    "turned by `angle` (rad; also `angle_deg`) about the unit `axis` (right-hand rule; null "
-    "when the angle is 0; for two boosts the axis is v2 x v1), `quaternion` [w, x, y, z] of "
-    "that turn, `matrix` the passive R (rows = the last frame's axes in the pure boost's axes), "
-    "and `lorentz_matrix` the 4x4 Lambda (x' = Lambda x, x0 = ct). Closed form for two boosts: "
-    "tan(angle/2) = sin(theta) t1 t2/(1 + cos(theta) t1 t2), t_i = tanh(eta_i/2), theta the "
-    "angle between v1 and v2 (checked against the polar decomposition of the 4x4 product). "
-    "A relative rapidity beyond 350 (gamma ~ 5e151) is a 422.";
 
 static json_t *velocity_in_frame(struct api_call *c, const json_t *vel, const struct mech_boost *f)
 {
@@ -178,7 +126,7 @@ static json_t *composition(struct api_call *c, const json_t *list)
     return res;
 }
 
-static json_t *velocity_addition_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_velocity_addition(struct api_call *c, const json_t *body)
 {
     const json_t *vel = json_object_get(body, "velocity");
     const json_t *fv = json_object_get(body, "frame_velocity");
@@ -227,58 +175,9 @@ static json_t *velocity_addition_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_velocity_addition = {
-    "POST",
-    "/v1/relativity/velocity-addition",
-    "Relativistic velocity addition in any directions, composition of boosts, and the Wigner "
-    "(Thomas) rotation",
-    va_description,
-    va_schema,
-    va_example,
-    velocity_addition_op,
-    0,
-    1, /* quick */
-};
-
 /* ======================= interval ========================================= */
 
-#define IV_VEC4                                                                                    \
-    "{\"type\":\"array\",\"minItems\":4,\"maxItems\":4,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-1e150,\"maximum\":1e150},\"description\":\"an event [ct, x, y, z]\"}"
-
-static const char iv_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"events\"],"
-    "\"properties\":{"
-    "\"events\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":2,\"items\":" IV_VEC4 ","
-    "\"description\":\"two events [ct, x, y, z], all four coordinates in one length unit\"},"
-    "\"units\":{\"enum\":[\"metres\",\"years\"],\"default\":\"metres\","
-    "\"description\":\"metres: coordinates in m, proper_time in s; years: coordinates in "
-    "light-years (ct in light-years = years, c = 1), proper_time in years\"}"
-    "}}";
-
-static const char iv_example[] = "{\"events\": [[0, 0, 0, 0], [0.6, 1, 0, 0]]}";
-
-static const char iv_description[] =
-    "The interval between two events (notes §3.5, §3.6), metric (-,+,+,+): s2 = -(c dt)^2 + "
-    "dx^2 + dy^2 + dz^2 with d = second - first. The coordinate differences are formed exactly "
-    "and squared with error-free products and compensated sums, so s2 is right to about "
-    "2e-16 relative plus 1e-31 (dct^2 + |dx|^2) for the binary inputs, however far from the "
-    "origin the events are. What limits it is the inputs: `s2_input_uncertainty` is how much "
-    "s2 moves if every coordinate moves by half an ulp (the rounding of a decimal input). "
-    "`kind` is lightlike when |s2| <= `lightlike_tolerance` = 4 eps (dct^2 + |dx|^2) + "
-    "s2_input_uncertainty (eps = 2.2e-16), else timelike (s2 < 0) or spacelike (s2 > 0). "
-    "Timelike: `proper_time` = sqrt(-s2)/c (s; years with units years) and `proper_time_ct`; "
-    "spacelike: `proper_length` = sqrt(s2). All three keys are always present: a quantity "
-    "that does not exist is null (spacelike: proper_time and proper_time_ct; timelike: "
-    "proper_length); lightlike: all three are 0. `time_order` is the order in the given frame and "
-    "`time_order_reversible` is true exactly for spacelike separation (some boost makes the "
-    "second event come first). `example_frame`: the velocity of a frame in which the events "
-    "happen at the same place (timelike, beta = dx/(c dt)) or at the same time (spacelike, "
-    "beta = c dt dx/|dx|^2), with 1 - beta = |s2|/(big (big + small)) from s2, so it stays "
-    "precise next to the light cone; null when lightlike. `coincident` is true when the two "
-    "events are the same event (then kind lightlike).";
-
-static json_t *interval_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_interval(struct api_call *c, const json_t *body)
 {
     const json_t *ev = json_object_get(body, "events");
     double e1[4], e2[4];
@@ -286,7 +185,7 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
         e1[k] = json_number_value(json_array_get(json_array_get(ev, 0), k));
         e2[k] = json_number_value(json_array_get(json_array_get(ev, 1), k));
     }
-    const int ly = strcmp(api_string(body, "units", "metres"), "years") == 0;
+    const int ly = strcmp(api_string_of(body, "units"), "years") == 0;
     const double c_light = ly ? 1.0 : 299792458.0;
     struct mech_interval iv;
     struct mech_error e;
@@ -334,140 +233,7 @@ static json_t *interval_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_interval = {
-    "POST",
-    "/v1/relativity/interval",
-    "The interval between two events: s2, timelike/spacelike/lightlike, proper time or length, "
-    "whether the time order can be reversed",
-    iv_description,
-    iv_schema,
-    iv_example,
-    interval_op,
-    0,
-    1, /* quick */
-};
-
 /* ======================= worldline ========================================= */
-
-#define WL_POS "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30}"
-#define WL_ACC "{\"type\":\"number\",\"minimum\":-1e30,\"maximum\":1e30}"
-#define WL_LEG_COAST(key, what)                                                                    \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"velocity\",\"" key        \
-    "\"],\"description\":\"constant velocity for a " what "\",\"properties\":{"                    \
-    "\"velocity\":" API_VELOCITY_SCHEMA ",\"" key "\":" WL_POS "}}"
-#define WL_LEG_ACCEL(key, what)                                                                    \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"" key                     \
-    "\",\"proper_time\"],\"description\":\"constant proper acceleration (" what ") for a "         \
-    "proper time\",\"properties\":{\"" key "\":" WL_ACC ",\"proper_time\":" WL_POS ","             \
-    "\"direction\":" FR_DIR3 "}}"
-
-static const char wl_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"legs\"],"
-    "\"properties\":{"
-    "\"legs\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":1000,\"items\":{"
-    "\"oneOf\":[" WL_LEG_COAST("coordinate_time", "coordinate (stay-at-home) time") "," WL_LEG_COAST("distance", "coordinate distance") "," WL_LEG_COAST(
-        "proper_time",
-        "proper (traveller) time") "," WL_LEG_ACCEL("proper_acceleration",
-                                                    "m/s^2, or ly/yr^2 in years "
-                                                    "units") "," WL_LEG_ACCEL("proper"
-                                                                              "_accel"
-                                                                              "eratio"
-                                                                              "n_g",
-                                                                              "in "
-                                                                              "units "
-                                                                              "of g "
-                                                                              "= "
-                                                                              "9."
-                                                                              "80665 "
-                                                                              "m/s^2") "]}},"
-                                                                                       "\"units\":{"
-                                                                                       "\"enum\":["
-                                                                                       "\"seconds\""
-                                                                                       ",\"years\"]"
-                                                                                       ",\"default"
-                                                                                       "\":"
-                                                                                       "\"seconds\""
-                                                                                       ","
-                                                                                       "\"descripti"
-                                                                                       "on\":"
-                                                                                       "\"seconds: "
-                                                                                       "times in "
-                                                                                       "s, lengths "
-                                                                                       "in m, c = "
-                                                                                       "299792458 "
-                                                                                       "m/s; "
-                                                                                       "years: "
-                                                                                       "times in "
-                                                                                       "Julian "
-                                                                                       "years, "
-                                                                                       "lengths in "
-                                                                                       "light-"
-                                                                                       "years, c = "
-                                                                                       "1\"},"
-                                                                                       "\"tick_"
-                                                                                       "interval\":"
-                                                                                       "{\"type\":"
-                                                                                       "\"number\","
-                                                                                       "\"exclusive"
-                                                                                       "Minimum\":"
-                                                                                       "0,"
-                                                                                       "\"maximum\""
-                                                                                       ":1e30,"
-                                                                                       "\"default\""
-                                                                                       ":1,"
-                                                                                       "\"descripti"
-                                                                                       "on\":"
-                                                                                       "\"each "
-                                                                                       "twin's "
-                                                                                       "clock "
-                                                                                       "ticks once "
-                                                                                       "per this "
-                                                                                       "proper "
-                                                                                       "time "
-                                                                                       "(default 1 "
-                                                                                       "s or 1 "
-                                                                                       "year)\"},"
-    "\"telescope_home_times\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":20,\"items\":"
-    "{\"type\":\"number\",\"minimum\":0,\"maximum\":1e30},\"description\":\"home times "
-    "at which the stay-at-home twin reads the traveller's clock through a telescope (the "
-    "light arriving then); up to the time the trip's end is seen\"}}}";
-
-static const char wl_example[] =
-    "{\"units\": \"years\", \"legs\": [{\"velocity\": {\"beta\": [0.8, 0, 0]}, \"distance\": 8}, "
-    "{\"velocity\": {\"beta\": [-0.8, 0, 0]}, \"distance\": 8}]}";
-
-static const char wl_description[] =
-    "With telescope_home_times: home_telescope, for each home time t the traveller's clock "
-    "reading the stay-at-home twin sees through a telescope (notes §3.15), from the event "
-    "where the light left (t_e + |x_e|/c = t, found by bisection along the trip), with that "
-    "emission event, the leg and the light travel time. "
-    "A trip as legs, starting from the stay-at-home twin at the origin, at rest, at t = 0 (the "
-    "twin paradox, notes §3.15). Legs: constant `velocity` (the shared velocity forms, in the "
-    "home frame; the velocity changes instantly, as in the notes) for a `coordinate_time`, a "
-    "`distance` or a `proper_time`; or constant proper acceleration (`proper_acceleration` in "
-    "m/s^2 or ly/yr^2, or `proper_acceleration_g` in g = 9.80665 m/s^2) for a `proper_time`, "
-    "along `direction` (default: the current velocity; a negative acceleration points the "
-    "other way, to brake), which must be along or against the current velocity (hyperbolic "
-    "motion: rapidity grows by a tau/c, t = (c/a) sinh(a tau/c), x = (c^2/a)(cosh(a tau/c) - "
-    "1) from rest, evaluated as K cosh m, K sinh m with K = c tau sinh(h)/h, h = a tau/2c, "
-    "precise for small a tau/c). `units`: seconds (s, m, c = 299792458 m/s) or years (Julian "
-    "years of 365.25 d, light-years, c = 1; g = 1.0323 ly/yr^2). Per leg and in total: "
-    "`proper_time` with `proper_time_ct` (c times it: m, or ly with years - a muon's c tau "
-    "beside its tau), `coordinate_time`, `age_difference` (coordinate - proper, without "
-    "cancellation: right at 1 m/s), `distance` (path length, including a turnaround inside an "
-    "accelerated leg), `displacement`, `start`/`end` events [t, x, y, z], `final_velocity`; "
-    "the total's `stay_at_home_time` is the home twin's age at the traveller's last event and "
-    "`returned` says whether the traveller is back home (|end| <= 1e-12 of the path). "
-    "Telescopes (notes §3.14, §3.15): home light seen by the traveller at (t, x) left home at "
-    "t - |x|/c; the traveller's event is seen at home at t + |x|/c. Per leg, "
-    "`traveller_sees_home` gives the home clock readings seen at the leg's start and end, the "
-    "`ticks` seen (their difference / tick_interval) and the `rate` (home time seen per "
-    "traveller time: sqrt((1-beta)/(1+beta)) receding radially); `home_sees_traveller` gives "
-    "the home times when the leg's start and end are seen, the leg's ticks, and the rate "
-    "(traveller time seen per home time). These differences are computed in light-cone form "
-    "(c dt (1 - beta), never t - |x|/c of large numbers), so 1 - beta = 1e-15 keeps its digits, "
-    "and each leg's from the leg itself (never the difference of the running readings), so a "
-    "day's leg after years keeps its digits too.";
 
 static const double G_STANDARD = 9.80665;     /* m/s², exact by definition */
 static const double JULIAN_YEAR = 31557600.0; /* s */
@@ -484,13 +250,13 @@ static json_t *telescope(struct api_call *c, const char *from_key, double from, 
     return o;
 }
 
-static json_t *worldline_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_worldline(struct api_call *c, const json_t *body)
 {
     const json_t *jl = json_object_get(body, "legs");
-    const int years = strcmp(api_string(body, "units", "seconds"), "years") == 0;
+    const int years = strcmp(api_string_of(body, "units"), "years") == 0;
     const double cl = years ? 1.0 : C_SI;
     const double g = years ? G_STANDARD * JULIAN_YEAR / C_SI : G_STANDARD;
-    const double tick = api_number(body, "tick_interval", 1.0);
+    const double tick = api_number_of(body, "tick_interval");
     size_t n = json_array_size(jl);
     struct mech_leg *legs = calloc(n, sizeof *legs);
     struct mech_leg_result *out = calloc(n, sizeof *out);
@@ -646,15 +412,3 @@ static json_t *worldline_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_worldline = {
-    "POST",
-    "/v1/relativity/worldline",
-    "A trip as legs of constant velocity or constant proper acceleration: proper times, the "
-    "stay-at-home time, and the Doppler ticks each twin sees",
-    wl_description,
-    wl_schema,
-    wl_example,
-    worldline_op,
-    0,
-    0,
-};

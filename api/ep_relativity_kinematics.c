@@ -25,47 +25,10 @@ static const double PI = 3.14159265358979323846;
 /* ---- shared schema fragments --------------------------------------------------- */
 
 /* clang-format off */
-#define KIN_NAME_JSON(name, mass, source) "\"" name "\""
-#define KIN_NAME_TEXT(name, mass, source) name " " #mass
-#define KIN_JSON_COMMA ","
-#define KIN_TEXT_SEP ", "
-#define KIN_NAMES MECH_PARTICLE_TABLE(KIN_NAME_JSON, KIN_JSON_COMMA)
 
 /* The particle table as catalog text (names with masses in MeV/c²). */
-#define KIN_TABLE_TEXT                                                                             \
-    " Particle names and masses in MeV/c^2 (" MECH_PARTICLE_EDITION "; neutrinos taken "          \
-    "massless): " MECH_PARTICLE_TABLE(KIN_NAME_TEXT, KIN_TEXT_SEP) "."
 
-#define KIN_UNIT_DESC                                                                              \
-    " Units: every energy, mass (unit/c^2) and momentum (unit/c) is in energy_unit (eV, keV, "     \
-    "MeV, GeV, TeV; default MeV), c = 1; angles in radians, or in degrees in the *_deg fields."
-
-#define KIN_UNIT                                                                                   \
-    "{\"type\":\"string\",\"enum\":[\"eV\",\"keV\",\"MeV\",\"GeV\",\"TeV\"],\"default\":\"MeV\","  \
-    "\"description\":\"unit of every energy, mass (unit/c^2) and momentum (unit/c), c = 1\"}"
-#define KIN_NUM(desc)                                                                              \
-    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60,\"description\":\"" desc "\"}"
-#define KIN_PARTICLE                                                                               \
-    "{\"description\":\"a particle name (table in the operation description) or a mass >= 0 "     \
-    "in energy_unit/c^2\",\"oneOf\":[{\"type\":\"string\",\"enum\":[" KIN_NAMES "]},"             \
-    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60}]}"
-#define KIN_VEC(n, desc)                                                                           \
-    "{\"type\":\"array\",\"minItems\":" #n ",\"maxItems\":" #n ",\"items\":"                        \
-    "{\"type\":\"number\",\"minimum\":-1e60,\"maximum\":1e60},\"description\":\"" desc "\"}"
-#define KIN_RAD(desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":3.141592653589793,"       \
-    "\"description\":\"" desc " (radians)\"}"
-#define KIN_DEG(desc) "{\"type\":\"number\",\"minimum\":0,\"maximum\":180,"                         \
-    "\"description\":\"" desc " (degrees)\"}"
 /* A particle with an optional state of motion (none given: at rest). */
-#define KIN_MOVING(desc)                                                                           \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\"],"             \
-    "\"description\":\"" desc "; at most one of energy, kinetic_energy, momentum, velocity "       \
-    "(none: at rest)\",\"properties\":{"                                                           \
-    "\"particle\":" KIN_PARTICLE ","                                                               \
-    "\"energy\":" KIN_NUM("total energy E = gamma m c^2 >= m") ","                                 \
-    "\"kinetic_energy\":" KIN_NUM("kinetic energy T = E - m >= 0") ","                             \
-    "\"momentum\":" KIN_NUM("magnitude of the momentum |p| >= 0") ","                              \
-    "\"velocity\":" API_VELOCITY_SCHEMA "}}"
 /* clang-format on */
 
 /* ---- shared request readers -------------------------------------------------- */
@@ -74,7 +37,7 @@ static int unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit
 {
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), u, &e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), u, &e);
     if (st != MECH_OK) {
         api_call_fail_core(c, st, &e, "");
         return 0;
@@ -215,41 +178,7 @@ static json_t *finish(struct api_call *c, json_t *res)
 
 /* ---- POST /v1/relativity/kinematics/invariant-mass ---------------------------- */
 
-/* clang-format off */
-static const char im_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"momenta\"],"
-    "\"properties\":{"
-    "\"energy_unit\":" KIN_UNIT ","
-    "\"momenta\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":1000,\"description\":\"1 to "
-    "1000 particles, each a 4-momentum [E, px, py, pz] or {particle, momentum}\",\"items\":{"
-    "\"oneOf\":[" KIN_VEC(4, "4-momentum [E, px, py, pz] with E >= |p|") ","
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\",\"momentum\"],"
-    "\"properties\":{\"particle\":" KIN_PARTICLE ","
-    "\"momentum\":" KIN_VEC(3, "momentum 3-vector; E = sqrt(m^2 + p^2)") "}}]}}}}";
-/* clang-format on */
-
-static const char im_example[] =
-    "{\"energy_unit\": \"MeV\", \"momenta\": [[67.4884, 0, 0, 67.4884], "
-    "{\"particle\": \"photon\", \"momentum\": [0, 0, -67.4884]}]}";
-
-static const char im_description[] =
-    "Invariant mass M of a set of particles (notes §3: p.p = -m^2 c^2 is the same in every "
-    "frame) and the velocity of their centre-of-momentum (CM) frame. Each particle is a "
-    "4-momentum [E, px, py, pz], or a particle (name or mass) with a momentum 3-vector, for "
-    "which E = sqrt(m^2 + p^2): give massive particles this way when the momenta are large "
-    "compared with the mass (a rounded E at gamma = 1e6 no longer carries m). M^2 = sum m_i^2 "
-    "+ 2 sum_{i<j} (E_i E_j - p_i.p_j) with each pair term formed without cancellation as "
-    "(m_i^2 E_j^2 + p_i^2 m_j^2)/(E_i E_j + |p_i||p_j|) + |p_i||p_j| 2 sin^2(theta/2), theta "
-    "from atan2(|p_i x p_j|, p_i.p_j): massless and nearly collinear particles keep full "
-    "relative precision (two photons 1e-9 rad apart), and M is boost-invariant to round-off. "
-    "The CM velocity is given precisely: gamma = E/M, gamma - 1 = P^2/(M(E + M)), "
-    "1 - beta = M^2/(E(E + P)), rapidity = log1p(beta gamma + gamma - 1). A 4-momentum with "
-    "E < |p| (spacelike: no real particle) is a 422 naming it; one spacelike by rounding only "
-    "(E^2 - p^2 >= -8 eps E^2) is taken as massless and listed in lightlike_clamped. A "
-    "light-like total (collinear massless particles) has M = 0 and no CM frame: "
-    "center_of_momentum is null." KIN_UNIT_DESC KIN_TABLE_TEXT;
-
-static json_t *invariant_mass_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_kinematics_invariant_mass(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
     if (!unit_of(c, body, &u)) return NULL;
@@ -326,64 +255,6 @@ static json_t *invariant_mass_op(struct api_call *c, const json_t *body)
 }
 
 /* ---- POST /v1/relativity/kinematics/decay ------------------------------------------ */
-
-/* clang-format off */
-static const char decay_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"parent\",\"daughters\"],"
-    "\"properties\":{"
-    "\"energy_unit\":" KIN_UNIT ","
-    "\"parent\":" KIN_MOVING("the decaying particle in the lab; it moves along +z") ","
-    "\"daughters\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":3,\"items\":" KIN_PARTICLE ","
-    "\"description\":\"two or three decay products\"},"
-    "\"theta_star\":" KIN_RAD("two-body: rest-frame angle of daughter 0 to the parent's "
-                              "direction; daughter 1 goes the opposite way") ","
-    "\"theta_star_deg\":" KIN_DEG("the same in degrees") ","
-    "\"cone\":{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"daughter\"],"
-    "\"description\":\"two-body: the energy range of one daughter seen within a cone around "
-    "the parent's direction\",\"properties\":{"
-    "\"daughter\":{\"type\":\"integer\",\"minimum\":0,\"maximum\":1},"
-    "\"half_angle\":" KIN_RAD("half-angle of the cone") ","
-    "\"half_angle_deg\":" KIN_DEG("half-angle of the cone") "}},"
-    "\"angles\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":2,\"items\":{\"type\":\"number\","
-    "\"minimum\":0,\"maximum\":3.141592653589793},\"description\":\"three-body, rest frame, "
-    "one plane: [angle between daughters 0 and 1, angle between 1 and 2] in radians\"},"
-    "\"angles_deg\":{\"type\":\"array\",\"minItems\":2,\"maxItems\":2,\"items\":{\"type\":"
-    "\"number\",\"minimum\":0,\"maximum\":180},\"description\":\"the same in degrees\"}}}";
-/* clang-format on */
-
-static const char decay_example[] =
-    "{\"energy_unit\": \"GeV\", \"parent\": {\"particle\": \"pi+\", \"kinetic_energy\": 500}, "
-    "\"daughters\": [\"mu+\", \"nu_mu\"], \"cone\": {\"daughter\": 1, \"half_angle\": 0.001}}";
-
-static const char decay_description[] =
-    "Two- and three-body decays (notes §3 pi0 decay and neutron decay; problems 11, 12, 19). "
-    "The parent is a particle with its lab energy, kinetic energy, momentum or velocity (none: "
-    "at rest) moving along +z. q_value = M - sum m (compensated). Two-body: the rest-frame "
-    "momentum p* = sqrt(lambda(M^2, m1^2, m2^2))/(2M), the Kallen function factored as "
-    "(M - m1 - m2)(M + m1 + m2)(M - m1 + m2)(M + m1 - m2) so it is exact near threshold; each "
-    "daughter's lab energy range [E(theta*=180), E(theta*=0)] and maximum lab angle "
-    "(sin theta_max = (p*/m)/(beta gamma) of the parent; null when the daughter can go "
-    "backward); the minimum opening angle of the pair (2 asin(1/gamma) for massless "
-    "daughters) and the rest-frame angle where it occurs; with theta_star, both daughters' lab "
-    "energy, momentum components along and across the parent's direction, angle, and their "
-    "opening angle (lab energies use gamma(E* - beta p*) = (gamma m^2 + p*^2/gamma)/(E* + "
-    "beta p*) backward, so nothing cancels at gamma = 1e6); with cone, the lab energies of the "
-    "chosen daughter seen within half_angle of the parent's direction (the pion-to-neutrino "
-    "beam problem): one interval, or two when the cone is narrower than the daughter's "
-    "maximum lab angle (forward and backward rest-frame emission both reach it), with the "
-    "rest-frame angles at the edges. Three-body: each daughter's maximum energy "
-    "E_max = (M^2 + m_i^2 - (sum_{j!=i} m_j)^2)/(2M), computed exactly as "
-    "T_max = Q (M - m_i + S_i)/(2M) (the others recoil together), and beside it "
-    "notes_estimate, the notes' neutron-decay approximation labelled as such (null when the "
-    "others are massless): the others as one recoil of mass S_i taking no kinetic energy, E "
-    "~ M - S_i, p ~ sqrt((M - S_i)^2 - m_i^2), T ~ Q, with kinetic_energy_minus_exact = "
-    "Q (Q + 2 m_i)/(2M) and momentum_minus_exact formed without cancellation (the neutron's "
-    "electron: 0.7823334 vs 0.7815822 MeV, 7.512e-4 MeV high), and its intermediate step "
-    "(the recoil non-relativistic, the p^4 term dropped: 2.18e-7 MeV low) - plus the lab maximum "
-    "gamma(E_max + beta p_max) for a moving parent; with angles, the planar rest-frame "
-    "configuration: momentum balance gives p0 : p1 : p2 = sin(theta12) : sin(theta20) : "
-    "sin(theta01) and energy conservation the scale. A parent lighter than its daughters "
-    "(M < sum m) is a 422 explaining that the decay cannot happen." KIN_UNIT_DESC KIN_TABLE_TEXT;
 
 /* The *_deg companion of an angle in radians (the description's promise). */
 static json_t *deg_of(struct api_call *c, double rad)
@@ -591,7 +462,7 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
     return res;
 }
 
-static json_t *decay_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_kinematics_decay(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
     if (!unit_of(c, body, &u)) return NULL;
@@ -634,35 +505,7 @@ static json_t *decay_op(struct api_call *c, const json_t *body)
 
 /* ---- POST /v1/relativity/kinematics/compton ---------------------------------------- */
 
-/* clang-format off */
-static const char compton_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"properties\":{"
-    "\"energy_unit\":" KIN_UNIT ","
-    "\"energy\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e60,"
-    "\"description\":\"incident photon energy (give this or wavelength)\"},"
-    "\"wavelength\":{\"type\":\"number\",\"exclusiveMinimum\":1e-60,\"maximum\":1e15,"
-    "\"description\":\"incident photon wavelength in metres (give this or energy)\"},"
-    "\"angle\":" KIN_RAD("photon scattering angle theta") ","
-    "\"angle_deg\":" KIN_DEG("photon scattering angle theta") ","
-    "\"target\":" KIN_PARTICLE "}}";
-/* clang-format on */
-
-static const char compton_example[] = "{\"wavelength\": 7.09e-11, \"angle_deg\": 90}";
-
-static const char compton_description[] =
-    "Compton scattering (notes §3): a photon of energy E (or wavelength lambda = hc/E, in "
-    "metres) scatters by theta off a target at rest, an electron unless target names another "
-    "particle or gives a mass. E' = E/(1 + (E/m)(1 - cos theta)), lambda' - lambda = "
-    "(h/(m c))(1 - cos theta), with 1 - cos theta computed as 2 sin^2(theta/2) so small angles "
-    "keep their precision; the recoil's kinetic energy T = E - E' = E k/(1 + k), "
-    "k = (E/m)(1 - cos theta), its momentum sqrt(T(T + 2m)) and angle phi to the incident "
-    "direction from cot phi = (1 + E/m) tan(theta/2) (phi = 90 degrees in the limit "
-    "theta -> 0). hc = 1.239841984332e-6 eV m from the exact SI h, c and e; "
-    "compton_wavelength is hc/(m c^2). Give exactly one of energy and wavelength, and one of "
-    "angle (radians) and angle_deg." KIN_UNIT_DESC KIN_TABLE_TEXT;
-
-static json_t *compton_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_kinematics_compton(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
     if (!unit_of(c, body, &u)) return NULL;
@@ -725,48 +568,7 @@ static json_t *compton_op(struct api_call *c, const json_t *body)
 
 /* ---- POST /v1/relativity/kinematics/collision -------------------------------------- */
 
-/* clang-format off */
-static const char collision_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"beam\",\"target\"],"
-    "\"properties\":{"
-    "\"energy_unit\":" KIN_UNIT ","
-    "\"beam\":" KIN_MOVING("the incoming particle, moving along +z") ","
-    "\"target\":" KIN_MOVING("the target: at rest, or a second beam moving along -z "
-                             "(tilted by crossing_angle)") ","
-    "\"crossing_angle\":" KIN_RAD("colliding beams: deviation from head-on; the momenta are "
-                                  "at pi - crossing_angle") ","
-    "\"crossing_angle_deg\":" KIN_DEG("the same in degrees") ","
-    "\"sqrt_s\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e60,\"description\":\"inverse "
-    "problem: the CM energy wanted on a target at rest; the beam's energy is then computed "
-    "(give no beam energy)\"},"
-    "\"final_state\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":100,\"items\":" KIN_PARTICLE
-    ",\"description\":\"particles to produce: threshold energies\"}}}";
-/* clang-format on */
-
-static const char collision_example[] =
-    "{\"energy_unit\": \"GeV\", \"beam\": {\"particle\": \"proton\", \"kinetic_energy\": 10}, "
-    "\"target\": {\"particle\": \"proton\"}, "
-    "\"final_state\": [\"proton\", \"proton\", \"proton\", \"antiproton\"]}";
-
-static const char collision_description[] =
-    "Collision energies (notes §3, problems 10 and 18): a beam on a target at rest, or two "
-    "beams (the target given a motion moves along -z, tilted towards +x by crossing_angle). "
-    "s = m1^2 + m2^2 + 2(E1 E2 - p1.p2) with E1 E2 - p1.p2 formed without cancellation "
-    "((m1^2 E2^2 + p1^2 m2^2)/(E1 E2 + p1 p2) + p1 p2 (1 - cos alpha)), and "
-    "s - (m1 + m2)^2 too, so available_energy = sqrt_s - m1 - m2 and the CM momentum "
-    "p* = sqrt(lambda(s, m1^2, m2^2))/(2 sqrt_s) are exact for slow collisions. Also: each "
-    "particle's energy, momentum and precise speed (gamma - 1, 1 - beta, rapidity), the CM "
-    "velocity (with p1 - p2 = (p1^2 - p2^2)/(p1 + p2) formed from the beams' own inputs, so "
-    "nearly symmetric beams keep its digits), the beam energy a fixed target of the same mass would need for the same sqrt_s "
-    "(T = (s - (m1 + m2)^2)/(2 m2)), and for equal masses the beam energy of a symmetric "
-    "head-on collider (sqrt_s/2). Inverse: give sqrt_s (and no beam energy) with the target "
-    "at rest to get the beam energy E = (s - m1^2 - m2^2)/(2 m2). final_state gives the "
-    "threshold sqrt_s = sum of the final masses, whether it is reached, and the fixed-target "
-    "beam energy at threshold (p p -> p p p pbar: T = 6 m_p = 5.63 GeV); conservation laws "
-    "(charge, baryon number) are not checked. Unreachable requests (sqrt_s below m1 + m2, a "
-    "massless target at rest) are 422s." KIN_UNIT_DESC KIN_TABLE_TEXT;
-
-static json_t *collision_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
     if (!unit_of(c, body, &u)) return NULL;
@@ -892,59 +694,9 @@ static json_t *collision_op(struct api_call *c, const json_t *body)
 
 /* ---- routes ------------------------------------------------------------------------ */
 
-const struct api_route api_route_relativity_invariant_mass = {
-    "POST",
-    "/v1/relativity/kinematics/invariant-mass",
-    "Invariant mass and centre-of-momentum velocity of a set of 4-momenta or particles",
-    im_description,
-    im_schema,
-    im_example,
-    invariant_mass_op,
-    0,
-    1, /* quick */
-};
-
-const struct api_route api_route_relativity_decay = {
-    "POST",
-    "/v1/relativity/kinematics/decay",
-    "Two- and three-body decays: rest-frame momentum, lab energies and angles, opening "
-    "angles, cone energy ranges, endpoints",
-    decay_description,
-    decay_schema,
-    decay_example,
-    decay_op,
-    0,
-    0,
-};
-
-const struct api_route api_route_relativity_compton = {
-    "POST",
-    "/v1/relativity/kinematics/compton",
-    "Compton scattering off an electron or any target: scattered photon, recoil energy and angle",
-    compton_description,
-    compton_schema,
-    compton_example,
-    compton_op,
-    0,
-    1, /* quick */
-};
-
-const struct api_route api_route_relativity_collision = {
-    "POST",
-    "/v1/relativity/kinematics/collision",
-    "sqrt(s) of fixed-target and colliding beams, the beam energy for a given sqrt(s), "
-    "production thresholds",
-    collision_description,
-    collision_schema,
-    collision_example,
-    collision_op,
-    0,
-    1, /* quick */
-};
-
 /* ---- GET /v1/relativity/particles ------------------------------------------ */
 
-static json_t *particles_resource(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_particles(struct api_call *c, const json_t *body)
 {
     (void)body;
     json_t *list = json_array();
@@ -957,17 +709,3 @@ static json_t *particles_resource(struct api_call *c, const json_t *body)
                      "particles", list);
 }
 
-const struct api_route api_route_relativity_particles = {
-    "GET",
-    "/v1/relativity/particles",
-    "The particle names the kinematics operations accept, with their masses",
-    "Every name a kinematics request may use in place of a mass (\"pi0\", \"proton\", "
-    "\"electron\", ...), with its mass in MeV/c^2 and the source of the value (PDG 2024 "
-    "for particles, CODATA 2018 for light nuclei, 0 for massless ones). Requests may give "
-    "energies in any energy_unit; this table is in MeV/c^2.",
-    NULL,
-    NULL,
-    particles_resource,
-    0,
-    0,
-};

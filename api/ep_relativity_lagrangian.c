@@ -8,50 +8,7 @@
 #include "mech/charged_lagrangian.h"
 #include "velocity_request.h"
 
-/* clang-format off */
-#define L_VEC(desc)                                                                                \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-1e100,\"maximum\":1e100},\"description\":\"" desc "\"}"
-#define L_NUM(desc)                                                                                \
-    "{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100,\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"mass\",\"velocity\"],"
-    "\"properties\":{"
-    "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e60,\"description\":"
-    "\"rest mass m, kg\"},"
-    "\"charge\":" L_NUM("charge q, C; default 0") ","
-    "\"velocity\":" API_VELOCITY_SCHEMA ","
-    "\"scalar_potential\":" L_NUM("phi at the particle, V; default 0") ","
-    "\"vector_potential\":" L_VEC("A at the particle, T m; default 0") ","
-    "\"fields\":{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"position\"],"
-    "\"description\":\"uniform fields instead of potentials: phi = -E.r, A = (1/2) B x r at "
-    "position r\",\"properties\":{"
-    "\"E\":" L_VEC("electric field, V/m; default 0") ","
-    "\"B\":" L_VEC("magnetic field, T; default 0") ","
-    "\"position\":" L_VEC("the particle's position r, m") "}}"
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "The relativistic Lagrangian and Hamiltonian of a particle of mass m and charge q moving "
-    "with a given velocity (the shared forms) in electromagnetic potentials phi, A (notes §3: "
-    "L = -m c^2/gamma - V, p = gamma m v, H = E + V; with fields L = -m c^2/gamma + q A.v - q "
-    "phi). Give scalar_potential and vector_potential at the particle, or fields {E, B, "
-    "position} (uniform fields in the gauge phi = -E.r, A = (1/2) B x r; then also "
-    "lorentz_force = q(E + v x B)). Answers lagrangian, lagrangian_plus_rest_energy (= m c^2 "
-    "(gamma - 1)/gamma + q A.v - q phi, precise at low speed), kinetic_momentum gamma m v, "
-    "canonical_momentum P = dL/dv = gamma m v + q A, hamiltonian H = P.v - L = gamma m c^2 + q "
-    "phi and hamiltonian_minus_rest_energy, energy gamma m c^2, potential_energy q phi, and "
-    "checks: hamiltonian_from_momentum = sqrt(m^2 c^4 + |P - qA|^2 c^2) + q phi (H as a "
-    "function of P) and legendre_residual = (P.v - L) - H (0 to round-off). approximations."
-    "lagrangian_newtonian: the notes' non-relativistic L + m c^2 = (1/2) m v^2 + q A.v - q "
-    "phi, labelled, beside lagrangian_plus_rest_energy. Units SI.";
-
-static const char example[] =
-    "{\"mass\": 9.1093837015e-31, \"charge\": -1.602176634e-19, \"velocity\": {\"beta\": [0.6, 0, 0]}, "
-    "\"fields\": {\"B\": [0, 0, 1], \"position\": [0, 0.001, 0]}}";
-
-static json_t *lagrangian_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_lagrangian(struct api_call *c, const json_t *body)
 {
     const json_t *fj = json_object_get(body, "fields");
     if (fj && (json_object_get(body, "scalar_potential") || json_object_get(body, "vector_potential"))) {
@@ -112,15 +69,3 @@ static json_t *lagrangian_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_relativity_lagrangian = {
-    "POST",
-    "/v1/relativity/lagrangian",
-    "The relativistic Lagrangian, canonical momentum and Hamiltonian of a charged particle in "
-    "given potentials or uniform fields",
-    description,
-    schema,
-    example,
-    lagrangian_op,
-    0,
-    1, /* quick */
-};

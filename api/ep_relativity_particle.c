@@ -30,59 +30,6 @@ static const struct {
 };
 #define N_FORMS (sizeof forms / sizeof forms[0])
 
-/* clang-format off */
-#define P_NAME_JSON(name, mass, source) "\"" name "\""
-#define P_COMMA ","
-#define P_NUM(lo, hi, desc)                                                                        \
-    "{\"type\":\"number\",\"minimum\":" #lo ",\"maximum\":" #hi ",\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"particle\"],"
-    "\"properties\":{"
-    "\"particle\":{\"description\":\"a particle name (GET /v1/relativity/particles) or a mass "
-    ">= 0 in energy_unit/c^2\",\"oneOf\":[{\"type\":\"string\",\"enum\":["
-    MECH_PARTICLE_TABLE(P_NAME_JSON, P_COMMA) "]},"
-    "{\"type\":\"number\",\"minimum\":0,\"maximum\":1e60}]},"
-    "\"energy_unit\":{\"type\":\"string\",\"enum\":[\"eV\",\"keV\",\"MeV\",\"GeV\",\"TeV\"],"
-    "\"default\":\"MeV\",\"description\":\"unit of the mass (unit/c^2), energies and momentum "
-    "(unit/c), c = 1\"},"
-    "\"beta\":" P_NUM(0, 1, "speed over c, in [0, 1)") ","
-    "\"speed\":" P_NUM(0, 299792458, "speed in m/s, below c = 299792458") ","
-    "\"gamma\":" P_NUM(1, 1e151, "Lorentz factor >= 1") ","
-    "\"gamma_minus_one\":" P_NUM(0, 1e151, "gamma - 1 >= 0, the precise form near rest") ","
-    "\"one_minus_beta\":" P_NUM(0, 1, "1 - beta in (0, 1], the precise form near c") ","
-    "\"rapidity\":" P_NUM(0, 350, "rapidity atanh(beta) >= 0") ","
-    "\"beta_gamma\":" P_NUM(0, 1e151, "beta gamma = p/(m c) >= 0") ","
-    "\"energy\":" P_NUM(0, 1e60, "total energy E = gamma m c^2 >= m c^2, in energy_unit") ","
-    "\"momentum\":" P_NUM(0, 1e60, "momentum |p| >= 0, in energy_unit/c") ","
-    "\"kinetic_energy\":" P_NUM(0, 1e60, "kinetic energy T = E - m c^2 >= 0, in energy_unit") ","
-    "\"proper_lifetime\":" P_NUM(0, 1e60, "mean lifetime tau in the rest frame, s (> 0): "
-                                "adds lifetime {proper, c_tau, lab, lab_c_tau, decay_length}")
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "One free particle's state of motion (notes §3: E = gamma m c^2, p = gamma m v, "
-    "beta = tanh(rapidity), gamma = cosh(rapidity)) from exactly one of beta, speed (m/s), "
-    "gamma, gamma_minus_one, one_minus_beta, rapidity, beta_gamma, energy, momentum, "
-    "kinetic_energy. Units: the mass, energies and momentum in energy_unit (default MeV, "
-    "c = 1); speed in m/s. Answers given (the key you gave), mass, energy, kinetic_energy, "
-    "momentum, beta, one_minus_beta, speed, gamma, gamma_minus_one, beta_gamma, rapidity. "
-    "Precision: every member is computed from the one given without cancellation, never "
-    "1/sqrt(1 - beta^2) of a rounded beta: T = m (gamma - 1) with gamma - 1 = beta^2 "
-    "gamma^2/(gamma + 1) (right to round-off at 1 m/s, where 1/sqrt(1 - beta^2) - 1 is 0), "
-    "1 - beta right at 1e-15 and at rapidity 300. A massless particle takes only an energy, "
-    "momentum or kinetic energy (all equal); its beta is 1, one_minus_beta 0 and gamma, "
-    "gamma_minus_one, beta_gamma, rapidity are null (they do not exist). approximations: the "
-    "notes' non-relativistic kinetic energies, each labelled and beside the exact T: "
-    "newtonian = m v^2/2 with relative_error (m v^2/2 - T)/T = -(gamma - 1)(2 gamma + 1)/"
-    "(2 gamma^2), and momentum_expansion = p^2/2m (the notes' E ~ m c^2 + p^2/2m) with "
-    "relative_error (gamma - 1)/2. With proper_lifetime tau (s): lifetime {proper, c_tau "
-    "(m), lab = gamma tau (s), lab_c_tau = gamma c tau (m, c times the lab lifetime), "
-    "decay_length = beta gamma c tau (m)}. Two or no forms, beta "
-    ">= 1, E < m, a massless particle given a speed: a 422 naming the field.";
-
-static const char example[] = "{\"particle\": \"mu-\", \"beta\": 0.9999, \"proper_lifetime\": 2e-6}";
-
 static json_t *real_or_null(struct api_call *c, int ok, double x)
 {
     return ok ? api_real(c, x) : json_null();
@@ -118,12 +65,12 @@ static int mass_of(struct api_call *c, const json_t *v, enum mech_energy_unit u,
     return 1;
 }
 
-static json_t *particle_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_particle(struct api_call *c, const json_t *body)
 {
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_energy_unit unit;
-    enum mech_status st = mech_energy_unit_parse(api_string(body, "energy_unit", "MeV"), &unit, &e);
+    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), &unit, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     double m;
     if (!mass_of(c, json_object_get(body, "particle"), unit, &m)) return NULL;
@@ -216,15 +163,3 @@ static json_t *particle_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_relativity_particle = {
-    "POST",
-    "/v1/relativity/particle",
-    "One particle's gamma, beta, E, p, T and rapidity from any one of them, precise at 1 m/s "
-    "and near c, with the non-relativistic approximations and the lifetime (c tau, gamma tau)",
-    description,
-    schema,
-    example,
-    particle_op,
-    0,
-    1, /* quick */
-};

@@ -24,48 +24,12 @@ static const struct {
 };
 #define N_FORMS (sizeof forms / sizeof forms[0])
 
-/* clang-format off */
-#define R_NUM(lo, hi, desc)                                                                        \
-    "{\"type\":\"number\",\"minimum\":" #lo ",\"maximum\":" #hi ",\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
-    "\"beta\":" R_NUM(0, 1, "final speed over c, in [0, 1)") ","
-    "\"speed\":" R_NUM(0, 299792458, "final speed, m/s") ","
-    "\"gamma\":" R_NUM(1, 1e151, "final Lorentz factor") ","
-    "\"gamma_minus_one\":" R_NUM(0, 1e151, "final gamma - 1") ","
-    "\"one_minus_beta\":" R_NUM(0, 1, "final 1 - beta, in (0, 1]") ","
-    "\"rapidity\":" R_NUM(0, 350, "final rapidity") ","
-    "\"beta_gamma\":" R_NUM(0, 1e151, "final beta gamma (proper velocity over c)") ","
-    "\"mass_ratio\":" R_NUM(1, 1e300, "m_initial/m_final >= 1: answers the final speed") ","
-    "\"exhaust_beta\":" R_NUM(0, 1, "exhaust speed over c relative to the rocket, (0, 1]; "
-                             "default 1 (a photon rocket)") ","
-    "\"exhaust_speed\":" R_NUM(0, 299792458, "exhaust speed relative to the rocket, m/s "
-                              "(instead of exhaust_beta)")
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "The relativistic rocket (Ackeret 1946; Rindler §6.6): starting from rest and ejecting "
-    "exhaust at speed u = exhaust_beta c relative to itself (default 1: a photon rocket; or "
-    "exhaust_speed in m/s), it reaches rapidity eta when its rest mass has fallen by mass_ratio "
-    "= m_i/m_f = exp(eta/exhaust_beta) = ((1 + beta)/(1 - beta))^(1/(2 exhaust_beta)) (photon "
-    "rocket: gamma (1 + beta)). Give the final speed as exactly one of beta, speed, gamma, "
-    "gamma_minus_one, one_minus_beta, rapidity, beta_gamma, or give mass_ratio to get the "
-    "final speed. Answers final {beta, one_minus_beta, gamma, gamma_minus_one, rapidity, "
-    "beta_gamma, speed (m/s)}, exhaust_beta, mass_ratio (null beyond 1e308), log_mass_ratio, "
-    "fuel_fraction = 1 - m_f/m_i (to round-off at 1 m/s) and newtonian: Tsiolkovsky's "
-    "m_i/m_f = exp(v/u) with its relative_error = exp(-(eta - beta)/exhaust_beta) - 1 (eta - "
-    "beta summed as a series, so it keeps its digits at 1 m/s), labelled as the "
-    "approximation it is.";
-
-static const char example[] = "{\"beta\": 0.6}";
-
 static json_t *real_or_null(struct api_call *c, double x)
 {
     return isfinite(x) ? api_real(c, x) : json_null();
 }
 
-static json_t *rocket_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_rocket(struct api_call *c, const json_t *body)
 {
     const json_t *eb = json_object_get(body, "exhaust_beta"), *es = json_object_get(body, "exhaust_speed");
     if (eb && es) {
@@ -140,15 +104,3 @@ static json_t *rocket_op(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_relativity_rocket = {
-    "POST",
-    "/v1/relativity/rocket",
-    "The relativistic rocket: the mass ratio for a final speed or rapidity (or the speed a "
-    "mass ratio gives), any exhaust speed, beside Tsiolkovsky's",
-    description,
-    schema,
-    example,
-    rocket_op,
-    0,
-    1, /* quick */
-};

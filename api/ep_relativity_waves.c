@@ -17,67 +17,7 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* A 3-vector property with a description (bounded so products stay finite). */
-#define WAVES_VEC3_HEAD                                                                            \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"                                           \
-    "\"items\":{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100},\"description\":"
-
-#define DOPPLER_EMISSION_DIR                                                                       \
-    WAVES_VEC3_HEAD "\"the direction the light travels (from the source towards the observer) in " \
-                    "the SOURCE's rest frame; give exactly one of emission_direction and "         \
-                    "arrival_direction\"}"
-#define DOPPLER_ARRIVAL_DIR                                                                        \
-    WAVES_VEC3_HEAD "\"the direction the light travels when it reaches the observer, in the "      \
-                    "OBSERVER's rest frame (opposite to the line of sight towards the source)\"}"
-#define FIELDS_E                                                                                   \
-    WAVES_VEC3_HEAD "\"electric field: V/m in SI; in Heaviside-Lorentz the same unit as B; each "  \
-                    "|component| <= 1e100\"}"
-#define FIELDS_B                                                                                   \
-    WAVES_VEC3_HEAD "\"magnetic field: T in SI; in Heaviside-Lorentz the same unit as E\"}"
-
 /* ======================= POST /v1/relativity/doppler ======================= */
-
-static const char doppler_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"properties\":{"
-    "\"source_velocity\":" API_VELOCITY_SCHEMA ","
-    "\"observer_velocity\":" API_VELOCITY_SCHEMA ","
-    "\"emission_direction\":" DOPPLER_EMISSION_DIR ","
-    "\"arrival_direction\":" DOPPLER_ARRIVAL_DIR ","
-    "\"frequency\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,"
-    "\"description\":\"emitted frequency in Hz, in the source's rest frame (optional; at most "
-    "one of frequency and wavelength)\"},"
-    "\"wavelength\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,"
-    "\"description\":\"emitted wavelength in m, in the source's rest frame (optional)\"}"
-    "}}";
-
-static const char doppler_example[] =
-    "{\"observer_velocity\": {\"beta\": [0.8, 0, 0]}, \"emission_direction\": [1, 0, 0], "
-    "\"frequency\": 1}";
-
-static const char doppler_description[] =
-    "Relativistic Doppler shift and aberration (notes §3.14) for light from a source to an "
-    "observer that each move with a velocity (the shared velocity forms: beta, rapidity, "
-    "gamma or one_minus_beta; absent = at rest in the lab). The light's propagation direction "
-    "is given either as emission_direction in the source's rest frame or as "
-    "arrival_direction in the observer's rest frame (each frame's axes are the lab's carried "
-    "by its pure boost). The relative motion is computed from the two boosts' rapidities and "
-    "light-cone components, not by subtracting velocities. Angles: angle_source_frame is "
-    "alpha_S, between the light and the observer's velocity seen in the source frame; "
-    "angle_observer_frame is alpha_O, between the light and the source's velocity seen in "
-    "the observer frame; tan(alpha_S/2) tan(alpha_O/2) = exp(-eta). The Doppler factor "
-    "D = nu_obs/nu_emit = gamma(1 - beta cos alpha_S) = 1/(gamma(1 - beta cos alpha_O)) is "
-    "computed as exp(-eta) + 2 sinh(eta) sin^2(alpha_S/2) (no cancellation at any speed) and "
-    "D - 1 from gamma - 1 (accurate at 1 m/s). case names the geometry computed (within "
-    "1e-15 rad): longitudinal_approaching (D = exp(eta) = sqrt((1+beta)/(1-beta))), "
-    "longitudinal_receding (D = exp(-eta)), transverse_source_frame (light perpendicular to "
-    "the motion in the source frame: blue shift D = gamma), transverse_observer_frame "
-    "(perpendicular in the observer frame: red shift D = 1/gamma, the notes' transverse "
-    "effect), general, or no_relative_motion. Wavelengths use c = 299792458 m/s exactly. "
-    "shift says red (D < 1: longer wavelength), blue (D > 1) or none; redshift_z = "
-    "lambda_obs/lambda_emit - 1 = -(D - 1)/D (negative for a blue shift), and with a "
-    "frequency or wavelength, wavelength_shift = lambda_obs - lambda_emit and frequency_shift "
-    "= nu_obs - nu_emit, each from D - 1 (a 1 m/s shift keeps its digits).";
 
 static const char *frame_pointer(int in_source)
 {
@@ -89,7 +29,7 @@ static json_t *angle_or_null(struct api_call *c, double a, double scale)
     return isnan(a) ? json_null() : api_real(c, a * scale);
 }
 
-static json_t *doppler_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
 {
     const json_t *emit = json_object_get(body, "emission_direction");
     const json_t *arrive = json_object_get(body, "arrival_direction");
@@ -211,52 +151,7 @@ static json_t *doppler_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_doppler = {
-    "POST",
-    "/v1/relativity/doppler",
-    "Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with "
-    "aberration",
-    doppler_description,
-    doppler_schema,
-    doppler_example,
-    doppler_op,
-    0,
-    1, /* quick */
-};
-
 /* ======================= POST /v1/relativity/fields ======================== */
-
-static const char fields_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"E\",\"B\",\"velocity\"],"
-    "\"properties\":{"
-    "\"E\":" FIELDS_E ","
-    "\"B\":" FIELDS_B ","
-    "\"velocity\":" API_VELOCITY_SCHEMA ","
-    "\"units\":{\"enum\":[\"heaviside_lorentz\",\"si\"],\"default\":\"heaviside_lorentz\","
-    "\"description\":\"heaviside_lorentz: c = 1, the notes' units (default); si: E in V/m, B "
-    "in T\"}"
-    "}}";
-
-static const char fields_example[] =
-    "{\"E\": [1, 2, 3], \"B\": [4, 5, 6], \"velocity\": {\"beta\": [0.6, 0, 0]}}";
-
-static const char fields_description[] =
-    "Electric and magnetic fields at the same event seen from the frame moving with velocity "
-    "beta*c (the passive boost of /v1/relativity/boost; notes 'Lorentz Transformation of the "
-    "Fields'). Heaviside-Lorentz (c = 1): E'par = E par, B'par = B par, "
-    "E'perp = gamma(E + beta x B)perp, B'perp = gamma(B - beta x E)perp; SI: "
-    "E'perp = gamma(E + v x B)perp, B'perp = gamma(B - v x E/c^2)perp, c = 299792458 m/s. A "
-    "charge at rest (pure E) is seen moving with -beta c, and B' = -beta x E'. The "
-    "perpendicular parts are computed from P = E + n x B and M = E - n x B, which scale "
-    "exactly by exp(+eta) and exp(-eta), or from the gamma - 1 form, whichever is more "
-    "accurate. invariants_before are E^2 - B^2 (SI: E^2 - c^2 B^2) and E.B of the given "
-    "fields; invariants_after the same of the boosted fields, from the boosted light-cone "
-    "combinations (E'^2 - B'^2 = E par^2 - B par^2 + P'.M', E'.B' = E par B par + "
-    "n.(M' x P')/2) with compensated products, so they agree to about 1e-16 of "
-    "field_scale_squared = |E|^2 + |B|^2 (SI: |E|^2 + c^2|B|^2) at any gamma; "
-    "invariants_difference reports |after - before|/field_scale_squared (E.B in SI scaled "
-    "by c).";
 
 static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v)
 {
@@ -266,11 +161,11 @@ static json_t *invariants_json(struct api_call *c, const struct mech_em_invarian
     return o;
 }
 
-static json_t *fields_op(struct api_call *c, const json_t *body)
+json_t *api_op_relativity_fields(struct api_call *c, const json_t *body)
 {
     struct mech_boost b;
     if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
-    const char *units = api_string(body, "units", "heaviside_lorentz");
+    const char *units = api_string_of(body, "units");
     const int si = !strcmp(units, "si");
     const struct mech_vec3 e = api_vec3_member(body, "E", mech_vec3_make(0, 0, 0));
     const struct mech_vec3 bf = api_vec3_member(body, "B", mech_vec3_make(0, 0, 0));
@@ -312,14 +207,3 @@ static json_t *fields_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_relativity_fields = {
-    "POST",
-    "/v1/relativity/fields",
-    "E and B under a boost, Heaviside–Lorentz or SI, with the invariants E² − B² and E·B",
-    fields_description,
-    fields_schema,
-    fields_example,
-    fields_op,
-    0,
-    1, /* quick */
-};

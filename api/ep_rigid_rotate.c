@@ -20,95 +20,6 @@
 #include "schema.h"
 #include "trajectory_request.h"
 
-extern const struct api_route api_route_rigid_inertia;
-
-/* clang-format off */
-#define R_NUM(lo, hi) "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi "}"
-#define R_VEC3(lo, hi, desc)                                                            \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" R_NUM(lo, hi)         \
-    ",\"description\":\"" desc "\"}"
-#define R_ROW3 "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" R_NUM("-2", "2") "}"
-/* the initial attitude: any rotation form of api/rotation_request.h, passive by default */
-#define R_ORIENTATION API_ROTATION_SCHEMA
-/* clang-format on */
-
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"omega\",\"t_end\"],"
-    "\"properties\":{"
-    "\"moments\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30},"
-    "\"description\":\"principal moments [I1, I2, I3], kg m^2, > 0, each at most the sum of "
-    "the other two; body axes = principal axes. Give this or inertia.\"},"
-    "\"inertia\":{\"type\":\"object\",\"description\":\"a full POST /v1/rigid/inertia request "
-    "(validated against that route's schema, errors under /inertia): the body is rotated about "
-    "that request's origin (default its centre of mass), its principal frame is the body "
-    "frame, and omega and orientation refer to the scene axes of that request (the body as "
-    "built). Give this or moments.\"},"
-    "\"omega\":" R_VEC3("-1e6", "1e6", "initial angular velocity, rad/s, body axes") ","
-    "\"orientation\":" R_ORIENTATION ","
-    "\"torque\":{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"frame\",\"value\"],\"properties\":{"
-    "\"frame\":{\"enum\":[\"body\",\"space\"],\"description\":\"axes the constant torque is "
-    "fixed in\"},"
-    "\"value\":" R_VEC3("-1e30", "1e30", "N m") "},"
-    "\"description\":\"optional constant torque; default none (torque-free)\"},"
-    "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
-    API_DRY_RUN_PROP
-    "}}";
-
-static const char description[] =
-    "Rotation of a rigid body about its centre of mass (or a fixed point) by Euler's equations "
-    "in the principal frame, I1 w1' = (I2 - I3) w2 w3 + G1 and cyclic (notes §2.8), with the "
-    "attitude carried as a unit quaternion (no Euler-angle singularity): dq/dt = 1/2 q (x) "
-    "(0, w). The body is given by moments [I1, I2, I3] (body axes = principal axes) or by "
-    "inertia, a full /v1/rigid/inertia request: then the principal frame of its tensor (about "
-    "its origin, default the centre of mass) is the body frame, and omega and orientation "
-    "refer to that request's scene axes (the body as built); the answer's principal_axes "
-    "(rows = principal axes in those axes, as /v1/rigid/inertia gives them) convert, and its "
-    "omega is in principal axes. Orientation is PASSIVE as everywhere in mechd: R takes space "
-    "(inertial) components to body components; the answer's orientation is the quaternion "
-    "[w, x, y, z] of R(t) per sample (R = (w^2-|v|^2) 1 + 2 v v^T - 2 w [v]x; the first "
-    "sample has its first non-zero component positive, later ones follow continuously). "
-    "torque: constant, in body or space axes (a space torque is turned into body axes with the "
-    "current attitude). The state is integrated dimensionless (time in units of 1/W, omega in "
-    "units of W = |omega0|, or sqrt(|torque| / I_min) when larger; rate_scale reports W), so "
-    "rtol/atol apply to O(1) numbers in any units; dt is in seconds. The quaternion is "
-    "integrated as 4 free components and normalised only on output; diagnostics."
-    "quaternion_norm_drift reports max ||q| - 1|. integrator: the shared block (GET "
-    "/v1/integrators); methods for second-order systems (verlet, yoshida4/6, "
-    "symplectic_euler, boris, radau15) do not apply and are refused; accuracy presets pick "
-    "rk8pd (rkf45 for draft) at the preset's tolerance, tightened for runs of many rotations. "
-    "Closed form: a torque-free body selected by accuracy (not an explicit method) and off the "
-    "separatrix is answered from its exact solution, attitude included, nothing integrated "
-    "(diagnostics.method and selection.method closed_form, steps 0): omega in Jacobi elliptic "
-    "functions, and since L is fixed in space, in the frame with z along L the body's Euler "
-    "angles are cos theta = I_c w_c / |L|, tan psi = I_a w_a / (I_b w_b) and phi' = |L| (I_a "
-    "w_a^2 + I_b w_b^2) / (I_a^2 w_a^2 + I_b^2 w_b^2) (c the dn axis: the largest- or smallest-"
-    "moment axis, both modes), phi by adaptive Gauss-Legendre quadrature to round-off; a "
-    "symmetric top precesses regularly about L at |L| / I_perp, a sphere turns about omega. The "
-    "cost grows with the samples, not with t_end; selection.achieved states the drift of T, |L| "
-    "and the L vector; {\"closed_form\": false} integrates instead. "
-    "Answers t, omega (body, rad/s), orientation, angular_momentum (space axes, kg m^2/s), "
-    "kinetic_energy (J) per sample; diagnostics with steps and evaluations, the drift of "
-    "|L| and T (conserved when torque-free), of the L vector against L0 (torque-free) or "
-    "L0 + torque t (space torque, exact), and for torque-free runs reference: the exact "
-    "solution (Landau & Lifshitz §37) - steady (principal-axis rotation or a sphere), "
-    "symmetric (w turns about the symmetry axis at precession_rate = (I_sym - I_perp) / I_perp "
-    "w_sym, notes §2.9), elliptic (w1, w2, w3 = A cn, sn, dn of lambda t + tau0 with modulus "
-    "m = k^2; the cn and dn components are the smallest- and largest-moment axes when L^2 > 2 "
-    "E I2, swapped when L^2 < 2 E I2) or separatrix (L^2 = 2 E I2: sech, tanh) - with the "
-    "numerical run's largest error. flip: for elliptic motion, the exact period 4 K(m) / lambda "
-    "of w, the interval 2 K / lambda between sign changes of the intermediate-axis component "
-    "(the flips of a body spun near its intermediate axis), and the period measured from the "
-    "samples' sign changes. At accuracy precise, 100 flips agree with the exact solution to "
-    "1e-9 relative (measured ~1e-10).";
-
-static const char example[] =
-    "{\"moments\": [1, 2, 3], \"omega\": [0.05, 1, 0.05], \"t_end\": 60, \"samples\": 7, "
-    "\"integrator\": {\"accuracy\": \"precise\"}}";
-
 /* ---- helpers -------------------------------------------------------------------- */
 
 static struct mech_mat3 mat3_of(const json_t *rows)
@@ -152,11 +63,15 @@ static int inertia_principal(struct api_call *c, const json_t *in, double moment
         return 0;
     }
     json_decref(errs);
+    json_t *full = api_schema_apply_defaults(sch, in, NULL); /* as the pipeline does */
     struct api_call sub;
     memset(&sub, 0, sizeof sub);
     sub.req = c->req;
+    sub.given = in;
+    sub.body = full;
     sub.budget = c->budget;
-    json_t *r = api_route_rigid_inertia.fn(&sub, in);
+    json_t *r = full ? api_op_rigid_inertia(&sub, full) : NULL;
+    json_decref(full);
     int ok = r && sub.problem == API_PROBLEM_NONE && !sub.nonfinite;
     if (!ok) {
         size_t ne = json_array_size(sub.errors);
@@ -231,7 +146,7 @@ static json_t *closed_form_selection(struct api_call *c, const struct api_integr
 
 /* ---- handler ---------------------------------------------------------------------- */
 
-static json_t *rotate(struct api_call *c, const json_t *body)
+json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
 {
     const json_t *mj = json_object_get(body, "moments"), *ij = json_object_get(body, "inertia");
     if ((mj != NULL) == (ij != NULL)) {
@@ -277,7 +192,7 @@ static json_t *rotate(struct api_call *c, const json_t *body)
         if (p.torque_frame == MECH_RIGID_TORQUE_BODY) p.torque = mech_mat3_mul_vec(P, p.torque);
     }
     p.t_end = api_number(body, "t_end", 1);
-    p.samples = (size_t)api_number(body, "samples", 101);
+    p.samples = (size_t)api_number_of(body, "samples");
 
     struct api_integrator_choice ch;
     double W = mech_rigid_rate_scale(&p);
@@ -432,15 +347,3 @@ done:
     return out;
 }
 
-const struct api_route api_route_rigid_rotate = {
-    "POST",
-    "/v1/rigid/rotate",
-    "Euler's equations with a quaternion attitude: free or torqued rotation of a rigid body, "
-    "checked against the exact torque-free solution",
-    description,
-    schema,
-    example,
-    rotate,
-    1,
-    0,
-};

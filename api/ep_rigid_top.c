@@ -13,74 +13,6 @@
 #include "mech/top.h"
 #include "trajectory_request.h"
 
-#define T_NUM(lo, hi, desc)                                                               \
-    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"description\":\"" desc "\"}"
-#define T_POS(hi, desc)                                                                   \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":" hi ",\"description\":\"" desc "\"}"
-
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"I1\",\"I3\",\"mass\",\"distance\",\"theta\",\"t_end\"],"
-    "\"properties\":{"
-    "\"I1\":" T_POS("1e30", "kg m^2, about the tip, perpendicular to the symmetry axis; "
-                    "I1 >= mass distance^2") ","
-    "\"I3\":" T_POS("1e30", "kg m^2, about the symmetry axis; I3 <= 2 I1") ","
-    "\"mass\":" T_POS("1e30", "kg") ","
-    "\"distance\":" T_NUM("0", "1e15", "m, tip to centre of mass (h)") ","
-    "\"g\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e15,\"default\":9.80665,"
-    "\"description\":\"m/s^2, along -z of space\"},"
-    "\"theta\":" T_NUM("0", "3.141592653589793", "rad, tilt of the symmetry axis from "
-                       "vertical (0: upright)") ","
-    "\"phi\":" T_NUM("-1e6", "1e6", "rad, azimuth of the line of nodes, default 0") ","
-    "\"psi\":" T_NUM("-1e6", "1e6", "rad, spin angle, default 0") ","
-    "\"theta_dot\":" T_NUM("-1e6", "1e6", "rad/s, default 0") ","
-    "\"phi_dot\":" T_NUM("-1e6", "1e6", "rad/s, precession rate, default 0") ","
-    "\"psi_dot\":" T_NUM("-1e6", "1e6", "rad/s, spin rate, default 0") ","
-    "\"t_end\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,\"description\":\"s\"},"
-    "\"samples\":{\"type\":\"integer\",\"minimum\":2,\"maximum\":100000,\"default\":101},"
-    "\"integrator\":" API_TRAJ_INTEGRATOR_SCHEMA ","
-    API_DRY_RUN_PROP
-    "}}";
-
-static const char description[] =
-    "Heavy symmetric top with its tip fixed (notes §2.10): moments I1 (= I2) and I3 about the "
-    "tip, mass M, tip-to-centre-of-mass distance h, gravity g along -z. Euler angles z-x-z as "
-    "in the notes (phi about z, theta about the line of nodes, psi about the symmetry axis; R "
-    "= R_psi R_theta R_phi, passive), with rates; the body angular velocity is w = (phi' sin "
-    "theta sin psi + theta' cos psi, phi' sin theta cos psi - theta' sin psi, phi' cos theta + "
-    "psi'), answered at t = 0 as initial_omega {body, space (w_space = R^T w_body: "
-    "(theta' cos phi + psi' sin theta sin phi, theta' sin phi - psi' sin theta cos phi, "
-    "phi' + psi' cos theta)), magnitude}, as /v1/rotation/euler-rates computes it. The "
-    "motion is integrated as a rigid body - Euler's equations about the tip with "
-    "the gravity torque -M g h e3 x z and a unit-quaternion attitude, dimensionless in time "
-    "units of 1/W, W = max(|w0|, sqrt(M g h / I1)) (rate_scale) - so nothing is singular at "
-    "theta = 0 (a sleeping top) or pi; Euler angles are extracted per sample and unwrapped to "
-    "be continuous. Where theta is exactly 0 (or pi) only phi + psi (phi - psi) is "
-    "determined: the branch keeps psi from the previous sample (the initial psi for the "
-    "first), and pole_samples lists those samples; phi_plus_psi is given for every sample. "
-    "axis: the symmetry axis in space axes, (sin theta sin phi, -sin theta cos phi, cos "
-    "theta). conserved: p_phi = (I1 sin^2 theta + I3 cos^2 theta) phi' + I3 cos theta psi' "
-    "(angular momentum about the vertical), p_psi = I3 (psi' + phi' cos theta) = I3 w3, E = "
-    "1/2 I1 (theta'^2 + phi'^2 sin^2 theta) + 1/2 I3 w3^2 + M g h cos theta, each with its "
-    "largest drift over every step and sample, relative to |L0| (momenta) or T0 + M g h "
-    "(energy). nutation: the turning points theta_min, theta_max from the roots of the cubic "
-    "f(u) = (1 - u^2)(alpha - beta u) - (b - a u)^2 = (du/dt)^2 in u = cos theta (alpha = "
-    "(2E - p_psi^2 / I3) / I1, beta = 2 M g h / I1, a = p_psi / I1, b = p_phi / I1), solved in "
-    "the distance x = 1 -+ u from the nearer pole (GSL gsl_poly_solve_cubic + Newton polish; "
-    "the known root is divided out when theta' sin theta = 0) so turning points near a pole "
-    "keep full precision; steady = no nutation; beside them the extremes measured over the "
-    "samples and steps (they approach the cubic's as samples increase). sleeping_top: the "
-    "condition I3^2 w3^2 > 4 I1 M g h for the given spin (both sides, stable, and the "
-    "critical w3). precession: the two steady-precession rates at theta0 (roots of I1 cos "
-    "theta phi'^2 - I3 w3 phi' + M g h = 0; null if none), the gyroscopic approximation M g "
-    "h / (I3 w3), and the measured mean rate (phi_end - phi_0) / t_end. integrator: the "
-    "shared block; second-order-only methods are refused; presets pick rk8pd (rkf45 for "
-    "draft) tightened for long runs.";
-
-static const char example[] =
-    "{\"I1\": 0.02, \"I3\": 0.01, \"mass\": 1, \"distance\": 0.1, \"theta\": 0.5, "
-    "\"psi_dot\": 60, \"t_end\": 2, \"samples\": 5}";
-
 static json_t *quantity(struct api_call *c, double initial, double final, double drift)
 {
     json_t *j = json_object();
@@ -95,7 +27,7 @@ static json_t *real_or_null(struct api_call *c, double x)
     return isfinite(x) ? api_real(c, x) : json_null();
 }
 
-static json_t *top(struct api_call *c, const json_t *body)
+json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
 {
     struct mech_top_problem p;
     memset(&p, 0, sizeof p);
@@ -103,7 +35,7 @@ static json_t *top(struct api_call *c, const json_t *body)
     p.I3 = api_number(body, "I3", 0);
     p.mass = api_number(body, "mass", 0);
     p.distance = api_number(body, "distance", 0);
-    p.g = api_number(body, "g", 9.80665);
+    p.g = api_number_of(body, "g");
     p.theta = api_number(body, "theta", 0);
     p.phi = api_number(body, "phi", 0);
     p.psi = api_number(body, "psi", 0);
@@ -111,7 +43,7 @@ static json_t *top(struct api_call *c, const json_t *body)
     p.phi_dot = api_number(body, "phi_dot", 0);
     p.psi_dot = api_number(body, "psi_dot", 0);
     p.t_end = api_number(body, "t_end", 1);
-    p.samples = (size_t)api_number(body, "samples", 101);
+    p.samples = (size_t)api_number_of(body, "samples");
     struct mech_error e;
     mech_error_clear(&e);
     struct api_integrator_choice ch;
@@ -225,15 +157,3 @@ done:
     return out;
 }
 
-const struct api_route api_route_rigid_top = {
-    "POST",
-    "/v1/rigid/top",
-    "Heavy symmetric top with a fixed tip: Euler angles, nutation range, conserved momenta, "
-    "sleeping-top stability",
-    description,
-    schema,
-    example,
-    top,
-    1,
-    0,
-};

@@ -20,131 +20,6 @@
 
 static const double fc_pi = 3.14159265358979323846;
 
-#define FC_NUM(lo, hi, def, desc)                                                                  \
-    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"default\":" def                  \
-    ",\"description\":\"" desc "\"}"
-#define FC_POS(hi, def, desc)                                                                      \
-    "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":" hi ",\"default\":" def              \
-    ",\"description\":\"" desc "\"}"
-
-/* clang-format off */
-static const char fc_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"latitude_deg\"],"
-    "\"properties\":{"
-    "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90,"
-    "\"description\":\"geographic latitude, degrees (south negative)\"},"
-    "\"length\":" FC_POS("1e7", "67",
-                          "l, m: rod or cable length (Foucault's Pantheon pendulum: 67 m)") ","
-    "\"g\":" FC_POS("1e4", "9.80665",
-                     "local effective gravity, m/s^2 (includes the centrifugal acceleration of "
-                     "the origin, as in the notes)") ","
-    "\"omega_magnitude\":" FC_NUM("0", "1", "7.292115e-05",
-                                   "Earth's rotation rate W, rad/s (default IERS 2010)") ","
-    API_SIDEREAL_DAY_PROP ","
-    "\"mass\":" FC_POS("1e30", "28",
-                        "bob mass, kg (scales the energy only; Foucault's bob: 28 kg)") ","
-    "\"release\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
-        "\"amplitude_deg\":{\"type\":\"number\",\"minimum\":1e-6,\"exclusiveMaximum\":90,"
-        "\"default\":3,\"description\":\"angle of the rod from the vertical at release, "
-        "degrees\"},"
-        "\"azimuth_deg\":" FC_NUM("-360", "360", "0",
-                                   "direction of the release point, counterclockwise from east "
-                                   "seen from above, degrees") ","
-        "\"transverse_velocity\":" FC_NUM("-1e6", "1e6", "0",
-                                           "horizontal speed at release perpendicular to the "
-                                           "release direction (counterclockwise positive), m/s; "
-                                           "0 is the classic release from rest; at most half of "
-                                           "a sqrt(g/l)") "},"
-    "\"description\":\"default: from rest at 3 degrees, towards the east\"},"
-    "\"swings\":{\"type\":\"number\",\"minimum\":2,\"maximum\":1e6,\"default\":100,"
-    "\"description\":\"length of the run in swings (full periods of the planar pendulum at "
-    "this amplitude); at most one of swings, precessions, duration\"},"
-    "\"precessions\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":100,"
-    "\"description\":\"length of the run in full turns of the swing plane, "
-    "2 pi / (W |sin lat|)\"},"
-    "\"duration\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e9,"
-    "\"description\":\"length of the run, s\"},"
-    "\"integrator\":{\"type\":\"object\",\"additionalProperties\":false,\"properties\":{"
-        "\"method\":{\"enum\":[\"rattle_yoshida4\",\"rattle\"],"
-        "\"default\":\"rattle_yoshida4\"},"
-        "\"steps_per_swing\":{\"type\":\"integer\",\"minimum\":8,\"maximum\":100000,"
-        "\"default\":200}},"
-    "\"description\":\"constrained symplectic methods: rattle (order 2) or its Yoshida "
-    "triple jump (order 4); given (method or steps_per_swing), used as given (200 steps per "
-    "swing by default); absent, the predictive chooser picks both for accuracy or "
-    "target_error (diagnostics.selection)\"},"
-    "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"description\":\"preset: "
-    "relative error 1e-3, 1e-8, 1e-10, 1e-11 of the swing period and of the precession rate "
-    "(relative to W); the chooser picks the method and steps per swing predicted cheapest to "
-    "meet it (not with target_error, nor with integrator.method / steps_per_swing)\"},"
-    "\"fictitious\":{\"description\":\"\\\"auto\\\" (default) or the list of terms to "
-    "model; coriolis is the effect and must be in it\",\"oneOf\":["
-        "{\"const\":\"auto\"},"
-        "{\"type\":\"array\",\"maxItems\":2,\"uniqueItems\":true,"
-        "\"items\":{\"enum\":[\"coriolis\",\"centrifugal\"]}}]},"
-    "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"
-    "\"default\":1e-6,\"description\":\"relative accuracy wanted of the precession rate "
-    "(relative to W) and the period (or the accuracy preset's): without integrator.method / "
-    "steps_per_swing the chooser picks the cheapest method and steps per swing predicted to "
-    "meet it; fictitious auto leaves out a term whose estimated effect is below target/10\"},"
-    "\"error_estimate\":{\"type\":\"boolean\",\"default\":true,\"description\":\"run "
-    "again with half the steps per swing and report the Richardson estimate of the error\"},"
-    API_DRY_RUN_PROP
-    "}}";
-/* clang-format on */
-
-static const char fc_example[] =
-    "{\"latitude_deg\": 48.846, \"length\": 67, \"release\": {\"amplitude_deg\": 3}, "
-    "\"swings\": 100}";
-
-static const char fc_description[] =
-    "The notes' Foucault pendulum (§1.3) without linearising: a bob on a massless rod (or taut "
-    "cable) of length l hung at (0, 0, l) above its rest point, in the Earth frame (x east, y "
-    "north, z up along the plumb line, W = W (0, cos lat, sin lat)), per unit mass u'' = g - "
-    "2 W x u' [- W x (W x r)] + tension, |u| = l, u = r - (0, 0, l). Integrated by RATTLE "
-    "with the Coriolis term in Cayley (implicit-midpoint) form - the constrained variational "
-    "integrator of L = |u'|^2/2 + u'.(W x r) - V: symplectic, time-symmetric, the constraint "
-    "exact to round-off, the Coriolis rotation exact for any step - or its Yoshida triple "
-    "jump (order 4). Unless integrator gives the method or the steps per swing, the "
-    "predictive chooser picks both for the target (accuracy, or target_error, default 1e-6): "
-    "error = C (2 pi / n)^p (1 + 3 alpha^2) on the period and the rate / W at n steps per "
-    "swing (measured: C = 0.07 for both, the largest seen), force evaluations counted "
-    "exactly; diagnostics.selection lists both candidates with their predicted error, "
-    "evaluations and CPU beside the Richardson estimate achieved, and \"dry_run\": true "
-    "answers only that selection (the default picks rattle_yoshida4 at 183 steps per swing "
-    "at 3 degrees). Fixed steps keep the work "
-    "proportional to the swings (a full precession at 45 degrees, 7418 swings of Foucault's "
-    "67 m pendulum, 1.36 million steps, takes about 0.5 s here, 1 s with the error estimate, "
-    "well inside the 10 s deadline), and a symplectic "
-    "method keeps the energy error bounded instead of drifting. The precession is measured "
-    "at the turning points (maxima of the horizontal distance, located on the step's cubic "
-    "Hermite interpolant): the swing-plane azimuth psi (mod pi, counterclockwise from east) "
-    "is fitted with a straight line in t; precession.measured_rate is its slope in rad/s "
-    "(negative = clockwise, as in the northern hemisphere). first_order_rate is the notes' "
-    "-W sin(lat); sense states its sense (clockwise in the north, counterclockwise in the "
-    "south, none on the equator, seen from above) and measured_sense that of measured_rate. "
-    "full_precession_hours is 2 pi / |first_order_rate| (full_precession_basis says so); "
-    "full_precession_hours_measured is 2 pi / |measured_rate|, the time the simulated plane "
-    "actually takes (longer by the Airy correction). At finite amplitude the ellipse swung precesses by itself (Airy 1851): "
-    "(3/8) omega0 a b / l^2 = (3/8) h / l^2 in the sense it is traversed, h = x y' - y x' + "
-    "W sin(lat) rho^2; released from rest b = a W sin(lat) / omega0, so the rate is -W sin(lat) "
-    "(1 - 3 a^2 / (8 l^2)). airy_correction_release uses h at release; airy_correction the "
-    "mean h along the run (the centrifugal term's anisotropy, east softer by W^2 cos^2 lat, "
-    "changes h by up to cot^2(lat)/8 of itself over a precession); expected_rate = "
-    "first_order_rate + airy_correction; residual = measured - expected, and tolerance bounds "
-    "it: the next order in the amplitude and in W/omega0 (|airy| (alpha^2 / 4 + W^2/omega0^2); "
-    "about 0.094 alpha^2 measured) + 3 standard errors of the fit + the numerical error estimate. "
-    "swing.period (turning point "
-    "to turning point, x2) is compared with 2 pi sqrt(l/g) and the planar period 4 sqrt(l/g) "
-    "K(sin(alpha/2)). fictitious auto: Coriolis is always modelled (it is the effect); the "
-    "centrifugal term of the displacement is modelled when its estimated effect - on the rate "
-    "W^2 cos^2(lat)/(4 omega0) + (3/32) (a/l)^2 W^2 cos^2(lat) min(1/(W |sin lat|), T), on the "
-    "period W^2 (1 + sin^2 lat) / (4 omega0^2) relative - exceeds target_error / 10 (the rate "
-    "relative to W). Not modelled (uniform g, as in the notes): the Earth's gravity gradient "
-    "over the swing (the plumb lines converge to the centre: omega0^2 grows by g/R, the "
-    "period shrinks by l/(2R) = 5e-6 for 67 m; isotropic on a spherical Earth, so it does not "
-    "turn the plane), air drag and the suspension's friction.";
-
 struct fc_run {
     struct mech_foucault_problem p;
     struct mech_foucault_result r;
@@ -226,18 +101,18 @@ static json_t *fc_term(struct api_call *c, const char *name, int included, doubl
     return t;
 }
 
-static json_t *fc_op(struct api_call *c, const json_t *body)
+json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
 {
     const double deg = fc_pi / 180.0;
     struct mech_foucault_problem p;
     memset(&p, 0, sizeof p);
     p.latitude_deg = api_number(body, "latitude_deg", 45.0);
-    p.length = api_number(body, "length", 67.0);
-    p.g = api_number(body, "g", 9.80665);
+    p.length = api_number_of(body, "length");
+    p.g = api_number_of(body, "g");
     if (!api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL,
                             &p.omega_magnitude))
         return NULL;
-    p.mass = api_number(body, "mass", 28.0);
+    p.mass = api_number_of(body, "mass");
     const json_t *rel = json_object_get(body, "release");
     p.amplitude_deg = api_number(rel, "amplitude_deg", 3.0);
     p.azimuth_deg = api_number(rel, "azimuth_deg", 0.0);
@@ -252,9 +127,10 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
      * promise; without an explicit method or steps per swing it also picks
      * them (the predictive chooser, core/chooser_pendulum.c) */
     const char *accuracy = api_string(body, "accuracy", NULL);
-    const int explicit_integrator = json_object_get(integ, "method") != NULL ||
-                                    json_object_get(integ, "steps_per_swing") != NULL;
-    if (accuracy && json_object_get(body, "target_error")) {
+    /* given, not defaulted (method, steps_per_swing and target_error have defaults) */
+    const int explicit_integrator = api_call_given(c, "/integrator/method") != NULL ||
+                                    api_call_given(c, "/integrator/steps_per_swing") != NULL;
+    if (accuracy && api_call_given(c, "/target_error")) {
         api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
         return NULL;
     }
@@ -264,7 +140,7 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                          "integrator.method / integrator.steps_per_swing, not both");
         return NULL;
     }
-    double target = api_number(body, "target_error", 1e-6);
+    double target = api_number_of(body, "target_error");
     for (int i = 0; accuracy && i < MECH_ACCURACY_COUNT; i++)
         if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, accuracy))
             target = mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
@@ -280,7 +156,7 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     double a = p.length * sin(alpha);
 
     /* ---- the run's length ---- */
-    int nrun = json_object_get(body, "swings") != NULL;
+    int nrun = api_call_given(c, "/swings") != NULL;
     nrun += json_object_get(body, "precessions") != NULL;
     nrun += json_object_get(body, "duration") != NULL;
     if (nrun > 1) {
@@ -302,7 +178,7 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
         run_field = "duration";
         t_end = api_number(body, "duration", 1.0);
     } else {
-        t_end = api_number(body, "swings", 100.0) * period;
+        t_end = api_number_of(body, "swings") * period;
     }
     double swings_asked = t_end / period;
     if (swings_asked < 2.0) {
@@ -342,7 +218,7 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
                      : "%s%s at %.0f steps per swing is the cheapest candidate predicted to "
                        "meet %.0e relative on the period and the precession rate / W over %.6g "
                        "swings (predicted %.2g, %.0f force evaluations%s)%s",
-                 accuracy ? "" : json_object_get(body, "target_error")
+                 accuracy ? "" : api_call_given(c, "/target_error")
                                      ? ""
                                      : "target_error 1e-6 by default: ",
                  k->method, sps, target, swings_asked, k->predicted_error,
@@ -637,14 +513,3 @@ static json_t *fc_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_scene_foucault = {
-    "POST",
-    "/v1/scenes/foucault",
-    "Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)",
-    fc_description,
-    fc_schema,
-    fc_example,
-    fc_op,
-    1,
-    0,
-};

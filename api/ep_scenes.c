@@ -17,38 +17,15 @@
 
 static const double ep_pi = 3.14159265358979323846;
 
-/* ---- shared schema pieces ---------------------------------------------------- */
-
-#define SC_NUM(lo, hi, desc)                                                                       \
-    "{\"type\":\"number\",\"minimum\":" lo ",\"maximum\":" hi ",\"description\":\"" desc "\"}"
-#define SC_EARTH                                                                                   \
-    "\"latitude_deg\":" SC_NUM(                                                                    \
-        "-90", "90",                                                                               \
-        "geographic latitude, degrees (north > 0)") ","                                            \
-                                                    "\"g\":{\"type\":\"number\","                  \
-                                                    "\"exclusiveMinimum\":0,\"maximum\":1000,"     \
-                                                    "\"default\":9.80665,"                         \
-                                                    "\"description\":\"local effective g, m/s^2 "  \
-                                                    "(its centrifugal part included, notes "       \
-                                                    "§1.3)\"},"                                   \
-                                                    "\"omega_magnitude\":{\"type\":\"number\","    \
-                                                    "\"minimum\":0,\"maximum\":0.01,"              \
-                                                    "\"default\":7.292115e-05,\"description\":"    \
-                                                    "\"Earth rotation rate, rad/s (IERS 2010)\"},"  \
-    API_SIDEREAL_DAY_PROP ","
-#define SC_ACCURACY                                                                                \
-    "\"accuracy\":{\"enum\":[" API_TRAJ_ACCURACIES "],\"default\":\"balanced\","                   \
-    "\"description\":\"preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error\"},"      \
-    "\"target_error\":{\"type\":\"number\",\"minimum\":1e-15,\"maximum\":0.1,"                     \
-    "\"description\":\"relative error on positions and velocities (not with accuracy)\"},"   \
-    API_DRY_RUN_PROP
+/* ---- shared request readers -------------------------------------------------- */
 
 /* The relative accuracy asked for; 0 after recording an error. */
 static double scene_target(struct api_call *c, const json_t *body)
 {
     const json_t *te = json_object_get(body, "target_error");
-    const char *acc = api_string(body, "accuracy", NULL);
-    if (te && acc) {
+    /* accuracy always has a value (its default); an error only when both were given */
+    const char *acc = api_string_of(body, "accuracy");
+    if (te && api_call_given(c, "/accuracy")) {
         api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
         return 0.0;
     }
@@ -150,7 +127,7 @@ static json_t *ballistic_answer(struct api_call *c, const char *scene,
 
 static const char *accuracy_name(const json_t *body)
 {
-    return json_object_get(body, "target_error") ? NULL : api_string(body, "accuracy", "balanced");
+    return json_object_get(body, "target_error") ? NULL : api_string_of(body, "accuracy");
 }
 
 /* 0 after recording an error (both omega_magnitude and sidereal_day). */
@@ -158,7 +135,7 @@ static int earth_params(struct api_call *c, const json_t *body, struct mech_scen
 {
     memset(s, 0, sizeof *s);
     s->latitude_deg = api_number(body, "latitude_deg", 0);
-    s->g = api_number(body, "g", 9.80665);
+    s->g = api_number_of(body, "g");
     return api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL, &s->omega);
 }
 
@@ -205,31 +182,7 @@ static json_t *run_ballistic(struct api_call *c, const json_t *body, const char 
 
 /* ---- falling object ---------------------------------------------------------- */
 
-static const char falling_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"height\",\"latitude_deg\"]"
-    ","
-    "\"properties\":{"
-    "\"height\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":100000,"
-    "\"description\":\"drop height above the ground, m (released at rest)\"}," SC_EARTH SC_ACCURACY
-    "}}";
-
-static const char falling_example[] = "{\"height\": 100, \"latitude_deg\": 32}";
-
-static const char falling_description[] =
-    "Drop from rest at height h in the local Earth frame (notes §1.3, \"Deflection of a Falling "
-    "Object\"; axes x east, y north, z up). numerical: the landing (z = 0) of the integrated "
-    "motion under uniform g with the fictitious terms chosen by \"auto\" at the requested "
-    "accuracy (model.terms says which and why; the Coriolis term always matters, the "
-    "centrifugal term of the displacement only at high accuracy). first_order: the notes' "
-    "x_east = (W cos lat / 3) sqrt(8 h^3 / g) at t = sqrt(2 h / g), no south deflection (1.9 cm "
-    "at 100 m and 32 degrees). second_order: the terms the formula neglects, to second order in "
-    "W: the southward deflection (Coriolis acting on the eastward velocity: (1/6) g W^2 sin lat "
-    "cos lat t^4 south; centrifugal of the displacement: (5/24) g W^2 sin lat cos lat t^4 south "
-    "when modelled) and the landing-time change. difference = numerical - first_order should "
-    "equal second_order up to third-order terms and the integration error (unexplained, "
-    "agreement).";
-
-static json_t *falling_op(struct api_call *c, const json_t *body)
+json_t *api_op_scenes_falling_object(struct api_call *c, const json_t *body)
 {
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
@@ -250,28 +203,7 @@ static json_t *falling_op(struct api_call *c, const json_t *body)
 
 /* ---- vertical shot ------------------------------------------------------------ */
 
-static const char shot_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"latitude_deg\"],"
-    "\"properties\":{"
-    "\"speed\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":10000,"
-    "\"description\":\"initial upward speed, m/s (or give height)\"},"
-    "\"height\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":100000,"
-    "\"description\":\"height reached without rotation, m: speed = sqrt(2 g h)\"}," SC_EARTH
-        SC_ACCURACY "}}";
-
-static const char shot_example[] = "{\"height\": 100, \"latitude_deg\": 32}";
-
-static const char shot_description[] =
-    "A projectile shot vertically up (along the plumb line) from the ground (notes §1.5, "
-    "problem 3): it lands to the WEST by (4/3) W cos(lat) sqrt(8 h^3 / g) to first order, h = "
-    "v0^2 / (2 g) the height reached; that is four times the eastward deflection of an object "
-    "dropped from the same height, (1/3) W cos(lat) sqrt(8 h^3 / g) (derivation: x = -W cos(lat) "
-    "(v0 t^2 - g t^3 / 3) at t = 2 v0 / g gives -(4/3) W cos(lat) v0^3 / g^2). Give speed or "
-    "height. Same blocks as falling-object: numerical (auto terms), first_order, difference, "
-    "second_order (a north-south deflection W^2 sin lat cos lat v0 T^3 / 4 north from Coriolis "
-    "twice minus centrifugal, and the flight-time change), unexplained, agreement.";
-
-static json_t *shot_op(struct api_call *c, const json_t *body)
+json_t *api_op_scenes_vertical_shot(struct api_call *c, const json_t *body)
 {
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
@@ -304,35 +236,7 @@ static json_t *shot_op(struct api_call *c, const json_t *body)
 
 /* ---- cannonball ---------------------------------------------------------------- */
 
-static const char cannon_schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,"
-    "\"required\":[\"speed\",\"elevation_deg\",\"latitude_deg\"],\"properties\":{"
-    "\"speed\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":10000,"
-    "\"description\":\"muzzle speed v0, m/s\"},"
-    "\"elevation_deg\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":90,"
-    "\"description\":\"inclination above the horizontal (the notes' problems 4-5 theta; the "
-    "notes' spherical theta from the vertical is 90 - elevation)\"},"
-    "\"azimuth_deg\":{\"type\":\"number\",\"minimum\":-360,\"maximum\":360,\"default\":0,"
-    "\"description\":\"the notes' phi: from east towards north, degrees (0 east, 90 "
-    "north)\"}," SC_EARTH SC_ACCURACY "}}";
-
-static const char cannon_example[] =
-    "{\"speed\": 500, \"elevation_deg\": 30, \"azimuth_deg\": 0, \"latitude_deg\": 45}";
-
-static const char cannon_description[] =
-    "A cannonball fired from the ground at speed v0, elevation alpha above the horizontal and "
-    "azimuth phi from east towards north (notes §1.3 \"Deflection of Cannon Balls\": their theta "
-    "from the vertical is 90 - alpha), no air drag. Each block gives the landing time, east, "
-    "north, range (along the firing direction) and right (to the right of it). first_order: "
-    "the linearised Coriolis landing for any direction (r_1 = -w x (v0 t^2 + g t^3/3) at the "
-    "zeroth-order flight time T0 = 2 v0 sin(alpha)/g, plus the first-order change of the flight "
-    "time); for firing due east it is the notes' problems 4 and 5: deflected south by d = 4 v0^3 "
-    "W sin(lat) sin^2(alpha) cos(alpha) / g^2 and the range increased by W cos(lat) sqrt(2 R^3 "
-    "/ g) (cot^1/2 alpha - tan^3/2 alpha / 3), R = v0^2 sin(2 alpha)/g, reported in notes_due_east "
-    "(evaluated for the given v0, alpha, lat whatever the azimuth). zeroth_order: no rotation. "
-    "second_order, difference, unexplained and agreement as for falling-object.";
-
-static json_t *cannon_op(struct api_call *c, const json_t *body)
+json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
 {
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
@@ -340,7 +244,7 @@ static json_t *cannon_op(struct api_call *c, const json_t *body)
     if (!earth_params(c, body, &s)) return NULL;
     const double v0 = api_number(body, "speed", 0);
     const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
-    const double ph = api_number(body, "azimuth_deg", 0) * ep_pi / 180.0;
+    const double ph = api_number_of(body, "azimuth_deg") * ep_pi / 180.0;
     const struct mech_vec3 fwd = mech_vec3_make(cos(ph), sin(ph), 0);
     s.v0 = mech_vec3_make(v0 * cos(al) * cos(ph), v0 * cos(al) * sin(ph), v0 * sin(al));
     const double lat = s.latitude_deg * ep_pi / 180.0, g = s.g, W = s.omega;
@@ -382,59 +286,6 @@ static json_t *cannon_op(struct api_call *c, const json_t *body)
 
 /* ---- rotating table -------------------------------------------------------------- */
 
-#define SC_VEC3(desc)                                                                              \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","            \
-    "\"minimum\":-1e15,\"maximum\":1e15},\"description\":\"" desc "\"}"
-
-static const char
-    table_schema[] = "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"omega\"],"
-                     "\"properties\":{"
-                     "\"experiment\":{\"enum\":[\"through_center\",\"at_rest\",\"custom\"],"
-                     "\"default\":\"through_center\"},"
-                     "\"omega\":{\"type\":\"number\",\"minimum\":-1e6,\"maximum\":1e6,"
-                     "\"description\":\"table rotation rate about +z, rad/s, non-zero\"},"
-                     "\"radius\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e15,"
-                     "\"default\":1,"
-                     "\"description\":\"r1, m (through_center, at_rest)\"},"
-                     "\"mass\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e30,"
-                     "\"default\":1},"
-                     "\"position\":" SC_VEC3(
-                         "custom: inertial position at t = 0, m") ","
-                                                                  "\"velocity\":" SC_VEC3(
-                                                                      "custom: inertial velocity, "
-                                                                      "m/s") ","
-                                                                             "\"t_end\":{\"type\":"
-                                                                             "\"number\","
-                                                                             "\"exclusiveMinimum\":"
-                                                                             "0,\"maximum\":1e15,"
-                                                                             "\"description\":"
-                                                                             "\"custom: duration, "
-                                                                             "s\"},"
-                                                                             "\"samples\":{"
-                                                                             "\"type\":\"integer\","
-                                                                             "\"minimum\":2,"
-                                                                             "\"maximum\":100000,"
-                                                                             "\"default\":21}"
-                                                                             "," SC_ACCURACY "}}";
-
-static const char table_example[] = "{\"experiment\": \"through_center\", \"omega\": 1, "
-                                    "\"radius\": 1, \"samples\": 5}";
-
-static const char table_description[] =
-    "The notes' rotating-table puck experiments (§1.1), seen from both frames. A frictionless "
-    "puck moves on a table rotating with omega about +z; the frames coincide at t = 0. "
-    "through_center: the puck starts at r1 e_y with inertial velocity -(2 r1 |omega| / pi) e_y, "
-    "crossing the centre and reaching the other side while the table makes half a turn (t_end "
-    "= pi / |omega|); seen from the table it curves and comes back to its start. at_rest: the "
-    "puck is at rest in the inertial frame at r1 e_y: a circle in the table's frame over a full "
-    "turn, held by Coriolis (twice the centrifugal force, opposite). custom: any inertial "
-    "position, velocity and t_end. Answers: inertial (the exact straight line), rotating "
-    "(integrated in the table's frame with fictitious \"auto\": centrifugal -m w x (w x r) and "
-    "Coriolis -2 m w x v') and rotating_exact (the line's components in the rotating axes, "
-    "x' = x cos wt + y sin wt, y' = -x sin wt + y cos wt) with their largest difference; and "
-    "the effective forces at t = 0 (notes: through_center F' = -m w^2 r1 (e_y + (4/pi) e_x) for "
-    "omega > 0; at_rest F' = -m w^2 r1 e_y).";
-
 static json_t *vecs_json(struct api_call *c, const struct mech_vec3 *v, size_t n)
 {
     json_t *a = json_array();
@@ -443,20 +294,20 @@ static json_t *vecs_json(struct api_call *c, const struct mech_vec3 *v, size_t n
     return a;
 }
 
-static json_t *table_op(struct api_call *c, const json_t *body)
+json_t *api_op_scenes_rotating_table(struct api_call *c, const json_t *body)
 {
     double target = scene_target(c, body);
     if (!(target > 0.0)) return NULL;
     struct mech_scene_table s;
     memset(&s, 0, sizeof s);
-    const char *ex = api_string(body, "experiment", "through_center");
+    const char *ex = api_string_of(body, "experiment");
     s.experiment = !strcmp(ex, "at_rest")  ? MECH_TABLE_AT_REST
                    : !strcmp(ex, "custom") ? MECH_TABLE_CUSTOM
                                            : MECH_TABLE_THROUGH_CENTER;
     s.omega = api_number(body, "omega", 0);
-    s.radius = api_number(body, "radius", 1);
-    s.mass = api_number(body, "mass", 1);
-    s.samples = (size_t)api_number(body, "samples", 21);
+    s.radius = api_number_of(body, "radius");
+    s.mass = api_number_of(body, "mass");
+    s.samples = (size_t)api_number_of(body, "samples");
     if (s.experiment == MECH_TABLE_CUSTOM) {
         static const char *const need[] = {"position", "velocity", "t_end"};
         for (int i = 0; i < 3; i++)
@@ -549,50 +400,3 @@ static json_t *table_op(struct api_call *c, const json_t *body)
     return res;
 }
 
-const struct api_route api_route_scene_falling_object = {
-    "POST",
-    "/v1/scenes/falling-object",
-    "Drop from a height near the Earth: east (and small south) deflection vs the notes' formula",
-    falling_description,
-    falling_schema,
-    falling_example,
-    falling_op,
-    1,
-    0,
-};
-
-const struct api_route api_route_scene_vertical_shot = {
-    "POST",
-    "/v1/scenes/vertical-shot",
-    "Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical",
-    shot_description,
-    shot_schema,
-    shot_example,
-    shot_op,
-    1,
-    0,
-};
-
-const struct api_route api_route_scene_cannonball = {
-    "POST",
-    "/v1/scenes/cannonball",
-    "Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change",
-    cannon_description,
-    cannon_schema,
-    cannon_example,
-    cannon_op,
-    1,
-    0,
-};
-
-const struct api_route api_route_scene_rotating_table = {
-    "POST",
-    "/v1/scenes/rotating-table",
-    "The notes' rotating-table puck experiments seen from the inertial and the rotating frame",
-    table_description,
-    table_schema,
-    table_example,
-    table_op,
-    1,
-    0,
-};

@@ -19,101 +19,7 @@
 #define MAX_TERMS 16
 
 /* clang-format off */
-#define S_POS(desc) "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100," \
-    "\"description\":\"" desc "\"}"
-#define S_NUM(lim, desc) "{\"type\":\"number\",\"minimum\":-" lim ",\"maximum\":" lim "," \
-    "\"description\":\"" desc "\"}"
-#define S_V3(desc) "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" \
-    "{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100},\"description\":\"" desc "\"}"
-#define S_G "{\"type\":\"number\",\"exclusiveMinimum\":0,\"maximum\":1e100,\"default\":9.80665," \
-    "\"description\":\"m/s^2\"}"
-#define S_CENTRAL                                                                        \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
-    "\"required\":[\"name\",\"mass\",\"r0\",\"terms\"],\"properties\":{"                  \
-    "\"name\":{\"const\":\"central_orbit\"},"                                              \
-    "\"mass\":" S_POS("kg") ",\"r0\":" S_POS("m, radius of the circular orbit") ","        \
-    "\"terms\":{\"type\":\"array\",\"minItems\":1,\"maxItems\":16,\"items\":"              \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"k\",\"n\"],"      \
-    "\"properties\":{\"k\":" S_NUM("1e100", "J m^-n") ",\"n\":" S_NUM("100",               \
-    "exponent: V = k r^n, or k ln r for n = 0") "}},"                                       \
-    "\"description\":\"V(r) = sum of the terms\"}}}"
-#define S_CONICAL                                                                        \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
-    "\"required\":[\"name\",\"length\",\"angle\"],\"properties\":{"                        \
-    "\"name\":{\"const\":\"conical_pendulum\"},"                                           \
-    "\"length\":" S_POS("m") ",\"g\":" S_G ","                                             \
-    "\"angle\":{\"type\":\"number\",\"exclusiveMinimum\":0,\"exclusiveMaximum\":1.5707963267948966," \
-    "\"description\":\"rad, cone half-angle from the downward vertical\"}}}"
-#define S_PHYSICAL                                                                       \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
-    "\"required\":[\"name\",\"mass\",\"tensor_center_of_mass\",\"offset\"],"      \
-    "\"properties\":{\"name\":{\"const\":\"physical_pendulum\"},"                          \
-    "\"mass\":" S_POS("kg (as /v1/rigid/inertia's mass)") ","                              \
-    "\"tensor_center_of_mass\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"          \
-    "\"items\":" S_V3("row") ",\"description\":\"kg m^2, about the centre of mass (as "    \
-    "/v1/rigid/inertia's tensor_center_of_mass)\"},"                                        \
-    "\"offset\":" S_V3("m, centre of mass minus pivot") ","                                 \
-    "\"axis\":" S_V3("the horizontal hinge axis through the pivot, any length; leave it " \
-    "out for a ball joint (both modes)") ","        \
-    "\"g\":" S_G "}}"
-#define S_FOUCAULT                                                                       \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                 \
-    "\"required\":[\"name\",\"length\",\"latitude_deg\"],\"properties\":{"                \
-    "\"name\":{\"const\":\"foucault_pendulum\"},"                                          \
-    "\"length\":" S_POS("m") ",\"g\":" S_G ","                                             \
-    "\"latitude_deg\":{\"type\":\"number\",\"minimum\":-90,\"maximum\":90,"              \
-    "\"description\":\"deg, north positive\"},"                                             \
-    "\"omega_earth\":{\"type\":\"number\",\"minimum\":0,\"maximum\":1e3,"                \
-    "\"default\":7.292115e-5,\"description\":\"rad/s, the Earth's rotation rate (the "   \
-    "default of /v1/scenes/foucault)\"}," API_SIDEREAL_DAY_PROP "}}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"system\"],"
-    "\"properties\":{\"system\":{\"oneOf\":[" S_CENTRAL "," S_CONICAL "," S_PHYSICAL ","
-    S_FOUCAULT "]}}}";
 /* clang-format on */
-
-static const char description[] =
-    "Small oscillations about a steady motion or equilibrium, for one system. "
-    "central_orbit (mass m, radius r0 of a circular orbit, V(r) = sum of terms k r^n, k ln r "
-    "for n = 0; Kepler: n = -1, k = -GMm; isotropic oscillator: n = 2, k = m w^2/2): answers "
-    "the circular orbit (angular_momentum L = sqrt(m r0^3 V'), energy, omega_phi = "
-    "sqrt(V'/(m r0)), period_phi), V, dV, d2V at r0, k_eff = V'' + 3V'/r0, stable (k_eff > "
-    "0), omega_r = sqrt(k_eff/m), period_r, frequency_ratio = omega_r/omega_phi, "
-    "apsidal_angle = pi omega_phi/omega_r = pi/sqrt(3 + r0 V''/V') (pericentre to apocentre; "
-    "V = k r^n: pi/sqrt(n + 2), i.e. pi/sqrt(3 + m) for a force r^m: Kepler pi, oscillator "
-    "pi/2) and its _deg, pericentre_angle = 2 apsidal_angle (pericentre to pericentre: "
-    "Kepler 2 pi, oscillator pi) and precession_per_radial_period = pericentre_angle - 2 pi; "
-    "an unstable orbit (k_eff < 0) has growth_rate sqrt(-k_eff/m) and null frequencies. "
-    "V'(r0) <= 0 (no attraction) is refused at /system/r0. conical_pendulum (length l, cone "
-    "half-angle from the downward vertical in (0, pi/2), g default 9.80665): phi_dot = "
-    "sqrt(g/(l cos a)), period, radius, speed, omega_theta = phi_dot sqrt(1 + 3 cos^2 a) "
-    "(oscillations of the cone angle), period_theta, apsidal_angle = pi/sqrt(1 + 3 cos^2 "
-    "a). physical_pendulum (mass, tensor_center_of_mass as /v1/rigid/inertia answers them, "
-    "offset = centre of mass - pivot, axis = horizontal hinge through the pivot, g): "
-    "tensor_pivot = I_cm + m(d^2 1 - d d^T) (parallel axis), moment_axis = n.I_pivot.n, arm "
-    "= distance of the centre of mass from the axis, omega = sqrt(m g arm / moment_axis), "
-    "period and equivalent_length = moment_axis/(m arm); swing in the body's plane or out of "
-    "it by choosing the axis; a centre of mass on the axis is refused at /system/offset. "
-    "Without axis the pivot is a ball joint (offset points down): the turn about the "
-    "vertical is free (its momentum zero), the horizontal motion has the inertia M = I_hh - "
-    "I_he I_eh / I_ee, and modes lists the two normal modes, fastest first, each {axis "
-    "(unit, horizontal: the body swings about it), moment (M's eigenvalue), omega = sqrt(m "
-    "g |d| / moment), period, equivalent_length}; arm = |offset|. "
-    "foucault_pendulum (length, latitude_deg, g, omega_earth default 7.292115e-5, or "
-    "sidereal_day: omega_earth = 2 pi/sidereal_day): the "
-    "linearised equations with the vertical rotation omega_z = Omega sin(latitude) (notes "
-    "§1.3: x'' = -omega0^2 x + 2 omega_z y', y'' = -omega0^2 y - 2 omega_z x'; x east, y "
-    "north) have two circular normal modes, answered as modes [{sense: counterclockwise, "
-    "omega: sqrt(omega0^2 + omega_z^2) - omega_z}, {sense: clockwise, omega: sqrt(...) + "
-    "omega_z}] (seen from above), with omega0 = sqrt(g/l), omega_z, swing_omega = "
-    "sqrt(omega0^2 + omega_z^2), swing_period, precession_rate = |omega_z| with "
-    "precession_sense (clockwise in the north, counterclockwise in the south, none on the "
-    "equator) and precession_period = 2 pi/|omega_z| (null on the equator): the plane of "
-    "a planar swing turns at the mean of the two modes, exactly -omega_z in this "
-    "linearised model (finite-amplitude corrections: /v1/scenes/foucault).";
-
-static const char example[] =
-    "{\"system\":{\"name\":\"central_orbit\",\"mass\":1,\"r0\":1,\"terms\":[{\"k\":1,\"n\":1}]}}";
 
 static json_t *nomem(struct api_call *c, json_t *o)
 {
@@ -303,7 +209,7 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
     return out;
 }
 
-static json_t *small_oscillations(struct api_call *c, const json_t *body)
+json_t *api_op_small_oscillations(struct api_call *c, const json_t *body)
 {
     const json_t *s = json_object_get(body, "system");
     const char *name = api_string(s, "name", "");
@@ -316,16 +222,3 @@ static json_t *small_oscillations(struct api_call *c, const json_t *body)
     return physical(c, s, out);
 }
 
-const struct api_route api_route_small_oscillations = {
-    "POST",
-    "/v1/small-oscillations",
-    "Small oscillations about a steady motion: near-circular orbits in a central potential "
-    "(radial and azimuthal frequencies, apsidal angle), the conical pendulum, a physical "
-    "pendulum about any pivot and axis, the Foucault pendulum's normal modes",
-    description,
-    schema,
-    example,
-    small_oscillations,
-    0,
-    1, /* quick */
-};

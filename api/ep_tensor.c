@@ -6,42 +6,6 @@
 #include "endpoint.h"
 #include "mech/sym_tensor.h"
 
-/* clang-format off */
-#define S_ENTRY "{\"type\":\"number\",\"minimum\":-1e102,\"maximum\":1e102}"
-#define S_ROW "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" S_ENTRY "}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"tensor\"],"
-    "\"properties\":{"
-    "\"tensor\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":" S_ROW ","
-    "\"description\":\"[[t11,t12,t13],[t21,t22,t23],[t31,t32,t33]], any units, symmetric "
-    "(t_ij and t_ji may differ by 1e-12 of the largest |entry|), |entries| <= 1e102 (so that det T stays in the double range)\"},"
-    "\"vector\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":"
-    "{\"type\":\"number\",\"minimum\":-1e100,\"maximum\":1e100},"
-    "\"description\":\"optional v: answers T v and v.T.v (omega for an inertia tensor: L "
-    "= I omega, 2 T_rot = omega.I.omega)\"}"
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "Trace, invariants and eigen-decomposition of a symmetric 3x3 tensor T given by the user "
-    "(notes ch. 2, principal axes). Answers tensor (the input symmetrised, (T + T^T)/2), "
-    "asymmetry (max |T_ij - T_ji| of the input; more than 1e-12 of the largest entry is "
-    "refused with a 422 at /tensor/i/j, i > j), trace, invariants {I1 = trace, I2 = sum of "
-    "the principal 2x2 minors = (I1^2 - tr T^2)/2, I3 = det T}, determinant, isotropic = "
-    "I1/3 and deviator = T - (I1/3) 1, and principal: values ascending (real: T is "
-    "symmetric), axes as unit rows (row k belongs to values[k]; right-handed; rows 0 and 1 "
-    "have their largest-magnitude component positive, row 2 = row 0 x row 1), degenerate = "
-    "two values agree within 1e-10 of the largest |value| (then the axes are one "
-    "orthonormal basis of the degenerate subspace; the scene axes if all three agree), "
-    "exactly as /v1/rigid/inertia's principal block. With vector v: times_vector = T v and "
-    "quadratic_form = v.T.v. Precision: eigenvalues to ~1e-15 of the largest |value| "
-    "(residuals |T e - l e|); the invariants are computed on T scaled by a power of two, "
-    "so entries from 1e-100 to 1e102 lose nothing to overflow or underflow.";
-
-static const char example[] =
-    "{\"tensor\":[[0.6666666666666666,-0.25,-0.25],[-0.25,0.6666666666666666,-0.25],"
-    "[-0.25,-0.25,0.6666666666666666]],\"vector\":[1,1,1]}";
-
 static struct mech_mat3 mat3_of(const json_t *rows)
 {
     struct mech_mat3 m;
@@ -51,7 +15,7 @@ static struct mech_mat3 mat3_of(const json_t *rows)
     return m;
 }
 
-static json_t *symmetric(struct api_call *c, const json_t *body)
+json_t *api_op_tensor_symmetric(struct api_call *c, const json_t *body)
 {
     struct mech_mat3 t = mat3_of(json_object_get(body, "tensor"));
     struct mech_error e;
@@ -98,15 +62,3 @@ static json_t *symmetric(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_tensor_symmetric = {
-    "POST",
-    "/v1/tensor/symmetric",
-    "A symmetric tensor's trace, invariants, isotropic and deviatoric parts, principal "
-    "values and axes (with the degeneracy flag), and T v",
-    description,
-    schema,
-    example,
-    symmetric,
-    0,
-    1, /* quick */
-};

@@ -10,38 +10,6 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* clang-format off */
-#define S_VEC(desc)                                                                     \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\","    \
-    "\"minimum\":-1e153,\"maximum\":1e153},\"description\":\"" desc "\"}"
-static const char schema[] =
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"a\"],"
-    "\"properties\":{"
-    "\"a\":" S_VEC("[x, y, z], any units (r for r x p); |components| <= 1e153") ","
-    "\"b\":" S_VEC("[x, y, z], optional (p for r x p)") ","
-    "\"c\":" S_VEC("[x, y, z], optional, needs b: the triple products a.(b x c), a x (b x c)")
-    "}}";
-/* clang-format on */
-
-static const char description[] =
-    "Vector algebra of notes ch. 0 for vectors a (required), b and c (optional; c needs b). "
-    "Answers a.norm and a.unit (null for the zero vector), the same for b and c, and with b: "
-    "dot = a.b, cross = a x b (r x p = L when a = r, b = p), cross_tensor T_ij = a_i b_j - "
-    "a_j b_i (the antisymmetric tensor form, notes §0.2: [[0, L_z, -L_y], [-L_z, 0, L_x], "
-    "[L_y, -L_x, 0]], L_k = eps_ijk T_ij / 2), angle (rad, in [0, pi]) and angle_deg, "
-    "b_along_a = a.b/|a| (the signed component of b along a) and a_along_b = a.b/|b|, "
-    "b_on_a = (a.b/|a|^2) a (the projection) and b_across_a = b - b_on_a; with c: "
-    "scalar_triple = a.(b x c) (the determinant of the rows a, b, c) and vector_triple = "
-    "a x (b x c) = b (a.c) - c (a.b). Where a or b is the zero vector the angle, components "
-    "and projections do not exist: they are null, and notes says why. Precision: every "
-    "vector is scaled by a power of two before it is multiplied, so nothing overflows or "
-    "underflows on the way (components from 1e-300 to 1e153); the angle is atan2(|a x b|, "
-    "a.b), never acos, so nearly parallel and antiparallel vectors keep their relative "
-    "digits (b = (1, 1e-12, 0) against a = (1, 0, 0) gives 1e-12 rad to 1e-16). A product "
-    "beyond the double range (|a| |b| |c| > ~1e308) is refused with a 422 at /c (or /b).";
-
-static const char example[] = "{\"a\":[1,3,-2],\"b\":[2,1,1]}";
-
 static json_t *vec_or_null(struct api_call *c, int ok, struct mech_vec3 v)
 {
     return ok ? api_vec3(c, v) : json_null();
@@ -63,7 +31,7 @@ static json_t *one_vector(struct api_call *c, struct mech_vec3 v)
     return o;
 }
 
-static json_t *vectors(struct api_call *c, const json_t *body)
+json_t *api_op_vectors(struct api_call *c, const json_t *body)
 {
     const json_t *bj = json_object_get(body, "b"), *cj = json_object_get(body, "c");
     if (cj && !bj) {
@@ -119,15 +87,3 @@ static json_t *vectors(struct api_call *c, const json_t *body)
     return out;
 }
 
-const struct api_route api_route_vectors = {
-    "POST",
-    "/v1/vectors",
-    "Vector algebra: norms, dot and cross products (with the antisymmetric tensor form), "
-    "angle, components, projections, scalar and vector triple products",
-    description,
-    schema,
-    example,
-    vectors,
-    0,
-    1, /* quick */
-};

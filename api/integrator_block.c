@@ -21,7 +21,7 @@ int api_integrator_block_parse_cf(struct api_call *c, const json_t *in, const ch
                                   struct api_integrator_choice *out)
 {
     memset(out, 0, sizeof *out);
-    out->requested = in;
+    out->requested = api_call_as_given(c, in, pointer);
     const char *method = in ? api_string(in, "method", NULL) : NULL;
     if (method) {
         const struct mech_integrator *m = mech_ode_method_find(method);

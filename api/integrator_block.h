@@ -1,6 +1,6 @@
 /* integrator_block.h — the shared `integrator` block for FIRST-ORDER systems
  * (Euler's equations, tops, ...): its schema is the trajectory's
- * (API_TRAJ_INTEGRATOR_SCHEMA of trajectory_request.h, so the block is
+ * (the "integrator" of api/ops/frames/trajectory.json, so the block is
  * documented identically), parsed here into a method and settings.
  *
  * - {"method": m, "rtol", "atol"} or {"method": m, "dt"}: used as given, except
@@ -43,7 +43,7 @@ struct api_integrator_system {
     double rhs_cost_s;     /* CPU s of one right-hand side if known, else 0 */
 };
 
-/* Parse `block` (schema-validated against API_TRAJ_INTEGRATOR_SCHEMA, or NULL
+/* Parse `block` (schema-validated against that integrator schema, or NULL
  * for the default) into *out for the system `sys`. `pointer` names the block
  * ("/integrator"), `span` the run's length in dynamical times (>= 0). Returns
  * 0 after recording an error in c (second-order-only method), else 1. */

@@ -58,7 +58,12 @@ int api_rotation_read(struct api_call *c, const json_t *obj, const char *pointer
         return -1;
     }
     memset(out, 0, sizeof *out);
-    const char *sense = api_string(obj, "sense", NULL);
+    /* The item's own sense when the client gave one; else default_sense (a
+     * /v1/rotation/compose item inherits the list's sense, which the
+     * schema's per-item default cannot say). */
+    char sense_ptr[300];
+    snprintf(sense_ptr, sizeof sense_ptr, "%s/sense", pointer);
+    const char *sense = api_call_given(c, sense_ptr) ? api_string(obj, "sense", NULL) : NULL;
     out->sense = sense
                      ? (strcmp(sense, "active") == 0 ? MECH_ROTATION_ACTIVE : MECH_ROTATION_PASSIVE)
                      : default_sense;

@@ -1,4 +1,6 @@
-/* routes.h — the route table (defined in routes.c). */
+/* routes.h — the route table (defined in routes.c, expanded from the
+ * build's generated ops.def: one entry per api/ops/<domain>/<operation>.json,
+ * in api/ops/catalog_order.json's order). */
 #ifndef API_ROUTES_H
 #define API_ROUTES_H
 

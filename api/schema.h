@@ -8,7 +8,8 @@
  * only), items (one schema), minItems, maxItems, uniqueItems, minimum, maximum,
  * exclusiveMinimum, exclusiveMaximum, enum, const, oneOf (at most
  * API_SCHEMA_MAX_BRANCHES branches), minProperties, maxProperties.
- * Annotations (title, description, default, examples) are ignored. Anything
+ * Annotations (title, description, examples) are ignored by validation;
+ * "default" is applied by api_schema_apply_defaults. Anything
  * else is refused by api_schema_check(), so a route cannot silently rely on
  * an unsupported keyword.
  *
@@ -86,5 +87,20 @@ int api_schema_check(const json_t *schema, char *msg, size_t n);
 /* Append the RFC 6901 escape of `token` ('~' -> "~0", '/' -> "~1") to the
  * pointer in buf (capacity n), preceded by '/'. Truncates safely. */
 void api_pointer_append(char *buf, size_t n, const char *token);
+
+/* The instance with every default of the schema filled in: for each object
+ * the schema describes (through properties, items and the matching oneOf
+ * branch), each property that is absent and whose schema states a "default"
+ * is added with that default — an integer default as a real, as the request
+ * parser reads numbers (json_read.h), so a handler sees what an explicit
+ * request would give. `instance` (borrowed) must have passed
+ * api_schema_validate against the same schema, and is never modified: the
+ * result is a new reference, the instance itself when nothing was missing
+ * (no copy), else a copy sharing every unchanged member. Root keys named in
+ * skip_root (NULL-terminated, or NULL) are not filled (the envelope keys,
+ * which the framework reads itself). Returns NULL only when memory ran out
+ * (jansson's allocator). Reentrant; s is only read. */
+json_t *api_schema_apply_defaults(const struct api_schema *s, const json_t *instance,
+                                  const char *const *skip_root);
 
 #endif

@@ -31,7 +31,7 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
                                     const json_t *in, const char *pointer)
 {
     struct mech_trajectory_problem *p = &rq->p;
-    rq->requested = in;
+    rq->requested = api_call_as_given(c, in, pointer);
     rq->chosen = 0;
     rq->closed_form = 0;
     rq->accuracy = NULL;
@@ -82,7 +82,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     struct mech_trajectory_problem *p = &rq->p;
     const json_t *part = json_object_get(body, "particle");
     p->mass = api_number(part, "mass", 0);
-    p->charge = api_number(part, "charge", 0);
+    p->charge = api_number_of(part, "charge");
     p->reduce_planar = 1;
     p->position = api_vec3_member(part, "position", zero);
     p->velocity = api_vec3_member(part, "velocity", zero);
@@ -124,7 +124,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         case MECH_FORCE_SPRING:
             mf->u.spring.k = api_number(f, "k", 0);
             mf->u.spring.anchor = api_vec3_member(f, "anchor", zero);
-            mf->u.spring.rest_length = api_number(f, "rest_length", 0);
+            mf->u.spring.rest_length = api_number_of(f, "rest_length");
             break;
         case MECH_FORCE_LINEAR_DRAG:
             mf->u.linear_drag.b = api_number(f, "b", 0);
@@ -175,7 +175,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     }
 
     p->t_end = api_number(body, "t_end", 0);
-    p->samples = (size_t)api_number(body, "samples", 101);
+    p->samples = (size_t)api_number_of(body, "samples");
     p->error_estimate = json_is_true(json_object_get(body, "error_estimate"));
     rq->dry_run = json_is_true(json_object_get(body, "dry_run"));
 
@@ -184,7 +184,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         p->has_stop = 1;
         p->stop_axis = axis_of(api_string(stop, "coordinate", "z"));
         p->stop_value = api_number(stop, "crosses", 0);
-        const char *d = api_string(stop, "direction", "either");
+        const char *d = api_string_of(stop, "direction");
         p->stop_direction = strcmp(d, "decreasing") == 0   ? MECH_STOP_DECREASING
                             : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
                                                            : MECH_STOP_EITHER;

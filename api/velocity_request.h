@@ -10,34 +10,8 @@
 #include "endpoint.h"
 #include "mech/boost.h"
 
-#define API_VELOCITY_DIR3                                                                          \
-    "{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,\"items\":{\"type\":\"number\"},"           \
-    "\"description\":\"direction of the velocity; any nonzero length\"}"
 
 /* JSON Schema of a velocity (use as the value of a property). */
-#define API_VELOCITY_SCHEMA                                                                        \
-    "{\"type\":\"object\",\"description\":\"a velocity as exactly one of four forms; give the "  \
-    "one that carries the precision you have (near c: rapidity, gamma or one_minus_beta)\","     \
-    "\"oneOf\":["                                                                                  \
-    "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"beta\"],"                 \
-    "\"properties\":{\"beta\":{\"type\":\"array\",\"minItems\":3,\"maxItems\":3,"                  \
-    "\"items\":{\"type\":\"number\"},\"description\":\"beta = v/c, |beta| < 1\"}}},"               \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                         \
-    "\"required\":[\"rapidity\",\"direction\"],\"properties\":{"                                   \
-    "\"rapidity\":{\"type\":\"number\",\"minimum\":-350,\"maximum\":350,"                          \
-    "\"description\":\"eta = atanh(beta); negative means along -direction\"},"                     \
-    "\"direction\":" API_VELOCITY_DIR3 "}},"                                                       \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                         \
-    "\"required\":[\"gamma\",\"direction\"],\"properties\":{"                                      \
-    "\"gamma\":{\"type\":\"number\",\"maximum\":1e151,"                                            \
-    "\"description\":\"Lorentz factor, >= 1\"},"                                                   \
-    "\"direction\":" API_VELOCITY_DIR3 "}},"                                                       \
-    "{\"type\":\"object\",\"additionalProperties\":false,"                                         \
-    "\"required\":[\"one_minus_beta\",\"direction\"],\"properties\":{"                             \
-    "\"one_minus_beta\":{\"type\":\"number\",\"description\":\"1 - beta in (0, 2), "               \
-    "the precise way to give beta near 1 (e.g. 1e-15); above 1 means beta < 0\"},"                 \
-    "\"direction\":" API_VELOCITY_DIR3 "}}"                                                        \
-    "]}"
 
 /* Build the boost of a schema-validated velocity object `vel`. On success
  * returns 1 and fills *out; on a domain or validation error (|β| ≥ 1, γ < 1,

@@ -9,6 +9,9 @@
  * Partial match: every key of expected.body must exist and match; arrays have
  * equal length and match element-wise; numbers within atol + rtol*|want|
  * (the longest matching `tolerances` pointer prefix wins); other values exactly.
+ * Every 200 answer must also match its operation's response schema (its data
+ * file's response_schema, shown in GET /v1 and OpenAPI), whole, so the
+ * documentation of the answers cannot drift from the code (issue 17).
  */
 #include <gsl/gsl_errno.h>
 #include <jansson.h>
@@ -18,8 +21,41 @@
 
 #include "api.h"
 #include "mech/budget.h"
+#include "routes.h"
 #include "schema.h"
 #include "testlib.h"
+
+/* The whole answer of a 200 to `path` against the route's response schema. */
+static void check_response_schema(const char *path, const json_t *got)
+{
+    size_t plen = strcspn(path, "?");
+    for (size_t i = 0; i < api_route_count; i++) {
+        if (strlen(api_routes[i]->path) != plen || strncmp(api_routes[i]->path, path, plen))
+            continue;
+        const json_t *rs = api_route_response_schema(i);
+        char msg[200];
+        struct api_schema *c = rs ? api_schema_compile(rs, msg, sizeof msg) : NULL;
+        if (!c) {
+            tl_failed++;
+            fprintf(stderr, "%s: no usable response schema (%s)\n", path, rs ? msg : "none");
+            return;
+        }
+        json_t *errs = json_array();
+        size_t n = api_schema_validate(c, got, "", errs);
+        if (n) {
+            tl_failed++;
+            char *e = json_dumps(errs, JSON_COMPACT);
+            fprintf(stderr, "%s: the answer does not match the response schema (%zu): %.1500s\n",
+                    path, n, e ? e : "");
+            free(e);
+        } else {
+            tl_passed++;
+        }
+        json_decref(errs);
+        api_schema_free(c);
+        return;
+    }
+}
 
 static const json_t *tolerances;
 static double g_rtol, g_atol;
@@ -162,6 +198,7 @@ int main(int argc, char **argv)
         g_atol = json_object_get(ex, "atol") ? json_number_value(json_object_get(ex, "atol")) : 0;
         tolerances = json_object_get(ex, "tolerances");
         if (json_object_get(ex, "body")) match(json_object_get(ex, "body"), got, "/body");
+        if (resp.status == 200 && req.path) check_response_schema(req.path, got);
         size_t i;
         json_t *a;
         json_array_foreach(json_object_get(ex, "absent"), i, a) {

@@ -910,10 +910,84 @@ static void time_one(const char *path, const json_t *schema, const struct api_sc
             "\"k\":{\"enum\":[\"a\",\"b\"]}," \
             "\"a/b~c\":{\"type\":\"boolean\"}}}"
 
+/* api_schema_apply_defaults: defaults are filled where the key is absent,
+ * integers as reals (what the request parser gives), reals stay reals, only
+ * in the oneOf branch the instance matches and only inside objects that are
+ * there; the caller's instance is never modified, and is returned itself
+ * (no copy) when nothing is missing. */
+static void test_apply_defaults(void)
+{
+    const char *schema =
+        "{\"type\":\"object\",\"properties\":{"
+        "\"samples\":{\"type\":\"integer\",\"default\":200},"
+        "\"rtol\":{\"type\":\"number\",\"default\":1e-9},"
+        "\"unit\":{\"enum\":[\"MeV\",\"GeV\"],\"default\":\"MeV\"},"
+        "\"cost\":{\"type\":\"boolean\",\"default\":true},"
+        "\"opt\":{\"type\":\"object\",\"properties\":{\"g\":{\"type\":\"number\",\"default\":9.80665}}},"
+        "\"list\":{\"type\":\"array\",\"items\":{\"type\":\"object\",\"properties\":{"
+        "\"hole\":{\"type\":\"boolean\",\"default\":false}}}},"
+        "\"block\":{\"oneOf\":["
+        "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"method\"],"
+        "\"properties\":{\"method\":{\"const\":\"rk8pd\"},\"atol\":{\"type\":\"number\",\"default\":1e-12}}},"
+        "{\"type\":\"object\",\"additionalProperties\":false,\"required\":[\"accuracy\"],"
+        "\"properties\":{\"accuracy\":{\"type\":\"string\"},\"closed_form\":{\"type\":\"boolean\",\"default\":true}}}]}"
+        "}}";
+    char msg[200];
+    json_t *s = json_loads(schema, 0, NULL);
+    struct api_schema *c = s ? api_schema_compile(s, msg, sizeof msg) : NULL;
+    CHECK(c != NULL);
+    static const char *const skip[] = {"cost", NULL};
+
+    json_t *in = json_loads("{\"list\":[{},{\"hole\":true}],\"block\":{\"accuracy\":\"draft\"},"
+                            "\"unit\":\"GeV\"}",
+                            JSON_DECODE_INT_AS_REAL, NULL);
+    CHECK_EQ_INT((int)api_schema_validate(c, in, "", NULL), 0);
+    char *before = json_dumps(in, JSON_SORT_KEYS);
+    json_t *out = api_schema_apply_defaults(c, in, skip);
+    CHECK(out != NULL && out != in);
+    const json_t *smp = json_object_get(out, "samples");
+    CHECK(json_is_real(smp) && json_real_value(smp) == 200.0); /* as "samples": 200 parses */
+    const json_t *rt = json_object_get(out, "rtol");
+    CHECK(json_is_real(rt) && json_real_value(rt) == 1e-9);
+    CHECK(!strcmp(json_string_value(json_object_get(out, "unit")), "GeV")); /* given wins */
+    CHECK(json_object_get(out, "cost") == NULL);                             /* skipped root key */
+    CHECK(json_object_get(out, "opt") == NULL); /* an absent object is not created */
+    CHECK(json_is_false(json_object_get(json_array_get(json_object_get(out, "list"), 0), "hole")));
+    CHECK(json_is_true(json_object_get(json_array_get(json_object_get(out, "list"), 1), "hole")));
+    const json_t *blk = json_object_get(out, "block");
+    CHECK(json_is_true(json_object_get(blk, "closed_form"))); /* the matching branch's default */
+    CHECK(json_object_get(blk, "atol") == NULL);             /* not the other branch's */
+    CHECK_EQ_INT((int)api_schema_validate(c, out, "", NULL), 0);
+    char *after = json_dumps(in, JSON_SORT_KEYS);
+    CHECK(before && after && !strcmp(before, after)); /* the caller's instance is untouched */
+    free(before);
+    free(after);
+    json_decref(out);
+    json_decref(in);
+
+    /* Everything given: the instance itself comes back, nothing copied. */
+    in = json_loads("{\"samples\":7,\"rtol\":1e-3,\"unit\":\"MeV\",\"block\":{\"method\":\"rk8pd\","
+                    "\"atol\":1e-9}}",
+                    JSON_DECODE_INT_AS_REAL, NULL);
+    out = api_schema_apply_defaults(c, in, skip);
+    CHECK(out == in);
+    json_decref(out);
+    json_decref(in);
+    /* The envelope key is filled when not skipped. */
+    in = json_loads("{}", 0, NULL);
+    out = api_schema_apply_defaults(c, in, NULL);
+    CHECK(json_is_true(json_object_get(out, "cost")));
+    json_decref(out);
+    json_decref(in);
+    api_schema_free(c);
+    json_decref(s);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
     api_install_json_allocator(); /* process-wide, as GSL's handler */
+    test_apply_defaults();
     EXPECT(OBJ, "{\"m\":1}", 0, "");
     EXPECT(OBJ, "{}", 1, "/m");
     EXPECT(OBJ, "[]", 1, "");

@@ -1,0 +1,118 @@
+#!/usr/bin/env python3
+"""test_ops_gen.py — scripts/ops_gen.py runs clean on api/ops, and fails,
+naming the file, on each kind of broken data file.
+
+    test_ops_gen.py SOURCE_DIR
+
+1. `ops_gen.py --check api/ops --sources api` passes: every data file is
+   JSON with the required keys, listed once in catalog_order.json, with a
+   handler that api/ defines.
+2. Broken copies of api/ops (one fault each: not JSON, a missing key, an
+   unknown key, a duplicate path, an unknown handler, a file not listed, a
+   listed file missing, an envelope key in a request schema) each make the
+   generator exit 1 with a message naming the file.
+3. Generating into a scratch directory writes ops.def with one API_OP per
+   data file and ops_handlers.h with one prototype each.
+Python 3 standard library only.
+"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+SRC = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else
+                      os.path.join(os.path.dirname(__file__), "..", "..", ".."))
+GEN = os.path.join(SRC, "scripts", "ops_gen.py")
+OPS = os.path.join(SRC, "api", "ops")
+API = os.path.join(SRC, "api")
+failures = 0
+
+
+def run(*args):
+    p = subprocess.run([sys.executable, GEN] + list(args), capture_output=True, text=True)
+    return p.returncode, p.stdout + p.stderr
+
+
+def check(cond, what):
+    global failures
+    if not cond:
+        failures += 1
+        print("FAIL:", what)
+
+
+rc, out = run("--check", OPS, "--sources", API)
+check(rc == 0, "ops_gen --check on api/ops: %s" % out.strip())
+order = json.load(open(os.path.join(OPS, "catalog_order.json")))
+check(len(order) >= 55, "catalog_order lists every operation (%d)" % len(order))
+
+
+def broken(name, mutate, expect_file, expect_text):
+    tmp = tempfile.mkdtemp()
+    try:
+        ops = os.path.join(tmp, "ops")
+        shutil.copytree(OPS, ops)
+        mutate(ops)
+        rc, out = run("--check", ops, "--sources", API)
+        check(rc == 1, "%s: exit status %d, want 1" % (name, rc))
+        check(expect_file in out and expect_text in out,
+              "%s: message %r should name %s and say %r" % (name, out.strip(), expect_file,
+                                                           expect_text))
+    finally:
+        shutil.rmtree(tmp)
+
+
+def edit(rel, fn):
+    def mutate(ops):
+        p = os.path.join(ops, rel)
+        doc = json.load(open(p))
+        fn(doc)
+        json.dump(doc, open(p, "w"), indent=2)
+    return mutate
+
+
+def write(rel, text):
+    def mutate(ops):
+        open(os.path.join(ops, rel), "w").write(text)
+    return mutate
+
+
+broken("not JSON", write("relativity/boost.json", '{"path": "/v1/relativity/boost",'),
+       "api/ops/relativity/boost.json", "not JSON")
+broken("missing key", edit("rigid/inertia.json", lambda d: d.pop("summary")),
+       "api/ops/rigid/inertia.json", 'missing key "summary"')
+broken("missing response schema", edit("rigid/inertia.json", lambda d: d.pop("response_schema")),
+       "api/ops/rigid/inertia.json", 'missing key "response_schema"')
+broken("unknown key", edit("vectors/vectors.json", lambda d: d.update(sumary="x")),
+       "api/ops/vectors/vectors.json", "unknown key(s) sumary")
+broken("duplicate path", edit("vectors/vectors.json", lambda d: d.update(path="/v1/tensor/symmetric")),
+       "api/ops/vectors/vectors.json", "duplicate path /v1/tensor/symmetric")
+broken("unknown handler", edit("gr/geodesic.json", lambda d: d.update(handler="api_op_no_such")),
+       "api/ops/gr/geodesic.json", "handler api_op_no_such is not defined")
+broken("envelope key", edit("gr/geodesic.json",
+                            lambda d: d["request_schema"]["properties"].update(cost={})),
+       "api/ops/gr/geodesic.json", 'envelope key "cost"')
+broken("bad flag", edit("gr/geodesic.json", lambda d: d["flags"].update(quick=1)),
+       "api/ops/gr/geodesic.json", 'flag "quick" must be true or false')
+broken("not listed", write("gr/extra.json", "{}"), "api/ops/gr/extra.json",
+       "not listed in api/ops/catalog_order.json")
+broken("listed, missing", lambda ops: os.remove(os.path.join(ops, "gr", "geodesic.json")),
+       "catalog_order.json", '"gr/geodesic" is listed but api/ops/gr/geodesic.json does not exist')
+
+tmp = tempfile.mkdtemp()
+try:
+    rc, out = run(OPS, tmp, "--sources", API)
+    check(rc == 0, "generation: %s" % out)
+    ops_def = open(os.path.join(tmp, "ops.def")).read()
+    handlers = open(os.path.join(tmp, "ops_handlers.h")).read()
+    check(len(re.findall(r"^API_OP\(", ops_def, re.M)) == len(order), "one API_OP per data file")
+    check(len(re.findall(r"^json_t \*api_op_\w+\(", handlers, re.M)) == len(order),
+          "one prototype per data file")
+    check("do not edit" in ops_def, "ops.def says it is generated")
+finally:
+    shutil.rmtree(tmp)
+
+print("test_ops_gen: %s" % ("FAILED (%d)" % failures if failures else "ok"))
+sys.exit(1 if failures else 0)
