@@ -174,7 +174,7 @@ json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *b
     }
     struct mech_kin_motion k;
     if (!motion_of(c, pj, m1, &k)) return NULL;
-    const int branch = (int)json_integer_value(json_object_get(body, "branch"));
+    const int branch = (int)api_number_of(body, "branch"); /* a request number is a real; the schema allows 0 or 1 (default 0) */
     struct mech_elastic o;
     mech_error_clear(&e);
     st = mech_elastic_scatter(&k, m2, kind, angle, branch, &o, &e);
