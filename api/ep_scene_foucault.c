@@ -1,5 +1,5 @@
 /* ep_scene_foucault.c — POST /v1/scenes/foucault: the notes' Foucault
- * pendulum (§1.3, "Example: The Foucault Pendulum") as the full nonlinear
+ * pendulum (§1.4, "Example: The Foucault Pendulum") as the full nonlinear
  * spherical pendulum in the rotating Earth frame (core/pendulum.c), with the
  * measured precession of the swing plane beside the notes' W sin(lat), Airy's
  * finite-amplitude correction, the swing period beside 2 pi sqrt(l/g) and the

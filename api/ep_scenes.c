@@ -197,7 +197,7 @@ json_t *api_op_scenes_falling_object(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, s.omega));
     json_object_set_new_nocheck(par, "target_error", api_real(c, target));
     json_t *f = json_string("x_east = (W cos(lat) / 3) sqrt(8 h^3 / g), t = sqrt(2 h / g), no "
-                            "north-south deflection (notes §1.3)");
+                            "north-south deflection (notes §1.4)");
     return run_ballistic(c, body, "falling-object", &s, par, f, 1, NULL, target);
 }
 
@@ -258,7 +258,7 @@ json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(par, "target_error", api_real(c, target));
     json_object_set_new_nocheck(par, "velocity", api_vec3(c, s.v0));
     json_t *f = json_string("r_1(T0) - v_h z_1(T0) / z_0'(T0) with r_1 = -w x (v0 t^2 + g t^3/3), "
-                            "T0 = 2 v0 sin(alpha) / g (notes §1.3-1.4, problems 4-5)");
+                            "T0 = 2 v0 sin(alpha) / g (notes §1.4, homework §1.5 problems 4-5)");
     json_t *res = run_ballistic(c, body, "cannonball", &s, par, f, 0, &fwd, target);
     if (!res) return NULL;
     /* the no-rotation landing and the notes' due-east formulas */

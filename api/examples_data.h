@@ -122,7 +122,7 @@ static const char *const api_examples_data[] = {
     "{\n"
     "  \"id\": \"foucault-normal-modes\",\n"
     "  \"title\": \"Foucault pendulum's normal modes and turn, l = 67 m at 32° N\",\n"
-    "  \"section\": \"1.3 Example: The Foucault Pendulum\",\n"
+    "  \"section\": \"1.4 Example: The Foucault Pendulum\",\n"
     "  \"operation\": \"/v1/small-oscillations\",\n"
     "  \"request\": {\n"
     "    \"system\": {\n"
