@@ -3,6 +3,7 @@
  * Pure: plain arrays in, an outcome out; no JSON, no I/O, no allocation.
  */
 #include "check_kind.h"
+#include "mech/constants.h"
 
 #include <math.h>
 #include <string.h>
@@ -33,9 +34,7 @@ const char *api_check_kind_name(enum api_check_kind k)
 
 /* ---- units ------------------------------------------------------------------ */
 
-#define PI 3.14159265358979323846
 #define EV 1.602176634e-19  /* J, exact (SI 2019) */
-#define C_LIGHT 299792458.0 /* m/s, exact */
 
 static const struct api_unit units[] = {
     {"1", 1, "1"},
@@ -68,19 +67,19 @@ static const struct api_unit units[] = {
     {"MeV", 1e6 * EV, "E"},
     {"GeV", 1e9 * EV, "E"},
     {"rad", 1, "angle"},
-    {"deg", PI / 180, "angle"},
-    {"rev", 2 * PI, "angle"},
-    {"arcmin", PI / 10800, "angle"},
-    {"arcsec", PI / 648000, "angle"},
+    {"deg", MECH_PI / 180, "angle"},
+    {"rev", 2 * MECH_PI, "angle"},
+    {"arcmin", MECH_PI / 10800, "angle"},
+    {"arcsec", MECH_PI / 648000, "angle"},
     {"m/s", 1, "L/T"},
     {"km/s", 1e3, "L/T"},
     {"km/h", 1 / 3.6, "L/T"},
     {"cm/s", 1e-2, "L/T"},
     {"m/s^2", 1, "L/T2"},
     {"rad/s", 1, "angle/T"},
-    {"deg/s", PI / 180, "angle/T"},
-    {"rpm", 2 * PI / 60, "angle/T"},
-    {"rev/s", 2 * PI, "angle/T"},
+    {"deg/s", MECH_PI / 180, "angle/T"},
+    {"rpm", 2 * MECH_PI / 60, "angle/T"},
+    {"rev/s", 2 * MECH_PI, "angle/T"},
     {"Hz", 1, "1/T"},
     {"kHz", 1e3, "1/T"},
     {"kg m^2", 1, "ML2"},
@@ -88,8 +87,8 @@ static const struct api_unit units[] = {
     {"kg m^2/s", 1, "ML2/T"},
     {"J s", 1, "ML2/T"},
     {"kg m/s", 1, "ML/T"},
-    {"MeV/c", 1e6 * EV / C_LIGHT, "ML/T"},
-    {"GeV/c", 1e9 * EV / C_LIGHT, "ML/T"},
+    {"MeV/c", 1e6 * EV / MECH_C, "ML/T"},
+    {"GeV/c", 1e9 * EV / MECH_C, "ML/T"},
     {"N", 1, "F"},
     {"kN", 1e3, "F"},
     {"N m", 1, "torque"},
@@ -274,9 +273,9 @@ static void elementwise(int angle, const double *e, const double *a, size_t n,
     for (size_t i = 0; i < n; i++) {
         double err, mag, amag;
         if (angle) {
-            err = fabs(remainder(a[i] - e[i], 2 * PI));
-            mag = fabs(remainder(e[i], 2 * PI));
-            amag = fabs(remainder(a[i], 2 * PI));
+            err = fabs(remainder(a[i] - e[i], 2 * MECH_PI));
+            mag = fabs(remainder(e[i], 2 * MECH_PI));
+            amag = fabs(remainder(a[i], 2 * MECH_PI));
         } else {
             err = fabs(a[i] - e[i]);
             mag = fabs(e[i]);
@@ -401,7 +400,7 @@ static int quat_of_axis_angle(const double *x, double q[4])
     double u[3];
     double h = 0.5 * x[3];
     if (!unit_of(x, 3, u)) {
-        if (fabs(remainder(x[3], 2 * PI)) != 0) return 0;
+        if (fabs(remainder(x[3], 2 * MECH_PI)) != 0) return 0;
         q[0] = 1;
         q[1] = q[2] = q[3] = 0;
         return 1;
@@ -424,13 +423,13 @@ static int axis_angle(const double *e, const double *a, const struct api_check_t
     }
     if (!quat_of_axis_angle(a, qa)) {
         if (note) *note = "a zero axis with a nonzero angle is no rotation";
-        note_error(o, PI, 0, api_check_bound(t, fabs(remainder(e[3], 2 * PI)))); /* no rotation */
+        note_error(o, MECH_PI, 0, api_check_bound(t, fabs(remainder(e[3], 2 * MECH_PI)))); /* no rotation */
         return 0;
     }
     double chord = dist_up_to_sign(qe, qa, 4);
     double phi = 4 * asin(chord / 2 < 1 ? chord / 2 : 1);
-    double mag = fabs(remainder(e[3], 2 * PI));
-    return judge(t, o, phi, mag, fabs(remainder(a[3], 2 * PI)));
+    double mag = fabs(remainder(e[3], 2 * MECH_PI));
+    return judge(t, o, phi, mag, fabs(remainder(a[3], 2 * MECH_PI)));
 }
 
 int api_check_compare(enum api_check_kind k, const double *e, const double *a, size_t rows,

@@ -1,10 +1,10 @@
 /* earth_rotation.c — the Earth's rotation rate as a rate or a sidereal day
  * (see earth_rotation.h). */
 #include "earth_rotation.h"
+#include "mech/constants.h"
 
 #include <stdio.h>
 
-static const double TWO_PI = 6.28318530717958647692;
 
 int api_earth_rotation(struct api_call *c, const json_t *obj, const char *prefix,
                        const char *rate_key, double def, double *omega)
@@ -23,6 +23,6 @@ int api_earth_rotation(struct api_call *c, const json_t *obj, const char *prefix
                                  "sidereal_day)", rate_key, rate_key);
         return 0;
     }
-    *omega = TWO_PI / json_number_value(day);
+    *omega = (2.0 * MECH_PI) / json_number_value(day);
     return 1;
 }

@@ -8,10 +8,10 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/continuum_waves.h"
 #include "mech/torsion.h"
 
-static const double PI = 3.14159265358979323846;
 
 static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode *m)
 {
@@ -55,10 +55,10 @@ json_t *api_op_continuum_string(struct api_call *c, const json_t *body)
     }
     json_object_set_new_nocheck(out, "linear_density", api_real(c, mu));
     json_object_set_new_nocheck(out, "wave_speed", api_real(c, cw));
-    struct mech_wave_mode m1 = mech_wave_mode_nondispersive(cw, L, PI);
+    struct mech_wave_mode m1 = mech_wave_mode_nondispersive(cw, L, MECH_PI);
     json_object_set_new_nocheck(out, "fundamental_frequency", api_real(c, m1.frequency));
     for (int n = 1; n <= nm; n++) {
-        struct mech_wave_mode m = mech_wave_mode_nondispersive(cw, L, n * PI);
+        struct mech_wave_mode m = mech_wave_mode_nondispersive(cw, L, n * MECH_PI);
         json_array_append_new(modes, mode_json(c, n, &m));
     }
     json_object_set_new_nocheck(out, "modes", modes);
@@ -105,7 +105,7 @@ static json_t *torsional(struct api_call *c, const json_t *body, const json_t *s
     if (st == MECH_OK && (gj || nj)) {
         if (json_object_get(sec, "radius")) {
             const double r = api_number(sec, "radius", 1);
-            j = k = 0.5 * PI * (r * r) * (r * r);
+            j = k = 0.5 * MECH_PI * (r * r) * (r * r);
         } else if (json_object_get(sec, "width")) {
             st = mech_torsion_rectangle(api_number(sec, "width", 1), api_number(sec, "height", 1), &j,
                                         &k, &e);
@@ -155,8 +155,8 @@ json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
     double A, I;
     if (json_object_get(sec, "radius")) {
         const double r = api_number(sec, "radius", 1);
-        A = PI * r * r;
-        I = 0.25 * PI * (r * r) * (r * r);
+        A = MECH_PI * r * r;
+        I = 0.25 * MECH_PI * (r * r) * (r * r);
     } else if (json_object_get(sec, "width")) {
         const double b = api_number(sec, "width", 1), h = api_number(sec, "height", 1);
         A = b * h;

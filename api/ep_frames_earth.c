@@ -10,13 +10,11 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/earth.h"
 #include "mech/effective_force.h"
 #include "mech/tides.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */
@@ -112,7 +110,7 @@ static int earth_sphere_from(struct api_call *c, const json_t *body, struct mech
                              "sidereal_day)");
             return 0;
         }
-        e->omega = 2 * M_PI / api_number(body, "sidereal_day", 86164.0989);
+        e->omega = 2 * MECH_PI / api_number(body, "sidereal_day", 86164.0989);
     }
     return 1;
 }
@@ -154,7 +152,7 @@ json_t *api_op_earth_gravity(struct api_call *c, const json_t *body)
     put(k, "gm", api_real(c, earth.gm));
     put(k, "radius", api_real(c, earth.radius));
     put(k, "omega", api_real(c, earth.omega));
-    put(k, "sidereal_day", api_real(c, 2 * M_PI / earth.omega));
+    put(k, "sidereal_day", api_real(c, 2 * MECH_PI / earth.omega));
     put(k, "g0", api_real(c, earth.gm / (earth.radius * earth.radius)));
     put(k, "wgs84",
         json_pack("{s:f,s:f,s:f,s:f,s:f,s:f,s:f}", "a", MECH_WGS84_A, "f", MECH_WGS84_F, "e2",
@@ -180,15 +178,15 @@ json_t *api_op_earth_gravity(struct api_call *c, const json_t *body)
     put(sph, "g_effective", ge);
     put(sph, "reduction", api_real(c, g.reduction));
     put(dev, "rad", api_real(c, g.deviation));
-    put(dev, "deg", api_real(c, g.deviation * (180 / M_PI)));
+    put(dev, "deg", api_real(c, g.deviation * (180 / MECH_PI)));
     put(dev, "tan", api_real(c, g.horizontal / g.radial));
     put(dev, "mrad", api_real(c, g.deviation * 1e3));
     put(dev, "towards", json_string(g.horizontal > 0 ? "equator" : "none"));
     put(sph, "deviation", dev);
     put(dmax, "rad", api_real(c, g.deviation_max));
-    put(dmax, "deg", api_real(c, g.deviation_max * (180 / M_PI)));
+    put(dmax, "deg", api_real(c, g.deviation_max * (180 / MECH_PI)));
     put(dmax, "mrad", api_real(c, g.deviation_max * 1e3));
-    put(dmax, "latitude_deg", api_real(c, g.deviation_max_latitude * (180 / M_PI)));
+    put(dmax, "latitude_deg", api_real(c, g.deviation_max_latitude * (180 / MECH_PI)));
     put(sph, "deviation_max", dmax);
     put(sph, "k", api_real(c, g.k));
     put(out, "sphere", sph);

@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "check_kind.h"
+#include "mech/constants.h"
 #include "endpoint.h"
 #include "respond.h"
 #include "schema.h"
@@ -22,7 +23,6 @@
 #define CHECK_CLOSED_FORM_RELATIVE 1e-12  /* numerical error assumed without evidence */
 #define CHECK_EVIDENCE_FACTOR 10.0        /* safety factor on the operation's own error figures */
 #define CHECK_MAX_ELEMENTS 100000         /* numbers compared in one answer */
-#define CHECK_PI 3.14159265358979323846  /* the least scale of an angle */
 
 /* ---- shared ----------------------------------------------------------------- */
 
@@ -677,8 +677,8 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
     g.tol.abs = given ? api_number(tol, "absolute", -1) : -1;
     g.tol.sig = given ? (int)api_number(tol, "significant_figures", 0) : 0;
     g.tol.scale = given ? api_number(tol, "scale", scale) : scale;
-    if ((kind == API_KIND_ANGLE || kind == API_KIND_AXIS_ANGLE) && g.tol.scale < CHECK_PI)
-        g.tol.scale = CHECK_PI;
+    if ((kind == API_KIND_ANGLE || kind == API_KIND_AXIS_ANGLE) && g.tol.scale < MECH_PI)
+        g.tol.scale = MECH_PI;
     g.tol.rec_rel = rec_rel;
     g.tol.rec_abs = rec_abs;
     g.kind = kind;

@@ -20,13 +20,13 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "integrator_block.h"
 #include "mech/hamiltonian.h"
 #include "mech/liouville.h"
 #include "mech/poincare.h"
 #include "trajectory_request.h"
 
-static const double H_PI = 3.14159265358979323846;
 
 /* ---- the system ---------------------------------------------------------------- */
 
@@ -417,7 +417,7 @@ static json_t *apsides(struct api_call *c, const struct mech_ham_system *s, cons
         n >= 2 ? api_real(c, (pr.y[4 * (n - 1) + 1] - pr.y[1]) / (2.0 * (double)(n - 1)))
                : json_null());
     json_object_set_new_nocheck(o, "apsidal_angle_near_circular",
-                                s->power > -2.0 ? api_real(c, H_PI / sqrt(s->power + 2.0))
+                                s->power > -2.0 ? api_real(c, MECH_PI / sqrt(s->power + 2.0))
                                                 : json_null());
     json_object_set_new_nocheck(
         o, "note",
@@ -478,7 +478,7 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "energy", drift_json(c, &r.energy));
     json_object_set_new_nocheck(
         out, "conserved", conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
-    if (s.kind == MECH_HAM_SPHERICAL_PENDULUM && y0[0] > 0.0 && y0[0] < 0.5 * H_PI) {
+    if (s.kind == MECH_HAM_SPHERICAL_PENDULUM && y0[0] > 0.0 && y0[0] < 0.5 * MECH_PI) {
         /* theta'' = 0: p_phi^2 cos/(m l^2 sin^3) = m g l sin -> phi' = sqrt(g/(l cos theta0)) */
         const double wphi = sqrt(s.g / (s.length * cos(y0[0])));
         const double sn = sin(y0[0]);
@@ -488,7 +488,7 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(co, "p_phi",
                                     api_real(c, s.mass * s.length * s.length * sn * sn * wphi));
         json_object_set_new_nocheck(co, "period",
-                                    wphi > 0.0 ? api_real(c, 2.0 * H_PI / wphi) : json_null());
+                                    wphi > 0.0 ? api_real(c, 2.0 * MECH_PI / wphi) : json_null());
         json_object_set_new_nocheck(co, "note",
                                     json_string("conical motion at this theta: start with "
                                                 "p_theta = 0 and this p_phi and theta stays "
@@ -504,7 +504,7 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
             json_object_set_new_nocheck(co, "r", api_real(c, r0));
             json_object_set_new_nocheck(co, "p_phi", api_real(c, pc));
             json_object_set_new_nocheck(co, "period",
-                                        api_real(c, 2.0 * H_PI * s.mass * r0 * r0 / pc));
+                                        api_real(c, 2.0 * MECH_PI * s.mass * r0 * r0 / pc));
             json_object_set_new_nocheck(co, "stable", json_boolean(s.power > -2.0));
             json_object_set_new_nocheck(out, "circular_orbit", co);
         }
@@ -904,8 +904,8 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
         for (size_t i = 0; i < r.n_crossings; i++) {
             double uv[2] = {r.u[i], r.v[i]};
             if (wrap) { /* the plane's angle, reduced to [0, 2 pi) */
-                uv[0] = fmod(uv[0], 2.0 * H_PI);
-                if (uv[0] < 0.0) uv[0] += 2.0 * H_PI;
+                uv[0] = fmod(uv[0], 2.0 * MECH_PI);
+                if (uv[0] < 0.0) uv[0] += 2.0 * MECH_PI;
             }
             json_array_append_new(pts, api_reals(c, uv, 2));
         }

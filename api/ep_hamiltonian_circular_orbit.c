@@ -8,9 +8,9 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/circular_orbit.h"
 
-static const double PI = 3.14159265358979323846;
 
 #define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))
 
@@ -24,7 +24,7 @@ static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillatio
     SET(j, "angular_momentum", api_real(c, o->angular_momentum));
     SET(j, "speed", api_real(c, r * o->omega_phi));
     SET(j, "omega_phi", api_real(c, o->omega_phi));
-    SET(j, "period_phi", api_real(c, 2 * PI / o->omega_phi));
+    SET(j, "period_phi", api_real(c, 2 * MECH_PI / o->omega_phi));
     SET(j, "V", api_real(c, o->v));
     SET(j, "dV", api_real(c, o->dv));
     SET(j, "d2V", api_real(c, o->d2v));
@@ -33,10 +33,10 @@ static json_t *orbit_json(struct api_call *c, const struct mech_orbit_oscillatio
     SET(j, "stable", json_boolean(ok));
     SET(j, "stability", json_string(ok ? "stable" : o->k_eff < 0 ? "unstable" : "marginal"));
     SET(j, "omega_r", ok ? api_real(c, o->omega_r) : json_null());
-    SET(j, "period_r", ok ? api_real(c, 2 * PI / o->omega_r) : json_null());
+    SET(j, "period_r", ok ? api_real(c, 2 * MECH_PI / o->omega_r) : json_null());
     SET(j, "frequency_ratio", ok ? api_real(c, o->omega_r / o->omega_phi) : json_null());
     SET(j, "apsidal_angle", ok ? api_real(c, o->apsidal_angle) : json_null());
-    SET(j, "apsidal_angle_deg", ok ? api_real(c, o->apsidal_angle * (180 / PI)) : json_null());
+    SET(j, "apsidal_angle_deg", ok ? api_real(c, o->apsidal_angle * (180 / MECH_PI)) : json_null());
     SET(j, "pericentre_angle", ok ? api_real(c, 2 * o->apsidal_angle) : json_null());
     SET(j, "growth_rate", o->k_eff < 0 ? api_real(c, o->growth_rate) : json_null());
     SET(j, "residual", api_real(c, res));

@@ -7,9 +7,9 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/phase_area.h"
 
-static const double PI = 3.14159265358979323846;
 
 json_t *api_op_hamiltonian_phase_area(struct api_call *c, const json_t *body)
 {
@@ -47,17 +47,17 @@ json_t *api_op_hamiltonian_phase_area(struct api_call *c, const json_t *body)
     const int fin = isfinite(p.period);
     json_object_set_new_nocheck(out, "motion", json_string(motions[p.motion]));
     json_object_set_new_nocheck(out, "area", api_real(c, p.area));
-    json_object_set_new_nocheck(out, "action", api_real(c, p.area / (2 * PI)));
+    json_object_set_new_nocheck(out, "action", api_real(c, p.area / (2 * MECH_PI)));
     json_object_set_new_nocheck(out, "period", fin ? api_real(c, p.period) : json_null());
     json_object_set_new_nocheck(out, "angular_frequency",
-                                fin ? api_real(c, 2 * PI / p.period) : json_real(0.0));
+                                fin ? api_real(c, 2 * MECH_PI / p.period) : json_real(0.0));
     json_object_set_new_nocheck(out, "amplitude",
                                 isnan(p.amplitude) ? json_null() : api_real(c, p.amplitude));
     if (pend) {
         json_object_set_new_nocheck(out, "modulus", api_real(c, p.modulus));
         json_t *sa = json_object();
-        json_object_set_new_nocheck(sa, "area", api_real(c, 2 * PI * en / w0));
-        json_object_set_new_nocheck(sa, "period", api_real(c, 2 * PI / w0));
+        json_object_set_new_nocheck(sa, "area", api_real(c, 2 * MECH_PI * en / w0));
+        json_object_set_new_nocheck(sa, "period", api_real(c, 2 * MECH_PI / w0));
         json_object_set_new_nocheck(
             sa, "label",
             json_string("approximation: the harmonic (small-amplitude) pendulum, A = 2 pi E/"

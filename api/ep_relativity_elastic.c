@@ -11,16 +11,16 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/elastic_scattering.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
 #include "velocity_request.h"
 
-static const double PI = 3.14159265358979323846;
 
 static json_t *deg_of(struct api_call *c, double rad)
 {
-    return api_real(c, rad * (180.0 / PI));
+    return api_real(c, rad * (180.0 / MECH_PI));
 }
 
 /* Mass of a particle field (name or number) in unit u; 0 after recording an error. */
@@ -126,7 +126,7 @@ static int angle_of(struct api_call *c, const json_t *body, enum mech_elastic_an
             }
             seen = angle_keys[i].key;
             *kind = angle_keys[i].kind;
-            *rad = d ? json_number_value(v) / 180.0 * PI : json_number_value(v);
+            *rad = d ? json_number_value(v) / 180.0 * MECH_PI : json_number_value(v);
             snprintf(ptr, 48, "/%s", key);
         }
     }
@@ -221,8 +221,8 @@ json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *b
     json_object_set_new_nocheck(cm, "kinetic_energies", api_reals(c, o.cm_kinetic, 2));
     json_object_set_new_nocheck(cm, "angle", api_real(c, o.cm_angle));
     json_object_set_new_nocheck(cm, "angle_deg", deg_of(c, o.cm_angle));
-    json_object_set_new_nocheck(cm, "recoil_angle", api_real(c, PI - o.cm_angle));
-    json_object_set_new_nocheck(cm, "recoil_angle_deg", api_real(c, 180.0 - o.cm_angle * (180.0 / PI)));
+    json_object_set_new_nocheck(cm, "recoil_angle", api_real(c, MECH_PI - o.cm_angle));
+    json_object_set_new_nocheck(cm, "recoil_angle_deg", api_real(c, 180.0 - o.cm_angle * (180.0 / MECH_PI)));
     json_object_set_new_nocheck(res, "cm", cm);
 
     json_object_set_new_nocheck(lab, "projectile", lab_json(c, &o.projectile));
@@ -239,7 +239,7 @@ json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *b
     json_object_set_new_nocheck(sol, "branch",
                                 json_integer(branch < (int)o.n_solutions ? branch : 0));
     json_object_set_new_nocheck(sol, "cm_angles", api_reals(c, o.cm_angle_solutions, o.n_solutions));
-    double degs[2] = {o.cm_angle_solutions[0] * (180.0 / PI), o.cm_angle_solutions[1] * (180.0 / PI)};
+    double degs[2] = {o.cm_angle_solutions[0] * (180.0 / MECH_PI), o.cm_angle_solutions[1] * (180.0 / MECH_PI)};
     json_object_set_new_nocheck(sol, "cm_angles_deg", api_reals(c, degs, o.n_solutions));
     json_object_set_new_nocheck(res, "solutions", sol);
     return res;

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/interval.h"
 #include "mech/velocity_addition.h"
@@ -99,7 +100,7 @@ static json_t *composition(struct api_call *c, const json_t *list)
     json_t *w = json_object();
     json_object_set_new_nocheck(w, "angle", api_real(c, comp.angle));
     json_object_set_new_nocheck(w, "angle_deg",
-                                api_real(c, comp.angle * (180.0 / 3.14159265358979323846)));
+                                api_real(c, comp.angle * (180.0 / MECH_PI)));
     json_object_set_new_nocheck(w, "axis", comp.angle > 0 ? api_vec3(c, comp.axis) : json_null());
     json_object_set_new_nocheck(w, "quaternion", api_reals(c, comp.quaternion, 4));
     json_object_set_new_nocheck(w, "matrix", api_mat3(c, comp.rotation));
@@ -186,7 +187,7 @@ json_t *api_op_relativity_interval(struct api_call *c, const json_t *body)
         e2[k] = json_number_value(json_array_get(json_array_get(ev, 1), k));
     }
     const int ly = strcmp(api_string_of(body, "units"), "years") == 0;
-    const double c_light = ly ? 1.0 : 299792458.0;
+    const double c_light = ly ? 1.0 : MECH_C;
     struct mech_interval iv;
     struct mech_error e;
     mech_error_clear(&e);
@@ -237,7 +238,6 @@ json_t *api_op_relativity_interval(struct api_call *c, const json_t *body)
 
 static const double G_STANDARD = 9.80665;     /* m/s², exact by definition */
 static const double JULIAN_YEAR = 31557600.0; /* s */
-static const double C_SI = 299792458.0;       /* m/s */
 
 static json_t *telescope(struct api_call *c, const char *from_key, double from, const char *to_key,
                          double to, double ticks, double rate)
@@ -254,8 +254,8 @@ json_t *api_op_relativity_worldline(struct api_call *c, const json_t *body)
 {
     const json_t *jl = json_object_get(body, "legs");
     const int years = strcmp(api_string_of(body, "units"), "years") == 0;
-    const double cl = years ? 1.0 : C_SI;
-    const double g = years ? G_STANDARD * JULIAN_YEAR / C_SI : G_STANDARD;
+    const double cl = years ? 1.0 : MECH_C;
+    const double g = years ? G_STANDARD * JULIAN_YEAR / MECH_C : G_STANDARD;
     const double tick = api_number_of(body, "tick_interval");
     size_t n = json_array_size(jl);
     struct mech_leg *legs = calloc(n, sizeof *legs);

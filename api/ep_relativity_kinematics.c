@@ -14,13 +14,13 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/boost.h"
 #include "mech/decay_estimate.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
 #include "velocity_request.h"
 
-static const double PI = 3.14159265358979323846;
 
 /* ---- shared schema fragments --------------------------------------------------- */
 
@@ -81,7 +81,7 @@ static int angle_of(struct api_call *c, const json_t *obj, const char *key, cons
         return -1;
     }
     if (r) *rad = json_number_value(r);
-    if (d) *rad = json_number_value(d) / 180.0 * PI;
+    if (d) *rad = json_number_value(d) / 180.0 * MECH_PI;
     return r || d;
 }
 
@@ -259,7 +259,7 @@ json_t *api_op_relativity_kinematics_invariant_mass(struct api_call *c, const js
 /* The *_deg companion of an angle in radians (the description's promise). */
 static json_t *deg_of(struct api_call *c, double rad)
 {
-    return api_real(c, rad * (180.0 / PI));
+    return api_real(c, rad * (180.0 / MECH_PI));
 }
 
 static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
@@ -313,7 +313,7 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
     for (int i = 0; i < 2; i++) {
         struct mech_kin_lab fw, bw;
         mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], 0.0, 0, &fw);
-        mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], PI, 0, &bw);
+        mech_kin_decay_lab(b, m[i], tb.momentum, tb.energy[i], MECH_PI, 0, &bw);
         double r[2] = {bw.energy, fw.energy};
         json_array_append_new(ranges, api_reals(c, r, 2));
         double tm;
@@ -338,7 +338,7 @@ static json_t *two_body(struct api_call *c, const json_t *body, const struct mec
         mech_kin_decay_lab(b, m[0], tb.momentum, tb.energy[0], theta_star, 0, &l1);
         mech_kin_decay_lab(b, m[1], tb.momentum, tb.energy[1], theta_star, 1, &l2);
         double open = l1.angle + l2.angle;
-        if (open > PI) open = 2 * PI - open;
+        if (open > MECH_PI) open = 2 * MECH_PI - open;
         json_t *o = json_object(), *ds = json_array();
         json_object_set_new_nocheck(o, "theta_star", api_real(c, theta_star));
         json_object_set_new_nocheck(o, "theta_star_deg", deg_of(c, theta_star));
@@ -443,8 +443,8 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
         const json_t *a = ar ? ar : ad;
         double t01 = json_number_value(json_array_get(a, 0));
         double t12 = json_number_value(json_array_get(a, 1));
-        t01 = ar ? t01 : t01 / 180.0 * PI;
-        t12 = ar ? t12 : t12 / 180.0 * PI;
+        t01 = ar ? t01 : t01 / 180.0 * MECH_PI;
+        t12 = ar ? t12 : t12 / 180.0 * MECH_PI;
         double mom[3], en[3], ke[3];
         struct mech_error e;
         mech_error_clear(&e);

@@ -9,13 +9,11 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/doppler.h"
 #include "mech/em_fields.h"
 #include "velocity_request.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 /* ======================= POST /v1/relativity/doppler ======================= */
 
@@ -113,9 +111,9 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
                                     api_real(c, f_emit * d.factor_minus_one));
     }
     json_object_set_new_nocheck(res, "angle_source_frame_deg",
-                                angle_or_null(c, d.angle_source, 180 / M_PI));
+                                angle_or_null(c, d.angle_source, 180 / MECH_PI));
     json_object_set_new_nocheck(res, "angle_observer_frame_deg",
-                                angle_or_null(c, d.angle_observer, 180 / M_PI));
+                                angle_or_null(c, d.angle_observer, 180 / MECH_PI));
     json_object_set_new_nocheck(res, "angle_source_frame_rad", angle_or_null(c, d.angle_source, 1));
     json_object_set_new_nocheck(res, "angle_observer_frame_rad",
                                 angle_or_null(c, d.angle_observer, 1));

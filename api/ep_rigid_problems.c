@@ -8,11 +8,9 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/rigid_problems.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static void set_real(struct api_call *c, json_t *o, const char *k, double x)
 {
@@ -24,7 +22,7 @@ static void set_angle(struct api_call *c, json_t *o, const char *k, double rad)
     json_t *a = json_object();
     if (!a) return;
     set_real(c, a, "rad", rad);
-    set_real(c, a, "deg", rad * (180 / M_PI));
+    set_real(c, a, "deg", rad * (180 / MECH_PI));
     json_object_set_new(o, k, a);
 }
 
@@ -32,7 +30,7 @@ static void set_angle(struct api_call *c, json_t *o, const char *k, double rad)
 
 static json_t *period_or_null(struct api_call *c, double rate)
 {
-    return rate != 0 ? api_real(c, 2 * M_PI / fabs(rate)) : json_null();
+    return rate != 0 ? api_real(c, 2 * MECH_PI / fabs(rate)) : json_null();
 }
 
 json_t *api_op_rigid_free_symmetric_top(struct api_call *c, const json_t *body)

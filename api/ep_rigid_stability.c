@@ -5,11 +5,9 @@
 #include <stdio.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/stability.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static const char *const roles[] = {"smallest", "intermediate", "largest", "degenerate"};
 static const char *const kinds[] = {"stable", "unstable", "marginal"};
@@ -36,7 +34,7 @@ json_t *api_op_rigid_stability(struct api_call *c, const json_t *body)
         snprintf(note, sizeof note,
                  "stable: a small tilt towards axes %d and %d oscillates at %.6g rad/s "
                  "(period %.6g s) and stays small",
-                 b, cc, s.frequency, 2 * M_PI / s.frequency);
+                 b, cc, s.frequency, 2 * MECH_PI / s.frequency);
     else if (s.kind == MECH_STABILITY_UNSTABLE)
         snprintf(note, sizeof note,
                  "unstable (axis %d has the intermediate moment): a small tilt grows like "
@@ -63,7 +61,7 @@ json_t *api_op_rigid_stability(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "classification", json_string(kinds[s.kind]));
     json_object_set_new_nocheck(out, "frequency", stable ? api_real(c, s.frequency) : json_null());
     json_object_set_new_nocheck(out, "period",
-                                stable ? api_real(c, 2 * M_PI / s.frequency) : json_null());
+                                stable ? api_real(c, 2 * MECH_PI / s.frequency) : json_null());
     json_object_set_new_nocheck(out, "growth_rate",
                                 unstable ? api_real(c, s.growth_rate) : json_null());
     json_object_set_new_nocheck(out, "e_folding_time",

@@ -6,11 +6,9 @@
 #include <stdio.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/rotating_liquid.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 json_t *api_op_frames_rotating_liquid(struct api_call *c, const json_t *body)
 {
@@ -49,7 +47,7 @@ json_t *api_op_frames_rotating_liquid(struct api_call *c, const json_t *body)
     json_object_set_new(out, "bottom_exposed", json_boolean(s.bottom_exposed));
     json_object_set_new(out, "dry_radius", api_real(c, s.dry_radius));
     json_object_set_new(out, "slope_rim", api_real(c, s.slope_rim));
-    json_object_set_new(out, "slope_rim_deg", api_real(c, atan(s.slope_rim) * (180 / M_PI)));
+    json_object_set_new(out, "slope_rim_deg", api_real(c, atan(s.slope_rim) * (180 / MECH_PI)));
     json_object_set_new(out, "omega_bottom_exposed", api_real(c, s.omega_bottom));
     if (p.container_height > 0) {
         json_object_set_new(out, "spills", json_boolean(s.spills));

@@ -8,13 +8,11 @@
 #include <string.h>
 
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/earth.h"
 #include "earth_rotation.h"
 #include "mech/small_oscillations.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 #define MAX_TERMS 16
 
@@ -55,7 +53,7 @@ static json_t *central(struct api_call *c, const json_t *s, json_t *out)
     SET(co, "angular_momentum", api_real(c, o.angular_momentum));
     SET(co, "energy", api_real(c, o.energy));
     SET(co, "omega_phi", api_real(c, o.omega_phi));
-    SET(co, "period_phi", api_real(c, 2 * M_PI / o.omega_phi));
+    SET(co, "period_phi", api_real(c, 2 * MECH_PI / o.omega_phi));
     SET(out, "circular_orbit", co);
     SET(out, "V", api_real(c, o.v));
     SET(out, "dV", api_real(c, o.dv));
@@ -64,13 +62,13 @@ static json_t *central(struct api_call *c, const json_t *s, json_t *out)
     SET(out, "stable", json_boolean(o.stable));
     int ok = o.stable;
     SET(out, "omega_r", ok ? api_real(c, o.omega_r) : json_null());
-    SET(out, "period_r", ok ? api_real(c, 2 * M_PI / o.omega_r) : json_null());
+    SET(out, "period_r", ok ? api_real(c, 2 * MECH_PI / o.omega_r) : json_null());
     SET(out, "frequency_ratio", ok ? api_real(c, o.omega_r / o.omega_phi) : json_null());
     SET(out, "apsidal_angle", ok ? api_real(c, o.apsidal_angle) : json_null());
-    SET(out, "apsidal_angle_deg", ok ? api_real(c, o.apsidal_angle * (180 / M_PI)) : json_null());
+    SET(out, "apsidal_angle_deg", ok ? api_real(c, o.apsidal_angle * (180 / MECH_PI)) : json_null());
     SET(out, "pericentre_angle", ok ? api_real(c, 2 * o.apsidal_angle) : json_null());
     SET(out, "precession_per_radial_period",
-        ok ? api_real(c, 2 * o.apsidal_angle - 2 * M_PI) : json_null());
+        ok ? api_real(c, 2 * o.apsidal_angle - 2 * MECH_PI) : json_null());
     SET(out, "growth_rate", ok ? json_null() : api_real(c, o.growth_rate));
     return out;
 }
@@ -92,9 +90,9 @@ static json_t *conical(struct api_call *c, const json_t *s, json_t *out)
     SET(out, "radius", api_real(c, p.radius));
     SET(out, "speed", api_real(c, p.speed));
     SET(out, "omega_theta", api_real(c, p.omega_theta));
-    SET(out, "period_theta", api_real(c, 2 * M_PI / p.omega_theta));
+    SET(out, "period_theta", api_real(c, 2 * MECH_PI / p.omega_theta));
     SET(out, "apsidal_angle", api_real(c, p.apsidal_angle));
-    SET(out, "apsidal_angle_deg", api_real(c, p.apsidal_angle * (180 / M_PI)));
+    SET(out, "apsidal_angle_deg", api_real(c, p.apsidal_angle * (180 / MECH_PI)));
     return out;
 }
 
@@ -123,7 +121,7 @@ static json_t *ball(struct api_call *c, const json_t *s, json_t *out, struct mec
         SET(m, "axis", api_vec3(c, b.axis[k]));
         SET(m, "moment", api_real(c, b.moment[k]));
         SET(m, "omega", api_real(c, b.omega[k]));
-        SET(m, "period", api_real(c, 2 * M_PI / b.omega[k]));
+        SET(m, "period", api_real(c, 2 * MECH_PI / b.omega[k]));
         SET(m, "equivalent_length", api_real(c, b.moment[k] / (api_number(s, "mass", 1) * b.arm)));
         json_array_append_new(modes, m);
     }
@@ -175,7 +173,7 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
     }
     enum mech_status st = mech_foucault_modes(
         api_number(s, "length", 1), api_number(s, "g", 9.80665), w_earth,
-        api_number(s, "latitude_deg", 0) * (M_PI / 180), &f, &e);
+        api_number(s, "latitude_deg", 0) * (MECH_PI / 180), &f, &e);
     if (st != MECH_OK) {
         json_decref(out);
         return api_call_fail_core(c, st, &e, "/system");
@@ -189,23 +187,23 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
     }
     SET(m1, "sense", json_string("counterclockwise"));
     SET(m1, "omega", api_real(c, f.ccw));
-    SET(m1, "period", api_real(c, 2 * M_PI / f.ccw));
+    SET(m1, "period", api_real(c, 2 * MECH_PI / f.ccw));
     SET(m2, "sense", json_string("clockwise"));
     SET(m2, "omega", api_real(c, f.cw));
-    SET(m2, "period", api_real(c, 2 * M_PI / f.cw));
+    SET(m2, "period", api_real(c, 2 * MECH_PI / f.cw));
     json_array_append_new(modes, m1);
     json_array_append_new(modes, m2);
     SET(out, "omega0", api_real(c, f.omega0));
     SET(out, "omega_z", api_real(c, f.omega_z));
     SET(out, "swing_omega", api_real(c, f.swing));
-    SET(out, "swing_period", api_real(c, 2 * M_PI / f.swing));
+    SET(out, "swing_period", api_real(c, 2 * MECH_PI / f.swing));
     SET(out, "modes", modes);
     SET(out, "precession_rate", api_real(c, fabs(f.omega_z)));
     SET(out, "precession_sense", json_string(f.omega_z > 0   ? "clockwise"
                                              : f.omega_z < 0 ? "counterclockwise"
                                                              : "none"));
     SET(out, "precession_period",
-        f.omega_z != 0 ? api_real(c, 2 * M_PI / fabs(f.omega_z)) : json_null());
+        f.omega_z != 0 ? api_real(c, 2 * MECH_PI / fabs(f.omega_z)) : json_null());
     return out;
 }
 

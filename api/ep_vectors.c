@@ -2,13 +2,11 @@
  * given vectors a, b (and c): norms, unit vectors, dot and cross products,
  * the cross product's antisymmetric tensor, the angle, components and
  * projections, and the scalar and vector triple products.
- * JSON <-> core only; the mathematics is core/vector_algebra.c. */
+ * JSON <-> core only; the mathematics is core/rotation/vector_algebra.c. */
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/vector_algebra.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
 
 static json_t *vec_or_null(struct api_call *c, int ok, struct mech_vec3 v)
 {
@@ -66,7 +64,7 @@ json_t *api_op_vectors(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(out, "cross", api_vec3(c, p.cross));
         json_object_set_new_nocheck(out, "cross_tensor", api_mat3(c, p.cross_tensor));
         json_object_set_new_nocheck(out, "angle", real_or_null(c, ok, p.angle));
-        json_object_set_new_nocheck(out, "angle_deg", real_or_null(c, ok, p.angle * (180 / M_PI)));
+        json_object_set_new_nocheck(out, "angle_deg", real_or_null(c, ok, p.angle * (180 / MECH_PI)));
         json_object_set_new_nocheck(out, "b_along_a", real_or_null(c, ok, p.b_along_a));
         json_object_set_new_nocheck(out, "a_along_b", real_or_null(c, ok, p.a_along_b));
         json_object_set_new_nocheck(out, "b_on_a", vec_or_null(c, ok, p.b_on_a));
