@@ -3,13 +3,14 @@
  * with conserved-quantity drifts and, torque-free, the error against the exact
  * solution in Jacobi elliptic functions. The physics is core/rigid_rotation.c;
  * the body may be given by principal moments or by a full /v1/rigid/inertia
- * request, answered by that route's own handler. */
+ * request, read and computed as that route does (api/inertia_request.c). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "catalog.h"
+#include "inertia_request.h"
 #include "integrator_block.h"
 #include "mech/closed_form.h"
 #include "mech/attitude.h"
@@ -22,20 +23,11 @@
 
 /* ---- helpers -------------------------------------------------------------------- */
 
-static struct mech_mat3 mat3_of(const json_t *rows)
-{
-    struct mech_mat3 m;
-    for (int i = 0; i < 3; i++) {
-        struct mech_vec3 r = api_vec3_of(json_array_get(rows, (size_t)i));
-        m.a[i][0] = r.x;
-        m.a[i][1] = r.y;
-        m.a[i][2] = r.z;
-    }
-    return m;
-}
-
-/* Run the /v1/rigid/inertia handler on `in`; moments and principal axes out.
- * Returns 0 after recording errors (pointers under /inertia). */
+/* The body of the /v1/rigid/inertia request `in` (validated against that
+ * route's schema, its defaults filled in, read and computed by
+ * api/inertia_request.c): principal moments (kg m^2, ascending) and axes
+ * (rows, scene axes) out. Returns 1; 0 after recording errors in c (pointers
+ * under /inertia; a budget, numerical or internal failure as "inertia: ..."). */
 static int inertia_principal(struct api_call *c, const json_t *in, double moments[3],
                              struct mech_mat3 *axes)
 {
@@ -64,15 +56,19 @@ static int inertia_principal(struct api_call *c, const json_t *in, double moment
     }
     json_decref(errs);
     json_t *full = api_schema_apply_defaults(sch, in, NULL); /* as the pipeline does */
+    /* the body read and computed as /v1/rigid/inertia does (api/inertia_request.c),
+     * its errors collected apart and then reported under /inertia */
     struct api_call sub;
     memset(&sub, 0, sizeof sub);
     sub.req = c->req;
     sub.given = in;
     sub.body = full;
     sub.budget = c->budget;
-    json_t *r = full ? api_op_rigid_inertia(&sub, full) : NULL;
+    struct api_inertia_body b;
+    memset(&b, 0, sizeof b);
+    int ok = full && api_inertia_body_compute(&sub, full, &b) &&
+             sub.problem == API_PROBLEM_NONE && api_inertia_body_finite(&b);
     json_decref(full);
-    int ok = r && sub.problem == API_PROBLEM_NONE && !sub.nonfinite;
     if (!ok) {
         size_t ne = json_array_size(sub.errors);
         for (size_t i = 0; i < ne; i++) {
@@ -94,12 +90,14 @@ static int inertia_principal(struct api_call *c, const json_t *in, double moment
             }
         }
     } else {
-        const json_t *pr = json_object_get(r, "principal");
-        const json_t *mo = json_object_get(pr, "moments");
-        for (size_t k = 0; k < 3; k++) moments[k] = json_number_value(json_array_get(mo, k));
-        *axes = mat3_of(json_object_get(pr, "axes"));
+        /* as the inertia answer gives them: -0 reads as 0 (api_real) */
+        const struct mech_inertia_principal *pr = &b.result.principal;
+        for (size_t k = 0; k < 3; k++) moments[k] = pr->moments[k] == 0 ? 0.0 : pr->moments[k];
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                axes->a[i][j] = pr->axes.a[i][j] == 0 ? 0.0 : pr->axes.a[i][j];
     }
-    json_decref(r);
+    api_inertia_body_free(&b);
     json_decref(sub.errors);
     json_decref(sub.extra);
     return ok;

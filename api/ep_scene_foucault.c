@@ -5,7 +5,9 @@
  * finite-amplitude correction, the swing period beside 2 pi sqrt(l/g) and the
  * elliptic-integral period, the model terms ("auto": the centrifugal term of
  * the displacement is judged by its effect on the answer) and the evidence
- * (energy and constraint drift, a second run at half the steps). */
+ * (energy and constraint drift, a second run at half the steps). The closed
+ * forms (scales, expected rate, the centrifugal term's estimated effect) are
+ * core/frames/foucault_first_order.c; this file reads, chooses and encodes. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -14,11 +16,12 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/chooser_pendulum.h"
+#include "mech/constants.h"
+#include "mech/foucault_first_order.h"
 #include "mech/pendulum.h"
 #include "mech/trajectory.h"
 #include "trajectory_request.h"
 
-static const double fc_pi = 3.14159265358979323846;
 
 struct fc_run {
     struct mech_foucault_problem p;
@@ -103,7 +106,7 @@ static json_t *fc_term(struct api_call *c, const char *name, int included, doubl
 
 json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
 {
-    const double deg = fc_pi / 180.0;
+    const double deg = MECH_PI / 180.0;
     struct mech_foucault_problem p;
     memset(&p, 0, sizeof p);
     p.latitude_deg = api_number(body, "latitude_deg", 45.0);
@@ -146,14 +149,10 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
             target = mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
 
     /* ---- the scene's scales (closed forms, before integrating) ---- */
-    double lat = p.latitude_deg * deg, alpha = p.amplitude_deg * deg;
-    double W = p.omega_magnitude;
-    double wz = W * sin(lat);
-    if (p.latitude_deg == 90.0 || p.latitude_deg == -90.0) wz = copysign(W, p.latitude_deg);
-    double coslat = (fabs(p.latitude_deg) == 90.0) ? 0.0 : cos(lat);
-    double omega0 = sqrt(p.g / p.length);
-    double period = mech_pendulum_period(p.length, p.g, alpha);
-    double a = p.length * sin(alpha);
+    struct mech_foucault_scales sc;
+    mech_foucault_scales(&p, &sc);
+    const double alpha = sc.alpha, W = p.omega_magnitude, wz = sc.omega_vertical;
+    const double omega0 = sc.omega0, period = sc.period, a = sc.amplitude;
 
     /* ---- the run's length ---- */
     int nrun = api_call_given(c, "/swings") != NULL;
@@ -173,7 +172,7 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
                             "0): give swings or duration");
             return NULL;
         }
-        t_end = api_number(body, "precessions", 1.0) * 2.0 * fc_pi / fabs(wz);
+        t_end = api_number(body, "precessions", 1.0) * 2.0 * MECH_PI / fabs(wz);
     } else if (json_object_get(body, "duration")) {
         run_field = "duration";
         t_end = api_number(body, "duration", 1.0);
@@ -255,17 +254,10 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
             return NULL;
         }
     }
-    /* The centrifugal term's effect (see the description and core/pendulum.c):
-     * anisotropy eps = W^2 cos^2(lat) gives the swing line a wobble of
-     * eps / (4 omega0) and changes h by (eps a^2 / 4) min(1/|wz|, T), hence
-     * the Airy rate by (3/8) of that / l^2; its isotropic part and the
-     * anisotropy shift the period by W^2 (1 + sin^2 lat) / (4 omega0^2). */
-    double eps = W * W * coslat * coslat;
-    double dh = 0.25 * eps * a * a * (fabs(wz) > 0.0 ? fmin(1.0 / fabs(wz), t_end) : t_end);
-    double cf_rate = eps / (4.0 * omega0) + 0.375 * dh / (p.length * p.length);
-    double cf_period = W * W * (1.0 + sin(lat) * sin(lat)) / (4.0 * omega0 * omega0);
-    double cf_rate_rel = W > 0.0 ? cf_rate / W : 0.0;
-    double cf_rel = fmax(cf_rate_rel, cf_period);
+    /* The centrifugal term's effect (core/frames/foucault_first_order.c) */
+    struct mech_foucault_centrifugal_effect cf;
+    mech_foucault_centrifugal_effect(&sc, W, p.length, t_end, &cf);
+    const double cf_rel = cf.relative;
     int include_cf = auto_mode ? (W > 0.0 && cf_rel > target / 10.0) : given_centrifugal;
     p.centrifugal = include_cf;
 
@@ -319,21 +311,18 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(setup, "length", api_real(c, p.length));
     json_object_set_new_nocheck(setup, "g", api_real(c, p.g));
     json_object_set_new_nocheck(setup, "latitude_deg", api_real(c, p.latitude_deg));
-    json_object_set_new_nocheck(setup, "omega", api_vec3(c, mech_vec3_make(0.0, W * coslat, wz)));
+    json_object_set_new_nocheck(setup, "omega", api_vec3(c, sc.omega));
     json_object_set_new_nocheck(setup, "omega_sin_latitude", api_real(c, wz));
     json_object_set_new_nocheck(setup, "omega0", api_real(c, omega0));
     json_object_set_new_nocheck(setup, "amplitude_deg", api_real(c, p.amplitude_deg));
-    json_object_set_new(
-        setup, "release_position",
-        api_vec3(c, mech_vec3_make(a * cos(p.azimuth_deg * deg), a * sin(p.azimuth_deg * deg),
-                                   2.0 * p.length * sin(0.5 * alpha) * sin(0.5 * alpha))));
+    json_object_set_new(setup, "release_position", api_vec3(c, sc.release_position));
     json_object_set_new_nocheck(setup, "duration", api_real(c, p.t_end));
     json_object_set_new_nocheck(res, "setup", setup);
 
     json_t *pr = json_object();
-    double first = -wz;
-    double expected = first + r.airy_rate_mean;
-    double tol_formula = fabs(r.airy_rate_mean) * (alpha * alpha / 4.0 + W * W / (omega0 * omega0));
+    double first = sc.first_order_rate;
+    double tol_formula;
+    double expected = mech_foucault_expected_rate(&sc, W, r.airy_rate_mean, &tol_formula);
     double tol_fit = 3.0 * r.precession.stderr_slope;
     json_object_set_new_nocheck(pr, "measured_rate", api_real(c, r.precession.slope));
     json_object_set_new_nocheck(pr, "measured_rate_deg_per_hour",
@@ -351,8 +340,9 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(tol, "total", api_real(c, tol_formula + tol_fit + num_rate));
     json_object_set_new_nocheck(pr, "tolerance", tol);
     json_object_set_new_nocheck(pr, "full_precession_hours",
-                                fabs(wz) > 0.0 ? api_real(c, 2.0 * fc_pi / fabs(wz) / 3600.0)
-                                               : json_null());
+                                fabs(wz) > 0.0
+                                    ? api_real(c, mech_foucault_full_precession_time(wz) / 3600.0)
+                                    : json_null());
     /* senses stated, not implied (seen from above, local axes x east, y north) */
     json_object_set_new_nocheck(pr, "sense", json_string(fc_sense(first)));
     json_object_set_new_nocheck(pr, "measured_sense", json_string(fc_sense(r.precession.slope)));
@@ -361,7 +351,8 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
                                             "full_precession_hours_measured uses measured_rate"));
     json_object_set_new_nocheck(pr, "full_precession_hours_measured",
                                 fabs(r.precession.slope) > 0.0
-                                    ? api_real(c, 2.0 * fc_pi / fabs(r.precession.slope) / 3600.0)
+                                    ? api_real(c, mech_foucault_full_precession_time(
+                                                      r.precession.slope) / 3600.0)
                                     : json_null());
     json_object_set_new_nocheck(pr, "turning_points", json_integer(r.turning_points));
     json_object_set_new_nocheck(pr, "fit_standard_error", api_real(c, r.precession.stderr_slope));
@@ -374,7 +365,7 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "precession", pr);
 
     json_t *sw = json_object();
-    double tsmall = 2.0 * fc_pi / omega0;
+    double tsmall = sc.small_amplitude_period;
     json_object_set_new_nocheck(sw, "period", api_real(c, r.period));
     json_object_set_new_nocheck(sw, "small_amplitude_period", api_real(c, tsmall));
     json_object_set_new_nocheck(sw, "finite_amplitude_period",
@@ -416,9 +407,9 @@ json_t *api_op_scenes_foucault(struct api_call *c, const json_t *body)
         snprintf(why, sizeof why, "W = 0: the frame does not rotate, the term is identically 0");
     json_array_append_new(terms, fc_term(c, "coriolis", W > 0.0, 2.0 * W * r.max_speed, ce, why));
     json_t *fe = json_object();
-    json_object_set_new_nocheck(fe, "precession_rate", api_real(c, cf_rate));
-    json_object_set_new_nocheck(fe, "relative_rate", api_real(c, cf_rate_rel));
-    json_object_set_new_nocheck(fe, "relative_period", api_real(c, cf_period));
+    json_object_set_new_nocheck(fe, "precession_rate", api_real(c, cf.rate));
+    json_object_set_new_nocheck(fe, "relative_rate", api_real(c, cf.relative_rate));
+    json_object_set_new_nocheck(fe, "relative_period", api_real(c, cf.relative_period));
     json_object_set_new_nocheck(fe, "relative", api_real(c, cf_rel));
     if (!auto_mode)
         snprintf(why, sizeof why, "%s by the request", include_cf ? "included" : "left out");

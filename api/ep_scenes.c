@@ -2,7 +2,9 @@
  * and /rotating-table: the notes' chapter-1 scenes (core/scenes.c), each
  * answering the numerical result (fictitious terms chosen by "auto" at the
  * requested accuracy) beside the notes' first-order formula, their
- * difference and the second-order terms the formula neglects. */
+ * difference and the second-order terms the formula neglects. The closed
+ * forms quoted beside them are core/frames/scenes_first_order.c; this file
+ * reads requests and encodes answers. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,12 +12,12 @@
 
 #include "earth_rotation.h"
 #include "endpoint.h"
+#include "mech/constants.h"
 #include "mech/scenes.h"
+#include "mech/scenes_first_order.h"
 #include "mech/trajectory.h"
 #include "integrator_block.h"
 #include "trajectory_request.h"
-
-static const double ep_pi = 3.14159265358979323846;
 
 /* ---- shared request readers -------------------------------------------------- */
 
@@ -215,20 +217,19 @@ json_t *api_op_scenes_vertical_shot(struct api_call *c, const json_t *body)
         api_call_invalid(c, "", "give exactly one of speed and height");
         return NULL;
     }
-    const double v0 =
-        has_v ? api_number(body, "speed", 0) : sqrt(2.0 * s.g * api_number(body, "height", 0));
-    const double h = v0 * v0 / (2.0 * s.g);
+    const double v0 = has_v ? api_number(body, "speed", 0)
+                            : mech_scene_vertical_shot_speed(api_number(body, "height", 0), s.g);
+    struct mech_scene_vertical_shot_first_order fo;
+    mech_scene_vertical_shot_first_order(v0, s.g, s.omega, s.latitude_deg, &fo);
     s.v0 = mech_vec3_make(0, 0, v0);
     json_t *par = json_object();
     json_object_set_new_nocheck(par, "speed", api_real(c, v0));
-    json_object_set_new_nocheck(par, "height", api_real(c, h));
+    json_object_set_new_nocheck(par, "height", api_real(c, fo.height));
     json_object_set_new_nocheck(par, "latitude_deg", api_real(c, s.latitude_deg));
     json_object_set_new_nocheck(par, "g", api_real(c, s.g));
     json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, s.omega));
     json_object_set_new_nocheck(par, "target_error", api_real(c, target));
-    const double lat = s.latitude_deg * ep_pi / 180.0;
-    const double drop = s.omega * cos(lat) / 3.0 * sqrt(8.0 * h * h * h / s.g);
-    json_object_set_new_nocheck(par, "drop_deflection_east", api_real(c, drop));
+    json_object_set_new_nocheck(par, "drop_deflection_east", api_real(c, fo.drop_east));
     json_t *f = json_string("x_west = (4/3) W cos(lat) sqrt(8 h^3 / g), t = 2 v0 / g (notes §1.5 "
                             "problem 3): 4 x the drop's eastward deflection for the same height");
     return run_ballistic(c, body, "vertical-shot", &s, par, f, 0, NULL, target);
@@ -243,15 +244,17 @@ json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
     struct mech_scene_ballistic s;
     if (!earth_params(c, body, &s)) return NULL;
     const double v0 = api_number(body, "speed", 0);
-    const double al = api_number(body, "elevation_deg", 0) * ep_pi / 180.0;
-    const double ph = api_number_of(body, "azimuth_deg") * ep_pi / 180.0;
-    const struct mech_vec3 fwd = mech_vec3_make(cos(ph), sin(ph), 0);
-    s.v0 = mech_vec3_make(v0 * cos(al) * cos(ph), v0 * cos(al) * sin(ph), v0 * sin(al));
-    const double lat = s.latitude_deg * ep_pi / 180.0, g = s.g, W = s.omega;
+    const double g = s.g, W = s.omega;
+    struct mech_scene_cannonball_first_order fo;
+    mech_scene_cannonball_first_order(v0, api_number(body, "elevation_deg", 0),
+                                      api_number_of(body, "azimuth_deg"), g, W, s.latitude_deg,
+                                      &fo);
+    const struct mech_vec3 fwd = fo.forward;
+    s.v0 = fo.velocity;
     json_t *par = json_object();
     json_object_set_new_nocheck(par, "speed", api_real(c, v0));
-    json_object_set_new_nocheck(par, "elevation_deg", api_real(c, al * 180.0 / ep_pi));
-    json_object_set_new_nocheck(par, "azimuth_deg", api_real(c, ph * 180.0 / ep_pi));
+    json_object_set_new_nocheck(par, "elevation_deg", api_real(c, fo.elevation * 180.0 / MECH_PI));
+    json_object_set_new_nocheck(par, "azimuth_deg", api_real(c, fo.azimuth * 180.0 / MECH_PI));
     json_object_set_new_nocheck(par, "latitude_deg", api_real(c, s.latitude_deg));
     json_object_set_new_nocheck(par, "g", api_real(c, g));
     json_object_set_new_nocheck(par, "omega_magnitude", api_real(c, W));
@@ -261,20 +264,14 @@ json_t *api_op_scenes_cannonball(struct api_call *c, const json_t *body)
                             "T0 = 2 v0 sin(alpha) / g (notes §1.4, homework §1.5 problems 4-5)");
     json_t *res = run_ballistic(c, body, "cannonball", &s, par, f, 0, &fwd, target);
     if (!res) return NULL;
-    /* the no-rotation landing and the notes' due-east formulas */
-    const double T0 = 2.0 * v0 * sin(al) / g, R = v0 * v0 * sin(2.0 * al) / g;
+    /* the no-rotation landing and the notes' due-east formulas (core) */
     json_t *z = json_object();
-    json_object_set_new_nocheck(z, "t", api_real(c, T0));
-    json_object_set_new_nocheck(z, "range", api_real(c, R));
+    json_object_set_new_nocheck(z, "t", api_real(c, fo.t0));
+    json_object_set_new_nocheck(z, "range", api_real(c, fo.range));
     json_object_set_new_nocheck(res, "zeroth_order", z);
     json_t *ne = json_object();
-    const double sa = sin(al), ca = cos(al);
-    json_object_set_new_nocheck(
-        ne, "south_deflection",
-        api_real(c, 4.0 * v0 * v0 * v0 * W * sin(lat) * sa * sa * ca / (g * g)));
-    json_object_set_new_nocheck(ne, "range_increase",
-                                api_real(c, W * cos(lat) * sqrt(2.0 * R * R * R / g) *
-                                                (sqrt(ca / sa) - sa * sqrt(sa / ca) / (3.0 * ca))));
+    json_object_set_new_nocheck(ne, "south_deflection", api_real(c, fo.south_due_east));
+    json_object_set_new_nocheck(ne, "range_increase", api_real(c, fo.range_increase_due_east));
     json_object_set_new_nocheck(
         ne, "formula",
         json_string("notes §1.5 problems 4-5 (firing due east): d = 4 v0^3 W "
