@@ -79,6 +79,13 @@ void mech_scene_cannonball_first_order(double v0, double elevation_deg, double a
     out->range = R;
     const double sa = sin(al), ca = cos(al);
     out->south_due_east = 4.0 * v0 * v0 * v0 * W * sin(lat) * sa * sa * ca / (g * g);
-    out->range_increase_due_east =
-        W * cos(lat) * sqrt(2.0 * R * R * R / g) * (sqrt(ca / sa) - sa * sqrt(sa / ca) / (3.0 * ca));
+    /* The notes' form W cos(lat) sqrt(2R^3/g) (sqrt(cot a) - sin a sqrt(tan a)/(3 cos a))
+     * is 4 W cos(lat) v0^3 sin a (4 cos^2 a - 1) / (3 g^2): its two terms cancel at 60 deg,
+     * where the increase is 0. Written as (2 cos a - 1)(2 cos a + 1) with
+     * 2 cos a - 1 = 2 (cos a - cos 60) = -4 sin(a/2 + 30 deg) sin((a - 60 deg)/2), the
+     * difference of angles taken in degrees (exact near 60), every digit survives. */
+    const double half_d = 0.5 * (elevation_deg - 60.0) * (MECH_PI / 180.0);
+    const double two_c_minus_1 = -4.0 * sin(0.5 * al + MECH_PI / 6.0) * sin(half_d);
+    out->range_increase_due_east = 4.0 * W * cos(lat) * v0 * v0 * v0 * sa * two_c_minus_1 *
+                                   (2.0 * ca + 1.0) / (3.0 * g * g);
 }

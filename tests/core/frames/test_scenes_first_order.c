@@ -130,18 +130,24 @@ static void test_cannonball(void)
     CHECK_CLOSE(cb.forward.y, 1.0, 1e-16, 0);
     CHECK_CLOSE(cb.velocity.y, v0 * cos(MECH_PI / 6.0), 1e-15, 0);
     CHECK_CLOSE(cb.azimuth, MECH_PI / 2.0, 1e-16, 0);
-    /* near 60 deg the two terms of the range increase cancel: the absolute
-     * error stays at the round-off of one term (documented in the header) */
-    const double dels[] = {0.0, 1e-9, -1e-6, 1e-3};
+    /* near 60 deg the notes' two terms of the range increase cancel (the
+     * increase is 0 at 60 deg): against an independent long-double form,
+     * 2 cos(60 + d) - 1 = -sqrt(3) sin d - 2 sin^2(d/2), every digit is kept
+     * (the notes' form, and even (2 cos a - 1) in doubles, lose ~1e-16/d of it) */
+    const double dels[] = {1e-12, 1e-9, -1e-6, 1e-3, -5.0, 20.0};
     for (size_t k = 0; k < sizeof dels / sizeof *dels; k++) {
-        const double el = 60.0 + dels[k], a = el * MECH_PI / 180.0, lat = 32.0 * MECH_PI / 180.0;
+        const double el = 60.0 + dels[k];
+        const long double d = (long double)(el - 60.0) * MECH_PI_L / 180.0L;
+        const long double a = (long double)el * MECH_PI_L / 180.0L;
+        const long double lat = 32.0L * MECH_PI_L / 180.0L;
+        const long double tcm1 = -sqrtl(3.0L) * sinl(d) - 2.0L * sinl(0.5L * d) * sinl(0.5L * d);
+        const long double want = 4.0L * W_NOTES * cosl(lat) * (long double)v0 * v0 * v0 * sinl(a) *
+                                 tcm1 * (2.0L * cosl(a) + 1.0L) / (3.0L * G0 * G0);
         mech_scene_cannonball_first_order(v0, el, 0.0, G0, W_NOTES, 32.0, &cb);
-        const double stable = 4.0 * W_NOTES * cos(lat) * v0 * v0 * v0 * sin(a) *
-                              (2.0 * cos(a) - 1.0) * (2.0 * cos(a) + 1.0) / (3.0 * G0 * G0);
-        const double term = W_NOTES * cos(lat) * sqrt(2.0 * pow(cb.range, 3) / G0) *
-                            sqrt(cos(a) / sin(a));
-        CHECK_CLOSE(cb.range_increase_due_east, stable, 0, 1e-14 * term);
+        CHECK_CLOSE(cb.range_increase_due_east, (double)want, 1e-13, 0);
     }
+    mech_scene_cannonball_first_order(v0, 60.0, 0.0, G0, W_NOTES, 32.0, &cb);
+    CHECK(cb.range_increase_due_east == 0.0);
     /* extremes: straight up (cos a = 6e-17: finite), and bad input */
     mech_scene_cannonball_first_order(1e4, 90.0, 0.0, 1e-3, 1e-2, 0.0, &cb);
     CHECK(isfinite(cb.range) && isfinite(cb.range_increase_due_east) &&
