@@ -14,6 +14,7 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/geodesic.h"
+#include "mech/gr_units.h"
 #include "mech/radial_infall.h"
 #include "mech/schwarzschild.h"
 #include "trajectory_request.h"
@@ -22,87 +23,39 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* Constants (documented in the routes' descriptions). */
-#define GR_C 299792458.0           /* m/s, exact (SI definition) */
-#define GR_G 6.67430e-11           /* m^3 kg^-1 s^-2, CODATA 2018 */
-#define GR_GM_SUN 1.32712440041279419e20 /* m^3/s^2, JPL DE440 (Park et al. 2021); = MECH_SUN_GM */
-#define GR_GM_EARTH 3.986004418e14 /* m^3/s^2, WGS 84 / IERS */
+/* Constants (documented in the routes' descriptions); c, G and the GM values
+ * are mech/constants.h's, used through mech/gr_units.h. */
 #define GR_ARCSEC (180.0 * 3600.0 / M_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
 
 /* ---- units ------------------------------------------------------------------------ */
 
-struct gr_units {
-    int geometric;
-    int has_mass; /* GM known */
-    double GM;    /* m^3/s^2 (NaN when unknown) */
-    double len;   /* one length unit of the request in GM/c^2: m -> 1/(GM/c^2); geometric 1 */
-    double m;     /* GM/c^2 in m (NaN when unknown) */
-    double s;     /* GM/c^3 in s */
-};
-
-/* Parse M and units. Returns 0 after recording an error. */
-static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units *u)
+/* Parse M and units; the set-up and its checks are mech_gr_units_init.
+ * Returns 0 after recording an error. */
+static int gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_units *u)
 {
-    memset(u, 0, sizeof *u);
-    u->geometric = !strcmp(api_string_of(body, "units"), "geometric");
+    const int geometric = !strcmp(api_string_of(body, "units"), "geometric");
     const json_t *M = json_object_get(body, "M");
-    u->GM = u->m = u->s = NAN;
-    if (M) {
-        if (json_is_string(M))
-            u->GM = !strcmp(json_string_value(M), "sun") ? GR_GM_SUN : GR_GM_EARTH;
-        else if (json_is_object(M))
-            u->GM = api_number(M, "gm", 0);
-        else
-            u->GM = GR_G * json_number_value(M);
-        u->has_mass = 1;
-        u->m = u->GM / (GR_C * GR_C);
-        u->s = u->m / GR_C;
-        if (!(u->m > 0) || !isfinite(u->m)) {
-            api_call_domain(c, "/M", "GM/c^2 = %.6g m is not a usable length", u->m);
-            return 0;
-        }
-    } else if (!u->geometric) {
-        api_call_invalid(c, "/M",
-                         "M is required with units SI (a mass in kg, \"sun\" or \"earth\")");
-        return 0;
+    enum mech_gr_mass kind = MECH_GR_MASS_NONE;
+    double value = NAN;
+    if (json_is_string(M)) {
+        kind = !strcmp(json_string_value(M), "sun") ? MECH_GR_MASS_SUN : MECH_GR_MASS_EARTH;
+    } else if (json_is_object(M)) {
+        kind = MECH_GR_MASS_GM;
+        value = api_number(M, "gm", 0);
+    } else if (M) {
+        kind = MECH_GR_MASS_KG;
+        value = json_number_value(M);
     }
-    return 1;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_gr_units_init(geometric, kind, value, u, &e);
+    if (st == MECH_EDOMAIN) api_call_domain(c, "/M", "%s", e.text);
+    if (st != MECH_OK && st != MECH_EDOMAIN) api_call_invalid(c, "/M", "%s", e.text);
+    return st == MECH_OK;
 }
 
-/* request length (m or GM/c^2) -> GM/c^2 */
-static double gr_len_in(const struct gr_units *u, double x)
-{
-    return u->geometric ? x : x / u->m;
-}
-/* GM/c^2 -> answer length */
-static double gr_len_out(const struct gr_units *u, double r)
-{
-    return u->geometric ? r : r * u->m;
-}
-static double gr_time_in(const struct gr_units *u, double x)
-{
-    return u->geometric ? x : x / u->s;
-}
-static double gr_time_out(const struct gr_units *u, double t)
-{
-    return u->geometric ? t : t * u->s;
-}
-/* specific angular momentum: GM/c -> m^2/s is x GM/c = m c */
-static double gr_ang_in(const struct gr_units *u, double L)
-{
-    return u->geometric ? L : L / (u->m * GR_C);
-}
-static double gr_ang_out(const struct gr_units *u, double L)
-{
-    return u->geometric ? L : L * u->m * GR_C;
-}
-static double gr_speed_in(const struct gr_units *u, double v)
-{
-    return u->geometric ? v : v / GR_C;
-}
-
-static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
+static json_t *gr_units_json(struct api_call *c, const struct mech_gr_units *u)
 {
     json_t *j = json_object();
     json_object_set_new_nocheck(j, "system", json_string(u->geometric ? "geometric" : "SI"));
@@ -113,12 +66,12 @@ static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
     json_object_set_new_nocheck(j, "speed", json_string(u->geometric ? "c" : "m/s"));
     json_object_set_new_nocheck(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
     json_object_set_new_nocheck(j, "angle", json_string("rad"));
-    json_object_set_new_nocheck(j, "c", api_real(c, GR_C));
+    json_object_set_new_nocheck(j, "c", api_real(c, MECH_C));
     if (u->has_mass) {
         json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
         json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
         json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
-        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / GR_G)); /* M = GM/G */
+        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
     }
     return j;
 }
@@ -142,19 +95,19 @@ static const char *stability_name(enum mech_schw_stability s)
 
 json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 {
-    struct gr_units u;
+    struct mech_gr_units u;
     if (!gr_units_read(c, body, &u)) return NULL;
     struct mech_error e;
     mech_error_clear(&e);
     json_t *out = json_object();
     json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
     json_object_set_new_nocheck(out, "schwarzschild_radius",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_HORIZON)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_HORIZON)));
     json_object_set_new_nocheck(out, "photon_sphere",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
-    json_object_set_new_nocheck(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
+    json_object_set_new_nocheck(out, "isco", api_real(c, mech_gr_len_out(&u, MECH_SCHW_ISCO)));
     json_object_set_new_nocheck(out, "critical_impact_parameter",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
     json_object_set_new_nocheck(out, "isco_binding_efficiency",
                                 api_real(c, MECH_SCHW_ISCO_BINDING_EFFICIENCY));
 
@@ -165,7 +118,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         return NULL;
     }
     if (rj) {
-        const double r = gr_len_in(&u, json_number_value(rj));
+        const double r = mech_gr_len_in(&u, json_number_value(rj));
         struct mech_schw_static s;
         struct mech_schw_circular co;
         if (mech_schw_static_clock(r, &s, &e) != MECH_OK ||
@@ -173,7 +126,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             api_call_domain(c, "/r",
                             "r = %.17g is not outside the horizon r_s = %.17g: no static clock or "
                             "orbit there",
-                            json_number_value(rj), gr_len_out(&u, 2.0));
+                            json_number_value(rj), mech_gr_len_out(&u, 2.0));
             json_decref(out);
             return NULL;
         }
@@ -198,14 +151,14 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             json_object_set_new_nocheck(cj, "binding_efficiency",
                                         api_real(c, co.binding_efficiency));
             json_object_set_new_nocheck(cj, "angular_momentum",
-                                        api_real(c, gr_ang_out(&u, co.angular_momentum)));
+                                        api_real(c, mech_gr_ang_out(&u, co.angular_momentum)));
             json_object_set_new_nocheck(cj, "local_speed_over_c", api_real(c, co.local_speed));
             json_object_set_new_nocheck(cj, "angular_velocity",
-                                        api_real(c, co.omega / gr_time_out(&u, 1.0)));
+                                        api_real(c, co.omega / mech_gr_time_out(&u, 1.0)));
             json_object_set_new_nocheck(cj, "period_coordinate",
-                                        api_real(c, gr_time_out(&u, co.period_t)));
+                                        api_real(c, mech_gr_time_out(&u, co.period_t)));
             json_object_set_new_nocheck(cj, "period_proper",
-                                        api_real(c, gr_time_out(&u, co.period_tau)));
+                                        api_real(c, mech_gr_time_out(&u, co.period_tau)));
         } else {
             json_object_set_new_nocheck(cj, "why",
                                         json_string("no circular geodesic at or inside the photon "
@@ -217,7 +170,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
             struct mech_schw_clock_compare cc;
             enum mech_status st2 = mech_schw_clock_compare(
-                json_number_value(refj), json_number_value(rj), gr_len_out(&u, 1.0), &cc, &e);
+                json_number_value(refj), json_number_value(rj), mech_gr_len_out(&u, 1.0), &cc, &e);
             if (st2 != MECH_OK) {
                 api_call_fail_core(c, st2, &e, "");
                 json_decref(out);
@@ -270,7 +223,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
     if (ij) {
         struct mech_radial_infall f;
         enum mech_status sti =
-            mech_radial_infall_from_rest(gr_len_in(&u, json_number_value(ij)), &f, &e);
+            mech_radial_infall_from_rest(mech_gr_len_in(&u, json_number_value(ij)), &f, &e);
         if (sti != MECH_OK) {
             api_call_fail_core(c, sti, &e, "");
             json_decref(out);
@@ -279,11 +232,11 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         json_t *ri = json_object();
         json_object_set_new_nocheck(ri, "from", api_real(c, json_number_value(ij)));
         json_object_set_new_nocheck(ri, "proper_time_to_horizon",
-                                    api_real(c, gr_time_out(&u, f.to_horizon)));
+                                    api_real(c, mech_gr_time_out(&u, f.to_horizon)));
         json_object_set_new_nocheck(ri, "proper_time_to_singularity",
-                                    api_real(c, gr_time_out(&u, f.to_singularity)));
+                                    api_real(c, mech_gr_time_out(&u, f.to_singularity)));
         json_object_set_new_nocheck(ri, "proper_time_horizon_to_singularity",
-                                    api_real(c, gr_time_out(&u, f.horizon_to_singularity)));
+                                    api_real(c, mech_gr_time_out(&u, f.horizon_to_singularity)));
         json_object_set_new_nocheck(ri, "coordinate_time_to_horizon", json_null());
         json_object_set_new_nocheck(
             ri, "note",
@@ -295,17 +248,17 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 
     const json_t *ej = json_object_get(body, "effective_potential");
     if (ej) {
-        const double L = gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
+        const double L = mech_gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
         double ru, rs;
         int ne = mech_schw_veff_extrema(L, &ru, &rs);
         const json_t *a = json_object_get(ej, "r_min"), *b = json_object_get(ej, "r_max");
         /* sampled evenly in the request's length unit, so given ends are echoed exactly */
-        double rmin = a ? json_number_value(a) : gr_len_out(&u, 2.0);
-        double rmax = b ? json_number_value(b) : gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
-        if (!(gr_len_in(&u, rmin) >= 2.0)) {
+        double rmin = a ? json_number_value(a) : mech_gr_len_out(&u, 2.0);
+        double rmax = b ? json_number_value(b) : mech_gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
+        if (!(mech_gr_len_in(&u, rmin) >= 2.0)) {
             api_call_domain(c, "/effective_potential/r_min",
                             "r_min must be at least r_s = %.17g (outside the horizon)",
-                            gr_len_out(&u, 2.0));
+                            mech_gr_len_out(&u, 2.0));
             json_decref(out);
             return NULL;
         }
@@ -328,16 +281,16 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             json_decref(out);
             return NULL;
         }
-        const double inv_len2 = 1.0 / (gr_len_out(&u, 1.0) * gr_len_out(&u, 1.0));
+        const double inv_len2 = 1.0 / (mech_gr_len_out(&u, 1.0) * mech_gr_len_out(&u, 1.0));
         for (size_t i = 0; i < n; i++) {
             rr[i] = i + 1 == n ? rmax : rmin + (rmax - rmin) * (double)i / (double)(n - 1);
-            const double r = gr_len_in(&u, rr[i]), Lr = L / r;
+            const double r = mech_gr_len_in(&u, rr[i]), Lr = L / r;
             vm[i] = mech_schw_veff_massive(r, L);
             v1[i] = -2.0 / r + Lr * Lr - 2.0 * Lr * Lr / r; /* V - 1 without cancellation */
             vp[i] = mech_schw_veff_photon(r) * inv_len2;
         }
         json_t *v = json_object();
-        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, gr_ang_out(&u, L)));
+        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, mech_gr_ang_out(&u, L)));
         json_object_set_new_nocheck(
             v, "massive_normalisation",
             json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
@@ -355,16 +308,16 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         json_t *x = json_object();
         json_object_set_new_nocheck(x, "count", json_integer(ne));
         json_object_set_new_nocheck(x, "unstable_r",
-                                    ne ? api_real(c, gr_len_out(&u, ru)) : json_null());
+                                    ne ? api_real(c, mech_gr_len_out(&u, ru)) : json_null());
         json_object_set_new_nocheck(x, "unstable_V",
                                     ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
         json_object_set_new_nocheck(x, "stable_r",
-                                    ne ? api_real(c, gr_len_out(&u, rs)) : json_null());
+                                    ne ? api_real(c, mech_gr_len_out(&u, rs)) : json_null());
         json_object_set_new_nocheck(x, "stable_V",
                                     ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
         json_object_set_new_nocheck(v, "massive_extrema", x);
         json_t *pm = json_object();
-        json_object_set_new_nocheck(pm, "r", api_real(c, gr_len_out(&u, 3.0)));
+        json_object_set_new_nocheck(pm, "r", api_real(c, mech_gr_len_out(&u, 3.0)));
         json_object_set_new_nocheck(pm, "W", api_real(c, inv_len2 / 27.0));
         json_object_set_new_nocheck(v, "photon_maximum", pm);
         json_object_set_new_nocheck(out, "effective_potential", v);
@@ -409,7 +362,7 @@ static json_t *init_fail(struct api_call *c, enum mech_status st, struct mech_er
 
 json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
 {
-    struct gr_units u;
+    struct mech_gr_units u;
     if (!gr_units_read(c, body, &u)) return NULL;
     const int photon = !strcmp(api_string(body, "kind", "timelike"), "null");
     const json_t *ini = json_object_get(body, "initial");
@@ -466,32 +419,32 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
      * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
      * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
      * from 10 b to 1400 b). */
-    const double r0 = r0j              ? gr_len_in(&u, json_number_value(r0j))
-                      : form_impact ? fmax(100.0 * gr_len_in(&u, api_number(ini, "impact_parameter", 0)),
+    const double r0 = r0j              ? mech_gr_len_in(&u, json_number_value(r0j))
+                      : form_impact ? fmax(100.0 * mech_gr_len_in(&u, api_number(ini, "impact_parameter", 0)),
                                            1000.0)
                                     : NAN;
     enum mech_status st;
     if (form_energy) {
         int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
-                                       gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
+                                       mech_gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
                                        &in, &e);
     } else if (form_local) {
         const json_t *lv = json_object_get(ini, "local_velocity");
         st = mech_geodesic_init_local(photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE, r0,
-                                      phi0, gr_speed_in(&u, api_number(lv, "radial", 0)),
-                                      gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
+                                      phi0, mech_gr_speed_in(&u, api_number(lv, "radial", 0)),
+                                      mech_gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
     } else if (form_impact) {
         int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
         st = mech_geodesic_init_impact(
-            r0, phi0, gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
+            r0, phi0, mech_gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
     } else {
         double rp, ra;
         if (form_turn) {
-            rp = gr_len_in(&u, api_number(ini, "periapsis", 1));
-            ra = gr_len_in(&u, api_number(ini, "apoapsis", 1));
+            rp = mech_gr_len_in(&u, api_number(ini, "periapsis", 1));
+            ra = mech_gr_len_in(&u, api_number(ini, "apoapsis", 1));
         } else {
-            double a = gr_len_in(&u, api_number(ini, "semi_major_axis", 1));
+            double a = mech_gr_len_in(&u, api_number(ini, "semi_major_axis", 1));
             double ec = api_number(ini, "eccentricity", 0);
             rp = a * (1.0 - ec);
             ra = a * (1.0 + ec);
@@ -529,12 +482,12 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     p.init = in;
     const double T = mech_geodesic_time_unit(&in);
     const double rs_esc = json_object_get(body, "r_escape")
-                              ? gr_len_in(&u, api_number(body, "r_escape", 1))
+                              ? mech_gr_len_in(&u, api_number(body, "r_escape", 1))
                               : 2.0 * (bound ? 1.0 / bd.u1 : in.r0);
     p.r_escape = rs_esc;
     if (!(rs_esc > in.r0)) {
         api_call_invalid(c, "/r_escape", "r_escape must be beyond the start radius %.17g",
-                         gr_len_out(&u, in.r0));
+                         mech_gr_len_out(&u, in.r0));
         return NULL;
     }
     if (photon) {
@@ -543,9 +496,9 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         const double b = fabs(in.L), r02 = fmax(0.0, (in.r0 - b) * (in.r0 + b));
         const double re2 = fmax(0.0, (rs_esc - b) * (rs_esc + b));
         const double path = in.rdot0 <= 0 ? sqrt(r02) + sqrt(re2) : sqrt(re2) - sqrt(r02);
-        p.param_end = lj ? gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
+        p.param_end = lj ? mech_gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
     } else
-        p.param_end = tj ? gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
+        p.param_end = tj ? mech_gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
     p.constraint_bound = api_number_of(body, "constraint_bound");
     if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
     p.samples = (size_t)api_number_of(body, "samples");
@@ -580,7 +533,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;
     p.opt = ch.opt;
-    if (ch.opt.dt > 0) p.opt.dt = gr_time_in(&u, ch.opt.dt) / T;
+    if (ch.opt.dt > 0) p.opt.dt = mech_gr_time_in(&u, ch.opt.dt) / T;
 
     const size_t n = p.samples;
     double *sp = malloc(n * sizeof *sp), *st_ = malloc(n * sizeof *st_),
@@ -600,8 +553,8 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     st = mech_geodesic_integrate(&p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
-            e.progress.t_reached = gr_time_out(&u, e.progress.t_reached);
-            e.progress.t_target = gr_time_out(&u, e.progress.t_target);
+            e.progress.t_reached = mech_gr_time_out(&u, e.progress.t_reached);
+            e.progress.t_target = mech_gr_time_out(&u, e.progress.t_target);
         }
         if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
             api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
@@ -630,16 +583,16 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "kind", json_string(photon ? "null" : "timelike"));
     json_t *cons = json_object();
     if (photon) {
-        json_object_set_new_nocheck(cons, "impact_parameter", api_real(c, gr_len_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "impact_parameter", api_real(c, mech_gr_len_out(&u, in.L)));
         json_object_set_new_nocheck(cons, "normalisation",
                                     json_string("E = 1: dt/dlambda = 1/(1 - r_s/r)"));
     } else {
         json_object_set_new_nocheck(cons, "energy", api_real(c, in.E));
         json_object_set_new_nocheck(cons, "energy_minus_one", api_real(c, in.E2m1 / (1.0 + in.E)));
-        json_object_set_new_nocheck(cons, "angular_momentum", api_real(c, gr_ang_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "angular_momentum", api_real(c, mech_gr_ang_out(&u, in.L)));
     }
     json_object_set_new_nocheck(out, "conserved", cons);
-    json_object_set_new_nocheck(out, "r0", api_real(c, gr_len_out(&u, in.r0)));
+    json_object_set_new_nocheck(out, "r0", api_real(c, mech_gr_len_out(&u, in.r0)));
     /* light: b > 3 sqrt 3 outside the photon sphere turns (scatter, or escapes if it
      * starts outward); inside it, it turns back into the hole; b < 3 sqrt 3 falls in
      * unless it starts outward */
@@ -655,21 +608,21 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (bound) {
         const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
         json_t *o = json_object();
-        json_object_set_new_nocheck(o, "periapsis", api_real(c, gr_len_out(&u, rp)));
-        json_object_set_new_nocheck(o, "apoapsis", api_real(c, gr_len_out(&u, ra)));
+        json_object_set_new_nocheck(o, "periapsis", api_real(c, mech_gr_len_out(&u, rp)));
+        json_object_set_new_nocheck(o, "apoapsis", api_real(c, mech_gr_len_out(&u, ra)));
         json_object_set_new_nocheck(o, "semi_major_axis",
-                                    api_real(c, gr_len_out(&u, 0.5 * (rp + ra))));
+                                    api_real(c, mech_gr_len_out(&u, 0.5 * (rp + ra))));
         json_object_set_new_nocheck(o, "eccentricity", api_real(c, (ra - rp) / (ra + rp)));
-        json_object_set_new_nocheck(o, "radial_period_proper", api_real(c, gr_time_out(&u, Ttau)));
+        json_object_set_new_nocheck(o, "radial_period_proper", api_real(c, mech_gr_time_out(&u, Ttau)));
         json_object_set_new_nocheck(o, "radial_period_coordinate",
-                                    api_real(c, gr_time_out(&u, Tt)));
+                                    api_real(c, mech_gr_time_out(&u, Tt)));
         json_object_set_new_nocheck(out, "orbit", o);
     }
     const size_t ns = r.n_samples;
     for (size_t i = 0; i < ns; i++) {
-        sp[i] = gr_time_out(&u, sp[i]);
-        st_[i] = gr_time_out(&u, st_[i]);
-        sr[i] = gr_len_out(&u, sr[i]);
+        sp[i] = mech_gr_time_out(&u, sp[i]);
+        st_[i] = mech_gr_time_out(&u, st_[i]);
+        sr[i] = mech_gr_len_out(&u, sr[i]);
     }
     json_t *sj = json_object();
     json_object_set_new(sj, photon ? "lambda" : "tau", api_reals(c, sp, ns));
@@ -685,15 +638,15 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                                         : "tau_end"));
     json_object_set_new_nocheck(en, "captured", json_boolean(r.captured));
     json_object_set_new_nocheck(en, "escaped", json_boolean(r.escaped));
-    json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, gr_time_out(&u, r.end_param)));
-    json_object_set_new_nocheck(en, "t", api_real(c, gr_time_out(&u, r.end_t)));
-    json_object_set_new_nocheck(en, "r", api_real(c, gr_len_out(&u, r.end_r)));
+    json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, mech_gr_time_out(&u, r.end_param)));
+    json_object_set_new_nocheck(en, "t", api_real(c, mech_gr_time_out(&u, r.end_t)));
+    json_object_set_new_nocheck(en, "r", api_real(c, mech_gr_len_out(&u, r.end_r)));
     json_object_set_new_nocheck(en, "phi", api_real(c, r.end_phi));
     if (r.captured)
         json_object_set_new(
             en, "capture_radius",
-            api_real(c, gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
-    if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, gr_len_out(&u, rs_esc)));
+            api_real(c, mech_gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
+    if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, mech_gr_len_out(&u, rs_esc)));
     json_object_set_new_nocheck(out, "end", en);
 
     if (bound) {
@@ -720,7 +673,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
             json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
         (void)a;
         if (!u.geometric) {
-            const double per_century = GR_CENTURY_S / gr_time_out(&u, Tt) * GR_ARCSEC;
+            const double per_century = GR_CENTURY_S / mech_gr_time_out(&u, Tt) * GR_ARCSEC;
             json_t *ac = json_object();
             json_object_set_new_nocheck(
                 ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
@@ -771,7 +724,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                     api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
         json_object_set_new_nocheck(dj, "measured_minus_exact",
                                     has ? api_real(c, r.measured_deflection - dq) : json_null());
-        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, gr_len_out(&u, rmin)));
+        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, rmin)));
         json_t *as = json_object();
         json_object_set_new_nocheck(
             as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
@@ -796,7 +749,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                         api_real(c, r.constraint_max_abs));
     json_object_set_new_nocheck(d, "constraint", cj);
     json_object_set_new_nocheck(d, "time_unit_of_the_scaled_state",
-                                api_real(c, gr_time_out(&u, T)));
+                                api_real(c, mech_gr_time_out(&u, T)));
     json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
