@@ -14,6 +14,7 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/geodesic.h"
+#include "mech/geodesic_setup.h"
 #include "mech/gr_units.h"
 #include "mech/radial_infall.h"
 #include "mech/schwarzschild.h"
@@ -332,34 +333,6 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 /* ===================================================================================== */
 /* POST /v1/gr/geodesic                                                                   */
 
-static const char *class_name(enum mech_geodesic_class k)
-{
-    switch (k) {
-    case MECH_GEODESIC_BOUND:
-        return "bound";
-    case MECH_GEODESIC_UNBOUND:
-        return "unbound";
-    case MECH_GEODESIC_CIRCULAR:
-        return "circular";
-    default:
-        return "plunge";
-    }
-}
-
-/* map a core init error's param onto the request */
-static json_t *init_fail(struct api_call *c, enum mech_status st, struct mech_error *e, int ae)
-{
-    char ptr[128];
-    if (!strcmp(e->param, "r0"))
-        snprintf(ptr, sizeof ptr, "/r0");
-    else if (ae && (!strcmp(e->param, "periapsis") || !strcmp(e->param, "apoapsis")))
-        snprintf(ptr, sizeof ptr, "/initial/semi_major_axis");
-    else
-        snprintf(ptr, sizeof ptr, "/initial/%s", e->param);
-    e->param[0] = 0;
-    return api_call_fail_core(c, st, e, ptr);
-}
-
 json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
 {
     struct mech_gr_units u;
@@ -411,102 +384,61 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         return NULL;
     }
 
-    struct mech_error e;
-    mech_error_clear(&e);
-    struct mech_geodesic_init in;
-    const double phi0 = api_number_of(body, "phi0");
-    /* A ray from far away (impact_parameter, no r0) starts at 100 b, at least 1000 GM/c^2:
-     * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
-     * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
-     * from 10 b to 1400 b). */
-    const double r0 = r0j              ? mech_gr_len_in(&u, json_number_value(r0j))
-                      : form_impact ? fmax(100.0 * mech_gr_len_in(&u, api_number(ini, "impact_parameter", 0)),
-                                           1000.0)
-                                    : NAN;
-    enum mech_status st;
+    /* the request, in its own units; the set-up is mech_geodesic_setup */
+    struct mech_geodesic_request q;
+    memset(&q, 0, sizeof q);
+    q.units = u;
+    q.kind = photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE;
+    q.form = form_energy   ? MECH_GEODESIC_FORM_ENERGY
+             : form_local  ? MECH_GEODESIC_FORM_LOCAL
+             : form_impact ? MECH_GEODESIC_FORM_IMPACT
+             : form_turn   ? MECH_GEODESIC_FORM_TURNING
+                           : MECH_GEODESIC_FORM_AXES;
+    q.has_r0 = r0j != NULL;
+    q.r0 = r0j ? json_number_value(r0j) : NAN;
+    q.phi0 = api_number_of(body, "phi0");
+    if (form_energy || form_impact)
+        q.outward = !strcmp(api_string_of(ini, "radial_direction"), "outward");
     if (form_energy) {
-        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
-        st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
-                                       mech_gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
-                                       &in, &e);
+        q.energy = api_number(ini, "energy", 1);
+        q.angular_momentum = api_number(ini, "angular_momentum", 0);
     } else if (form_local) {
         const json_t *lv = json_object_get(ini, "local_velocity");
-        st = mech_geodesic_init_local(photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE, r0,
-                                      phi0, mech_gr_speed_in(&u, api_number(lv, "radial", 0)),
-                                      mech_gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
+        q.v_radial = api_number(lv, "radial", 0);
+        q.v_tangential = api_number(lv, "tangential", 0);
     } else if (form_impact) {
-        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
-        st = mech_geodesic_init_impact(
-            r0, phi0, mech_gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
+        q.impact_parameter = api_number(ini, "impact_parameter", 0);
+    } else if (form_turn) {
+        q.periapsis = api_number(ini, "periapsis", 1);
+        q.apoapsis = api_number(ini, "apoapsis", 1);
     } else {
-        double rp, ra;
-        if (form_turn) {
-            rp = mech_gr_len_in(&u, api_number(ini, "periapsis", 1));
-            ra = mech_gr_len_in(&u, api_number(ini, "apoapsis", 1));
-        } else {
-            double a = mech_gr_len_in(&u, api_number(ini, "semi_major_axis", 1));
-            double ec = api_number(ini, "eccentricity", 0);
-            rp = a * (1.0 - ec);
-            ra = a * (1.0 + ec);
-        }
-        st = mech_geodesic_init_orbit(rp, ra, phi0, &in, &e);
+        q.semi_major_axis = api_number(ini, "semi_major_axis", 1);
+        q.eccentricity = api_number(ini, "eccentricity", 0);
     }
-    if (st != MECH_OK) return init_fail(c, st, &e, form_ae);
+    q.has_tau_end = tj != NULL;
+    q.tau_end = tj ? json_number_value(tj) : NAN;
+    q.has_orbits = oj != NULL;
+    q.orbits = oj ? json_number_value(oj) : NAN;
+    q.has_lambda_end = lj != NULL;
+    q.lambda_end = lj ? json_number_value(lj) : NAN;
+    q.has_r_escape = json_object_get(body, "r_escape") != NULL;
+    q.r_escape = q.has_r_escape ? api_number(body, "r_escape", 1) : NAN;
+    q.constraint_bound = api_number_of(body, "constraint_bound");
+    q.samples = (size_t)api_number_of(body, "samples");
 
-    /* classification and exact references */
-    enum mech_geodesic_class cls = MECH_GEODESIC_PLUNGE;
-    struct mech_geodesic_bound bd = {NAN, NAN, NAN};
-    int bound = 0;
-    double adv_exact = NAN, adv_quad = NAN, Ttau = NAN, Tt = NAN;
-    if (!photon) {
-        if ((st = mech_geodesic_classify(&in, &cls, &bd, &e)) != MECH_OK)
-            return api_call_fail_core(c, st, &e, "");
-        bound = cls == MECH_GEODESIC_BOUND;
-        if (bound) {
-            if ((st = mech_geodesic_precession_exact(&bd, &adv_exact, &e)) != MECH_OK ||
-                (st = mech_geodesic_precession_quadrature(&bd, in.E, in.L, &adv_quad, &Ttau, &Tt,
-                                                          &e)) != MECH_OK)
-                return api_call_fail_core(c, st, &e, "");
-        }
-    }
-    if (oj && !bound) {
-        api_call_invalid(c, "/orbits",
-                         "orbits counts radial periods of a bound orbit; this motion is %s: give "
-                         "tau_end",
-                         class_name(cls));
-        return NULL;
-    }
-
-    struct mech_geodesic_problem p;
-    memset(&p, 0, sizeof p);
-    p.init = in;
-    const double T = mech_geodesic_time_unit(&in);
-    const double rs_esc = json_object_get(body, "r_escape")
-                              ? mech_gr_len_in(&u, api_number(body, "r_escape", 1))
-                              : 2.0 * (bound ? 1.0 / bd.u1 : in.r0);
-    p.r_escape = rs_esc;
-    if (!(rs_esc > in.r0)) {
-        api_call_invalid(c, "/r_escape", "r_escape must be beyond the start radius %.17g",
-                         mech_gr_len_out(&u, in.r0));
-        return NULL;
-    }
-    if (photon) {
-        /* default: the straight-line path to r_escape, 2 % longer (the Shapiro delay is
-         * ~4GM/c^2 ln(r/b)), plus 100 loops of the photon sphere for near-critical light */
-        const double b = fabs(in.L), r02 = fmax(0.0, (in.r0 - b) * (in.r0 + b));
-        const double re2 = fmax(0.0, (rs_esc - b) * (rs_esc + b));
-        const double path = in.rdot0 <= 0 ? sqrt(r02) + sqrt(re2) : sqrt(re2) - sqrt(r02);
-        p.param_end = lj ? mech_gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
-    } else
-        p.param_end = tj ? mech_gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
-    p.constraint_bound = api_number_of(body, "constraint_bound");
-    if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
-    p.samples = (size_t)api_number_of(body, "samples");
-    if (!isfinite(p.param_end) || !(p.param_end / T > 0)) {
-        api_call_invalid(c, photon ? "/lambda_end" : "/tau_end",
-                         "the run's length is not representable");
-        return NULL;
-    }
+    struct mech_error e;
+    mech_error_clear(&e);
+    struct mech_geodesic_setup su;
+    enum mech_status st = mech_geodesic_setup(&q, &su, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    struct mech_geodesic_problem p = su.problem;
+    const struct mech_geodesic_init in = p.init;
+    const enum mech_geodesic_class cls = su.cls;
+    const struct mech_geodesic_bound bd = su.bd;
+    const int bound = su.bound;
+    const double adv_exact = su.adv_exact, adv_quad = su.adv_quad;
+    const double Ttau = su.period_tau, Tt = su.period_t, T = su.time_unit;
+    const double rs_esc = p.r_escape;
 
     /* integrator: the shared block; second-order methods do not apply */
     const json_t *ib = json_object_get(body, "integrator");
@@ -604,7 +536,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (photon)
         json_object_set_new_nocheck(out, "motion", json_string(light));
     else
-        json_object_set_new_nocheck(out, "motion", json_string(class_name(cls)));
+        json_object_set_new_nocheck(out, "motion", json_string(mech_geodesic_class_name(cls)));
     if (bound) {
         const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
         json_t *o = json_object();
