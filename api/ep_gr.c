@@ -4,8 +4,10 @@
  *     the GPS-style clock comparison, the effective potentials;
  *   POST /v1/gr/geodesic — equatorial timelike and null geodesics with the
  *     periapsis advance and the light deflection beside their exact values.
- * The physics is core/schwarzschild.c and core/geodesic.c, in geometric units
- * (M = 1); this file converts SI through GM/c^2 and GM/c^3. */
+ * The physics is core/gr/ in geometric units (M = 1): schwarzschild.c,
+ * radial_infall.c, the units (gr_units.c: GM/c^2, GM/c^3), and for the geodesic
+ * the set-up (geodesic_setup.c) and the run (geodesic_run.c over geodesic.c);
+ * this file parses, calls them and encodes the answer in the request's units. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +16,7 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/geodesic.h"
+#include "mech/geodesic_run.h"
 #include "mech/geodesic_setup.h"
 #include "mech/gr_units.h"
 #include "mech/radial_infall.h"
@@ -433,7 +436,6 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     struct mech_geodesic_problem p = su.problem;
     const struct mech_geodesic_init in = p.init;
-    const enum mech_geodesic_class cls = su.cls;
     const struct mech_geodesic_bound bd = su.bd;
     const int bound = su.bound;
     const double adv_exact = su.adv_exact, adv_quad = su.adv_quad;
@@ -467,22 +469,14 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     p.opt = ch.opt;
     if (ch.opt.dt > 0) p.opt.dt = mech_gr_time_in(&u, ch.opt.dt) / T;
 
-    const size_t n = p.samples;
-    double *sp = malloc(n * sizeof *sp), *st_ = malloc(n * sizeof *st_),
-           *sr = malloc(n * sizeof *sr), *sf = malloc(n * sizeof *sf);
+    struct mech_geodesic_answer ans;
+    st = mech_geodesic_run(&su, &p, &c->budget, &ans, &e);
+    const struct mech_geodesic_result r = ans.result;
     json_t *out = NULL;
-    if (!sp || !st_ || !sr || !sf) {
-        mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for %zu samples", n);
-        api_call_fail_core(c, MECH_ENOMEM, &e, "");
+    if (st != MECH_OK && ans.integrated) {
+        api_call_fail_core(c, st, &e, ""); /* a reference of the deflection failed */
         goto done;
     }
-    struct mech_geodesic_result r;
-    memset(&r, 0, sizeof r);
-    r.param = sp;
-    r.t = st_;
-    r.r = sr;
-    r.phi = sf;
-    st = mech_geodesic_integrate(&p, &c->budget, &r, &e);
     if (st != MECH_OK) {
         if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
             e.progress.t_reached = mech_gr_time_out(&u, e.progress.t_reached);
@@ -525,18 +519,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     }
     json_object_set_new_nocheck(out, "conserved", cons);
     json_object_set_new_nocheck(out, "r0", api_real(c, mech_gr_len_out(&u, in.r0)));
-    /* light: b > 3 sqrt 3 outside the photon sphere turns (scatter, or escapes if it
-     * starts outward); inside it, it turns back into the hole; b < 3 sqrt 3 falls in
-     * unless it starts outward */
-    const int wide = fabs(in.L) > MECH_SCHW_CRITICAL_IMPACT;
-    const int scatter = photon && wide && in.r0 > 3.0;
-    const char *light = scatter                   ? (in.rdot0 <= 0 ? "scatter" : "escape")
-                        : (wide || in.rdot0 <= 0) ? "capture"
-                                                  : "escape";
-    if (photon)
-        json_object_set_new_nocheck(out, "motion", json_string(light));
-    else
-        json_object_set_new_nocheck(out, "motion", json_string(mech_geodesic_class_name(cls)));
+    json_object_set_new_nocheck(out, "motion", json_string(ans.motion));
     if (bound) {
         const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
         json_t *o = json_object();
@@ -551,6 +534,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(out, "orbit", o);
     }
     const size_t ns = r.n_samples;
+    double *sp = r.param, *st_ = r.t, *sr = r.r, *sf = r.phi; /* converted in place */
     for (size_t i = 0; i < ns; i++) {
         sp[i] = mech_gr_time_out(&u, sp[i]);
         st_[i] = mech_gr_time_out(&u, st_[i]);
@@ -583,7 +567,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
 
     if (bound) {
         const double a = 0.5 * (1.0 / bd.u1 + 1.0 / bd.u2);
-        const double first = 3.0 * M_PI * (bd.u1 + bd.u2); /* 6 pi M/(a(1-e^2)) */
+        const double first = ans.advance_first_order; /* 6 pi M/(a(1-e^2)) */
         json_t *pj = json_object();
         json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
         json_object_set_new_nocheck(pj, "orbits_measured",
@@ -617,16 +601,8 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         }
         json_object_set_new_nocheck(out, "precession", pj);
     }
-    if (scatter) {
-        const double b = fabs(in.L);
-        double dx, dq, rmin;
-        if ((st = mech_geodesic_deflection_exact(b, &dx, &rmin, &e)) != MECH_OK ||
-            (st = mech_geodesic_deflection_quadrature(b, &dq, &e)) != MECH_OK) {
-            json_decref(out);
-            out = NULL;
-            api_call_fail_core(c, st, &e, "");
-            goto done;
-        }
+    if (ans.scatter) {
+        const double dx = ans.deflection_elliptic, dq = ans.deflection_exact;
         const int has = isfinite(r.measured_deflection);
         json_t *dj = json_object();
         json_object_set_new_nocheck(dj, "measured",
@@ -639,8 +615,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         /* the quadrature keeps full relative precision for tiny deflections; the
          * elliptic form loses ~eps pi / delta to the final "- pi" */
         json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
-        /* the elliptic form ends in "- pi": ~4e-16 pi / delta relative */
-        const double ell_prec = 4e-16 * M_PI / dq;
+        const double ell_prec = ans.elliptic_precision;
         json_object_set_new_nocheck(dj, "exact_elliptic",
                                     ell_prec < 1e-3 ? api_real(c, dx) : json_null());
         json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
@@ -651,17 +626,16 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                         "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
                         "(relative precision ~4e-16 pi / delta; null beyond "
                         "1e-3)"));
-        json_object_set_new_nocheck(dj, "first_order", api_real(c, 4.0 / b));
-        json_object_set_new_nocheck(dj, "second_order",
-                                    api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
+        json_object_set_new_nocheck(dj, "first_order", api_real(c, ans.deflection_first_order));
+        json_object_set_new_nocheck(dj, "second_order", api_real(c, ans.deflection_second_order));
         json_object_set_new_nocheck(dj, "measured_minus_exact",
                                     has ? api_real(c, r.measured_deflection - dq) : json_null());
-        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, rmin)));
+        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, ans.closest_approach)));
         json_t *as = json_object();
         json_object_set_new_nocheck(
             as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
         json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
-        json_object_set_new_nocheck(as, "first_order", api_real(c, 4.0 / b * GR_ARCSEC));
+        json_object_set_new_nocheck(as, "first_order", api_real(c, ans.deflection_first_order * GR_ARCSEC));
         json_object_set_new_nocheck(dj, "arcsec", as);
         json_object_set_new_nocheck(out, "deflection", dj);
     }
@@ -686,10 +660,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
 done:
-    free(sp);
-    free(st_);
-    free(sr);
-    free(sf);
+    mech_geodesic_answer_free(&ans);
     return out;
 }
 
