@@ -336,11 +336,23 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 /* ===================================================================================== */
 /* POST /v1/gr/geodesic                                                                   */
 
-json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
-{
+/* One geodesic request on its way through: parsed, set up, run. */
+struct geo_call {
     struct mech_gr_units u;
-    if (!gr_units_read(c, body, &u)) return NULL;
-    const int photon = !strcmp(api_string(body, "kind", "timelike"), "null");
+    int photon;
+    struct mech_geodesic_request q;
+    struct mech_geodesic_setup su;
+    struct mech_geodesic_problem p; /* su.problem with the integrator chosen */
+    struct api_integrator_choice ch;
+    struct mech_geodesic_answer ans;
+};
+
+/* The request's shape (a form that fits the kind, one run length) and its
+ * numbers, in the request's units. Returns 0 after recording an error. */
+static int geo_request_read(struct api_call *c, const json_t *body, struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon = !strcmp(api_string(body, "kind", "timelike"), "null");
     const json_t *ini = json_object_get(body, "initial");
     const json_t *r0j = json_object_get(body, "r0");
     const int form_energy = json_object_get(ini, "energy") != NULL;
@@ -352,39 +364,39 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (photon && (form_energy || orbit_form)) {
         api_call_invalid(c, form_energy ? "/initial/energy" : "/initial",
                          "light (kind null) is given by impact_parameter or local_velocity");
-        return NULL;
+        return 0;
     }
     if (!photon && form_impact) {
         api_call_invalid(c, "/initial/impact_parameter",
                          "impact_parameter is for light (kind null); a massive particle takes "
                          "energy and angular_momentum, local_velocity or an orbit");
-        return NULL;
+        return 0;
     }
     if (orbit_form && r0j) {
         api_call_invalid(c, "/r0",
                          "an orbit given by its turning points starts at periapsis: "
                          "omit r0");
-        return NULL;
+        return 0;
     }
     if (!orbit_form && !r0j && !form_impact) {
         api_call_invalid(c, "/r0", "r0 (the start radius) is required (it has a default only "
                                    "for light given by impact_parameter, a ray from far away)");
-        return NULL;
+        return 0;
     }
     const json_t *tj = json_object_get(body, "tau_end"), *oj = json_object_get(body, "orbits"),
                  *lj = json_object_get(body, "lambda_end");
     if (photon && (tj || oj)) {
         api_call_invalid(c, tj ? "/tau_end" : "/orbits",
                          "light has no proper time: give lambda_end (or nothing)");
-        return NULL;
+        return 0;
     }
     if (!photon && lj) {
         api_call_invalid(c, "/lambda_end", "a massive particle runs in proper time: tau_end");
-        return NULL;
+        return 0;
     }
     if (!photon && !!tj == !!oj) {
         api_call_invalid(c, "/tau_end", "give exactly one of tau_end and orbits");
-        return NULL;
+        return 0;
     }
 
     /* the request, in its own units; the set-up is mech_geodesic_setup */
@@ -429,21 +441,14 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     q.constraint_bound = api_number_of(body, "constraint_bound");
     q.samples = (size_t)api_number_of(body, "samples");
 
-    struct mech_error e;
-    mech_error_clear(&e);
-    struct mech_geodesic_setup su;
-    enum mech_status st = mech_geodesic_setup(&q, &su, &e);
-    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
-    struct mech_geodesic_problem p = su.problem;
-    const struct mech_geodesic_init in = p.init;
-    const struct mech_geodesic_bound bd = su.bd;
-    const int bound = su.bound;
-    const double adv_exact = su.adv_exact, adv_quad = su.adv_quad;
-    const double Ttau = su.period_tau, Tt = su.period_t, T = su.time_unit;
-    const double rs_esc = p.r_escape;
+    g->q = q;
+    return 1;
+}
 
-    /* integrator: the shared block; second-order methods do not apply */
-    const json_t *ib = json_object_get(body, "integrator");
+/* Second-order methods need q'' = a(t, q): refused by name. Returns 0 after
+ * recording an error. */
+static int geo_method_check(struct api_call *c, const json_t *ib)
+{
     const char *mname = ib ? api_string(ib, "method", NULL) : NULL;
     if (mname) {
         const struct mech_integrator *mm = mech_ode_method_find(mname);
@@ -455,56 +460,55 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                 "msbdf (rtol/atol), or rk4, gauss4, gauss6 (symplectic) or euler (dt), "
                 "or an accuracy preset",
                 mname);
-            return NULL;
+            return 0;
         }
     }
-    struct api_integrator_choice ch;
-    static const struct api_integrator_system geodesic_eqs = {
-        "the geodesic equations with r, dr/dtau, phi and t carried together",
-        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
-    if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &geodesic_eqs, &ch))
-        return NULL;
-    if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
-    p.method = ch.method;
-    p.opt = ch.opt;
-    if (ch.opt.dt > 0) p.opt.dt = mech_gr_time_in(&u, ch.opt.dt) / T;
+    return 1;
+}
 
-    struct mech_geodesic_answer ans;
-    st = mech_geodesic_run(&su, &p, &c->budget, &ans, &e);
-    const struct mech_geodesic_result r = ans.result;
-    json_t *out = NULL;
-    if (st != MECH_OK && ans.integrated) {
-        api_call_fail_core(c, st, &e, ""); /* a reference of the deflection failed */
-        goto done;
+/* A failed integration: progress in the request's time unit, the constraint's
+ * progress, the core's parameter as a pointer into the request. */
+static void geo_run_fail(struct api_call *c, const struct geo_call *g, enum mech_status st,
+                         struct mech_error *e0)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    struct mech_error e = *e0;
+    if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
+        e.progress.t_reached = mech_gr_time_out(&u, e.progress.t_reached);
+        e.progress.t_target = mech_gr_time_out(&u, e.progress.t_target);
     }
-    if (st != MECH_OK) {
-        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
-            e.progress.t_reached = mech_gr_time_out(&u, e.progress.t_reached);
-            e.progress.t_target = mech_gr_time_out(&u, e.progress.t_target);
-        }
-        if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
-            api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
-            if (!c->extra) c->extra = json_object();
-            json_t *pr = json_object();
-            json_object_set_new_nocheck(pr, "samples_written",
-                                        json_integer((json_int_t)r.n_samples));
-            json_object_set_new_nocheck(pr, "steps", json_integer(r.stats.steps));
-            json_object_set_new_nocheck(c->extra, "progress", pr);
+    if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
+        api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
+        if (!c->extra) c->extra = json_object();
+        json_t *pr = json_object();
+        json_object_set_new_nocheck(pr, "samples_written",
+                                    json_integer((json_int_t)r.n_samples));
+        json_object_set_new_nocheck(pr, "steps", json_integer(r.stats.steps));
+        json_object_set_new_nocheck(c->extra, "progress", pr);
+    } else {
+        if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
+            char ptr[128];
+            snprintf(ptr, sizeof ptr, "/%s", e.param);
+            e.param[0] = 0;
+            api_call_fail_core(c, st, &e, ptr);
         } else {
-            if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
-                char ptr[128];
-                snprintf(ptr, sizeof ptr, "/%s", e.param);
-                e.param[0] = 0;
-                api_call_fail_core(c, st, &e, ptr);
-            } else {
-                api_call_fail_core(c, st, &e, "");
-            }
+            api_call_fail_core(c, st, &e, "");
         }
-        goto done;
     }
+}
 
-    /* ---- the answer ---- */
-    out = json_object();
+/* units, kind, conserved quantities, r0, motion, the orbit's shape and periods */
+static void geo_encode_start(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_answer ans = g->ans;
+    const struct mech_geodesic_init in = g->su.problem.init;
+    const struct mech_geodesic_bound bd = g->su.bd;
+    const int bound = g->su.bound;
+    const double Ttau = g->su.period_tau;
+    const double Tt = g->su.period_t;
     json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
     json_object_set_new_nocheck(out, "kind", json_string(photon ? "null" : "timelike"));
     json_t *cons = json_object();
@@ -533,6 +537,15 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                     api_real(c, mech_gr_time_out(&u, Tt)));
         json_object_set_new_nocheck(out, "orbit", o);
     }
+}
+
+/* the samples (converted in place) and where the run ended */
+static void geo_encode_samples(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_result r = g->ans.result;
+    const double rs_esc = g->su.problem.r_escape;
     const size_t ns = r.n_samples;
     double *sp = r.param, *st_ = r.t, *sr = r.r, *sf = r.phi; /* converted in place */
     for (size_t i = 0; i < ns; i++) {
@@ -565,81 +578,104 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, mech_gr_len_out(&u, rs_esc)));
     json_object_set_new_nocheck(out, "end", en);
 
-    if (bound) {
-        const double a = 0.5 * (1.0 / bd.u1 + 1.0 / bd.u2);
-        const double first = ans.advance_first_order; /* 6 pi M/(a(1-e^2)) */
-        json_t *pj = json_object();
-        json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
-        json_object_set_new_nocheck(pj, "orbits_measured",
-                                    json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
-        int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
-        json_object_set_new_nocheck(pj, "measured_per_orbit",
-                                    has ? api_real(c, r.measured_advance) : json_null());
-        json_object_set_new_nocheck(pj, "exact_per_orbit", api_real(c, adv_exact));
-        json_object_set_new_nocheck(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
-        json_object_set_new_nocheck(pj, "first_order_per_orbit", api_real(c, first));
-        json_object_set_new_nocheck(pj, "measured_minus_exact",
-                                    has ? api_real(c, r.measured_advance - adv_exact)
-                                        : json_null());
-        json_object_set_new_nocheck(
-            pj, "relative_error",
-            has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact) : json_null());
-        json_object_set_new(
-            pj, "first_order_formula",
-            json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
-        (void)a;
-        if (!u.geometric) {
-            const double per_century = GR_CENTURY_S / mech_gr_time_out(&u, Tt) * GR_ARCSEC;
-            json_t *ac = json_object();
-            json_object_set_new_nocheck(
-                ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
-            json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
-            json_object_set_new_nocheck(ac, "first_order", api_real(c, first * per_century));
-            json_object_set_new_nocheck(ac, "orbits_per_century",
-                                        api_real(c, per_century / GR_ARCSEC));
-            json_object_set_new_nocheck(pj, "arcsec_per_century", ac);
-        }
-        json_object_set_new_nocheck(out, "precession", pj);
-    }
-    if (ans.scatter) {
-        const double dx = ans.deflection_elliptic, dq = ans.deflection_exact;
-        const int has = isfinite(r.measured_deflection);
-        json_t *dj = json_object();
-        json_object_set_new_nocheck(dj, "measured",
-                                    has ? api_real(c, r.measured_deflection) : json_null());
-        if (!has)
-            json_object_set_new_nocheck(
-                dj, "why_not_measured",
-                json_string("measured only for light that starts inward and "
-                            "escapes within the run"));
-        /* the quadrature keeps full relative precision for tiny deflections; the
-         * elliptic form loses ~eps pi / delta to the final "- pi" */
-        json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
-        const double ell_prec = ans.elliptic_precision;
-        json_object_set_new_nocheck(dj, "exact_elliptic",
-                                    ell_prec < 1e-3 ? api_real(c, dx) : json_null());
-        json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
-        json_object_set_new_nocheck(
-            dj, "exact_method",
-            json_string("exact: quadrature of the deflection integral in a form "
-                        "without cancellation; exact_elliptic: Byrd & Friedman "
-                        "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
-                        "(relative precision ~4e-16 pi / delta; null beyond "
-                        "1e-3)"));
-        json_object_set_new_nocheck(dj, "first_order", api_real(c, ans.deflection_first_order));
-        json_object_set_new_nocheck(dj, "second_order", api_real(c, ans.deflection_second_order));
-        json_object_set_new_nocheck(dj, "measured_minus_exact",
-                                    has ? api_real(c, r.measured_deflection - dq) : json_null());
-        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, ans.closest_approach)));
-        json_t *as = json_object();
-        json_object_set_new_nocheck(
-            as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
-        json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
-        json_object_set_new_nocheck(as, "first_order", api_real(c, ans.deflection_first_order * GR_ARCSEC));
-        json_object_set_new_nocheck(dj, "arcsec", as);
-        json_object_set_new_nocheck(out, "deflection", dj);
-    }
+}
 
+/* bound orbits: the periapsis advance beside its exact and first-order values */
+static void geo_encode_precession(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    const struct mech_geodesic_answer ans = g->ans;
+    const double adv_exact = g->su.adv_exact;
+    const double adv_quad = g->su.adv_quad;
+    const double Tt = g->su.period_t;
+    const double first = ans.advance_first_order; /* 6 pi M/(a(1-e^2)) */
+    json_t *pj = json_object();
+    json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
+    json_object_set_new_nocheck(pj, "orbits_measured",
+                                json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
+    int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
+    json_object_set_new_nocheck(pj, "measured_per_orbit",
+                                has ? api_real(c, r.measured_advance) : json_null());
+    json_object_set_new_nocheck(pj, "exact_per_orbit", api_real(c, adv_exact));
+    json_object_set_new_nocheck(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
+    json_object_set_new_nocheck(pj, "first_order_per_orbit", api_real(c, first));
+    json_object_set_new_nocheck(pj, "measured_minus_exact",
+                                has ? api_real(c, r.measured_advance - adv_exact)
+                                    : json_null());
+    json_object_set_new_nocheck(
+        pj, "relative_error",
+        has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact) : json_null());
+    json_object_set_new(
+        pj, "first_order_formula",
+        json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
+    if (!u.geometric) {
+        const double per_century = GR_CENTURY_S / mech_gr_time_out(&u, Tt) * GR_ARCSEC;
+        json_t *ac = json_object();
+        json_object_set_new_nocheck(
+            ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
+        json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
+        json_object_set_new_nocheck(ac, "first_order", api_real(c, first * per_century));
+        json_object_set_new_nocheck(ac, "orbits_per_century",
+                                    api_real(c, per_century / GR_ARCSEC));
+        json_object_set_new_nocheck(pj, "arcsec_per_century", ac);
+    }
+    json_object_set_new_nocheck(out, "precession", pj);
+}
+
+/* scattered light: the deflection beside its exact and weak-field values */
+static void geo_encode_deflection(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    const struct mech_geodesic_answer ans = g->ans;
+    const double dx = ans.deflection_elliptic, dq = ans.deflection_exact;
+    const int has = isfinite(r.measured_deflection);
+    json_t *dj = json_object();
+    json_object_set_new_nocheck(dj, "measured",
+                                has ? api_real(c, r.measured_deflection) : json_null());
+    if (!has)
+        json_object_set_new_nocheck(
+            dj, "why_not_measured",
+            json_string("measured only for light that starts inward and "
+                        "escapes within the run"));
+    /* the quadrature keeps full relative precision for tiny deflections; the
+     * elliptic form loses ~eps pi / delta to the final "- pi" */
+    json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
+    const double ell_prec = ans.elliptic_precision;
+    json_object_set_new_nocheck(dj, "exact_elliptic",
+                                ell_prec < 1e-3 ? api_real(c, dx) : json_null());
+    json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
+    json_object_set_new_nocheck(
+        dj, "exact_method",
+        json_string("exact: quadrature of the deflection integral in a form "
+                    "without cancellation; exact_elliptic: Byrd & Friedman "
+                    "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
+                    "(relative precision ~4e-16 pi / delta; null beyond "
+                    "1e-3)"));
+    json_object_set_new_nocheck(dj, "first_order", api_real(c, ans.deflection_first_order));
+    json_object_set_new_nocheck(dj, "second_order", api_real(c, ans.deflection_second_order));
+    json_object_set_new_nocheck(dj, "measured_minus_exact",
+                                has ? api_real(c, r.measured_deflection - dq) : json_null());
+    json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, ans.closest_approach)));
+    json_t *as = json_object();
+    json_object_set_new_nocheck(
+        as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
+    json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
+    json_object_set_new_nocheck(as, "first_order", api_real(c, ans.deflection_first_order * GR_ARCSEC));
+    json_object_set_new_nocheck(dj, "arcsec", as);
+    json_object_set_new_nocheck(out, "deflection", dj);
+}
+
+/* the integrator's statistics, the constraint's drift, the selection */
+static void geo_encode_diagnostics(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_result r = g->ans.result;
+    const double T = g->su.time_unit;
+    const struct mech_geodesic_problem p = g->p;
+    const struct api_integrator_choice ch = g->ch;
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &ch, &r.stats);
     json_t *cj = json_object();
@@ -659,8 +695,50 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
-done:
-    mech_geodesic_answer_free(&ans);
-    return out;
 }
 
+json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
+{
+    struct geo_call g;
+    memset(&g, 0, sizeof g);
+    if (!gr_units_read(c, body, &g.u)) return NULL;
+    if (!geo_request_read(c, body, &g)) return NULL;
+
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_geodesic_setup(&g.q, &g.su, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    g.p = g.su.problem;
+    const double T = g.su.time_unit;
+
+    /* integrator: the shared block; second-order methods do not apply */
+    const json_t *ib = json_object_get(body, "integrator");
+    if (!geo_method_check(c, ib)) return NULL;
+    static const struct api_integrator_system geodesic_eqs = {
+        "the geodesic equations with r, dr/dtau, phi and t carried together",
+        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
+    if (!api_integrator_block_parse(c, ib, "/integrator", g.p.param_end / T, &geodesic_eqs, &g.ch))
+        return NULL;
+    if (api_dry_run_requested(body))
+        return api_dry_run_answer(c, api_integrator_block_selection(c, &g.ch));
+    g.p.method = g.ch.method;
+    g.p.opt = g.ch.opt;
+    if (g.ch.opt.dt > 0) g.p.opt.dt = mech_gr_time_in(&g.u, g.ch.opt.dt) / T;
+
+    st = mech_geodesic_run(&g.su, &g.p, &c->budget, &g.ans, &e);
+    json_t *out = NULL;
+    if (st != MECH_OK && g.ans.integrated) {
+        api_call_fail_core(c, st, &e, ""); /* a reference of the deflection failed */
+    } else if (st != MECH_OK) {
+        geo_run_fail(c, &g, st, &e);
+    } else {
+        out = json_object();
+        geo_encode_start(c, out, &g);
+        geo_encode_samples(c, out, &g);
+        if (g.su.bound) geo_encode_precession(c, out, &g);
+        if (g.ans.scatter) geo_encode_deflection(c, out, &g);
+        geo_encode_diagnostics(c, out, &g);
+    }
+    mech_geodesic_answer_free(&g.ans);
+    return out;
+}
