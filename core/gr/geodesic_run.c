@@ -2,6 +2,7 @@
  * advance and light deflection beside their references
  * (mech/geodesic_run.h). */
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -47,6 +48,8 @@ enum mech_status mech_geodesic_run(const struct mech_geodesic_setup *s,
         out->motion = mech_geodesic_class_name(s->cls);
 
     const size_t n = p->samples;
+    if (n > SIZE_MAX / sizeof(double))
+        return mech_error_set(err, MECH_EINVAL, "samples", "%zu samples cannot be stored", n);
     struct mech_geodesic_result *r = &out->result;
     r->param = malloc(n * sizeof *r->param);
     r->t = malloc(n * sizeof *r->t);

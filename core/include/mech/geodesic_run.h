@@ -33,7 +33,9 @@ struct mech_geodesic_answer {
 
 /* Run `p` (a mech_geodesic_setup's problem with method and opt set by the
  * caller) and measure it against the references of `s`. budget is mandatory.
- * Statuses: those of mech_geodesic_integrate (EINVAL, EBUDGET, EDEADLINE,
+ * Statuses: EINVAL "samples" (more than SIZE_MAX / sizeof(double): the
+ * arrays' size would overflow; fewer than 2 is mech_geodesic_integrate's);
+ * those of mech_geodesic_integrate (EINVAL, EBUDGET, EDEADLINE,
  * ECANCELLED, ENUMERIC "constraint_bound" with result.n_samples and
  * result.stats kept, ENOMEM), with integrated = 0; after a successful
  * integration, those of mech_geodesic_deflection_exact / _quadrature

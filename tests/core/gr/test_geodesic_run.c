@@ -11,6 +11,7 @@
  *  - light with b < 3 sqrt 3 is captured; errors leave the answer freeable. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "mech/constants.h"
@@ -114,6 +115,18 @@ static void test_advance(void)
     struct mech_budget small = mech_budget_make(10, 600);
     CHECK_EQ_INT(mech_geodesic_run(&s, &p, &small, &a, &e), MECH_EBUDGET);
     CHECK_EQ_INT(a.integrated, 0);
+    mech_geodesic_answer_free(&a);
+
+    /* absurd sample counts: refused or out of memory, never an overflowed array */
+    p.samples = SIZE_MAX;
+    mech_error_clear(&e);
+    CHECK_EQ_INT(mech_geodesic_run(&s, &p, &B, &a, &e), MECH_EINVAL);
+    CHECK(!strcmp(e.param, "samples"));
+    mech_geodesic_answer_free(&a);
+    p.samples = 1;
+    mech_error_clear(&e);
+    CHECK_EQ_INT(mech_geodesic_run(&s, &p, &B, &a, &e), MECH_EINVAL);
+    CHECK(!strcmp(e.param, "samples"));
     mech_geodesic_answer_free(&a);
 }
 
