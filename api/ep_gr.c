@@ -4,8 +4,10 @@
  *     the GPS-style clock comparison, the effective potentials;
  *   POST /v1/gr/geodesic — equatorial timelike and null geodesics with the
  *     periapsis advance and the light deflection beside their exact values.
- * The physics is core/schwarzschild.c and core/geodesic.c, in geometric units
- * (M = 1); this file converts SI through GM/c^2 and GM/c^3. */
+ * The physics is core/gr/ in geometric units (M = 1): schwarzschild.c,
+ * radial_infall.c, the units (gr_units.c: GM/c^2, GM/c^3), and for the geodesic
+ * the set-up (geodesic_setup.c) and the run (geodesic_run.c over geodesic.c);
+ * this file parses, calls them and encodes the answer in the request's units. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,6 +16,9 @@
 #include "endpoint.h"
 #include "integrator_block.h"
 #include "mech/geodesic.h"
+#include "mech/geodesic_run.h"
+#include "mech/geodesic_setup.h"
+#include "mech/gr_units.h"
 #include "mech/radial_infall.h"
 #include "mech/schwarzschild.h"
 #include "trajectory_request.h"
@@ -22,87 +27,39 @@
 #define M_PI 3.14159265358979323846
 #endif
 
-/* Constants (documented in the routes' descriptions). */
-#define GR_C 299792458.0           /* m/s, exact (SI definition) */
-#define GR_G 6.67430e-11           /* m^3 kg^-1 s^-2, CODATA 2018 */
-#define GR_GM_SUN 1.32712440041279419e20 /* m^3/s^2, JPL DE440 (Park et al. 2021); = MECH_SUN_GM */
-#define GR_GM_EARTH 3.986004418e14 /* m^3/s^2, WGS 84 / IERS */
+/* Constants (documented in the routes' descriptions); c, G and the GM values
+ * are mech/constants.h's, used through mech/gr_units.h. */
 #define GR_ARCSEC (180.0 * 3600.0 / M_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
 
 /* ---- units ------------------------------------------------------------------------ */
 
-struct gr_units {
-    int geometric;
-    int has_mass; /* GM known */
-    double GM;    /* m^3/s^2 (NaN when unknown) */
-    double len;   /* one length unit of the request in GM/c^2: m -> 1/(GM/c^2); geometric 1 */
-    double m;     /* GM/c^2 in m (NaN when unknown) */
-    double s;     /* GM/c^3 in s */
-};
-
-/* Parse M and units. Returns 0 after recording an error. */
-static int gr_units_read(struct api_call *c, const json_t *body, struct gr_units *u)
+/* Parse M and units; the set-up and its checks are mech_gr_units_init.
+ * Returns 0 after recording an error. */
+static int gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_units *u)
 {
-    memset(u, 0, sizeof *u);
-    u->geometric = !strcmp(api_string_of(body, "units"), "geometric");
+    const int geometric = !strcmp(api_string_of(body, "units"), "geometric");
     const json_t *M = json_object_get(body, "M");
-    u->GM = u->m = u->s = NAN;
-    if (M) {
-        if (json_is_string(M))
-            u->GM = !strcmp(json_string_value(M), "sun") ? GR_GM_SUN : GR_GM_EARTH;
-        else if (json_is_object(M))
-            u->GM = api_number(M, "gm", 0);
-        else
-            u->GM = GR_G * json_number_value(M);
-        u->has_mass = 1;
-        u->m = u->GM / (GR_C * GR_C);
-        u->s = u->m / GR_C;
-        if (!(u->m > 0) || !isfinite(u->m)) {
-            api_call_domain(c, "/M", "GM/c^2 = %.6g m is not a usable length", u->m);
-            return 0;
-        }
-    } else if (!u->geometric) {
-        api_call_invalid(c, "/M",
-                         "M is required with units SI (a mass in kg, \"sun\" or \"earth\")");
-        return 0;
+    enum mech_gr_mass kind = MECH_GR_MASS_NONE;
+    double value = NAN;
+    if (json_is_string(M)) {
+        kind = !strcmp(json_string_value(M), "sun") ? MECH_GR_MASS_SUN : MECH_GR_MASS_EARTH;
+    } else if (json_is_object(M)) {
+        kind = MECH_GR_MASS_GM;
+        value = api_number(M, "gm", 0);
+    } else if (M) {
+        kind = MECH_GR_MASS_KG;
+        value = json_number_value(M);
     }
-    return 1;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_gr_units_init(geometric, kind, value, u, &e);
+    if (st == MECH_EDOMAIN) api_call_domain(c, "/M", "%s", e.text);
+    if (st != MECH_OK && st != MECH_EDOMAIN) api_call_invalid(c, "/M", "%s", e.text);
+    return st == MECH_OK;
 }
 
-/* request length (m or GM/c^2) -> GM/c^2 */
-static double gr_len_in(const struct gr_units *u, double x)
-{
-    return u->geometric ? x : x / u->m;
-}
-/* GM/c^2 -> answer length */
-static double gr_len_out(const struct gr_units *u, double r)
-{
-    return u->geometric ? r : r * u->m;
-}
-static double gr_time_in(const struct gr_units *u, double x)
-{
-    return u->geometric ? x : x / u->s;
-}
-static double gr_time_out(const struct gr_units *u, double t)
-{
-    return u->geometric ? t : t * u->s;
-}
-/* specific angular momentum: GM/c -> m^2/s is x GM/c = m c */
-static double gr_ang_in(const struct gr_units *u, double L)
-{
-    return u->geometric ? L : L / (u->m * GR_C);
-}
-static double gr_ang_out(const struct gr_units *u, double L)
-{
-    return u->geometric ? L : L * u->m * GR_C;
-}
-static double gr_speed_in(const struct gr_units *u, double v)
-{
-    return u->geometric ? v : v / GR_C;
-}
-
-static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
+static json_t *gr_units_json(struct api_call *c, const struct mech_gr_units *u)
 {
     json_t *j = json_object();
     json_object_set_new_nocheck(j, "system", json_string(u->geometric ? "geometric" : "SI"));
@@ -113,12 +70,12 @@ static json_t *gr_units_json(struct api_call *c, const struct gr_units *u)
     json_object_set_new_nocheck(j, "speed", json_string(u->geometric ? "c" : "m/s"));
     json_object_set_new_nocheck(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
     json_object_set_new_nocheck(j, "angle", json_string("rad"));
-    json_object_set_new_nocheck(j, "c", api_real(c, GR_C));
+    json_object_set_new_nocheck(j, "c", api_real(c, MECH_C));
     if (u->has_mass) {
         json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
         json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
         json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
-        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / GR_G)); /* M = GM/G */
+        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
     }
     return j;
 }
@@ -142,19 +99,19 @@ static const char *stability_name(enum mech_schw_stability s)
 
 json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 {
-    struct gr_units u;
+    struct mech_gr_units u;
     if (!gr_units_read(c, body, &u)) return NULL;
     struct mech_error e;
     mech_error_clear(&e);
     json_t *out = json_object();
     json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
     json_object_set_new_nocheck(out, "schwarzschild_radius",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_HORIZON)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_HORIZON)));
     json_object_set_new_nocheck(out, "photon_sphere",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
-    json_object_set_new_nocheck(out, "isco", api_real(c, gr_len_out(&u, MECH_SCHW_ISCO)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
+    json_object_set_new_nocheck(out, "isco", api_real(c, mech_gr_len_out(&u, MECH_SCHW_ISCO)));
     json_object_set_new_nocheck(out, "critical_impact_parameter",
-                                api_real(c, gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
+                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
     json_object_set_new_nocheck(out, "isco_binding_efficiency",
                                 api_real(c, MECH_SCHW_ISCO_BINDING_EFFICIENCY));
 
@@ -165,7 +122,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         return NULL;
     }
     if (rj) {
-        const double r = gr_len_in(&u, json_number_value(rj));
+        const double r = mech_gr_len_in(&u, json_number_value(rj));
         struct mech_schw_static s;
         struct mech_schw_circular co;
         if (mech_schw_static_clock(r, &s, &e) != MECH_OK ||
@@ -173,7 +130,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             api_call_domain(c, "/r",
                             "r = %.17g is not outside the horizon r_s = %.17g: no static clock or "
                             "orbit there",
-                            json_number_value(rj), gr_len_out(&u, 2.0));
+                            json_number_value(rj), mech_gr_len_out(&u, 2.0));
             json_decref(out);
             return NULL;
         }
@@ -198,14 +155,14 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             json_object_set_new_nocheck(cj, "binding_efficiency",
                                         api_real(c, co.binding_efficiency));
             json_object_set_new_nocheck(cj, "angular_momentum",
-                                        api_real(c, gr_ang_out(&u, co.angular_momentum)));
+                                        api_real(c, mech_gr_ang_out(&u, co.angular_momentum)));
             json_object_set_new_nocheck(cj, "local_speed_over_c", api_real(c, co.local_speed));
             json_object_set_new_nocheck(cj, "angular_velocity",
-                                        api_real(c, co.omega / gr_time_out(&u, 1.0)));
+                                        api_real(c, co.omega / mech_gr_time_out(&u, 1.0)));
             json_object_set_new_nocheck(cj, "period_coordinate",
-                                        api_real(c, gr_time_out(&u, co.period_t)));
+                                        api_real(c, mech_gr_time_out(&u, co.period_t)));
             json_object_set_new_nocheck(cj, "period_proper",
-                                        api_real(c, gr_time_out(&u, co.period_tau)));
+                                        api_real(c, mech_gr_time_out(&u, co.period_tau)));
         } else {
             json_object_set_new_nocheck(cj, "why",
                                         json_string("no circular geodesic at or inside the photon "
@@ -217,7 +174,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
             struct mech_schw_clock_compare cc;
             enum mech_status st2 = mech_schw_clock_compare(
-                json_number_value(refj), json_number_value(rj), gr_len_out(&u, 1.0), &cc, &e);
+                json_number_value(refj), json_number_value(rj), mech_gr_len_out(&u, 1.0), &cc, &e);
             if (st2 != MECH_OK) {
                 api_call_fail_core(c, st2, &e, "");
                 json_decref(out);
@@ -270,7 +227,7 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
     if (ij) {
         struct mech_radial_infall f;
         enum mech_status sti =
-            mech_radial_infall_from_rest(gr_len_in(&u, json_number_value(ij)), &f, &e);
+            mech_radial_infall_from_rest(mech_gr_len_in(&u, json_number_value(ij)), &f, &e);
         if (sti != MECH_OK) {
             api_call_fail_core(c, sti, &e, "");
             json_decref(out);
@@ -279,11 +236,11 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         json_t *ri = json_object();
         json_object_set_new_nocheck(ri, "from", api_real(c, json_number_value(ij)));
         json_object_set_new_nocheck(ri, "proper_time_to_horizon",
-                                    api_real(c, gr_time_out(&u, f.to_horizon)));
+                                    api_real(c, mech_gr_time_out(&u, f.to_horizon)));
         json_object_set_new_nocheck(ri, "proper_time_to_singularity",
-                                    api_real(c, gr_time_out(&u, f.to_singularity)));
+                                    api_real(c, mech_gr_time_out(&u, f.to_singularity)));
         json_object_set_new_nocheck(ri, "proper_time_horizon_to_singularity",
-                                    api_real(c, gr_time_out(&u, f.horizon_to_singularity)));
+                                    api_real(c, mech_gr_time_out(&u, f.horizon_to_singularity)));
         json_object_set_new_nocheck(ri, "coordinate_time_to_horizon", json_null());
         json_object_set_new_nocheck(
             ri, "note",
@@ -295,17 +252,17 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 
     const json_t *ej = json_object_get(body, "effective_potential");
     if (ej) {
-        const double L = gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
+        const double L = mech_gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
         double ru, rs;
         int ne = mech_schw_veff_extrema(L, &ru, &rs);
         const json_t *a = json_object_get(ej, "r_min"), *b = json_object_get(ej, "r_max");
         /* sampled evenly in the request's length unit, so given ends are echoed exactly */
-        double rmin = a ? json_number_value(a) : gr_len_out(&u, 2.0);
-        double rmax = b ? json_number_value(b) : gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
-        if (!(gr_len_in(&u, rmin) >= 2.0)) {
+        double rmin = a ? json_number_value(a) : mech_gr_len_out(&u, 2.0);
+        double rmax = b ? json_number_value(b) : mech_gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
+        if (!(mech_gr_len_in(&u, rmin) >= 2.0)) {
             api_call_domain(c, "/effective_potential/r_min",
                             "r_min must be at least r_s = %.17g (outside the horizon)",
-                            gr_len_out(&u, 2.0));
+                            mech_gr_len_out(&u, 2.0));
             json_decref(out);
             return NULL;
         }
@@ -328,16 +285,16 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
             json_decref(out);
             return NULL;
         }
-        const double inv_len2 = 1.0 / (gr_len_out(&u, 1.0) * gr_len_out(&u, 1.0));
+        const double inv_len2 = 1.0 / (mech_gr_len_out(&u, 1.0) * mech_gr_len_out(&u, 1.0));
         for (size_t i = 0; i < n; i++) {
             rr[i] = i + 1 == n ? rmax : rmin + (rmax - rmin) * (double)i / (double)(n - 1);
-            const double r = gr_len_in(&u, rr[i]), Lr = L / r;
+            const double r = mech_gr_len_in(&u, rr[i]), Lr = L / r;
             vm[i] = mech_schw_veff_massive(r, L);
             v1[i] = -2.0 / r + Lr * Lr - 2.0 * Lr * Lr / r; /* V - 1 without cancellation */
             vp[i] = mech_schw_veff_photon(r) * inv_len2;
         }
         json_t *v = json_object();
-        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, gr_ang_out(&u, L)));
+        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, mech_gr_ang_out(&u, L)));
         json_object_set_new_nocheck(
             v, "massive_normalisation",
             json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
@@ -355,16 +312,16 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
         json_t *x = json_object();
         json_object_set_new_nocheck(x, "count", json_integer(ne));
         json_object_set_new_nocheck(x, "unstable_r",
-                                    ne ? api_real(c, gr_len_out(&u, ru)) : json_null());
+                                    ne ? api_real(c, mech_gr_len_out(&u, ru)) : json_null());
         json_object_set_new_nocheck(x, "unstable_V",
                                     ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
         json_object_set_new_nocheck(x, "stable_r",
-                                    ne ? api_real(c, gr_len_out(&u, rs)) : json_null());
+                                    ne ? api_real(c, mech_gr_len_out(&u, rs)) : json_null());
         json_object_set_new_nocheck(x, "stable_V",
                                     ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
         json_object_set_new_nocheck(v, "massive_extrema", x);
         json_t *pm = json_object();
-        json_object_set_new_nocheck(pm, "r", api_real(c, gr_len_out(&u, 3.0)));
+        json_object_set_new_nocheck(pm, "r", api_real(c, mech_gr_len_out(&u, 3.0)));
         json_object_set_new_nocheck(pm, "W", api_real(c, inv_len2 / 27.0));
         json_object_set_new_nocheck(v, "photon_maximum", pm);
         json_object_set_new_nocheck(out, "effective_potential", v);
@@ -379,39 +336,23 @@ json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
 /* ===================================================================================== */
 /* POST /v1/gr/geodesic                                                                   */
 
-static const char *class_name(enum mech_geodesic_class k)
-{
-    switch (k) {
-    case MECH_GEODESIC_BOUND:
-        return "bound";
-    case MECH_GEODESIC_UNBOUND:
-        return "unbound";
-    case MECH_GEODESIC_CIRCULAR:
-        return "circular";
-    default:
-        return "plunge";
-    }
-}
+/* One geodesic request on its way through: parsed, set up, run. */
+struct geo_call {
+    struct mech_gr_units u;
+    int photon;
+    struct mech_geodesic_request q;
+    struct mech_geodesic_setup su;
+    struct mech_geodesic_problem p; /* su.problem with the integrator chosen */
+    struct api_integrator_choice ch;
+    struct mech_geodesic_answer ans;
+};
 
-/* map a core init error's param onto the request */
-static json_t *init_fail(struct api_call *c, enum mech_status st, struct mech_error *e, int ae)
+/* The request's shape (a form that fits the kind, one run length) and its
+ * numbers, in the request's units. Returns 0 after recording an error. */
+static int geo_request_read(struct api_call *c, const json_t *body, struct geo_call *g)
 {
-    char ptr[128];
-    if (!strcmp(e->param, "r0"))
-        snprintf(ptr, sizeof ptr, "/r0");
-    else if (ae && (!strcmp(e->param, "periapsis") || !strcmp(e->param, "apoapsis")))
-        snprintf(ptr, sizeof ptr, "/initial/semi_major_axis");
-    else
-        snprintf(ptr, sizeof ptr, "/initial/%s", e->param);
-    e->param[0] = 0;
-    return api_call_fail_core(c, st, e, ptr);
-}
-
-json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
-{
-    struct gr_units u;
-    if (!gr_units_read(c, body, &u)) return NULL;
-    const int photon = !strcmp(api_string(body, "kind", "timelike"), "null");
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon = !strcmp(api_string(body, "kind", "timelike"), "null");
     const json_t *ini = json_object_get(body, "initial");
     const json_t *r0j = json_object_get(body, "r0");
     const int form_energy = json_object_get(ini, "energy") != NULL;
@@ -423,140 +364,91 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     if (photon && (form_energy || orbit_form)) {
         api_call_invalid(c, form_energy ? "/initial/energy" : "/initial",
                          "light (kind null) is given by impact_parameter or local_velocity");
-        return NULL;
+        return 0;
     }
     if (!photon && form_impact) {
         api_call_invalid(c, "/initial/impact_parameter",
                          "impact_parameter is for light (kind null); a massive particle takes "
                          "energy and angular_momentum, local_velocity or an orbit");
-        return NULL;
+        return 0;
     }
     if (orbit_form && r0j) {
         api_call_invalid(c, "/r0",
                          "an orbit given by its turning points starts at periapsis: "
                          "omit r0");
-        return NULL;
+        return 0;
     }
     if (!orbit_form && !r0j && !form_impact) {
         api_call_invalid(c, "/r0", "r0 (the start radius) is required (it has a default only "
                                    "for light given by impact_parameter, a ray from far away)");
-        return NULL;
+        return 0;
     }
     const json_t *tj = json_object_get(body, "tau_end"), *oj = json_object_get(body, "orbits"),
                  *lj = json_object_get(body, "lambda_end");
     if (photon && (tj || oj)) {
         api_call_invalid(c, tj ? "/tau_end" : "/orbits",
                          "light has no proper time: give lambda_end (or nothing)");
-        return NULL;
+        return 0;
     }
     if (!photon && lj) {
         api_call_invalid(c, "/lambda_end", "a massive particle runs in proper time: tau_end");
-        return NULL;
+        return 0;
     }
     if (!photon && !!tj == !!oj) {
         api_call_invalid(c, "/tau_end", "give exactly one of tau_end and orbits");
-        return NULL;
+        return 0;
     }
 
-    struct mech_error e;
-    mech_error_clear(&e);
-    struct mech_geodesic_init in;
-    const double phi0 = api_number_of(body, "phi0");
-    /* A ray from far away (impact_parameter, no r0) starts at 100 b, at least 1000 GM/c^2:
-     * the deflection's tail beyond r0 is added by quadrature, so the start only moves the
-     * measured value by the integration error (1.7e-14 to 2.9e-14 rad for the Sun's limb
-     * from 10 b to 1400 b). */
-    const double r0 = r0j              ? gr_len_in(&u, json_number_value(r0j))
-                      : form_impact ? fmax(100.0 * gr_len_in(&u, api_number(ini, "impact_parameter", 0)),
-                                           1000.0)
-                                    : NAN;
-    enum mech_status st;
+    /* the request, in its own units; the set-up is mech_geodesic_setup */
+    struct mech_geodesic_request q;
+    memset(&q, 0, sizeof q);
+    q.units = u;
+    q.kind = photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE;
+    q.form = form_energy   ? MECH_GEODESIC_FORM_ENERGY
+             : form_local  ? MECH_GEODESIC_FORM_LOCAL
+             : form_impact ? MECH_GEODESIC_FORM_IMPACT
+             : form_turn   ? MECH_GEODESIC_FORM_TURNING
+                           : MECH_GEODESIC_FORM_AXES;
+    q.has_r0 = r0j != NULL;
+    q.r0 = r0j ? json_number_value(r0j) : NAN;
+    q.phi0 = api_number_of(body, "phi0");
+    if (form_energy || form_impact)
+        q.outward = !strcmp(api_string_of(ini, "radial_direction"), "outward");
     if (form_energy) {
-        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
-        st = mech_geodesic_init_energy(r0, phi0, api_number(ini, "energy", 1),
-                                       gr_ang_in(&u, api_number(ini, "angular_momentum", 0)), dir,
-                                       &in, &e);
+        q.energy = api_number(ini, "energy", 1);
+        q.angular_momentum = api_number(ini, "angular_momentum", 0);
     } else if (form_local) {
         const json_t *lv = json_object_get(ini, "local_velocity");
-        st = mech_geodesic_init_local(photon ? MECH_GEODESIC_NULL : MECH_GEODESIC_TIMELIKE, r0,
-                                      phi0, gr_speed_in(&u, api_number(lv, "radial", 0)),
-                                      gr_speed_in(&u, api_number(lv, "tangential", 0)), &in, &e);
+        q.v_radial = api_number(lv, "radial", 0);
+        q.v_tangential = api_number(lv, "tangential", 0);
     } else if (form_impact) {
-        int dir = !strcmp(api_string_of(ini, "radial_direction"), "outward") ? 1 : -1;
-        st = mech_geodesic_init_impact(
-            r0, phi0, gr_len_in(&u, api_number(ini, "impact_parameter", 0)), dir, &in, &e);
+        q.impact_parameter = api_number(ini, "impact_parameter", 0);
+    } else if (form_turn) {
+        q.periapsis = api_number(ini, "periapsis", 1);
+        q.apoapsis = api_number(ini, "apoapsis", 1);
     } else {
-        double rp, ra;
-        if (form_turn) {
-            rp = gr_len_in(&u, api_number(ini, "periapsis", 1));
-            ra = gr_len_in(&u, api_number(ini, "apoapsis", 1));
-        } else {
-            double a = gr_len_in(&u, api_number(ini, "semi_major_axis", 1));
-            double ec = api_number(ini, "eccentricity", 0);
-            rp = a * (1.0 - ec);
-            ra = a * (1.0 + ec);
-        }
-        st = mech_geodesic_init_orbit(rp, ra, phi0, &in, &e);
+        q.semi_major_axis = api_number(ini, "semi_major_axis", 1);
+        q.eccentricity = api_number(ini, "eccentricity", 0);
     }
-    if (st != MECH_OK) return init_fail(c, st, &e, form_ae);
+    q.has_tau_end = tj != NULL;
+    q.tau_end = tj ? json_number_value(tj) : NAN;
+    q.has_orbits = oj != NULL;
+    q.orbits = oj ? json_number_value(oj) : NAN;
+    q.has_lambda_end = lj != NULL;
+    q.lambda_end = lj ? json_number_value(lj) : NAN;
+    q.has_r_escape = json_object_get(body, "r_escape") != NULL;
+    q.r_escape = q.has_r_escape ? api_number(body, "r_escape", 1) : NAN;
+    q.constraint_bound = api_number_of(body, "constraint_bound");
+    q.samples = (size_t)api_number_of(body, "samples");
 
-    /* classification and exact references */
-    enum mech_geodesic_class cls = MECH_GEODESIC_PLUNGE;
-    struct mech_geodesic_bound bd = {NAN, NAN, NAN};
-    int bound = 0;
-    double adv_exact = NAN, adv_quad = NAN, Ttau = NAN, Tt = NAN;
-    if (!photon) {
-        if ((st = mech_geodesic_classify(&in, &cls, &bd, &e)) != MECH_OK)
-            return api_call_fail_core(c, st, &e, "");
-        bound = cls == MECH_GEODESIC_BOUND;
-        if (bound) {
-            if ((st = mech_geodesic_precession_exact(&bd, &adv_exact, &e)) != MECH_OK ||
-                (st = mech_geodesic_precession_quadrature(&bd, in.E, in.L, &adv_quad, &Ttau, &Tt,
-                                                          &e)) != MECH_OK)
-                return api_call_fail_core(c, st, &e, "");
-        }
-    }
-    if (oj && !bound) {
-        api_call_invalid(c, "/orbits",
-                         "orbits counts radial periods of a bound orbit; this motion is %s: give "
-                         "tau_end",
-                         class_name(cls));
-        return NULL;
-    }
+    g->q = q;
+    return 1;
+}
 
-    struct mech_geodesic_problem p;
-    memset(&p, 0, sizeof p);
-    p.init = in;
-    const double T = mech_geodesic_time_unit(&in);
-    const double rs_esc = json_object_get(body, "r_escape")
-                              ? gr_len_in(&u, api_number(body, "r_escape", 1))
-                              : 2.0 * (bound ? 1.0 / bd.u1 : in.r0);
-    p.r_escape = rs_esc;
-    if (!(rs_esc > in.r0)) {
-        api_call_invalid(c, "/r_escape", "r_escape must be beyond the start radius %.17g",
-                         gr_len_out(&u, in.r0));
-        return NULL;
-    }
-    if (photon) {
-        /* default: the straight-line path to r_escape, 2 % longer (the Shapiro delay is
-         * ~4GM/c^2 ln(r/b)), plus 100 loops of the photon sphere for near-critical light */
-        const double b = fabs(in.L), r02 = fmax(0.0, (in.r0 - b) * (in.r0 + b));
-        const double re2 = fmax(0.0, (rs_esc - b) * (rs_esc + b));
-        const double path = in.rdot0 <= 0 ? sqrt(r02) + sqrt(re2) : sqrt(re2) - sqrt(r02);
-        p.param_end = lj ? gr_time_in(&u, json_number_value(lj)) : 1.02 * path + 600.0 * M_PI;
-    } else
-        p.param_end = tj ? gr_time_in(&u, json_number_value(tj)) : json_number_value(oj) * Ttau;
-    p.constraint_bound = api_number_of(body, "constraint_bound");
-    if (oj) p.periapsis_lookahead = 0.25 * Ttau; /* whole periods end on a periapsis */
-    p.samples = (size_t)api_number_of(body, "samples");
-    if (!isfinite(p.param_end) || !(p.param_end / T > 0)) {
-        api_call_invalid(c, photon ? "/lambda_end" : "/tau_end",
-                         "the run's length is not representable");
-        return NULL;
-    }
-
-    /* integrator: the shared block; second-order methods do not apply */
-    const json_t *ib = json_object_get(body, "integrator");
+/* Second-order methods need q'' = a(t, q): refused by name. Returns 0 after
+ * recording an error. */
+static int geo_method_check(struct api_call *c, const json_t *ib)
+{
     const char *mname = ib ? api_string(ib, "method", NULL) : NULL;
     if (mname) {
         const struct mech_integrator *mm = mech_ode_method_find(mname);
@@ -568,108 +460,98 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                 "msbdf (rtol/atol), or rk4, gauss4, gauss6 (symplectic) or euler (dt), "
                 "or an accuracy preset",
                 mname);
-            return NULL;
+            return 0;
         }
     }
-    struct api_integrator_choice ch;
-    static const struct api_integrator_system geodesic_eqs = {
-        "the geodesic equations with r, dr/dtau, phi and t carried together",
-        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
-    if (!api_integrator_block_parse(c, ib, "/integrator", p.param_end / T, &geodesic_eqs, &ch))
-        return NULL;
-    if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
-    p.method = ch.method;
-    p.opt = ch.opt;
-    if (ch.opt.dt > 0) p.opt.dt = gr_time_in(&u, ch.opt.dt) / T;
+    return 1;
+}
 
-    const size_t n = p.samples;
-    double *sp = malloc(n * sizeof *sp), *st_ = malloc(n * sizeof *st_),
-           *sr = malloc(n * sizeof *sr), *sf = malloc(n * sizeof *sf);
-    json_t *out = NULL;
-    if (!sp || !st_ || !sr || !sf) {
-        mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for %zu samples", n);
-        api_call_fail_core(c, MECH_ENOMEM, &e, "");
-        goto done;
+/* A failed integration: progress in the request's time unit, the constraint's
+ * progress, the core's parameter as a pointer into the request. */
+static void geo_run_fail(struct api_call *c, const struct geo_call *g, enum mech_status st,
+                         struct mech_error *e0)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    struct mech_error e = *e0;
+    if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
+        e.progress.t_reached = mech_gr_time_out(&u, e.progress.t_reached);
+        e.progress.t_target = mech_gr_time_out(&u, e.progress.t_target);
     }
-    struct mech_geodesic_result r;
-    memset(&r, 0, sizeof r);
-    r.param = sp;
-    r.t = st_;
-    r.r = sr;
-    r.phi = sf;
-    st = mech_geodesic_integrate(&p, &c->budget, &r, &e);
-    if (st != MECH_OK) {
-        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
-            e.progress.t_reached = gr_time_out(&u, e.progress.t_reached);
-            e.progress.t_target = gr_time_out(&u, e.progress.t_target);
-        }
-        if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
-            api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
-            if (!c->extra) c->extra = json_object();
-            json_t *pr = json_object();
-            json_object_set_new_nocheck(pr, "samples_written",
-                                        json_integer((json_int_t)r.n_samples));
-            json_object_set_new_nocheck(pr, "steps", json_integer(r.stats.steps));
-            json_object_set_new_nocheck(c->extra, "progress", pr);
+    if (st == MECH_ENUMERIC && !strcmp(e.param, "constraint_bound")) {
+        api_call_fail_core(c, st, &e, ""); /* errors[] at /constraint_bound */
+        if (!c->extra) c->extra = json_object();
+        json_t *pr = json_object();
+        json_object_set_new_nocheck(pr, "samples_written",
+                                    json_integer((json_int_t)r.n_samples));
+        json_object_set_new_nocheck(pr, "steps", json_integer(r.stats.steps));
+        json_object_set_new_nocheck(c->extra, "progress", pr);
+    } else {
+        if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
+            char ptr[128];
+            snprintf(ptr, sizeof ptr, "/%s", e.param);
+            e.param[0] = 0;
+            api_call_fail_core(c, st, &e, ptr);
         } else {
-            if (e.param[0] && strcmp(e.param, "samples") && strncmp(e.param, "integrator", 10)) {
-                char ptr[128];
-                snprintf(ptr, sizeof ptr, "/%s", e.param);
-                e.param[0] = 0;
-                api_call_fail_core(c, st, &e, ptr);
-            } else {
-                api_call_fail_core(c, st, &e, "");
-            }
+            api_call_fail_core(c, st, &e, "");
         }
-        goto done;
     }
+}
 
-    /* ---- the answer ---- */
-    out = json_object();
+/* units, kind, conserved quantities, r0, motion, the orbit's shape and periods */
+static void geo_encode_start(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_answer ans = g->ans;
+    const struct mech_geodesic_init in = g->su.problem.init;
+    const struct mech_geodesic_bound bd = g->su.bd;
+    const int bound = g->su.bound;
+    const double Ttau = g->su.period_tau;
+    const double Tt = g->su.period_t;
     json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
     json_object_set_new_nocheck(out, "kind", json_string(photon ? "null" : "timelike"));
     json_t *cons = json_object();
     if (photon) {
-        json_object_set_new_nocheck(cons, "impact_parameter", api_real(c, gr_len_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "impact_parameter", api_real(c, mech_gr_len_out(&u, in.L)));
         json_object_set_new_nocheck(cons, "normalisation",
                                     json_string("E = 1: dt/dlambda = 1/(1 - r_s/r)"));
     } else {
         json_object_set_new_nocheck(cons, "energy", api_real(c, in.E));
         json_object_set_new_nocheck(cons, "energy_minus_one", api_real(c, in.E2m1 / (1.0 + in.E)));
-        json_object_set_new_nocheck(cons, "angular_momentum", api_real(c, gr_ang_out(&u, in.L)));
+        json_object_set_new_nocheck(cons, "angular_momentum", api_real(c, mech_gr_ang_out(&u, in.L)));
     }
     json_object_set_new_nocheck(out, "conserved", cons);
-    json_object_set_new_nocheck(out, "r0", api_real(c, gr_len_out(&u, in.r0)));
-    /* light: b > 3 sqrt 3 outside the photon sphere turns (scatter, or escapes if it
-     * starts outward); inside it, it turns back into the hole; b < 3 sqrt 3 falls in
-     * unless it starts outward */
-    const int wide = fabs(in.L) > MECH_SCHW_CRITICAL_IMPACT;
-    const int scatter = photon && wide && in.r0 > 3.0;
-    const char *light = scatter                   ? (in.rdot0 <= 0 ? "scatter" : "escape")
-                        : (wide || in.rdot0 <= 0) ? "capture"
-                                                  : "escape";
-    if (photon)
-        json_object_set_new_nocheck(out, "motion", json_string(light));
-    else
-        json_object_set_new_nocheck(out, "motion", json_string(class_name(cls)));
+    json_object_set_new_nocheck(out, "r0", api_real(c, mech_gr_len_out(&u, in.r0)));
+    json_object_set_new_nocheck(out, "motion", json_string(ans.motion));
     if (bound) {
         const double rp = 1.0 / bd.u2, ra = 1.0 / bd.u1;
         json_t *o = json_object();
-        json_object_set_new_nocheck(o, "periapsis", api_real(c, gr_len_out(&u, rp)));
-        json_object_set_new_nocheck(o, "apoapsis", api_real(c, gr_len_out(&u, ra)));
+        json_object_set_new_nocheck(o, "periapsis", api_real(c, mech_gr_len_out(&u, rp)));
+        json_object_set_new_nocheck(o, "apoapsis", api_real(c, mech_gr_len_out(&u, ra)));
         json_object_set_new_nocheck(o, "semi_major_axis",
-                                    api_real(c, gr_len_out(&u, 0.5 * (rp + ra))));
+                                    api_real(c, mech_gr_len_out(&u, 0.5 * (rp + ra))));
         json_object_set_new_nocheck(o, "eccentricity", api_real(c, (ra - rp) / (ra + rp)));
-        json_object_set_new_nocheck(o, "radial_period_proper", api_real(c, gr_time_out(&u, Ttau)));
+        json_object_set_new_nocheck(o, "radial_period_proper", api_real(c, mech_gr_time_out(&u, Ttau)));
         json_object_set_new_nocheck(o, "radial_period_coordinate",
-                                    api_real(c, gr_time_out(&u, Tt)));
+                                    api_real(c, mech_gr_time_out(&u, Tt)));
         json_object_set_new_nocheck(out, "orbit", o);
     }
+}
+
+/* the samples (converted in place) and where the run ended */
+static void geo_encode_samples(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_result r = g->ans.result;
+    const double rs_esc = g->su.problem.r_escape;
     const size_t ns = r.n_samples;
+    double *sp = r.param, *st_ = r.t, *sr = r.r, *sf = r.phi; /* converted in place */
     for (size_t i = 0; i < ns; i++) {
-        sp[i] = gr_time_out(&u, sp[i]);
-        st_[i] = gr_time_out(&u, st_[i]);
-        sr[i] = gr_len_out(&u, sr[i]);
+        sp[i] = mech_gr_time_out(&u, sp[i]);
+        st_[i] = mech_gr_time_out(&u, st_[i]);
+        sr[i] = mech_gr_len_out(&u, sr[i]);
     }
     json_t *sj = json_object();
     json_object_set_new(sj, photon ? "lambda" : "tau", api_reals(c, sp, ns));
@@ -685,102 +567,115 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                                                         : "tau_end"));
     json_object_set_new_nocheck(en, "captured", json_boolean(r.captured));
     json_object_set_new_nocheck(en, "escaped", json_boolean(r.escaped));
-    json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, gr_time_out(&u, r.end_param)));
-    json_object_set_new_nocheck(en, "t", api_real(c, gr_time_out(&u, r.end_t)));
-    json_object_set_new_nocheck(en, "r", api_real(c, gr_len_out(&u, r.end_r)));
+    json_object_set_new(en, photon ? "lambda" : "tau", api_real(c, mech_gr_time_out(&u, r.end_param)));
+    json_object_set_new_nocheck(en, "t", api_real(c, mech_gr_time_out(&u, r.end_t)));
+    json_object_set_new_nocheck(en, "r", api_real(c, mech_gr_len_out(&u, r.end_r)));
     json_object_set_new_nocheck(en, "phi", api_real(c, r.end_phi));
     if (r.captured)
         json_object_set_new(
             en, "capture_radius",
-            api_real(c, gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
-    if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, gr_len_out(&u, rs_esc)));
+            api_real(c, mech_gr_len_out(&u, 2.0 * (1.0 + MECH_GEODESIC_CAPTURE_MARGIN))));
+    if (r.escaped) json_object_set_new_nocheck(en, "r_escape", api_real(c, mech_gr_len_out(&u, rs_esc)));
     json_object_set_new_nocheck(out, "end", en);
 
-    if (bound) {
-        const double a = 0.5 * (1.0 / bd.u1 + 1.0 / bd.u2);
-        const double first = 3.0 * M_PI * (bd.u1 + bd.u2); /* 6 pi M/(a(1-e^2)) */
-        json_t *pj = json_object();
-        json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
-        json_object_set_new_nocheck(pj, "orbits_measured",
-                                    json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
-        int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
-        json_object_set_new_nocheck(pj, "measured_per_orbit",
-                                    has ? api_real(c, r.measured_advance) : json_null());
-        json_object_set_new_nocheck(pj, "exact_per_orbit", api_real(c, adv_exact));
-        json_object_set_new_nocheck(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
-        json_object_set_new_nocheck(pj, "first_order_per_orbit", api_real(c, first));
-        json_object_set_new_nocheck(pj, "measured_minus_exact",
-                                    has ? api_real(c, r.measured_advance - adv_exact)
-                                        : json_null());
-        json_object_set_new_nocheck(
-            pj, "relative_error",
-            has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact) : json_null());
-        json_object_set_new(
-            pj, "first_order_formula",
-            json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
-        (void)a;
-        if (!u.geometric) {
-            const double per_century = GR_CENTURY_S / gr_time_out(&u, Tt) * GR_ARCSEC;
-            json_t *ac = json_object();
-            json_object_set_new_nocheck(
-                ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
-            json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
-            json_object_set_new_nocheck(ac, "first_order", api_real(c, first * per_century));
-            json_object_set_new_nocheck(ac, "orbits_per_century",
-                                        api_real(c, per_century / GR_ARCSEC));
-            json_object_set_new_nocheck(pj, "arcsec_per_century", ac);
-        }
-        json_object_set_new_nocheck(out, "precession", pj);
-    }
-    if (scatter) {
-        const double b = fabs(in.L);
-        double dx, dq, rmin;
-        if ((st = mech_geodesic_deflection_exact(b, &dx, &rmin, &e)) != MECH_OK ||
-            (st = mech_geodesic_deflection_quadrature(b, &dq, &e)) != MECH_OK) {
-            json_decref(out);
-            out = NULL;
-            api_call_fail_core(c, st, &e, "");
-            goto done;
-        }
-        const int has = isfinite(r.measured_deflection);
-        json_t *dj = json_object();
-        json_object_set_new_nocheck(dj, "measured",
-                                    has ? api_real(c, r.measured_deflection) : json_null());
-        if (!has)
-            json_object_set_new_nocheck(
-                dj, "why_not_measured",
-                json_string("measured only for light that starts inward and "
-                            "escapes within the run"));
-        /* the quadrature keeps full relative precision for tiny deflections; the
-         * elliptic form loses ~eps pi / delta to the final "- pi" */
-        json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
-        /* the elliptic form ends in "- pi": ~4e-16 pi / delta relative */
-        const double ell_prec = 4e-16 * M_PI / dq;
-        json_object_set_new_nocheck(dj, "exact_elliptic",
-                                    ell_prec < 1e-3 ? api_real(c, dx) : json_null());
-        json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
-        json_object_set_new_nocheck(
-            dj, "exact_method",
-            json_string("exact: quadrature of the deflection integral in a form "
-                        "without cancellation; exact_elliptic: Byrd & Friedman "
-                        "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
-                        "(relative precision ~4e-16 pi / delta; null beyond "
-                        "1e-3)"));
-        json_object_set_new_nocheck(dj, "first_order", api_real(c, 4.0 / b));
-        json_object_set_new_nocheck(dj, "second_order",
-                                    api_real(c, 4.0 / b + 15.0 * M_PI / (4.0 * b * b)));
-        json_object_set_new_nocheck(dj, "measured_minus_exact",
-                                    has ? api_real(c, r.measured_deflection - dq) : json_null());
-        json_object_set_new_nocheck(dj, "closest_approach", api_real(c, gr_len_out(&u, rmin)));
-        json_t *as = json_object();
-        json_object_set_new_nocheck(
-            as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
-        json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
-        json_object_set_new_nocheck(as, "first_order", api_real(c, 4.0 / b * GR_ARCSEC));
-        json_object_set_new_nocheck(dj, "arcsec", as);
-        json_object_set_new_nocheck(out, "deflection", dj);
-    }
+}
 
+/* bound orbits: the periapsis advance beside its exact and first-order values */
+static void geo_encode_precession(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    const struct mech_geodesic_answer ans = g->ans;
+    const double adv_exact = g->su.adv_exact;
+    const double adv_quad = g->su.adv_quad;
+    const double Tt = g->su.period_t;
+    const double first = ans.advance_first_order; /* 6 pi M/(a(1-e^2)) */
+    json_t *pj = json_object();
+    json_object_set_new_nocheck(pj, "periapses_found", json_integer(r.n_periapses));
+    json_object_set_new_nocheck(pj, "orbits_measured",
+                                json_integer(r.n_periapses > 0 ? r.n_periapses - 1 : 0));
+    int has = r.n_periapses >= 2 && isfinite(r.measured_advance);
+    json_object_set_new_nocheck(pj, "measured_per_orbit",
+                                has ? api_real(c, r.measured_advance) : json_null());
+    json_object_set_new_nocheck(pj, "exact_per_orbit", api_real(c, adv_exact));
+    json_object_set_new_nocheck(pj, "exact_per_orbit_quadrature", api_real(c, adv_quad));
+    json_object_set_new_nocheck(pj, "first_order_per_orbit", api_real(c, first));
+    json_object_set_new_nocheck(pj, "measured_minus_exact",
+                                has ? api_real(c, r.measured_advance - adv_exact)
+                                    : json_null());
+    json_object_set_new_nocheck(
+        pj, "relative_error",
+        has ? api_real(c, fabs(r.measured_advance - adv_exact) / adv_exact) : json_null());
+    json_object_set_new(
+        pj, "first_order_formula",
+        json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
+    if (!u.geometric) {
+        const double per_century = GR_CENTURY_S / mech_gr_time_out(&u, Tt) * GR_ARCSEC;
+        json_t *ac = json_object();
+        json_object_set_new_nocheck(
+            ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
+        json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
+        json_object_set_new_nocheck(ac, "first_order", api_real(c, first * per_century));
+        json_object_set_new_nocheck(ac, "orbits_per_century",
+                                    api_real(c, per_century / GR_ARCSEC));
+        json_object_set_new_nocheck(pj, "arcsec_per_century", ac);
+    }
+    json_object_set_new_nocheck(out, "precession", pj);
+}
+
+/* scattered light: the deflection beside its exact and weak-field values */
+static void geo_encode_deflection(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const struct mech_geodesic_result r = g->ans.result;
+    const struct mech_geodesic_answer ans = g->ans;
+    const double dx = ans.deflection_elliptic, dq = ans.deflection_exact;
+    const int has = isfinite(r.measured_deflection);
+    json_t *dj = json_object();
+    json_object_set_new_nocheck(dj, "measured",
+                                has ? api_real(c, r.measured_deflection) : json_null());
+    if (!has)
+        json_object_set_new_nocheck(
+            dj, "why_not_measured",
+            json_string("measured only for light that starts inward and "
+                        "escapes within the run"));
+    /* the quadrature keeps full relative precision for tiny deflections; the
+     * elliptic form loses ~eps pi / delta to the final "- pi" */
+    json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
+    const double ell_prec = ans.elliptic_precision;
+    json_object_set_new_nocheck(dj, "exact_elliptic",
+                                ell_prec < 1e-3 ? api_real(c, dx) : json_null());
+    json_object_set_new_nocheck(dj, "exact_elliptic_relative_precision", api_real(c, ell_prec));
+    json_object_set_new_nocheck(
+        dj, "exact_method",
+        json_string("exact: quadrature of the deflection integral in a form "
+                    "without cancellation; exact_elliptic: Byrd & Friedman "
+                    "233.00 with gsl_sf_ellint_F, whose final - pi cancels "
+                    "(relative precision ~4e-16 pi / delta; null beyond "
+                    "1e-3)"));
+    json_object_set_new_nocheck(dj, "first_order", api_real(c, ans.deflection_first_order));
+    json_object_set_new_nocheck(dj, "second_order", api_real(c, ans.deflection_second_order));
+    json_object_set_new_nocheck(dj, "measured_minus_exact",
+                                has ? api_real(c, r.measured_deflection - dq) : json_null());
+    json_object_set_new_nocheck(dj, "closest_approach", api_real(c, mech_gr_len_out(&u, ans.closest_approach)));
+    json_t *as = json_object();
+    json_object_set_new_nocheck(
+        as, "measured", has ? api_real(c, r.measured_deflection * GR_ARCSEC) : json_null());
+    json_object_set_new_nocheck(as, "exact", api_real(c, dq * GR_ARCSEC));
+    json_object_set_new_nocheck(as, "first_order", api_real(c, ans.deflection_first_order * GR_ARCSEC));
+    json_object_set_new_nocheck(dj, "arcsec", as);
+    json_object_set_new_nocheck(out, "deflection", dj);
+}
+
+/* the integrator's statistics, the constraint's drift, the selection */
+static void geo_encode_diagnostics(struct api_call *c, json_t *out, const struct geo_call *g)
+{
+    const struct mech_gr_units u = g->u;
+    const int photon = g->photon;
+    const struct mech_geodesic_result r = g->ans.result;
+    const double T = g->su.time_unit;
+    const struct mech_geodesic_problem p = g->p;
+    const struct api_integrator_choice ch = g->ch;
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &ch, &r.stats);
     json_t *cj = json_object();
@@ -796,15 +691,54 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
                         api_real(c, r.constraint_max_abs));
     json_object_set_new_nocheck(d, "constraint", cj);
     json_object_set_new_nocheck(d, "time_unit_of_the_scaled_state",
-                                api_real(c, gr_time_out(&u, T)));
+                                api_real(c, mech_gr_time_out(&u, T)));
     json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
-done:
-    free(sp);
-    free(st_);
-    free(sr);
-    free(sf);
-    return out;
 }
 
+json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
+{
+    struct geo_call g;
+    memset(&g, 0, sizeof g);
+    if (!gr_units_read(c, body, &g.u)) return NULL;
+    if (!geo_request_read(c, body, &g)) return NULL;
+
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_geodesic_setup(&g.q, &g.su, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    g.p = g.su.problem;
+    const double T = g.su.time_unit;
+
+    /* integrator: the shared block; second-order methods do not apply */
+    const json_t *ib = json_object_get(body, "integrator");
+    if (!geo_method_check(c, ib)) return NULL;
+    static const struct api_integrator_system geodesic_eqs = {
+        "the geodesic equations with r, dr/dtau, phi and t carried together",
+        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
+    if (!api_integrator_block_parse(c, ib, "/integrator", g.p.param_end / T, &geodesic_eqs, &g.ch))
+        return NULL;
+    if (api_dry_run_requested(body))
+        return api_dry_run_answer(c, api_integrator_block_selection(c, &g.ch));
+    g.p.method = g.ch.method;
+    g.p.opt = g.ch.opt;
+    if (g.ch.opt.dt > 0) g.p.opt.dt = mech_gr_time_in(&g.u, g.ch.opt.dt) / T;
+
+    st = mech_geodesic_run(&g.su, &g.p, &c->budget, &g.ans, &e);
+    json_t *out = NULL;
+    if (st != MECH_OK && g.ans.integrated) {
+        api_call_fail_core(c, st, &e, ""); /* a reference of the deflection failed */
+    } else if (st != MECH_OK) {
+        geo_run_fail(c, &g, st, &e);
+    } else {
+        out = json_object();
+        geo_encode_start(c, out, &g);
+        geo_encode_samples(c, out, &g);
+        if (g.su.bound) geo_encode_precession(c, out, &g);
+        if (g.ans.scatter) geo_encode_deflection(c, out, &g);
+        geo_encode_diagnostics(c, out, &g);
+    }
+    mech_geodesic_answer_free(&g.ans);
+    return out;
+}

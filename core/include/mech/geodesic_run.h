@@ -1,0 +1,53 @@
+/* mech/geodesic_run.h — one POST /v1/gr/geodesic run after its set-up
+ * (mech/geodesic_setup.h): the integration (mech_geodesic_integrate) into
+ * sample arrays it allocates, the motion's name, and the references the
+ * measured periapsis advance and light deflection are shown beside: the
+ * weak-field advance 6 pi GM/(c^2 a (1 - e^2)), the deflection by quadrature
+ * and by Byrd & Friedman's elliptic form with its precision, 4GM/(c^2 b) and
+ * the second order 4/b + 15 pi/(4 b^2) (Hartle §9.3, §11.1; Carroll §5.6).
+ * Geometric units (M = 1) throughout; the caller converts. Thread-safe. */
+#ifndef MECH_GEODESIC_RUN_H
+#define MECH_GEODESIC_RUN_H
+
+#include "mech/budget.h"
+#include "mech/geodesic_setup.h"
+#include "mech/status.h"
+
+struct mech_geodesic_answer {
+    /* the run: result.param/t/r/phi are arrays of problem.samples doubles owned
+     * by the answer (free with mech_geodesic_answer_free), filled up to
+     * result.n_samples, geometric units */
+    struct mech_geodesic_result result;
+    int integrated;      /* 1 once the integration succeeded (a later failure is a reference's) */
+    const char *motion;  /* timelike: mech_geodesic_class_name; light: "scatter" (b > 3 sqrt 3,
+                            outside the photon sphere, inward), "escape" or "capture" */
+    int scatter;         /* light that turns outside the photon sphere: deflection computed */
+    double advance_first_order; /* bound: 6 pi/(a(1 - e^2)) = 3 pi (u1 + u2), rad (NaN) */
+    double deflection_exact;    /* scatter: quadrature without cancellation, rad (NaN) */
+    double deflection_elliptic; /* scatter: elliptic form, ends in "- pi" (NaN) */
+    double elliptic_precision;  /* scatter: its relative precision ~4e-16 pi / delta (NaN) */
+    double closest_approach;    /* scatter: r_min, GM/c^2 (NaN) */
+    double deflection_first_order;  /* scatter: 4/b (NaN) */
+    double deflection_second_order; /* scatter: 4/b + 15 pi/(4 b^2) (NaN) */
+};
+
+/* Run `p` (a mech_geodesic_setup's problem with method and opt set by the
+ * caller) and measure it against the references of `s`. budget is mandatory.
+ * Statuses: EINVAL "samples" (more than SIZE_MAX / sizeof(double): the
+ * arrays' size would overflow; fewer than 2 is mech_geodesic_integrate's);
+ * those of mech_geodesic_integrate (EINVAL, EBUDGET, EDEADLINE,
+ * ECANCELLED, ENUMERIC "constraint_bound" with result.n_samples and
+ * result.stats kept, ENOMEM), with integrated = 0; after a successful
+ * integration, those of mech_geodesic_deflection_exact / _quadrature
+ * (EDOMAIN/ENUMERIC "impact_parameter", ENUMERIC, ENOMEM) with integrated = 1.
+ * out is always initialised; the caller frees it with mech_geodesic_answer_free
+ * on every path. err may be NULL. */
+enum mech_status mech_geodesic_run(const struct mech_geodesic_setup *s,
+                                   const struct mech_geodesic_problem *p,
+                                   const struct mech_budget *budget,
+                                   struct mech_geodesic_answer *out, struct mech_error *err);
+
+/* Free the answer's arrays (NULL-safe, idempotent). */
+void mech_geodesic_answer_free(struct mech_geodesic_answer *a);
+
+#endif
