@@ -17,19 +17,16 @@
 #include "integrator_block.h"
 #include "mech/geodesic.h"
 #include "mech/geodesic_run.h"
+#include "mech/constants.h"
 #include "mech/geodesic_setup.h"
 #include "mech/gr_units.h"
 #include "mech/radial_infall.h"
 #include "mech/schwarzschild.h"
 #include "trajectory_request.h"
 
-#ifndef M_PI
-#define M_PI 3.14159265358979323846
-#endif
-
 /* Constants (documented in the routes' descriptions); c, G and the GM values
  * are mech/constants.h's, used through mech/gr_units.h. */
-#define GR_ARCSEC (180.0 * 3600.0 / M_PI)
+#define GR_ARCSEC (180.0 * 3600.0 / MECH_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
 
 /* ---- units ------------------------------------------------------------------------ */
