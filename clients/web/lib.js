@@ -743,9 +743,14 @@ export function costPreview(form, path, build, {id = 'cost' + (++uid), value = '
   sel.addEventListener('change', predict);
   form.addEventListener('input', (e) => { if (e.target !== sel) schedule(); });
   // after the run: what it cost beside what was predicted
+  // (the prediction is the run's own, from its diagnostics.selection, when the
+  // answer carries one: the dry run made for these inputs may have failed or
+  // may still be on its way)
   const after = (a) => {
     const cpu = a && a.cost && a.cost.cpu_seconds;
-    took = typeof cpu === 'number' ? [cpu, predicted] : null;
+    const own = a && a.diagnostics && a.diagnostics.selection && chosen(a.diagnostics.selection);
+    const p = own && typeof own.predicted_cpu_s === 'number' ? own.predicted_cpu_s : predicted;
+    took = typeof cpu === 'number' ? [cpu, p] : null;
     sayTook();
   };
   return {wrap, select: sel, out, withAccuracy, after, predict};
