@@ -2,10 +2,9 @@
  * relativistic elastic scattering off a target at rest at a given CM, lab or
  * recoil angle, answered in the lab and the CM frame (notes §3 kinematics,
  * problem 16; Compton is the massless-projectile case). JSON <-> core only;
- * the physics is core/elastic_scattering.c. The small request readers below
- * mirror the static ones of ep_relativity_kinematics.c (same schema words),
- * kept apart so each operation's file stands alone until issue 17's
- * generated handlers share them. */
+ * the physics is core/relativity/elastic_scattering.c; the unit, masses and
+ * the projectile's motion are read by kin_request.c, as the other kinematics
+ * operations read them. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -14,8 +13,7 @@
 #include "mech/constants.h"
 #include "mech/elastic_scattering.h"
 #include "mech/kinematics.h"
-#include "mech/particles.h"
-#include "velocity_request.h"
+#include "kin_request.h"
 
 
 static json_t *deg_of(struct api_call *c, double rad)
@@ -23,74 +21,23 @@ static json_t *deg_of(struct api_call *c, double rad)
     return api_real(c, rad * (180.0 / MECH_PI));
 }
 
-/* Mass of a particle field (name or number) in unit u; 0 after recording an error. */
-static int mass_of(struct api_call *c, const json_t *v, const char *ptr, enum mech_energy_unit u,
-                   double *m)
-{
-    if (json_is_string(v)) {
-        const struct mech_particle *p = mech_particle_find(json_string_value(v));
-        if (!p) {
-            api_call_invalid(c, ptr, "unknown particle name \"%s\"", json_string_value(v));
-            return 0;
-        }
-        *m = mech_energy_convert(p->mass, MECH_MEV, u);
-        return 1;
-    }
-    const double x = json_number_value(v);
-    if (x < 0) {
-        api_call_domain(c, ptr, "a mass cannot be negative (m c^2 is the rest energy), got %.17g", x);
-        return 0;
-    }
-    *m = x;
-    return 1;
-}
-
-/* The projectile's lab motion; 0 after recording an error. */
+/* The projectile's lab motion (kin_request.c's reader), which must be given
+ * and nonzero; 0 after recording an error. */
 static int motion_of(struct api_call *c, const json_t *obj, double m, struct mech_kin_motion *k)
 {
-    static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
-    const char *which = NULL;
-    char p[96];
-    for (int i = 0; i < 4; i++) {
-        if (!json_object_get(obj, keys[i])) continue;
-        if (which) {
-            snprintf(p, sizeof p, "/projectile/%s", keys[i]);
-            api_call_invalid(c, p, "give only one of energy, kinetic_energy, momentum, velocity "
-                                   "(both %s and %s were given)", which, keys[i]);
-            return 0;
-        }
-        which = keys[i];
-    }
-    if (!which) {
+    int given = 0;
+    if (!api_kin_motion_of(c, obj, "/projectile", m, k, &given)) return 0;
+    if (!given) {
         api_call_invalid(c, "/projectile", "give the projectile's energy, kinetic_energy, "
                                            "momentum or velocity: a projectile at rest does not "
                                            "reach the target");
         return 0;
     }
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st;
-    if (!strcmp(which, "velocity")) {
-        struct mech_boost b;
-        if (!api_velocity_parse(c, json_object_get(obj, "velocity"), "/projectile/velocity", &b))
-            return 0;
-        st = mech_kin_motion_from_boost(m, &b, k, &e);
-    } else {
-        const double x = api_number(obj, which, 0);
-        if (!strcmp(which, "energy"))
-            st = mech_kin_motion_from_energy(m, x, k, &e);
-        else if (!strcmp(which, "kinetic_energy"))
-            st = mech_kin_motion_from_kinetic(m, x, k, &e);
-        else
-            st = mech_kin_motion_from_momentum(m, x, k, &e);
-    }
-    if (st != MECH_OK) {
-        if (!strcmp(e.param, "mass")) snprintf(e.param, sizeof e.param, "particle");
-        api_call_fail_core(c, st, &e, "/projectile");
-        return 0;
-    }
     if (!(k->momentum > 0)) {
-        snprintf(p, sizeof p, "/projectile/%s", which);
+        static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
+        char p[48] = "/projectile";
+        for (int i = 0; i < 4; i++)
+            if (json_object_get(obj, keys[i])) snprintf(p, sizeof p, "/projectile/%s", keys[i]);
         api_call_domain(c, p, "the projectile must move (momentum > 0) to reach a target at rest");
         return 0;
     }
@@ -154,14 +101,11 @@ static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
 json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), &u, &e);
-    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    if (!api_kin_unit_of(c, body, &u)) return NULL;
     const json_t *pj = json_object_get(body, "projectile");
     double m1 = 0, m2 = 0;
-    int ok = mass_of(c, json_object_get(pj, "particle"), "/projectile/particle", u, &m1);
-    ok &= mass_of(c, json_object_get(body, "target"), "/target", u, &m2);
+    int ok = api_kin_mass_of(c, json_object_get(pj, "particle"), "/projectile/particle", u, &m1);
+    ok &= api_kin_mass_of(c, json_object_get(body, "target"), "/target", u, &m2);
     enum mech_elastic_angle kind = MECH_ELASTIC_CM_ANGLE;
     double angle = 0;
     char aptr[48] = "";
@@ -174,10 +118,12 @@ json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *b
     }
     struct mech_kin_motion k;
     if (!motion_of(c, pj, m1, &k)) return NULL;
-    const int branch = (int)api_number_of(body, "branch"); /* a request number is a real; the schema allows 0 or 1 (default 0) */
+    /* a request number is a real; the schema allows 0 or 1 (default 0) */
+    const int branch = (int)api_number_of(body, "branch");
     struct mech_elastic o;
+    struct mech_error e;
     mech_error_clear(&e);
-    st = mech_elastic_scatter(&k, m2, kind, angle, branch, &o, &e);
+    enum mech_status st = mech_elastic_scatter(&k, m2, kind, angle, branch, &o, &e);
     if (st != MECH_OK) {
         if (!strcmp(e.param, "angle")) snprintf(e.param, sizeof e.param, "%s", aptr + 1);
         return api_call_fail_core(c, st, &e, "");

@@ -19,7 +19,7 @@
 #include "mech/decay_estimate.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
-#include "velocity_request.h"
+#include "kin_request.h"
 
 
 /* ---- shared schema fragments --------------------------------------------------- */
@@ -32,41 +32,6 @@
 /* clang-format on */
 
 /* ---- shared request readers -------------------------------------------------- */
-
-static int unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit *u)
-{
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st = mech_energy_unit_parse(api_string_of(body, "energy_unit"), u, &e);
-    if (st != MECH_OK) {
-        api_call_fail_core(c, st, &e, "");
-        return 0;
-    }
-    return 1;
-}
-
-/* Mass of a particle field (name or number) in unit u; 0 after recording an error. */
-static int mass_of(struct api_call *c, const json_t *v, const char *ptr, enum mech_energy_unit u,
-                   double *m)
-{
-    if (json_is_string(v)) {
-        const struct mech_particle *p = mech_particle_find(json_string_value(v));
-        if (!p) {
-            api_call_invalid(c, ptr, "unknown particle name \"%s\"", json_string_value(v));
-            return 0;
-        }
-        *m = mech_energy_convert(p->mass, MECH_MEV, u);
-        return 1;
-    }
-    double x = json_number_value(v);
-    if (x < 0) {
-        api_call_domain(c, ptr,
-                        "a mass cannot be negative (m c^2 is the rest energy, >= 0), got %.17g", x);
-        return 0;
-    }
-    *m = x;
-    return 1;
-}
 
 /* Angle from key (radians) or key_deg (degrees), at most one. Returns 1 if
  * present (value in *rad), 0 if absent, -1 after recording an error. */
@@ -83,54 +48,6 @@ static int angle_of(struct api_call *c, const json_t *obj, const char *key, cons
     if (r) *rad = json_number_value(r);
     if (d) *rad = json_number_value(d) / 180.0 * MECH_PI;
     return r || d;
-}
-
-/* State of motion of a KIN_MOVING object with mass m. *given says whether any
- * motion was given (else the particle is at rest). 0 after recording an error. */
-static int motion_of(struct api_call *c, const json_t *obj, const char *ptr, double m,
-                     struct mech_kin_motion *k, int *given)
-{
-    static const char *const keys[] = {"energy", "kinetic_energy", "momentum", "velocity"};
-    const char *which = NULL;
-    char p[160];
-    for (int i = 0; i < 4; i++) {
-        if (!json_object_get(obj, keys[i])) continue;
-        if (which) {
-            snprintf(p, sizeof p, "%s/%s", ptr, keys[i]);
-            api_call_invalid(c, p,
-                             "give only one of energy, kinetic_energy, momentum, velocity "
-                             "(both %s and %s were given)",
-                             which, keys[i]);
-            return 0;
-        }
-        which = keys[i];
-    }
-    *given = which != NULL;
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st;
-    if (!which) {
-        st = mech_kin_motion_at_rest(m, k, &e);
-    } else if (!strcmp(which, "velocity")) {
-        struct mech_boost b;
-        snprintf(p, sizeof p, "%s/velocity", ptr);
-        if (!api_velocity_parse(c, json_object_get(obj, "velocity"), p, &b)) return 0;
-        st = mech_kin_motion_from_boost(m, &b, k, &e);
-    } else {
-        double x = api_number(obj, which, 0);
-        if (!strcmp(which, "energy"))
-            st = mech_kin_motion_from_energy(m, x, k, &e);
-        else if (!strcmp(which, "kinetic_energy"))
-            st = mech_kin_motion_from_kinetic(m, x, k, &e);
-        else
-            st = mech_kin_motion_from_momentum(m, x, k, &e);
-    }
-    if (st != MECH_OK) {
-        if (!strcmp(e.param, "mass")) snprintf(e.param, sizeof e.param, "particle");
-        api_call_fail_core(c, st, &e, ptr);
-        return 0;
-    }
-    return 1;
 }
 
 /* mass, energy, kinetic_energy, momentum and (massive) the precise speed. */
@@ -181,7 +98,7 @@ static json_t *finish(struct api_call *c, json_t *res)
 json_t *api_op_relativity_kinematics_invariant_mass(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    if (!unit_of(c, body, &u)) return NULL;
+    if (!api_kin_unit_of(c, body, &u)) return NULL;
     const json_t *moms = json_object_get(body, "momenta");
     size_t n = json_array_size(moms);
     struct mech_kin_particle *ps = malloc(n * sizeof *ps);
@@ -206,7 +123,7 @@ json_t *api_op_relativity_kinematics_invariant_mass(struct api_call *c, const js
             char pp[80];
             double m;
             snprintf(pp, sizeof pp, "%s/particle", ptr);
-            if (!mass_of(c, json_object_get(it, "particle"), pp, u, &m)) {
+            if (!api_kin_mass_of(c, json_object_get(it, "particle"), pp, u, &m)) {
                 bad = 1;
                 continue;
             }
@@ -465,16 +382,16 @@ static json_t *three_body(struct api_call *c, const json_t *body, const struct m
 json_t *api_op_relativity_kinematics_decay(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    if (!unit_of(c, body, &u)) return NULL;
+    if (!api_kin_unit_of(c, body, &u)) return NULL;
     const json_t *parent = json_object_get(body, "parent");
     const json_t *ds = json_object_get(body, "daughters");
     double mp = 0, m[3] = {0, 0, 0};
-    int ok = mass_of(c, json_object_get(parent, "particle"), "/parent/particle", u, &mp);
+    int ok = api_kin_mass_of(c, json_object_get(parent, "particle"), "/parent/particle", u, &mp);
     size_t n = json_array_size(ds);
     for (size_t i = 0; i < n; i++) {
         char p[40];
         snprintf(p, sizeof p, "/daughters/%zu", i);
-        ok &= mass_of(c, json_array_get(ds, i), p, u, &m[i]);
+        ok &= api_kin_mass_of(c, json_array_get(ds, i), p, u, &m[i]);
     }
     if (!ok) return NULL;
     if (!(mp > 0)) {
@@ -485,7 +402,7 @@ json_t *api_op_relativity_kinematics_decay(struct api_call *c, const json_t *bod
     }
     struct mech_kin_motion k;
     int given;
-    if (!motion_of(c, parent, "/parent", mp, &k, &given)) return NULL;
+    if (!api_kin_motion_of(c, parent, "/parent", mp, &k, &given)) return NULL;
     struct mech_boost b;
     struct mech_error e;
     mech_error_clear(&e);
@@ -508,7 +425,7 @@ json_t *api_op_relativity_kinematics_decay(struct api_call *c, const json_t *bod
 json_t *api_op_relativity_kinematics_compton(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    if (!unit_of(c, body, &u)) return NULL;
+    if (!api_kin_unit_of(c, body, &u)) return NULL;
     const json_t *je = json_object_get(body, "energy"), *jw = json_object_get(body, "wavelength");
     if (je && jw) api_call_invalid(c, "/wavelength", "give energy or wavelength, not both");
     if (!je && !jw) api_call_invalid(c, "", "give the photon's energy or wavelength");
@@ -519,7 +436,7 @@ json_t *api_op_relativity_kinematics_compton(struct api_call *c, const json_t *b
     const json_t *jt = json_object_get(body, "target");
     int okm = 1;
     if (jt)
-        okm = mass_of(c, jt, "/target", u, &m);
+        okm = api_kin_mass_of(c, jt, "/target", u, &m);
     else
         m = mech_energy_convert(mech_particle_find("electron")->mass, MECH_MEV, u);
     if (!okm || c->problem != API_PROBLEM_NONE) return NULL;
@@ -571,19 +488,19 @@ json_t *api_op_relativity_kinematics_compton(struct api_call *c, const json_t *b
 json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    if (!unit_of(c, body, &u)) return NULL;
+    if (!api_kin_unit_of(c, body, &u)) return NULL;
     const json_t *jb = json_object_get(body, "beam"), *jt = json_object_get(body, "target");
     const json_t *jw = json_object_get(body, "sqrt_s"), *jf = json_object_get(body, "final_state");
     double m1 = 0, m2 = 0;
-    int ok = mass_of(c, json_object_get(jb, "particle"), "/beam/particle", u, &m1);
-    ok &= mass_of(c, json_object_get(jt, "particle"), "/target/particle", u, &m2);
+    int ok = api_kin_mass_of(c, json_object_get(jb, "particle"), "/beam/particle", u, &m1);
+    ok &= api_kin_mass_of(c, json_object_get(jt, "particle"), "/target/particle", u, &m2);
     size_t nf = json_array_size(jf);
     double *mf = nf ? malloc(nf * sizeof *mf) : NULL;
     if (nf && !mf) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
     for (size_t i = 0; i < nf; i++) {
         char p[40];
         snprintf(p, sizeof p, "/final_state/%zu", i);
-        ok &= mass_of(c, json_array_get(jf, i), p, u, &mf[i]);
+        ok &= api_kin_mass_of(c, json_array_get(jf, i), p, u, &mf[i]);
     }
     double chi = 0;
     int hx = angle_of(c, body, "crossing_angle", "/crossing_angle", &chi);
@@ -593,7 +510,7 @@ json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t 
     }
     struct mech_kin_motion kb, kt;
     int gb = 0, gt = 0;
-    if (!motion_of(c, jt, "/target", m2, &kt, &gt)) {
+    if (!api_kin_motion_of(c, jt, "/target", m2, &kt, &gt)) {
         free(mf);
         return NULL;
     }
@@ -626,7 +543,7 @@ json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t 
             return api_call_fail_core(c, st, &e, "");
         }
         gb = 1;
-    } else if (!motion_of(c, jb, "/beam", m1, &kb, &gb)) {
+    } else if (!api_kin_motion_of(c, jb, "/beam", m1, &kb, &gb)) {
         free(mf);
         return NULL;
     }
