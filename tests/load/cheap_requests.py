@@ -79,6 +79,29 @@ def run_wrk(url, seconds, connections, script):
     return r
 
 
+def diagnose(m):
+    """A round with no answers at all was seen once in CI (256 connections,
+    0 answers in 5 s, no socket errors) and not reproduced: print what mechd
+    and the kernel say at that moment, so the next occurrence can be read."""
+    try:
+        st, _, data, dt = loadlib.request(m.port, "GET", "/metrics", timeout=10)
+        lines = [l for l in data.decode(errors="replace").splitlines()
+                 if l.startswith(("mechd_connections", "mechd_pool", "mechd_queue", "mechd_workers",
+                                  "mechd_requests_in_flight", "mechd_inline"))]
+        loadlib.log(NAME, "diagnosis: /metrics %s in %.3f s: %s" % (st, dt, "; ".join(lines)[:1500]))
+    except Exception as e:  # the diagnosis must not hide the failure
+        loadlib.log(NAME, "diagnosis: /metrics failed: %r" % (e,))
+    try:
+        out = subprocess.run(["ss", "-tan", "( sport = :%d )" % m.port], capture_output=True, text=True,
+                             timeout=10).stdout
+        states = {}
+        for l in out.splitlines()[1:]:
+            states[l.split()[0]] = states.get(l.split()[0], 0) + 1
+        loadlib.log(NAME, "diagnosis: server sockets by state %s" % states)
+    except Exception as e:
+        loadlib.log(NAME, "diagnosis: ss failed: %r" % (e,))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("mechd", nargs="?")
@@ -113,6 +136,7 @@ def main():
                                                             "/".join(map(str, r["errors"]))))
             if total == 0:
                 failures.append("%d connections: no answers counted (wrk output: %r)" % (c, r["out"][-400:]))
+                diagnose(m)
             if bad or r["non2xx"]:
                 failures.append("%d connections: %d of %d cheap boosts refused (%s; wrk's non-2xx count %d)"
                                 % (c, sum(bad.values()), total, bad, r["non2xx"]))
