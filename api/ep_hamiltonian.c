@@ -230,8 +230,10 @@ static double state_scale(const struct mech_ham_system *s, const double *y0, dou
 static int ham_integrator(struct api_call *c, const json_t *block, const char *pointer,
                           const struct mech_ham_system *s, const double *y0, double tau,
                           double span, const char *def_method, double def_div,
-                          struct ham_integ *out)
+                          const struct mech_pilot_system *pilot, struct ham_integ *out)
 {
+    /* pilot: the flow's hook (mech_ham_pilot_run), NULL elsewhere */
+    const struct api_integrator_hooks hooks = {0.0, 0.0, 0.0, pilot};
     memset(out, 0, sizeof *out);
     /* Chosen settings scale atol to the smallest scale of the state's SI
      * components, so a 1e-15 m oscillator is not integrated at atol 1e-13. */
@@ -277,10 +279,10 @@ static int ham_integrator(struct api_call *c, const json_t *block, const char *p
             snprintf(out->reason, sizeof out->reason,
                      "method and settings given in the request; integrated in the second-order "
                      "form (q, v = p/M) of the separable H");
-        } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
+        } else if (!api_integrator_block_parse_hooks(c, block, pointer, span, &hs, NULL, &hooks, &out->ch)) {
             return 0;
         }
-    } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
+    } else if (!api_integrator_block_parse_hooks(c, block, pointer, span, &hs, NULL, &hooks, &out->ch)) {
         return 0;
     }
     out->m = mech_ode_method_find(out->ch.method);
@@ -441,8 +443,10 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     const size_t ns = (size_t)api_number_of(body, "samples"), n = (size_t)s.dof, dim = 2 * n;
     const double tau = mech_ham_time_scale(&s, y0);
     struct ham_integ hi;
+    const struct mech_ham_flow_problem pp = {.sys = &s, .y0 = y0, .t_end = t_end, .n_samples = 2};
+    const struct mech_pilot_system pilot = {mech_ham_pilot_run, (void *)&pp};
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
-                        t_end / tau, "gauss6", 50.0, &hi))
+                        t_end / tau, "gauss6", 50.0, &pilot, &hi))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, ham_selection(c, &hi));
 
@@ -657,7 +661,7 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
         snprintf(ptr, sizeof ptr, "/integrators/%zu", k);
         if (!ham_integrator(c, blocks ? json_array_get(blocks, k) : NULL, ptr, &s, y_ref, tau,
                             t_end / tau,
-                            k == 0 ? "gauss4" : "rk4", k == 0 ? 20.0 : 2.0, &hi[k]))
+                            k == 0 ? "gauss4" : "rk4", k == 0 ? 20.0 : 2.0, NULL, &hi[k]))
             goto done;
     }
     if (api_dry_run_requested(body)) {
@@ -859,7 +863,7 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
     const double tau = mech_ham_time_scale(&s, y0);
     struct ham_integ hi;
     if (!ham_integrator(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
-                        t_max / tau, "gauss6", 50.0, &hi))
+                        t_max / tau, "gauss6", 50.0, NULL, &hi))
         goto done;
     if (api_dry_run_requested(body)) {
         out = api_dry_run_answer(c, ham_selection(c, &hi));
