@@ -98,7 +98,12 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
         idx[n++] = (int)i;
         sum += k->predicted_evaluations;
     }
-    if (!ch->adaptive || !ch->has_settings || !(sum > 0.0)) return MECH_OK;
+    if (!ch->adaptive || !ch->has_settings || !(sum > 0.0)) {
+        snprintf(rep->why, sizeof rep->why,
+                 "not piloted: %s is not an adaptive method (its cost is counted, not "
+                 "predicted)", ch->method);
+        return MECH_OK;
+    }
     const double f = fmin(MECH_PILOT_COST_FRACTION * ch->predicted_evaluations / sum, 1.0);
     rep->fraction = f;
     const double old_cpu = ch->predicted_cpu_s, table_ch = ch->predicted_evaluations;
