@@ -11,6 +11,9 @@
 
 /* The error estimate's run tightens an adaptive tolerance by this factor. */
 #define PILOT_TIGHTER 100.0
+
+/* snprintf whose truncation is accepted (the result is always terminated) */
+#define PILOT_TEXT(buf, ...) ((void)(snprintf((buf), sizeof(buf), __VA_ARGS__) < 0 ? (buf)[0] = 0 : 0))
 /* Its cost relative to the chosen run's at the same fraction: rk8pd's
  * evaluations grow as tol^-0.12 (first-order class), 100^0.12 = 1.7; 2
  * leaves room. */
@@ -34,11 +37,13 @@ static double state_error(const double *a, const double *b, size_t n, double sca
     return e;
 }
 
-/* Append " text" to a candidate's why (truncated to fit). */
+/* Append "; text" to a candidate's why (truncated to fit: the return value
+ * of snprintf is taken so that -Wformat-truncation knows it is meant). */
 static void why_append(struct mech_candidate *c, const char *text)
 {
     char buf[sizeof c->why];
-    snprintf(buf, sizeof buf, "%s; %s", c->why, text);
+    if (snprintf(buf, sizeof buf, "%s; %s", c->why, text) >= (int)sizeof buf)
+        buf[sizeof buf - 1] = '\0'; /* truncated: what fits */
     memcpy(c->why, buf, sizeof c->why);
 }
 
@@ -60,7 +65,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
     rep->table_evaluations = ch->predicted_evaluations;
     if (dry_run) {
         rep->dry_run = 1;
-        snprintf(rep->why, sizeof rep->why,
+        PILOT_TEXT(rep->why,
                  "unpiloted: a dry run integrates nothing, so this prediction is the "
                  "calibrated table's alone (%.3g s CPU predicted, above the %g s at which a real "
                  "run pilots %g%% of its cost to check it)",
@@ -72,7 +77,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
      * at most, rk8pd; 4x for the table's scatter) will stop on it whatever
      * the pilot says: not piloted */
     if (ch->predicted_evaluations / 13.0 > 4.0 * (double)budget->max_steps) {
-        snprintf(rep->why, sizeof rep->why,
+        PILOT_TEXT(rep->why,
                  "not piloted: the table predicts about %.3g steps, beyond the request's step "
                  "budget of %ld",
                  ch->predicted_evaluations / 13.0, budget->max_steps);
@@ -99,7 +104,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
         sum += k->predicted_evaluations;
     }
     if (!ch->adaptive || !ch->has_settings || !(sum > 0.0)) {
-        snprintf(rep->why, sizeof rep->why,
+        PILOT_TEXT(rep->why,
                  "not piloted: %s is not an adaptive method (its cost is counted, not "
                  "predicted)", ch->method);
         return MECH_OK;
@@ -119,7 +124,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
          * the chosen run's piloted cost (the table may have under-predicted) */
         if (j > 0 && rep->evaluations + e_ch * k->predicted_evaluations / table_ch > allowance) {
             if (!skipped[0])
-                snprintf(skipped, sizeof skipped,
+                PILOT_TEXT(skipped,
                          "%s not piloted (the pilot's share of the cost was spent)", k->method);
             continue;
         }
@@ -147,7 +152,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
         }
         if (rs != MECH_OK || st.rhs_evaluations <= 0) {
             if (!failed[0])
-                snprintf(failed, sizeof failed, "%s's pilot stopped (%s): its table prediction "
+                PILOT_TEXT(failed, "%s's pilot stopped (%s): its table prediction "
                          "stands", k->method, mech_status_name(rs));
             if (j == 0) break; /* no rate for the chosen one: nothing to compare with */
             continue;
@@ -157,7 +162,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
             (double)st.rhs_evaluations / f + ri.per_sample * (double)s->samples;
         k->predicted_cpu_s = k->predicted_evaluations * ri.cpu_per_eval + MECH_CHOOSER_REQUEST_CPU_S;
         char t[200];
-        snprintf(t, sizeof t,
+        PILOT_TEXT(t,
                  "piloted: %ld evaluations over %.3g%% of the run, extrapolated to %.4g (the "
                  "table said %.4g)",
                  st.rhs_evaluations, 100.0 * f, k->predicted_evaluations, before);
@@ -207,7 +212,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
         sel->integrating = sel->chosen = best;
     }
     const struct mech_candidate *nb = &sel->c[best];
-    snprintf(rep->why, sizeof rep->why,
+    PILOT_TEXT(rep->why,
              "the table predicted %.3g s CPU (above %g s) for a system whose step count it "
              "does not model in closed form: piloted %.3g%% of the run (%.0f evaluations, "
              "%.2g s predicted), %s now predicted at %.4g evaluations (%.3g s, was %.3g s)%s%s%s%s",
@@ -215,7 +220,7 @@ enum mech_status mech_choose_pilot(const struct mech_scene_profile *s, double ta
              nb->predicted_evaluations, nb->predicted_cpu_s, old_cpu, failed[0] ? "; " : "",
              failed, skipped[0] ? "; " : "", skipped);
     if (e_ch > 0.0)
-        snprintf(sel->model, sizeof sel->model,
+        PILOT_TEXT(sel->model,
              "calibrated table (bench/bench_calibrate_chooser, class %s) for the error; "
              "evaluations extrapolated from a pilot over %.3g%% of the run",
              mech_scene_class_name(s->cls), 100.0 * f);
