@@ -161,7 +161,26 @@ static void all_routes(void)
     for (size_t i = 0; i < api_route_count; i++)
         every_annotation(api_route_response_schema(i), api_routes[i]->path, &count);
     printf("%zu x-mechd-check annotations\n", count);
-    CHECK_EQ_INT(count, 34); /* the old table's entries */
+    CHECK_EQ_INT(count, 34 + 259); /* the old table + the ones added with it (issue 20) */
+
+    /* a few of the added ones, read against their handlers */
+    enum api_check_kind kind;
+    const char *unit;
+    CHECK(api_check_field("/v1/relativity/kinematics/decay", "/at_theta_star/daughters/1/momentum",
+                          &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "{/energy_unit}/c"));
+    CHECK(api_check_field("/v1/relativity/kinematics/decay", "/lab_energy_ranges/0/1", &kind,
+                          &unit) == 1);
+    CHECK(same_str(unit, "{/energy_unit}")); /* inherited through two levels of items */
+    CHECK(api_check_field("/v1/trajectory", "/position/3", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_VECTOR && same_str(unit, "m"));
+    CHECK(api_check_field("/v1/trajectory", "/position/3/1", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "m"));
+    CHECK(api_check_field("/v1/earth/gravity", "/sphere/deviation/mrad", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "mrad"));
+    CHECK(api_check_field("/v1/rotation/compose", "/euler/extrinsic/ZYX/angles/2", &kind,
+                          &unit) == 1);
+    CHECK(kind == API_KIND_ANGLE && same_str(unit, "rad"));
 }
 
 static void walk(void)
