@@ -9,7 +9,8 @@
  *   3. the walk on a small schema: properties (escaped names), items (index
  *      tokens only), oneOf, units inherited through items but not properties,
  *      an unknown kind or unit ignored, pointers the schema does not describe;
- *   4. unit templates and the new units' factors (CODATA / SI 2019 values).
+ *   4. unit templates and the new units' factors (CODATA / SI 2019 values);
+ *   5. GET /v1 and the OpenAPI document carry the annotations as written.
  */
 #include <gsl/gsl_errno.h>
 #include <jansson.h>
@@ -17,6 +18,7 @@
 #include <string.h>
 
 #include "api.h"
+#include "mech/budget.h"
 #include "check_field.h"
 #include "check_kind.h"
 #include "routes.h"
@@ -272,6 +274,45 @@ static void templates_and_units(void)
     }
 }
 
+static json_t *get(const char *path)
+{
+    struct api_request req = {"GET", path, NULL, NULL, 0, 1000, mech_clock_seconds() + 300, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    json_t *j = resp.status == 200 && resp.body ? json_loads(resp.body, 0, NULL) : NULL;
+    api_response_free(&resp);
+    return j;
+}
+
+/* The annotation on /v1/rigid/inertia's principal axes in a response schema. */
+static const char *axes_kind(const json_t *rs)
+{
+    const json_t *a = json_object_get(
+        json_object_get(json_object_get(json_object_get(json_object_get(json_object_get(rs,
+            "properties"), "principal"), "properties"), "axes"), "x-mechd-check"), "kind");
+    return json_string_value(a);
+}
+
+static void documents(void)
+{
+    json_t *cat = get("/v1"), *oa = get("/v1/openapi.json");
+    CHECK(cat != NULL && oa != NULL);
+    const json_t *rs = NULL;
+    size_t i;
+    const json_t *op;
+    json_array_foreach(json_object_get(cat, "operations"), i, op)
+        if (!strcmp(json_string_value(json_object_get(op, "path")), "/v1/rigid/inertia"))
+            rs = json_object_get(op, "response_schema");
+    CHECK(same_str(axes_kind(rs), "eigenvectors"));
+    const json_t *post = json_object_get(
+        json_object_get(json_object_get(oa, "paths"), "/v1/rigid/inertia"), "post");
+    const json_t *ors = json_object_get(json_object_get(json_object_get(json_object_get(
+        json_object_get(post, "responses"), "200"), "content"), "application/json"), "schema");
+    CHECK(same_str(axes_kind(ors), "eigenvectors"));
+    json_decref(cat);
+    json_decref(oa);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -281,5 +322,6 @@ int main(void)
     all_routes();
     walk();
     templates_and_units();
+    documents();
     TEST_MAIN_END();
 }
