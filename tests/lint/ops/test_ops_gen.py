@@ -12,7 +12,8 @@ naming the file, on each kind of broken data file.
    listed file missing, an envelope key in a request schema, an
    x-mechd-check annotation with an unknown kind or unit, without a kind or
    with an extra key, another x- keyword, an annotation in a request
-   schema) each make the generator exit 1 with a message naming the file;
+   schema, a unit template that can expand to no unit, points at no string
+   of the answer or has unbalanced braces) each make the generator exit 1 with a message naming the file;
    the kinds and units it reads from api/check_kind.c are the C lists.
 3. Generating into a scratch directory writes ops.def with one API_OP per
    data file and ops_handlers.h with one prototype each.
@@ -130,6 +131,21 @@ broken("other vendor keyword", edit("rigid/inertia.json",
 broken("annotation in a request schema", edit("gr/geodesic.json", lambda d: d["request_schema"]
                                               .update({"x-mechd-check": {"kind": "number"}})),
        "api/ops/gr/geodesic.json", "it belongs in the response_schema")
+
+def decay_unit(unit):
+    def fn(d):
+        d["response_schema"]["properties"]["q_value"]["x-mechd-check"]["unit"] = unit
+    return edit("relativity/kinematics_decay.json", fn)
+
+
+broken("template expanding to no unit", decay_unit("{/energy_unit}/s"),
+       "api/ops/relativity/kinematics_decay.json", 'unknown unit "eV/s"')
+broken("template pointing nowhere", decay_unit("{/units}/c"),
+       "api/ops/relativity/kinematics_decay.json", "{/units} in '{/units}/c' must point at a string")
+broken("template without listed values", decay_unit("{/parent/mass}"),
+       "api/ops/relativity/kinematics_decay.json", "must point at a string")
+broken("unbalanced template", decay_unit("{/energy_unit/c"),
+       "api/ops/relativity/kinematics_decay.json", "unbalanced braces")
 
 # Every kind and unit the C tables know is accepted (ops_gen reads them from
 # api/check_kind.c): the vocabulary it reads is the one the server parses.
