@@ -16,14 +16,21 @@
 static const char *stability_name(enum mech_schw_stability s)
 {
     switch (s) {
-    case MECH_SCHW_ORBIT_STABLE: return "stable";
-    case MECH_SCHW_ORBIT_UNSTABLE: return "unstable";
-    case MECH_SCHW_ORBIT_MARGINAL: return "marginal";
-    default: return "none";
+    case MECH_SCHW_ORBIT_STABLE:
+        return "stable";
+    case MECH_SCHW_ORBIT_UNSTABLE:
+        return "unstable";
+    case MECH_SCHW_ORBIT_MARGINAL:
+        return "marginal";
+    default:
+        return "none";
     }
 }
 
-static void set(json_t *o, const char *key, json_t *v) { json_object_set_new_nocheck(o, key, v); }
+static void set(json_t *o, const char *key, json_t *v)
+{
+    json_object_set_new_nocheck(o, key, v);
+}
 
 /* The request's fields, in its units (schema-validated). */
 static void read_request(const json_t *body, struct mech_schw_request *q)
@@ -73,8 +80,9 @@ static json_t *at_r_json(struct api_call *c, const struct mech_schw_at_r *a)
         set(cj, "period_coordinate", api_real(c, co->period_t));
         set(cj, "period_proper", api_real(c, co->period_tau));
     } else {
-        set(cj, "why", json_string("no circular geodesic at or inside the photon sphere r = "
-                                   "3GM/c^2"));
+        set(cj, "why",
+            json_string("no circular geodesic at or inside the photon sphere r = "
+                        "3GM/c^2"));
     }
     set(o, "circular_orbit", cj);
     return o;
@@ -109,13 +117,15 @@ static json_t *clock_json(struct api_call *c, const struct mech_schw_request *q,
     set(k, "first_order", fo);
     json_t *uf = json_object();
     set(uf, "gravitational", api_real(c, cc->uniform_field_gravitational));
-    set(uf, "label", json_string("approximation: the notes' uniform-field red shift g h/c^2, g = "
-                                 "GM/R^2 at reference_r, h = r - R (relative error ~h/R beside "
-                                 "fractional.gravitational)"));
+    set(uf, "label",
+        json_string("approximation: the notes' uniform-field red shift g h/c^2, g = "
+                    "GM/R^2 at reference_r, h = r - R (relative error ~h/R beside "
+                    "fractional.gravitational)"));
     set(k, "uniform_field", uf);
-    set(k, "left_out", json_string("the reference's own motion (the Earth's rotation: "
-                                   "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
-                                   "other masses, orbit eccentricity"));
+    set(k, "left_out",
+        json_string("the reference's own motion (the Earth's rotation: "
+                    "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
+                    "other masses, orbit eccentricity"));
     return k;
 }
 
@@ -128,9 +138,10 @@ static json_t *infall_json(struct api_call *c, const struct mech_schw_request *q
     set(ri, "proper_time_to_singularity", api_real(c, f->to_singularity));
     set(ri, "proper_time_horizon_to_singularity", api_real(c, f->horizon_to_singularity));
     set(ri, "coordinate_time_to_horizon", json_null());
-    set(ri, "note", json_string("a fall from rest; the coordinate (far-away) time to the horizon "
-                                "is infinite, hence null; the proper time to r = 0 equals the "
-                                "Newtonian free-fall time"));
+    set(ri, "note",
+        json_string("a fall from rest; the coordinate (far-away) time to the horizon "
+                    "is infinite, hence null; the proper time to r = 0 equals the "
+                    "Newtonian free-fall time"));
     return ri;
 }
 

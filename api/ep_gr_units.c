@@ -48,7 +48,8 @@ json_t *api_gr_units_json(struct api_call *c, const struct mech_gr_units *u)
         json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
         json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
         json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
-        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
+        json_object_set_new_nocheck(
+            j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
     }
     return j;
 }

@@ -16,7 +16,10 @@
 #include "mech/apsides.h"
 #include "mech/ham_steady_motion.h"
 
-static void set(json_t *o, const char *key, json_t *v) { json_object_set_new_nocheck(o, key, v); }
+static void set(json_t *o, const char *key, json_t *v)
+{
+    json_object_set_new_nocheck(o, key, v);
+}
 
 static json_t *conical_json(struct api_call *c, const struct mech_ham_conical *m)
 {
@@ -25,8 +28,9 @@ static json_t *conical_json(struct api_call *c, const struct mech_ham_conical *m
     set(co, "phi_dot", api_real(c, m->phi_dot));
     set(co, "p_phi", api_real(c, m->p_phi));
     set(co, "period", m->has_period ? api_real(c, m->period) : json_null());
-    set(co, "note", json_string("conical motion at this theta: start with p_theta = 0 and this "
-                                "p_phi and theta stays constant, phi' = sqrt(g/(l cos theta))"));
+    set(co, "note",
+        json_string("conical motion at this theta: start with p_theta = 0 and this "
+                    "p_phi and theta stays constant, phi' = sqrt(g/(l cos theta))"));
     return co;
 }
 
@@ -56,11 +60,12 @@ static json_t *apsides_json(struct api_call *c, const struct mech_apsides *a)
         a->has_measured ? api_real(c, a->angle_measured) : json_null());
     set(o, "apsidal_angle_near_circular",
         a->has_near_circular ? api_real(c, a->angle_near_circular) : json_null());
-    set(o, "note", json_string("pericentres are p_r = 0 crossings upwards, located by "
-                               "root-finding with the flow's method; the measured apsidal "
-                               "angle is the mean pericentre-to-pericentre angle / 2; "
-                               "pi/sqrt(n+2) is its limit for near-circular orbits "
-                               "(Goldstein §3.6)"));
+    set(o, "note",
+        json_string("pericentres are p_r = 0 crossings upwards, located by "
+                    "root-finding with the flow's method; the measured apsidal "
+                    "angle is the mean pericentre-to-pericentre angle / 2; "
+                    "pi/sqrt(n+2) is its limit for near-circular orbits "
+                    "(Goldstein §3.6)"));
     return o;
 }
 
@@ -90,8 +95,8 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     const size_t ns = (size_t)api_number_of(body, "samples"), dim = 2 * (size_t)s.dof;
     const double tau = mech_ham_time_scale(&s, y0);
     struct api_ham_integ hi;
-    if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0,
-                                 tau, t_end / tau, "gauss6", 50.0, &hi))
+    if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
+                                 t_end / tau, "gauss6", 50.0, &hi))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_ham_selection(c, &hi));
 
@@ -105,12 +110,11 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     struct mech_ham_flow_problem p = {&s, y0, t_end, ns, hi.m, hi.ch.opt};
-    enum mech_status st = !r.t || !r.y ? mech_error_set(&e, MECH_ENOMEM, NULL,
-                                                        "out of memory for %zu samples", ns)
-                                       : mech_ham_flow(&p, &c->budget, &r, &e);
+    enum mech_status st =
+        !r.t || !r.y ? mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory for %zu samples", ns)
+                     : mech_ham_flow(&p, &c->budget, &r, &e);
     if (st == MECH_OK && s.kind == MECH_HAM_CENTRAL)
-        st = mech_apsides_find(&s, y0, t_end, hi.m, hi.ch.opt, &c->budget, r.stats.steps, &ap,
-                               &e);
+        st = mech_apsides_find(&s, y0, t_end, hi.m, hi.ch.opt, &c->budget, r.stats.steps, &ap, &e);
     if (st != MECH_OK) {
         api_call_fail_core(c, st, &e, "");
     } else {
@@ -121,9 +125,11 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
         set(out, "conserved",
             api_ham_conserved_json(c, &s, r.n_conserved, r.conserved, r.conserved_drift));
         struct mech_ham_conical cm;
-        if (mech_ham_conical_motion(&s, y0[0], &cm)) set(out, "conical_motion", conical_json(c, &cm));
+        if (mech_ham_conical_motion(&s, y0[0], &cm))
+            set(out, "conical_motion", conical_json(c, &cm));
         struct mech_ham_central_circular cc;
-        if (mech_ham_central_circular(&s, y0[0], &cc)) set(out, "circular_orbit", circular_json(c, &cc));
+        if (mech_ham_central_circular(&s, y0[0], &cc))
+            set(out, "circular_orbit", circular_json(c, &cc));
         if (s.kind == MECH_HAM_CENTRAL) set(out, "apsides", apsides_json(c, &ap));
         set(out, "diagnostics", api_ham_diagnostics(c, &hi, &r.stats, r.second_order, tau));
         set(out, "cost", json_object());

@@ -15,7 +15,10 @@
 #include "ep_hamiltonian_request.h"
 #include "mech/liouville_runs.h"
 
-static void set(json_t *o, const char *key, json_t *v) { json_object_set_new_nocheck(o, key, v); }
+static void set(json_t *o, const char *key, json_t *v)
+{
+    json_object_set_new_nocheck(o, key, v);
+}
 
 /* A parsed request: the curve's points live here (the problem borrows them). */
 struct liou_call {
@@ -28,12 +31,14 @@ struct liou_call {
 static int read_point(struct api_call *c, const json_t *a, size_t dim, const char *ptr, double *y)
 {
     if (json_array_size(a) != dim) {
-        api_call_invalid(c, ptr, "a phase-space point of this system has %zu values (q..., p...), "
-                                 "got %zu",
+        api_call_invalid(c, ptr,
+                         "a phase-space point of this system has %zu values (q..., p...), "
+                         "got %zu",
                          dim, json_array_size(a));
         return 0;
     }
-    for (size_t i = 0; i < dim; i++) y[i] = json_number_value(json_array_get(a, i));
+    for (size_t i = 0; i < dim; i++)
+        y[i] = json_number_value(json_array_get(a, i));
     return 1;
 }
 
@@ -202,7 +207,8 @@ static json_t *run_json(struct api_call *c, const struct liou_call *q,
     }
     set(o, "node_trajectories", json_integer(x->trajectories));
     json_t *ro = json_array();
-    for (size_t i = 0; i < ns; i++) json_array_append_new(ro, api_reals(c, x->reference_y + i * dim, dim));
+    for (size_t i = 0; i < ns; i++)
+        json_array_append_new(ro, api_reals(c, x->reference_y + i * dim, dim));
     set(o, "reference_orbit", ro);
     set(o, "diagnostics", api_ham_diagnostics(c, hi, &x->stats, x->second_order, tau));
     return o;
@@ -229,8 +235,8 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
     for (size_t k = 0; k < nrun; k++) {
         char ptr[48];
         snprintf(ptr, sizeof ptr, "/integrators/%zu", k);
-        if (!api_ham_integrator_read(c, blocks ? json_array_get(blocks, k) : NULL, ptr, &q.s,
-                                     y_ref, tau, q.p.t_end / tau, k == 0 ? "gauss4" : "rk4",
+        if (!api_ham_integrator_read(c, blocks ? json_array_get(blocks, k) : NULL, ptr, &q.s, y_ref,
+                                     tau, q.p.t_end / tau, k == 0 ? "gauss4" : "rk4",
                                      k == 0 ? 20.0 : 2.0, &hi[k]))
             goto done;
         methods[k] = hi[k].m;
@@ -239,17 +245,20 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
     if (api_dry_run_requested(body)) {
         /* the first block's selection; every block's in selections */
         json_t *sels = json_array();
-        for (size_t k = 0; sels && k < nrun; k++) json_array_append_new(sels, api_ham_selection(c, &hi[k]));
+        for (size_t k = 0; sels && k < nrun; k++)
+            json_array_append_new(sels, api_ham_selection(c, &hi[k]));
         out = api_dry_run_answer(c, api_ham_selection(c, &hi[0]));
-        if (out) json_object_set_new_nocheck(json_object_get(out, "diagnostics"), "selections", sels);
-        else json_decref(sels);
+        if (out)
+            json_object_set_new_nocheck(json_object_get(out, "diagnostics"), "selections", sels);
+        else
+            json_decref(sels);
         goto done;
     }
     struct mech_error e;
     mech_error_clear(&e);
     size_t failed = 0;
-    enum mech_status st = mech_liouville_runs(&q.p, nrun, methods, opts, &c->budget, &runs,
-                                              &failed, &e);
+    enum mech_status st =
+        mech_liouville_runs(&q.p, nrun, methods, opts, &c->budget, &runs, &failed, &e);
     if (st != MECH_OK) {
         fail_run(c, st, &e, failed, blocks != NULL);
         goto done;
@@ -263,7 +272,8 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
     set(out, "t", api_reals(c, runs.run[0].t, q.p.n_samples));
     set(out, "reference_start", api_reals(c, y_ref, dim));
     json_t *ja = json_array();
-    for (size_t k = 0; k < nrun; k++) json_array_append_new(ja, run_json(c, &q, &runs.run[k], &hi[k], tau));
+    for (size_t k = 0; k < nrun; k++)
+        json_array_append_new(ja, run_json(c, &q, &runs.run[k], &hi[k], tau));
     set(out, "runs", ja);
     set(out, "cost", json_object());
 done:

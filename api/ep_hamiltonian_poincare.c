@@ -15,7 +15,10 @@
 #include "ep_hamiltonian_request.h"
 #include "mech/poincare_orbits.h"
 
-static void set(json_t *o, const char *key, json_t *v) { json_object_set_new_nocheck(o, key, v); }
+static void set(json_t *o, const char *key, json_t *v)
+{
+    json_object_set_new_nocheck(o, key, v);
+}
 
 /* The section: default x = 0 (Hénon–Heiles, oscillator) or phi = 0 (spherical
  * pendulum, cylinder, central). Returns 0 after recording an error. */
@@ -23,8 +26,9 @@ static int read_section(struct api_call *c, const json_t *sj, const struct mech_
                         struct mech_poincare_section *sec)
 {
     const char *coord = sj ? api_string(sj, "coordinate", "x")
-                           : (s->kind == MECH_HAM_HENON_HEILES || s->kind == MECH_HAM_OSCILLATOR) ? "x"
-                                                                                                   : "phi";
+                        : (s->kind == MECH_HAM_HENON_HEILES || s->kind == MECH_HAM_OSCILLATOR)
+                            ? "x"
+                            : "phi";
     *sec = (struct mech_poincare_section){0, sj ? api_number(sj, "value", 0.0) : 0.0, 0};
     int found = 0;
     for (size_t i = 0; i < 2; i++)
@@ -58,10 +62,9 @@ static int read_starts(struct api_call *c, const json_t *orbits, const struct me
         const json_t *os = json_object_get(ok, "on_section");
         struct mech_error e;
         mech_error_clear(&e);
-        enum mech_status st = mech_poincare_start(s, sec, api_number(ok, "energy", 0.0),
-                                                  json_number_value(json_array_get(os, 0)),
-                                                  json_number_value(json_array_get(os, 1)), 1,
-                                                  y0 + 4 * k, &e);
+        enum mech_status st = mech_poincare_start(
+            s, sec, api_number(ok, "energy", 0.0), json_number_value(json_array_get(os, 0)),
+            json_number_value(json_array_get(os, 1)), 1, y0 + 4 * k, &e);
         if (st != MECH_OK) {
             if (!strcmp(e.param, "section_start")) snprintf(e.param, sizeof e.param, "on_section");
             api_call_fail_core(c, st, &e, prefix);
@@ -112,9 +115,10 @@ static json_t *section_json(struct api_call *c, const struct mech_ham_system *s,
     json_t *sj = json_object(), *plane = json_array();
     set(sj, "coordinate", json_string(mech_ham_coordinate_name(s, sec->index)));
     set(sj, "value", api_real(c, sec->value));
-    set(sj, "direction", json_string(sec->angle ? "in the direction of rotation (sign of p_phi), "
-                                                  "phi taken modulo 2 pi"
-                                                : "increasing (its momentum > 0)"));
+    set(sj, "direction",
+        json_string(sec->angle ? "in the direction of rotation (sign of p_phi), "
+                                 "phi taken modulo 2 pi"
+                               : "increasing (its momentum > 0)"));
     json_array_append_new(plane, json_string(mech_ham_coordinate_name(s, o)));
     json_array_append_new(plane, json_string(mech_ham_momentum_name(s, o)));
     set(sj, "plane", plane);
@@ -148,8 +152,8 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
     if (!read_starts(c, orbits, &s, &sec, y0)) goto done;
     const double tau = mech_ham_time_scale(&s, y0);
     struct api_ham_integ hi;
-    if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0,
-                                 tau, t_max / tau, "gauss6", 50.0, &hi))
+    if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
+                                 t_max / tau, "gauss6", 50.0, &hi))
         goto done;
     if (api_dry_run_requested(body)) {
         out = api_dry_run_answer(c, api_ham_selection(c, &hi));
@@ -158,7 +162,8 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
     sink.orbits = json_array();
     struct mech_poincare_problem pp = {&s, sec, NULL, t_max, maxc, hi.m, hi.ch.opt};
     struct mech_poincare_totals tot;
-    enum mech_status st = mech_poincare_orbits(&pp, y0, no, &c->budget, orbit_json, &sink, &tot, &e);
+    enum mech_status st =
+        mech_poincare_orbits(&pp, y0, no, &c->budget, orbit_json, &sink, &tot, &e);
     if (st != MECH_OK) {
         api_call_fail_core(c, st, &e, "");
         goto done;

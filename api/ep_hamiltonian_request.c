@@ -11,33 +11,39 @@
 #include "ep_hamiltonian_request.h"
 #include "mech/ham_state_scale.h"
 
+/* ---- the system ---------------------------------------------------------------- */
+
+/* The catalog's names, in enum mech_ham_kind's order (the schema's enum). */
 static const char *const kind_names[MECH_HAM_KIND_COUNT] = {
-    "oscillator", "pendulum", "spherical_pendulum", "cylinder", "central", "henon_heiles",
-    "potential_3d"};
+    "oscillator", "pendulum",     "spherical_pendulum", "cylinder",
+    "central",    "henon_heiles", "potential_3d"};
 
 static const char *hamiltonian_text(const struct mech_ham_system *s, const char *potential)
 {
     switch (s->kind) {
-    case MECH_HAM_OSCILLATOR: return "H = sum_i p_i^2/(2m) + k_i q_i^2/2";
+    case MECH_HAM_OSCILLATOR:
+        return "H = sum_i p_i^2/(2m) + k_i q_i^2/2";
     case MECH_HAM_PENDULUM:
         return "H = p_theta^2/(2 m l^2) + m g l (1 - cos theta), theta from the downward vertical";
     case MECH_HAM_SPHERICAL_PENDULUM:
         return "H = p_theta^2/(2 m l^2) + p_phi^2/(2 m l^2 sin^2 theta) + m g l (1 - cos theta), "
                "theta from the downward vertical";
-    case MECH_HAM_CYLINDER: return "H = p_z^2/(2m) + p_phi^2/(2 m R^2) + k (R^2 + z^2)/2";
-    case MECH_HAM_CENTRAL: return "H = p_r^2/(2m) + p_phi^2/(2 m r^2) + k r^n";
+    case MECH_HAM_CYLINDER:
+        return "H = p_z^2/(2m) + p_phi^2/(2 m R^2) + k (R^2 + z^2)/2";
+    case MECH_HAM_CENTRAL:
+        return "H = p_r^2/(2m) + p_phi^2/(2 m r^2) + k r^n";
     case MECH_HAM_HENON_HEILES:
         return "H = (p_x^2 + p_y^2)/2 + (x^2 + y^2)/2 + x^2 y - y^3/3 (dimensionless)";
     default:
-        if (!strcmp(potential, "harmonic")) return "H = |p|^2/(2m) + (k_x x^2 + k_y y^2 + k_z z^2)/2";
+        if (!strcmp(potential, "harmonic"))
+            return "H = |p|^2/(2m) + (k_x x^2 + k_y y^2 + k_z z^2)/2";
         if (!strcmp(potential, "kepler")) return "H = |p|^2/(2m) - G M m / r";
         return "H = |p|^2/(2m) + k r^n";
     }
 }
 
 /* Parse /system (schema-validated) and the dof for the oscillator. */
-int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q,
-                        struct mech_ham_system *s)
+int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q, struct mech_ham_system *s)
 {
     memset(s, 0, sizeof *s);
     const char *name = api_string(js, "name", "");
@@ -77,7 +83,9 @@ int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q,
         }
         break;
     }
-    case MECH_HAM_CYLINDER: s->strength = api_number(js, "k", 0.0); break;
+    case MECH_HAM_CYLINDER:
+        s->strength = api_number(js, "k", 0.0);
+        break;
     case MECH_HAM_CENTRAL:
         s->strength = api_number(js, "k", 0.0);
         s->power = api_number(js, "n", 0.0);
@@ -87,7 +95,8 @@ int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q,
         if (!strcmp(pot, "harmonic")) {
             s->potential = MECH_HAM_POT_HARMONIC;
             const json_t *k = json_object_get(js, "k");
-            for (size_t i = 0; i < 3; i++) s->k[i] = json_number_value(json_array_get(k, i));
+            for (size_t i = 0; i < 3; i++)
+                s->k[i] = json_number_value(json_array_get(k, i));
         } else if (!strcmp(pot, "kepler")) {
             s->potential = MECH_HAM_POT_POWER;
             s->power = -1.0;
@@ -99,7 +108,8 @@ int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q,
         }
         break;
     }
-    default: break;
+    default:
+        break;
     }
     struct mech_error e;
     mech_error_clear(&e);
@@ -169,7 +179,8 @@ json_t *api_ham_system_json(const struct mech_ham_system *s, const json_t *js)
     struct mech_ham_conserved cl[MECH_HAM_MAX_CONSERVED];
     const size_t nc = mech_ham_conserved_list(s, cl);
     for (size_t k = 0; k < nc; k++)
-        if (cl[k].cyclic) json_array_append_new(cyc, json_string(mech_ham_coordinate_name(s, cl[k].index)));
+        if (cl[k].cyclic)
+            json_array_append_new(cyc, json_string(mech_ham_coordinate_name(s, cl[k].index)));
     json_object_set_new_nocheck(o, "cyclic_coordinates", cyc);
     json_object_set_new_nocheck(o, "separable", json_boolean(mech_ham_separable(s, NULL)));
     return o;
@@ -177,14 +188,13 @@ json_t *api_ham_system_json(const struct mech_ham_system *s, const json_t *js)
 
 /* ---- integrator choice ---------------------------------------------------------- */
 
-
 /* Parse an integrator block for system s: second-order methods for separable
  * systems are accepted here; others go to the shared parser. Without a block:
  * def_method at dt = tau / def_div. Returns 0 after recording an error. */
 int api_ham_integrator_read(struct api_call *c, const json_t *block, const char *pointer,
-                          const struct mech_ham_system *s, const double *y0, double tau,
-                          double span, const char *def_method, double def_div,
-                          struct api_ham_integ *out)
+                            const struct mech_ham_system *s, const double *y0, double tau,
+                            double span, const char *def_method, double def_div,
+                            struct api_ham_integ *out)
 {
     memset(out, 0, sizeof *out);
     /* Chosen settings scale atol to the smallest scale of the state's SI
@@ -264,7 +274,7 @@ json_t *api_ham_selection(struct api_call *c, const struct api_ham_integ *hi)
 }
 
 json_t *api_ham_diagnostics(struct api_call *c, const struct api_ham_integ *hi,
-                               const struct mech_ode_stats *st, int second_order, double tau)
+                            const struct mech_ode_stats *st, int second_order, double tau)
 {
     json_t *d = json_object();
     api_integrator_block_stats(c, d, &hi->ch, st);
@@ -293,8 +303,7 @@ json_t *api_ham_drift_json(struct api_call *c, const struct mech_ham_drift *d)
 }
 
 json_t *api_ham_conserved_json(struct api_call *c, const struct mech_ham_system *s, size_t n,
-                              const struct mech_ham_conserved *cl,
-                              const struct mech_ham_drift *dr)
+                               const struct mech_ham_conserved *cl, const struct mech_ham_drift *dr)
 {
     json_t *a = json_array();
     for (size_t k = 0; k < n; k++) {
@@ -308,7 +317,6 @@ json_t *api_ham_conserved_json(struct api_call *c, const struct mech_ham_system 
     }
     return a;
 }
-
 
 const char *api_ham_kind_name(const struct mech_ham_system *s)
 {

@@ -15,7 +15,7 @@
 struct api_ham_integ {
     struct api_integrator_choice ch;
     const struct mech_integrator *m;
-    int own;          /* 1: our default (no block) or a second-order method we accepted */
+    int own; /* 1: our default (no block) or a second-order method we accepted */
     char reason[400];
 };
 

@@ -116,18 +116,28 @@ static int answer_finite(const struct mech_schw_answer *a)
     if (a->has_at_r) {
         const struct mech_schw_at_r *r = &a->at_r;
         const struct mech_schw_circular *co = &r->circ;
-        const double x[6] = {r->r, r->r_over_rs, r->weak_field_potential,
+        const double x[6] = {r->r,         r->r_over_rs,         r->weak_field_potential,
                              r->stat.rate, r->stat.rate_deficit, r->stat.redshift};
-        const double y[9] = {co->rate, co->rate_deficit, co->energy, co->binding_efficiency,
-                             co->angular_momentum, co->local_speed, co->omega, co->period_t,
+        const double y[9] = {co->rate,
+                             co->rate_deficit,
+                             co->energy,
+                             co->binding_efficiency,
+                             co->angular_momentum,
+                             co->local_speed,
+                             co->omega,
+                             co->period_t,
                              co->period_tau};
         if (!all_finite(x, 6) || (co->stability != MECH_SCHW_ORBIT_NONE && !all_finite(y, 9)))
             return 0;
     }
     if (a->has_clock) {
         const struct mech_schw_clock_compare *c = &a->clock;
-        const double x[7] = {c->gravitational, c->velocity, c->net, c->first_order_gravitational,
-                             c->first_order_velocity, c->first_order_net,
+        const double x[7] = {c->gravitational,
+                             c->velocity,
+                             c->net,
+                             c->first_order_gravitational,
+                             c->first_order_velocity,
+                             c->first_order_net,
                              c->uniform_field_gravitational};
         if (!all_finite(x, 7)) return 0;
     }
@@ -140,16 +150,16 @@ static int answer_finite(const struct mech_schw_answer *a)
         const struct mech_schw_potential *v = &a->potential;
         const double x[3] = {v->L, v->photon_max_r, v->photon_max_W};
         const double y[4] = {v->unstable_r, v->unstable_V, v->stable_r, v->stable_V};
-        if (!all_finite(x, 3) || (v->n_extrema && !all_finite(y, 4)) ||
-            !all_finite(v->r, v->n) || !all_finite(v->massive, v->n) ||
-            !all_finite(v->massive_minus_one, v->n) || !all_finite(v->photon, v->n))
+        if (!all_finite(x, 3) || (v->n_extrema && !all_finite(y, 4)) || !all_finite(v->r, v->n) ||
+            !all_finite(v->massive, v->n) || !all_finite(v->massive_minus_one, v->n) ||
+            !all_finite(v->photon, v->n))
             return 0;
     }
     return 1;
 }
 
-enum mech_status mech_schw_answer(const struct mech_schw_request *req,
-                                  struct mech_schw_answer *out, struct mech_error *err)
+enum mech_status mech_schw_answer(const struct mech_schw_request *req, struct mech_schw_answer *out,
+                                  struct mech_error *err)
 {
     memset(out, 0, sizeof *out);
     const struct mech_gr_units *u = &req->units;
@@ -168,8 +178,8 @@ enum mech_status mech_schw_answer(const struct mech_schw_request *req,
     }
     if (req->has_reference_r) {
         /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
-        st = mech_schw_clock_compare(req->reference_r, req->r, mech_gr_len_out(u, 1.0),
-                                     &out->clock, err);
+        st = mech_schw_clock_compare(req->reference_r, req->r, mech_gr_len_out(u, 1.0), &out->clock,
+                                     err);
         if (st != MECH_OK) return st;
         out->has_clock = 1;
     }

@@ -9,8 +9,8 @@
 #include "mech/constants.h"
 #include "mech/poincare.h"
 
-enum mech_status mech_apsides_find(const struct mech_ham_system *s, const double *y0,
-                                   double t_end, const struct mech_integrator *method,
+enum mech_status mech_apsides_find(const struct mech_ham_system *s, const double *y0, double t_end,
+                                   const struct mech_integrator *method,
                                    struct mech_ode_options opt, const struct mech_budget *budget,
                                    long steps_used, struct mech_apsides *out,
                                    struct mech_error *err)

@@ -9,7 +9,8 @@
 void mech_liouville_reference_start(const struct mech_liouville_problem *p, double *y)
 {
     const size_t dim = mech_ham_dim(p->sys);
-    for (size_t i = 0; i < dim; i++) y[i] = 0.0;
+    for (size_t i = 0; i < dim; i++)
+        y[i] = 0.0;
     if (p->reference) {
         memcpy(y, p->reference, dim * sizeof *y);
     } else if (p->shape == MECH_LIOUVILLE_POLYGON || p->shape == MECH_LIOUVILLE_CLOUD) {

@@ -12,8 +12,7 @@ enum mech_status mech_poincare_orbits(const struct mech_poincare_problem *base,
                                       const double *starts, size_t n_orbits,
                                       const struct mech_budget *budget,
                                       mech_poincare_orbit_fn visit, void *ctx,
-                                      struct mech_poincare_totals *totals,
-                                      struct mech_error *err)
+                                      struct mech_poincare_totals *totals, struct mech_error *err)
 {
     memset(totals, 0, sizeof *totals);
     const size_t maxc = base->max_crossings;

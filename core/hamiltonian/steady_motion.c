@@ -9,8 +9,7 @@
 int mech_ham_conical_motion(const struct mech_ham_system *s, double theta,
                             struct mech_ham_conical *out)
 {
-    if (s->kind != MECH_HAM_SPHERICAL_PENDULUM || !(theta > 0.0 && theta < 0.5 * MECH_PI))
-        return 0;
+    if (s->kind != MECH_HAM_SPHERICAL_PENDULUM || !(theta > 0.0 && theta < 0.5 * MECH_PI)) return 0;
     const double wphi = sqrt(s->g / (s->length * cos(theta)));
     const double sn = sin(theta);
     out->theta = theta;

@@ -28,10 +28,10 @@ int mech_ham_conical_motion(const struct mech_ham_system *s, double theta,
 /* The circular orbit of H = p_r^2/(2m) + p_phi^2/(2 m r^2) + k r^n at radius r:
  * dH/dr = 0 with p_r = 0 gives p_phi^2 = m k n r^(n+2); period 2 pi m r^2/p_phi. */
 struct mech_ham_central_circular {
-    double r;     /* m */
-    double p_phi; /* J s */
+    double r;      /* m */
+    double p_phi;  /* J s */
     double period; /* s */
-    int stable;   /* n > -2 */
+    int stable;    /* n > -2 */
 };
 
 /* The circular orbit at radius r > 0 of a central power law. Returns 1 and

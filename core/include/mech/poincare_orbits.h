@@ -18,6 +18,9 @@
  * the orbit). */
 typedef int (*mech_poincare_orbit_fn)(void *ctx, size_t k, const struct mech_poincare_result *r);
 
+/* The most crossings one orbit records (the buffer is 7 doubles a crossing). */
+#define MECH_POINCARE_ORBITS_MAX_CROSSINGS 100000
+
 /* Totals over the orbits run. */
 struct mech_poincare_totals {
     struct mech_ode_stats stats; /* steps, rejected steps, evaluations summed */
@@ -30,12 +33,10 @@ struct mech_poincare_totals {
  * MECH_POINCARE_ORBITS_MAX_CROSSINGS; MECH_EBUDGET when the steps are spent
  * before an orbit starts; MECH_ENOMEM (also when visit refuses); the statuses
  * of mech_poincare_run. totals cover the orbits visited. err may be NULL. */
-#define MECH_POINCARE_ORBITS_MAX_CROSSINGS 100000
 enum mech_status mech_poincare_orbits(const struct mech_poincare_problem *base,
                                       const double *starts, size_t n_orbits,
                                       const struct mech_budget *budget,
                                       mech_poincare_orbit_fn visit, void *ctx,
-                                      struct mech_poincare_totals *totals,
-                                      struct mech_error *err);
+                                      struct mech_poincare_totals *totals, struct mech_error *err);
 
 #endif

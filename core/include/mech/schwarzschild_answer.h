@@ -26,7 +26,7 @@
 struct mech_schw_request {
     struct mech_gr_units units;
     int has_r;
-    double r;           /* static clock and circular orbit at r */
+    double r; /* static clock and circular orbit at r */
     int has_reference_r;
     double reference_r; /* static reference clock (needs r) */
     int has_infall_from;
@@ -69,7 +69,7 @@ struct mech_schw_answer {
     double isco_binding_efficiency; /* 1 - sqrt(8/9) */
     int has_at_r;
     struct mech_schw_at_r at_r;
-    int has_clock; /* reference_r given */
+    int has_clock;                        /* reference_r given */
     struct mech_schw_clock_compare clock; /* fractions, relative to the reference clock */
     int has_infall;
     struct mech_radial_infall infall; /* proper times in the caller's time unit */
@@ -96,8 +96,8 @@ struct mech_schw_answer {
  *     this input (overflow or a singularity)".
  * out is always initialised (safe to free); on failure it holds no arrays.
  * err may be NULL. */
-enum mech_status mech_schw_answer(const struct mech_schw_request *req,
-                                  struct mech_schw_answer *out, struct mech_error *err);
+enum mech_status mech_schw_answer(const struct mech_schw_request *req, struct mech_schw_answer *out,
+                                  struct mech_error *err);
 
 /* Free the arrays of an answer (safe on a zeroed or failed one). */
 void mech_schw_answer_free(struct mech_schw_answer *a);

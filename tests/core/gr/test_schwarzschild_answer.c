@@ -165,8 +165,8 @@ static void test_infall(void)
     /* the Newtonian free-fall time (pi/2) sqrt(r0^3/(2GM)), exactly */
     CHECK_CLOSE(a.infall.to_singularity, 0.5 * MECH_PI * sqrt(r0 * r0 * r0 / (2.0 * GM)), 1e-13, 0);
     /* horizon to r = 0 from far away: (4/3) GM/c^3 */
-    CHECK_CLOSE(a.infall.horizon_to_singularity, 4.0 / 3.0 * GM / (MECH_C * MECH_C * MECH_C),
-                1e-5, 0);
+    CHECK_CLOSE(a.infall.horizon_to_singularity, 4.0 / 3.0 * GM / (MECH_C * MECH_C * MECH_C), 1e-5,
+                0);
     CHECK_CLOSE(a.infall.to_horizon + a.infall.horizon_to_singularity, a.infall.to_singularity,
                 1e-14, 0);
     mech_schw_answer_free(&a);
@@ -184,8 +184,8 @@ static void test_potential(void)
     CHECK_EQ_INT(v->n_extrema, 2);
     CHECK_CLOSE(v->unstable_r, 4.0, 1e-15, 0);
     CHECK_CLOSE(v->stable_r, 12.0, 1e-15, 0);
-    CHECK_CLOSE(v->unstable_V, 1.0, 1e-15, 0);          /* (1/2)(1 + 1) */
-    CHECK_CLOSE(v->stable_V, 25.0 / 27.0, 1e-15, 0);    /* (5/6)(1 + 1/9) */
+    CHECK_CLOSE(v->unstable_V, 1.0, 1e-15, 0);       /* (1/2)(1 + 1) */
+    CHECK_CLOSE(v->stable_V, 25.0 / 27.0, 1e-15, 0); /* (5/6)(1 + 1/9) */
     CHECK_CLOSE(v->photon_max_r, 3.0, 0, 0);
     CHECK_CLOSE(v->photon_max_W, 1.0 / 27.0, 1e-15, 0);
     /* default range: r_s to max(30, 3 r_stable) = 36 */

@@ -36,9 +36,9 @@ static void test_kepler(void)
     struct mech_apsides ap;
     struct mech_error err;
     mech_error_clear(&err);
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 4.9 * T, mech_ode_method_find("gauss6"), opt, &b, 0,
-                                   &ap, &err),
-                 MECH_OK);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 4.9 * T, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &err),
+        MECH_OK);
     CHECK(!ap.radial);
     CHECK_EQ_INT((int)ap.n, 5);
     for (size_t k = 0; k < ap.n; k++) {
@@ -51,9 +51,9 @@ static void test_kepler(void)
     CHECK_CLOSE(ap.angle_near_circular, MECH_PI, 1e-15, 0);
     mech_apsides_free(&ap);
     /* one pericentre only: no measured angle */
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 0.9 * T, mech_ode_method_find("gauss6"), opt, &b, 0,
-                                   &ap, &err),
-                 MECH_OK);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 0.9 * T, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &err),
+        MECH_OK);
     CHECK_EQ_INT((int)ap.n, 1);
     CHECK(!ap.has_measured && isnan(ap.angle_measured));
     mech_apsides_free(&ap);
@@ -68,9 +68,9 @@ static void test_oscillator(void)
     struct mech_ode_options opt = {0, 0, 1e-3};
     struct mech_budget b = mech_budget_make(10000000, 120.0);
     struct mech_apsides ap;
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 20.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap,
-                                   NULL),
-                 MECH_OK);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 20.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, NULL),
+        MECH_OK);
     CHECK(ap.n >= 5);
     CHECK_CLOSE(ap.angle_measured, 0.5 * MECH_PI, 1e-10, 0);
     CHECK_CLOSE(ap.angle_near_circular, 0.5 * MECH_PI, 1e-15, 0);
@@ -93,30 +93,32 @@ static void test_edges(void)
     /* radial motion */
     const double yr[4] = {1.0, 0.0, 0.1, 0.0};
     mech_error_clear(&e);
-    CHECK_EQ_INT(mech_apsides_find(&s, yr, 1.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &e),
-                 MECH_OK);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, yr, 1.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &e),
+        MECH_OK);
     CHECK(ap.radial && ap.n == 0 && ap.t == NULL);
     mech_apsides_free(&ap);
     /* the flow spent the budget */
     const double y0[4] = {1.0, 0.0, 0.0, 0.9};
     mech_error_clear(&e);
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 1.0, mech_ode_method_find("gauss6"), opt, &b, 1000, &ap,
-                                   &e),
-                 MECH_EBUDGET);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 1.0, mech_ode_method_find("gauss6"), opt, &b, 1000, &ap, &e),
+        MECH_EBUDGET);
     CHECK(strstr(e.text, "before the apsides") != NULL);
     CHECK(ap.t == NULL);
     mech_apsides_free(&ap);
     /* too few steps for the run */
     mech_error_clear(&e);
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 100.0, mech_ode_method_find("gauss6"), opt, &b, 990,
-                                   &ap, &e),
-                 MECH_EBUDGET);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 100.0, mech_ode_method_find("gauss6"), opt, &b, 990, &ap, &e),
+        MECH_EBUDGET);
     mech_apsides_free(&ap);
     /* not a central potential */
     s.kind = MECH_HAM_HENON_HEILES;
     mech_error_clear(&e);
-    CHECK_EQ_INT(mech_apsides_find(&s, y0, 1.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &e),
-                 MECH_EINVAL);
+    CHECK_EQ_INT(
+        mech_apsides_find(&s, y0, 1.0, mech_ode_method_find("gauss6"), opt, &b, 0, &ap, &e),
+        MECH_EINVAL);
     CHECK(!strcmp(e.param, "system"));
     mech_apsides_free(&ap);
 }

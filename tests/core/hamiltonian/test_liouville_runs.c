@@ -63,7 +63,8 @@ static void test_linear_flow(void)
     CHECK_EQ_INT((int)r.n_runs, 2);
     const double A0 = MECH_PI * 0.5 * 2.0;
     const double step_det = 1.0 - pow(h, 6) / 72.0 + pow(h, 8) / 576.0;
-    for (int k = 0; k < 2; k++) CHECK_CLOSE(r.run[k].area0, A0, 1e-14, 0);
+    for (int k = 0; k < 2; k++)
+        CHECK_CLOSE(r.run[k].area0, A0, 1e-14, 0);
     for (size_t i = 0; i < 3; i++) {
         CHECK_CLOSE(r.run[0].t[i], 5.0 * (double)i, 1e-15, 0);
         /* symplectic: det 1 and the area kept */

@@ -48,8 +48,8 @@ static void test_oscillator(void)
     CHECK_EQ_INT(mech_ham_system_check(&sys, NULL), MECH_OK);
     /* two starts on x = 0 with p_x > 0 */
     const double starts[8] = {0.0, 0.3, 1.0, -0.2, 0.0, -0.1, 0.5, 0.7};
-    struct mech_poincare_problem p = {&sys, {0, 0.0, 0}, NULL, 30.0, 4,
-                                      mech_ode_method_find("gauss6"), {0, 0, 1e-3}};
+    struct mech_poincare_problem p = {
+        &sys, {0, 0.0, 0}, NULL, 30.0, 4, mech_ode_method_find("gauss6"), {0, 0, 1e-3}};
     struct mech_budget b = mech_budget_make(100000000, 120.0);
     struct seen s = {0, 0, (size_t)-1, starts, 1};
     struct mech_poincare_totals tot;
@@ -66,7 +66,8 @@ static void test_oscillator(void)
     CHECK_EQ_INT((int)s.calls, 1);
     /* a budget that one orbit spends: orbit 1 never starts or stops short */
     s = (struct seen){0, 0, (size_t)-1, starts, 1};
-    CHECK_EQ_INT(mech_poincare_orbits(&p, starts, 1, &b, check_oscillator, &s, &tot, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_poincare_orbits(&p, starts, 1, &b, check_oscillator, &s, &tot, NULL),
+                 MECH_OK);
     b = mech_budget_make(tot.stats.steps, 120.0);
     s = (struct seen){0, 0, (size_t)-1, starts, 1};
     mech_error_clear(&e);
@@ -111,8 +112,8 @@ static void test_wrap(void)
     CHECK_EQ_INT(mech_ham_system_check(&sys, NULL), MECH_OK);
     /* section theta = 0.5 upwards; the plane (phi, p_phi); phi winds past 2 pi */
     const double start[4] = {0.4, 0.3, 0.2, 0.7};
-    struct mech_poincare_problem p = {&sys, {0, 0.5, 0}, NULL, 100.0, 6,
-                                      mech_ode_method_find("gauss6"), {0, 0, 1e-3}};
+    struct mech_poincare_problem p = {
+        &sys, {0, 0.5, 0}, NULL, 100.0, 6, mech_ode_method_find("gauss6"), {0, 0, 1e-3}};
     struct mech_budget b = mech_budget_make(100000000, 120.0);
     struct seen s = {0, 0, (size_t)-1, start, 1};
     struct mech_poincare_totals tot;
