@@ -311,7 +311,7 @@ void *watcher_main(void *arg)
                                      "the client closed the connection; the request was not run");
                 watch_unlink(h, r);
                 r->state = REQ_DONE;
-                MHD_resume_connection(r->conn); /* r may be freed from here on */
+                srv_io_resume(r->io, r->conn); /* r may be freed from here on */
             }
         }
         pthread_mutex_unlock(&h->watch_mu);

@@ -175,7 +175,7 @@ static void req_run(struct srv_job *job)
         run_api(r);
     watch_remove(r->http, r);
     r->state = REQ_DONE;
-    MHD_resume_connection(r->conn);
+    srv_io_resume(r->io, r->conn);
 }
 
 static void req_cancel(struct srv_job *job)
@@ -185,7 +185,7 @@ static void req_cancel(struct srv_job *job)
                          "the server is shutting down; the request was not run");
     watch_remove(r->http, r);
     r->state = REQ_DONE;
-    MHD_resume_connection(r->conn);
+    srv_io_resume(r->io, r->conn);
 }
 
 /* ---- answering --------------------------------------------------------------- */
@@ -525,6 +525,7 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
         r = calloc(1, sizeof *r);
         if (!r) return MHD_NO;
         r->conn = conn;
+        r->io = srv_io_current();
         r->http = h;
         r->sc = sc;
         r->route_index = -1;

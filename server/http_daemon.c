@@ -2,9 +2,10 @@
  * (srv_http_start ... srv_http_stop of http.h; part of the HTTP front end,
  * see http.c).
  *
- * I/O THREADS. libmicrohttpd runs a pool of --io-threads epoll threads (its
- * MHD_OPTION_THREAD_POOL_SIZE; default 2, the machine's cores), each with its
- * own connections; suspend/resume works per connection in that mode.
+ * I/O THREADS. --io-threads (default 2, the machine's cores) threads of our
+ * own, each running one libmicrohttpd daemon in epoll mode with its own
+ * connections (io_loop.c says why not libmicrohttpd's internal thread pool);
+ * suspend/resume works per connection in that mode.
  */
 #ifdef __linux__
 #define _GNU_SOURCE /* POLLRDHUP */
@@ -39,8 +40,8 @@
 
 /* libmicrohttpd's own connection limit: --max-connections plus headroom for
  * connections accepted before the ones shut down to make room have closed
- * (libmicrohttpd accepts up to 10 at a time per I/O thread, and splits its
- * limit evenly between the threads). A connection over this limit is closed
+ * (libmicrohttpd accepts up to 10 at a time per I/O thread; the limit is
+ * split evenly between the threads, srv_io_start). A connection over this limit is closed
  * by libmicrohttpd at once, unanswered. */
 static unsigned int conn_hard_limit(const struct srv_config *cfg)
 {
@@ -72,7 +73,6 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     if (!h) return NULL;
     h->cfg = cfg;
     h->pool = pool;
-    h->listen_fd = -1;
     pthread_mutex_init(&h->watch_mu, NULL);
     pthread_mutex_init(&h->conn_mu, NULL);
     const size_t n_routes = api_operation_count();
@@ -89,8 +89,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     struct sockaddr_in sin;
     struct sockaddr_in6 sin6;
     struct sockaddr *sa;
-    unsigned int flags = MHD_USE_EPOLL | MHD_USE_INTERNAL_POLLING_THREAD |
-                         MHD_ALLOW_SUSPEND_RESUME | MHD_USE_ERROR_LOG;
+    unsigned int flags = MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_ERROR_LOG;
     memset(&sin, 0, sizeof sin);
     memset(&sin6, 0, sizeof sin6);
     if (inet_pton(AF_INET, cfg->bind, &sin.sin_addr) == 1) {
@@ -111,22 +110,13 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         return NULL;
     }
 
-    /* One I/O thread means no pool: then the pool option, last in the list,
-     * is replaced by the end marker (libmicrohttpd warns about a size of 0 or 1). */
-    unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 0u;
-    enum MHD_OPTION pool_opt = io_threads > 1 ? MHD_OPTION_THREAD_POOL_SIZE : MHD_OPTION_END;
+    unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
     unsigned int hard_limit = conn_hard_limit(cfg);
     ensure_descriptors(cfg, hard_limit);
-    h->daemon = MHD_start_daemon(
-        flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER,
-        mhd_logger, NULL, MHD_OPTION_SOCK_ADDR, sa,
-        MHD_OPTION_CONNECTION_TIMEOUT, SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT,
-        hard_limit, MHD_OPTION_NOTIFY_COMPLETED, on_completed, h,
-        MHD_OPTION_NOTIFY_CONNECTION, on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK,
-        unescape_no_nul, NULL, pool_opt, io_threads, MHD_OPTION_END);
-    if (!h->daemon) {
+    if (srv_io_start(h, io_threads, flags, sa, hard_limit) != 0) {
         srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
+        srv_io_stop(h);
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
         free(h->quick);
@@ -137,9 +127,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         h->watch_started = 1;
     else /* still serves; a hang-up is then only noticed at the deadline */
         srv_log_note("cannot start the hang-up watcher thread");
-    int port = cfg->port;
-    const union MHD_DaemonInfo *info = MHD_get_daemon_info(h->daemon, MHD_DAEMON_INFO_BIND_PORT);
-    if (info && info->port) port = info->port;
+    int port = srv_io_port(h) ? srv_io_port(h) : cfg->port;
     int v6 = sa->sa_family == AF_INET6;
     printf("mechd listening on http://%s%s%s:%d\n", v6 ? "[" : "", cfg->bind, v6 ? "]" : "", port);
     fflush(stdout);
@@ -150,16 +138,7 @@ void srv_http_stop_accepting(struct srv_http *h)
 {
     if (!h) return;
     if (atomic_exchange(&h->stopping, 1)) return;
-    if (h->listen_fd < 0) {
-        MHD_socket fd = MHD_quiesce_daemon(h->daemon);
-        h->listen_fd = fd == MHD_INVALID_SOCKET ? -1 : (int)fd;
-    }
-    /* In epoll mode MHD_quiesce_daemon has taken the socket out of every I/O
-     * thread's epoll set before returning; shutting it down now makes the
-     * kernel refuse new connections (and reset those waiting in the backlog)
-     * during the grace period, instead of holding them unanswered. It is
-     * closed in srv_http_stop, as MHD asks. */
-    if (h->listen_fd >= 0) shutdown(h->listen_fd, SHUT_RDWR);
+    srv_io_quiesce(h);
 }
 
 void srv_http_quiesce(struct srv_http *h)
@@ -193,8 +172,7 @@ void srv_http_stop(struct srv_http *h)
         pthread_mutex_unlock(&h->watch_mu);
         pthread_join(h->watcher, NULL);
     }
-    MHD_stop_daemon(h->daemon);
-    if (h->listen_fd >= 0) close(h->listen_fd);
+    srv_io_stop(h);
     pthread_mutex_destroy(&h->watch_mu);
     pthread_mutex_destroy(&h->conn_mu);
     free(h->quick);

@@ -81,8 +81,23 @@ struct srv_conn {
     struct srv_conn *prev, *next;
 };
 
-struct srv_http {
+/* One I/O thread: a libmicrohttpd daemon in external-polling epoll mode and
+ * the thread that runs it (io_loop.c). */
+struct srv_io {
+    struct srv_http *http;
     struct MHD_Daemon *daemon;
+    pthread_t thread;
+    int started;
+    int wake_fd;         /* eventfd: quiesce and stop requests wake the loop */
+    int listen_fd;       /* returned by MHD_quiesce_daemon; closed after stop; -1 before */
+    atomic_int quiesce;  /* asked to stop accepting (srv_io_quiesce) */
+    atomic_int quiesced; /* ... and done, on the I/O thread itself */
+    atomic_int stop;     /* asked to leave the loop (srv_io_stop) */
+};
+
+struct srv_http {
+    struct srv_io *io; /* --io-threads of them (io_loop.c) */
+    int n_io;
     const struct srv_config *cfg;
     struct srv_pool *pool;
     volatile int cancel; /* raised at shutdown; copied into every pooled request's flag */
@@ -93,7 +108,6 @@ struct srv_http {
     int watch_stop;
     int watch_started;
     pthread_t watcher;
-    int listen_fd; /* from MHD_quiesce_daemon, closed after stop; -1 if none */
     atomic_ulong next_id; /* only for request ids when getrandom(2) fails */
     atomic_int stopping;  /* SIGTERM: not accepting; answers carry Connection: close */
     atomic_int inflight; /* requests between first callback and completion */
@@ -122,6 +136,7 @@ enum req_state {
 struct srv_req {
     struct srv_job job; /* first member: the pool hands it back to run/cancel */
     struct MHD_Connection *conn;
+    struct srv_io *io; /* the I/O thread that owns conn (wakes it on resume) */
     char id[SRV_REQUEST_ID_MAX + 1]; /* X-Request-Id: the client's (validated) or generated */
     char client[48];                 /* peer address, numeric */
     char *forwarded_for;             /* owned copy of X-Forwarded-For, or NULL */
@@ -196,6 +211,28 @@ int quick_inline(struct srv_http *h, struct srv_req *r);
  * times --inline-max-us (0 when --inline-max-us is 0): run inline rather than
  * refused when the queue is full. */
 int quick_fits_when_full(const struct srv_http *h, const struct srv_req *r);
+
+/* io_loop.c */
+/* Start n I/O threads, each running one libmicrohttpd daemon (MHD start
+ * `flags` without an internal polling thread) with at most
+ * ceil(conn_limit / n) connections; the first binds `sa` (port from
+ * h->cfg), the others share its listening socket. Returns 0, or -1 with
+ * whatever started left for srv_io_stop. */
+int srv_io_start(struct srv_http *h, unsigned int n, unsigned int flags, const struct sockaddr *sa,
+                 unsigned int conn_limit);
+/* The srv_io of the calling I/O thread; NULL on any other thread. */
+struct srv_io *srv_io_current(void);
+/* MHD_resume_connection(conn), then wake io's loop (io may be NULL: no
+ * wake-up). Any thread. conn may be freed once this returns. */
+void srv_io_resume(struct srv_io *io, struct MHD_Connection *conn);
+/* The bound TCP port (0 if unknown). */
+int srv_io_port(const struct srv_http *h);
+/* Every I/O thread stops accepting (on its own thread; waits up to 2 s for
+ * them), then the listening socket is shut down. Idempotent. */
+void srv_io_quiesce(struct srv_http *h);
+/* Stop and join the I/O threads, stop the daemons (closing their
+ * connections), close the descriptors, free h->io. */
+void srv_io_stop(struct srv_http *h);
 
 /* conn_watch.c */
 void watch_add(struct srv_http *h, struct srv_req *r);

@@ -1,337 +1,30 @@
-/* ep_gr.c — general relativity (the notes' "A Little General Relativity",
- * built as Hartle, "Gravity" ch. 9 and 11; Carroll ch. 5; Schutz ch. 11):
- *   POST /v1/gr/schwarzschild — radii, clocks and red shift, circular orbits,
- *     the GPS-style clock comparison, the effective potentials;
- *   POST /v1/gr/geodesic — equatorial timelike and null geodesics with the
- *     periapsis advance and the light deflection beside their exact values.
- * The physics is core/gr/ in geometric units (M = 1): schwarzschild.c,
- * radial_infall.c, the units (gr_units.c: GM/c^2, GM/c^3), and for the geodesic
- * the set-up (geodesic_setup.c) and the run (geodesic_run.c over geodesic.c);
- * this file parses, calls them and encodes the answer in the request's units. */
+/* ep_gr_geodesic.c — POST /v1/gr/geodesic: equatorial timelike and null
+ * geodesics of the Schwarzschild geometry with the periapsis advance and the
+ * light deflection beside their exact values (the notes' "A Little General
+ * Relativity", built as Hartle, "Gravity" ch. 9 and 11; Carroll ch. 5).
+ * The physics is core/gr/ in geometric units (M = 1): the set-up from the
+ * request's initial-condition form (geodesic_setup.c) and the run with its
+ * references (geodesic_run.c over geodesic.c); this file parses the request
+ * (its units with api/ep_gr_units.c), calls them and encodes the answer in
+ * the request's units. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "endpoint.h"
+#include "ep_gr_units.h"
 #include "integrator_block.h"
+#include "mech/constants.h"
 #include "mech/geodesic.h"
 #include "mech/geodesic_run.h"
-#include "mech/constants.h"
 #include "mech/geodesic_setup.h"
 #include "mech/gr_units.h"
-#include "mech/radial_infall.h"
-#include "mech/schwarzschild.h"
 #include "trajectory_request.h"
 
-/* Constants (documented in the routes' descriptions); c, G and the GM values
- * are mech/constants.h's, used through mech/gr_units.h. */
+/* Constants (documented in the route's description). */
 #define GR_ARCSEC (180.0 * 3600.0 / MECH_PI)
 #define GR_CENTURY_S (36525.0 * 86400.0) /* Julian century, s */
-
-/* ---- units ------------------------------------------------------------------------ */
-
-/* Parse M and units; the set-up and its checks are mech_gr_units_init.
- * Returns 0 after recording an error. */
-static int gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_units *u)
-{
-    const int geometric = !strcmp(api_string_of(body, "units"), "geometric");
-    const json_t *M = json_object_get(body, "M");
-    enum mech_gr_mass kind = MECH_GR_MASS_NONE;
-    double value = NAN;
-    if (json_is_string(M)) {
-        kind = !strcmp(json_string_value(M), "sun") ? MECH_GR_MASS_SUN : MECH_GR_MASS_EARTH;
-    } else if (json_is_object(M)) {
-        kind = MECH_GR_MASS_GM;
-        value = api_number(M, "gm", 0);
-    } else if (M) {
-        kind = MECH_GR_MASS_KG;
-        value = json_number_value(M);
-    }
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st = mech_gr_units_init(geometric, kind, value, u, &e);
-    if (st == MECH_EDOMAIN) api_call_domain(c, "/M", "%s", e.text);
-    if (st != MECH_OK && st != MECH_EDOMAIN) api_call_invalid(c, "/M", "%s", e.text);
-    return st == MECH_OK;
-}
-
-static json_t *gr_units_json(struct api_call *c, const struct mech_gr_units *u)
-{
-    json_t *j = json_object();
-    json_object_set_new_nocheck(j, "system", json_string(u->geometric ? "geometric" : "SI"));
-    json_object_set_new_nocheck(j, "length", json_string(u->geometric ? "GM/c^2" : "m"));
-    json_object_set_new_nocheck(j, "time", json_string(u->geometric ? "GM/c^3" : "s"));
-    json_object_set_new_nocheck(j, "specific_angular_momentum",
-                                json_string(u->geometric ? "GM/c" : "m^2/s"));
-    json_object_set_new_nocheck(j, "speed", json_string(u->geometric ? "c" : "m/s"));
-    json_object_set_new_nocheck(j, "specific_energy", json_string("E/(m c^2), dimensionless"));
-    json_object_set_new_nocheck(j, "angle", json_string("rad"));
-    json_object_set_new_nocheck(j, "c", api_real(c, MECH_C));
-    if (u->has_mass) {
-        json_object_set_new_nocheck(j, "GM", api_real(c, u->GM));
-        json_object_set_new_nocheck(j, "GM_over_c2", api_real(c, u->m));
-        json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
-        json_object_set_new_nocheck(j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
-    }
-    return j;
-}
-
-static const char *stability_name(enum mech_schw_stability s)
-{
-    switch (s) {
-    case MECH_SCHW_ORBIT_STABLE:
-        return "stable";
-    case MECH_SCHW_ORBIT_UNSTABLE:
-        return "unstable";
-    case MECH_SCHW_ORBIT_MARGINAL:
-        return "marginal";
-    default:
-        return "none";
-    }
-}
-
-/* ===================================================================================== */
-/* POST /v1/gr/schwarzschild                                                              */
-
-json_t *api_op_gr_schwarzschild(struct api_call *c, const json_t *body)
-{
-    struct mech_gr_units u;
-    if (!gr_units_read(c, body, &u)) return NULL;
-    struct mech_error e;
-    mech_error_clear(&e);
-    json_t *out = json_object();
-    json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
-    json_object_set_new_nocheck(out, "schwarzschild_radius",
-                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_HORIZON)));
-    json_object_set_new_nocheck(out, "photon_sphere",
-                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_PHOTON_SPHERE)));
-    json_object_set_new_nocheck(out, "isco", api_real(c, mech_gr_len_out(&u, MECH_SCHW_ISCO)));
-    json_object_set_new_nocheck(out, "critical_impact_parameter",
-                                api_real(c, mech_gr_len_out(&u, MECH_SCHW_CRITICAL_IMPACT)));
-    json_object_set_new_nocheck(out, "isco_binding_efficiency",
-                                api_real(c, MECH_SCHW_ISCO_BINDING_EFFICIENCY));
-
-    const json_t *rj = json_object_get(body, "r"), *refj = json_object_get(body, "reference_r");
-    if (refj && !rj) {
-        api_call_invalid(c, "/r", "reference_r compares with a circular orbit at r: give r");
-        json_decref(out);
-        return NULL;
-    }
-    if (rj) {
-        const double r = mech_gr_len_in(&u, json_number_value(rj));
-        struct mech_schw_static s;
-        struct mech_schw_circular co;
-        if (mech_schw_static_clock(r, &s, &e) != MECH_OK ||
-            mech_schw_circular_orbit(r, &co, &e) != MECH_OK) {
-            api_call_domain(c, "/r",
-                            "r = %.17g is not outside the horizon r_s = %.17g: no static clock or "
-                            "orbit there",
-                            json_number_value(rj), mech_gr_len_out(&u, 2.0));
-            json_decref(out);
-            return NULL;
-        }
-        json_t *a = json_object();
-        json_object_set_new_nocheck(a, "r",
-                                    api_real(c, json_number_value(rj))); /* echoed exactly */
-        json_object_set_new_nocheck(a, "r_over_rs", api_real(c, r / 2.0));
-        json_object_set_new_nocheck(a, "weak_field_potential", api_real(c, 1.0 / r));
-        json_t *st = json_object();
-        json_object_set_new_nocheck(st, "clock_rate", api_real(c, s.rate));
-        json_object_set_new_nocheck(st, "clock_rate_deficit", api_real(c, s.rate_deficit));
-        json_object_set_new_nocheck(st, "redshift", api_real(c, s.redshift));
-        json_object_set_new_nocheck(a, "static", st);
-        json_t *cj = json_object();
-        json_object_set_new_nocheck(cj, "exists",
-                                    json_boolean(co.stability != MECH_SCHW_ORBIT_NONE));
-        json_object_set_new_nocheck(cj, "stability", json_string(stability_name(co.stability)));
-        if (co.stability != MECH_SCHW_ORBIT_NONE) {
-            json_object_set_new_nocheck(cj, "clock_rate", api_real(c, co.rate));
-            json_object_set_new_nocheck(cj, "clock_rate_deficit", api_real(c, co.rate_deficit));
-            json_object_set_new_nocheck(cj, "energy", api_real(c, co.energy));
-            json_object_set_new_nocheck(cj, "binding_efficiency",
-                                        api_real(c, co.binding_efficiency));
-            json_object_set_new_nocheck(cj, "angular_momentum",
-                                        api_real(c, mech_gr_ang_out(&u, co.angular_momentum)));
-            json_object_set_new_nocheck(cj, "local_speed_over_c", api_real(c, co.local_speed));
-            json_object_set_new_nocheck(cj, "angular_velocity",
-                                        api_real(c, co.omega / mech_gr_time_out(&u, 1.0)));
-            json_object_set_new_nocheck(cj, "period_coordinate",
-                                        api_real(c, mech_gr_time_out(&u, co.period_t)));
-            json_object_set_new_nocheck(cj, "period_proper",
-                                        api_real(c, mech_gr_time_out(&u, co.period_tau)));
-        } else {
-            json_object_set_new_nocheck(cj, "why",
-                                        json_string("no circular geodesic at or inside the photon "
-                                                    "sphere r = 3GM/c^2"));
-        }
-        json_object_set_new_nocheck(a, "circular_orbit", cj);
-        json_object_set_new_nocheck(out, "at_r", a);
-        if (refj) {
-            /* the radii as given, with GM/c^2 in their unit: r - R is formed before scaling */
-            struct mech_schw_clock_compare cc;
-            enum mech_status st2 = mech_schw_clock_compare(
-                json_number_value(refj), json_number_value(rj), mech_gr_len_out(&u, 1.0), &cc, &e);
-            if (st2 != MECH_OK) {
-                api_call_fail_core(c, st2, &e, "");
-                json_decref(out);
-                return NULL;
-            }
-            const double day = 86400e6;
-            json_t *k = json_object();
-            json_object_set_new_nocheck(k, "reference", json_string("static clock at reference_r"));
-            json_object_set_new_nocheck(k, "clock",
-                                        json_string("clock on the circular orbit at r"));
-            json_object_set_new_nocheck(k, "reference_r", api_real(c, json_number_value(refj)));
-            json_object_set_new_nocheck(k, "r", api_real(c, json_number_value(rj)));
-            json_t *f = json_object();
-            json_object_set_new_nocheck(f, "gravitational", api_real(c, cc.gravitational));
-            json_object_set_new_nocheck(f, "velocity", api_real(c, cc.velocity));
-            json_object_set_new_nocheck(f, "net", api_real(c, cc.net));
-            json_object_set_new_nocheck(k, "fractional", f);
-            json_t *d = json_object();
-            json_object_set_new_nocheck(d, "gravitational", api_real(c, cc.gravitational * day));
-            json_object_set_new_nocheck(d, "velocity", api_real(c, cc.velocity * day));
-            json_object_set_new_nocheck(d, "net", api_real(c, cc.net * day));
-            json_object_set_new_nocheck(k, "microseconds_per_day", d);
-            json_t *fo = json_object();
-            json_object_set_new_nocheck(fo, "gravitational",
-                                        api_real(c, cc.first_order_gravitational));
-            json_object_set_new_nocheck(fo, "velocity", api_real(c, cc.first_order_velocity));
-            json_object_set_new(fo, "net", api_real(c, cc.first_order_net));
-            json_object_set_new(fo, "microseconds_per_day_net",
-                                api_real(c, cc.first_order_net * day));
-            json_object_set_new_nocheck(k, "first_order", fo);
-            json_t *uf = json_object();
-            json_object_set_new_nocheck(uf, "gravitational",
-                                        api_real(c, cc.uniform_field_gravitational));
-            json_object_set_new_nocheck(
-                uf, "label",
-                json_string("approximation: the notes' uniform-field red shift g h/c^2, g = "
-                            "GM/R^2 at reference_r, h = r - R (relative error ~h/R beside "
-                            "fractional.gravitational)"));
-            json_object_set_new_nocheck(k, "uniform_field", uf);
-            json_object_set_new_nocheck(
-                k, "left_out",
-                json_string("the reference's own motion (the Earth's rotation: "
-                            "v^2/(2c^2) ~ 1.2e-12 at the equator, 0.1 us/day), "
-                            "other masses, orbit eccentricity"));
-            json_object_set_new_nocheck(out, "clock_comparison", k);
-        }
-    }
-
-    const json_t *ij = json_object_get(body, "infall_from");
-    if (ij) {
-        struct mech_radial_infall f;
-        enum mech_status sti =
-            mech_radial_infall_from_rest(mech_gr_len_in(&u, json_number_value(ij)), &f, &e);
-        if (sti != MECH_OK) {
-            api_call_fail_core(c, sti, &e, "");
-            json_decref(out);
-            return NULL;
-        }
-        json_t *ri = json_object();
-        json_object_set_new_nocheck(ri, "from", api_real(c, json_number_value(ij)));
-        json_object_set_new_nocheck(ri, "proper_time_to_horizon",
-                                    api_real(c, mech_gr_time_out(&u, f.to_horizon)));
-        json_object_set_new_nocheck(ri, "proper_time_to_singularity",
-                                    api_real(c, mech_gr_time_out(&u, f.to_singularity)));
-        json_object_set_new_nocheck(ri, "proper_time_horizon_to_singularity",
-                                    api_real(c, mech_gr_time_out(&u, f.horizon_to_singularity)));
-        json_object_set_new_nocheck(ri, "coordinate_time_to_horizon", json_null());
-        json_object_set_new_nocheck(
-            ri, "note",
-            json_string("a fall from rest; the coordinate (far-away) time to the horizon is "
-                        "infinite, hence null; the proper time to r = 0 equals the Newtonian "
-                        "free-fall time"));
-        json_object_set_new_nocheck(out, "radial_infall", ri);
-    }
-
-    const json_t *ej = json_object_get(body, "effective_potential");
-    if (ej) {
-        const double L = mech_gr_ang_in(&u, api_number(ej, "angular_momentum", 0));
-        double ru, rs;
-        int ne = mech_schw_veff_extrema(L, &ru, &rs);
-        const json_t *a = json_object_get(ej, "r_min"), *b = json_object_get(ej, "r_max");
-        /* sampled evenly in the request's length unit, so given ends are echoed exactly */
-        double rmin = a ? json_number_value(a) : mech_gr_len_out(&u, 2.0);
-        double rmax = b ? json_number_value(b) : mech_gr_len_out(&u, fmax(30.0, ne ? 3.0 * rs : 0.0));
-        if (!(mech_gr_len_in(&u, rmin) >= 2.0)) {
-            api_call_domain(c, "/effective_potential/r_min",
-                            "r_min must be at least r_s = %.17g (outside the horizon)",
-                            mech_gr_len_out(&u, 2.0));
-            json_decref(out);
-            return NULL;
-        }
-        if (!(rmax > rmin) || !isfinite(rmax)) {
-            api_call_invalid(c, "/effective_potential/r_max", "r_max must be above r_min");
-            json_decref(out);
-            return NULL;
-        }
-        const size_t n = (size_t)api_number_of(ej, "samples");
-        double *rr = malloc(n * sizeof *rr), *vm = malloc(n * sizeof *vm),
-               *vp = malloc(n * sizeof *vp);
-        double *v1 = malloc(n * sizeof *v1);
-        if (!rr || !vm || !vp || !v1) {
-            free(rr);
-            free(vm);
-            free(vp);
-            free(v1);
-            mech_error_set(&e, MECH_ENOMEM, NULL, "out of memory");
-            api_call_fail_core(c, MECH_ENOMEM, &e, "");
-            json_decref(out);
-            return NULL;
-        }
-        const double inv_len2 = 1.0 / (mech_gr_len_out(&u, 1.0) * mech_gr_len_out(&u, 1.0));
-        for (size_t i = 0; i < n; i++) {
-            rr[i] = i + 1 == n ? rmax : rmin + (rmax - rmin) * (double)i / (double)(n - 1);
-            const double r = mech_gr_len_in(&u, rr[i]), Lr = L / r;
-            vm[i] = mech_schw_veff_massive(r, L);
-            v1[i] = -2.0 / r + Lr * Lr - 2.0 * Lr * Lr / r; /* V - 1 without cancellation */
-            vp[i] = mech_schw_veff_photon(r) * inv_len2;
-        }
-        json_t *v = json_object();
-        json_object_set_new_nocheck(v, "angular_momentum", api_real(c, mech_gr_ang_out(&u, L)));
-        json_object_set_new_nocheck(
-            v, "massive_normalisation",
-            json_string("(dr/dtau)^2/c^2 + V = (E/mc^2)^2, V = (1 - r_s/r)(1 + "
-                        "L^2/(c^2 r^2)), dimensionless"));
-        json_object_set_new_nocheck(v, "photon_normalisation",
-                                    json_string(u.geometric
-                                                    ? "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
-                                                      "r_s/r)/r^2, (GM/c^2)^-2"
-                                                    : "(1/L^2)(dr/dlambda)^2 = 1/b^2 - W, W = (1 - "
-                                                      "r_s/r)/r^2, 1/m^2"));
-        json_object_set_new_nocheck(v, "r", api_reals(c, rr, n));
-        json_object_set_new_nocheck(v, "massive", api_reals(c, vm, n));
-        json_object_set_new_nocheck(v, "massive_minus_one", api_reals(c, v1, n));
-        json_object_set_new_nocheck(v, "photon", api_reals(c, vp, n));
-        json_t *x = json_object();
-        json_object_set_new_nocheck(x, "count", json_integer(ne));
-        json_object_set_new_nocheck(x, "unstable_r",
-                                    ne ? api_real(c, mech_gr_len_out(&u, ru)) : json_null());
-        json_object_set_new_nocheck(x, "unstable_V",
-                                    ne ? api_real(c, mech_schw_veff_massive(ru, L)) : json_null());
-        json_object_set_new_nocheck(x, "stable_r",
-                                    ne ? api_real(c, mech_gr_len_out(&u, rs)) : json_null());
-        json_object_set_new_nocheck(x, "stable_V",
-                                    ne ? api_real(c, mech_schw_veff_massive(rs, L)) : json_null());
-        json_object_set_new_nocheck(v, "massive_extrema", x);
-        json_t *pm = json_object();
-        json_object_set_new_nocheck(pm, "r", api_real(c, mech_gr_len_out(&u, 3.0)));
-        json_object_set_new_nocheck(pm, "W", api_real(c, inv_len2 / 27.0));
-        json_object_set_new_nocheck(v, "photon_maximum", pm);
-        json_object_set_new_nocheck(out, "effective_potential", v);
-        free(rr);
-        free(vm);
-        free(vp);
-        free(v1);
-    }
-    return out;
-}
-
-/* ===================================================================================== */
-/* POST /v1/gr/geodesic                                                                   */
 
 /* One geodesic request on its way through: parsed, set up, run. */
 struct geo_call {
@@ -506,7 +199,7 @@ static void geo_encode_start(struct api_call *c, json_t *out, const struct geo_c
     const int bound = g->su.bound;
     const double Ttau = g->su.period_tau;
     const double Tt = g->su.period_t;
-    json_object_set_new_nocheck(out, "units", gr_units_json(c, &u));
+    json_object_set_new_nocheck(out, "units", api_gr_units_json(c, &u));
     json_object_set_new_nocheck(out, "kind", json_string(photon ? "null" : "timelike"));
     json_t *cons = json_object();
     if (photon) {
@@ -698,7 +391,7 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
 {
     struct geo_call g;
     memset(&g, 0, sizeof g);
-    if (!gr_units_read(c, body, &g.u)) return NULL;
+    if (!api_gr_units_read(c, body, &g.u)) return NULL;
     if (!geo_request_read(c, body, &g)) return NULL;
 
     struct mech_error e;
