@@ -23,7 +23,7 @@ struct srv_config {
     char token[257];         /* the bearer token read from token_file ("" if none) */
     size_t token_len;        /* strlen(token), 0 when /v1 is open */
     char cors_origins[2048]; /* allowed origins, comma-separated, normalised; "" = CORS off */
-    int io_threads;          /* libmicrohttpd I/O threads, 1..64 */
+    int io_threads;          /* I/O threads (one libmicrohttpd daemon each), 1..64 */
     long request_timeout_ms; /* time to receive one whole request, 100..3600000 ms */
     long inline_max_us;      /* quick operations run inline while predicted <= this, 0..1e6 µs */
     int worker_nice;         /* nice increment of the compute workers, 0..19 */

@@ -3,7 +3,7 @@
  * end, one file per DESIGN heading (shared types in http_internal.h):
  * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY), quick.c
  * (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW CLIENTS, CONNECTION
- * FLOODS) and http_daemon.c (I/O THREADS: start and stop).
+ * FLOODS), http_daemon.c (start and stop) and io_loop.c (I/O THREADS).
  *
  * DESIGN. Per-request state (struct srv_req) is allocated on the first access
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED.

@@ -1,5 +1,5 @@
-/* http.h — mechd's HTTP front: libmicrohttpd (epoll, a pool of
- * cfg->io_threads internal polling threads) that reads requests, refuses
+/* http.h — mechd's HTTP front: libmicrohttpd (epoll; cfg->io_threads
+ * daemons, each run by an I/O thread of our own, io_loop.c) that reads requests, refuses
  * ambiguous body framing, enforces the body limit, the total receive time
  * (cfg->request_timeout_ms) and the connection limit (cfg->max_connections:
  * the longest-waiting idle connection makes room; connections whose client

@@ -1,4 +1,4 @@
-/* http_daemon.c — starting and stopping the libmicrohttpd daemon and the watcher
+/* http_daemon.c — starting and stopping the libmicrohttpd daemons and the watcher
  * (srv_http_start ... srv_http_stop of http.h; part of the HTTP front end,
  * see http.c).
  *

@@ -11,7 +11,10 @@
  * (a helper's test run under load saw mechd abort on SIGTERM this way). The
  * socket is out of the set either way, and after the panic call returns the
  * library records exactly that and goes on, so this one panic, with errno
- * ENOENT, is logged and survived. Every other panic is logged and aborts. */
+ * ENOENT, is logged and survived. Every other panic is logged and aborts.
+ * Since the I/O threads became mechd's own (io_loop.c), each quiesces its
+ * daemon on its own thread and the race cannot arise; the guard stays for a
+ * libmicrohttpd that panics there anyway. */
 #include "mhd_panic.h"
 
 #include <errno.h>

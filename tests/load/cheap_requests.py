@@ -120,8 +120,11 @@ def sockets_by_state(port):
 
 
 class StallWatch:
-    """In-round watch (a round with no answers for 5 s was seen twice, once in
-    CI, and not reproduced on demand): every 0.5 s mechd's finished-request
+    """In-round watch. A round with no answers for 5 s was seen twice (once in
+    CI): libmicrohttpd's internal epoll loop slept holding the events of
+    exactly 128 connections (see server/io_loop.c, which replaced it, and
+    tests/integration/test_io_burst.py). Kept so that any other stall
+    explains itself: every 0.5 s mechd's finished-request
     count is read; when it has not moved for 1.5 s while wrk runs, what the
     server and the kernel show at that moment is printed once (the count, the
     sockets by state and queue, and every mechd thread's stack when gdb is
@@ -164,9 +167,8 @@ class StallWatch:
 
 
 def diagnose(m):
-    """A round with no answers at all was seen once in CI (256 connections,
-    0 answers in 5 s, no socket errors) and not reproduced: print what mechd
-    and the kernel say at that moment, so the next occurrence can be read."""
+    """After a round with no answers at all: print what mechd and the kernel
+    say (see StallWatch for what is printed while the round runs)."""
     try:
         st, _, data, dt = loadlib.request(m.port, "GET", "/metrics", timeout=10)
         lines = [l for l in data.decode(errors="replace").splitlines()
