@@ -407,7 +407,12 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     static const struct api_integrator_system geodesic_eqs = {
         "the geodesic equations with r, dr/dtau, phi and t carried together",
         "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
-    if (!api_integrator_block_parse(c, ib, "/integrator", g.p.param_end / T, &geodesic_eqs, &g.ch))
+    /* a pilot for long runs in strong field (core/gr/geodesic_run.c) */
+    const struct mech_pilot_system pilot = {mech_geodesic_pilot_run, &g.p};
+    const struct api_integrator_hooks hooks = {
+        0.0, 0.0, 0.0, mech_geodesic_pilot_applies(&g.su) ? &pilot : NULL};
+    if (!api_integrator_block_parse_hooks(c, ib, "/integrator", g.p.param_end / T, &geodesic_eqs,
+                                          NULL, &hooks, &g.ch))
         return NULL;
     if (api_dry_run_requested(body))
         return api_dry_run_answer(c, api_integrator_block_selection(c, &g.ch));

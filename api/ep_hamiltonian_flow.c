@@ -95,8 +95,10 @@ json_t *api_op_hamiltonian_flow(struct api_call *c, const json_t *body)
     const size_t ns = (size_t)api_number_of(body, "samples"), dim = 2 * (size_t)s.dof;
     const double tau = mech_ham_time_scale(&s, y0);
     struct api_ham_integ hi;
+    const struct mech_ham_flow_problem pp = {.sys = &s, .y0 = y0, .t_end = t_end, .n_samples = 2};
+    const struct mech_pilot_system pilot = {mech_ham_pilot_run, (void *)&pp};
     if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
-                                 t_end / tau, "gauss6", 50.0, &hi))
+                                 t_end / tau, "gauss6", 50.0, &pilot, &hi))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_ham_selection(c, &hi));
 

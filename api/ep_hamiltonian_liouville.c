@@ -237,7 +237,7 @@ json_t *api_op_hamiltonian_liouville(struct api_call *c, const json_t *body)
         snprintf(ptr, sizeof ptr, "/integrators/%zu", k);
         if (!api_ham_integrator_read(c, blocks ? json_array_get(blocks, k) : NULL, ptr, &q.s, y_ref,
                                      tau, q.p.t_end / tau, k == 0 ? "gauss4" : "rk4",
-                                     k == 0 ? 20.0 : 2.0, &hi[k]))
+                                     k == 0 ? 20.0 : 2.0, NULL, &hi[k]))
             goto done;
         methods[k] = hi[k].m;
         opts[k] = hi[k].ch.opt;

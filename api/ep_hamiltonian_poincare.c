@@ -153,7 +153,7 @@ json_t *api_op_hamiltonian_poincare(struct api_call *c, const json_t *body)
     const double tau = mech_ham_time_scale(&s, y0);
     struct api_ham_integ hi;
     if (!api_ham_integrator_read(c, json_object_get(body, "integrator"), "/integrator", &s, y0, tau,
-                                 t_max / tau, "gauss6", 50.0, &hi))
+                                 t_max / tau, "gauss6", 50.0, NULL, &hi))
         goto done;
     if (api_dry_run_requested(body)) {
         out = api_dry_run_answer(c, api_ham_selection(c, &hi));

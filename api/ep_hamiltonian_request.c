@@ -194,8 +194,10 @@ json_t *api_ham_system_json(const struct mech_ham_system *s, const json_t *js)
 int api_ham_integrator_read(struct api_call *c, const json_t *block, const char *pointer,
                             const struct mech_ham_system *s, const double *y0, double tau,
                             double span, const char *def_method, double def_div,
-                            struct api_ham_integ *out)
+                            const struct mech_pilot_system *pilot, struct api_ham_integ *out)
 {
+    /* pilot: the flow's hook (mech_ham_pilot_run), NULL elsewhere */
+    const struct api_integrator_hooks hooks = {0.0, 0.0, 0.0, pilot};
     memset(out, 0, sizeof *out);
     /* Chosen settings scale atol to the smallest scale of the state's SI
      * components, so a 1e-15 m oscillator is not integrated at atol 1e-13. */
@@ -241,10 +243,12 @@ int api_ham_integrator_read(struct api_call *c, const json_t *block, const char 
             snprintf(out->reason, sizeof out->reason,
                      "method and settings given in the request; integrated in the second-order "
                      "form (q, v = p/M) of the separable H");
-        } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
+        } else if (!api_integrator_block_parse_hooks(c, block, pointer, span, &hs, NULL, &hooks,
+                                                     &out->ch)) {
             return 0;
         }
-    } else if (!api_integrator_block_parse(c, block, pointer, span, &hs, &out->ch)) {
+    } else if (!api_integrator_block_parse_hooks(c, block, pointer, span, &hs, NULL, &hooks,
+                                                 &out->ch)) {
         return 0;
     }
     out->m = mech_ode_method_find(out->ch.method);

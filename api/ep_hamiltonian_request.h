@@ -45,12 +45,13 @@ json_t *api_ham_system_json(const struct mech_ham_system *s, const json_t *js);
  * dt = tau / def_div, tau in s). Second-order methods are accepted for
  * separable systems (refused at <pointer>/method otherwise); the rest go to
  * the shared parser with span t_end / tau and the state's scale at y0
- * (mech_ham_state_scale) as atol's scale. Returns 1, or 0 after recording
- * the problem. */
+ * (mech_ham_state_scale) as atol's scale. pilot: the chooser's pilot hook
+ * for the shared parser (borrowed; mech/chooser_pilot.h), or NULL for none.
+ * Returns 1, or 0 after recording the problem. */
 int api_ham_integrator_read(struct api_call *c, const json_t *block, const char *pointer,
                             const struct mech_ham_system *s, const double *y0, double tau,
                             double span, const char *def_method, double def_div,
-                            struct api_ham_integ *out);
+                            const struct mech_pilot_system *pilot, struct api_ham_integ *out);
 
 /* The diagnostics' "selection" object of hi. Returns a new reference. */
 json_t *api_ham_selection(struct api_call *c, const struct api_ham_integ *hi);

@@ -199,12 +199,15 @@ json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
         "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
     struct api_integrator_system sys = euler_eqs;
     sys.samples = p.samples;
+    /* the closed form's own cost: its quadrature (core/rigid/rigid_closed_form.c) */
+    const struct api_integrator_hooks hooks = {0.0, mech_rigid_closed_form_predict_evaluations(&p),
+                                               MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL, NULL};
     /* torque-free off the separatrix: the closed form is a candidate (core/chooser.c) */
-    if (!api_integrator_block_parse_cf(c, json_object_get(body, "integrator"), "/integrator",
-                                       p.t_end * W, &sys,
-                                       mech_rigid_has_closed_form(&p) ? "torque-free rigid body"
-                                                                      : NULL,
-                                       &ch))
+    if (!api_integrator_block_parse_hooks(c, json_object_get(body, "integrator"), "/integrator",
+                                          p.t_end * W, &sys,
+                                          mech_rigid_has_closed_form(&p) ? "torque-free rigid body"
+                                                                         : NULL,
+                                          &hooks, &ch))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;

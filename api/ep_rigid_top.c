@@ -50,8 +50,14 @@ json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
     static const struct api_integrator_system top_eqs = {
         "Euler's equations of the top with gravity's torque and a quaternion attitude",
         "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
-    if (!api_integrator_block_parse(c, json_object_get(body, "integrator"), "/integrator",
-                                    p.t_end * mech_top_rate_scale(&p), &top_eqs, &ch))
+    /* the cost law's own span, the samples and a pilot for long runs (core/rigid/top.c) */
+    struct api_integrator_system sys = top_eqs;
+    sys.samples = p.samples;
+    const struct mech_pilot_system pilot = {mech_top_pilot_run, &p};
+    const struct api_integrator_hooks hooks = {mech_top_cost_span(&p), 0.0, 0.0, &pilot};
+    if (!api_integrator_block_parse_hooks(c, json_object_get(body, "integrator"), "/integrator",
+                                          p.t_end * mech_top_rate_scale(&p), &sys, NULL, &hooks,
+                                          &ch))
         return NULL;
     if (api_dry_run_requested(body)) return api_dry_run_answer(c, api_integrator_block_selection(c, &ch));
     p.method = ch.method;

@@ -20,6 +20,18 @@ int api_integrator_block_parse_cf(struct api_call *c, const json_t *in, const ch
                                   const char *closed_form_name,
                                   struct api_integrator_choice *out)
 {
+    return api_integrator_block_parse_hooks(c, in, pointer, span, sys, closed_form_name, NULL,
+                                            out);
+}
+
+int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const char *pointer,
+                                     double span, const struct api_integrator_system *sys,
+                                     const char *closed_form_name,
+                                     const struct api_integrator_hooks *hooks,
+                                     struct api_integrator_choice *out)
+{
+    static const struct api_integrator_hooks no_hooks = {0.0, 0.0, 0.0, NULL};
+    if (!hooks) hooks = &no_hooks;
     memset(out, 0, sizeof *out);
     out->requested = api_call_as_given(c, in, pointer);
     const char *method = in ? api_string(in, "method", NULL) : NULL;
@@ -70,6 +82,9 @@ int api_integrator_block_parse_cf(struct api_call *c, const json_t *in, const ch
     prof.scale = sys->state_scale > 0.0 ? sys->state_scale : 1.0;
     prof.samples = sys->samples;
     prof.rhs_cost_s = sys->rhs_cost_s;
+    prof.cost_span = hooks->cost_span > 0.0 && isfinite(hooks->cost_span) ? hooks->cost_span : 0.0;
+    prof.closed_form_evaluations = hooks->closed_form_evaluations;
+    prof.closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval;
     prof.stiff = 0;
     prof.closed_form = closed_form_name != NULL;
     prof.closed_form_name = closed_form_name;
@@ -85,6 +100,21 @@ int api_integrator_block_parse_cf(struct api_call *c, const json_t *in, const ch
     if (out->sel.integrating < 0) {
         api_call_invalid(c, pointer, "no integrating candidate method applies");
         return 0;
+    }
+    /* a pilot where the table is uncertain and the run expensive
+     * (mech/chooser_pilot.h); its steps count against the request's budget */
+    if (hooks->pilot) {
+        enum mech_status ps = mech_choose_pilot(&prof, target, &out->sel, hooks->pilot,
+                                                api_dry_run_requested(c->body), &c->budget,
+                                                &out->pilot, &e);
+        if (ps != MECH_OK) {
+            api_call_fail_core(c, ps, &e, "");
+            return 0;
+        }
+        if (out->pilot.run)
+            c->budget.max_steps = c->budget.max_steps > out->pilot.steps
+                                      ? c->budget.max_steps - out->pilot.steps
+                                      : 1;
     }
     /* method/opt: the best integrator's, even when the closed form is chosen */
     const struct mech_candidate *k = &out->sel.c[out->sel.integrating];
@@ -152,6 +182,28 @@ int api_dry_run_requested(const json_t *body)
     return json_is_true(json_object_get(body, "dry_run"));
 }
 
+/* selection.pilot: what the pilot did and cost (mech/chooser_pilot.h). */
+static json_t *pilot_json(struct api_call *c, const struct mech_pilot_report *r)
+{
+    json_t *o = json_object();
+    json_object_set_new_nocheck(o, "run", json_boolean(r->run));
+    if (r->run) {
+        json_object_set_new_nocheck(o, "fraction_of_span", api_real(c, r->fraction));
+        json_object_set_new_nocheck(o, "steps", json_integer(r->steps));
+        json_object_set_new_nocheck(o, "evaluations", api_real(c, r->evaluations));
+        json_object_set_new_nocheck(o, "predicted_cpu_s", api_real(c, r->predicted_cpu_s));
+        json_object_set_new_nocheck(o, "table_evaluations", api_real(c, r->table_evaluations));
+        json_object_set_new_nocheck(o, "error_over_pilot",
+                                    r->error >= 0.0 ? api_real(c, r->error) : json_null());
+        json_object_set_new_nocheck(o, "error_extrapolated",
+                                    r->error_extrapolated >= 0.0 && isfinite(r->error_extrapolated)
+                                        ? api_real(c, r->error_extrapolated)
+                                        : json_null());
+    }
+    json_object_set_new_nocheck(o, "why", json_string(r->why));
+    return o;
+}
+
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch)
 {
     return api_integrator_block_selection_achieved(c, ch, -1.0, NULL, -1.0);
@@ -174,6 +226,7 @@ json_t *api_integrator_block_selection_achieved(struct api_call *c,
         json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
         json_object_set_new_nocheck(sel, "reason", json_string(ch->reason));
         api_selection_predictions(c, &ch->sel, sel);
+        if (ch->pilot.considered) json_object_set_new_nocheck(sel, "pilot", pilot_json(c, &ch->pilot));
         if (cpu_s >= 0.0 && ch->sel.chosen >= 0)
             json_object_set_new_nocheck(
                 sel, "achieved",

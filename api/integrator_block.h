@@ -19,6 +19,7 @@
 
 #include "endpoint.h"
 #include "mech/chooser.h"
+#include "mech/chooser_pilot.h"
 #include "mech/ode.h"
 
 struct api_integrator_choice {
@@ -32,6 +33,9 @@ struct api_integrator_choice {
     struct mech_selection sel;   /* the chooser's candidates (chosen) */
     int closed_form;             /* 1: the chooser chose the closed form (method/opt
                                     stay the best integrator's) */
+    struct mech_pilot_report pilot; /* the pilot (sys->pilot given): considered, run or
+                                    unpiloted because a dry run; its steps were taken off
+                                    c->budget.max_steps */
 };
 
 /* What the caller integrates, for messages and for atol. */
@@ -60,6 +64,27 @@ int api_integrator_block_parse_cf(struct api_call *c, const json_t *block, const
                                   double span, const struct api_integrator_system *sys,
                                   const char *closed_form_name,
                                   struct api_integrator_choice *out);
+
+/* Optional cost-model hooks of a system (zero / NULL: the class's table
+ * alone). */
+struct api_integrator_hooks {
+    double cost_span;      /* the run in the cost law's units when the span overstates or
+                              understates the work (the heavy top: mech_top_cost_span) */
+    double closed_form_evaluations;  /* the closed form's predicted evaluations (0: one
+                                        per sample) and CPU s of one (0: the default) */
+    double closed_form_cpu_per_eval;
+    const struct mech_pilot_system *pilot; /* a short pilot run of the system when the
+                              prediction is uncertain and expensive (mech/chooser_pilot.h;
+                              borrowed for the call); NULL: none. Never run for dry runs
+                              ("dry_run": true in c->body). */
+};
+
+/* api_integrator_block_parse_cf with the hooks (NULL: none). */
+int api_integrator_block_parse_hooks(struct api_call *c, const json_t *block, const char *pointer,
+                                     double span, const struct api_integrator_system *sys,
+                                     const char *closed_form_name,
+                                     const struct api_integrator_hooks *hooks,
+                                     struct api_integrator_choice *out);
 
 /* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason",
  * and when chosen scene_class, span, model, candidates}. New reference. */

@@ -78,3 +78,48 @@ enum mech_status mech_geodesic_run(const struct mech_geodesic_setup *s,
     }
     return MECH_OK;
 }
+
+int mech_geodesic_pilot_applies(const struct mech_geodesic_setup *s)
+{
+    if (!s) return 0;
+    if (!s->bound) return 1;
+    /* u2 = 1 / r_periapsis (GM/c^2) */
+    return s->bd.u2 * MECH_GEODESIC_PILOT_STRONG_R > 1.0;
+}
+
+enum mech_status mech_geodesic_pilot_run(void *ctx, const char *method,
+                                         const struct mech_ode_options *opt, double fraction,
+                                         const struct mech_budget *budget,
+                                         struct mech_ode_stats *stats, double *y_end,
+                                         size_t *dim, struct mech_error *err)
+{
+    const struct mech_geodesic_problem *p0 = ctx;
+    if (!p0 || !method || !opt || !stats || !y_end || !dim || !(fraction > 0.0 && fraction <= 1.0))
+        return mech_error_set(err, MECH_EINVAL, NULL, "invalid pilot arguments");
+    *dim = 0;
+    memset(stats, 0, sizeof *stats);
+    struct mech_geodesic_problem p = *p0;
+    p.param_end = p0->param_end * fraction;
+    p.periapsis_lookahead = 0.0;
+    p.samples = 2;
+    p.method = method;
+    p.opt = *opt;
+    double pa[2], t[2], r[2], phi[2];
+    struct mech_geodesic_result res;
+    memset(&res, 0, sizeof res);
+    res.param = pa;
+    res.t = t;
+    res.r = r;
+    res.phi = phi;
+    enum mech_status st = mech_geodesic_integrate(&p, budget, &res, err);
+    *stats = res.stats;
+    if (st != MECH_OK) return st;
+    if (res.captured || res.escaped)
+        return mech_error_set(err, MECH_EDOMAIN, NULL,
+                              "the pilot was captured or escaped: its rate is no guide");
+    y_end[0] = res.end_r;
+    y_end[1] = res.end_phi;
+    y_end[2] = res.end_t;
+    *dim = 3;
+    return MECH_OK;
+}

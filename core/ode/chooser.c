@@ -5,6 +5,7 @@
  * trajectories (core/frames/trajectory.c, mech_trajectory_choose) and the
  * first-order operations (api/integrator_block.c) both call mech_choose. */
 #include "mech/chooser.h"
+#include "mech/chooser_pilot.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -104,6 +105,17 @@ double mech_chooser_predict_error(const struct mech_scene_profile *s, const char
     if (!s || !method || !(x > 0.0)) return -1.0;
     const struct chooser_row *r = row_of(s->cls, method);
     return r ? model_error(r, x, s->span) : -1.0;
+}
+
+int mech_chooser_row_info(const struct mech_scene_profile *s, const char *method,
+                          struct mech_chooser_row_info *out)
+{
+    const struct chooser_row *r = s && method && out ? row_of(s->cls, method) : NULL;
+    if (!r) return 0;
+    out->cpu_per_eval = s->rhs_cost_s > r->cpu_per_eval ? s->rhs_cost_s : r->cpu_per_eval;
+    out->per_sample = r->per_sample;
+    out->span_exponent = r->b;
+    return 1;
 }
 
 /* Why a method does not apply, or NULL. */
@@ -258,13 +270,17 @@ enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
         c->method = "closed_form";
         c->predicted_error = 4e-16 * fmax(1.0, sqrt(fmax(s->span, 1.0)));
         /* one evaluation per sample, as the particle closed forms (Kepler,
-         * oscillator, uniform fields) count them in diagnostics.evaluations.
-         * NOT modelled: the torque-free body's attitude adds its
-         * precession-angle quadrature, counted 1404 .. 21126 over 10 .. 1e4 s
-         * and 11 .. 101 samples (1:2:3, 2026-11-27; none for a symmetric
-         * top); bench_workprecision prints both counts */
-        c->predicted_evaluations = (double)(s->samples > 0 ? s->samples : 1);
-        c->predicted_cpu_s = 2e-7 * c->predicted_evaluations;
+         * oscillator, uniform fields) count them in diagnostics.evaluations,
+         * unless the caller's cost model says otherwise: the torque-free
+         * body's attitude adds its precession-angle quadrature
+         * (mech_rigid_closed_form_predict_evaluations: 48 a quadrature
+         * piece, 16 pieces once and about one a sample) */
+        c->predicted_evaluations = s->closed_form_evaluations > 0.0
+                                       ? s->closed_form_evaluations
+                                       : (double)(s->samples > 0 ? s->samples : 1);
+        c->predicted_cpu_s =
+            (s->closed_form_cpu_per_eval > 0.0 ? s->closed_form_cpu_per_eval : 2e-7) *
+            c->predicted_evaluations;
         c->predicted = 1;
         if (!s->closed_form_allowed) {
             c->verdict = MECH_VERDICT_NOT_APPLICABLE;
@@ -322,9 +338,11 @@ enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
     }
     out->integrating = best;
     /* the closed form wins when allowed and predicted cheaper (its cost
-     * grows with the samples only) */
+     * grows with the samples only), or when it meets the target and no
+     * integrator is predicted to */
     if (cf >= 0 && out->c[cf].verdict == MECH_VERDICT_COSTLIER &&
-        (best < 0 || out->c[cf].predicted_cpu_s <= out->c[best].predicted_cpu_s)) {
+        (best < 0 || out->c[best].verdict != MECH_VERDICT_COSTLIER ||
+         out->c[cf].predicted_cpu_s <= out->c[best].predicted_cpu_s)) {
         best = cf; /* out->beyond still describes the integrating candidate */
     }
     out->chosen = best;

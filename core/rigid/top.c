@@ -65,6 +65,23 @@ double mech_top_rate_scale(const struct mech_top_problem *p)
     return W;
 }
 
+double mech_top_cost_span(const struct mech_top_problem *p)
+{
+    if (!p || !(p->I1 > 0.0) || !(p->t_end > 0.0) || !isfinite(p->t_end)) return 0.0;
+    const struct mech_vec3 w = body_omega(p);
+    const double mgh = p->mass * p->g * p->distance;
+    double u_min = -1.0;
+    struct mech_top_turning tp;
+    struct mech_error e;
+    mech_error_clear(&e);
+    if (mech_top_turning_points(p, &tp, &e) == MECH_OK && isfinite(tp.u_min))
+        u_min = fmax(-1.0, fmin(tp.u_min, cos(p->theta)));
+    const double wp2 = w.x * w.x + w.y * w.y + 2.0 * mgh * (cos(p->theta) - u_min) / p->I1;
+    const double rate = sqrt(fmax(wp2, 0.0)) + 0.5 * fabs(w.z);
+    const double cs = p->t_end * rate;
+    return cs > 0.0 && isfinite(cs) ? cs : 0.0;
+}
+
 static double fpoly(const double c[4], double u) { return ((c[3] * u + c[2]) * u + c[1]) * u + c[0]; }
 static double dfpoly(const double c[4], double u) { return (3 * c[3] * u + 2 * c[2]) * u + c[1]; }
 
@@ -412,4 +429,37 @@ enum mech_status mech_top_integrate(const struct mech_top_problem *p,
     free(c.unw);
     free(c.have);
     return s;
+}
+
+enum mech_status mech_top_pilot_run(void *ctx, const char *method,
+                                    const struct mech_ode_options *opt, double fraction,
+                                    const struct mech_budget *budget,
+                                    struct mech_ode_stats *stats, double *y_end, size_t *dim,
+                                    struct mech_error *err)
+{
+    const struct mech_top_problem *p0 = ctx;
+    if (!p0 || !method || !opt || !stats || !y_end || !dim || !(fraction > 0.0 && fraction <= 1.0))
+        return mech_error_set(err, MECH_EINVAL, NULL, "invalid pilot arguments");
+    *dim = 0;
+    struct mech_top_problem p = *p0;
+    p.t_end = p0->t_end * fraction;
+    p.samples = 2;
+    p.method = method;
+    p.opt = *opt;
+    double t[2], th[2], ph[2], ps[2];
+    struct mech_top_result r;
+    memset(&r, 0, sizeof r);
+    r.t = t;
+    r.theta = th;
+    r.phi = ph;
+    r.psi = ps;
+    enum mech_status st = mech_top_integrate(&p, budget, &r, err);
+    *stats = r.stats;
+    if (st != MECH_OK) return st;
+    if (r.n_samples != 2) return mech_error_set(err, MECH_EINTERNAL, NULL, "pilot samples");
+    y_end[0] = th[1];
+    y_end[1] = ph[1];
+    y_end[2] = ps[1];
+    *dim = 3;
+    return MECH_OK;
 }

@@ -57,6 +57,11 @@ struct mech_scene_profile {
     int closed_form;        /* the scene has an exact solution (MECH_REFERENCE_EXACT) */
     int closed_form_allowed;/* the request allows it (integrator.closed_form, default 1) */
     const char *closed_form_name; /* e.g. "kepler" (static) or NULL */
+    double closed_form_evaluations; /* the closed form's predicted evaluations when its
+                               cost is not one per sample (the torque-free body's
+                               quadrature: mech_rigid_closed_form_predict_evaluations);
+                               0: one per sample */
+    double closed_form_cpu_per_eval; /* CPU s of one of those evaluations; 0: 2e-7 */
     /* Bound central-body orbits (mech_chooser_profile_orbit, core/frames/chooser_orbit.c;
      * all 0 when unknown, and then the span-based laws apply): */
     double cost_span;       /* the run in the cost law's units: dynamical times of the

@@ -50,4 +50,23 @@ enum mech_status mech_geodesic_run(const struct mech_geodesic_setup *s,
 /* Free the answer's arrays (NULL-safe, idempotent). */
 void mech_geodesic_answer_free(struct mech_geodesic_answer *a);
 
+/* The chooser's pilot hook (mech/chooser_pilot.h) for geodesics in strong
+ * field, where the table's first-order cost law (fitted on Mercury's weak
+ * field) is least certain. mech_geodesic_pilot_applies: 1 for a bound orbit
+ * whose periapsis is within MECH_GEODESIC_PILOT_STRONG_R (GM/c^2) or a motion
+ * that is not bound, else 0. mech_geodesic_pilot_run is struct
+ * mech_pilot_system's run with ctx = a const struct mech_geodesic_problem *
+ * (the run's; its samples, method, opt and look-ahead ignored): the geodesic
+ * over the first `fraction` of param_end, two samples, no periapsis
+ * look-ahead; y_end = (r, phi, t) at the end (geometric units), *dim = 3.
+ * Statuses as mech_geodesic_integrate; MECH_EDOMAIN when the pilot is
+ * captured or escapes (its rate is then no guide). */
+#define MECH_GEODESIC_PILOT_STRONG_R 100.0
+int mech_geodesic_pilot_applies(const struct mech_geodesic_setup *s);
+enum mech_status mech_geodesic_pilot_run(void *ctx, const char *method,
+                                         const struct mech_ode_options *opt, double fraction,
+                                         const struct mech_budget *budget,
+                                         struct mech_ode_stats *stats, double *y_end,
+                                         size_t *dim, struct mech_error *err);
+
 #endif

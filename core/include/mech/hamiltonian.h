@@ -221,4 +221,16 @@ enum mech_status mech_ham_flow(const struct mech_ham_flow_problem *p,
                                const struct mech_budget *budget,
                                struct mech_ham_flow_result *res, struct mech_error *err);
 
+/* The chooser's pilot hook (mech/chooser_pilot.h, struct
+ * mech_pilot_system's run with ctx = a const struct mech_ham_flow_problem *
+ * whose sys, y0 and t_end are the flow's; its n_samples, method and opt are
+ * ignored): the flow over the first `fraction` of t_end with the registry
+ * method named `method` at *opt, two samples; y_end = (q, p) at the end (SI),
+ * *dim = 2 dof. Statuses as mech_ham_flow; MECH_EINVAL for an unknown method. */
+enum mech_status mech_ham_pilot_run(void *ctx, const char *method,
+                                    const struct mech_ode_options *opt, double fraction,
+                                    const struct mech_budget *budget,
+                                    struct mech_ode_stats *stats, double *y_end, size_t *dim,
+                                    struct mech_error *err);
+
 #endif

@@ -54,6 +54,30 @@ int mech_rigid_has_closed_form(const struct mech_rigid_problem *p);
  * benches), checked between samples for its deadline and cancel flag only
  * (up to 100,000 samples cost ~0.7 s).
  * evidence may be NULL. */
+/* The closed form's cost model for the chooser (mech/chooser.h,
+ * closed_form_evaluations): the predicted number of omega(t) evaluations
+ * mech_rigid_closed_form will count for p, from the same plan the run
+ * follows, without evaluating anything: steady rotations one per sample;
+ * a symmetric body one per sample plus one; an asymmetric body one per
+ * sample plus the quadrature of phi' (16 pieces of a period tabulated once,
+ * then per sample the pieces of T/16 between it and the previous sample in
+ * the same period, or one piece from the table), each piece costing
+ * RCF_EVALS_PER_PIECE = 48 evaluations (a 16-point rule and its two halves).
+ * Exact away from the separatrix; near it (m > 0.99) a few pieces take a
+ * halving (64 more each, not predicted): within 1.11x on 1:2:3 bodies with
+ * m = 0.995 and 0.999998 (tests/core/rigid/test_rigid_closed_form.c; stated
+ * factor 1.5).
+ * Returns > 0, or -1 when p has no closed form (torque, separatrix,
+ * invalid input). Reentrant; microseconds. */
+double mech_rigid_closed_form_predict_evaluations(const struct mech_rigid_problem *p);
+
+/* Measured CPU seconds of one counted evaluation of the closed form (omega
+ * by Jacobi elliptic functions, the quadrature's phi', the attitude per
+ * sample): 1.1e-7 s on the build machine (rigid/rotate 1:2:3, 11 .. 1001
+ * samples, 1 .. 1e4 s, 2026-11-27: 1.1 .. 1.4e-7 beside the request's fixed
+ * cost). */
+#define MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL 1.1e-7
+
 enum mech_status mech_rigid_closed_form(const struct mech_rigid_problem *p,
                                         struct mech_rigid_result *res,
                                         struct mech_rigid_closed_form_evidence *evidence,

@@ -115,4 +115,26 @@ enum mech_status mech_top_integrate(const struct mech_top_problem *p,
 /* The rate scale W (1/s): max(|w0|, sqrt(M g h / I1)), or 1 / t_end if both are 0. */
 double mech_top_rate_scale(const struct mech_top_problem *p);
 
+/* The chooser's cost hook (mech/chooser.h, cost_span): the run in the cost
+ * law's units, t_end x (w_perp,max + |w3| / 2) where w_perp,max is the
+ * largest body rate about a transverse axis the energy allows (w_perp^2 =
+ * w_perp0^2 + 2 M g h (cos theta0 - u_min) / I1, u_min the lower turning
+ * point of cos theta, -1 when unknown) and |w3| / 2 the rate at which the
+ * spin turns the attitude quaternion. Measured (2026-11-27, rk8pd and rkf45,
+ * rtol 1e-7 .. 1e-13, 0.5 .. 50 s, spins 0 .. 100 rad/s, I3/I1 0.1 .. 1.9):
+ * the first-order class's cost law with this span counts the evaluations
+ * within 1.5x, where t_end x W (the error law's span) over-predicted a fast
+ * top 1.7 .. 2.4x and under-predicted a falling one 2x. 0 if p is invalid. */
+double mech_top_cost_span(const struct mech_top_problem *p);
+
+/* The chooser's pilot hook (mech/chooser_pilot.h, struct mech_pilot_system's
+ * run with ctx = a const struct mech_top_problem *): the top over the first
+ * fraction of t_end with method and opt, two samples; y_end = (theta, phi,
+ * psi) at the end (rad), *dim = 3. Statuses as mech_top_integrate. */
+enum mech_status mech_top_pilot_run(void *ctx, const char *method,
+                                    const struct mech_ode_options *opt, double fraction,
+                                    const struct mech_budget *budget,
+                                    struct mech_ode_stats *stats, double *y_end, size_t *dim,
+                                    struct mech_error *err);
+
 #endif
