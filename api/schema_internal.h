@@ -6,7 +6,7 @@
  *
  * The files and their one-way arrows (A -> B: A calls B):
  *   schema_compile.c  compilation and freeing of the tree        -> schema_check.c
- *   schema_check.c    the supported subset and the self-check     (api_schema_check)
+ *   schema_check.c    the supported subset and the self-check     -> schema_pointer.c
  *   schema_validate.c the walker: every keyword, oneOf by count   -> schema_branch.c, schema_error.c
  *   schema_branch.c   which oneOf branch an instance was meant to be, and what
  *                     is wrong with the choice itself             -> schema_error.c
