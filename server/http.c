@@ -338,7 +338,7 @@ static enum MHD_Result answer_text(struct srv_req *r, int status, const char *co
 /* A problem the server decides before the API layer sees the request (401,
  * 403): the problem table's body with this detail (static text), never cached. */
 static enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
-                                      const char *detail)
+                                             const char *detail)
 {
     api_response_free(&r->aresp);
     api_response_problem(&r->aresp, kind, detail);
