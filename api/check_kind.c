@@ -1,5 +1,6 @@
-/* check_kind.c — kinds, units, per-operation defaults and the comparisons of
- * POST /v1/check (see check_kind.h and docs/grading.md, "Kinds and units").
+/* check_kind.c — kinds, units and the comparisons of POST /v1/check (see
+ * check_kind.h and docs/grading.md, "Kinds and units"; which field is of
+ * which kind comes from the response schemas: check_field.c).
  * Pure: plain arrays in, an outcome out; no JSON, no I/O, no allocation.
  */
 #include "check_kind.h"
@@ -66,11 +67,13 @@ static const struct api_unit units[] = {
     {"keV", 1e3 * EV, "E"},
     {"MeV", 1e6 * EV, "E"},
     {"GeV", 1e9 * EV, "E"},
+    {"TeV", 1e12 * EV, "E"},
     {"rad", 1, "angle"},
     {"deg", MECH_PI / 180, "angle"},
     {"rev", 2 * MECH_PI, "angle"},
     {"arcmin", MECH_PI / 10800, "angle"},
     {"arcsec", MECH_PI / 648000, "angle"},
+    {"mrad", 1e-3, "angle"},
     {"m/s", 1, "L/T"},
     {"km/s", 1e3, "L/T"},
     {"km/h", 1 / 3.6, "L/T"},
@@ -87,8 +90,16 @@ static const struct api_unit units[] = {
     {"kg m^2/s", 1, "ML2/T"},
     {"J s", 1, "ML2/T"},
     {"kg m/s", 1, "ML/T"},
+    {"eV/c", EV / MECH_C, "ML/T"},
+    {"keV/c", 1e3 * EV / MECH_C, "ML/T"},
     {"MeV/c", 1e6 * EV / MECH_C, "ML/T"},
     {"GeV/c", 1e9 * EV / MECH_C, "ML/T"},
+    {"TeV/c", 1e12 * EV / MECH_C, "ML/T"},
+    {"eV/c^2", EV / (MECH_C * MECH_C), "M"}, /* masses in natural units: E = m c^2 */
+    {"keV/c^2", 1e3 * EV / (MECH_C * MECH_C), "M"},
+    {"MeV/c^2", 1e6 * EV / (MECH_C * MECH_C), "M"},
+    {"GeV/c^2", 1e9 * EV / (MECH_C * MECH_C), "M"},
+    {"TeV/c^2", 1e12 * EV / (MECH_C * MECH_C), "M"},
     {"N", 1, "F"},
     {"kN", 1e3, "F"},
     {"N m", 1, "torque"},
@@ -98,9 +109,9 @@ static const struct api_unit units[] = {
 
 const char api_unit_list[] =
     "1, m, km, cm, mm, um, nm, au, ly, pc, s, ms, us, ns, min, h, day, yr, kg, g, t, J, kJ, MJ, "
-    "erg, eV, keV, MeV, GeV, rad, deg, rev, arcmin, arcsec, m/s, km/s, km/h, cm/s, m/s^2, rad/s, "
-    "deg/s, rpm, rev/s, Hz, kHz, kg m^2, g cm^2, kg m^2/s, J s, kg m/s, MeV/c, GeV/c, N, kN, "
-    "N m, W, kW";
+    "erg, eV, keV, MeV, GeV, TeV, rad, deg, rev, arcmin, arcsec, mrad, m/s, km/s, km/h, cm/s, "
+    "m/s^2, rad/s, deg/s, rpm, rev/s, Hz, kHz, kg m^2, g cm^2, kg m^2/s, J s, kg m/s, eV/c, keV/c, "
+    "MeV/c, GeV/c, TeV/c, eV/c^2, keV/c^2, MeV/c^2, GeV/c^2, TeV/c^2, N, kN, N m, W, kW";
 
 const struct api_unit *api_unit_find(const char *name)
 {
@@ -108,84 +119,6 @@ const struct api_unit *api_unit_find(const char *name)
     for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
         if (!strcmp(units[i].name, name)) return &units[i];
     return NULL;
-}
-
-/* ---- per-operation defaults ------------------------------------------------------ */
-
-struct kind_default {
-    const char *op, *pointer; /* "*" matches one array index */
-    enum api_check_kind kind;
-    const char *unit; /* SI unit of the field; "1" dimensionless */
-};
-
-/* The fields whose kind is not "a plain number": what a student's answer to
- * them means. Until the operations' response schemas carry kinds (issue 17),
- * this table is the source; the request's answer.kind overrides it. */
-static const struct kind_default defaults[] = {
-    {"/v1/rigid/inertia", "/mass", API_KIND_NUMBER, "kg"},
-    {"/v1/rigid/inertia", "/center_of_mass", API_KIND_VECTOR, "m"},
-    {"/v1/rigid/inertia", "/origin", API_KIND_VECTOR, "m"},
-    {"/v1/rigid/inertia", "/tensor", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/tensor/*", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/tensor/*/*", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/tensor_center_of_mass", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/tensor_center_of_mass/*", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/tensor_center_of_mass/*/*", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/principal/moments", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/principal/moments/*", API_KIND_NUMBER, "kg m^2"},
-    {"/v1/rigid/inertia", "/principal/axes", API_KIND_EIGENVECTORS, "1"},
-    {"/v1/rigid/inertia", "/principal/axes/*", API_KIND_AXIS, "1"},
-    {"/v1/rigid/inertia", "/angular_momentum", API_KIND_VECTOR, "kg m^2/s"},
-    {"/v1/rigid/inertia", "/kinetic_energy", API_KIND_NUMBER, "J"},
-    {"/v1/rigid/inertia", "/angle_L_omega", API_KIND_ANGLE, "rad"},
-    {"/v1/rigid/inertia", "/torque_to_hold_axis", API_KIND_VECTOR, "N m"},
-    {"/v1/rotation/convert", "/quaternion", API_KIND_QUATERNION, "1"},
-    {"/v1/rotation/convert", "/matrix", API_KIND_NUMBER, "1"},
-    {"/v1/rotation/convert", "/axis_angle", API_KIND_AXIS_ANGLE, "rad"},
-    {"/v1/rotation/convert", "/axis_angle/angle", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/convert", "/rotation_vector", API_KIND_VECTOR, "rad"},
-    {"/v1/rotation/convert", "/euler_zxz", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/convert", "/euler_zxz/*", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/compose", "/quaternion", API_KIND_QUATERNION, "1"},
-    {"/v1/rotation/compose", "/matrix", API_KIND_NUMBER, "1"},
-    {"/v1/rotation/compose", "/axis_angle", API_KIND_AXIS_ANGLE, "rad"},
-    {"/v1/rotation/compose", "/axis_angle/angle", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/compose", "/rotation_vector", API_KIND_VECTOR, "rad"},
-    {"/v1/rotation/compose", "/euler_zxz", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/compose", "/euler_zxz/*", API_KIND_ANGLE, "rad"},
-    {"/v1/rotation/apply", "/matrix", API_KIND_NUMBER, "1"},
-    {"/v1/rotation/apply", "/vectors/*", API_KIND_VECTOR, NULL},
-    {"/v1/rotation/apply", "/tensors/*", API_KIND_NUMBER, NULL},
-};
-
-/* Whether pointer matches pattern token by token ("*": any array index). */
-static int pointer_matches(const char *pattern, const char *p)
-{
-    while (*pattern && *p) {
-        if (pattern[0] == '*' && (pattern[1] == '/' || !pattern[1])) {
-            if (*p < '0' || *p > '9') return 0;
-            while (*p >= '0' && *p <= '9')
-                p++;
-            pattern++;
-            continue;
-        }
-        if (*pattern != *p) return 0;
-        pattern++;
-        p++;
-    }
-    return !*pattern && !*p;
-}
-
-int api_check_default(const char *op, const char *pointer, enum api_check_kind *kind,
-                      const char **unit)
-{
-    for (size_t i = 0; i < sizeof defaults / sizeof defaults[0]; i++)
-        if (!strcmp(defaults[i].op, op) && pointer_matches(defaults[i].pointer, pointer)) {
-            *kind = defaults[i].kind;
-            *unit = defaults[i].unit;
-            return 1;
-        }
-    return 0;
 }
 
 /* ---- tolerance ------------------------------------------------------------------- */

@@ -1,8 +1,10 @@
 /* check_kind.h — what an answer IS, for POST /v1/check: kinds of quantities
  * (a number, a vector, an axis up to sign, a quaternion up to sign, an angle
  * modulo 2 pi, a subspace, eigenvectors with degenerate groups, an axis with
- * its angle), the units a student may answer in, the per-operation default
- * kinds and units, and the comparison of an answer of each kind with mechd's.
+ * its angle), the units a student may answer in, and the comparison of an
+ * answer of each kind with mechd's. Which field of which operation is of
+ * which kind and unit is data: the operations' response schemas
+ * (check_field.h).
  *
  * Pure functions on plain arrays of doubles: no JSON, no I/O, no allocation;
  * reentrant. ep_grading.c turns JSON into these arrays and back.
@@ -52,13 +54,6 @@ const struct api_unit *api_unit_find(const char *name);
 
 /* All unit names, comma-separated, for messages (static string). */
 extern const char api_unit_list[];
-
-/* The kind and SI unit mechd knows for op's answer at pointer (e.g.
- * /v1/rigid/inertia /principal/axes: eigenvectors, unit ""). A "*" token in
- * the table matches any array index. Returns 1 with *kind and *unit (unit may
- * be NULL: not known) set, 0 when the table does not describe that field. */
-int api_check_default(const char *op, const char *pointer, enum api_check_kind *kind,
-                      const char **unit);
 
 /* Tolerance criteria. Absent criteria are < 0 (rel, abs) or 0 (sig). scale
  * (>= 0) is the size of the quantity's problem: values at or below the

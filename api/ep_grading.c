@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "check_field.h"
 #include "check_kind.h"
 #include "mech/constants.h"
 #include "endpoint.h"
@@ -578,9 +579,11 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
                          unit_name, api_unit_list);
         return NULL;
     }
-    enum api_check_kind kind = API_KIND_NUMBER;
-    const char *field_unit = NULL;
-    api_check_default(op, pointer, &kind, &field_unit);
+    /* What the field is, from the operation's response schema (its x-mechd-check
+     * annotations); the request's answer.kind overrides the kind. */
+    enum api_check_kind kind;
+    const char *field_unit;
+    api_check_field(op, pointer, &kind, &field_unit);
     if (kind_name) api_check_kind_parse(kind_name, &kind); /* the schema's enum: always known */
     const char *kind_ptr = kind_name ? "/answer/kind" : "/answer/pointer";
     if (json_is_object(value) && kind != API_KIND_AXIS_ANGLE) {
@@ -629,6 +632,7 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
         json_decref(res);
         return NULL;
     }
+    field_unit = api_check_unit_expand(field_unit, res); /* "{/energy_unit}/c" -> "GeV/c" */
     const struct api_unit *fu = field_unit ? api_unit_find(field_unit) : NULL;
     if (su && fu && strcmp(su->dim, fu->dim)) {
         api_call_invalid(c, "/answer/unit",

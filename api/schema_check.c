@@ -10,7 +10,8 @@ static const char *const known_keywords[] = {
     "type", "properties", "required", "additionalProperties", "items", "minItems",
     "maxItems", "uniqueItems", "minimum", "maximum", "exclusiveMinimum", "exclusiveMaximum",
     "enum", "const", "oneOf", "minProperties", "maxProperties", "title", "description",
-    "default", "examples", NULL,
+    "default", "examples", "x-mechd-check", /* annotation for POST /v1/check (docs/grading.md) */
+    NULL,
 };
 static const char *const type_names[] = {
     "object", "array", "string", "number", "integer", "boolean", "null", NULL,

@@ -26,9 +26,19 @@ a default 1e-9 is a real, "samples": 200 an integer). The example is copied
 as written in the data file (its spacing and number spelling), since the
 catalog's curl line quotes it.
 
+A response schema's properties and items may carry the annotation
+"x-mechd-check": {"kind": K, "unit": U} (what the field is for POST
+/v1/check: api/check_field.h, docs/grading.md "Kinds and units"); K must be
+a kind and U a unit of api/check_kind.c (read from its kind_names[] and
+units[] tables when --sources is given), or a template such as
+"{/energy_unit}/c" whose every expansion (the enum of the answer's string at
+/energy_unit, or of the request property energy_unit) is one; no other "x-"
+keyword is taken.
+
 Any error — a file that is not JSON, a missing or unknown key, a wrong type,
-a duplicate path or handler, a file missing from catalog_order.json, or (with
---sources) a handler no api/ source defines — is printed naming the file and
+a duplicate path or handler, a file missing from catalog_order.json, a
+malformed x-mechd-check annotation, or (with --sources) a handler no api/
+source defines or an unknown kind or unit — is printed naming the file and
 the script exits 1, so the build fails. --check only checks (the lint test).
 
 Python 3 standard library only; runs under any python3.
@@ -90,7 +100,108 @@ def example_texts(text, rel):
             i += 1
 
 
-def check_op(doc, text, rel):
+CHECK_KEY = "x-mechd-check"  # what a field of the answer is, for POST /v1/check
+
+
+def check_vocabulary(src_dir):
+    """The kind and unit names POST /v1/check knows, read from the C tables of
+    SRC_DIR/check_kind.c (kind_names[], units[]): (kinds, units)."""
+    rel = "api/check_kind.c"
+    try:
+        text = open(os.path.join(src_dir, "check_kind.c"), encoding="utf-8").read()
+    except OSError as e:
+        fail(rel, "cannot read: %s" % e)
+    m = re.search(r"kind_names\[API_KIND_COUNT\]\s*=\s*\{(.*?)\};", text, re.S)
+    kinds = re.findall(r'"([^"]*)"', m.group(1)) if m else []
+    m = re.search(r"struct api_unit units\[\]\s*=\s*\{(.*?)\n\};", text, re.S)
+    units = re.findall(r'\{"([^"]*)",', m.group(1)) if m else []
+    if not kinds or not units:
+        fail(rel, "cannot find the kind_names[] and units[] tables (ops_gen.py reads them to "
+             "check the %s annotations)" % CHECK_KEY)
+    return set(kinds), set(units)
+
+
+def unit_expansions(unit, doc, rel, where):
+    """The units an annotation's unit can stand for: [unit], or for a template
+    ("{/energy_unit}/c": the answer's string at /energy_unit, then "/c") one
+    per value that string can take: the enum of that string in the response
+    schema, else of the request property of the same name."""
+    if unit is None:
+        return []
+    parts = re.split(r"\{([^{}]*)\}", unit)
+    if len(parts) == 1:
+        if "{" in unit or "}" in unit:
+            fail(rel, "%s/unit: unbalanced braces in %r" % (where, unit))
+        return [unit]
+    choices = [[parts[0]]]
+    for i in range(1, len(parts), 2):
+        ptr = parts[i]
+        node = doc["response_schema"]
+        for tok in ptr.split("/")[1:] if ptr.startswith("/") else [None]:
+            props = node.get("properties") if isinstance(node, dict) else None
+            node = props.get(tok) if isinstance(props, dict) and tok is not None else None
+            if node is None:
+                break
+        if not isinstance(node, dict) or node.get("type") != "string":
+            fail(rel, "%s/unit: {%s} in %r must point at a string of the answer (a JSON "
+                 "pointer through the response schema's properties)" % (where, ptr, unit))
+        values = node.get("enum") or (doc.get("request_schema", {}).get("properties", {})
+                                      .get(ptr.rsplit("/", 1)[-1], {}).get("enum"))
+        if not values:
+            fail(rel, "%s/unit: the values of {%s} are not listed (an enum in the response "
+                 "schema or in the request property of that name)" % (where, ptr))
+        choices.append([str(v) for v in values])
+        choices.append([parts[i + 1]])
+    out = [""]
+    for c in choices:
+        out = [a + b for a in out for b in c]
+    return out
+
+
+def check_annotations(schema, rel, where, vocab, allowed, doc, props_map=False):
+    """Every x-mechd-check annotation in schema (a response schema when allowed)
+    is {"kind": known kind, "unit"?: known unit or template}; no other x-
+    keyword. vocab: (kinds, units), or None (shape checked only); doc: the
+    operation's data file (for templates)."""
+    if isinstance(schema, list):
+        for i, v in enumerate(schema):
+            check_annotations(v, rel, "%s/%d" % (where, i), vocab, allowed, doc)
+        return
+    if not isinstance(schema, dict):
+        return
+    for key, val in schema.items():
+        here = "%s/%s" % (where, key.replace("~", "~0").replace("/", "~1"))
+        if props_map:  # property names, not keywords
+            check_annotations(val, rel, here, vocab, allowed, doc)
+            continue
+        if key.startswith("x-") and key != CHECK_KEY:
+            fail(rel, "%s: unknown keyword %s (the one vendor keyword is %s)" % (here, key,
+                                                                                CHECK_KEY))
+        if key == CHECK_KEY:
+            if not allowed:
+                fail(rel, "%s: %s describes a field of the answer; it belongs in the "
+                     "response_schema" % (here, CHECK_KEY))
+            if not isinstance(val, dict) or "kind" not in val or set(val) - {"kind", "unit"}:
+                fail(rel, '%s: must be {"kind": ..., "unit": ...} ("unit" optional), got %s'
+                     % (here, compact(val)))
+            for k in ("kind", "unit"):
+                if k in val and not isinstance(val[k], str):
+                    fail(rel, "%s/%s: must be a string" % (here, k))
+            if vocab and val["kind"] not in vocab[0]:
+                fail(rel, '%s/kind: unknown kind "%s" (known: %s)'
+                     % (here, val["kind"], ", ".join(sorted(vocab[0]))))
+            for unit in unit_expansions(val.get("unit"), doc, rel, here):
+                if vocab and unit not in vocab[1]:
+                    fail(rel, '%s/unit: unknown unit "%s" (known: %s; add a unit to '
+                         "api/check_kind.c units[] first)"
+                         % (here, unit, ", ".join(sorted(vocab[1]))))
+            continue
+        if key in ("examples", "default", "const", "enum"):
+            continue  # values, not schemas
+        check_annotations(val, rel, here, vocab, allowed, doc, props_map=key == "properties")
+
+
+def check_op(doc, text, rel, vocab=None):
     if not isinstance(doc, dict):
         fail(rel, "the top level must be an object")
     method = doc.get("method")
@@ -124,6 +235,9 @@ def check_op(doc, text, rel):
             fail(rel, 'missing flag "%s"' % k)
     if doc["response_schema"].get("type") != "object":
         fail(rel, 'the response_schema must describe an object ("type": "object")')
+    check_annotations(doc["response_schema"], rel, "/response_schema", vocab, True, doc)
+    if "request_schema" in doc:
+        check_annotations(doc["request_schema"], rel, "/request_schema", vocab, False, doc)
     if method == "POST":
         s = doc["request_schema"]
         if s.get("type") != "object" or not isinstance(s.get("properties"), dict):
@@ -183,10 +297,11 @@ def collect(ops_dir, src_dir=None):
                  "where the catalog should show it)")
     ops, paths, handlers = [], {}, {}
     known = defined_handlers(src_dir) if src_dir else None
+    vocab = check_vocabulary(src_dir) if src_dir else None
     for name in order:
         rel = "api/ops/%s.json" % name
         text, doc = load(found[name], rel)
-        examples = check_op(doc, text, rel)
+        examples = check_op(doc, text, rel, vocab)
         if doc["path"] in paths:
             fail(rel, "duplicate path %s (also in %s)" % (doc["path"], paths[doc["path"]]))
         paths[doc["path"]] = rel

@@ -1772,8 +1772,8 @@ class Client(_Operations):
               significant_figures=None, *, kind=None, unit=None, scale=None, reveal=None):
         """POST /v1/check: grade a student's value at pointer of operation's answer.
 
-        kind ("axis", "quaternion", "angle", "eigenvectors", ...; default mechd's table
-        for the field), unit (the student's unit: "km", "eV", "deg", ...), scale (the
+        kind ("axis", "quaternion", "angle", "eigenvectors", ...; default what the
+        operation's response schema says of the field), unit (the student's unit: "km", "eV", "deg", ...), scale (the
         problem's size in the field's unit, for values that should be zero) and reveal
         (the feedback names the expected value) are passed when not None.
         """

@@ -24,6 +24,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import loadlib  # noqa: E402
@@ -62,9 +63,20 @@ end
 """ % BOOST
 
 
-def run_wrk(url, seconds, connections, script):
-    out = subprocess.run(["wrk", "-t2", "-c%d" % connections, "-d%ds" % seconds, "--timeout", "15s",
-                          "-s", script, url], capture_output=True, text=True, timeout=seconds + 60).stdout
+def run_wrk(url, seconds, connections, script, watch=None):
+    """wrk for `seconds`; while it runs, watch() is called every 0.5 s (the
+    in-round stall watch, see stall_watch)."""
+    p = subprocess.Popen(["wrk", "-t2", "-c%d" % connections, "-d%ds" % seconds, "--timeout", "15s",
+                          "-s", script, url], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    try:
+        while p.poll() is None and watch is not None:
+            time.sleep(0.5)
+            if p.poll() is None:
+                watch(p.pid)
+        out, _ = p.communicate(timeout=seconds + 60)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        out, _ = p.communicate()
     counts = {int(a): int(b) for a, b in re.findall(r"(?m)^status (\d+) (\d+)$", out)}
     r = {"out": out, "counts": counts, "non2xx": 0, "errors": (0, 0, 0, 0), "rps": 0.0}
     m = re.search(r"Non-2xx or 3xx responses: (\d+)", out)
@@ -77,6 +89,78 @@ def run_wrk(url, seconds, connections, script):
     if m:
         r["rps"] = float(m.group(1))
     return r
+
+
+def requests_done(port):
+    """mechd's count of finished requests (/metrics), or None if it did not
+    answer within 2 s."""
+    try:
+        _, _, data, _ = loadlib.request(port, "GET", "/metrics", timeout=2)
+        m = re.search(r"^mechd_request_duration_seconds_count (\d+)", data.decode(), re.M)
+        return int(m.group(1)) if m else None
+    except (OSError, ValueError):
+        return None
+
+
+def sockets_by_state(port):
+    """Server-side and client-side TCP sockets of `port`, counted by state
+    and by whether bytes wait unread (Recv-Q) or unacknowledged (Send-Q)."""
+    res = {}
+    for side, flt in (("server", "( sport = :%d )" % port), ("client", "( dport = :%d )" % port)):
+        out = subprocess.run(["ss", "-tanH", flt], capture_output=True, text=True, timeout=10).stdout
+        c = {}
+        for l in out.splitlines():
+            f = l.split()
+            if len(f) < 3:
+                continue
+            k = "%s%s%s" % (f[0], " recvq" if f[1] != "0" else "", " sendq" if f[2] != "0" else "")
+            c[k] = c.get(k, 0) + 1
+        res[side] = c
+    return res
+
+
+class StallWatch:
+    """In-round watch (a round with no answers for 5 s was seen twice, once in
+    CI, and not reproduced on demand): every 0.5 s mechd's finished-request
+    count is read; when it has not moved for 1.5 s while wrk runs, what the
+    server and the kernel show at that moment is printed once (the count, the
+    sockets by state and queue, and every mechd thread's stack when gdb is
+    installed, mechd's and wrk's), so the next occurrence explains itself. The probe is a new
+    connection: a probe that gets no answer says the server is not accepting
+    or not processing at all."""
+
+    def __init__(self, m):
+        self.m, self.last, self.since, self.reported = m, None, time.monotonic(), False
+
+    def __call__(self, wrk_pid):
+        n = requests_done(self.m.port)
+        now = time.monotonic()
+        # The previous probe is itself one finished request.
+        if n is None or self.last is None or n > self.last + 1:
+            if n is not None:
+                self.last, self.since = n, now
+            if n is not None or now - self.since < 1.5:
+                return
+        else:
+            self.last = n
+        if self.reported or now - self.since < 1.5:
+            return
+        self.reported = True
+        loadlib.log(NAME, "stall: mechd finished no request for %.1f s (count %s, probe %s)"
+                    % (now - self.since, self.last, "answered" if n is not None else "unanswered"))
+        try:
+            loadlib.log(NAME, "stall: sockets %s" % (sockets_by_state(self.m.port),))
+        except Exception as e:  # the diagnosis must not hide the failure
+            loadlib.log(NAME, "stall: ss failed: %r" % (e,))
+        if shutil.which("gdb"):
+            for who, pid in (("mechd", self.m.proc.pid), ("wrk", wrk_pid)):
+                try:
+                    out = subprocess.run(["gdb", "-p", str(pid), "-batch", "-ex", "thread apply all bt 12"],
+                                         capture_output=True, text=True, timeout=30).stdout
+                    frames = [l[:160] for l in out.splitlines() if l.startswith(("Thread ", "#"))]
+                    loadlib.log(NAME, "stall: %s's threads:\n%s" % (who, "\n".join(frames[:150])))
+                except Exception as e:
+                    loadlib.log(NAME, "stall: gdb on %s failed: %r" % (who, e))
 
 
 def diagnose(m):
@@ -128,7 +212,7 @@ def main():
             failures.append("the boost answered %s %r, expected 200 with [1.25, -0.75, 0, 0]" % (st, data[:200]))
         for c in [int(x) for x in a.connections.split(",") if x]:
             m.wait_idle()
-            r = run_wrk(m.url, seconds, c, script)
+            r = run_wrk(m.url, seconds, c, script, StallWatch(m))
             total = sum(r["counts"].values())
             bad = {k: n for k, n in r["counts"].items() if not 200 <= k < 300}
             loadlib.log(NAME, "%d connections, %d s: %.0f requests/s, statuses %s, socket errors "

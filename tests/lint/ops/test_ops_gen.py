@@ -9,8 +9,12 @@ naming the file, on each kind of broken data file.
    handler that api/ defines.
 2. Broken copies of api/ops (one fault each: not JSON, a missing key, an
    unknown key, a duplicate path, an unknown handler, a file not listed, a
-   listed file missing, an envelope key in a request schema) each make the
-   generator exit 1 with a message naming the file.
+   listed file missing, an envelope key in a request schema, an
+   x-mechd-check annotation with an unknown kind or unit, without a kind or
+   with an extra key, another x- keyword, an annotation in a request
+   schema, a unit template that can expand to no unit, points at no string
+   of the answer or has unbalanced braces) each make the generator exit 1 with a message naming the file;
+   the kinds and units it reads from api/check_kind.c are the C lists.
 3. Generating into a scratch directory writes ops.def with one API_OP per
    data file and ops_handlers.h with one prototype each.
 Python 3 standard library only.
@@ -100,6 +104,62 @@ broken("not listed", write("gr/extra.json", "{}"), "api/ops/gr/extra.json",
        "not listed in api/ops/catalog_order.json")
 broken("listed, missing", lambda ops: os.remove(os.path.join(ops, "gr", "geodesic.json")),
        "catalog_order.json", '"gr/geodesic" is listed but api/ops/gr/geodesic.json does not exist')
+
+
+# x-mechd-check annotations (what a field is for POST /v1/check): a typo in a
+# kind or unit, a malformed annotation, another x- keyword or an annotation
+# in a request schema fails the build.
+def axes(d):
+    return d["response_schema"]["properties"]["principal"]["properties"]["axes"]
+
+
+broken("unknown kind", edit("rigid/inertia.json",
+                            lambda d: axes(d)["x-mechd-check"].update(kind="eigenvector")),
+       "api/ops/rigid/inertia.json", 'unknown kind "eigenvector"')
+broken("unknown unit", edit("rigid/inertia.json", lambda d: d["response_schema"]["properties"]
+                            ["mass"]["x-mechd-check"].update(unit="kilogram")),
+       "api/ops/rigid/inertia.json", 'unknown unit "kilogram"')
+broken("annotation without kind", edit("rigid/inertia.json",
+                                       lambda d: axes(d).update({"x-mechd-check": {"unit": "1"}})),
+       "api/ops/rigid/inertia.json", "/principal/properties/axes/x-mechd-check: must be")
+broken("annotation extra key", edit("rigid/inertia.json", lambda d: axes(d)["x-mechd-check"]
+                                    .update(units="1")),
+       "api/ops/rigid/inertia.json", "x-mechd-check: must be")
+broken("other vendor keyword", edit("rigid/inertia.json",
+                                    lambda d: axes(d).update({"x-mechd-kind": "axis"})),
+       "api/ops/rigid/inertia.json", "unknown keyword x-mechd-kind")
+broken("annotation in a request schema", edit("gr/geodesic.json", lambda d: d["request_schema"]
+                                              .update({"x-mechd-check": {"kind": "number"}})),
+       "api/ops/gr/geodesic.json", "it belongs in the response_schema")
+
+def decay_unit(unit):
+    def fn(d):
+        d["response_schema"]["properties"]["q_value"]["x-mechd-check"]["unit"] = unit
+    return edit("relativity/kinematics_decay.json", fn)
+
+
+broken("template expanding to no unit", decay_unit("{/energy_unit}/s"),
+       "api/ops/relativity/kinematics_decay.json", 'unknown unit "eV/s"')
+broken("template pointing nowhere", decay_unit("{/units}/c"),
+       "api/ops/relativity/kinematics_decay.json", "{/units} in '{/units}/c' must point at a string")
+broken("template without listed values", decay_unit("{/parent/mass}"),
+       "api/ops/relativity/kinematics_decay.json", "must point at a string")
+broken("unbalanced template", decay_unit("{/energy_unit/c"),
+       "api/ops/relativity/kinematics_decay.json", "unbalanced braces")
+
+# Every kind and unit the C tables know is accepted (ops_gen reads them from
+# api/check_kind.c): the vocabulary it reads is the one the server parses.
+sys.path.insert(0, os.path.join(SRC, "scripts"))
+import ops_gen  # noqa: E402
+kinds, units = ops_gen.check_vocabulary(API)
+kind_list = re.search(r'api_check_kind_list\[\] =\s*"([^;]*)";',
+                      open(os.path.join(API, "check_kind.c")).read(), re.S).group(1)
+unit_list = re.search(r'api_unit_list\[\] =\s*(".*?");',
+                      open(os.path.join(API, "check_kind.c")).read(), re.S).group(1)
+unit_list = "".join(re.findall(r'"([^"]*)"', unit_list))
+check(kinds == set(kind_list.split(", ")), "kinds read %s = api_check_kind_list" % sorted(kinds))
+check(units == set(unit_list.split(", ")), "units read = api_unit_list (%d)" % len(units))
+check("eigenvectors" in kinds and "MeV/c" in units and "deg" in units, "vocabulary sample")
 
 tmp = tempfile.mkdtemp()
 try:

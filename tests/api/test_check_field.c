@@ -1,0 +1,327 @@
+/* test_check_field.c — POST /v1/check reads what a field is (its kind and
+ * unit) from the operations' response schemas (x-mechd-check annotations,
+ * api/check_field.c), issue 20:
+ *   1. every entry of the C table the annotations replaced resolves to the
+ *      same kind and unit as before (the frozen list below is that table,
+ *      copied from api/check_kind.c before it was deleted; "*" = any index);
+ *   2. every annotation of every route names a kind and a unit mechd knows
+ *      (templates: for every energy_unit), and there are as many as written;
+ *   3. the walk on a small schema: properties (escaped names), items (index
+ *      tokens only), oneOf, units inherited through items but not properties,
+ *      an unknown kind or unit ignored, pointers the schema does not describe;
+ *   4. unit templates and the new units' factors (CODATA / SI 2019 values);
+ *   5. GET /v1 and the OpenAPI document carry the annotations as written.
+ */
+#include <gsl/gsl_errno.h>
+#include <jansson.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "api.h"
+#include "mech/budget.h"
+#include "check_field.h"
+#include "check_kind.h"
+#include "routes.h"
+#include "testlib.h"
+
+struct frozen {
+    const char *op, *pointer, *kind, *unit;
+};
+
+/* api/check_kind.c's defaults[] as it was at commit 507235b (34 entries). */
+static const struct frozen old_table[] = {
+    {"/v1/rigid/inertia", "/mass", "number", "kg"},
+    {"/v1/rigid/inertia", "/center_of_mass", "vector", "m"},
+    {"/v1/rigid/inertia", "/origin", "vector", "m"},
+    {"/v1/rigid/inertia", "/tensor", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/tensor/*", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/tensor/*/*", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/tensor_center_of_mass", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/tensor_center_of_mass/*", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/tensor_center_of_mass/*/*", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/principal/moments", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/principal/moments/*", "number", "kg m^2"},
+    {"/v1/rigid/inertia", "/principal/axes", "eigenvectors", "1"},
+    {"/v1/rigid/inertia", "/principal/axes/*", "axis", "1"},
+    {"/v1/rigid/inertia", "/angular_momentum", "vector", "kg m^2/s"},
+    {"/v1/rigid/inertia", "/kinetic_energy", "number", "J"},
+    {"/v1/rigid/inertia", "/angle_L_omega", "angle", "rad"},
+    {"/v1/rigid/inertia", "/torque_to_hold_axis", "vector", "N m"},
+    {"/v1/rotation/convert", "/quaternion", "quaternion", "1"},
+    {"/v1/rotation/convert", "/matrix", "number", "1"},
+    {"/v1/rotation/convert", "/axis_angle", "axis_angle", "rad"},
+    {"/v1/rotation/convert", "/axis_angle/angle", "angle", "rad"},
+    {"/v1/rotation/convert", "/rotation_vector", "vector", "rad"},
+    {"/v1/rotation/convert", "/euler_zxz", "angle", "rad"},
+    {"/v1/rotation/convert", "/euler_zxz/*", "angle", "rad"},
+    {"/v1/rotation/compose", "/quaternion", "quaternion", "1"},
+    {"/v1/rotation/compose", "/matrix", "number", "1"},
+    {"/v1/rotation/compose", "/axis_angle", "axis_angle", "rad"},
+    {"/v1/rotation/compose", "/axis_angle/angle", "angle", "rad"},
+    {"/v1/rotation/compose", "/rotation_vector", "vector", "rad"},
+    {"/v1/rotation/compose", "/euler_zxz", "angle", "rad"},
+    {"/v1/rotation/compose", "/euler_zxz/*", "angle", "rad"},
+    {"/v1/rotation/apply", "/matrix", "number", "1"},
+    {"/v1/rotation/apply", "/vectors/*", "vector", NULL},
+    {"/v1/rotation/apply", "/tensors/*", "number", NULL},
+};
+
+static int same_str(const char *a, const char *b)
+{
+    return a == b || (a && b && !strcmp(a, b));
+}
+
+/* The pointer with each "*" replaced by idx. */
+static void instantiate(const char *pattern, const char *idx, char *out, size_t n)
+{
+    size_t o = 0;
+    for (const char *p = pattern; *p && o + 4 < n; p++) {
+        if (*p == '*') {
+            for (const char *q = idx; *q && o + 1 < n; q++)
+                out[o++] = *q;
+        } else {
+            out[o++] = *p;
+        }
+    }
+    out[o] = '\0';
+}
+
+static void frozen_entries(void)
+{
+    size_t n = sizeof old_table / sizeof old_table[0];
+    CHECK_EQ_INT(n, 34);
+    static const char *const idx[] = {"0", "2", "10"};
+    for (size_t i = 0; i < n; i++)
+        for (size_t k = 0; k < 3; k++) {
+            char ptr[200];
+            instantiate(old_table[i].pointer, idx[k], ptr, sizeof ptr);
+            enum api_check_kind kind;
+            const char *unit;
+            int r = api_check_field(old_table[i].op, ptr, &kind, &unit);
+            int ok = r == 1 && !strcmp(api_check_kind_name(kind), old_table[i].kind) &&
+                     same_str(unit, old_table[i].unit);
+            if (!ok)
+                fprintf(stderr, "%s %s: %s %s, was %s %s\n", old_table[i].op, ptr,
+                        api_check_kind_name(kind), unit ? unit : "(none)", old_table[i].kind,
+                        old_table[i].unit ? old_table[i].unit : "(none)");
+            CHECK(ok);
+        }
+    /* fields the table did not list stay plain numbers of no unit */
+    enum api_check_kind kind;
+    const char *unit;
+    CHECK(api_check_field("/v1/rigid/inertia", "/parts/0/mass", &kind, &unit) == 0);
+    CHECK(kind == API_KIND_NUMBER && unit == NULL);
+    CHECK(api_check_field("/v1/rigid/inertia", "/principal/degenerate", &kind, &unit) == 0);
+    CHECK(api_check_field("/v1/rotation/convert", "/axis_angle/axis", &kind, &unit) == 0);
+    CHECK(kind == API_KIND_NUMBER && unit == NULL); /* not rad: no inheritance through objects */
+    CHECK(api_check_field("/v1/no/such", "/mass", &kind, &unit) == 0);
+    CHECK(api_check_field(NULL, "/mass", &kind, &unit) == 0);
+}
+
+/* Every annotation under s: counted, its kind and unit known. */
+static void every_annotation(const json_t *s, const char *where, size_t *count)
+{
+    if (json_is_array(s)) {
+        size_t i;
+        const json_t *v;
+        json_array_foreach(s, i, v) every_annotation(v, where, count);
+        return;
+    }
+    if (!json_is_object(s)) return;
+    const json_t *a = json_object_get(s, "x-mechd-check");
+    if (a) {
+        (*count)++;
+        enum api_check_kind k;
+        const char *kn = json_string_value(json_object_get(a, "kind"));
+        CHECK(kn && api_check_kind_parse(kn, &k) == 0);
+        const char *u = json_string_value(json_object_get(a, "unit"));
+        if (u && strchr(u, '{')) {
+            static const char *const eu[] = {"eV", "keV", "MeV", "GeV", "TeV"};
+            for (int i = 0; i < 5; i++) {
+                json_t *ans = json_pack("{s:s}", "energy_unit", eu[i]);
+                const char *x = api_check_unit_expand(u, ans);
+                if (!x) fprintf(stderr, "%s: %s does not expand with %s\n", where, u, eu[i]);
+                CHECK(x != NULL && !strncmp(x, eu[i], strlen(eu[i])));
+                json_decref(ans);
+            }
+        } else if (u) {
+            if (!api_unit_find(u)) fprintf(stderr, "%s: unknown unit %s\n", where, u);
+            CHECK(api_unit_find(u) != NULL);
+        }
+    }
+    const char *key;
+    const json_t *v;
+    json_object_foreach((json_t *)s, key, v) {
+        if (!strcmp(key, "x-mechd-check")) continue;
+        every_annotation(v, where, count);
+    }
+}
+
+static void all_routes(void)
+{
+    size_t count = 0;
+    for (size_t i = 0; i < api_route_count; i++)
+        every_annotation(api_route_response_schema(i), api_routes[i]->path, &count);
+    printf("%zu x-mechd-check annotations\n", count);
+    CHECK_EQ_INT(count, 34 + 259); /* the old table + the ones added with it (issue 20) */
+
+    /* a few of the added ones, read against their handlers */
+    enum api_check_kind kind;
+    const char *unit;
+    CHECK(api_check_field("/v1/relativity/kinematics/decay", "/at_theta_star/daughters/1/momentum",
+                          &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "{/energy_unit}/c"));
+    CHECK(api_check_field("/v1/relativity/kinematics/decay", "/lab_energy_ranges/0/1", &kind,
+                          &unit) == 1);
+    CHECK(same_str(unit, "{/energy_unit}")); /* inherited through two levels of items */
+    CHECK(api_check_field("/v1/trajectory", "/position/3", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_VECTOR && same_str(unit, "m"));
+    CHECK(api_check_field("/v1/trajectory", "/position/3/1", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "m"));
+    CHECK(api_check_field("/v1/earth/gravity", "/sphere/deviation/mrad", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "mrad"));
+    CHECK(api_check_field("/v1/rotation/compose", "/euler/extrinsic/ZYX/angles/2", &kind,
+                          &unit) == 1);
+    CHECK(kind == API_KIND_ANGLE && same_str(unit, "rad"));
+}
+
+static void walk(void)
+{
+    json_t *s = json_loads(
+        "{\"type\":\"object\",\"properties\":{"
+        "\"a/b\":{\"type\":\"number\",\"x-mechd-check\":{\"kind\":\"angle\",\"unit\":\"rad\"}},"
+        "\"m~\":{\"type\":\"number\",\"x-mechd-check\":{\"kind\":\"number\",\"unit\":\"kg\"}},"
+        "\"rows\":{\"type\":\"array\",\"x-mechd-check\":{\"kind\":\"matrix\",\"unit\":\"km\"},"
+        "  \"items\":{\"type\":\"array\",\"items\":{\"type\":\"number\"}}},"
+        "\"obj\":{\"type\":\"object\",\"x-mechd-check\":{\"kind\":\"axis_angle\",\"unit\":\"rad\"},"
+        "  \"properties\":{\"axis\":{\"type\":\"array\",\"items\":{\"type\":\"number\"}}}},"
+        "\"typo\":{\"type\":\"number\",\"x-mechd-check\":{\"kind\":\"vectr\",\"unit\":\"furlong\"}},"
+        "\"alt\":{\"oneOf\":[{\"type\":\"null\"},{\"type\":\"object\",\"properties\":{"
+        "  \"q\":{\"type\":\"array\",\"x-mechd-check\":{\"kind\":\"quaternion\",\"unit\":\"1\"}}}}]}"
+        "},\"x-mechd-check\":{\"kind\":\"vector\"}}",
+        0, NULL);
+    CHECK(s != NULL);
+    enum api_check_kind k;
+    const char *u;
+    CHECK(api_check_field_in_schema(s, "/a~1b", &k, &u) == 1 && k == API_KIND_ANGLE &&
+          same_str(u, "rad"));
+    CHECK(api_check_field_in_schema(s, "/m~0", &k, &u) == 1 && same_str(u, "kg"));
+    CHECK(api_check_field_in_schema(s, "/a/b", &k, &u) == 0 && k == API_KIND_NUMBER && !u);
+    CHECK(api_check_field_in_schema(s, "/m~2", &k, &u) == 0); /* a bad escape */
+    CHECK(api_check_field_in_schema(s, "/rows", &k, &u) == 1 && k == API_KIND_MATRIX &&
+          same_str(u, "km"));
+    CHECK(api_check_field_in_schema(s, "/rows/1/2", &k, &u) == 1 && k == API_KIND_NUMBER &&
+          same_str(u, "km"));
+    CHECK(api_check_field_in_schema(s, "/rows/x", &k, &u) == 0); /* items take indices only */
+    CHECK(api_check_field_in_schema(s, "/rows/", &k, &u) == 0);
+    CHECK(api_check_field_in_schema(s, "/obj", &k, &u) == 1 && k == API_KIND_AXIS_ANGLE);
+    CHECK(api_check_field_in_schema(s, "/obj/axis", &k, &u) == 0 && !u); /* not rad */
+    CHECK(api_check_field_in_schema(s, "/obj/axis/0", &k, &u) == 0 && !u);
+    CHECK(api_check_field_in_schema(s, "/typo", &k, &u) == 0 && k == API_KIND_NUMBER && !u);
+    CHECK(api_check_field_in_schema(s, "/alt/q", &k, &u) == 1 && k == API_KIND_QUATERNION &&
+          same_str(u, "1"));
+    CHECK(api_check_field_in_schema(s, "", &k, &u) == 1 && k == API_KIND_VECTOR && !u);
+    CHECK(api_check_field_in_schema(s, "rows", &k, &u) == 0); /* not a pointer */
+    CHECK(api_check_field_in_schema(s, "/nothing/here", &k, &u) == 0);
+    CHECK(api_check_field_in_schema(NULL, "/rows", &k, &u) == 0 && k == API_KIND_NUMBER);
+    CHECK(api_check_field_in_schema(s, NULL, &k, &u) == 0);
+    char longp[2000];
+    memset(longp, 'a', sizeof longp);
+    longp[0] = '/';
+    longp[sizeof longp - 1] = '\0';
+    CHECK(api_check_field_in_schema(s, longp, &k, &u) == 0); /* longer than any name */
+    json_decref(s);
+}
+
+#define EV 1.602176634e-19 /* J, exact (SI 2019) */
+#define C 299792458.0      /* m/s, exact */
+
+static void templates_and_units(void)
+{
+    json_t *ans = json_pack("{s:s,s:{s:s},s:i}", "energy_unit", "GeV", "deep", "u", "keV", "n", 3);
+    CHECK(same_str(api_check_unit_expand("{/energy_unit}/c", ans), "GeV/c"));
+    CHECK(same_str(api_check_unit_expand("{/energy_unit}/c^2", ans), "GeV/c^2"));
+    CHECK(same_str(api_check_unit_expand("{/energy_unit}", ans), "GeV"));
+    CHECK(same_str(api_check_unit_expand("{/deep/u}", ans), "keV"));
+    CHECK(same_str(api_check_unit_expand("kg m^2", ans), "kg m^2"));
+    CHECK(api_check_unit_expand("{/n}", ans) == NULL);          /* not a string */
+    CHECK(api_check_unit_expand("{/missing}/c", ans) == NULL);  /* nothing there */
+    CHECK(api_check_unit_expand("{/energy_unit", ans) == NULL); /* unclosed */
+    CHECK(api_check_unit_expand("{/energy_unit}/s", ans) == NULL); /* GeV/s: no such unit */
+    CHECK(api_check_unit_expand("furlong", ans) == NULL);
+    CHECK(api_check_unit_expand(NULL, ans) == NULL);
+    CHECK(api_check_unit_expand("{/energy_unit}/c", NULL) == NULL);
+    json_decref(ans);
+
+    /* the units added for the annotations: SI 2019 (e, c exact); CODATA 2018
+     * gives 1 MeV/c^2 = 1.78266192e-30 kg and 1 eV/c = 5.34428599e-28 kg m/s */
+    CHECK_CLOSE(api_unit_find("TeV")->factor, 1.602176634e-7, 1e-15, 0);
+    CHECK_CLOSE(api_unit_find("MeV/c^2")->factor, 1.78266192e-30, 1e-8, 0);
+    CHECK_CLOSE(api_unit_find("eV/c")->factor, 5.34428599e-28, 1e-8, 0);
+    CHECK_CLOSE(api_unit_find("TeV/c^2")->factor, 1e12 * EV / (C * C), 1e-15, 0);
+    CHECK_CLOSE(api_unit_find("keV/c")->factor, 1e3 * EV / C, 1e-15, 0);
+    CHECK_CLOSE(api_unit_find("mrad")->factor * 1000, 1, 1e-15, 0);
+    CHECK(!strcmp(api_unit_find("GeV/c^2")->dim, api_unit_find("kg")->dim));
+    CHECK(!strcmp(api_unit_find("TeV/c")->dim, api_unit_find("kg m/s")->dim));
+    CHECK(!strcmp(api_unit_find("mrad")->dim, api_unit_find("deg")->dim));
+    /* the message list names every unit of the table */
+    static const char *const added[] = {"TeV", "mrad", "eV/c", "keV/c", "TeV/c", "eV/c^2",
+                                        "keV/c^2", "MeV/c^2", "GeV/c^2", "TeV/c^2"};
+    for (size_t i = 0; i < sizeof added / sizeof added[0]; i++) {
+        char needle[32];
+        snprintf(needle, sizeof needle, " %s,", added[i]);
+        CHECK(strstr(api_unit_list, needle) != NULL);
+    }
+}
+
+static json_t *get(const char *path)
+{
+    struct api_request req = {"GET", path, NULL, NULL, 0, 1000, mech_clock_seconds() + 300, NULL};
+    struct api_response resp;
+    api_handle(&req, &resp);
+    json_t *j = resp.status == 200 && resp.body ? json_loads(resp.body, 0, NULL) : NULL;
+    api_response_free(&resp);
+    return j;
+}
+
+/* The annotation on /v1/rigid/inertia's principal axes in a response schema. */
+static const char *axes_kind(const json_t *rs)
+{
+    const json_t *a = json_object_get(
+        json_object_get(json_object_get(json_object_get(json_object_get(json_object_get(rs,
+            "properties"), "principal"), "properties"), "axes"), "x-mechd-check"), "kind");
+    return json_string_value(a);
+}
+
+static void documents(void)
+{
+    json_t *cat = get("/v1"), *oa = get("/v1/openapi.json");
+    CHECK(cat != NULL && oa != NULL);
+    const json_t *rs = NULL;
+    size_t i;
+    const json_t *op;
+    json_array_foreach(json_object_get(cat, "operations"), i, op)
+        if (!strcmp(json_string_value(json_object_get(op, "path")), "/v1/rigid/inertia"))
+            rs = json_object_get(op, "response_schema");
+    CHECK(same_str(axes_kind(rs), "eigenvectors"));
+    const json_t *post = json_object_get(
+        json_object_get(json_object_get(oa, "paths"), "/v1/rigid/inertia"), "post");
+    const json_t *ors = json_object_get(json_object_get(json_object_get(json_object_get(
+        json_object_get(post, "responses"), "200"), "content"), "application/json"), "schema");
+    CHECK(same_str(axes_kind(ors), "eigenvectors"));
+    json_decref(cat);
+    json_decref(oa);
+}
+
+int main(void)
+{
+    gsl_set_error_handler_off();
+    api_install_json_allocator();
+    CHECK(api_init() == 0);
+    frozen_entries();
+    all_routes();
+    walk();
+    templates_and_units();
+    documents();
+    TEST_MAIN_END();
+}
