@@ -2,9 +2,10 @@
  * input JSON Schema and a working example) and GET /v1/openapi.json
  * (OpenAPI 3.1: bearerAuth, the problem+json schema, each operation's answer
  * schema) from the route table, once, at api_init(). It reads the parsed
- * schemas it is handed and calls nothing in api.c (no api.c <-> catalog.c
- * cycle). JSON texts are parsed without JSON_DECODE_INT_AS_REAL, so an integer
- * of a schema or an example prints as an integer ("minItems": 3, "samples": 7). */
+ * schemas it is handed and calls nothing of the pipeline (api*.c), so the
+ * set-up (api_init.c) calls it and no loop runs back. JSON texts are parsed
+ * without JSON_DECODE_INT_AS_REAL, so an integer of a schema or an example
+ * prints as an integer ("minItems": 3, "samples": 7). */
 #include "catalog.h"
 
 #include <math.h>

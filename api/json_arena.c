@@ -4,7 +4,7 @@
  * A small request builds and frees some fifty jansson nodes (the parsed body,
  * the answer tree, object hash pairs): measured with callgrind, malloc and
  * free of those were ~16 % of mechd's user-space instructions per boost
- * request. Inside a scope (api.c's run_operation: parse, validate, compute,
+ * request. Inside a scope (api_run.c's api_run_post: parse, validate, compute,
  * write, release) the jansson allocator takes memory from this arena with a
  * pointer bump, frees of arena memory cost nothing, and the end of the scope
  * reclaims it all at once. When the arena is full, allocation falls back to

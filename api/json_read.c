@@ -4,7 +4,7 @@
  * jansson's own constructors (json_object, json_object_setn_new_nocheck,
  * json_array, json_array_append_new, json_real, json_stringn_nocheck,
  * json_true/false/null), so every allocation still goes through the allocator
- * api.c installs. It accepts only the plain case, which covers every request
+ * api_alloc.c installs. It accepts only the plain case, which covers every request
  * our clients send:
  *   - a top-level object or array (jansson without JSON_DECODE_ANY);
  *   - whitespace ' ' \t \n \r (jansson 2.14 src/load.c, lex_scan);

@@ -24,7 +24,7 @@ extern const char api_envelope_properties[];
 int api_route_schema_add_envelope(json_t *schema, char *msg, size_t n);
 
 /* Parsed schema of route i (borrowed; NULL before api_init()). Defined in
- * api.c, which parses every route's schema once. */
+ * api_init.c, which parses every route's schema once. */
 const json_t *api_route_schema(size_t i);
 
 /* Compiled schema of route i, for api_schema_validate (borrowed; lives for

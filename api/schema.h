@@ -21,6 +21,13 @@
  * hold a `const`, the JSON types of it and of its items, the keys it knows).
  * Validating a request then walks that tree and the instance only; it never
  * looks a keyword up in the schema's jansson objects.
+ *
+ * This header is the validator's only face. Behind it, one file a concept
+ * (schema_internal.h lists them and their one-way arrows): the subset and the
+ * self-check (schema_check.c), compilation (schema_compile.c), the walker
+ * (schema_validate.c), the choice among oneOf branches (schema_branch.c),
+ * the error list (schema_error.c), defaults (schema_defaults.c) and JSON
+ * pointers (schema_pointer.c).
  */
 #ifndef API_SCHEMA_H
 #define API_SCHEMA_H
@@ -72,8 +79,8 @@ void api_schema_free(struct api_schema *s);
  * errors, and that branch's errors are reported; when the choice itself is
  * wrong the error says so: "must be a string or an object, got number",
  * "unknown type \"foo\"; expected one of ...", "matches none of the allowed
- * forms; give one of {beta}, {rapidity, direction}, ..." (schema.c,
- * choose_branch, has the rules in order). s == NULL
+ * forms; give one of {beta}, {rapidity, direction}, ..." (schema_branch.c
+ * has the rules in order). s == NULL
  * acts as the empty schema (returns 0); callers pass a compiled route schema,
  * which every POST route has once api_init succeeded. */
 size_t api_schema_validate(const struct api_schema *s, const json_t *instance,

@@ -1,9 +1,11 @@
 /* http.c — libmicrohttpd front end (see http.h): per-request state, routing,
  * answering and the libmicrohttpd request callbacks. The rest of the front
  * end, one file per DESIGN heading (shared types in http_internal.h):
- * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY), quick.c
- * (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW CLIENTS, CONNECTION
- * FLOODS), http_daemon.c (start and stop) and io_loop.c (I/O THREADS).
+ * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY: it decides
+ * from the headers, through its own face http_security.h, and this file
+ * answers), quick.c (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW
+ * CLIENTS, CONNECTION FLOODS), http_daemon.c (start and stop) and io_loop.c
+ * (I/O THREADS).
  *
  * DESIGN. Per-request state (struct srv_req) is allocated on the first access
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED.
@@ -18,6 +20,7 @@
 #define _GNU_SOURCE /* POLLRDHUP */
 #endif
 #include "http_internal.h"
+#include "http_security.h"
 
 #include <arpa/inet.h>
 #include <errno.h>
@@ -192,7 +195,7 @@ static void req_cancel(struct srv_job *job)
 
 /* Headers every answer built here carries: the security set, and CORS for an
  * allowed origin. vary (static, or NULL) joins Origin in one Vary header. */
-void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const char *vary)
+static void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const char *vary)
 {
     MHD_add_response_header(mr, "X-Content-Type-Options", "nosniff");
     MHD_add_response_header(mr, "Referrer-Policy", "no-referrer");
@@ -335,13 +338,33 @@ static enum MHD_Result answer_text(struct srv_req *r, int status, const char *co
 
 /* A problem the server decides before the API layer sees the request (401,
  * 403): the problem table's body with this detail (static text), never cached. */
-enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
-                                      const char *detail)
+static enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
+                                             const char *detail)
 {
     api_response_free(&r->aresp);
     api_response_problem(&r->aresp, kind, detail);
     r->aresp.cache_control = "no-store";
     return answer(r, &r->aresp);
+}
+
+/* A CORS preflight (OPTIONS with Origin and Access-Control-Request-Method) of
+ * /v1: 204 with the allowed methods and headers for a listed origin, else the
+ * 403 (SECURITY, http_security.c, decides). */
+static enum MHD_Result answer_preflight(struct srv_req *r)
+{
+    const char *refused = srv_preflight_refusal(r->cors_ok);
+    if (refused) return answer_server_problem(r, API_PROBLEM_CORS_FORBIDDEN, refused);
+    struct MHD_Response *mr =
+        MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
+    r->state = REQ_ANSWERED;
+    if (!mr) return MHD_NO;
+    MHD_add_response_header(mr, "X-Request-Id", r->id);
+    add_common_headers(r, mr, NULL);
+    srv_preflight_headers(mr);
+    enum MHD_Result ret = MHD_queue_response(r->conn, MHD_HTTP_NO_CONTENT, mr);
+    MHD_destroy_response(mr);
+    if (ret == MHD_YES) r->status = MHD_HTTP_NO_CONTENT;
+    return ret;
 }
 
 static int is_get(const char *m)
@@ -568,32 +591,21 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
             r->close_conn = 1;
             return dispatch(h, r); /* answers 400, before any body byte is read */
         }
-        if (is_v1_path(r->path)) {
-            int cors_on = h->cfg->cors_origins[0] != '\0';
-            r->vary_origin = cors_on;
-            r->cors_ok = cors_on && r->origin && origin_allowed(h->cfg->cors_origins, r->origin);
-            if (strcmp(r->method, MHD_HTTP_METHOD_OPTIONS) == 0 && r->origin &&
-                MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
-                                            "Access-Control-Request-Method")) {
-                r->preflight = 1;
-                return MHD_YES;
+        struct srv_access acc; /* SECURITY (http_security.c) decides, this file answers */
+        srv_access_check(h->cfg, conn, r->method, r->path, r->origin, &acc);
+        r->vary_origin = acc.vary_origin;
+        r->cors_ok = acc.cors_ok;
+        if (acc.preflight) {
+            r->preflight = 1;
+            return MHD_YES;
+        }
+        if (acc.refusal) {
+            r->www_authenticate = acc.www_authenticate;
+            if (!conn_claim(r)) {
+                r->state = REQ_ANSWERED;
+                return MHD_NO;
             }
-            if (h->cfg->token_len > 0 &&
-                !token_ok(h->cfg, MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
-                                                              MHD_HTTP_HEADER_AUTHORIZATION))) {
-                int given = MHD_lookup_connection_value(conn, MHD_HEADER_KIND,
-                                                        MHD_HTTP_HEADER_AUTHORIZATION) != NULL;
-                r->www_authenticate = given ? "Bearer realm=\"mechd\", error=\"invalid_token\""
-                                            : "Bearer realm=\"mechd\"";
-                if (!conn_claim(r)) {
-                    r->state = REQ_ANSWERED;
-                    return MHD_NO;
-                }
-                return answer_server_problem(
-                    r, API_PROBLEM_UNAUTHORIZED,
-                    given ? "the bearer token is not valid for this server"
-                          : "this server requires 'Authorization: Bearer TOKEN' for /v1");
-            }
+            return answer_server_problem(r, API_PROBLEM_UNAUTHORIZED, acc.refusal);
         }
         const char *cl =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_CONTENT_LENGTH);

@@ -67,6 +67,32 @@ static void ensure_descriptors(const struct srv_config *cfg, unsigned int hard_l
                      cfg->max_connections, (unsigned long)need, (unsigned long)rl.rlim_cur);
 }
 
+/* What start_daemon needs beyond h: the address to bind and the flags. */
+struct daemon_ctx {
+    const struct sockaddr *sa;
+    unsigned int flags;
+};
+
+/* srv_io_daemon_fn: one daemon with mechd's callbacks and limits. */
+static struct MHD_Daemon *start_daemon(struct srv_http *h, int listen_fd, unsigned int conn_limit,
+                                       void *ctx)
+{
+    const struct daemon_ctx *d = ctx;
+    if (listen_fd < 0)
+        return MHD_start_daemon(
+            d->flags, (uint16_t)h->cfg->port, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER,
+            mhd_logger, NULL, MHD_OPTION_SOCK_ADDR, d->sa, MHD_OPTION_CONNECTION_TIMEOUT,
+            SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, conn_limit,
+            MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION,
+            on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+    return MHD_start_daemon(
+        d->flags, 0, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER, mhd_logger, NULL,
+        MHD_OPTION_LISTEN_SOCKET, (MHD_socket)listen_fd, MHD_OPTION_CONNECTION_TIMEOUT,
+        SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, conn_limit,
+        MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION, on_connection,
+        h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+}
+
 struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool)
 {
     struct srv_http *h = calloc(1, sizeof *h);
@@ -113,7 +139,8 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
     unsigned int hard_limit = conn_hard_limit(cfg);
     ensure_descriptors(cfg, hard_limit);
-    if (srv_io_start(h, io_threads, flags, sa, hard_limit) != 0) {
+    struct daemon_ctx dctx = {sa, flags};
+    if (srv_io_start(h, io_threads, hard_limit, start_daemon, &dctx) != 0) {
         srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
                      errno ? strerror(errno) : "libmicrohttpd failed to start");
         srv_io_stop(h);

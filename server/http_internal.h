@@ -1,7 +1,8 @@
 /* http_internal.h — what the files of the HTTP front end (http.c and the
  * files named in its header comment) share: limits, the per-connection and
  * per-request state, and the functions one file calls in another. Not for
- * use outside server/http*.c, conn_watch.c and quick.c. */
+ * use outside server/http*.c, conn_watch.c and quick.c (http_security.c
+ * needs none of it: see http_security.h). */
 #ifndef SRV_HTTP_INTERNAL_H
 #define SRV_HTTP_INTERNAL_H
 
@@ -44,11 +45,9 @@
  * the front end load its own scripts). JSON and text need no sources at all. */
 #define SRV_API_CSP                                                                                \
     "default-src 'none'; frame-ancestors 'none'; base-uri 'none'; form-action 'none'"
-/* CORS (only for origins listed with --cors-origin). */
-#define SRV_CORS_METHODS "GET, HEAD, POST, OPTIONS"
-#define SRV_CORS_HEADERS "Authorization, Content-Type, If-None-Match"
+/* CORS (only for origins listed with --cors-origin): what an answer lets the
+ * page read. The preflight's headers are SECURITY's (http_security.c). */
 #define SRV_CORS_EXPOSE "ETag, Retry-After, X-Request-Id"
-#define SRV_CORS_MAX_AGE "600"
 
 struct srv_req;
 
@@ -182,9 +181,6 @@ struct srv_req {
 extern _Thread_local int tl_closing_on_purpose;
 
 /* http.c */
-void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const char *vary);
-enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem kind,
-                                      const char *detail);
 enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *url,
                            const char *method, const char *version, const char *upload_data,
                            size_t *upload_data_size, void **con_cls);
@@ -198,11 +194,7 @@ void mhd_logger(void *cls, const char *fmt, va_list ap);
 enum MHD_Result refuse_mid_body(struct srv_http *h, struct srv_req *r);
 void take_body(struct srv_http *h, struct srv_req *r, const char *data, size_t n);
 
-/* http_security.c */
-int is_v1_path(const char *p);
-int origin_allowed(const char *list, const char *origin);
-int token_ok(const struct srv_config *cfg, const char *authorization);
-enum MHD_Result answer_preflight(struct srv_req *r);
+/* http_security.c has a face of its own (http_security.h): it needs none of this. */
 
 /* quick.c */
 void run_api(struct srv_req *r);
@@ -213,13 +205,18 @@ int quick_inline(struct srv_http *h, struct srv_req *r);
 int quick_fits_when_full(const struct srv_http *h, const struct srv_req *r);
 
 /* io_loop.c */
-/* Start n I/O threads, each running one libmicrohttpd daemon (MHD start
- * `flags` without an internal polling thread) with at most
- * ceil(conn_limit / n) connections; the first binds `sa` (port from
- * h->cfg), the others share its listening socket. Returns 0, or -1 with
+/* Starts one libmicrohttpd daemon without an internal polling thread: it
+ * binds the configured address when listen_fd < 0, else serves listen_fd
+ * (a descriptor it then owns); at most conn_limit connections. NULL on
+ * failure. (http_daemon.c provides it, with the request callbacks.) */
+typedef struct MHD_Daemon *(*srv_io_daemon_fn)(struct srv_http *h, int listen_fd,
+                                               unsigned int conn_limit, void *ctx);
+/* Start n I/O threads, each running one daemon made by start(h, fd, limit,
+ * ctx) with at most ceil(conn_limit / n) connections; the first binds, the
+ * others share a dup of its listening socket. Returns 0, or -1 with
  * whatever started left for srv_io_stop. */
-int srv_io_start(struct srv_http *h, unsigned int n, unsigned int flags, const struct sockaddr *sa,
-                 unsigned int conn_limit);
+int srv_io_start(struct srv_http *h, unsigned int n, unsigned int conn_limit,
+                 srv_io_daemon_fn start, void *ctx);
 /* The srv_io of the calling I/O thread; NULL on any other thread. */
 struct srv_io *srv_io_current(void);
 /* MHD_resume_connection(conn), then wake io's loop (io may be NULL: no

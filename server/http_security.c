@@ -1,5 +1,5 @@
 /* http_security.c — the bearer token and CORS of /v1 (part of the HTTP front end, see
- * http.c).
+ * http.c; its face is http_security.h).
  *
  * SECURITY. With --token-file, every /v1 request needs the bearer token
  * (checked on the first callback, before any body byte is read; compared in
@@ -12,38 +12,25 @@
  * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
  * request line or an unparsable Content-Length) carry none of these: it
  * offers no hook for them.
+ *
+ * This file decides (struct srv_access) and http.c answers: the checks here
+ * call nothing of the front end, so the two files do not depend on each other
+ * in a loop.
  */
-#ifdef __linux__
-#define _GNU_SOURCE /* POLLRDHUP */
-#endif
-#include "http_internal.h"
+#include "http_security.h"
 
-#include <arpa/inet.h>
-#include <errno.h>
-#include <malloc.h>
 #include <microhttpd.h>
-#include <netinet/in.h>
-#include <poll.h>
-#include <pthread.h>
-#include <stdarg.h>
-#include <stdatomic.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
-#include <sys/resource.h>
-#include <sys/random.h>
-#include <sys/socket.h>
-#include <time.h>
-#include <unistd.h>
 
-#include "api.h"
-#include "log.h"
-#include "static.h"
-#include "mech/budget.h"
+/* The allowed preflight's answer headers (CORS, only for origins listed with
+ * --cors-origin). */
+#define SRV_CORS_METHODS "GET, HEAD, POST, OPTIONS"
+#define SRV_CORS_HEADERS "Authorization, Content-Type, If-None-Match"
+#define SRV_CORS_MAX_AGE "600"
 
 /* /v1 and everything under it: the token and CORS apply here. */
-int is_v1_path(const char *p)
+static int is_v1_path(const char *p)
 {
     return strcmp(p, "/v1") == 0 || strncmp(p, "/v1/", 4) == 0;
 }
@@ -51,7 +38,7 @@ int is_v1_path(const char *p)
 /* Is origin (the Origin header) one of the comma-separated allowed origins?
  * Scheme and host compare case-insensitively (RFC 6454 §6.1 serialises them in
  * lower case anyway). */
-int origin_allowed(const char *list, const char *origin)
+static int origin_allowed(const char *list, const char *origin)
 {
     size_t n = strlen(origin);
     if (n == 0) return 0;
@@ -67,7 +54,7 @@ int origin_allowed(const char *list, const char *origin)
 /* Does the Authorization header carry the configured bearer token? The token
  * comparison reads a fixed SRV_TOKEN_MAX bytes whatever the input, so its time
  * says nothing about how many leading characters matched (RFC 6750 §2.1). */
-int token_ok(const struct srv_config *cfg, const char *authorization)
+static int token_ok(const struct srv_config *cfg, const char *authorization)
 {
     if (!authorization) return 0;
     while (*authorization == ' ')
@@ -88,25 +75,43 @@ int token_ok(const struct srv_config *cfg, const char *authorization)
     return diff == 0;
 }
 
-/* CORS preflight (OPTIONS with Origin and Access-Control-Request-Method) for
- * /v1: 204 with the allowed methods and headers for a listed origin, else 403.
- * Preflights carry no credentials, so they are answered before the token check. */
-enum MHD_Result answer_preflight(struct srv_req *r)
+void srv_access_check(const struct srv_config *cfg, struct MHD_Connection *conn,
+                      const char *method, const char *path, const char *origin,
+                      struct srv_access *out)
 {
-    if (!r->cors_ok)
-        return answer_server_problem(r, API_PROBLEM_CORS_FORBIDDEN,
-                                     "this origin is not in the server's --cors-origin list");
-    struct MHD_Response *mr =
-        MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
-    r->state = REQ_ANSWERED;
-    if (!mr) return MHD_NO;
-    MHD_add_response_header(mr, "X-Request-Id", r->id);
-    add_common_headers(r, mr, NULL);
+    memset(out, 0, sizeof *out);
+    if (!is_v1_path(path)) return;
+    int cors_on = cfg->cors_origins[0] != '\0';
+    out->vary_origin = cors_on;
+    out->cors_ok = cors_on && origin && origin_allowed(cfg->cors_origins, origin);
+    /* A CORS preflight (OPTIONS with Origin and Access-Control-Request-Method)
+     * carries no credentials, so it is decided before the token check. */
+    if (strcmp(method, MHD_HTTP_METHOD_OPTIONS) == 0 && origin &&
+        MHD_lookup_connection_value(conn, MHD_HEADER_KIND, "Access-Control-Request-Method")) {
+        out->preflight = 1;
+        return;
+    }
+    if (cfg->token_len == 0) return;
+    const char *auth =
+        MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_AUTHORIZATION);
+    if (token_ok(cfg, auth)) return;
+    int given = auth != NULL;
+    out->www_authenticate =
+        given ? "Bearer realm=\"mechd\", error=\"invalid_token\"" : "Bearer realm=\"mechd\"";
+    out->refusal = given ? "the bearer token is not valid for this server"
+                         : "this server requires 'Authorization: Bearer TOKEN' for /v1";
+}
+
+/* CORS preflight for /v1: 204 with the allowed methods and headers for a
+ * listed origin, else 403. */
+const char *srv_preflight_refusal(int cors_ok)
+{
+    return cors_ok ? NULL : "this origin is not in the server's --cors-origin list";
+}
+
+void srv_preflight_headers(struct MHD_Response *mr)
+{
     MHD_add_response_header(mr, "Access-Control-Allow-Methods", SRV_CORS_METHODS);
     MHD_add_response_header(mr, "Access-Control-Allow-Headers", SRV_CORS_HEADERS);
     MHD_add_response_header(mr, "Access-Control-Max-Age", SRV_CORS_MAX_AGE);
-    enum MHD_Result ret = MHD_queue_response(r->conn, MHD_HTTP_NO_CONTENT, mr);
-    MHD_destroy_response(mr);
-    if (ret == MHD_YES) r->status = MHD_HTTP_NO_CONTENT;
-    return ret;
 }

@@ -46,7 +46,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "log.h"
 #include "mech/budget.h"
 
 #define IO_QUIESCE_WAIT_S 2.0 /* how long srv_io_quiesce waits for the threads */
@@ -115,8 +114,8 @@ void srv_io_resume(struct srv_io *io, struct MHD_Connection *conn)
     io_wake(io);
 }
 
-int srv_io_start(struct srv_http *h, unsigned int n, unsigned int flags, const struct sockaddr *sa,
-                 unsigned int conn_limit)
+int srv_io_start(struct srv_http *h, unsigned int n, unsigned int conn_limit,
+                 srv_io_daemon_fn start, void *ctx)
 {
     h->io = calloc(n, sizeof *h->io);
     if (!h->io) return -1;
@@ -127,30 +126,19 @@ int srv_io_start(struct srv_http *h, unsigned int n, unsigned int flags, const s
     }
     /* libmicrohttpd's own pool split its limit evenly between the threads; so do we. */
     unsigned int per = conn_limit / n + (conn_limit % n ? 1u : 0u);
-    const struct srv_config *cfg = h->cfg;
     for (unsigned int i = 0; i < n; i++) {
         struct srv_io *io = &h->io[i];
         io->http = h;
         io->wake_fd = eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
         if (io->wake_fd < 0) return -1;
         if (i == 0) {
-            io->daemon = MHD_start_daemon(
-                flags, (uint16_t)cfg->port, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER,
-                mhd_logger, NULL, MHD_OPTION_SOCK_ADDR, sa, MHD_OPTION_CONNECTION_TIMEOUT,
-                SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, per,
-                MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION,
-                on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+            io->daemon = start(h, -1, per, ctx);
         } else {
             const union MHD_DaemonInfo *li =
                 MHD_get_daemon_info(h->io[0].daemon, MHD_DAEMON_INFO_LISTEN_FD);
             int fd = li ? fcntl(li->listen_fd, F_DUPFD_CLOEXEC, 0) : -1;
             if (fd < 0) return -1;
-            io->daemon = MHD_start_daemon(
-                flags, 0, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER, mhd_logger, NULL,
-                MHD_OPTION_LISTEN_SOCKET, (MHD_socket)fd, MHD_OPTION_CONNECTION_TIMEOUT,
-                SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, per,
-                MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION,
-                on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+            io->daemon = start(h, fd, per, ctx);
             if (!io->daemon) close(fd);
         }
         if (!io->daemon) return -1;

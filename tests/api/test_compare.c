@@ -389,7 +389,7 @@ static void test_integrators_catalog(void)
         CHECK(found);
     }
     CHECK_EQ_INT(json_array_size(json_object_get(cat, "accuracy_presets")), 4);
-    /* once api.c serves it, GET /v1/integrators returns the same document */
+    /* once the API serves it, GET /v1/integrators returns the same document */
     struct api_request req = {"GET", "/v1/integrators", NULL, NULL, 0, 1000,
                               mech_clock_seconds() + 10, NULL};
     struct api_response resp;

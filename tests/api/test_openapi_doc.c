@@ -77,7 +77,7 @@ static json_t *response_schema_at(json_t *doc, const char *path, const char *met
 int main(void)
 {
     gsl_set_error_handler_off();
-    /* Parsed as api.c parses them: as written. */
+    /* Parsed as api_init.c parses them: as written. */
     json_t *req[3] = {json_loads(DEMO_SCHEMA, 0, NULL), json_loads(DEMO_SCHEMA, 0, NULL), NULL};
     json_t *ans[3] = {json_loads(DEMO_ANSWER, 0, NULL), NULL,
                       json_loads(resource.response_schema, 0, NULL)};

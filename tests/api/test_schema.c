@@ -1,6 +1,6 @@
 /* test_schema.c — the JSON Schema subset validator: each keyword accepts what
  * it should, rejects what it should, and names the right JSON pointer; the
- * compiled validator (api/schema.c) gives exactly the errors — count, pointer,
+ * compiled validator (api/schema_*.c) gives exactly the errors — count, pointer,
  * detail, order — of a reference interpreter kept below (the interpreter mechd
  * used before schemas were compiled: it walks the schema's jansson objects;
  * for a oneOf that matches no branch it applies the rules of schema.h, written

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """build_corpus.py ROUTES_TSV OUT_DIR — seed corpora for tests/fuzz/ harnesses.
 
-Reads tests/api/cases/*/request.json (next to this script's ../api/cases) and
+Reads tests/api/cases/<domain>/*/request.json (next to this script's
+../api/cases; a case not yet filed under a domain too) and
 the route list printed by `FUZZ_LIST_ROUTES=1 fuzz_api` (index, method, path),
 and writes OUT_DIR/api/ (fuzz_api.c layout: flags byte, route byte, body),
 OUT_DIR/http/ (fuzz_http.c layout: METHOD\\nPATH?QUERY\\nCT\\nINM\\nBODY) and
@@ -48,12 +49,23 @@ def wire(method, target, ct, body, headers=(), version="HTTP/1.1"):
     return ("\r\n".join(lines) + "\r\n\r\n").encode("latin-1", "replace") + body
 
 
+def case_requests():
+    """request.json of every case: tests/api/cases/<domain>/<case>/, and any
+    case still at the top level (scripts/cases_by_domain.py files those)."""
+    found = []
+    for top in sorted(os.listdir(cases_dir)):
+        d = os.path.join(cases_dir, top)
+        if os.path.isfile(os.path.join(d, "request.json")):
+            found.append(os.path.join(d, "request.json"))
+        elif os.path.isdir(d):
+            found += [os.path.join(d, c, "request.json") for c in sorted(os.listdir(d))
+                      if os.path.isfile(os.path.join(d, c, "request.json"))]
+    return found
+
+
 METHOD_BITS = {"GET": 1, "HEAD": 2}
 n = 0
-for case in sorted(os.listdir(cases_dir)):
-    rq_path = os.path.join(cases_dir, case, "request.json")
-    if not os.path.isfile(rq_path):
-        continue
+for rq_path in case_requests():
     with open(rq_path) as f:
         rq = json.load(f)
     method, path = rq.get("method", "POST"), rq.get("path", "/")

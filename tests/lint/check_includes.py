@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """check_includes.py SOURCE_DIR — the include graph stays a tree of layers
 (issue 17): no file includes a .c file, no header includes itself through
-other headers (a cycle), and no source file in core/ is longer than
-MAX_LINES without a stated reason ("Why one file" in its opening comment).
+other headers (a cycle), and no source file in core/, api/ or server/ is
+longer than MAX_LINES without a stated reason ("Why one file" in its opening
+comment). A file being split in another change may stand in PENDING, with
+why: it is reported, not failed, and reported again once it is short enough
+to leave the list.
 
 Quoted includes are resolved as the compiler does: beside the including
 file first, then the include folders the build gives (core/include, core,
@@ -16,6 +19,11 @@ MAX_LINES = 800
 FOLDERS = ("core", "api", "server", "tests", "bench")
 INCLUDE_DIRS = ("core/include", "core", "api", "server", "tests")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+SIZED = ("core/", "api/", "server/")
+PENDING = {
+    "api/ep_grading.c": "/v1/check and /v1/batch, 803 lines since issue 20; left to the "
+                        "changes that own it: split check from batch or state why one file",
+}
 
 
 def sources(root):
@@ -50,12 +58,17 @@ def main():
             if target:
                 deps.append(target)
         graph[src] = deps
-        if src.startswith("core/") and src.endswith(".c"):
+        if src.startswith(SIZED) and src.endswith(".c"):
             n = text.count("\n")
             opening = text[: text.find("*/") + 2] if text.lstrip().startswith("/*") else ""
-            if n > MAX_LINES and "why one file" not in opening.lower():
+            long_file = n > MAX_LINES and "why one file" not in opening.lower()
+            if long_file and src in PENDING:
+                print(f"note: {src}: {n} lines (over {MAX_LINES}), pending: {PENDING[src]}")
+            elif long_file:
                 problems.append(f"{src}: {n} lines (over {MAX_LINES}) and its opening comment "
                                 "states no reason (\"Why one file ...\")")
+            elif src in PENDING:
+                print(f"note: {src} is {n} lines now: take it out of PENDING")
     # cycles among headers (a .c is never included, so only headers can close one)
     state, stack = {}, []
 

@@ -1,0 +1,157 @@
+/* api_docs.c — the two documents GET /v1 and GET /v1/openapi.json serve
+ * (catalog.c writes them): each with its strong ETag, a gzip copy made on
+ * first demand, and 304 for a matching If-None-Match. */
+#include "api_docs.h"
+
+#include <pthread.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+#include <zlib.h>
+
+#include "api_etag.h"
+#include "catalog.h"
+
+/* Both documents are fixed for the life of the process (generated from the
+ * route table at init), 0.5 and 1.2 MB of JSON that gzip shrinks tenfold. Each
+ * is kept with a gzip copy (zlib, level 6: 55 and 89 KB, 15 ms together; made
+ * on the first request that accepts gzip, so `mechd eval` and a server that
+ * is never asked pay nothing) and a strong ETag per
+ * representation: FNV-1a 64 of (build, the identity text), with "-gz" for the
+ * gzip one. Served as static memory (no copy per request), Cache-Control
+ * "no-cache" (a cache may keep them but revalidates: they change with the
+ * build), Vary: Accept-Encoding, and 304 with the 200's Content-Length for a
+ * matching If-None-Match. */
+struct doc_cache {
+    const char *text; /* borrowed from catalog.c */
+    size_t len;
+    unsigned char *gz; /* gzip of text, or NULL (then only identity is served) */
+    size_t gz_len;
+    char etag[24], etag_gz[24];
+    pthread_once_t gz_once; /* doc_gzip runs once, on first use */
+};
+static struct doc_cache doc_catalog = {.gz_once = PTHREAD_ONCE_INIT},
+                        doc_openapi = {.gz_once = PTHREAD_ONCE_INIT};
+
+/* gzip (RFC 1952) of text into d->gz; left NULL when memory runs out. */
+static int doc_gzip(struct doc_cache *d)
+{
+    z_stream zs;
+    memset(&zs, 0, sizeof zs);
+    if (deflateInit2(&zs, 6, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK) return -1;
+    uLong cap = deflateBound(&zs, (uLong)d->len);
+    d->gz = malloc(cap);
+    if (!d->gz) {
+        deflateEnd(&zs);
+        return -1;
+    }
+    zs.next_in = (Bytef *)(uintptr_t)d->text;
+    zs.avail_in = (uInt)d->len;
+    zs.next_out = d->gz;
+    zs.avail_out = (uInt)cap;
+    int rc = deflate(&zs, Z_FINISH);
+    d->gz_len = zs.total_out;
+    deflateEnd(&zs);
+    if (rc != Z_STREAM_END) {
+        free(d->gz);
+        d->gz = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+static int doc_init(struct doc_cache *d, const char *text)
+{
+    if (!text) return -1;
+    d->text = text;
+    d->len = strlen(text);
+    uint64_t h = api_etag_build_hash();
+    h = api_etag_fnv1a(h, text);
+    snprintf(d->etag, sizeof d->etag, "\"%016llx\"", (unsigned long long)h);
+    snprintf(d->etag_gz, sizeof d->etag_gz, "\"%016llx-gz\"", (unsigned long long)h);
+    return 0;
+}
+
+static void gzip_catalog(void)
+{
+    doc_gzip(&doc_catalog);
+}
+
+static void gzip_openapi(void)
+{
+    doc_gzip(&doc_openapi);
+}
+
+/* Whether an Accept-Encoding header value admits gzip (RFC 9110 12.5.3): listed
+ * as gzip or x-gzip with q > 0, or not listed while "*" is with q > 0. */
+static int accepts_gzip(const char *h)
+{
+    int gzip = -1, star = -1;
+    while (h && *h) {
+        while (*h == ' ' || *h == '\t' || *h == ',') h++;
+        if (!*h) break;
+        const char *name = h;
+        while (*h && *h != ',' && *h != ';' && *h != ' ' && *h != '\t') h++;
+        size_t nl = (size_t)(h - name);
+        int ok = 1; /* q defaults to 1 */
+        while (*h && *h != ',') {
+            while (*h == ';' || *h == ' ' || *h == '\t') h++;
+            if ((h[0] == 'q' || h[0] == 'Q') && h[1] == '=') {
+                ok = strtod(h + 2, NULL) > 0; /* a qvalue is 0..1 with at most 3 decimals */
+            }
+            while (*h && *h != ',' && *h != ';') h++;
+        }
+        if ((nl == 4 && !strncasecmp(name, "gzip", 4)) ||
+            (nl == 6 && !strncasecmp(name, "x-gzip", 6)))
+            gzip = ok;
+        else if (nl == 1 && *name == '*')
+            star = ok;
+    }
+    return gzip >= 0 ? gzip : star == 1;
+}
+
+/* GET/HEAD of /v1 or /v1/openapi.json (see doc_cache above). */
+static void serve_doc(struct doc_cache *d, const struct api_request_ext *ext,
+                      struct api_response *resp)
+{
+    int gz = ext && accepts_gzip(ext->accept_encoding);
+    if (gz) pthread_once(&d->gz_once, d == &doc_catalog ? gzip_catalog : gzip_openapi);
+    gz = gz && d->gz;
+    const char *etag = gz ? d->etag_gz : d->etag;
+    size_t len = gz ? d->gz_len : d->len;
+    memset(resp, 0, sizeof *resp);
+    snprintf(resp->etag, sizeof resp->etag, "%s", etag);
+    resp->cache_control = "no-cache";
+    resp->vary = "Accept-Encoding";
+    if (ext && api_etag_matches(ext->if_none_match, etag)) {
+        resp->status = 304;
+        resp->full_length = len;
+        return;
+    }
+    resp->status = 200;
+    resp->content_type = "application/json";
+    resp->body = gz ? (char *)d->gz : (char *)(uintptr_t)d->text;
+    resp->body_len = len;
+    resp->body_static = 1;
+    resp->content_encoding = gz ? "gzip" : NULL;
+}
+
+int api_docs_init(void)
+{
+    return doc_init(&doc_catalog, api_catalog_text()) || doc_init(&doc_openapi, api_openapi_text())
+               ? -1
+               : 0;
+}
+
+void api_docs_serve_catalog(const struct api_request_ext *ext, struct api_response *resp)
+{
+    serve_doc(&doc_catalog, ext, resp);
+}
+
+void api_docs_serve_openapi(const struct api_request_ext *ext, struct api_response *resp)
+{
+    serve_doc(&doc_openapi, ext, resp);
+}

@@ -1,0 +1,15 @@
+/* api_query.h — GET ?request= (api_query.c). */
+#ifndef API_API_QUERY_H
+#define API_API_QUERY_H
+
+#include <stddef.h>
+
+#include "api.h"
+
+/* Run POST operation ri on ext->query_request (the request JSON, decoded;
+ * not NULL) and answer into resp, with its ETag and Cache-Control. req must be
+ * the req of an api_full_request (api_run.h). */
+void api_run_query(size_t ri, const struct api_request *req, const struct api_request_ext *ext,
+                   struct api_response *resp);
+
+#endif
