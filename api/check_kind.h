@@ -7,7 +7,7 @@
  * (check_field.h).
  *
  * Pure functions on plain arrays of doubles: no JSON, no I/O, no allocation;
- * reentrant. ep_grading.c turns JSON into these arrays and back.
+ * reentrant. ep_check.c turns JSON into these arrays and back.
  */
 #ifndef API_CHECK_KIND_H
 #define API_CHECK_KIND_H

@@ -21,8 +21,6 @@ INCLUDE_DIRS = ("core/include", "core", "api", "server", "tests")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 SIZED = ("core/", "api/", "server/")
 PENDING = {
-    "api/ep_grading.c": "/v1/check and /v1/batch, 803 lines since issue 20; left to the "
-                        "changes that own it: split check from batch or state why one file",
 }
 
 

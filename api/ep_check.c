@@ -1,5 +1,5 @@
-/* ep_grading.c — POST /v1/check (grade a student's answer against any
- * operation's answer) and POST /v1/batch (several operations in one request).
+/* ep_check.c — POST /v1/check: grade a student's answer against any
+ * operation's answer (POST /v1/batch is ep_batch.c).
  *
  * Both run the inner operations in-process through api_run_operation(), the
  * same pipeline api_handle() uses (schema validation, handler, non-finite
@@ -15,6 +15,7 @@
 
 #include "check_field.h"
 #include "check_kind.h"
+#include "grading_nest.h"
 #include "mech/constants.h"
 #include "endpoint.h"
 #include "respond.h"
@@ -26,11 +27,6 @@
 #define CHECK_MAX_ELEMENTS 100000         /* numbers compared in one answer */
 
 /* ---- shared ----------------------------------------------------------------- */
-
-static int is_nested(const char *path)
-{
-    return !strcmp(path, "/v1/check") || !strcmp(path, "/v1/batch");
-}
 
 /* Turn an inner problem object into this call's failure (pointers were already
  * prefixed by api_run_operation). */
@@ -558,7 +554,7 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
     const char *unit_name = api_string(answer, "unit", NULL);
     int reveal = json_is_true(json_object_get(body, "reveal"));
 
-    if (is_nested(op)) {
+    if (api_is_nested_op(op)) {
         api_call_invalid(c, "/operation", "%s cannot be checked: /v1/check runs one operation",
                          op);
         return NULL;
@@ -742,62 +738,3 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
     json_decref(res);
     return out;
 }
-
-/* ---- POST /v1/batch --------------------------------------------------------------- */
-
-json_t *api_op_batch(struct api_call *c, const json_t *body)
-{
-    const json_t *ops = json_object_get(body, "operations");
-    json_t *results = json_array();
-    if (!results) return NULL;
-    size_t i;
-    json_t *item;
-    json_array_foreach(ops, i, item) {
-        const char *op = api_string(item, "operation", "");
-        char prefix[64];
-        snprintf(prefix, sizeof prefix, "/operations/%zu/request", i);
-        char opptr[64];
-        snprintf(opptr, sizeof opptr, "/operations/%zu/operation", i);
-        json_t *res = NULL;
-        int st;
-        if (is_nested(op)) {
-            res = api_problem_object(API_PROBLEM_VALIDATION, "cannot be nested in a batch");
-            json_object_set_new_nocheck(res, "errors",
-                                        json_pack("[{s:s,s:s}]", "pointer", opptr, "detail",
-                                                  "/v1/check and /v1/batch cannot be "
-                                                  "nested in a batch"));
-            st = api_problem_status(API_PROBLEM_VALIDATION);
-        } else if (c->budget.deadline > 0 && mech_clock_seconds() > c->budget.deadline) {
-            c->depends_on_load = 1; /* a partial answer: never cached (api.h) */
-            res = api_problem_object(API_PROBLEM_BUDGET,
-                                     "the batch's deadline passed before this operation started");
-            json_object_set_new_nocheck(
-                res, "progress",
-                json_pack("{s:i,s:i}", "completed", (int)i, "total", (int)json_array_size(ops)));
-            st = api_problem_status(API_PROBLEM_BUDGET);
-        } else {
-            st = api_run_operation(c, op, json_object_get(item, "request"), prefix, &res);
-            if (st < 0) {
-                char d[200];
-                snprintf(d, sizeof d, "no POST operation at %.120s; GET /v1 lists them", op);
-                res = api_problem_object(API_PROBLEM_VALIDATION, d);
-                json_object_set_new_nocheck(
-                    res, "errors", json_pack("[{s:s,s:s}]", "pointer", opptr, "detail", d));
-                st = api_problem_status(API_PROBLEM_VALIDATION);
-            }
-        }
-        if (!res) {
-            json_decref(results);
-            return NULL;
-        }
-        if (st != 200) { /* RFC 9457 instance: this item of this batch */
-            char inst[96];
-            snprintf(inst, sizeof inst, "/v1/batch#/operations/%zu", i);
-            json_object_set_new_nocheck(res, "instance", json_string(inst));
-        }
-        json_array_append_new(results, json_pack("{s:i,s:o}", "status", st,
-                                                 st == 200 ? "body" : "problem", res));
-    }
-    return json_pack("{s:o}", "results", results);
-}
-
