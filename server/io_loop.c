@@ -68,6 +68,15 @@ static void io_drain_wake(struct srv_io *io)
     (void)n;
 }
 
+/* The daemon's open connections, after freeing the closed ones (this
+ * thread only: libmicrohttpd cleans up on the caller's thread in this mode). */
+static unsigned int io_connections(struct srv_io *io)
+{
+    const union MHD_DaemonInfo *ci =
+        MHD_get_daemon_info(io->daemon, MHD_DAEMON_INFO_CURRENT_CONNECTIONS);
+    return ci ? ci->num_connections : 0;
+}
+
 /* One I/O thread: wait for the daemon's events (or a wake-up), run it, and
  * quiesce or stop when asked. */
 static void *io_main(void *arg)
@@ -93,7 +102,19 @@ static void *io_main(void *arg)
             nanosleep(&ts, NULL);
         }
         if (n > 0 && (p[1].revents & POLLIN)) io_drain_wake(io);
-        MHD_run(io->daemon);
+        /* At its limit (MHD_OPTION_CONNECTION_LIMIT, or descriptors run
+         * out) the daemon takes the listening socket out of its epoll set,
+         * and puts it back only at the start of a run below the limit: a run
+         * that closed connections is followed by another at once, or
+         * connections waiting in the backlog would wait for an unrelated
+         * event (a flood of clients that closed their half-sent requests
+         * left /healthz unanswered). Each repeat closed at least one. */
+        unsigned int before, after = io_connections(io);
+        do {
+            before = after;
+            MHD_run(io->daemon);
+            after = io_connections(io);
+        } while (after < before);
     }
     return NULL;
 }
