@@ -4,12 +4,9 @@
  * right-hand-side evaluations and CPU time: the data of a work-precision plot
  * for the user's own scene.
  *
- * Reference: the scene's exact solution when it has one (kepler, harmonic
- * oscillator, uniform gravity with or without drag: mech/reference.h);
- * otherwise a radau15 run at its round-off setting (rtol 1e-10, the floor of
- * its eps; see core/integrators/radau15.c). A first-order reference (the
- * Coriolis formulas) is not used here: its own O(W^2) error would hide the
- * differences between methods.
+ * Reference: the scene's exact solution when it has one, otherwise a radau15
+ * run at its round-off setting (mech/compare_sweep.h, which runs the sweep:
+ * this file reads the request, calls mech_compare_sweep once and encodes).
  *
  * CPU time: cost.runs[i].cpu_seconds for row i (and cost.reference_cpu_seconds),
  * only under the top-level cost block, which the framework drops for
@@ -34,51 +31,34 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/reference.h"
+#include "mech/compare_sweep.h"
 #include "mech/trajectory.h"
 #include "trajectory_request.h"
 
-#define COMPARE_MAX_RUNS 64
-/* radau15's round-off setting (its eps floor, core/integrators/radau15.c). */
-#define COMPARE_REFERENCE_METHOD "radau15"
-#define COMPARE_REFERENCE_RTOL 1e-10
+#define COMPARE_MAX_RUNS MECH_COMPARE_MAX_RUNS
 
 struct run_spec {
     const json_t *block; /* borrowed from the body or owned by `owned` */
     char pointer[48];
 };
 
-static double max3(double a, double b) { return a > b ? a : b; }
-
-/* Run one trajectory (samples into pos/vel, which hold p.samples each). */
-static enum mech_status run_traj(struct api_traj_request *rq, struct mech_budget *b,
-                                 struct mech_vec3 *pos, struct mech_vec3 *vel,
-                                 struct mech_trajectory_result *r, struct mech_error *e,
-                                 double *cpu)
-{
-    memset(r, 0, sizeof *r);
-    r->position = pos;
-    r->velocity = vel;
-    mech_error_clear(e);
-    double c0 = mech_cpu_seconds();
-    /* a row that selects by accuracy on a scene with a closed form is answered
-     * from it, as /v1/trajectory would (0 steps) */
-    enum mech_status st = rq->closed_form ? mech_trajectory_closed_form_ex(&rq->p, r, &rq->evidence, b, e)
-                                          : mech_trajectory_integrate(&rq->p, b, r, e);
-    *cpu = mech_cpu_seconds() - c0;
-    return st;
-}
+/* The runs as requested: a list, or a sweep's blocks built into `owned`. */
+struct run_list {
+    struct run_spec specs[COMPARE_MAX_RUNS];
+    size_t n;
+    json_t *owned;
+};
 
 /* Fail the whole request for run k (or the reference run, k < 0). */
-static json_t *fail_run(struct api_call *c, enum mech_status st, const struct mech_error *e,
-                        long k, const char *pointer, long total_steps)
+static json_t *fail_run(struct api_call *c, enum mech_status st, const struct mech_error *e, long k,
+                        const char *pointer, long total_steps)
 {
     struct mech_error e2 = *e;
     /* Parameters of the integrator block belong to the run, others to the
      * request (a scene error is the same for every run: no run named). */
     const char *prefix = "/request";
-    const int scene_error = (st == MECH_EINVAL || st == MECH_EDOMAIN) &&
-                            strncmp(e->param, "integrator/", 11) != 0;
+    const int scene_error =
+        (st == MECH_EINVAL || st == MECH_EDOMAIN) && strncmp(e->param, "integrator/", 11) != 0;
     if (!scene_error && k >= 0) {
         snprintf(e2.text, sizeof e2.text, "run %ld (%s): %.150s", k, pointer, e->text);
         if (!strncmp(e->param, "integrator/", 11)) {
@@ -114,361 +94,336 @@ static void not_run_reason(char *buf, size_t n, enum mech_status st, const struc
     if (st == MECH_EDEADLINE)
         snprintf(what, sizeof what, "the request's deadline passed");
     else
-        snprintf(what, sizeof what, "the shared step budget of %ld steps ran out", c->budget.max_steps);
+        snprintf(what, sizeof what, "the shared step budget of %ld steps ran out",
+                 c->budget.max_steps);
     if (stop_text)
         snprintf(buf, n, "stopped: %s during this run (%.150s)", what, stop_text);
     else
         snprintf(buf, n, "not started: %s during run %zu (%s)", what, k, pointer);
 }
 
-/* After run k ran out of budget (st, e; cpu its measured time): append its
- * row (already holding its settings; consumed) as not run with its progress,
- * then a not-run row for every later run, with the cost entries that keep
- * cost.runs aligned with the rows. Returns 0, or -1 if memory ran out. */
-static int mark_not_run(struct api_call *c, json_t *rows, json_t *row, json_t *cost_runs,
-                        const struct run_spec *specs, size_t k, size_t n, enum mech_status st,
-                        const struct mech_error *e, double cpu)
+/* "runs": each block as given, at /runs/i. */
+static void list_from_runs(const json_t *runs, struct run_list *L)
+{
+    for (size_t i = 0; i < json_array_size(runs) && L->n < COMPARE_MAX_RUNS; i++, L->n++) {
+        L->specs[L->n].block = json_array_get(runs, i);
+        snprintf(L->specs[L->n].pointer, sizeof L->specs[L->n].pointer, "/runs/%zu", i);
+    }
+}
+
+/* The list a sweep method takes its values from (NULL: not given). */
+static const json_t *sweep_values(const json_t *sweep, const char *m, int *adaptive)
+{
+    *adaptive = mech_ode_method_describe(mech_ode_method_find(m)).adaptive;
+    return json_object_get(sweep, *adaptive ? "tolerances" : "dts");
+}
+
+/* The number of runs a sweep makes, after checking every method has its
+ * values; 0 after recording an error. */
+static size_t sweep_count(struct api_call *c, const json_t *sweep)
+{
+    const json_t *ms = json_object_get(sweep, "methods");
+    size_t need = 0;
+    for (size_t i = 0; i < json_array_size(ms); i++) {
+        const char *m = json_string_value(json_array_get(ms, i));
+        int adaptive;
+        const json_t *list = sweep_values(sweep, m, &adaptive);
+        if (!list) {
+            api_call_invalid(c, adaptive ? "/sweep/tolerances" : "/sweep/dts", "method %s needs %s",
+                             m, adaptive ? "tolerances (its rtol values)" : "dts (its steps)");
+            return 0;
+        }
+        need += json_array_size(list);
+    }
+    if (need > COMPARE_MAX_RUNS) {
+        api_call_invalid(c, "/sweep", "the sweep makes %zu runs; at most %d are allowed", need,
+                         COMPARE_MAX_RUNS);
+        return 0;
+    }
+    return need;
+}
+
+/* "sweep": one block per method and value, atol = rtol x the scene's scale
+ * as mech_trajectory_choose() sets it. Returns 0 after recording an error. */
+static int list_from_sweep(struct api_call *c, const json_t *sweep,
+                           const struct api_traj_request *base, struct run_list *L)
+{
+    if (!sweep_count(c, sweep)) return 0;
+    struct mech_trajectory_choice ch;
+    double scale = 1.0;
+    if (mech_trajectory_choose(&base->p, 1e-8, &ch, NULL) == MECH_OK) scale = ch.profile.scale;
+    const json_t *ms = json_object_get(sweep, "methods");
+    for (size_t i = 0; i < json_array_size(ms); i++) {
+        const char *m = json_string_value(json_array_get(ms, i));
+        int adaptive;
+        const json_t *list = sweep_values(sweep, m, &adaptive);
+        for (size_t j = 0; j < json_array_size(list); j++, L->n++) {
+            double x = json_number_value(json_array_get(list, j));
+            json_t *blk =
+                adaptive ? json_pack("{s:s,s:f,s:f}", "method", m, "rtol", x, "atol", x * scale)
+                         : json_pack("{s:s,s:f}", "method", m, "dt", x);
+            if (!blk || json_array_append_new(L->owned, blk)) {
+                api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+                return 0;
+            }
+            L->specs[L->n].block = blk;
+            snprintf(L->specs[L->n].pointer, sizeof L->specs[L->n].pointer, "/sweep");
+        }
+    }
+    return 1;
+}
+
+/* The base scene and the list of runs. Returns 0 after recording an error;
+ * L->owned is the caller's to release either way. */
+static int read_request(struct api_call *c, const json_t *body, struct api_traj_request *base,
+                        struct run_list *L)
+{
+    if (!api_traj_request_parse(c, json_object_get(body, "request"), "/request", base)) return 0;
+    base->p.error_estimate = 0;
+    const json_t *runs = json_object_get(body, "runs"), *sweep = json_object_get(body, "sweep");
+    if (!!runs == !!sweep) {
+        api_call_invalid(c, runs ? "/sweep" : "", "give exactly one of runs and sweep");
+        return 0;
+    }
+    if (!(L->owned = json_array())) {
+        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+        return 0;
+    }
+    if (runs) list_from_runs(runs, L);
+    return runs || list_from_sweep(c, sweep, base, L);
+}
+
+/* Every run's request: the base with its integrator block, checked before
+ * anything runs (a run the budget leaves not run must still be a valid one).
+ * A new array of L->n (free()), or NULL after recording an error. */
+static struct api_traj_request *
+configure_runs(struct api_call *c, const struct api_traj_request *base, const struct run_list *L)
+{
+    struct api_traj_request *rqs = malloc((L->n ? L->n : 1) * sizeof *rqs);
+    if (!rqs) {
+        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+        return NULL;
+    }
+    for (size_t k = 0; k < L->n; k++) {
+        rqs[k] = *base;
+        api_traj_request_fix(&rqs[k]);
+        if (!api_traj_request_set_integrator(c, &rqs[k], L->specs[k].block, L->specs[k].pointer)) {
+            free(rqs);
+            return NULL;
+        }
+    }
+    return rqs;
+}
+
+/* "dry_run": every run's selection and predictions; nothing integrated. */
+static json_t *encode_dry_run(struct api_call *c, struct api_traj_request *rqs,
+                              const struct run_list *L)
+{
+    json_t *rows = json_array();
+    for (size_t k = 0; rows && k < L->n; k++) {
+        rqs[k].dry_run = 1;
+        json_t *row = json_object();
+        json_object_set_new_nocheck(
+            row, "requested",
+            json_deep_copy(api_call_as_given(c, L->specs[k].block, L->specs[k].pointer)));
+        json_object_set_new_nocheck(row, "status", json_string("dry_run"));
+        json_object_set_new_nocheck(row, "selection", api_traj_selection(c, &rqs[k], NULL));
+        json_array_append_new(rows, row);
+    }
+    json_t *res = json_object();
+    if (!res || !rows) {
+        json_decref(res);
+        json_decref(rows);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    json_object_set_new_nocheck(res, "dry_run", json_true());
+    json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
+    json_object_set_new_nocheck(res, "runs", rows);
+    json_object_set_new_nocheck(res, "total_steps", json_integer(0));
+    json_object_set_new_nocheck(res, "total_rhs_evaluations", json_integer(0));
+    return res;
+}
+
+/* The reference block: exact (kind, name) or the radau15 run. */
+static json_t *encode_reference(struct api_call *c, const struct mech_compare_result *out)
+{
+    json_t *j = json_object();
+    json_object_set_new_nocheck(j, "kind",
+                                json_string(out->reference_exact ? "exact" : "numerical"));
+    json_object_set_new_nocheck(j, "name", json_string(out->reference_name));
+    if (!out->reference_exact) {
+        json_object_set_new_nocheck(j, "rtol", api_real(c, MECH_COMPARE_REFERENCE_RTOL));
+        json_object_set_new_nocheck(j, "steps", json_integer(out->reference_stats.steps));
+        json_object_set_new_nocheck(j, "rhs_evaluations",
+                                    json_integer(out->reference_stats.rhs_evaluations));
+    }
+    return j;
+}
+
+/* A run's settings as it ran: the closed form, or method, tolerances, order. */
+static void encode_settings(struct api_call *c, json_t *row, const struct api_traj_request *rq)
+{
+    if (rq->closed_form) {
+        json_object_set_new_nocheck(row, "method", json_string("closed_form"));
+        json_object_set_new_nocheck(row, "order", json_null());
+        return;
+    }
+    json_t *set = api_traj_settings(c, &rq->p);
+    json_object_update(row, set);
+    json_decref(set);
+    const struct mech_integrator *mm = mech_ode_method_find(rq->p.method);
+    json_object_set_new_nocheck(row, "order",
+                                json_integer(mm ? mech_ode_method_describe(mm).order : 0));
+}
+
+/* A finished run's measurements against the reference. */
+static void encode_ok(struct api_call *c, json_t *row, const struct mech_compare_row *w)
+{
+    json_object_set_new_nocheck(row, "status", json_string("ok"));
+    json_object_set_new_nocheck(row, "max_position_error", api_real(c, w->max_position_error));
+    json_object_set_new_nocheck(row, "final_position_error", api_real(c, w->final_position_error));
+    json_object_set_new_nocheck(row, "max_velocity_error", api_real(c, w->max_velocity_error));
+    json_object_set_new_nocheck(row, "max_relative_position_error",
+                                api_real(c, w->max_relative_position_error));
+    json_object_set_new_nocheck(row, "max_relative_velocity_error",
+                                api_real(c, w->max_relative_velocity_error));
+    json_t *invs = json_array();
+    for (size_t i = 0; invs && i < w->n_invariants; i++)
+        json_array_append_new(invs, json_pack("{s:s,s:o}", "name", w->invariants[i].name,
+                                              "max_relative_drift",
+                                              api_real(c, w->invariants[i].max_relative_drift)));
+    json_object_set_new_nocheck(row, "invariants", invs);
+    json_object_set_new_nocheck(row, "steps", json_integer(w->stats.steps));
+    json_object_set_new_nocheck(row, "rejected_steps", json_integer(w->stats.rejected_steps));
+    json_object_set_new_nocheck(row, "rhs_evaluations", json_integer(w->stats.rhs_evaluations));
+}
+
+/* The stopped run's status, reason and progress (t_reached only when it
+ * ran: a fixed-step run refused up front reports how far the budget would
+ * have reached, which it did not). */
+static void encode_stopped(struct api_call *c, json_t *row, const struct mech_compare_row *w,
+                           const struct run_list *L, size_t k)
 {
     char reason[320];
-    not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, e->text);
+    not_run_reason(reason, sizeof reason, w->status, c, k, L->specs[k].pointer, w->err.text);
     json_object_set_new_nocheck(row, "status", json_string("not_run"));
     json_object_set_new_nocheck(row, "reason", json_string(reason));
-    /* t_reached only when it ran: a fixed-step run refused up front reports
-     * how far the budget would have reached, which it did not. */
-    json_t *prog = json_pack("{s:I}", "steps", (json_int_t)e->progress.steps);
-    if (prog && e->progress.steps > 0 && isfinite(e->progress.t_reached))
-        json_object_set_new_nocheck(prog, "t_reached", json_real(e->progress.t_reached));
-    if (prog && isfinite(e->progress.t_target))
-        json_object_set_new_nocheck(prog, "t_target", json_real(e->progress.t_target));
+    const struct mech_progress *pg = &w->err.progress;
+    json_t *prog = json_pack("{s:I}", "steps", (json_int_t)pg->steps);
+    if (prog && pg->steps > 0 && isfinite(pg->t_reached))
+        json_object_set_new_nocheck(prog, "t_reached", json_real(pg->t_reached));
+    if (prog && isfinite(pg->t_target))
+        json_object_set_new_nocheck(prog, "t_target", json_real(pg->t_target));
     json_object_set_new_nocheck(row, "progress", prog);
-    json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", cpu));
-    if (!row || json_array_append_new(rows, row)) return -1;
-    not_run_reason(reason, sizeof reason, st, c, k, specs[k].pointer, NULL);
-    for (size_t j = k + 1; j < n; j++) {
-        json_t *r = json_pack("{s:O,s:s,s:s}", "requested", api_call_as_given(c, specs[j].block, specs[j].pointer), "status", "not_run",
-                              "reason", reason);
-        json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", 0.0));
-        if (!r || json_array_append_new(rows, r)) return -1;
+}
+
+/* Row k: what was asked, its settings and its outcome. New reference. */
+static json_t *encode_row(struct api_call *c, const struct api_traj_request *rq,
+                          const struct mech_compare_row *w, const struct run_list *L, size_t k,
+                          const struct mech_compare_result *out)
+{
+    const json_t *asked = api_call_as_given(c, L->specs[k].block, L->specs[k].pointer);
+    if (out->partial && k > out->stopped_run) {
+        char reason[320];
+        size_t s = out->stopped_run;
+        not_run_reason(reason, sizeof reason, w->status, c, s, L->specs[s].pointer, NULL);
+        return json_pack("{s:O,s:s,s:s}", "requested", asked, "status", "not_run", "reason",
+                         reason);
     }
-    return 0;
+    json_t *row = json_object();
+    if (!row) return NULL;
+    json_object_set_new_nocheck(row, "requested", json_deep_copy(asked));
+    encode_settings(c, row, rq);
+    if (w->state == MECH_COMPARE_RUN_NOT_RUN) {
+        encode_stopped(c, row, w, L, k);
+    } else if (w->state == MECH_COMPARE_RUN_FAILED) {
+        json_object_set_new_nocheck(row, "status", json_string("failed"));
+        json_object_set_new_nocheck(row, "problem", json_string(mech_status_name(w->status)));
+        json_object_set_new_nocheck(row, "detail", json_string(w->err.text));
+    } else {
+        encode_ok(c, row, w);
+    }
+    return row;
+}
+
+/* The answer of a sweep that ran (partial or whole). */
+static json_t *encode_answer(struct api_call *c, const struct api_traj_request *rqs,
+                             const struct mech_compare_row *w, const struct run_list *L,
+                             const struct mech_compare_result *out)
+{
+    json_t *rows = json_array(), *cost_runs = json_array();
+    for (size_t k = 0; rows && k < L->n; k++) {
+        json_t *row = encode_row(c, &rqs[k], &w[k], L, k, out);
+        json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", w[k].cpu_seconds));
+        if (!row || json_array_append_new(rows, row)) {
+            json_decref(rows);
+            rows = NULL;
+        }
+    }
+    json_t *res = json_object();
+    if (!res || !rows || !cost_runs) {
+        json_decref(res);
+        json_decref(rows);
+        json_decref(cost_runs);
+        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    }
+    json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
+    json_object_set_new_nocheck(res, "reference", encode_reference(c, out));
+    json_object_set_new_nocheck(res, "partial", json_boolean(out->partial));
+    json_object_set_new_nocheck(res, "runs", rows);
+    json_object_set_new_nocheck(res, "total_steps", json_integer(out->total_steps));
+    /* depends on the load and the deadline: never cached */
+    if (out->partial) c->depends_on_load = 1;
+    /* measured time lives under the top-level cost block only, so the rest
+     * of the answer is byte-identical from run to run; the framework adds
+     * cost.cpu_seconds (the whole request) and drops the block for "cost": false */
+    json_t *jc = json_object();
+    if (out->reference_cpu_seconds >= 0.0)
+        json_object_set_new_nocheck(jc, "reference_cpu_seconds",
+                                    json_real(out->reference_cpu_seconds));
+    json_object_set_new_nocheck(jc, "runs", cost_runs);
+    json_object_set_new_nocheck(res, "cost", jc);
+    return res;
+}
+
+/* Run the sweep (one core call) and encode it, or fail naming the run. */
+static json_t *run_sweep(struct api_call *c, const struct api_traj_request *base,
+                         const struct api_traj_request *rqs, const struct run_list *L)
+{
+    struct mech_compare_config cfg[COMPARE_MAX_RUNS];
+    for (size_t k = 0; k < L->n; k++)
+        cfg[k] = (struct mech_compare_config){.p = &rqs[k].p, .closed_form = rqs[k].closed_form};
+    struct mech_compare_row *w = malloc((L->n ? L->n : 1) * sizeof *w);
+    if (!w) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
+    struct mech_compare_result out;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_compare_sweep(&base->p, cfg, L->n, &c->budget, w, &out, &e);
+    json_t *res = NULL;
+    if (st == MECH_OK)
+        res = encode_answer(c, rqs, w, L, &out);
+    else if (out.failed_run == -2)
+        api_call_fail_core(c, st, st == MECH_ENOMEM ? NULL : &e, "");
+    else
+        fail_run(c, st, &e, out.failed_run,
+                 out.failed_run >= 0 ? L->specs[out.failed_run].pointer : "", out.total_steps);
+    free(w);
+    return res;
 }
 
 json_t *api_op_compare(struct api_call *c, const json_t *body)
 {
     struct api_traj_request base;
-    if (!api_traj_request_parse(c, json_object_get(body, "request"), "/request", &base))
-        return NULL;
-    base.p.error_estimate = 0;
-    const json_t *runs = json_object_get(body, "runs"), *sweep = json_object_get(body, "sweep");
-    if (!!runs == !!sweep) {
-        api_call_invalid(c, runs ? "/sweep" : "", "give exactly one of runs and sweep");
-        return NULL;
-    }
-
-    /* ---- the list of runs ---- */
-    struct run_spec specs[COMPARE_MAX_RUNS];
-    size_t n = 0;
-    json_t *owned = json_array(); /* blocks built for a sweep */
-    if (!owned) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    if (runs) {
-        for (size_t i = 0; i < json_array_size(runs) && n < COMPARE_MAX_RUNS; i++, n++) {
-            specs[n].block = json_array_get(runs, i);
-            snprintf(specs[n].pointer, sizeof specs[n].pointer, "/runs/%zu", i);
-        }
-    } else {
-        const json_t *ms = json_object_get(sweep, "methods");
-        const json_t *tols = json_object_get(sweep, "tolerances");
-        const json_t *dts = json_object_get(sweep, "dts");
-        /* atol = rtol x the scene's scale, as mech_trajectory_choose() sets it */
-        struct mech_trajectory_choice ch;
-        double scale = 1.0;
-        if (mech_trajectory_choose(&base.p, 1e-8, &ch, NULL) == MECH_OK)
-            scale = ch.profile.scale;
-        size_t need = 0;
-        for (size_t i = 0; i < json_array_size(ms); i++) {
-            const char *m = json_string_value(json_array_get(ms, i));
-            int adaptive = mech_ode_method_describe(mech_ode_method_find(m)).adaptive;
-            const json_t *list = adaptive ? tols : dts;
-            if (!list) {
-                api_call_invalid(c, adaptive ? "/sweep/tolerances" : "/sweep/dts",
-                                 "method %s needs %s", m,
-                                 adaptive ? "tolerances (its rtol values)" : "dts (its steps)");
-                json_decref(owned);
-                return NULL;
-            }
-            need += json_array_size(list);
-        }
-        if (need > COMPARE_MAX_RUNS) {
-            api_call_invalid(c, "/sweep", "the sweep makes %zu runs; at most %d are allowed", need,
-                             COMPARE_MAX_RUNS);
-            json_decref(owned);
-            return NULL;
-        }
-        for (size_t i = 0; i < json_array_size(ms); i++) {
-            const char *m = json_string_value(json_array_get(ms, i));
-            int adaptive = mech_ode_method_describe(mech_ode_method_find(m)).adaptive;
-            const json_t *list = adaptive ? tols : dts;
-            for (size_t j = 0; j < json_array_size(list); j++, n++) {
-                double x = json_number_value(json_array_get(list, j));
-                json_t *blk = adaptive ? json_pack("{s:s,s:f,s:f}", "method", m, "rtol", x,
-                                                   "atol", x * scale)
-                                       : json_pack("{s:s,s:f}", "method", m, "dt", x);
-                if (!blk || json_array_append_new(owned, blk)) {
-                    json_decref(owned);
-                    return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-                }
-                specs[n].block = blk;
-                snprintf(specs[n].pointer, sizeof specs[n].pointer, "/sweep");
-            }
-        }
-    }
-
-    /* Every run's block is checked before anything runs: a run that the
-     * budget leaves not run must still be a valid one. */
-    for (size_t k = 0; k < n; k++) {
-        struct api_traj_request rq = base;
-        api_traj_request_fix(&rq);
-        if (!api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer)) {
-            json_decref(owned);
-            return NULL;
-        }
-    }
-
-    if (json_is_true(json_object_get(body, "dry_run")) || base.dry_run) {
-        /* every run's selection and predictions; nothing integrated */
-        json_t *res = json_object(), *rows = json_array();
-        for (size_t k = 0; res && rows && k < n; k++) {
-            struct api_traj_request rq = base;
-            api_traj_request_fix(&rq);
-            api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer);
-            rq.dry_run = 1;
-            json_t *row = json_object();
-            json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
-            json_object_set_new_nocheck(row, "status", json_string("dry_run"));
-            json_object_set_new_nocheck(row, "selection", api_traj_selection(c, &rq, NULL));
-            json_array_append_new(rows, row);
-        }
-        json_decref(owned);
-        json_object_set_new_nocheck(res, "dry_run", json_true());
-        json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
-        json_object_set_new_nocheck(res, "runs", rows);
-        json_object_set_new_nocheck(res, "total_steps", json_integer(0));
-        json_object_set_new_nocheck(res, "total_rhs_evaluations", json_integer(0));
-        if (!res || !rows) {
-            json_decref(res);
-            return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-        }
-        return res;
-    }
-
-    const size_t ns = base.p.samples;
-    struct mech_vec3 *buf = malloc(4 * ns * sizeof *buf);
-    if (!buf) {
-        json_decref(owned);
-        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    }
-    struct mech_vec3 *ref_pos = buf, *ref_vel = buf + ns, *pos = buf + 2 * ns,
-                     *vel = buf + 3 * ns;
-    long used = 0;
-    struct mech_error e;
-    struct mech_trajectory_result r;
-    double cpu = 0.0;
+    struct run_list L = {.n = 0, .owned = NULL};
     json_t *res = NULL;
-    json_t *cost_runs = json_array();
-    double ref_cpu = -1.0;
-
-    /* ---- the reference ---- */
-    struct mech_trajectory_reference exact;
-    const int have_exact =
-        mech_trajectory_reference_find(&base.p, &exact) == MECH_REFERENCE_EXACT;
-    json_t *jref = json_object();
-    size_t ref_n = 0;
-    int ref_stopped = 0;
-    struct mech_vec3 ref_stop = mech_vec3_make(0, 0, 0), ref_stop_v = ref_stop;
-    if (have_exact) {
-        json_object_set_new_nocheck(jref, "kind", json_string("exact"));
-        json_object_set_new_nocheck(jref, "name", json_string(exact.name));
-    } else {
-        struct api_traj_request rq = base;
-        api_traj_request_fix(&rq);
-        rq.p.method = COMPARE_REFERENCE_METHOD;
-        rq.p.opt.rtol = COMPARE_REFERENCE_RTOL;
-        rq.p.opt.atol = 0;
-        struct mech_budget b = c->budget;
-        enum mech_status st = run_traj(&rq, &b, ref_pos, ref_vel, &r, &e, &cpu);
-        if (st != MECH_OK) {
-            fail_run(c, st, &e, -1, "", (long)e.progress.steps);
-            goto done;
-        }
-        used += r.total_steps;
-        ref_n = r.n_samples;
-        ref_stopped = r.stopped;
-        ref_stop = r.stop_position;
-        ref_stop_v = r.stop_velocity;
-        json_object_set_new_nocheck(jref, "kind", json_string("numerical"));
-        json_object_set_new_nocheck(jref, "name", json_string(COMPARE_REFERENCE_METHOD));
-        json_object_set_new_nocheck(jref, "rtol", api_real(c, COMPARE_REFERENCE_RTOL));
-        json_object_set_new_nocheck(jref, "steps", json_integer(r.stats.steps));
-        json_object_set_new_nocheck(jref, "rhs_evaluations", json_integer(r.stats.rhs_evaluations));
-        ref_cpu = cpu;
+    if (read_request(c, body, &base, &L)) {
+        struct api_traj_request *rqs = configure_runs(c, &base, &L);
+        if (rqs && (json_is_true(json_object_get(body, "dry_run")) || base.dry_run))
+            res = encode_dry_run(c, rqs, &L);
+        else if (rqs)
+            res = run_sweep(c, &base, rqs, &L);
+        free(rqs);
     }
-
-    /* ---- the runs ---- */
-    json_t *rows = json_array();
-    size_t finished = 0; /* rows with status ok or failed */
-    int partial = 0;
-    for (size_t k = 0; rows && k < n; k++) {
-        struct api_traj_request rq = base;
-        api_traj_request_fix(&rq);
-        if (!api_traj_request_set_integrator(c, &rq, specs[k].block, specs[k].pointer)) {
-            json_decref(rows);
-            rows = NULL;
-            goto done;
-        }
-        json_t *row = json_object();
-        json_object_set_new_nocheck(row, "requested", json_deep_copy(api_call_as_given(c, specs[k].block, specs[k].pointer)));
-        if (rq.closed_form) {
-            json_object_set_new_nocheck(row, "method", json_string("closed_form"));
-            json_object_set_new_nocheck(row, "order", json_null());
-        } else {
-            json_t *set = api_traj_settings(c, &rq.p);
-            json_object_update(row, set);
-            json_decref(set);
-            const struct mech_integrator *mm = mech_ode_method_find(rq.p.method);
-            json_object_set_new_nocheck(row, "order",
-                                        json_integer(mm ? mech_ode_method_describe(mm).order : 0));
-        }
-        struct mech_budget b = c->budget;
-        b.max_steps = c->budget.max_steps - used;
-        enum mech_status st;
-        if (b.max_steps <= 0) {
-            mech_error_clear(&e);
-            st = mech_error_set(&e, MECH_EBUDGET, NULL,
-                                "no steps left of the shared budget of %ld steps",
-                                c->budget.max_steps);
-            e.progress.steps = 0;
-        } else {
-            st = run_traj(&rq, &b, pos, vel, &r, &e, &cpu);
-        }
-        if (st == MECH_OK) used += r.total_steps;
-        else if (e.progress.steps > 0) used += e.progress.steps;
-        const int row_failure =
-            st == MECH_ENUMERIC ||
-            ((st == MECH_EINVAL || st == MECH_EDOMAIN) && !strncmp(e.param, "integrator", 10));
-        const int out_of_budget = st == MECH_EBUDGET || st == MECH_EDEADLINE;
-        if (st != MECH_OK && !row_failure && !(out_of_budget && finished > 0)) {
-            json_decref(row);
-            json_decref(rows);
-            rows = NULL;
-            fail_run(c, st, &e, (long)k, specs[k].pointer, used);
-            goto done;
-        }
-        if (out_of_budget) {
-            /* Keep the finished runs: this one and the rest are not run. */
-            if (mark_not_run(c, rows, row, cost_runs, specs, k, n, st, &e, cpu)) {
-                json_decref(rows);
-                rows = NULL;
-                api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-                goto done;
-            }
-            partial = 1;
-            break;
-        }
-        finished++;
-        if (st != MECH_OK) {
-            json_object_set_new_nocheck(row, "status", json_string("failed"));
-            json_object_set_new_nocheck(row, "problem", json_string(mech_status_name(st)));
-            json_object_set_new_nocheck(row, "detail", json_string(e.text));
-        } else {
-            json_object_set_new_nocheck(row, "status", json_string("ok"));
-            double emax, efin, evmax, erel, evrel;
-            if (have_exact) {
-                emax = r.reference.max_position_error;
-                efin = r.reference.final_position_error;
-                evmax = r.reference.max_velocity_error;
-                erel = r.reference.max_relative_position_error;
-                evrel = r.reference.max_relative_velocity_error;
-            } else {
-                /* against the reference run, over the common samples and the stop */
-                size_t m = r.n_samples < ref_n ? r.n_samples : ref_n;
-                double rmax = 0, vmax = 0;
-                emax = efin = evmax = 0;
-                for (size_t i = 0; i <= m; i++) {
-                    struct mech_vec3 a, av, b0, bv;
-                    if (i < m) {
-                        a = pos[i], av = vel[i], b0 = ref_pos[i], bv = ref_vel[i];
-                    } else if (r.stopped && ref_stopped) {
-                        a = r.stop_position, av = r.stop_velocity, b0 = ref_stop, bv = ref_stop_v;
-                    } else {
-                        break;
-                    }
-                    efin = mech_vec3_norm(mech_vec3_sub(a, b0));
-                    emax = max3(emax, efin);
-                    evmax = max3(evmax, mech_vec3_norm(mech_vec3_sub(av, bv)));
-                    rmax = max3(rmax, mech_vec3_norm(b0));
-                    vmax = max3(vmax, mech_vec3_norm(bv));
-                }
-                erel = rmax > 0 ? emax / rmax : 0;
-                evrel = vmax > 0 ? evmax / vmax : 0;
-            }
-            json_object_set_new_nocheck(row, "max_position_error", api_real(c, emax));
-            json_object_set_new_nocheck(row, "final_position_error", api_real(c, efin));
-            json_object_set_new_nocheck(row, "max_velocity_error", api_real(c, evmax));
-            json_object_set_new_nocheck(row, "max_relative_position_error", api_real(c, erel));
-            json_object_set_new_nocheck(row, "max_relative_velocity_error", api_real(c, evrel));
-            json_t *invs = json_array();
-            for (size_t i = 0; invs && i < r.n_invariants; i++)
-                json_array_append_new(invs, json_pack("{s:s,s:o}", "name", r.invariants[i].name,
-                                                      "max_relative_drift",
-                                                      api_real(c, r.invariants[i].max_relative_drift)));
-            json_object_set_new_nocheck(row, "invariants", invs);
-            json_object_set_new_nocheck(row, "steps", json_integer(r.stats.steps));
-            json_object_set_new_nocheck(row, "rejected_steps",
-                                        json_integer(r.stats.rejected_steps));
-            json_object_set_new_nocheck(row, "rhs_evaluations",
-                                        json_integer(r.stats.rhs_evaluations));
-        }
-        /* measured time lives under the top-level cost block only, so the
-         * rest of the answer is byte-identical from run to run */
-        json_array_append_new(cost_runs, json_pack("{s:f}", "cpu_seconds", st == MECH_OK ? cpu : 0.0));
-        if (!row || json_array_append_new(rows, row)) {
-            json_decref(rows);
-            rows = NULL;
-            api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-            goto done;
-        }
-    }
-    if (!rows) {
-        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-        goto done;
-    }
-    res = json_object();
-    if (res) {
-        json_object_set_new_nocheck(res, "operation", json_string("/v1/trajectory"));
-        json_object_set_new_nocheck(res, "reference", jref);
-        jref = NULL;
-        json_object_set_new_nocheck(res, "partial", json_boolean(partial));
-        json_object_set_new_nocheck(res, "runs", rows);
-        json_object_set_new_nocheck(res, "total_steps", json_integer(used));
-        /* depends on the load and the deadline: never cached */
-        if (partial) c->depends_on_load = 1;
-        /* the framework adds cost.cpu_seconds (the whole request) and drops
-         * the block for "cost": false */
-        json_t *jc = json_object();
-        if (ref_cpu >= 0.0)
-            json_object_set_new_nocheck(jc, "reference_cpu_seconds", json_real(ref_cpu));
-        json_object_set_new_nocheck(jc, "runs", cost_runs);
-        cost_runs = NULL;
-        json_object_set_new_nocheck(res, "cost", jc);
-    } else {
-        json_decref(rows);
-        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    }
-done:
-    json_decref(cost_runs);
-    json_decref(jref);
-    json_decref(owned);
-    free(buf);
+    json_decref(L.owned);
     return res;
 }
-
