@@ -58,18 +58,11 @@ void api_run_query(size_t ri, const struct api_request *req, const struct api_re
         resp->cache_control = "public, max-age=86400";
         return;
     }
-    json_t *out = NULL;
-    char note[200];
-    note[0] = '\0';
-    int dep = 0;
-    int status = api_run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &dep);
-    json_decref(body);
-    api_respond_outcome(resp, status, out, note);
+    api_run_body_into(ri, req, body, resp);
     /* An answer that depended on load (a batch item stopped by the deadline,
      * a partial result) is not the answer of this request: it must neither be
      * cached nor carry the ETag the full answer has. */
-    resp->depends_on_load = dep;
-    if (resp->status == 200 && etag[0] && !dep) {
+    if (resp->status == 200 && etag[0] && !resp->depends_on_load) {
         snprintf(resp->etag, sizeof resp->etag, "%s", etag);
         resp->cache_control = "public, max-age=86400";
     } else {

@@ -252,6 +252,12 @@ static void run_body(size_t ri, const struct api_request *req, struct api_respon
         api_response_problem(resp, API_PROBLEM_MALFORMED_JSON, d);
         return;
     }
+    api_run_body_into(ri, req, body, resp);
+}
+
+void api_run_body_into(size_t ri, const struct api_request *req, json_t *body,
+                       struct api_response *resp)
+{
     json_t *out = NULL;
     char note[200];
     note[0] = '\0';

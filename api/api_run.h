@@ -34,6 +34,12 @@ int api_run_parsed(size_t ri, const struct api_request *req, const json_t *body,
  * the 500); note (may be NULL or "") goes to resp->note. */
 void api_respond_outcome(struct api_response *resp, int status, json_t *out, const char *note);
 
+/* Run the parsed top-level body of operation ri (api_run_parsed with no
+ * prefix), release body, and serialise the outcome into resp, with
+ * resp->depends_on_load set when the answer depended on load or time. */
+void api_run_body_into(size_t ri, const struct api_request *req, json_t *body,
+                       struct api_response *resp);
+
 /* A parse that failed for lack of memory is the server's failure, not a
  * malformed body: returns 1 with resp filled with the 500, else 0. */
 int api_parse_out_of_memory(const json_error_t *jerr, struct api_response *resp);
