@@ -109,9 +109,7 @@ static int fc_read(struct api_call *c, const json_t *body, struct mech_foucault_
         return 0;
     }
     q->target = api_number_of(body, "target_error");
-    for (int i = 0; *accuracy && i < MECH_ACCURACY_COUNT; i++)
-        if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, *accuracy))
-            q->target = mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
+    if (*accuracy) q->target = mech_accuracy_target(0, 0.0, *accuracy, NULL);
     q->target_defaulted = !*accuracy && !target_given;
 
     int nrun = api_call_given(c, "/swings") != NULL;

@@ -6,7 +6,18 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/trajectory.h"
+#include "mech/accuracy.h"
+#include "mech/method_choice.h"
+
+struct mech_ode_options api_integrator_settings(const json_t *block)
+{
+    struct mech_ode_options o = {0.0, 0.0, 0.0};
+    const json_t *v;
+    if (json_is_number(v = json_object_get(block, "rtol"))) o.rtol = json_number_value(v);
+    if (json_is_number(v = json_object_get(block, "atol"))) o.atol = json_number_value(v);
+    if (json_is_number(v = json_object_get(block, "dt"))) o.dt = json_number_value(v);
+    return o;
+}
 
 int api_integrator_block_parse(struct api_call *c, const json_t *in, const char *pointer,
                                double span, const struct api_integrator_system *sys,
@@ -55,97 +66,48 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
             return 0;
         }
         out->method = method;
-        out->opt.rtol = api_number(in, "rtol", 1e-10);
-        out->opt.atol = api_number(in, "atol", 1e-12);
-        out->opt.dt = api_number(in, "dt", 0);
+        out->opt = api_integrator_settings(in);
         return 1;
     }
-    double target;
+    /* by accuracy: the one policy for first-order systems (mech/method_choice.h) */
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
-    if (te) {
-        target = json_number_value(te);
-    } else {
-        const char *acc = in ? api_string(in, "accuracy", "balanced") : "balanced";
-        const struct mech_accuracy_preset *pr = mech_accuracy_preset_at(MECH_ACCURACY_BALANCED);
-        for (int a = 0; a < MECH_ACCURACY_COUNT; a++)
-            if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)a)->name, acc))
-                pr = mech_accuracy_preset_at((enum mech_accuracy)a);
-        out->accuracy = pr->name;
-        target = pr->promise;
-    }
-    /* the predictive chooser (core/chooser.c) on a first-order profile */
-    struct mech_scene_profile prof;
-    memset(&prof, 0, sizeof prof);
-    prof.cls = MECH_SCENE_FIRST_ORDER;
-    prof.span = span >= 0.0 && isfinite(span) ? span : 0.0;
-    prof.T = 1.0;
-    prof.scale = sys->state_scale > 0.0 ? sys->state_scale : 1.0;
-    prof.samples = sys->samples;
-    prof.rhs_cost_s = sys->rhs_cost_s;
-    prof.cost_span = hooks->cost_span > 0.0 && isfinite(hooks->cost_span) ? hooks->cost_span : 0.0;
-    prof.closed_form_evaluations = hooks->closed_form_evaluations;
-    prof.closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval;
-    prof.stiff = 0;
-    prof.closed_form = closed_form_name != NULL;
-    prof.closed_form_name = closed_form_name;
-    prof.closed_form_allowed = !(in && json_is_false(json_object_get(in, "closed_form")));
+    const struct mech_accuracy_preset *preset = NULL;
+    const double target = mech_accuracy_target(te != NULL, json_number_value(te),
+                                               in ? api_string_of(in, "accuracy") : NULL, &preset);
+    out->accuracy = preset ? preset->name : NULL;
+    const struct mech_first_order_system fs = {
+        .equations = sys->equations,
+        .state = sys->state,
+        .state_scale = sys->state_scale,
+        .samples = sys->samples,
+        .rhs_cost_s = sys->rhs_cost_s,
+        .span = span,
+        .cost_span = hooks->cost_span,
+        .closed_form_name = closed_form_name,
+        .closed_form_allowed = !(in && json_is_false(json_object_get(in, "closed_form"))),
+        .closed_form_evaluations = hooks->closed_form_evaluations,
+        .closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval,
+        .pilot = hooks->pilot,
+        .defaulted = in == NULL,
+    };
+    struct mech_method_choice mc;
     struct mech_error e;
     mech_error_clear(&e);
-    if (mech_choose(&prof, target, &out->sel, &e) != MECH_OK || out->sel.chosen < 0) {
-        char ptr[128];
-        snprintf(ptr, sizeof ptr, "%s", pointer);
-        api_call_invalid(c, ptr, "%s", e.text[0] ? e.text : "no candidate method applies");
+    enum mech_status st = mech_choose_first_order(&fs, target, api_dry_run_requested(c->body),
+                                                  &c->budget, &mc, &e);
+    if (st != MECH_OK) {
+        if (mc.pilot_failed) api_call_fail_core(c, st, &e, "");
+        else api_call_invalid(c, pointer, "%s", e.text);
         return 0;
     }
-    if (out->sel.integrating < 0) {
-        api_call_invalid(c, pointer, "no integrating candidate method applies");
-        return 0;
-    }
-    /* a pilot where the table is uncertain and the run expensive
-     * (mech/chooser_pilot.h); its steps count against the request's budget */
-    if (hooks->pilot) {
-        enum mech_status ps = mech_choose_pilot(&prof, target, &out->sel, hooks->pilot,
-                                                api_dry_run_requested(c->body), &c->budget,
-                                                &out->pilot, &e);
-        if (ps != MECH_OK) {
-            api_call_fail_core(c, ps, &e, "");
-            return 0;
-        }
-        if (out->pilot.run)
-            c->budget.max_steps = c->budget.max_steps > out->pilot.steps
-                                      ? c->budget.max_steps - out->pilot.steps
-                                      : 1;
-    }
-    /* method/opt: the best integrator's, even when the closed form is chosen */
-    const struct mech_candidate *k = &out->sel.c[out->sel.integrating];
-    out->closed_form = out->sel.chosen != out->sel.integrating;
+    out->sel = mc.sel;
+    out->pilot = mc.pilot;
+    out->closed_form = mc.closed_form;
     out->chosen = 1;
     out->target = target;
-    out->method = k->method;
-    out->opt = k->opt;
-    char beyond[320];
-    mech_selection_beyond_text(&out->sel, beyond, sizeof beyond);
-    if (out->closed_form) {
-        const struct mech_candidate *cf = &out->sel.c[out->sel.chosen];
-        snprintf(out->reason, sizeof out->reason,
-                 "%s%s over %.3g dynamical times: the exact %s solution is the cheapest "
-                 "candidate meeting %.0e relative (predicted error %.2g, %.2g s CPU for %zu "
-                 "samples): answered from it, nothing integrated; the best integrator would be "
-                 "%s at rtol %.3g (predicted %.2g, %.3g evaluations); {\"closed_form\": false} "
-                 "runs it",
-                 in ? "" : "no integrator block: accuracy \"balanced\" by default; ",
-                 sys->equations, prof.span, closed_form_name, target, cf->predicted_error,
-                 cf->predicted_cpu_s, sys->samples, k->method, k->opt.rtol, k->predicted_error,
-                 k->predicted_evaluations);
-        return 1;
-    }
-    snprintf(out->reason, sizeof out->reason,
-             "%s%s over %.3g dynamical times: %s at rtol %.3g is the cheapest candidate "
-             "predicted to meet %.0e relative (predicted %.2g, %.3g evaluations)%s; atol = rtol "
-             "x %.6g on %s",
-             in ? "" : "no integrator block: accuracy \"balanced\" by default; ", sys->equations,
-             prof.span, k->method, k->opt.rtol, target, k->predicted_error,
-             k->predicted_evaluations, beyond, prof.scale, sys->state);
+    out->method = mc.method;
+    out->opt = mc.opt;
+    memcpy(out->reason, mc.reason, sizeof out->reason);
     return 1;
 }
 

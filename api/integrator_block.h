@@ -47,6 +47,12 @@ struct api_integrator_system {
     double rhs_cost_s;     /* CPU s of one right-hand side if known, else 0 */
 };
 
+/* The settings of a block that names a method: rtol and atol (for an
+ * adaptive method the schema fills their defaults) and dt (required for a
+ * fixed-step method); each 0 when the block does not carry it, i.e. when the
+ * method does not use it. block may be NULL (all 0). */
+struct mech_ode_options api_integrator_settings(const json_t *block);
+
 /* Parse `block` (schema-validated against that integrator schema, or NULL
  * for the default) into *out for the system `sys`. `pointer` names the block
  * ("/integrator"), `span` the run's length in dynamical times (>= 0). Returns

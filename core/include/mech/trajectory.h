@@ -25,6 +25,7 @@
 
 #include <stddef.h>
 
+#include "mech/accuracy.h"
 #include "mech/budget.h"
 #include "mech/chooser.h"
 #include "mech/constants.h"
@@ -119,28 +120,7 @@ struct mech_trajectory_result {
 
 /* ---- choosing by accuracy ---------------------------------------------------- */
 
-enum mech_accuracy {
-    MECH_ACCURACY_DRAFT = 0,
-    MECH_ACCURACY_BALANCED,
-    MECH_ACCURACY_PRECISE,
-    MECH_ACCURACY_MACHINE,
-    MECH_ACCURACY_COUNT
-};
-
-/* An accuracy preset: what it promises (the chooser's target) and, for GET
- * /v1/integrators, what the chooser typically picks on a 10-orbit Kepler
- * scene (the choice itself is made per scene by mech/chooser.h). */
-struct mech_accuracy_preset {
-    const char *name;         /* "draft", "balanced", "precise", "machine" */
-    double promise;           /* relative error on positions and velocities it aims at */
-    const char *method;       /* typical method, velocity-free scenes */
-    const char *method_other; /* typical method, velocity-dependent scenes */
-    double rtol;              /* its typical rtol */
-    double rtol_other;        /* its typical rtol */
-    const char *doc;
-};
-
-const struct mech_accuracy_preset *mech_accuracy_preset_at(enum mech_accuracy a); /* NULL if out of range */
+/* the presets (enum mech_accuracy, mech_accuracy_preset_at/_named): mech/accuracy.h */
 
 /* The method and settings chosen for a problem. */
 struct mech_trajectory_choice {
