@@ -27,8 +27,11 @@ void api_traj_request_fix(struct api_traj_request *rq)
     rq->p.forces = rq->forces;
 }
 
-int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request *rq,
-                                    const json_t *in, const char *pointer)
+/* Read the integrator block (NULL: the default, accuracy "balanced") into
+ * rq and *q: a given method and its settings go into rq->p; otherwise q is
+ * told to choose by accuracy, at the preset's promise or target_error. */
+static void traj_block_read(struct api_call *c, struct api_traj_request *rq, const json_t *in,
+                            const char *pointer, struct mech_trajectory_plan_request *q)
 {
     struct mech_trajectory_problem *p = &rq->p;
     rq->requested = api_call_as_given(c, in, pointer);
@@ -36,42 +39,64 @@ int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request 
     rq->closed_form = 0;
     rq->accuracy = NULL;
     memset(&rq->choice, 0, sizeof rq->choice);
+    q->model_target = api_traj_block_target(in);
     const char *method = in ? api_string(in, "method", NULL) : NULL;
     if (method) {
+        q->by_accuracy = 0;
         p->method = method;
-        p->opt.rtol = api_number(in, "rtol", 1e-10);
-        p->opt.atol = api_number(in, "atol", 1e-12);
-        p->opt.dt = api_number(in, "dt", 0);
-        return 1;
+        p->opt = api_integrator_settings(in);
+        return;
     }
     p->closed_form_off = in && json_is_false(json_object_get(in, "closed_form"));
-    double target;
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
-    if (te) {
-        target = json_number_value(te);
-    } else {
-        const char *acc = in ? api_string(in, "accuracy", "balanced") : "balanced";
-        enum mech_accuracy a = MECH_ACCURACY_BALANCED;
-        for (int i = 0; i < MECH_ACCURACY_COUNT; i++)
-            if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, acc))
-                a = (enum mech_accuracy)i;
-        rq->accuracy = mech_accuracy_preset_at(a)->name;
-        target = mech_accuracy_preset_at(a)->promise;
-    }
+    const struct mech_accuracy_preset *preset = NULL;
+    q->by_accuracy = 1;
+    q->target = mech_accuracy_target(te != NULL, json_number_value(te),
+                                     in ? api_string_of(in, "accuracy") : NULL, &preset);
+    rq->accuracy = preset ? preset->name : NULL;
+}
+
+/* The block read, then the model → choose pipeline of core
+ * (mech_trajectory_plan), with "auto" resolved when with_model says so (the
+ * base request; /v1/compare's runs re-choose only). Returns 0 after
+ * recording an error: the first pass's at the request, the chooser's at the
+ * block. */
+static int traj_plan(struct api_call *c, struct api_traj_request *rq, const json_t *in,
+                     const char *pointer, const char *prefix, int with_model)
+{
+    struct mech_trajectory_plan_request q = {0};
+    traj_block_read(c, rq, in, pointer, &q);
+    q.auto_model = with_model && rq->auto_model;
+    q.dry_run = rq->dry_run;
+    struct mech_trajectory_plan plan;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_trajectory_choose(p, target, &rq->choice, &e);
+    enum mech_status st = mech_trajectory_plan(&rq->p, &q, &c->budget, &plan, &e);
+    if (st != MECH_OK && plan.failed == MECH_PLAN_MODEL) {
+        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
+            size_t n = strlen(e.text);
+            snprintf(e.text + n, sizeof e.text - n, " (in the first pass of \"fictitious\": \"auto\")");
+        }
+        api_call_fail_core(c, st, &e, *prefix ? "/request" : "");
+        return 0;
+    }
     if (st != MECH_OK) {
         api_call_invalid(c, pointer, "%s", e.text);
         return 0;
     }
-    rq->chosen = 1;
-    p->method = rq->choice.method;
-    p->opt = rq->choice.opt;
-    /* by accuracy: the chooser picked the closed form (a candidate unless the
-     * block says "closed_form": false) */
-    rq->closed_form = rq->choice.closed_form && mech_trajectory_has_closed_form(p);
+    if (plan.modelled) rq->model = plan.model;
+    if (plan.chosen) {
+        rq->chosen = 1;
+        rq->choice = plan.choice;
+        rq->closed_form = plan.closed_form;
+    }
     return 1;
+}
+
+int api_traj_request_set_integrator(struct api_call *c, struct api_traj_request *rq,
+                                    const json_t *in, const char *pointer)
+{
+    return traj_plan(c, rq, in, pointer, "", 0);
 }
 
 int api_traj_request_parse(struct api_call *c, const json_t *body, const char *prefix,
@@ -81,14 +106,14 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     memset(rq, 0, sizeof *rq);
     struct mech_trajectory_problem *p = &rq->p;
     const json_t *part = json_object_get(body, "particle");
-    p->mass = api_number(part, "mass", 0);
+    p->mass = api_number_of(part, "mass");
     p->charge = api_number_of(part, "charge");
     p->reduce_planar = 1;
     p->position = api_vec3_member(part, "position", zero);
     p->velocity = api_vec3_member(part, "velocity", zero);
 
     const json_t *frame = json_object_get(body, "frame");
-    const char *ft = frame ? api_string(frame, "type", "inertial") : "inertial";
+    const char *ft = frame ? api_string_of(frame, "type") : "inertial";
     if (strcmp(ft, "rotating") == 0) {
         p->frame.type = MECH_FRAME_ROTATING;
         p->frame.omega = api_vec3_member(frame, "omega", zero);
@@ -96,7 +121,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         p->frame.acceleration = api_vec3_member(frame, "acceleration", zero);
     } else if (strcmp(ft, "earth") == 0) {
         p->frame.type = MECH_FRAME_EARTH;
-        p->frame.latitude_deg = api_number(frame, "latitude_deg", 0);
+        p->frame.latitude_deg = api_number_of(frame, "latitude_deg");
         char fptr[128];
         snprintf(fptr, sizeof fptr, "%s/frame", prefix);
         if (!api_earth_rotation(c, frame, fptr, "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL,
@@ -112,22 +137,22 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         const json_t *f = json_array_get(fs, i);
         struct mech_force *mf = &rq->forces[i];
         memset(mf, 0, sizeof *mf);
-        mf->type = force_type_of(api_string(f, "type", ""));
+        mf->type = force_type_of(api_string_of(f, "type"));
         switch (mf->type) {
         case MECH_FORCE_UNIFORM_GRAVITY:
             mf->u.uniform_gravity.g = api_vec3_member(f, "g", zero);
             break;
         case MECH_FORCE_CENTRAL_GRAVITY:
-            mf->u.central_gravity.gm = api_number(f, "gm", 0);
+            mf->u.central_gravity.gm = api_number_of(f, "gm");
             mf->u.central_gravity.center = api_vec3_member(f, "center", zero);
             break;
         case MECH_FORCE_SPRING:
-            mf->u.spring.k = api_number(f, "k", 0);
+            mf->u.spring.k = api_number_of(f, "k");
             mf->u.spring.anchor = api_vec3_member(f, "anchor", zero);
             mf->u.spring.rest_length = api_number_of(f, "rest_length");
             break;
         case MECH_FORCE_LINEAR_DRAG:
-            mf->u.linear_drag.b = api_number(f, "b", 0);
+            mf->u.linear_drag.b = api_number_of(f, "b");
             break;
         case MECH_FORCE_LORENTZ:
             mf->u.lorentz.E = api_vec3_member(f, "E", zero);
@@ -142,8 +167,8 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
                 api_call_invalid(c, ptr, "third_body_tide needs exactly one of mass and gm");
                 return 0;
             }
-            mf->u.third_body_tide.gm = has_gm ? api_number(f, "gm", 0)
-                                              : MECH_GRAVITATIONAL_CONSTANT * api_number(f, "mass", 0);
+            mf->u.third_body_tide.gm = has_gm ? api_number_of(f, "gm")
+                                              : MECH_GRAVITATIONAL_CONSTANT * api_number_of(f, "mass");
             mf->u.third_body_tide.position = api_vec3_member(f, "position", zero);
             break;
         }
@@ -174,7 +199,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
         p->fictitious = MECH_FICTITIOUS_ALL;
     }
 
-    p->t_end = api_number(body, "t_end", 0);
+    p->t_end = api_number_of(body, "t_end");
     p->samples = (size_t)api_number_of(body, "samples");
     p->error_estimate = json_is_true(json_object_get(body, "error_estimate"));
     rq->dry_run = json_is_true(json_object_get(body, "dry_run"));
@@ -182,21 +207,18 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
     const json_t *stop = json_object_get(body, "stop");
     if (stop) {
         p->has_stop = 1;
-        p->stop_axis = axis_of(api_string(stop, "coordinate", "z"));
-        p->stop_value = api_number(stop, "crosses", 0);
+        p->stop_axis = axis_of(api_string_of(stop, "coordinate"));
+        p->stop_value = api_number_of(stop, "crosses");
         const char *d = api_string_of(stop, "direction");
         p->stop_direction = strcmp(d, "decreasing") == 0   ? MECH_STOP_DECREASING
                             : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
                                                            : MECH_STOP_EITHER;
     }
-    const json_t *block = json_object_get(body, "integrator");
-    /* a dry run integrates nothing: "auto" keeps every applicable term */
-    if (rq->auto_model && !rq->dry_run &&
-        !api_traj_request_auto(c, rq, api_traj_block_target(block), prefix))
-        return 0;
+    /* "auto" and the integrator block: one pass of core's pipeline (a dry run
+     * integrates nothing: "auto" then keeps every applicable term) */
     char ptr[64];
     snprintf(ptr, sizeof ptr, "%s/integrator", prefix);
-    return api_traj_request_set_integrator(c, rq, block, ptr);
+    return traj_plan(c, rq, json_object_get(body, "integrator"), ptr, prefix, 1);
 }
 
 double api_traj_block_target(const json_t *in)
@@ -206,41 +228,13 @@ double api_traj_block_target(const json_t *in)
     const json_t *te = json_object_get(in, "target_error");
     if (te) return json_number_value(te);
     const char *acc = api_string(in, "accuracy", NULL);
-    if (acc) {
-        for (int i = 0; i < MECH_ACCURACY_COUNT; i++)
-            if (!strcmp(mech_accuracy_preset_at((enum mech_accuracy)i)->name, acc))
-                return mech_accuracy_preset_at((enum mech_accuracy)i)->promise;
-        return balanced;
-    }
+    if (acc) return mech_accuracy_target(0, 0.0, acc, NULL);
+    /* a given adaptive method: its rtol (the schema fills the default) */
     if (json_object_get(in, "rtol")) {
-        double r = api_number(in, "rtol", 1e-10);
+        double r = api_number_of(in, "rtol");
         return r < 1e-15 ? 1e-15 : r > 0.1 ? 0.1 : r;
     }
-    const char *m = api_string(in, "method", NULL);
-    const struct mech_integrator *mm = m ? mech_ode_method_find(m) : NULL;
-    if (mm && mech_ode_method_describe(mm).adaptive) return 1e-10; /* the default rtol */
     return balanced;
-}
-
-int api_traj_request_auto(struct api_call *c, struct api_traj_request *rq, double target,
-                          const char *prefix)
-{
-    struct mech_error e;
-    mech_error_clear(&e);
-    enum mech_status st = mech_trajectory_model_select(&rq->p, target, &c->budget, &rq->model, &e);
-    if (st != MECH_OK) {
-        if (st == MECH_EBUDGET || st == MECH_EDEADLINE) {
-            size_t n = strlen(e.text);
-            snprintf(e.text + n, sizeof e.text - n, " (in the first pass of \"fictitious\": \"auto\")");
-        }
-        api_call_fail_core(c, st, &e, *prefix ? "/request" : "");
-        return 0;
-    }
-    rq->auto_model = 1;
-    rq->p.fictitious = rq->model.fictitious;
-    long used = rq->model.first_pass_stats.steps;
-    if (used > 0) c->budget.max_steps = c->budget.max_steps - used > 1 ? c->budget.max_steps - used : 1;
-    return 1;
 }
 
 json_t *api_traj_model(struct api_call *c, const struct api_traj_request *rq,

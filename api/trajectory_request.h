@@ -11,6 +11,7 @@
 #include "endpoint.h"
 #include "mech/closed_form.h"
 #include "mech/trajectory.h"
+#include "mech/trajectory_plan.h"
 
 /* A parsed trajectory request. p.forces points into forces: after copying
  * the struct, call api_traj_request_fix(). */
@@ -37,12 +38,6 @@ struct api_traj_request {
  * preset's promise, target_error, an adaptive method's rtol (clamped to
  * [1e-15, 0.1]), or for a fixed step the balanced promise. */
 double api_traj_block_target(const json_t *block);
-
-/* "fictitious": "auto": choose p.fictitious with mech_trajectory_model_select
- * at `target`, spending c->budget's steps (what the first pass used is taken
- * off c->budget.max_steps). Returns 0 after recording an error. */
-int api_traj_request_auto(struct api_call *c, struct api_traj_request *rq, double target,
-                          const char *prefix);
 
 /* model: {"mode": "auto"|"given", "terms": [...], "state": {...}, ...}.
  * New reference. */

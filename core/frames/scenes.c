@@ -4,6 +4,7 @@
  * seen from both frames.
  */
 #include "mech/scenes.h"
+#include "mech/trajectory_plan.h"
 #include "mech/constants.h"
 #include "mech/reference.h"
 
@@ -98,6 +99,22 @@ static enum mech_status check_ballistic(const struct mech_scene_ballistic *s,
     return MECH_OK;
 }
 
+/* A scene's run planned by core's trajectory pipeline (mech/trajectory_plan.h):
+ * "auto" picks the fictitious terms (all of them for a dry run), the chooser
+ * the method for target; the first pass's steps come off *budget. */
+static enum mech_status scene_plan(struct mech_trajectory_problem *p, double target, int dry_run,
+                                   struct mech_budget *budget,
+                                   struct mech_trajectory_model *model,
+                                   struct mech_trajectory_choice *choice, struct mech_error *err)
+{
+    const struct mech_trajectory_plan_request q = {1, dry_run, target, 1, target};
+    struct mech_trajectory_plan plan;
+    enum mech_status st = mech_trajectory_plan(p, &q, budget, &plan, err);
+    *model = plan.model;
+    *choice = plan.choice;
+    return st;
+}
+
 enum mech_status mech_scene_ballistic_formulas(const struct mech_scene_ballistic *s,
                                                int centrifugal,
                                                struct mech_scene_ballistic_result *out,
@@ -162,25 +179,12 @@ enum mech_status mech_scene_ballistic_run(const struct mech_scene_ballistic *s, 
     p->stop_direction = MECH_STOP_DECREASING;
     p->reduce_planar = 1;
 
-    if (s->dry_run) { /* the selection alone: nothing integrated */
-        p->fictitious = MECH_FICTITIOUS_ALL;
-        enum mech_status sc = mech_trajectory_choose(p, target, &out->choice, err);
-        p->method = out->choice.method;
-        p->opt = out->choice.opt;
-        return sc;
-    }
-    /* "auto": which fictitious terms matter at this accuracy */
-    if ((st = mech_trajectory_model_select(p, target, budget, &out->model, err)) != MECH_OK)
-        return st;
-    p->fictitious = out->model.fictitious;
-    if ((st = mech_trajectory_choose(p, target, &out->choice, err)) != MECH_OK) return st;
-    p->method = out->choice.method;
-    p->opt = out->choice.opt;
+    /* "auto" (which fictitious terms matter at this accuracy), then the
+     * method; a dry run stops at the selection */
     struct mech_budget b2 = *budget;
-    if (out->model.first_pass_stats.steps > 0)
-        b2.max_steps = budget->max_steps - out->model.first_pass_stats.steps > 1
-                           ? budget->max_steps - out->model.first_pass_stats.steps
-                           : 1;
+    if ((st = scene_plan(p, target, s->dry_run, &b2, &out->model, &out->choice, err)) != MECH_OK ||
+        s->dry_run)
+        return st;
     if ((st = mech_trajectory_integrate(p, &b2, &out->run, err)) != MECH_OK) return st;
     if (!out->run.stopped)
         return mech_error_set(err, MECH_ENUMERIC, NULL,
@@ -275,24 +279,9 @@ enum mech_status mech_scene_table_run(const struct mech_scene_table *s, double t
     p->t_end = t_end;
     p->samples = s->samples;
     p->reduce_planar = 1;
-    if (s->dry_run) { /* the selection alone: nothing integrated */
-        p->fictitious = MECH_FICTITIOUS_ALL;
-        enum mech_status sc = mech_trajectory_choose(p, target, &out->choice, err);
-        p->method = out->choice.method;
-        p->opt = out->choice.opt;
-        return sc;
-    }
-    enum mech_status st = mech_trajectory_model_select(p, target, budget, &out->model, err);
-    if (st != MECH_OK) return st;
-    p->fictitious = out->model.fictitious;
-    if ((st = mech_trajectory_choose(p, target, &out->choice, err)) != MECH_OK) return st;
-    p->method = out->choice.method;
-    p->opt = out->choice.opt;
     struct mech_budget b2 = *budget;
-    if (out->model.first_pass_stats.steps > 0)
-        b2.max_steps = budget->max_steps - out->model.first_pass_stats.steps > 1
-                           ? budget->max_steps - out->model.first_pass_stats.steps
-                           : 1;
+    enum mech_status st = scene_plan(p, target, s->dry_run, &b2, &out->model, &out->choice, err);
+    if (st != MECH_OK || s->dry_run) return st;
     struct mech_trajectory_result *r = &out->run;
     memset(r, 0, sizeof *r);
     r->t = out->t;
