@@ -104,7 +104,7 @@ static json_t *torsional(struct api_call *c, const json_t *body, const json_t *s
         st = mech_shear_modulus(E, json_number_value(nj), &g, &e);
     if (st == MECH_OK && (gj || nj)) {
         if (json_object_get(sec, "radius")) {
-            const double r = api_number(sec, "radius", 1);
+            const double r = api_number_of(sec, "radius");
             j = k = 0.5 * MECH_PI * (r * r) * (r * r);
         } else if (json_object_get(sec, "width")) {
             st = mech_torsion_rectangle(api_number(sec, "width", 1), api_number(sec, "height", 1), &j,
@@ -154,7 +154,7 @@ json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
     const json_t *sec = json_object_get(body, "section");
     double A, I;
     if (json_object_get(sec, "radius")) {
-        const double r = api_number(sec, "radius", 1);
+        const double r = api_number_of(sec, "radius");
         A = MECH_PI * r * r;
         I = 0.25 * MECH_PI * (r * r) * (r * r);
     } else if (json_object_get(sec, "width")) {

@@ -50,7 +50,7 @@ json_t *api_op_hamiltonian_circular_orbit(struct api_call *c, const json_t *body
         api_call_invalid(c, "", "give the potential: terms, gm or both");
         return NULL;
     }
-    const double mass = api_number(body, "mass", 1), l = api_number(body, "angular_momentum", 1);
+    const double mass = api_number_of(body, "mass"), l = api_number(body, "angular_momentum", 1);
     struct mech_potential_term t[16];
     size_t n = 0;
     for (size_t i = 0; i < json_array_size(tj) && n < 15; i++) {

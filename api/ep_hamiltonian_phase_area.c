@@ -27,7 +27,7 @@ json_t *api_op_hamiltonian_phase_area(struct api_call *c, const json_t *body)
         api_call_invalid(c, ptr, "the %s needs %s", pend ? "pendulum" : "oscillator", own);
         return NULL;
     }
-    const double m = api_number(body, "mass", 1), en = api_number(body, "energy", 0);
+    const double m = api_number_of(body, "mass"), en = api_number(body, "energy", 0);
     struct mech_phase_area p;
     struct mech_error e;
     mech_error_clear(&e);

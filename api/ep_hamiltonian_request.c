@@ -46,7 +46,7 @@ static const char *hamiltonian_text(const struct mech_ham_system *s, const char 
 int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q, struct mech_ham_system *s)
 {
     memset(s, 0, sizeof *s);
-    const char *name = api_string(js, "name", "");
+    const char *name = api_string_of(js, "name");
     int kind = -1;
     for (int k = 0; k < MECH_HAM_KIND_COUNT; k++)
         if (!strcmp(name, kind_names[k])) kind = k;
@@ -84,11 +84,11 @@ int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q, struct
         break;
     }
     case MECH_HAM_CYLINDER:
-        s->strength = api_number(js, "k", 0.0);
+        s->strength = api_number_of(js, "k");
         break;
     case MECH_HAM_CENTRAL:
-        s->strength = api_number(js, "k", 0.0);
-        s->power = api_number(js, "n", 0.0);
+        s->strength = api_number_of(js, "k");
+        s->power = api_number_of(js, "n");
         break;
     case MECH_HAM_POTENTIAL_3D: {
         const char *pot = api_string(js, "potential", "harmonic");
@@ -100,11 +100,11 @@ int api_ham_system_read(struct api_call *c, const json_t *js, size_t n_q, struct
         } else if (!strcmp(pot, "kepler")) {
             s->potential = MECH_HAM_POT_POWER;
             s->power = -1.0;
-            s->strength = -api_number(js, "gm", 0.0) * s->mass;
+            s->strength = -api_number_of(js, "gm") * s->mass;
         } else {
             s->potential = MECH_HAM_POT_POWER;
-            s->strength = api_number(js, "k", 0.0);
-            s->power = api_number(js, "n", 0.0);
+            s->strength = api_number_of(js, "k");
+            s->power = api_number_of(js, "n");
         }
         break;
     }
@@ -237,9 +237,7 @@ int api_ham_integrator_read(struct api_call *c, const json_t *block, const char 
             out->own = 1;
             out->ch.method = method;
             out->ch.requested = api_call_as_given(c, block, pointer);
-            out->ch.opt.rtol = api_number(block, "rtol", 1e-10);
-            out->ch.opt.atol = api_number(block, "atol", 1e-12);
-            out->ch.opt.dt = api_number(block, "dt", 0);
+            out->ch.opt = api_integrator_settings(block);
             snprintf(out->reason, sizeof out->reason,
                      "method and settings given in the request; integrated in the second-order "
                      "form (q, v = p/M) of the separable H");

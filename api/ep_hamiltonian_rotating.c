@@ -13,7 +13,7 @@ json_t *api_op_hamiltonian_rotating_frame(struct api_call *c, const json_t *body
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_rotating_hamiltonian_compute(
-        api_number(body, "mass", 1), api_vec3_member(body, "omega", z),
+        api_number_of(body, "mass"), api_vec3_member(body, "omega", z),
         api_vec3_member(body, "position", z), api_vec3_member(body, "velocity", z),
         api_number_of(body, "potential_energy"), &h, &e);
     if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");

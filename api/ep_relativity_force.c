@@ -19,7 +19,7 @@ json_t *api_op_relativity_force(struct api_call *c, const json_t *body)
     }
     struct mech_boost b;
     if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
-    const double m = api_number(body, "mass", 1);
+    const double m = api_number_of(body, "mass");
     struct mech_rel_force f;
     struct mech_error e;
     mech_error_clear(&e);

@@ -17,7 +17,7 @@ json_t *api_op_relativity_lagrangian(struct api_call *c, const json_t *body)
     }
     struct mech_boost b;
     if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
-    const double m = api_number(body, "mass", 1), q = api_number(body, "charge", 0);
+    const double m = api_number_of(body, "mass"), q = api_number(body, "charge", 0);
     const struct mech_vec3 zero = mech_vec3_make(0, 0, 0);
     double phi = api_number(body, "scalar_potential", 0);
     struct mech_vec3 a = api_vec3_member(body, "vector_potential", zero);

@@ -78,7 +78,7 @@ json_t *api_op_rigid_free_symmetric_top(struct api_call *c, const json_t *body)
 
 json_t *api_op_rigid_struck_ball(struct api_call *c, const json_t *body)
 {
-    double r = api_number(body, "radius", 0), m = api_number_of(body, "mass");
+    double r = api_number_of(body, "radius"), m = api_number_of(body, "mass");
     const char *shape = api_string_of(body, "shape");
     double f = !strcmp(shape, "spherical_shell") ? 2.0 / 3 : !strcmp(shape, "solid_cylinder") ? 0.5
                : !strcmp(shape, "hoop")          ? 1.0

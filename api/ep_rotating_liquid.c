@@ -12,8 +12,8 @@
 
 json_t *api_op_frames_rotating_liquid(struct api_call *c, const json_t *body)
 {
-    struct mech_rotating_liquid p = {api_number(body, "omega", 0), api_number_of(body, "g"),
-                                     api_number(body, "radius", 0), api_number(body, "depth", 0),
+    struct mech_rotating_liquid p = {api_number_of(body, "omega"), api_number_of(body, "g"),
+                                     api_number_of(body, "radius"), api_number(body, "depth", 0),
                                      api_number(body, "container_height", 0)};
     const json_t *radii = json_object_get(body, "radii");
     size_t i;

@@ -42,7 +42,7 @@ static json_t *central(struct api_call *c, const json_t *s, json_t *out)
     struct mech_orbit_oscillation o;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_orbit_oscillation(t, n, api_number(s, "mass", 1),
+    enum mech_status st = mech_orbit_oscillation(t, n, api_number_of(s, "mass"),
                                                  api_number(s, "r0", 1), &o, &e);
     if (st != MECH_OK) {
         json_decref(out);
@@ -78,8 +78,8 @@ static json_t *conical(struct api_call *c, const json_t *s, json_t *out)
     struct mech_conical_pendulum p;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_conical_pendulum(api_number(s, "length", 1),
-                                                api_number(s, "g", 9.80665),
+    enum mech_status st = mech_conical_pendulum(api_number_of(s, "length"),
+                                                api_number_of(s, "g"),
                                                 api_number(s, "angle", 0.5), &p, &e);
     if (st != MECH_OK) {
         json_decref(out);
@@ -102,9 +102,9 @@ static json_t *ball(struct api_call *c, const json_t *s, json_t *out, struct mec
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st =
-        mech_ball_pendulum(api_number(s, "mass", 1), t,
+        mech_ball_pendulum(api_number_of(s, "mass"), t,
                            api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
-                           api_number(s, "g", 9.80665), &b, &e);
+                           api_number_of(s, "g"), &b, &e);
     if (st != MECH_OK) {
         if (!strcmp(e.param, "tensor")) strcpy(e.param, "tensor_center_of_mass");
         json_decref(out);
@@ -122,7 +122,7 @@ static json_t *ball(struct api_call *c, const json_t *s, json_t *out, struct mec
         SET(m, "moment", api_real(c, b.moment[k]));
         SET(m, "omega", api_real(c, b.omega[k]));
         SET(m, "period", api_real(c, 2 * MECH_PI / b.omega[k]));
-        SET(m, "equivalent_length", api_real(c, b.moment[k] / (api_number(s, "mass", 1) * b.arm)));
+        SET(m, "equivalent_length", api_real(c, b.moment[k] / (api_number_of(s, "mass") * b.arm)));
         json_array_append_new(modes, m);
     }
     SET(out, "pivot", json_string("ball_joint"));
@@ -144,8 +144,8 @@ static json_t *physical(struct api_call *c, const json_t *s, json_t *out)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_physical_pendulum(
-        api_number(s, "mass", 1), t, api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
-        api_vec3_member(s, "axis", mech_vec3_make(0, 0, 0)), api_number(s, "g", 9.80665), &p, &e);
+        api_number_of(s, "mass"), t, api_vec3_member(s, "offset", mech_vec3_make(0, 0, 0)),
+        api_vec3_member(s, "axis", mech_vec3_make(0, 0, 0)), api_number_of(s, "g"), &p, &e);
     if (st != MECH_OK) {
         if (!strcmp(e.param, "tensor")) strcpy(e.param, "tensor_center_of_mass");
         json_decref(out);
@@ -172,7 +172,7 @@ static json_t *foucault(struct api_call *c, const json_t *s, json_t *out)
         return NULL;
     }
     enum mech_status st = mech_foucault_modes(
-        api_number(s, "length", 1), api_number(s, "g", 9.80665), w_earth,
+        api_number_of(s, "length"), api_number_of(s, "g"), w_earth,
         api_number(s, "latitude_deg", 0) * (MECH_PI / 180), &f, &e);
     if (st != MECH_OK) {
         json_decref(out);

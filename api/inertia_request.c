@@ -76,20 +76,20 @@ static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
                                   struct mech_inertia_part *p,
                                   char *prefix, size_t np, struct mech_error *e)
 {
-    const char *shape = api_string(b, "shape", "");
+    const char *shape = api_string_of(b, "shape");
     int s = -1;
     for (int k = 0; k < MECH_SHAPE_COUNT; k++)
         if (!strcmp(shape, shape_names[k])) s = k;
     snprintf(prefix, np, "/bodies/%zu", i);
     if (s < 0) return mech_error_set(e, MECH_EINVAL, "shape", "unknown shape \"%s\"", shape);
     p->shape = (enum mech_inertia_shape)s;
-    p->mass = api_number(b, "mass", 0);
+    p->mass = api_number_of(b, "mass");
     p->hole = json_is_true(json_object_get(b, "hole"));
     p->position = api_vec3_member(b, "position", mech_vec3_make(0, 0, 0));
     p->orientation = mech_mat3_identity();
     switch (p->shape) {
     case MECH_SHAPE_ROD:
-        p->dim[0] = api_number(b, "length", 0);
+        p->dim[0] = api_number_of(b, "length");
         break;
     case MECH_SHAPE_BOX:
         dims3(b, "size", p->dim);
@@ -99,17 +99,17 @@ static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
     case MECH_SHAPE_HEMISPHERE:
     case MECH_SHAPE_DISC:
     case MECH_SHAPE_RING:
-        p->dim[0] = api_number(b, "radius", 0);
+        p->dim[0] = api_number_of(b, "radius");
         break;
     case MECH_SHAPE_CYLINDER:
     case MECH_SHAPE_CONE:
-        p->dim[0] = api_number(b, "radius", 0);
-        p->dim[1] = api_number(b, "height", 0);
+        p->dim[0] = api_number_of(b, "radius");
+        p->dim[1] = api_number_of(b, "height");
         break;
     case MECH_SHAPE_TUBE:
-        p->dim[0] = api_number(b, "inner_radius", 0);
-        p->dim[1] = api_number(b, "outer_radius", 0);
-        p->dim[2] = api_number(b, "height", 0);
+        p->dim[0] = api_number_of(b, "inner_radius");
+        p->dim[1] = api_number_of(b, "outer_radius");
+        p->dim[2] = api_number_of(b, "height");
         break;
     case MECH_SHAPE_PLATE: {
         const json_t *sz = json_object_get(b, "size");
@@ -121,8 +121,8 @@ static enum mech_status read_part(struct api_call *c, const json_t *b, size_t i,
         dims3(b, "semi_axes", p->dim);
         break;
     case MECH_SHAPE_TORUS:
-        p->dim[0] = api_number(b, "major_radius", 0);
-        p->dim[1] = api_number(b, "minor_radius", 0);
+        p->dim[0] = api_number_of(b, "major_radius");
+        p->dim[1] = api_number_of(b, "minor_radius");
         break;
     case MECH_SHAPE_TRIANGLE: {
         const json_t *vj = json_object_get(b, "vertices");
