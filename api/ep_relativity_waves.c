@@ -1,38 +1,39 @@
 /* ep_relativity_waves.c — light and fields under relative motion:
  * POST /v1/relativity/doppler (Doppler shift and aberration, notes §3.14) and
  * POST /v1/relativity/fields (E and B under a boost, notes "Lorentz
- * Transformation of the Fields"). The numerics live in core/doppler.c and
- * core/em_fields.c; velocities use the shared input of velocity_request.h. */
-#include <float.h>
+ * Transformation of the Fields"). The Doppler answer is one call of
+ * mech_doppler_answer (core/relativity/doppler_answer.c), the fields'
+ * numerics are core/relativity/em_fields.c; velocities use the shared input
+ * of velocity_request.h. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "endpoint.h"
 #include "mech/constants.h"
-#include "mech/doppler.h"
+#include "mech/doppler_answer.h"
 #include "mech/em_fields.h"
 #include "velocity_request.h"
 
 
 /* ======================= POST /v1/relativity/doppler ======================= */
 
-static const char *frame_pointer(int in_source)
-{
-    return in_source ? "/emission_direction" : "/arrival_direction";
-}
-
 static json_t *angle_or_null(struct api_call *c, double a, double scale)
 {
     return isnan(a) ? json_null() : api_real(c, a * scale);
 }
 
-json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
+static void set(json_t *o, const char *key, json_t *v)
 {
-    const json_t *emit = json_object_get(body, "emission_direction");
-    const json_t *arrive = json_object_get(body, "arrival_direction");
-    const json_t *fj = json_object_get(body, "frequency");
-    const json_t *lj = json_object_get(body, "wavelength");
+    json_object_set_new_nocheck(o, key, v);
+}
+
+/* The one-of rules the schema cannot state: one direction, at most one of
+ * frequency and wavelength. Returns 0 when the request is invalid. */
+static int check_choices(struct api_call *c, const json_t *body)
+{
+    const int emit = json_object_get(body, "emission_direction") != NULL;
+    const int arrive = json_object_get(body, "arrival_direction") != NULL;
     if (emit && arrive)
         api_call_invalid(c, "/arrival_direction",
                          "give the light's direction once: emission_direction (source frame) "
@@ -41,108 +42,89 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
         api_call_invalid(c, "/emission_direction",
                          "give the light's direction: emission_direction (in the source's frame) "
                          "or arrival_direction (in the observer's frame)");
-    if (fj && lj)
+    if (json_object_get(body, "frequency") && json_object_get(body, "wavelength"))
         api_call_invalid(c, "/wavelength",
                          "give the emitted light as a frequency or as a wavelength, not both");
-    struct mech_boost src, obs;
+    return c->problem == API_PROBLEM_NONE;
+}
+
+static json_t *relative_json(struct api_call *c, const struct mech_doppler *d)
+{
+    json_t *rel = json_object();
+    set(rel, "gamma", api_real(c, d->gamma));
+    set(rel, "gamma_minus_one", api_real(c, d->gamma_minus_one));
+    set(rel, "beta", api_real(c, d->beta));
+    set(rel, "rapidity", api_real(c, d->rapidity));
+    set(rel, "one_minus_beta", api_real(c, d->one_minus_beta));
+    set(rel, "beta_gamma", api_real(c, d->beta_gamma));
+    set(rel, "observer_beta_in_source_frame", api_vec3(c, d->observer_beta_in_source));
+    set(rel, "source_beta_in_observer_frame", api_vec3(c, d->source_beta_in_observer));
+    return rel;
+}
+
+static void light_json(struct api_call *c, json_t *res, const struct mech_doppler_answer *a)
+{
+    set(res, "frequency_emitted", api_real(c, a->frequency_emitted));
+    set(res, "wavelength_emitted", api_real(c, a->wavelength_emitted));
+    set(res, "frequency_observed", api_real(c, a->frequency_observed));
+    set(res, "wavelength_observed", api_real(c, a->wavelength_observed));
+    set(res, "wavelength_shift", api_real(c, a->wavelength_shift));
+    set(res, "frequency_shift", api_real(c, a->frequency_shift));
+}
+
+static void velocity_json(struct api_call *c, json_t *res, const char *key,
+                          const struct mech_boost *b)
+{
+    if (!b) return;
+    json_t *o = json_object();
+    api_velocity_describe(c, b, o);
+    set(res, key, o);
+}
+
+json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
+{
+    const json_t *emit = json_object_get(body, "emission_direction");
+    const json_t *fj = json_object_get(body, "frequency"), *lj = json_object_get(body, "wavelength");
     const json_t *sv = json_object_get(body, "source_velocity");
     const json_t *ov = json_object_get(body, "observer_velocity");
-    int ok = 1;
+    struct mech_boost src, obs;
+    int ok = check_choices(c, body);
     if (sv && !api_velocity_parse(c, sv, "/source_velocity", &src)) ok = 0;
     if (ov && !api_velocity_parse(c, ov, "/observer_velocity", &obs)) ok = 0;
-    if (!ok || c->problem != API_PROBLEM_NONE) return NULL;
-
-    const int in_source = emit != NULL;
-    const struct mech_vec3 dir = api_vec3_of(in_source ? emit : arrive);
-    struct mech_doppler d;
+    if (!ok) return NULL;
+    const struct mech_doppler_request q = {
+        .source = sv ? &src : NULL,
+        .observer = ov ? &obs : NULL,
+        .direction = api_vec3_of(emit ? emit : json_object_get(body, "arrival_direction")),
+        .frame = emit ? MECH_DOPPLER_SOURCE_FRAME : MECH_DOPPLER_OBSERVER_FRAME,
+        .light = fj ? MECH_DOPPLER_LIGHT_FREQUENCY
+                 : lj ? MECH_DOPPLER_LIGHT_WAVELENGTH
+                      : MECH_DOPPLER_LIGHT_NONE,
+        .light_value = json_number_value(fj ? fj : lj)};
+    struct mech_doppler_answer a;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_doppler_compute(
-        sv ? &src : NULL, ov ? &obs : NULL, dir,
-        in_source ? MECH_DOPPLER_SOURCE_FRAME : MECH_DOPPLER_OBSERVER_FRAME, &d, &e);
-    if (st != MECH_OK) {
-        if (!strcmp(e.param, "direction"))
-            snprintf(e.param, sizeof e.param, "%s", frame_pointer(in_source) + 1);
-        return api_call_fail_core(c, st, &e, "");
-    }
+    enum mech_status st = mech_doppler_answer(&q, &a, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
 
-    /* Emitted and observed light: ν_obs = D ν_emit, λ = c/ν (c exact). */
-    double f_emit = 0, l_emit = 0, f_obs = 0, l_obs = 0;
-    const int have_light = fj || lj;
-    if (have_light) {
-        if (fj) {
-            f_emit = json_number_value(fj);
-            l_emit = MECH_EM_C / f_emit;
-        } else {
-            l_emit = json_number_value(lj);
-            f_emit = MECH_EM_C / l_emit;
-        }
-        f_obs = d.factor * f_emit;
-        l_obs = l_emit / d.factor;
-        if (!(isfinite(f_obs) && f_obs >= DBL_MIN && isfinite(l_obs) && l_obs >= DBL_MIN &&
-              isfinite(l_emit) && isfinite(f_emit) && l_emit > 0 && f_emit > 0)) {
-            mech_error_clear(&e);
-            mech_error_set(&e, MECH_ENUMERIC, fj ? "frequency" : "wavelength",
-                           "the observed light (Doppler factor %.6g) is outside the range of "
-                           "double precision; use a less extreme frequency or wavelength",
-                           d.factor);
-            return api_call_fail_core(c, MECH_ENUMERIC, &e, "");
-        }
-    }
-
+    const struct mech_doppler *d = &a.d;
     json_t *res = json_object();
-    json_object_set_new_nocheck(res, "case", json_string(mech_doppler_case_name(d.kind)));
-    json_object_set_new_nocheck(res, "doppler_factor", api_real(c, d.factor));
-    json_object_set_new_nocheck(res, "doppler_factor_minus_one", api_real(c, d.factor_minus_one));
-    /* z = lambda_obs/lambda_emit - 1 = 1/D - 1 = -(D - 1)/D, from the precise D - 1. */
-    const double z = -d.factor_minus_one / d.factor;
-    json_object_set_new_nocheck(res, "shift",
-                                json_string(d.factor_minus_one > 0   ? "blue"
-                                            : d.factor_minus_one < 0 ? "red"
-                                                                     : "none"));
-    json_object_set_new_nocheck(res, "redshift_z", api_real(c, z));
-    if (have_light) {
-        json_object_set_new_nocheck(res, "frequency_emitted", api_real(c, f_emit));
-        json_object_set_new_nocheck(res, "wavelength_emitted", api_real(c, l_emit));
-        json_object_set_new_nocheck(res, "frequency_observed", api_real(c, f_obs));
-        json_object_set_new_nocheck(res, "wavelength_observed", api_real(c, l_obs));
-        json_object_set_new_nocheck(res, "wavelength_shift", api_real(c, l_emit * z));
-        json_object_set_new_nocheck(res, "frequency_shift",
-                                    api_real(c, f_emit * d.factor_minus_one));
-    }
-    json_object_set_new_nocheck(res, "angle_source_frame_deg",
-                                angle_or_null(c, d.angle_source, 180 / MECH_PI));
-    json_object_set_new_nocheck(res, "angle_observer_frame_deg",
-                                angle_or_null(c, d.angle_observer, 180 / MECH_PI));
-    json_object_set_new_nocheck(res, "angle_source_frame_rad", angle_or_null(c, d.angle_source, 1));
-    json_object_set_new_nocheck(res, "angle_observer_frame_rad",
-                                angle_or_null(c, d.angle_observer, 1));
-    json_object_set_new_nocheck(res, "direction_source_frame", api_vec3(c, d.direction_source));
-    json_object_set_new_nocheck(res, "direction_observer_frame", api_vec3(c, d.direction_observer));
-
-    json_t *rel = json_object();
-    json_object_set_new_nocheck(rel, "gamma", api_real(c, d.gamma));
-    json_object_set_new_nocheck(rel, "gamma_minus_one", api_real(c, d.gamma_minus_one));
-    json_object_set_new_nocheck(rel, "beta", api_real(c, d.beta));
-    json_object_set_new_nocheck(rel, "rapidity", api_real(c, d.rapidity));
-    json_object_set_new_nocheck(rel, "one_minus_beta", api_real(c, d.one_minus_beta));
-    json_object_set_new_nocheck(rel, "beta_gamma", api_real(c, d.beta_gamma));
-    json_object_set_new_nocheck(rel, "observer_beta_in_source_frame",
-                                api_vec3(c, d.observer_beta_in_source));
-    json_object_set_new_nocheck(rel, "source_beta_in_observer_frame",
-                                api_vec3(c, d.source_beta_in_observer));
-    json_object_set_new_nocheck(res, "relative_velocity", rel);
-    if (sv) {
-        json_t *o = json_object();
-        api_velocity_describe(c, &src, o);
-        json_object_set_new_nocheck(res, "source_velocity", o);
-    }
-    if (ov) {
-        json_t *o = json_object();
-        api_velocity_describe(c, &obs, o);
-        json_object_set_new_nocheck(res, "observer_velocity", o);
-    }
-    if (!res || !rel) {
+    set(res, "case", json_string(mech_doppler_case_name(d->kind)));
+    set(res, "doppler_factor", api_real(c, d->factor));
+    set(res, "doppler_factor_minus_one", api_real(c, d->factor_minus_one));
+    set(res, "shift", json_string(mech_doppler_shift_name(a.shift)));
+    set(res, "redshift_z", api_real(c, a.redshift_z));
+    if (a.has_light) light_json(c, res, &a);
+    set(res, "angle_source_frame_deg", angle_or_null(c, d->angle_source, 180 / MECH_PI));
+    set(res, "angle_observer_frame_deg", angle_or_null(c, d->angle_observer, 180 / MECH_PI));
+    set(res, "angle_source_frame_rad", angle_or_null(c, d->angle_source, 1));
+    set(res, "angle_observer_frame_rad", angle_or_null(c, d->angle_observer, 1));
+    set(res, "direction_source_frame", api_vec3(c, d->direction_source));
+    set(res, "direction_observer_frame", api_vec3(c, d->direction_observer));
+    set(res, "relative_velocity", relative_json(c, d));
+    velocity_json(c, res, "source_velocity", q.source);
+    velocity_json(c, res, "observer_velocity", q.observer);
+    if (!res || !json_object_get(res, "relative_velocity")) {
         json_decref(res);
         return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
     }
