@@ -3,8 +3,11 @@
  *   POST /v1/earth/gravity           (notes §1.3: effective g on a rotating sphere,
  *                                     beside WGS 84 normal gravity)
  *   POST /v1/earth/tides             (notes §1.4: tidal acceleration and tide heights)
- * JSON <-> core only: the physics is in core/effective_force.c, core/earth.c
- * and core/tides.c (derivations in their headers). */
+ * JSON <-> core only: the physics is in core/frames/effective_force.c,
+ * earth.c and tides.c (derivations in their headers); each of the two Earth
+ * answers is one call, mech_earth_gravity_answer()
+ * (core/frames/earth_gravity_answer.c) and mech_tides_answer()
+ * (core/frames/tides_answer.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,10 +1,12 @@
 /* ep_scenes.c — POST /v1/scenes/falling-object, /vertical-shot, /cannonball
- * and /rotating-table: the notes' chapter-1 scenes (core/scenes.c), each
+ * and /rotating-table: the notes' chapter-1 scenes (core/frames/scenes.c), each
  * answering the numerical result (fictitious terms chosen by "auto" at the
  * requested accuracy) beside the notes' first-order formula, their
  * difference and the second-order terms the formula neglects. The closed
- * forms quoted beside them are core/frames/scenes_first_order.c; this file
- * reads requests and encodes answers. */
+ * forms quoted beside them are core/frames/scenes_first_order.c; the
+ * rotating table's checks, buffers and run are one call,
+ * mech_rotating_table_scene() (core/frames/rotating_table_scene.c); this
+ * file reads requests and encodes answers. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
