@@ -34,12 +34,7 @@ static double scene_target(struct api_call *c, const json_t *body)
         api_call_invalid(c, "/target_error", "give accuracy or target_error, not both");
         return 0.0;
     }
-    if (te) return json_number_value(te);
-    for (int i = 0; i < MECH_ACCURACY_COUNT; i++) {
-        const struct mech_accuracy_preset *pr = mech_accuracy_preset_at((enum mech_accuracy)i);
-        if (acc && !strcmp(pr->name, acc)) return pr->promise;
-    }
-    return mech_accuracy_preset_at(MECH_ACCURACY_BALANCED)->promise;
+    return mech_accuracy_target(te != NULL, json_number_value(te), acc, NULL);
 }
 
 /* A request-like view of a core scene run, for the shared model/diagnostics encoders. */
