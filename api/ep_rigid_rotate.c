@@ -4,7 +4,9 @@
  * solution in Jacobi elliptic functions. The physics is core/rigid/rigid_rotation.c;
  * the run is one call of mech_rigid_answer_run (core/rigid/rigid_answer.c);
  * the body may be given by principal moments or by a full /v1/rigid/inertia
- * request, read and computed as that route does (api/inertia_request.c). */
+ * request (its schema inlined into this route's by the build, so the
+ * validator checks it with the rest of the body), read and computed as that
+ * route does (api/inertia_request.c). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,58 +21,31 @@
 #include "mech/rigid_rotation.h"
 #include "mech/rotation.h"
 #include "rotation_request.h"
-#include "routes.h"
-#include "schema.h"
 #include "trajectory_request.h"
 
 /* ---- helpers -------------------------------------------------------------------- */
 
-/* The body of the /v1/rigid/inertia request `in` (validated against that
- * route's schema, its defaults filled in, read and computed by
+/* The body of the /v1/rigid/inertia request `in` (validated and its defaults
+ * filled with the rest of the body: api/ops/rigid/rotate.json takes that
+ * route's request schema for "inertia"; read and computed by
  * api/inertia_request.c): principal moments (kg m^2, ascending) and axes
  * (rows, scene axes) out. Returns 1; 0 after recording errors in c (pointers
  * under /inertia; a budget, numerical or internal failure as "inertia: ..."). */
 static int inertia_principal(struct api_call *c, const json_t *in, double moments[3],
                              struct mech_mat3 *axes)
 {
-    size_t ri = api_route_count;
-    for (size_t i = 0; i < api_route_count; i++)
-        if (!strcmp(api_routes[i]->path, "/v1/rigid/inertia")) ri = i;
-    const struct api_schema *sch = ri < api_route_count ? api_route_schema_compiled(ri) : NULL;
-    if (!sch) {
-        struct mech_error e;
-        mech_error_clear(&e);
-        mech_error_set(&e, MECH_EINTERNAL, NULL, "the /v1/rigid/inertia schema is not loaded");
-        api_call_fail_core(c, MECH_EINTERNAL, &e, "");
-        return 0;
-    }
-    json_t *errs = json_array();
-    size_t n = api_schema_validate(sch, in, "/inertia", errs);
-    if (n > 0) {
-        for (size_t i = 0; i < json_array_size(errs); i++) {
-            const json_t *er = json_array_get(errs, i);
-            api_call_invalid(c, json_string_value(json_object_get(er, "pointer")), "%s",
-                             json_string_value(json_object_get(er, "detail")));
-        }
-        if (json_array_size(errs) == 0) api_call_invalid(c, "/inertia", "invalid inertia request");
-        json_decref(errs);
-        return 0;
-    }
-    json_decref(errs);
-    json_t *full = api_schema_apply_defaults(sch, in, NULL); /* as the pipeline does */
     /* the body read and computed as /v1/rigid/inertia does (api/inertia_request.c),
      * its errors collected apart and then reported under /inertia */
     struct api_call sub;
     memset(&sub, 0, sizeof sub);
     sub.req = c->req;
-    sub.given = in;
-    sub.body = full;
+    sub.given = json_object_get(c->given, "inertia");
+    sub.body = in;
     sub.budget = c->budget;
     struct api_inertia_body b;
     memset(&b, 0, sizeof b);
-    int ok = full && api_inertia_body_compute(&sub, full, &b) && sub.problem == API_PROBLEM_NONE &&
+    int ok = api_inertia_body_compute(&sub, in, &b) && sub.problem == API_PROBLEM_NONE &&
              api_inertia_body_finite(&b);
-    json_decref(full);
     if (!ok) {
         size_t ne = json_array_size(sub.errors);
         for (size_t i = 0; i < ne; i++) {

@@ -35,6 +35,14 @@ units[] tables when --sources is given), or a template such as
 /energy_unit, or of the request property energy_unit) is one; no other "x-"
 keyword is taken.
 
+A request schema may take another operation's whole request schema with
+{"$ref": "<domain>/<operation>.json#/request_schema", "description": ...}
+(as /v1/rigid/rotate takes a /v1/rigid/inertia request as its "inertia"):
+the reference is resolved here, at build time, into a copy of that schema
+(the node's other keys, such as its description, kept), so the validator
+checks and fills the nested request with the rest of the body and the
+catalog shows it whole; an unknown or circular reference is an error.
+
 Any error — a file that is not JSON, a missing or unknown key, a wrong type,
 a duplicate path or handler, a file missing from catalog_order.json, a
 malformed x-mechd-check annotation, or (with --sources) a handler no api/
@@ -314,7 +322,52 @@ def collect(ops_dir, src_dir=None):
                  "'json_t *%s(struct api_call *call, const json_t *body)')"
                  % (doc["handler"], src_dir, doc["handler"]))
         ops.append((rel, doc, examples))
+    resolve_refs(ops)
     return ops
+
+
+REF_RE = re.compile(r"^([a-z0-9_]+/[a-z0-9_]+)\.json#/request_schema$")
+
+
+def resolve_refs(ops):
+    """Replace every {"$ref": "<domain>/<op>.json#/request_schema", ...} node of
+    the request schemas by a copy of that operation's (resolved) request
+    schema, the node's other keys kept."""
+    by_name = {rel[len("api/ops/"):-len(".json")]: doc for rel, doc, _ in ops}
+    done, active = {}, set()
+
+    def resolved(name, rel):
+        if name in done:
+            return done[name]
+        if name in active:
+            fail(rel, 'circular "$ref" through %s' % name)
+        active.add(name)
+        done[name] = walk(by_name[name].get("request_schema"), "api/ops/%s.json" % name)
+        active.discard(name)
+        return done[name]
+
+    def walk(node, rel):
+        if isinstance(node, list):
+            return [walk(v, rel) for v in node]
+        if not isinstance(node, dict):
+            return node
+        if "$ref" in node:
+            ref = node["$ref"]
+            m = REF_RE.match(ref) if isinstance(ref, str) else None
+            if not m or m.group(1) not in by_name or "request_schema" not in by_name[m.group(1)]:
+                fail(rel, '"$ref": %s is not "<domain>/<operation>.json#/request_schema" of a '
+                     "POST operation" % compact(ref))
+            out = json.loads(json.dumps(resolved(m.group(1), rel)))
+            for k, v in node.items():
+                if k != "$ref":
+                    out[k] = walk(v, rel)
+            return out
+        return {k: (v if k in ("examples", "default", "const", "enum") else walk(v, rel))
+                for k, v in node.items()}
+
+    for rel, doc, _ in ops:
+        if "request_schema" in doc:
+            doc["request_schema"] = resolved(rel[len("api/ops/"):-len(".json")], rel)
 
 
 def c_string(s, indent="    "):

@@ -404,7 +404,7 @@ class _Operations:
         Args:
             moments: principal moments [I1, I2, I3], kg m^2, > 0, each at most the sum of the other two;
                     body axes = principal axes. Give this or inertia.
-            inertia: a full POST /v1/rigid/inertia request (validated against that route's schema,
+            inertia: a full POST /v1/rigid/inertia request (its schema, inlined here by the build,
                     errors under /inertia): the body is rotated about that request's origin (default its
                     centre of mass), its principal frame is the body frame, and omega and orientation
                     refer to the scene axes of that request (the body as built). Give this or moments.

@@ -13,7 +13,9 @@ naming the file, on each kind of broken data file.
    x-mechd-check annotation with an unknown kind or unit, without a kind or
    with an extra key, another x- keyword, an annotation in a request
    schema, a unit template that can expand to no unit, points at no string
-   of the answer or has unbalanced braces) each make the generator exit 1 with a message naming the file;
+   of the answer or has unbalanced braces, a "$ref" to no operation's
+   request schema or a circular one) each make the generator exit 1 with a
+   message naming the file; a "$ref" is replaced by the schema it names;
    the kinds and units it reads from api/check_kind.c are the C lists.
 3. Generating into a scratch directory writes ops.def with one API_OP per
    data file and ops_handlers.h with one prototype each.
@@ -104,6 +106,31 @@ broken("not listed", write("gr/extra.json", "{}"), "api/ops/gr/extra.json",
        "not listed in api/ops/catalog_order.json")
 broken("listed, missing", lambda ops: os.remove(os.path.join(ops, "gr", "geodesic.json")),
        "catalog_order.json", '"gr/geodesic" is listed but api/ops/gr/geodesic.json does not exist')
+
+# "$ref" to another operation's request schema: resolved at build time; an
+# unknown target, another kind of reference or a cycle fails the build.
+def inertia_ref(d):
+    return d["request_schema"]["properties"]["inertia"]
+
+
+broken("unknown $ref", edit("rigid/rotate.json",
+                            lambda d: inertia_ref(d).update({"$ref": "rigid/inertias.json#/request_schema"})),
+       "api/ops/rigid/rotate.json", '"$ref": "rigid/inertias.json#/request_schema" is not')
+broken("$ref outside request_schema", edit("rigid/rotate.json", lambda d: inertia_ref(d).update(
+    {"$ref": "rigid/inertia.json#/response_schema"})),
+       "api/ops/rigid/rotate.json", "is not \"<domain>/<operation>.json#/request_schema\"")
+broken("circular $ref", edit("rigid/inertia.json", lambda d: d["request_schema"]["properties"]
+                             .update(spin={"$ref": "rigid/rotate.json#/request_schema"})),
+       "api/ops/rigid/", 'circular "$ref"')
+sys.path.insert(0, os.path.join(SRC, "scripts"))
+import ops_gen  # noqa: E402
+_ops = {rel: doc for rel, doc, _ in ops_gen.collect(OPS, API)}
+_inertia = _ops["api/ops/rigid/inertia.json"]["request_schema"]
+_inlined = _ops["api/ops/rigid/rotate.json"]["request_schema"]["properties"]["inertia"]
+check("$ref" not in json.dumps(_inlined) and _inlined["properties"] == _inertia["properties"]
+      and _inlined["required"] == _inertia["required"]
+      and _inlined["description"].startswith("a full POST /v1/rigid/inertia request"),
+      "rotate's inertia is inertia's request schema inlined, its own description kept")
 
 
 # x-mechd-check annotations (what a field is for POST /v1/check): a typo in a
