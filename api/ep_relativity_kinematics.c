@@ -7,7 +7,10 @@
  *   POST /v1/relativity/kinematics/collision
  * Energies, masses (unit/c²) and momenta (unit/c) are in `energy_unit`
  * (eV … TeV, default MeV; c = 1). Particles are a name from the PDG 2024 table
- * (core/particles.c) or a mass. The numerics live in core/kinematics.c. */
+ * (core/relativity/particles.c) or a mass. The numerics live in
+ * core/relativity/kinematics.c; the collision's whole answer is one call,
+ * mech_collision_answer (core/relativity/collision_answer.c), which this file
+ * reads the request for and encodes. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

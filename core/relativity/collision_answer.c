@@ -4,7 +4,6 @@
  * system, the fixed-target and collider equivalents and a final state's
  * threshold, from the cancellation-free pieces of kinematics.c. */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 
 #include "mech/collision_answer.h"

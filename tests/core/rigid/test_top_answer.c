@@ -77,7 +77,7 @@ static void test_precession_ordinary(void)
 }
 
 /* Fast spins: w3 = 1e6 (the API's largest psi') and 1e9, where
- * B - sqrt(B^2 - 4x) keeps ~6 and ~0 digits; the slow root must still match
+ * B - sqrt(B^2 - 4x) keeps ~6 digits and ~1; the slow root must still match
  * the series to 1e-15. */
 static void test_precession_fast_spin(void)
 {
