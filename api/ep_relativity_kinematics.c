@@ -7,7 +7,10 @@
  *   POST /v1/relativity/kinematics/collision
  * Energies, masses (unit/c²) and momenta (unit/c) are in `energy_unit`
  * (eV … TeV, default MeV; c = 1). Particles are a name from the PDG 2024 table
- * (core/particles.c) or a mass. The numerics live in core/kinematics.c. */
+ * (core/relativity/particles.c) or a mass. The numerics live in
+ * core/relativity/kinematics.c; the collision's whole answer is one call,
+ * mech_collision_answer (core/relativity/collision_answer.c), which this file
+ * reads the request for and encodes. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -16,6 +19,7 @@
 #include "endpoint.h"
 #include "mech/constants.h"
 #include "mech/boost.h"
+#include "mech/collision_answer.h"
 #include "mech/decay_estimate.h"
 #include "mech/kinematics.h"
 #include "mech/particles.h"
@@ -485,35 +489,29 @@ json_t *api_op_relativity_kinematics_compton(struct api_call *c, const json_t *b
 
 /* ---- POST /v1/relativity/kinematics/collision -------------------------------------- */
 
-json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t *body)
+/* The request as the core takes it (mf: room for the final masses); 0 after
+ * recording every error found (masses, the crossing angle, the motions, and
+ * what cannot go together: a crossing angle with a target at rest, sqrt_s
+ * with a beam energy or a moving target). */
+static int collision_read(struct api_call *c, const json_t *body, enum mech_energy_unit u,
+                          struct mech_collision_request *q, double mf[MECH_COLLISION_MAX_FINAL])
 {
-    enum mech_energy_unit u;
-    if (!api_kin_unit_of(c, body, &u)) return NULL;
+    memset(q, 0, sizeof *q);
     const json_t *jb = json_object_get(body, "beam"), *jt = json_object_get(body, "target");
     const json_t *jw = json_object_get(body, "sqrt_s"), *jf = json_object_get(body, "final_state");
     double m1 = 0, m2 = 0;
     int ok = api_kin_mass_of(c, json_object_get(jb, "particle"), "/beam/particle", u, &m1);
     ok &= api_kin_mass_of(c, json_object_get(jt, "particle"), "/target/particle", u, &m2);
-    size_t nf = json_array_size(jf);
-    double *mf = nf ? malloc(nf * sizeof *mf) : NULL;
-    if (nf && !mf) return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    for (size_t i = 0; i < nf; i++) {
+    q->n_final = json_array_size(jf); /* the schema's maxItems is the core's limit */
+    for (size_t i = 0; i < q->n_final && i < MECH_COLLISION_MAX_FINAL; i++) {
         char p[40];
         snprintf(p, sizeof p, "/final_state/%zu", i);
         ok &= api_kin_mass_of(c, json_array_get(jf, i), p, u, &mf[i]);
     }
-    double chi = 0;
-    int hx = angle_of(c, body, "crossing_angle", "/crossing_angle", &chi);
-    if (!ok || hx < 0) {
-        free(mf);
-        return NULL;
-    }
-    struct mech_kin_motion kb, kt;
-    int gb = 0, gt = 0;
-    if (!api_kin_motion_of(c, jt, "/target", m2, &kt, &gt)) {
-        free(mf);
-        return NULL;
-    }
+    q->final_masses = mf;
+    const int hx = angle_of(c, body, "crossing_angle", "/crossing_angle", &q->crossing_angle);
+    int gt = 0, gb = 0;
+    if (!ok || hx < 0 || !api_kin_motion_of(c, jt, "/target", m2, &q->target, &gt)) return 0;
     if (hx && !gt)
         api_call_invalid(
             c, json_object_get(body, "crossing_angle") ? "/crossing_angle" : "/crossing_angle_deg",
@@ -528,84 +526,64 @@ json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t 
             api_call_invalid(c, "/sqrt_s",
                              "sqrt_s is solved for a target at rest; give the "
                              "target no motion");
-        if (c->problem != API_PROBLEM_NONE) {
-            free(mf);
-            return NULL;
-        }
-        double t;
-        struct mech_error e;
-        mech_error_clear(&e);
-        enum mech_status st = mech_kin_fixed_target_kinetic(json_number_value(jw), m1, m2, &t, &e);
-        if (st == MECH_OK) st = mech_kin_motion_from_kinetic(m1, t, &kb, &e);
-        if (st != MECH_OK) {
-            free(mf);
-            if (strcmp(e.param, "target/particle")) snprintf(e.param, sizeof e.param, "sqrt_s");
-            return api_call_fail_core(c, st, &e, "");
-        }
-        gb = 1;
-    } else if (!api_kin_motion_of(c, jb, "/beam", m1, &kb, &gb)) {
-        free(mf);
-        return NULL;
+        q->beam_from_sqrt_s = 1;
+        q->sqrt_s = json_number_value(jw);
+        q->beam.mass = m1;
+    } else if (!api_kin_motion_of(c, jb, "/beam", m1, &q->beam, &gb)) {
+        return 0;
     }
-    if (c->problem != API_PROBLEM_NONE) {
-        free(mf);
-        return NULL;
-    }
-    /* Geometry: beam along +z; a moving target along (sin χ, 0, −cos χ). The
-     * angle α between the momenta is π − χ: 1 − cos α = 1 + cos χ = 2cos²(χ/2). */
-    double ch = cos(0.5 * chi), sh = sin(0.5 * chi);
-    double omc = 2.0 * ch * ch;
-    double s, d;
-    mech_kin_collision_s(&kb, &kt, omc, &s, &d);
-    double w = sqrt(s);
-    struct mech_kin_system sys;
-    sys.mass = w;
-    sys.mass_squared = s;
-    sys.energy = kb.energy + kt.energy;
-    /* P_z = p1 − p2 cos χ = (p1 − p2) + p2 · 2 sin²(χ/2), p1 − p2 from the beams'
-     * own inputs (not of the rounded momenta: nearly symmetric beams keep the
-     * CM velocity's digits). */
-    sys.momentum = mech_vec3_make(kt.momentum * sin(chi), 0,
-                                  mech_kin_momentum_difference(&kb, &kt) +
-                                      kt.momentum * 2.0 * sh * sh);
-    mech_kin_system_finish(&sys);
+    return c->problem == API_PROBLEM_NONE;
+}
 
+/* The threshold block of a final state. */
+static json_t *threshold_json(struct api_call *c, const struct mech_collision_threshold *t)
+{
+    json_t *o = json_object();
+    json_object_set_new_nocheck(o, "sqrt_s", api_real(c, t->sqrt_s));
+    json_object_set_new_nocheck(o, "reached", json_boolean(t->reached));
+    if (t->has_fixed_target) {
+        json_object_set_new_nocheck(o, "fixed_target_beam_energy",
+                                    api_real(c, t->fixed_target_beam_energy));
+        json_object_set_new_nocheck(o, "fixed_target_beam_kinetic_energy",
+                                    api_real(c, t->fixed_target_beam_kinetic));
+    }
+    if (t->has_symmetric_collider)
+        json_object_set_new_nocheck(o, "symmetric_collider_beam_energy",
+                                    api_real(c, t->symmetric_collider_beam_energy));
+    return o;
+}
+
+json_t *api_op_relativity_kinematics_collision(struct api_call *c, const json_t *body)
+{
+    enum mech_energy_unit u;
+    struct mech_collision_request q;
+    double mf[MECH_COLLISION_MAX_FINAL];
+    if (!api_kin_unit_of(c, body, &u) || !collision_read(c, body, u, &q, mf)) return NULL;
+    struct mech_collision_answer a;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_collision_answer(&q, &a, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
     json_t *res = json_object();
     json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, w));
-    json_object_set_new_nocheck(res, "s", api_real(c, s));
-    json_object_set_new_nocheck(res, "available_energy", api_real(c, d / (w + m1 + m2)));
-    json_object_set_new_nocheck(res, "cm_momentum",
-                                api_real(c, mech_kin_cm_momentum(w, d, m1, m2)));
-    json_object_set_new_nocheck(res, "beam", describe_motion(c, &kb));
-    json_object_set_new_nocheck(res, "target", describe_motion(c, &kt));
-    json_object_set_new_nocheck(res, "center_of_momentum", describe_cm(c, &sys));
-    if (m2 > 0) {
-        double t = d / (2.0 * m2); /* s − (m1 + m2)² = 2 m2 T on a fixed target */
-        json_object_set_new_nocheck(res, "fixed_target_beam_energy", api_real(c, m1 + t));
-        json_object_set_new_nocheck(res, "fixed_target_beam_kinetic_energy", api_real(c, t));
+    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, a.sqrt_s));
+    json_object_set_new_nocheck(res, "s", api_real(c, a.s));
+    json_object_set_new_nocheck(res, "available_energy", api_real(c, a.available_energy));
+    json_object_set_new_nocheck(res, "cm_momentum", api_real(c, a.cm_momentum));
+    json_object_set_new_nocheck(res, "beam", describe_motion(c, &a.beam));
+    json_object_set_new_nocheck(res, "target", describe_motion(c, &a.target));
+    json_object_set_new_nocheck(res, "center_of_momentum", describe_cm(c, &a.cm));
+    if (a.has_fixed_target) {
+        json_object_set_new_nocheck(res, "fixed_target_beam_energy",
+                                    api_real(c, a.fixed_target_beam_energy));
+        json_object_set_new_nocheck(res, "fixed_target_beam_kinetic_energy",
+                                    api_real(c, a.fixed_target_beam_kinetic));
     }
-    if (m1 == m2 && w / 2 >= m1)
-        json_object_set_new_nocheck(res, "symmetric_collider_beam_energy", api_real(c, w / 2));
-    if (nf) {
-        double sum = -mech_kin_q_value(0.0, mf, nf);
-        json_t *o = json_object();
-        json_object_set_new_nocheck(o, "sqrt_s", api_real(c, sum));
-        json_object_set_new_nocheck(o, "reached", json_boolean(w >= sum));
-        if (m2 > 0) {
-            double t = 0;
-            double mi[2] = {m1, m2};
-            if (mech_kin_q_value(sum, mi, 2) > 0)
-                mech_kin_fixed_target_kinetic(sum, m1, m2, &t, NULL);
-            json_object_set_new_nocheck(o, "fixed_target_beam_energy", api_real(c, m1 + t));
-            json_object_set_new_nocheck(o, "fixed_target_beam_kinetic_energy", api_real(c, t));
-        }
-        if (m1 == m2 && sum / 2 >= m1)
-            json_object_set_new_nocheck(o, "symmetric_collider_beam_energy", api_real(c, sum / 2));
-        json_object_set_new_nocheck(res, "threshold", o);
-    }
-    free(mf);
-    (void)gb;
+    if (a.has_symmetric_collider)
+        json_object_set_new_nocheck(res, "symmetric_collider_beam_energy",
+                                    api_real(c, a.symmetric_collider_beam_energy));
+    if (a.has_threshold)
+        json_object_set_new_nocheck(res, "threshold", threshold_json(c, &a.threshold));
     return finish(c, res);
 }
 

@@ -288,6 +288,38 @@ static enum mech_status top_observe(double s, const double *y, void *params)
     return MECH_OK;
 }
 
+void mech_top_closed_forms(const struct mech_top_problem *p, struct mech_top_result *res)
+{
+    const double mgh = p->mass * p->g * p->distance;
+    const struct mech_vec3 w0 = body_omega(p);
+    /* sleeping top, notes §2.11 problem 11 */
+    res->sleep_lhs = p->I3 * p->I3 * w0.z * w0.z;
+    res->sleep_rhs = 4 * p->I1 * mgh;
+    res->sleep_stable = res->sleep_lhs > res->sleep_rhs;
+    res->critical_omega3 = 2 * sqrt(p->I1 * mgh) / p->I3;
+    /* steady precession at theta0: I1 cos(th) x^2 - I3 w3 x + M g h = 0. The
+     * root of the larger |x| is q / (I1 cos th) with q = (B + sgn(B) sqrt(disc)) / 2
+     * (no cancellation: both terms have B's sign), the other is M g h / q by
+     * Vieta's product (x1 x2 = M g h / (I1 cos th)), never (B - sqrt(disc)) / 2,
+     * which loses the slow rate's digits when I3^2 w3^2 >> 4 I1 M g h cos th. */
+    const double ct = cos(p->theta), B = p->I3 * w0.z;
+    res->precession_gyroscopic = B != 0 ? mgh / B : NAN;
+    res->precession_slow = res->precession_fast = NAN;
+    if (ct * p->I1 == 0 || fabs(ct) < 1e-300) {
+        if (B != 0) res->precession_slow = mgh / B;
+    } else {
+        double disc = B * B - 4 * p->I1 * ct * mgh;
+        if (disc >= 0) {
+            double q = 0.5 * (B + (B >= 0 ? 1 : -1) * sqrt(disc));
+            if (q != 0) {
+                double r1 = mgh / q, r2 = q / (p->I1 * ct);
+                res->precession_slow = fabs(r1) <= fabs(r2) ? r1 : r2;
+                res->precession_fast = fabs(r1) <= fabs(r2) ? r2 : r1;
+            }
+        }
+    }
+}
+
 enum mech_status mech_top_integrate(const struct mech_top_problem *p,
                                     const struct mech_budget *budget,
                                     struct mech_top_result *res, struct mech_error *err)
@@ -336,28 +368,7 @@ enum mech_status mech_top_integrate(const struct mech_top_problem *p,
     res->E_scale = 0.5 * (p->I1 * (w0.x * w0.x + w0.y * w0.y) + p->I3 * w0.z * w0.z) + mgh;
     if (!(res->E_scale > 0)) res->E_scale = 0.5 * p->I1 * c.W * c.W;
     res->theta_min_measured = res->theta_max_measured = p->theta;
-    /* sleeping top, notes §2.11 problem 11 */
-    res->sleep_lhs = p->I3 * p->I3 * w0.z * w0.z;
-    res->sleep_rhs = 4 * p->I1 * mgh;
-    res->sleep_stable = res->sleep_lhs > res->sleep_rhs;
-    res->critical_omega3 = 2 * sqrt(p->I1 * mgh) / p->I3;
-    /* steady precession at theta0: I1 cos(th) x^2 - I3 w3 x + M g h = 0 */
-    const double ct = cos(p->theta), B = p->I3 * w0.z;
-    res->precession_gyroscopic = B != 0 ? mgh / B : NAN;
-    res->precession_slow = res->precession_fast = NAN;
-    if (ct * p->I1 == 0 || fabs(ct) < 1e-300) {
-        if (B != 0) res->precession_slow = mgh / B;
-    } else {
-        double disc = B * B - 4 * p->I1 * ct * mgh;
-        if (disc >= 0) {
-            double q = 0.5 * (B + (B >= 0 ? 1 : -1) * sqrt(disc));
-            if (q != 0) {
-                double r1 = mgh / q, r2 = q / (p->I1 * ct);
-                res->precession_slow = fabs(r1) <= fabs(r2) ? r1 : r2;
-                res->precession_fast = fabs(r1) <= fabs(r2) ? r2 : r1;
-            }
-        }
-    }
+    mech_top_closed_forms(p, res);
 
     const size_t n = p->samples, dim = 7;
     double *sy = malloc(n * dim * sizeof *sy), *stt = malloc(n * sizeof *stt);

@@ -102,6 +102,23 @@ struct mech_top_result {
 enum mech_status mech_top_turning_points(const struct mech_top_problem *p,
                                          struct mech_top_turning *out, struct mech_error *err);
 
+/* The closed forms of the initial state, no run: fills res->sleep_lhs
+ * (I3^2 w3^2, kg^2 m^4 / s^2), sleep_rhs (4 I1 M g h, same unit),
+ * sleep_stable (lhs > rhs), critical_omega3 (2 sqrt(I1 M g h) / I3, rad/s),
+ * precession_gyroscopic (M g h / (I3 w3), rad/s; NaN at w3 = 0) and the
+ * steady-precession rates at theta0 (rad/s), the roots of
+ * I1 cos(theta0) x^2 - I3 w3 x + M g h = 0: with B = I3 w3 and
+ * q = (B + sgn(B) sqrt(B^2 - 4 I1 cos(theta0) M g h)) / 2 (no cancellation)
+ * they are q / (I1 cos theta0) and M g h / q (Vieta's product), so the slow
+ * one keeps its digits at a fast spin where (B - sqrt(...)) / 2 would not;
+ * precession_slow is the root of smaller |x|, precession_fast the other.
+ * Both NaN when the discriminant is negative (no steady precession at this
+ * spin) or q = 0; where |cos theta0| < 1e-300 the equation is linear: slow =
+ * M g h / (I3 w3), fast NaN. w3 = phi' cos theta0 + psi'. Nothing else of
+ * *res is touched. p as mech_top_integrate accepts it (not checked here);
+ * pure, cannot fail; mech_top_integrate calls it. */
+void mech_top_closed_forms(const struct mech_top_problem *p, struct mech_top_result *res);
+
 /* Integrate the top from t = 0 to t_end. Statuses: MECH_OK; MECH_EDOMAIN with
  * param "I1", "I3", "mass", "distance", "g" (non-positive or unphysical:
  * I3 > 2 I1 or I1 < M h^2, 1e-12 slack); MECH_EINVAL with param "theta", ...,
