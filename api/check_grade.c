@@ -200,7 +200,13 @@ json_t *api_check_feedback(const struct api_check_grade *g, const json_t *want, 
     char full[1400];
     snprintf(full, sizeof full, "%s The expected value is %.400s%s%s.", msg, text ? text : "?",
              u && strcmp(u, "1") ? " " : "", u && strcmp(u, "1") ? u : "");
-    free(text);
+    /* json_dumps allocates through jansson's allocator, which inside an
+     * operation request is the per-thread arena (api_alloc.c): free(3) on that
+     * memory aborts the process. Give it back the way it came. */
+    json_malloc_t jmalloc;
+    json_free_t jfree;
+    json_get_alloc_funcs(&jmalloc, &jfree);
+    if (text) jfree(text);
     return json_string(full);
 }
 
