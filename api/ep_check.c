@@ -7,6 +7,14 @@
  * Nesting (/v1/check or /v1/batch inside either) is refused, so the work of
  * one request stays bounded by API_BATCH_MAX operations. The rules for
  * tolerances are documented in docs/grading.md and in the route descriptions.
+ *
+ * The handler reads the request (check_read), runs the operation (check_run),
+ * finds the field in its answer (check_target), sets the tolerance
+ * (api_check_recommend, check_tolerance), grades (api_check_grade_field) and
+ * encodes the verdict (check_encode). What a field is lives in check_field.c,
+ * the comparisons by kind in check_kind.c, JSON pointers and numeric trees in
+ * check_tree.c, the recommended tolerance in check_evidence.c, the grading
+ * and feedback in check_grade.c.
  */
 #include <stdio.h>
 #include <string.h>
@@ -23,8 +31,9 @@
 
 #define CHECK_DEFAULT_RELATIVE 1e-2 /* tolerance when none is given */
 
-/* What the request asks, read and checked before the operation runs. All
- * pointers are borrowed from the body (units: static). */
+/* What the request asks, read and checked before the operation runs.
+ * Borrowed: strings and values from the body, units static, field_unit from
+ * the operation's response schema (static after api_init). */
 struct check_request {
     const char *op;            /* the operation's path */
     const json_t *request;     /* its request body */
