@@ -21,7 +21,7 @@ json_t *api_op_batch(struct api_call *c, const json_t *body)
     size_t i;
     json_t *item;
     json_array_foreach(ops, i, item) {
-        const char *op = api_string(item, "operation", "");
+        const char *op = api_string_of(item, "operation"); /* required */
         char prefix[64];
         snprintf(prefix, sizeof prefix, "/operations/%zu/request", i);
         char opptr[64];
