@@ -27,7 +27,7 @@ python3 "$SRC/scripts/ops_gen.py" "$SRC/api/ops" "$OUT/generated" --sources "$SR
 
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 CFLAGS="-std=c11 -O1 -g -D_POSIX_C_SOURCE=200809L -Wall -Wno-unused-parameter $SAN \
- -I$SRC/core/include -I$SRC/core -I$SRC/api -I$OUT/generated -I$SRC/server -I$SRC/tests/fuzz \
+ -I$SRC/core/include -I$SRC/core -I$SRC/api -I$SRC/api/include -I$OUT/generated -I$SRC/server -I$SRC/tests/fuzz \
  -DMECHD_VERSION=\"0.1.0\" -DMECHD_BUILD_ID=\"fuzz\" -DMECHD_STATIC_DIR=\"$SRC/clients/web\" \
  $(pkg-config --cflags jansson gsl zlib libmicrohttpd)"
 LIBS="$(pkg-config --libs jansson gsl zlib) -lm -lpthread"
@@ -38,7 +38,7 @@ export CFLAGS
 mkdir -p "$OUT/obj"
 # An object is named by its source path with / spelled @ (core@frames@earth.c.o),
 # so the path can be read back from the name (core/ has domain folders).
-newest_h=$(ls -t $(find "$SRC/core" -name '*.h') "$SRC"/api/*.h "$SRC"/server/*.h "$OUT"/generated/* 2>/dev/null | head -1)
+newest_h=$(ls -t $(find "$SRC/core" -name '*.h') "$SRC"/api/*.h "$SRC"/api/include/*.h "$SRC"/server/*.h "$OUT"/generated/* 2>/dev/null | head -1)
 { find "$SRC/core" -name '*.c'; ls "$SRC"/api/*.c "$SRC"/server/*.c; } | grep -v "/server/main\.c$" |
   while read -r f; do
     o="$OUT/obj/$(echo "${f#$SRC/}" | tr / @).o"

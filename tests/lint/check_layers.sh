@@ -1,6 +1,6 @@
 #!/bin/sh
 # One face per layer (issue 17): the server (server/) sees the API layer only
-# through api/api.h — no route table (routes.h), endpoint internals
+# through api/include/api.h (the only API header on its include path) — no route table (routes.h), endpoint internals
 # (endpoint.h) or other api/ header — and the API layer does not set up the
 # process in a library init path (jansson's allocator and GSL's error handler
 # are main()'s: api_install_json_allocator(), gsl_set_error_handler_off()).
