@@ -98,7 +98,8 @@ static json_t *gr_constants(struct api_call *c, const struct mech_earth_gravity_
     put(k, "gm", api_real(c, a->earth.gm));
     put(k, "radius", api_real(c, a->earth.radius));
     put(k, "omega", api_real(c, a->earth.omega));
-    put(k, "sidereal_day", api_real(c, a->sidereal_day));
+    /* a sphere that does not turn has no day: null, not a refused answer */
+    put(k, "sidereal_day", a->earth.omega > 0 ? api_real(c, a->sidereal_day) : json_null());
     put(k, "g0", api_real(c, a->g0));
     put(k, "wgs84",
         json_pack("{s:f,s:f,s:f,s:f,s:f,s:f,s:f}", "a", MECH_WGS84_A, "f", MECH_WGS84_F, "e2",
