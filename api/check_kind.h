@@ -7,7 +7,8 @@
  * (check_field.h).
  *
  * Pure functions on plain arrays of doubles: no JSON, no I/O, no allocation;
- * reentrant. ep_check.c turns JSON into these arrays and back.
+ * reentrant. check_tree.c turns JSON into these arrays and back and
+ * check_grade.c grades with them (for ep_check.c).
  */
 #ifndef API_CHECK_KIND_H
 #define API_CHECK_KIND_H
