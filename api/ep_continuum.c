@@ -2,7 +2,8 @@
  * heading; this serves its standard content at the course's level):
  *   POST /v1/continuum/string  transverse waves on a string with fixed ends
  *   POST /v1/continuum/rod     axial and bending waves of a rod / beam
- * JSON <-> core only; the physics is core/continuum_waves.c. */
+ * JSON <-> core only; the physics is core/continuum/continuum_waves.c, and
+ * the rod's answer is one call, mech_rod_answer() (core/continuum/rod_answer.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -10,7 +11,7 @@
 #include "endpoint.h"
 #include "mech/constants.h"
 #include "mech/continuum_waves.h"
-#include "mech/torsion.h"
+#include "mech/rod_answer.h"
 
 
 static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode *m)
@@ -67,171 +68,115 @@ json_t *api_op_continuum_string(struct api_call *c, const json_t *body)
 
 /* ---- rods --------------------------------------------------------------------- */
 
-static int ends_of(const char *s, enum mech_rod_ends *e)
+/* The rod request as the core takes it (schema-validated: the section is
+ * one of its three shapes). */
+static void rod_read(const json_t *body, struct mech_rod_request *q)
 {
-    static const struct { const char *name; enum mech_rod_ends v; } t[] = {
-        {"free-free", MECH_ROD_FREE_FREE},
-        {"clamped-clamped", MECH_ROD_CLAMPED_CLAMPED},
-        {"clamped-free", MECH_ROD_CLAMPED_FREE},
-        {"pinned-pinned", MECH_ROD_PINNED_PINNED},
-    };
-    for (size_t i = 0; i < sizeof t / sizeof t[0]; i++)
-        if (!strcmp(s, t[i].name)) {
-            *e = t[i].v;
-            return 1;
-        }
-    return 0;
+    q->length = api_number_of(body, "length");
+    q->density = api_number_of(body, "density");
+    q->youngs_modulus = api_number_of(body, "youngs_modulus");
+    const json_t *sec = json_object_get(body, "section");
+    if (json_object_get(sec, "radius")) {
+        q->section = MECH_ROD_SECTION_CIRCLE;
+        q->radius = api_number_of(sec, "radius");
+    } else if (json_object_get(sec, "width")) {
+        q->section = MECH_ROD_SECTION_RECTANGLE;
+        q->width = api_number_of(sec, "width");
+        q->height = api_number_of(sec, "height");
+    } else {
+        q->section = MECH_ROD_SECTION_GIVEN;
+        q->area = api_number_of(sec, "area");
+        q->second_moment = api_number_of(sec, "second_moment");
+        const json_t *jj = json_object_get(sec, "polar_moment"),
+                     *kj = json_object_get(sec, "torsion_constant");
+        q->has_polar_moment = jj != NULL;
+        q->polar_moment = json_number_value(jj);
+        q->has_torsion_constant = kj != NULL; /* absent: K = J (a circle or tube) */
+        q->torsion_constant = json_number_value(kj);
+    }
+    q->ends = api_string_of(body, "ends");
+    q->modes = (int)api_number_of(body, "modes");
+    const json_t *gj = json_object_get(body, "shear_modulus"), *nj = json_object_get(body, "poisson_ratio");
+    q->has_shear_modulus = gj != NULL;
+    q->shear_modulus = json_number_value(gj);
+    q->has_poisson_ratio = nj != NULL;
+    q->poisson_ratio = json_number_value(nj);
 }
 
-/* The torsional block, or NULL: with no shear modulus (not asked for), with a
- * section given by area alone (a note says what is missing), or after
- * recording an error (c->problem set). */
-static json_t *torsional(struct api_call *c, const json_t *body, const json_t *sec, double E,
-                         double rho, double L, enum mech_rod_ends ends, int nm, json_t *notes)
+/* "bending": a = sqrt(EI/(rho A)) and the modes with their roots. */
+static json_t *rod_bending(struct api_call *c, const struct mech_rod_answer *a)
 {
-    const json_t *gj = json_object_get(body, "shear_modulus"), *nj = json_object_get(body, "poisson_ratio");
-    if (gj && nj) {
-        api_call_invalid(c, "/poisson_ratio", "give shear_modulus or poisson_ratio, not both");
-        return NULL;
+    json_t *ben = json_object(), *bm = json_array();
+    for (int n = 1; n <= a->n_modes; n++) {
+        const struct mech_rod_mode *m = &a->modes[n - 1];
+        json_t *o = mode_json(c, n, &m->bending);
+        json_object_set_new_nocheck(o, "beta_L", api_real(c, m->beta_L));
+        json_object_set_new_nocheck(o, "sigma", api_real(c, m->sigma));
+        json_object_set_new_nocheck(o, "phase_speed", api_real(c, m->bending.phase_speed));
+        json_object_set_new_nocheck(o, "group_speed", api_real(c, m->bending.group_speed));
+        json_object_set_new_nocheck(o, "k_radius_of_gyration", api_real(c, m->k_radius_of_gyration));
+        json_array_append_new(bm, o);
     }
-    struct mech_error e;
-    mech_error_clear(&e);
-    double g = 0, j = 0, k = 0;
-    enum mech_status st = MECH_OK;
-    if (gj)
-        g = json_number_value(gj);
-    else if (nj)
-        st = mech_shear_modulus(E, json_number_value(nj), &g, &e);
-    if (st == MECH_OK && (gj || nj)) {
-        if (json_object_get(sec, "radius")) {
-            const double r = api_number_of(sec, "radius");
-            j = k = 0.5 * MECH_PI * (r * r) * (r * r);
-        } else if (json_object_get(sec, "width")) {
-            st = mech_torsion_rectangle(api_number(sec, "width", 1), api_number(sec, "height", 1), &j,
-                                        &k, &e);
-            if (st != MECH_OK) snprintf(e.param, sizeof e.param, "section");
-        } else if (json_object_get(sec, "polar_moment")) {
-            j = api_number(sec, "polar_moment", 1);
-            k = api_number(sec, "torsion_constant", j);
-        } else {
-            json_array_append_new(notes, json_string(
-                "torsional waves need the section's polar_moment (and torsion_constant) when it "
-                "is given by area and second_moment: torsional is null"));
-            return NULL;
-        }
-    }
-    if (st == MECH_OK && !gj && !nj) return NULL; /* not asked for: torsional is null */
-    double ct = 0;
-    if (st == MECH_OK) st = mech_torsional_wave_speed(g, rho, k, j, &ct, &e);
-    if (st != MECH_OK) {
-        api_call_fail_core(c, st, &e, "");
-        return NULL;
-    }
+    json_object_set_new_nocheck(ben, "stiffness_ratio", api_real(c, a->stiffness_ratio));
+    json_object_set_new_nocheck(ben, "modes", bm);
+    return ben;
+}
+
+/* "longitudinal" (torsional = 0) or "torsional" (1): the wave speed and modes. */
+static json_t *rod_axial(struct api_call *c, const struct mech_rod_answer *a, int torsional)
+{
     json_t *o = json_object(), *modes = json_array();
-    if (!o || !modes) {
-        json_decref(o), json_decref(modes);
-        api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-        return NULL;
+    for (int n = 1; n <= a->n_modes; n++)
+        json_array_append_new(modes, mode_json(c, n, torsional ? &a->modes[n - 1].torsional
+                                                               : &a->modes[n - 1].longitudinal));
+    if (torsional) {
+        json_object_set_new_nocheck(o, "shear_modulus", api_real(c, a->torsion.shear_modulus));
+        json_object_set_new_nocheck(o, "polar_moment", api_real(c, a->torsion.polar_moment));
+        json_object_set_new_nocheck(o, "torsion_constant", api_real(c, a->torsion.torsion_constant));
     }
-    for (int n = 1; n <= nm; n++) {
-        double kl;
-        if (mech_rod_axial_mode(ends, n, &kl, NULL) != MECH_OK) break;
-        struct mech_wave_mode m = mech_wave_mode_nondispersive(ct, L, kl);
-        json_array_append_new(modes, mode_json(c, n, &m));
-    }
-    json_object_set_new_nocheck(o, "shear_modulus", api_real(c, g));
-    json_object_set_new_nocheck(o, "polar_moment", api_real(c, j));
-    json_object_set_new_nocheck(o, "torsion_constant", api_real(c, k));
-    json_object_set_new_nocheck(o, "wave_speed", api_real(c, ct));
+    json_object_set_new_nocheck(o, "wave_speed", api_real(c, torsional ? a->torsion.wave_speed
+                                                                       : a->longitudinal_speed));
     json_object_set_new_nocheck(o, "modes", modes);
     return o;
 }
 
-json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
+/* "notes": what the answer leaves out, in the order the flags are met. */
+static json_t *rod_notes(const struct mech_rod_answer *a)
 {
-    const double L = api_number(body, "length", 1), rho = api_number(body, "density", 1);
-    const double E = api_number(body, "youngs_modulus", 1);
-    const json_t *sec = json_object_get(body, "section");
-    double A, I;
-    if (json_object_get(sec, "radius")) {
-        const double r = api_number_of(sec, "radius");
-        A = MECH_PI * r * r;
-        I = 0.25 * MECH_PI * (r * r) * (r * r);
-    } else if (json_object_get(sec, "width")) {
-        const double b = api_number(sec, "width", 1), h = api_number(sec, "height", 1);
-        A = b * h;
-        I = b * h * (h * h) / 12.0;
-    } else {
-        A = api_number(sec, "area", 1);
-        I = api_number(sec, "second_moment", 1);
-    }
-    enum mech_rod_ends ends;
-    if (!ends_of(api_string_of(body, "ends"), &ends)) {
-        api_call_invalid(c, "/ends", "unknown end conditions");
-        return NULL;
-    }
-    const int nm = (int)api_number_of(body, "modes");
-    /* c = sqrt(E/rho) and a = sqrt(EI/(rho A)) as products of square roots:
-     * no overflow or underflow of the quotients at the schema's extremes. */
-    const double cl = sqrt(E) / sqrt(rho);
-    const double a = cl * sqrt(I) / sqrt(A), rg = sqrt(I) / sqrt(A);
-
-    json_t *out = json_object(), *lon = json_object(), *ben = json_object();
-    json_t *lm = json_array(), *bm = json_array(), *notes = json_array();
-    if (!out || !lon || !ben || !lm || !bm || !notes) {
-        json_decref(out), json_decref(lon), json_decref(ben);
-        json_decref(lm), json_decref(bm), json_decref(notes);
-        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    }
-    json_object_set_new_nocheck(out, "area", api_real(c, A));
-    json_object_set_new_nocheck(out, "second_moment", api_real(c, I));
-    json_object_set_new_nocheck(out, "radius_of_gyration", api_real(c, rg));
-    int thick = 0;
-    for (int n = 1; n <= nm; n++) {
-        double kl, x, sg;
-        struct mech_error e;
-        mech_error_clear(&e);
-        enum mech_status st = mech_rod_axial_mode(ends, n, &kl, &e);
-        if (st == MECH_OK) st = mech_beam_bending_root(ends, n, &x, &sg, &e);
-        if (st != MECH_OK) {
-            json_decref(out), json_decref(lon), json_decref(ben);
-            json_decref(lm), json_decref(bm), json_decref(notes);
-            return api_call_fail_core(c, st, &e, "");
-        }
-        struct mech_wave_mode m = mech_wave_mode_nondispersive(cl, L, kl);
-        json_array_append_new(lm, mode_json(c, n, &m));
-        m = mech_wave_mode_bending(a, L, x);
-        json_t *o = mode_json(c, n, &m);
-        json_object_set_new_nocheck(o, "beta_L", api_real(c, x));
-        json_object_set_new_nocheck(o, "sigma", api_real(c, sg));
-        json_object_set_new_nocheck(o, "phase_speed", api_real(c, m.phase_speed));
-        json_object_set_new_nocheck(o, "group_speed", api_real(c, m.group_speed));
-        json_object_set_new_nocheck(o, "k_radius_of_gyration", api_real(c, m.wavenumber * rg));
-        if (m.wavenumber * rg > 0.1) thick = 1;
-        json_array_append_new(bm, o);
-    }
-    json_object_set_new_nocheck(lon, "wave_speed", api_real(c, cl));
-    json_object_set_new_nocheck(lon, "modes", lm);
-    json_object_set_new_nocheck(ben, "stiffness_ratio", api_real(c, a));
-    json_object_set_new_nocheck(ben, "modes", bm);
-    json_object_set_new_nocheck(out, "longitudinal", lon);
-    json_object_set_new_nocheck(out, "bending", ben);
-    json_t *tor = torsional(c, body, sec, E, rho, L, ends, nm, notes);
-    if (!tor && c->problem != API_PROBLEM_NONE) {
-        json_decref(out), json_decref(notes);
-        return NULL;
-    }
-    json_object_set_new_nocheck(out, "torsional", tor ? tor : json_null());
-    if (thick)
+    json_t *notes = json_array();
+    if (a->torsion_needs_polar_moment)
+        json_array_append_new(notes, json_string(
+            "torsional waves need the section's polar_moment (and torsion_constant) when it "
+            "is given by area and second_moment: torsional is null"));
+    if (a->thick)
         json_array_append_new(notes, json_string(
             "some bending modes have k r_g > 0.1: their wavelength is not long against the "
             "section, so Euler-Bernoulli frequencies are too high by about (k r_g)^2 "
             "(shear and rotary inertia, Timoshenko theory, not modelled)"));
-    if (ends == MECH_ROD_FREE_FREE)
+    if (a->ends == MECH_ROD_FREE_FREE)
         json_array_append_new(notes, json_string(
             "free-free: the rigid-body modes (one translation along the rod, two in bending) "
             "have omega = 0 and are not listed"));
-    json_object_set_new_nocheck(out, "notes", notes);
-    return out;
+    return notes;
 }
 
+json_t *api_op_continuum_rod(struct api_call *c, const json_t *body)
+{
+    struct mech_rod_request q = {0};
+    rod_read(body, &q);
+    struct mech_rod_answer a;
+    struct mech_error e;
+    mech_error_clear(&e);
+    enum mech_status st = mech_rod_answer(&q, &a, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    json_t *out = json_object();
+    json_object_set_new_nocheck(out, "area", api_real(c, a.area));
+    json_object_set_new_nocheck(out, "second_moment", api_real(c, a.second_moment));
+    json_object_set_new_nocheck(out, "radius_of_gyration", api_real(c, a.radius_of_gyration));
+    json_object_set_new_nocheck(out, "longitudinal", rod_axial(c, &a, 0));
+    json_object_set_new_nocheck(out, "bending", rod_bending(c, &a));
+    json_object_set_new_nocheck(out, "torsional", a.has_torsion ? rod_axial(c, &a, 1) : json_null());
+    json_object_set_new_nocheck(out, "notes", rod_notes(&a));
+    mech_rod_answer_free(&a);
+    return out;
+}

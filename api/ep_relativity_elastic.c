@@ -1,20 +1,17 @@
 /* ep_relativity_elastic.c — POST /v1/relativity/kinematics/elastic: two-body
  * relativistic elastic scattering off a target at rest at a given CM, lab or
  * recoil angle, answered in the lab and the CM frame (notes §3 kinematics,
- * problem 16; Compton is the massless-projectile case). JSON <-> core only;
- * the physics is core/relativity/elastic_scattering.c; the unit, masses and
- * the projectile's motion are read by kin_request.c, as the other kinematics
- * operations read them. */
-#include <math.h>
+ * problem 16; Compton is the massless-projectile case). What it computes is
+ * one call, mech_elastic_answer() (core/relativity/elastic_answer.c, on
+ * elastic_scattering.c); the unit, masses and the projectile's motion are
+ * read by kin_request.c, as the other kinematics operations read them; this
+ * file reads the request and encodes the answer. */
 #include <stdio.h>
-#include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/elastic_scattering.h"
-#include "mech/kinematics.h"
 #include "kin_request.h"
-
+#include "mech/constants.h"
+#include "mech/elastic_answer.h"
 
 static json_t *deg_of(struct api_call *c, double rad)
 {
@@ -44,25 +41,17 @@ static int motion_of(struct api_call *c, const json_t *obj, double m, struct mec
     return 1;
 }
 
-static const struct {
-    const char *key;
-    enum mech_elastic_angle kind;
-} angle_keys[] = {
-    {"cm_angle", MECH_ELASTIC_CM_ANGLE},
-    {"angle", MECH_ELASTIC_LAB_ANGLE},
-    {"recoil_angle", MECH_ELASTIC_RECOIL_ANGLE},
-};
-
-/* Exactly one angle of the six keys; writes its kind, value (radians) and
- * pointer. 0 after recording an error. */
-static int angle_of(struct api_call *c, const json_t *body, enum mech_elastic_angle *kind,
-                    double *rad, char ptr[48])
+/* Exactly one angle of the six keys (cm_angle, angle, recoil_angle, each
+ * also as *_deg) into q: its kind, value and unit. 0 after recording an
+ * error. */
+static int angle_of(struct api_call *c, const json_t *body, struct mech_elastic_request *q)
 {
+    static const enum mech_elastic_angle kinds[] = {MECH_ELASTIC_CM_ANGLE, MECH_ELASTIC_LAB_ANGLE,
+                                                    MECH_ELASTIC_RECOIL_ANGLE};
     const char *seen = NULL;
     for (size_t i = 0; i < 3; i++) {
         for (int d = 0; d < 2; d++) {
-            char key[32];
-            snprintf(key, sizeof key, "%s%s", angle_keys[i].key, d ? "_deg" : "");
+            const char *key = mech_elastic_angle_key(kinds[i], d);
             const json_t *v = json_object_get(body, key);
             if (!v) continue;
             if (seen) {
@@ -71,10 +60,10 @@ static int angle_of(struct api_call *c, const json_t *body, enum mech_elastic_an
                 api_call_invalid(c, p, "give exactly one angle (%s was given too)", seen);
                 return 0;
             }
-            seen = angle_keys[i].key;
-            *kind = angle_keys[i].kind;
-            *rad = d ? json_number_value(v) / 180.0 * MECH_PI : json_number_value(v);
-            snprintf(ptr, 48, "/%s", key);
+            seen = mech_elastic_angle_key(kinds[i], 0);
+            q->kind = kinds[i];
+            q->angle = json_number_value(v);
+            q->angle_in_degrees = d;
         }
     }
     if (!seen) {
@@ -82,6 +71,29 @@ static int angle_of(struct api_call *c, const json_t *body, enum mech_elastic_an
                                 "recoil_angle (each also as *_deg)");
         return 0;
     }
+    return 1;
+}
+
+/* The request as the core takes it; 0 after recording the errors (the
+ * masses' and the angle's together, then the target's, then the motion's). */
+static int read_request(struct api_call *c, const json_t *body, enum mech_energy_unit *u,
+                        struct mech_elastic_request *q)
+{
+    if (!api_kin_unit_of(c, body, u)) return 0;
+    const json_t *pj = json_object_get(body, "projectile");
+    double m1 = 0;
+    int ok = api_kin_mass_of(c, json_object_get(pj, "particle"), "/projectile/particle", *u, &m1);
+    ok &= api_kin_mass_of(c, json_object_get(body, "target"), "/target", *u, &q->target_mass);
+    ok &= angle_of(c, body, q);
+    if (!ok || c->problem != API_PROBLEM_NONE) return 0;
+    if (!(q->target_mass > 0)) {
+        api_call_domain(c, "/target", "the target must have a mass > 0: a massless particle "
+                                      "cannot be at rest");
+        return 0;
+    }
+    if (!motion_of(c, pj, m1, &q->projectile)) return 0;
+    /* a request number is a real; the schema allows 0 or 1 (default 0) */
+    q->branch = (int)api_number_of(body, "branch");
     return 1;
 }
 
@@ -98,95 +110,93 @@ static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)
     return o;
 }
 
+/* "projectile": its lab motion, and γ, β, η when it has a rest frame. */
+static json_t *projectile_json(struct api_call *c, const struct mech_elastic_request *q,
+                               const struct mech_elastic_answer *a)
+{
+    const struct mech_kin_motion *k = &q->projectile;
+    json_t *in = json_object();
+    json_object_set_new_nocheck(in, "mass", api_real(c, k->mass));
+    json_object_set_new_nocheck(in, "energy", api_real(c, k->energy));
+    json_object_set_new_nocheck(in, "kinetic_energy", api_real(c, k->kinetic));
+    json_object_set_new_nocheck(in, "momentum", api_real(c, k->momentum));
+    if (a->has_projectile_boost) {
+        json_object_set_new_nocheck(in, "gamma", api_real(c, a->projectile_boost.gamma));
+        json_object_set_new_nocheck(in, "beta", api_real(c, a->projectile_boost.beta));
+        json_object_set_new_nocheck(in, "rapidity", api_real(c, a->projectile_boost.rapidity));
+    }
+    return in;
+}
+
+/* "cm": the CM frame's velocity, the momentum, energies and angles there. */
+static json_t *cm_json(struct api_call *c, const struct mech_elastic *o)
+{
+    json_t *cm = json_object(), *vel = json_object();
+    json_object_set_new_nocheck(vel, "beta", api_real(c, o->cm.beta));
+    json_object_set_new_nocheck(vel, "gamma", api_real(c, o->cm.gamma));
+    json_object_set_new_nocheck(vel, "gamma_minus_one", api_real(c, o->cm.gamma_minus_one));
+    json_object_set_new_nocheck(vel, "beta_gamma", api_real(c, o->cm.beta_gamma));
+    json_object_set_new_nocheck(vel, "rapidity", api_real(c, o->cm.rapidity));
+    json_object_set_new_nocheck(vel, "one_minus_beta", api_real(c, o->cm.one_minus_beta));
+    json_object_set_new_nocheck(cm, "velocity", vel);
+    json_object_set_new_nocheck(cm, "momentum", api_real(c, o->cm_momentum));
+    json_object_set_new_nocheck(cm, "energies", api_reals(c, o->cm_energy, 2));
+    json_object_set_new_nocheck(cm, "kinetic_energies", api_reals(c, o->cm_kinetic, 2));
+    json_object_set_new_nocheck(cm, "angle", api_real(c, o->cm_angle));
+    json_object_set_new_nocheck(cm, "angle_deg", deg_of(c, o->cm_angle));
+    json_object_set_new_nocheck(cm, "recoil_angle", api_real(c, MECH_PI - o->cm_angle));
+    json_object_set_new_nocheck(cm, "recoil_angle_deg",
+                                api_real(c, 180.0 - o->cm_angle * (180.0 / MECH_PI)));
+    return cm;
+}
+
+/* "solutions": every CM angle giving the requested angle, the branch used. */
+static json_t *solutions_json(struct api_call *c, const struct mech_elastic_answer *a)
+{
+    const struct mech_elastic *o = &a->scatter;
+    json_t *sol = json_object();
+    double degs[2] = {0, 0};
+    for (size_t i = 0; i < o->n_solutions && i < 2; i++)
+        degs[i] = o->cm_angle_solutions[i] * (180.0 / MECH_PI);
+    json_object_set_new_nocheck(sol, "count", json_integer((json_int_t)o->n_solutions));
+    json_object_set_new_nocheck(sol, "branch", json_integer(a->branch));
+    json_object_set_new_nocheck(sol, "cm_angles", api_reals(c, o->cm_angle_solutions, o->n_solutions));
+    json_object_set_new_nocheck(sol, "cm_angles_deg", api_reals(c, degs, o->n_solutions));
+    return sol;
+}
+
 json_t *api_op_relativity_kinematics_elastic(struct api_call *c, const json_t *body)
 {
     enum mech_energy_unit u;
-    if (!api_kin_unit_of(c, body, &u)) return NULL;
-    const json_t *pj = json_object_get(body, "projectile");
-    double m1 = 0, m2 = 0;
-    int ok = api_kin_mass_of(c, json_object_get(pj, "particle"), "/projectile/particle", u, &m1);
-    ok &= api_kin_mass_of(c, json_object_get(body, "target"), "/target", u, &m2);
-    enum mech_elastic_angle kind = MECH_ELASTIC_CM_ANGLE;
-    double angle = 0;
-    char aptr[48] = "";
-    ok &= angle_of(c, body, &kind, &angle, aptr);
-    if (!ok || c->problem != API_PROBLEM_NONE) return NULL;
-    if (!(m2 > 0)) {
-        api_call_domain(c, "/target", "the target must have a mass > 0: a massless particle "
-                                      "cannot be at rest");
-        return NULL;
-    }
-    struct mech_kin_motion k;
-    if (!motion_of(c, pj, m1, &k)) return NULL;
-    /* a request number is a real; the schema allows 0 or 1 (default 0) */
-    const int branch = (int)api_number_of(body, "branch");
-    struct mech_elastic o;
+    struct mech_elastic_request q = {0};
+    if (!read_request(c, body, &u, &q)) return NULL;
+    struct mech_elastic_answer a;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st = mech_elastic_scatter(&k, m2, kind, angle, branch, &o, &e);
-    if (st != MECH_OK) {
-        if (!strcmp(e.param, "angle")) snprintf(e.param, sizeof e.param, "%s", aptr + 1);
-        return api_call_fail_core(c, st, &e, "");
-    }
+    enum mech_status st = mech_elastic_answer(&q, &a, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
 
-    json_t *res = json_object(), *in = json_object(), *cm = json_object(), *vel = json_object();
-    json_t *lab = json_object(), *sol = json_object();
-    if (!res || !in || !cm || !vel || !lab || !sol) {
-        json_decref(res), json_decref(in), json_decref(cm), json_decref(vel), json_decref(lab);
-        json_decref(sol);
-        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    }
+    const struct mech_elastic *o = &a.scatter;
+    json_t *res = json_object(), *lab = json_object();
     json_object_set_new_nocheck(res, "energy_unit", json_string(mech_energy_unit_name(u)));
-    json_object_set_new_nocheck(in, "mass", api_real(c, k.mass));
-    json_object_set_new_nocheck(in, "energy", api_real(c, k.energy));
-    json_object_set_new_nocheck(in, "kinetic_energy", api_real(c, k.kinetic));
-    json_object_set_new_nocheck(in, "momentum", api_real(c, k.momentum));
-    struct mech_boost pb;
-    if (k.mass > 0 && mech_kin_motion_boost(&k, mech_vec3_make(0, 0, 1), &pb, NULL) == MECH_OK) {
-        json_object_set_new_nocheck(in, "gamma", api_real(c, pb.gamma));
-        json_object_set_new_nocheck(in, "beta", api_real(c, pb.beta));
-        json_object_set_new_nocheck(in, "rapidity", api_real(c, pb.rapidity));
-    }
-    json_object_set_new_nocheck(res, "projectile", in);
-    json_object_set_new_nocheck(res, "target_mass", api_real(c, m2));
-    json_object_set_new_nocheck(res, "s", api_real(c, o.s));
-    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, o.sqrt_s));
-    json_object_set_new_nocheck(res, "t", api_real(c, o.t));
-    json_object_set_new_nocheck(res, "u", api_real(c, o.u));
-    json_object_set_new_nocheck(res, "momentum_transfer", api_real(c, o.momentum_transfer));
-
-    json_object_set_new_nocheck(vel, "beta", api_real(c, o.cm.beta));
-    json_object_set_new_nocheck(vel, "gamma", api_real(c, o.cm.gamma));
-    json_object_set_new_nocheck(vel, "gamma_minus_one", api_real(c, o.cm.gamma_minus_one));
-    json_object_set_new_nocheck(vel, "beta_gamma", api_real(c, o.cm.beta_gamma));
-    json_object_set_new_nocheck(vel, "rapidity", api_real(c, o.cm.rapidity));
-    json_object_set_new_nocheck(vel, "one_minus_beta", api_real(c, o.cm.one_minus_beta));
-    json_object_set_new_nocheck(cm, "velocity", vel);
-    json_object_set_new_nocheck(cm, "momentum", api_real(c, o.cm_momentum));
-    json_object_set_new_nocheck(cm, "energies", api_reals(c, o.cm_energy, 2));
-    json_object_set_new_nocheck(cm, "kinetic_energies", api_reals(c, o.cm_kinetic, 2));
-    json_object_set_new_nocheck(cm, "angle", api_real(c, o.cm_angle));
-    json_object_set_new_nocheck(cm, "angle_deg", deg_of(c, o.cm_angle));
-    json_object_set_new_nocheck(cm, "recoil_angle", api_real(c, MECH_PI - o.cm_angle));
-    json_object_set_new_nocheck(cm, "recoil_angle_deg", api_real(c, 180.0 - o.cm_angle * (180.0 / MECH_PI)));
-    json_object_set_new_nocheck(res, "cm", cm);
-
-    json_object_set_new_nocheck(lab, "projectile", lab_json(c, &o.projectile));
-    json_object_set_new_nocheck(lab, "recoil", lab_json(c, &o.recoil));
-    json_object_set_new_nocheck(lab, "opening_angle", api_real(c, o.opening_angle));
-    json_object_set_new_nocheck(lab, "opening_angle_deg", deg_of(c, o.opening_angle));
+    json_object_set_new_nocheck(res, "projectile", projectile_json(c, &q, &a));
+    json_object_set_new_nocheck(res, "target_mass", api_real(c, q.target_mass));
+    json_object_set_new_nocheck(res, "s", api_real(c, o->s));
+    json_object_set_new_nocheck(res, "sqrt_s", api_real(c, o->sqrt_s));
+    json_object_set_new_nocheck(res, "t", api_real(c, o->t));
+    json_object_set_new_nocheck(res, "u", api_real(c, o->u));
+    json_object_set_new_nocheck(res, "momentum_transfer", api_real(c, o->momentum_transfer));
+    json_object_set_new_nocheck(res, "cm", cm_json(c, o));
+    json_object_set_new_nocheck(lab, "projectile", lab_json(c, &o->projectile));
+    json_object_set_new_nocheck(lab, "recoil", lab_json(c, &o->recoil));
+    json_object_set_new_nocheck(lab, "opening_angle", api_real(c, o->opening_angle));
+    json_object_set_new_nocheck(lab, "opening_angle_deg", deg_of(c, o->opening_angle));
     json_object_set_new_nocheck(res, "lab", lab);
-    json_object_set_new_nocheck(res, "velocity_ratio", api_real(c, o.velocity_ratio));
+    json_object_set_new_nocheck(res, "velocity_ratio", api_real(c, o->velocity_ratio));
     json_object_set_new_nocheck(res, "max_lab_angle",
-                                o.has_max_angle ? api_real(c, o.max_angle) : json_null());
+                                o->has_max_angle ? api_real(c, o->max_angle) : json_null());
     json_object_set_new_nocheck(res, "max_lab_angle_deg",
-                                o.has_max_angle ? deg_of(c, o.max_angle) : json_null());
-    json_object_set_new_nocheck(sol, "count", json_integer((json_int_t)o.n_solutions));
-    json_object_set_new_nocheck(sol, "branch",
-                                json_integer(branch < (int)o.n_solutions ? branch : 0));
-    json_object_set_new_nocheck(sol, "cm_angles", api_reals(c, o.cm_angle_solutions, o.n_solutions));
-    double degs[2] = {o.cm_angle_solutions[0] * (180.0 / MECH_PI), o.cm_angle_solutions[1] * (180.0 / MECH_PI)};
-    json_object_set_new_nocheck(sol, "cm_angles_deg", api_reals(c, degs, o.n_solutions));
-    json_object_set_new_nocheck(res, "solutions", sol);
+                                o->has_max_angle ? deg_of(c, o->max_angle) : json_null());
+    json_object_set_new_nocheck(res, "solutions", solutions_json(c, &a));
     return res;
 }

@@ -1,14 +1,13 @@
 /* ep_relativity_rocket.c — POST /v1/relativity/rocket: the relativistic
  * rocket's mass ratio for a final speed or rapidity (or the speed a mass
- * ratio gives), beside Tsiolkovsky's, labelled. JSON <-> core only; the
- * physics is core/rocket.c (the speed forms go through core/particle_state.c). */
+ * ratio gives), beside Tsiolkovsky's, labelled. What it computes is one
+ * call, mech_rocket_answer() (core/relativity/rocket_answer.c); this file
+ * reads the request and encodes the answer. */
 #include <math.h>
 #include <stdio.h>
-#include <string.h>
 
 #include "endpoint.h"
-#include "mech/particle_state.h"
-#include "mech/rocket.h"
+#include "mech/rocket_answer.h"
 
 static const struct {
     const char *key;
@@ -29,14 +28,19 @@ static json_t *real_or_null(struct api_call *c, double x)
     return isfinite(x) ? api_real(c, x) : json_null();
 }
 
-json_t *api_op_relativity_rocket(struct api_call *c, const json_t *body)
+/* The request as the core takes it: the exhaust (exhaust_beta or
+ * exhaust_speed; neither: a photon rocket, the description's default 1),
+ * and the final speed in exactly one form or a mass_ratio. 0 after
+ * recording the error. */
+static int read_request(struct api_call *c, const json_t *body, struct mech_rocket_request *q)
 {
     const json_t *eb = json_object_get(body, "exhaust_beta"), *es = json_object_get(body, "exhaust_speed");
     if (eb && es) {
         api_call_invalid(c, "/exhaust_speed", "give exhaust_beta or exhaust_speed, not both");
-        return NULL;
+        return 0;
     }
-    const double be = eb ? json_number_value(eb) : es ? json_number_value(es) / MECH_PARTICLE_STATE_C : 1.0;
+    q->exhaust = eb ? MECH_ROCKET_EXHAUST_BETA : es ? MECH_ROCKET_EXHAUST_SPEED : MECH_ROCKET_EXHAUST_PHOTON;
+    q->exhaust_value = json_number_value(eb ? eb : es);
     size_t which = N_FORMS;
     const json_t *mr = json_object_get(body, "mass_ratio");
     for (size_t i = 0; i < N_FORMS; i++) {
@@ -47,55 +51,58 @@ json_t *api_op_relativity_rocket(struct api_call *c, const json_t *body)
             api_call_invalid(c, ptr, "give the final speed in exactly one form, or a "
                                      "mass_ratio (%s was given too)",
                              mr ? "mass_ratio" : forms[which].key);
-            return NULL;
+            return 0;
         }
         which = i;
     }
     if (which == N_FORMS && !mr) {
         api_call_invalid(c, "", "give the final speed (beta, speed, gamma, gamma_minus_one, "
                                 "one_minus_beta, rapidity or beta_gamma) or a mass_ratio");
-        return NULL;
+        return 0;
     }
+    q->has_mass_ratio = mr != NULL;
+    q->mass_ratio = json_number_value(mr);
+    if (!mr) {
+        q->given = forms[which].given;
+        q->value = api_number_of(body, forms[which].key);
+    }
+    return 1;
+}
+
+/* "final": the speed reached, in every form. */
+static json_t *final_json(struct api_call *c, const struct mech_particle_state *s)
+{
+    json_t *fin = json_object();
+    json_object_set_new_nocheck(fin, "beta", api_real(c, s->beta));
+    json_object_set_new_nocheck(fin, "one_minus_beta", api_real(c, s->one_minus_beta));
+    json_object_set_new_nocheck(fin, "gamma", api_real(c, s->gamma));
+    json_object_set_new_nocheck(fin, "gamma_minus_one", api_real(c, s->gamma_minus_one));
+    json_object_set_new_nocheck(fin, "rapidity", api_real(c, s->rapidity));
+    json_object_set_new_nocheck(fin, "beta_gamma", api_real(c, s->beta_gamma));
+    json_object_set_new_nocheck(fin, "speed", api_real(c, s->speed));
+    return fin;
+}
+
+json_t *api_op_relativity_rocket(struct api_call *c, const json_t *body)
+{
+    struct mech_rocket_request q = {0};
+    if (!read_request(c, body, &q)) return NULL;
+    struct mech_rocket_answer a;
     struct mech_error e;
     mech_error_clear(&e);
-    enum mech_status st;
-    struct mech_particle_state s;
-    if (mr) {
-        double eta;
-        st = mech_rocket_rapidity(json_number_value(mr), be, &eta, &e);
-        if (st == MECH_OK) st = mech_particle_state_from(1.0, MECH_PARTICLE_GIVEN_RAPIDITY, eta, &s, &e);
-        if (st != MECH_OK && !strcmp(e.param, "rapidity")) snprintf(e.param, sizeof e.param, "mass_ratio");
-    } else {
-        st = mech_particle_state_from(1.0, forms[which].given, api_number(body, forms[which].key, 0),
-                                      &s, &e);
-    }
-    struct mech_rocket r;
-    if (st == MECH_OK) st = mech_rocket_for_rapidity(s.rapidity, s.beta, be, &r, &e);
-    if (st != MECH_OK) {
-        if (es && !strcmp(e.param, "exhaust_beta")) snprintf(e.param, sizeof e.param, "exhaust_speed");
-        return api_call_fail_core(c, st, &e, "");
-    }
-    json_t *out = json_object(), *fin = json_object(), *nw = json_object();
-    if (!out || !fin || !nw) {
-        json_decref(out), json_decref(fin), json_decref(nw);
-        return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
-    }
-    json_object_set_new_nocheck(fin, "beta", api_real(c, s.beta));
-    json_object_set_new_nocheck(fin, "one_minus_beta", api_real(c, s.one_minus_beta));
-    json_object_set_new_nocheck(fin, "gamma", api_real(c, s.gamma));
-    json_object_set_new_nocheck(fin, "gamma_minus_one", api_real(c, s.gamma_minus_one));
-    json_object_set_new_nocheck(fin, "rapidity", api_real(c, s.rapidity));
-    json_object_set_new_nocheck(fin, "beta_gamma", api_real(c, s.beta_gamma));
-    json_object_set_new_nocheck(fin, "speed", api_real(c, s.speed));
-    json_object_set_new_nocheck(out, "final", fin);
-    json_object_set_new_nocheck(out, "exhaust_beta", api_real(c, be));
-    json_object_set_new_nocheck(out, "mass_ratio", real_or_null(c, r.mass_ratio));
-    json_object_set_new_nocheck(out, "log_mass_ratio", api_real(c, r.log_mass_ratio));
-    json_object_set_new_nocheck(out, "fuel_fraction", api_real(c, r.fuel_fraction));
+    enum mech_status st = mech_rocket_answer(&q, &a, &e);
+    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    const struct mech_rocket *r = &a.rocket;
+    json_t *out = json_object(), *nw = json_object();
+    json_object_set_new_nocheck(out, "final", final_json(c, &a.final));
+    json_object_set_new_nocheck(out, "exhaust_beta", api_real(c, a.exhaust_beta));
+    json_object_set_new_nocheck(out, "mass_ratio", real_or_null(c, r->mass_ratio));
+    json_object_set_new_nocheck(out, "log_mass_ratio", api_real(c, r->log_mass_ratio));
+    json_object_set_new_nocheck(out, "fuel_fraction", api_real(c, r->fuel_fraction));
     json_object_set_new_nocheck(nw, "formula", json_string("m_i/m_f = exp(v/u) (Tsiolkovsky)"));
-    json_object_set_new_nocheck(nw, "mass_ratio", real_or_null(c, r.newtonian_mass_ratio));
-    json_object_set_new_nocheck(nw, "log_mass_ratio", api_real(c, r.newtonian_log_mass_ratio));
-    json_object_set_new_nocheck(nw, "relative_error", api_real(c, r.newtonian_rel_error));
+    json_object_set_new_nocheck(nw, "mass_ratio", real_or_null(c, r->newtonian_mass_ratio));
+    json_object_set_new_nocheck(nw, "log_mass_ratio", api_real(c, r->newtonian_log_mass_ratio));
+    json_object_set_new_nocheck(nw, "relative_error", api_real(c, r->newtonian_rel_error));
     json_object_set_new_nocheck(
         nw, "label",
         json_string("approximation: the non-relativistic rocket equation, beside the exact "
@@ -103,4 +110,3 @@ json_t *api_op_relativity_rocket(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(out, "newtonian", nw);
     return out;
 }
-
