@@ -34,23 +34,23 @@ static json_t *quantity(struct api_call *c, double initial, double final, double
 }
 
 /* The request (schema-validated: I1, I3, mass, distance, theta, t_end
- * required; g and samples defaulted by the schema; angles and rates 0 when
- * absent, as their descriptions say). */
+ * required; g, samples, the angles phi, psi and the rates theta_dot,
+ * phi_dot, psi_dot defaulted by the schema). */
 static void read_problem(const json_t *body, struct mech_top_problem *p)
 {
     memset(p, 0, sizeof *p);
-    p->I1 = api_number(body, "I1", 0);
-    p->I3 = api_number(body, "I3", 0);
-    p->mass = api_number(body, "mass", 0);
-    p->distance = api_number(body, "distance", 0);
+    p->I1 = api_number_of(body, "I1");
+    p->I3 = api_number_of(body, "I3");
+    p->mass = api_number_of(body, "mass");
+    p->distance = api_number_of(body, "distance");
     p->g = api_number_of(body, "g");
-    p->theta = api_number(body, "theta", 0);
-    p->phi = api_number(body, "phi", 0);
-    p->psi = api_number(body, "psi", 0);
-    p->theta_dot = api_number(body, "theta_dot", 0);
-    p->phi_dot = api_number(body, "phi_dot", 0);
-    p->psi_dot = api_number(body, "psi_dot", 0);
-    p->t_end = api_number(body, "t_end", 1);
+    p->theta = api_number_of(body, "theta");
+    p->phi = api_number_of(body, "phi");
+    p->psi = api_number_of(body, "psi");
+    p->theta_dot = api_number_of(body, "theta_dot");
+    p->phi_dot = api_number_of(body, "phi_dot");
+    p->psi_dot = api_number_of(body, "psi_dot");
+    p->t_end = api_number_of(body, "t_end");
     p->samples = (size_t)api_number_of(body, "samples");
 }
 
