@@ -236,11 +236,15 @@ enum mech_status mech_kin_motion_boost(const struct mech_kin_motion *k, struct m
         b.direction = mech_vec3_make(1, 0, 0);
     }
     const double m = k->mass, e = k->energy, p = k->momentum;
-    b.gamma = e / m;
     b.gamma_minus_one = k->kinetic / m;
     b.beta_gamma = p / m;
-    b.beta = p / e;
     b.one_minus_beta = (m / e) * (m / (e + p)); /* (E − p)/E = m²/(E(E + p)) */
+    /* near c, p/E may round above 1 (and E/m below 1 near rest): then from
+     * the accurate 1 − β and γ − 1, so β <= 1 and γ >= 1 */
+    b.beta = p / e;
+    if (b.beta > 1.0) b.beta = 1.0 - b.one_minus_beta;
+    b.gamma = e / m;
+    if (b.gamma < 1.0) b.gamma = 1.0 + b.gamma_minus_one;
     b.exp_rapidity = (e + p) / m;
     b.exp_neg_rapidity = m / (e + p);
     b.rapidity = log1p(b.beta_gamma + b.gamma_minus_one); /* e^η = γ + βγ */
@@ -354,12 +358,16 @@ void mech_kin_system_finish(struct mech_kin_system *o)
         return;
     }
     /* γ = E/M; γ − 1 = (E² − M²)/(M(E + M)) = P²/(M(E + M)); 1 − β = M²/(E(E + P)). */
-    o->gamma = e / m;
     o->gamma_minus_one = (p / m) * (p / (e + m));
     o->beta_gamma = p / m;
     o->one_minus_beta = (m / e) * (m / (e + p));
     o->rapidity = log1p(o->beta_gamma + o->gamma_minus_one);
-    o->beta = mech_vec3_scale(o->momentum, 1.0 / e);
+    /* E/M and P/E round across 1 when the system is nearly at rest or
+     * nearly lightlike: from γ − 1 and 1 − β there, so γ >= 1 and |β| <= 1 */
+    o->gamma = e / m;
+    if (o->gamma < 1.0) o->gamma = 1.0 + o->gamma_minus_one;
+    if (o->one_minus_beta > 1.0) o->one_minus_beta = 1.0 - p / e;
+    o->beta = mech_vec3_scale(o->momentum, p > e ? (1.0 - o->one_minus_beta) / p : 1.0 / e);
 }
 
 enum mech_status mech_kin_invariant_mass(const struct mech_kin_particle *ps, size_t n,

@@ -216,6 +216,35 @@ static void test_neutron(void)
 
 /* Invariant mass: two photons at angle θ have M = 2 sqrt(E1E2) sin(θ/2),
  * exact even at θ = 1e-9 (the naive E² − p² is all round-off there). */
+/* Rounding never puts a massive particle at or beyond c, nor a system below
+ * rest: the LHC beam seen from a proton at rest (sqrt(s) = 14 TeV: p/E rounds
+ * to 1 + 2^-52 although 1 - beta = 4e-17 is exact enough) keeps beta <= 1,
+ * equal to 1 - (1 - beta) rounded; a system whose E/M rounds below 1 keeps
+ * gamma = 1 + (gamma - 1) >= 1 and 1 - beta <= 1. */
+static void test_bounds_under_rounding(void)
+{
+    const double sqrt_s = 14e6; /* MeV */
+    const double e_beam = (sqrt_s * sqrt_s - 2 * M_P * M_P) / (2 * M_P);
+    struct mech_kin_motion k;
+    struct mech_boost b;
+    CHECK_EQ_INT(mech_kin_motion_from_energy(M_P, e_beam, &k, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_motion_boost(&k, mech_vec3_make(0, 0, 1), &b, NULL), MECH_OK);
+    CHECK(b.beta <= 1.0);
+    CHECK(b.beta == 1.0 - b.one_minus_beta);
+    /* 1 - beta = m^2/(E(E + p)) ~ 1/(2 gamma^2) */
+    CHECK_CLOSE(b.one_minus_beta, 1.0 / (2 * b.gamma * b.gamma), 1e-12, 0);
+    struct mech_budget bud = mech_budget_make(1000, 3600.0);
+    const double a4[4] = {1.0, 0, 0, 1.0000000000000002}, b4[4] = {2.0, 0, 0, -1.0};
+    struct mech_kin_particle ps[2];
+    int cl;
+    CHECK_EQ_INT(mech_kin_particle_from_four(a4, &ps[0], &cl, NULL), MECH_OK);
+    CHECK_EQ_INT(mech_kin_particle_from_four(b4, &ps[1], &cl, NULL), MECH_OK);
+    struct mech_kin_system s;
+    CHECK_EQ_INT(mech_kin_invariant_mass(ps, 2, &bud, &s, NULL), MECH_OK);
+    CHECK(s.gamma >= 1.0 && s.gamma == 1.0 + s.gamma_minus_one);
+    CHECK(s.one_minus_beta <= 1.0 && mech_vec3_norm(s.beta) <= 1.0);
+}
+
 static void test_invariant_mass(void)
 {
     struct mech_budget bud = mech_budget_make(1000, 10.0);
@@ -550,6 +579,7 @@ int main(void)
     test_compton();
     test_collisions();
     test_momentum_difference();
+    test_bounds_under_rounding();
     printf("worst relative errors: invariant mass %.3g, decays %.3g, Compton %.3g, "
            "collisions %.3g\n",
            worst_invariant, worst_decay, worst_compton, worst_collision);
