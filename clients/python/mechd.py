@@ -442,11 +442,11 @@ class _Operations:
             distance (required): m, tip to centre of mass (h)
             g: m/s^2, along -z of space; default 9.80665
             theta (required): rad, tilt of the symmetry axis from vertical (0: upright)
-            phi: rad, azimuth of the line of nodes, default 0
-            psi: rad, spin angle, default 0
-            theta_dot: rad/s, default 0
-            phi_dot: rad/s, precession rate, default 0
-            psi_dot: rad/s, spin rate, default 0
+            phi: rad, azimuth of the line of nodes; default 0
+            psi: rad, spin angle; default 0
+            theta_dot: rad/s, nutation rate; default 0
+            phi_dot: rad/s, precession rate; default 0
+            psi_dot: rad/s, spin rate; default 0
             t_end (required): s
             samples: integer >= 2, <= 100000; default 101
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
