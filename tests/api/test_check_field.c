@@ -236,7 +236,17 @@ static void all_routes(void)
     CHECK(api_check_field("/v1/relativity/force", "/acceleration", &kind, &unit) == 1);
     CHECK(kind == API_KIND_VECTOR && same_str(unit, "m/s^2"));
     CHECK(api_check_field("/v1/relativity/doppler", "/angle_observer_frame_deg", &kind, &unit) == 1);
-    CHECK(kind == API_KIND_ANGLE && same_str(unit, "deg"));
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "deg")); /* a physical angle, not an orientation */
+    CHECK(api_check_field("/v1/relativity/kinematics/elastic", "/t", &kind, &unit) == 1);
+    CHECK(same_str(unit, "{/energy_unit}^2")); /* Mandelstam t */
+    CHECK(api_check_field("/v1/small-oscillations", "/modes/1/period", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "s"));
+    CHECK(api_check_field("/v1/hamiltonian/phase-area", "/action", &kind, &unit) == 1);
+    CHECK(same_str(unit, "J s"));
+    CHECK(api_check_field("/v1/scenes/cannonball", "/numerical/right", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_NUMBER && same_str(unit, "m"));
+    CHECK(api_check_field("/v1/scenes/rotating-table", "/rotating_exact/4", &kind, &unit) == 1);
+    CHECK(kind == API_KIND_VECTOR && same_str(unit, "m"));
     CHECK(api_check_field("/v1/relativity/worldline", "/total/distance", &kind, &unit) == 1);
     CHECK(same_str(unit, "{/units/length}")); /* m or ly, as the request chose */
     CHECK(api_check_field("/v1/continuum/string", "/modes/2/frequency", &kind, &unit) == 1);
@@ -305,6 +315,7 @@ static void templates_and_units(void)
     CHECK(same_str(api_check_unit_expand("{/energy_unit}/c", ans), "GeV/c"));
     CHECK(same_str(api_check_unit_expand("{/energy_unit}/c^2", ans), "GeV/c^2"));
     CHECK(same_str(api_check_unit_expand("{/energy_unit}", ans), "GeV"));
+    CHECK(same_str(api_check_unit_expand("{/energy_unit}^2", ans), "GeV^2"));
     CHECK(same_str(api_check_unit_expand("{/deep/u}", ans), "keV"));
     CHECK(same_str(api_check_unit_expand("kg m^2", ans), "kg m^2"));
     CHECK(api_check_unit_expand("{/n}", ans) == NULL);          /* not a string */
@@ -334,9 +345,18 @@ static void templates_and_units(void)
     CHECK(!strcmp(api_unit_find("GeV/c^2")->dim, api_unit_find("kg")->dim));
     CHECK(!strcmp(api_unit_find("TeV/c")->dim, api_unit_find("kg m/s")->dim));
     CHECK(!strcmp(api_unit_find("mrad")->dim, api_unit_find("deg")->dim));
+    /* squared energies (Mandelstam s, t, u): 1 GeV^2 = (1.602176634e-10 J)^2, and
+     * 1 GeV^2 is 1e6 MeV^2, no energy and no mass */
+    CHECK_CLOSE(api_unit_find("GeV^2")->factor, 2.566969966535569956e-20, 1e-15, 0); /* exact */
+    CHECK_CLOSE(api_unit_find("GeV^2")->factor / api_unit_find("MeV^2")->factor, 1e6, 1e-15, 0);
+    CHECK_CLOSE(api_unit_find("TeV^2")->factor, 1e24 * EV * EV, 1e-15, 0);
+    CHECK(!strcmp(api_unit_find("eV^2")->dim, api_unit_find("keV^2")->dim));
+    CHECK(strcmp(api_unit_find("eV^2")->dim, api_unit_find("eV")->dim) != 0);
+    CHECK(strcmp(api_unit_find("eV^2")->dim, api_unit_find("eV/c^2")->dim) != 0);
     /* the message list names every unit of the table */
     static const char *const added[] = {"TeV", "mrad", "eV/c", "keV/c", "TeV/c", "eV/c^2",
-                                        "keV/c^2", "MeV/c^2", "GeV/c^2", "TeV/c^2"};
+                                        "keV/c^2", "MeV/c^2", "GeV/c^2", "TeV/c^2",
+                                        "eV^2",    "keV^2", "MeV^2", "GeV^2", "TeV^2"};
     for (size_t i = 0; i < sizeof added / sizeof added[0]; i++) {
         char needle[32];
         snprintf(needle, sizeof needle, " %s,", added[i]);
