@@ -237,6 +237,9 @@ static void all_routes(void)
     CHECK(kind == API_KIND_VECTOR && same_str(unit, "m/s^2"));
     CHECK(api_check_field("/v1/relativity/doppler", "/angle_observer_frame_deg", &kind, &unit) == 1);
     CHECK(kind == API_KIND_NUMBER && same_str(unit, "deg")); /* a physical angle, not an orientation */
+    CHECK(api_check_field("/v1/relativity/kinematics/collision", "/center_of_momentum/beta",
+                          &kind, &unit) == 1);
+    CHECK(kind == API_KIND_VECTOR && same_str(unit, "1")); /* v/c: dimensionless */
     CHECK(api_check_field("/v1/relativity/kinematics/elastic", "/t", &kind, &unit) == 1);
     CHECK(same_str(unit, "{/energy_unit}^2")); /* Mandelstam t */
     CHECK(api_check_field("/v1/small-oscillations", "/modes/1/period", &kind, &unit) == 1);
