@@ -100,6 +100,11 @@ static const struct api_unit units[] = {
     {"MeV/c^2", 1e6 * EV / (MECH_C * MECH_C), "M"},
     {"GeV/c^2", 1e9 * EV / (MECH_C * MECH_C), "M"},
     {"TeV/c^2", 1e12 * EV / (MECH_C * MECH_C), "M"},
+    {"eV^2", EV * EV, "E2"}, /* Mandelstam s, t, u in natural units (c = 1) */
+    {"keV^2", (1e3 * EV) * (1e3 * EV), "E2"},
+    {"MeV^2", (1e6 * EV) * (1e6 * EV), "E2"},
+    {"GeV^2", (1e9 * EV) * (1e9 * EV), "E2"},
+    {"TeV^2", (1e12 * EV) * (1e12 * EV), "E2"},
     {"N", 1, "F"},
     {"kN", 1e3, "F"},
     {"N m", 1, "torque"},
@@ -111,7 +116,8 @@ const char api_unit_list[] =
     "1, m, km, cm, mm, um, nm, au, ly, pc, s, ms, us, ns, min, h, day, yr, kg, g, t, J, kJ, MJ, "
     "erg, eV, keV, MeV, GeV, TeV, rad, deg, rev, arcmin, arcsec, mrad, m/s, km/s, km/h, cm/s, "
     "m/s^2, rad/s, deg/s, rpm, rev/s, Hz, kHz, kg m^2, g cm^2, kg m^2/s, J s, kg m/s, eV/c, keV/c, "
-    "MeV/c, GeV/c, TeV/c, eV/c^2, keV/c^2, MeV/c^2, GeV/c^2, TeV/c^2, N, kN, N m, W, kW";
+    "MeV/c, GeV/c, TeV/c, eV/c^2, keV/c^2, MeV/c^2, GeV/c^2, TeV/c^2, eV^2, keV^2, MeV^2, GeV^2, "
+    "TeV^2, N, kN, N m, W, kW";
 
 const struct api_unit *api_unit_find(const char *name)
 {
