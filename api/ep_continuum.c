@@ -37,7 +37,7 @@ json_t *api_op_continuum_string(struct api_call *c, const json_t *body)
         api_call_invalid(c, "", "give the string's linear_density (kg/m) or its mass (kg)");
         return NULL;
     }
-    const double L = api_number(body, "length", 1), T = api_number(body, "tension", 1);
+    const double L = api_number_of(body, "length"), T = api_number_of(body, "tension");
     const double mu = mu_j ? json_number_value(mu_j) : json_number_value(m_j) / L;
     const int nm = (int)api_number_of(body, "modes");
     double cw;

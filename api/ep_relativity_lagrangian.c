@@ -11,16 +11,17 @@
 json_t *api_op_relativity_lagrangian(struct api_call *c, const json_t *body)
 {
     const json_t *fj = json_object_get(body, "fields");
-    if (fj && (json_object_get(body, "scalar_potential") || json_object_get(body, "vector_potential"))) {
+    /* given, not defaulted: the potentials default to 0 */
+    if (fj && (api_call_given(c, "/scalar_potential") || api_call_given(c, "/vector_potential"))) {
         api_call_invalid(c, "/fields", "give potentials or uniform fields, not both");
         return NULL;
     }
     struct mech_boost b;
     if (!api_velocity_parse(c, json_object_get(body, "velocity"), "/velocity", &b)) return NULL;
-    const double m = api_number_of(body, "mass"), q = api_number(body, "charge", 0);
+    const double m = api_number_of(body, "mass"), q = api_number_of(body, "charge");
     const struct mech_vec3 zero = mech_vec3_make(0, 0, 0);
-    double phi = api_number(body, "scalar_potential", 0);
-    struct mech_vec3 a = api_vec3_member(body, "vector_potential", zero);
+    double phi = api_number_of(body, "scalar_potential");
+    struct mech_vec3 a = api_vec3_of(json_object_get(body, "vector_potential"));
     struct mech_vec3 ef = zero, bf = zero;
     if (fj) {
         ef = api_vec3_member(fj, "E", zero);

@@ -681,11 +681,11 @@ class _Operations:
 
         Args:
             mass (required): rest mass m, kg
-            charge: charge q, C; default 0
+            charge: charge q, C (0: a neutral particle, no coupling to the potentials); default 0
             velocity (required): a velocity as exactly one of four forms; give the one that carries the
                     precision you have (near c: rapidity, gamma or one_minus_beta)
-            scalar_potential: phi at the particle, V; default 0
-            vector_potential: A at the particle, T m; default 0
+            scalar_potential: phi at the particle, V (or give uniform fields); default 0
+            vector_potential: A at the particle, T m (or give uniform fields); default [0, 0, 0]
             fields: uniform fields instead of potentials: phi = -E.r, A = (1/2) B x r at position r
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
