@@ -16,6 +16,8 @@
  * check_tree.c, the recommended tolerance in check_evidence.c, the grading
  * and feedback in check_grade.c.
  */
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -299,6 +301,18 @@ static json_t *check_encode(struct api_call *c, const struct check_request *q,
     return out;
 }
 
+/* The factor from the student's unit to the field's, given / field in SI.
+ * Between decimal prefixes it is a power of ten that the two rounded SI
+ * factors miss by an ulp or two (GeV^2 / MeV^2 = 1.0000000000000002e6): then
+ * that power of ten itself, so the answer shows 1e6 and grades with it. */
+static double unit_ratio(double given_si, double field_si)
+{
+    const double r = given_si / field_si;
+    if (!(r > 0) || !isfinite(r)) return r;
+    const double p = pow(10.0, round(log10(r)));
+    return fabs(r - p) <= 4 * DBL_EPSILON * p ? p : r;
+}
+
 json_t *api_op_check(struct api_call *c, const json_t *body)
 {
     struct check_request q;
@@ -314,7 +328,7 @@ json_t *api_op_check(struct api_call *c, const json_t *body)
         memset(&g, 0, sizeof g);
         int defaulted = check_tolerance(q.tol, q.kind, &rec, &g.tol);
         g.kind = q.kind;
-        g.factor = q.su ? q.su->factor / (t.fu ? t.fu->factor : 1) : 1;
+        g.factor = q.su ? unit_ratio(q.su->factor, t.fu ? t.fu->factor : 1) : 1;
         g.wrong_ptrs = json_array();
         if (api_check_grade_field(c, &g, t.want, q.value, t.parent, q.pointer, q.kind_ptr))
             json_decref(g.wrong_ptrs);
