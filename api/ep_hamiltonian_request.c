@@ -270,7 +270,7 @@ json_t *api_ham_selection(struct api_call *c, const struct api_ham_integ *hi)
     } else {
         json_object_set_new_nocheck(sel, "dt", api_real(c, hi->ch.opt.dt));
     }
-    if (hi->ch.chosen) json_object_set_new_nocheck(sel, "target_error", api_real(c, hi->ch.target));
+    if (hi->ch.chosen) json_object_set_new_nocheck(sel, "target_error", api_real(c, hi->ch.mc.target));
     json_object_set_new_nocheck(sel, "reason", json_string(hi->reason));
     return sel;
 }

@@ -370,7 +370,7 @@ json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st =
-        mech_rigid_answer_run(&p, ch.chosen && ch.closed_form, &c->budget, &a, &e);
+        mech_rigid_answer_run(&p, ch.chosen && ch.mc.closed_form, &c->budget, &a, &e);
     json_t *out = NULL;
     if (st == MECH_OK) {
         out = encode_answer(c, &p, &P, inertia, &ch, &a);

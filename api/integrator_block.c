@@ -90,24 +90,18 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         .pilot = hooks->pilot,
         .defaulted = in == NULL,
     };
-    struct mech_method_choice mc;
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_choose_first_order(&fs, target, api_dry_run_requested(c->body),
-                                                  &c->budget, &mc, &e);
+                                                  &c->budget, &out->mc, &e);
     if (st != MECH_OK) {
-        if (mc.pilot_failed) api_call_fail_core(c, st, &e, "");
+        if (out->mc.pilot_failed) api_call_fail_core(c, st, &e, "");
         else api_call_invalid(c, pointer, "%s", e.text);
         return 0;
     }
-    out->sel = mc.sel;
-    out->pilot = mc.pilot;
-    out->closed_form = mc.closed_form;
     out->chosen = 1;
-    out->target = target;
-    out->method = mc.method;
-    out->opt = mc.opt;
-    memcpy(out->reason, mc.reason, sizeof out->reason);
+    out->method = out->mc.method;
+    out->opt = out->mc.opt;
     return 1;
 }
 
@@ -180,19 +174,19 @@ json_t *api_integrator_block_selection_achieved(struct api_call *c,
     if (!sel) return NULL;
     json_object_set_new_nocheck(sel, "requested",
                                 ch->requested ? json_deep_copy(ch->requested) : json_null());
-    if (ch->closed_form)
+    if (ch->mc.closed_form)
         json_object_set_new_nocheck(sel, "method", json_string("closed_form"));
     else
         settings(c, sel, ch);
     if (ch->chosen) {
-        json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->target));
-        json_object_set_new_nocheck(sel, "reason", json_string(ch->reason));
-        api_selection_predictions(c, &ch->sel, sel);
-        if (ch->pilot.considered) json_object_set_new_nocheck(sel, "pilot", pilot_json(c, &ch->pilot));
-        if (cpu_s >= 0.0 && ch->sel.chosen >= 0)
+        json_object_set_new_nocheck(sel, "target_error", api_real(c, ch->mc.target));
+        json_object_set_new_nocheck(sel, "reason", json_string(ch->mc.reason));
+        api_selection_predictions(c, &ch->mc.sel, sel);
+        if (ch->mc.pilot.considered) json_object_set_new_nocheck(sel, "pilot", pilot_json(c, &ch->mc.pilot));
+        if (cpu_s >= 0.0 && ch->mc.sel.chosen >= 0)
             json_object_set_new_nocheck(
                 sel, "achieved",
-                api_selection_achieved(c, &ch->sel.c[ch->sel.chosen], ch->target, error,
+                api_selection_achieved(c, &ch->mc.sel.c[ch->mc.sel.chosen], ch->mc.target, error,
                                        evidence ? evidence
                                                 : "none: this operation has no exact reference "
                                                   "or second run",

@@ -20,6 +20,7 @@
 #include "endpoint.h"
 #include "mech/chooser.h"
 #include "mech/chooser_pilot.h"
+#include "mech/method_choice.h"
 #include "mech/ode.h"
 
 struct api_integrator_choice {
@@ -28,14 +29,10 @@ struct api_integrator_choice {
     const json_t *requested;     /* the block (borrowed) or NULL */
     int chosen;                  /* 1: from a preset / target error / the default */
     const char *accuracy;        /* preset name or NULL */
-    double target;               /* the relative error aimed at (chosen) */
-    char reason[900];
-    struct mech_selection sel;   /* the chooser's candidates (chosen) */
-    int closed_form;             /* 1: the chooser chose the closed form (method/opt
-                                    stay the best integrator's) */
-    struct mech_pilot_report pilot; /* the pilot (sys->pilot given): considered, run or
-                                    unpiloted because a dry run; its steps were taken off
-                                    c->budget.max_steps */
+    struct mech_method_choice mc; /* when chosen: core's choice (mech/method_choice.h):
+                                    target, reason, the chooser's candidates, closed_form
+                                    (method/opt above stay the best integrator's), the
+                                    pilot, whose steps were taken off c->budget.max_steps */
 };
 
 /* What the caller integrates, for messages and for atol. */
