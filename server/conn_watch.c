@@ -187,10 +187,15 @@ static int evict_longest_waiting(struct srv_http *h, const struct srv_conn *fres
 {
     struct srv_conn *victim = NULL;
     long long oldest = 0;
+    /* The list runs newest first and ready_ms has millisecond steps, so
+     * connections accepted in one burst tie: on a tie the later in the list
+     * (accepted earlier) is chosen. Taking the first of a tie evicted the
+     * newest, which, with two I/O threads finishing their accepts out of
+     * order, could be a probe that had just connected. */
     for (struct srv_conn *c = h->conns; c; c = c->next) {
         if (c == fresh || atomic_load(&c->rx) != CONN_RX) continue;
         long long t = atomic_load(&c->ready_ms);
-        if (!victim || t < oldest) {
+        if (!victim || t <= oldest) {
             victim = c;
             oldest = t;
         }
