@@ -68,7 +68,7 @@ let uid = 0;
 // A labelled number (or text/select) control; pointer = the JSON pointer it fills
 // (several, separated by spaces, when one control fills more than one place).
 export function field({label, pointer, value, unit, step = 'any', min, max, type = 'number',
-                       options, id, cls, help}) {
+                       options, id, cls, help, budget}) {
   id = id || 'f' + (++uid);
   const errId = id + '-err';
   let input;
@@ -77,7 +77,7 @@ export function field({label, pointer, value, unit, step = 'any', min, max, type
       options.map(o => el('option', {value: o[0], selected: String(o[0]) === String(value)}, o[1])));
   } else {
     input = el('input', {id, type, value, step: type === 'number' || type === 'range' ? step : undefined,
-      min, max, class: cls, 'data-pointer': pointer, 'aria-describedby': errId,
+      min, max, class: cls, 'data-pointer': pointer, 'aria-describedby': errId, 'data-budget': budget,
       inputmode: type === 'number' ? 'decimal' : undefined});
   }
   const wrap = el('div', {class: 'field'}, el('label', {for: id}, label), input,
@@ -203,22 +203,127 @@ export function curlBox() {
   return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); pyPre.textContent = pythonCommand(path, body); }};
 }
 
+// --- problems in a student's words ------------------------------------------
+// A number as a reader writes it, from the server's 17-digit echo: the shortest
+// form that reads back as the same double ("1.0000000000000001e+300" -> 10³⁰⁰,
+// "148.84600000000001" -> 148.846), large and small ones as m·10ⁿ, thousands
+// grouped (100,000).
+export function shortNum(x) {
+  if (typeof x === 'string') x = Number(x);
+  if (typeof x !== 'number' || !Number.isFinite(x)) return String(x);
+  const s = String(x); // JavaScript's shortest round-trip form
+  const m = /^(-?[\d.]+)e([+-]\d+)$/.exec(s);
+  if (m) return (m[1] === '1' ? '' : m[1] === '-1' ? '−' : m[1].replace('-', '−') + '·') + pow10(Number(m[2]));
+  if (Math.abs(x) >= 1e4 && Number.isInteger(x)) return x.toLocaleString('en-US').replace('-', '−');
+  return s.replace('-', '−');
+}
+// every number in a text in its shortest form
+const NUMBER = /-?\d+(?:\.\d+)?(?:e[+-]?\d+)?/gi;
+export const shortNumbers = (text) => String(text).replace(NUMBER, (t) => /^-?\d{1,4}$/.test(t) ? t : shortNum(t));
+
+// The field's name and unit as the page shows them (its <label>, its unit span).
+function fieldWords(c) {
+  const lab = c && c.id ? document.querySelector(`label[for="${c.id}"]`) : null;
+  const wrap = c && c.closest('.field');
+  const unit = wrap && wrap.querySelector('.unit');
+  return {label: lab ? lab.textContent.trim() : (c && c.getAttribute('aria-label')) || 'this value',
+    unit: unit ? unit.textContent.trim() : '', min: c && c.getAttribute('min'), max: c && c.getAttribute('max')};
+}
+const withUnit = (v, unit) => unit ? `${v} ${unit}`.replace(/ °$/, '°') : v;
+// The allowed range of a control, in words, from its min and max (or the schema's bound in a message).
+function rangeWords(w) {
+  const lo = w.min !== null && w.min !== '' ? shortNum(w.min) : null, hi = w.max !== null && w.max !== '' ? shortNum(w.max) : null;
+  if (lo !== null && hi !== null) return `between ${withUnit(lo, w.unit)} and ${withUnit(hi, w.unit)}`;
+  if (lo !== null) return `at least ${withUnit(lo, w.unit)}`;
+  if (hi !== null) return `at most ${withUnit(hi, w.unit)}`;
+  return '';
+}
+
+// One error's detail in physics words for the control it lands on (c may be
+// null): bounds with the allowed range, an empty field, a name not in a list
+// (the list wraps: it is a <ul> of names, not one long line), the integrator's
+// words (a step size that cannot shrink, a right-hand side that failed),
+// numbers in shortest form. Returns an array of nodes.
+export function plainDetail(detail, c, value) {
+  const d = String(detail || '');
+  const w = fieldWords(c);
+  let m;
+  if ((m = /^must be (>=|>|<=|<) (\S+), got (\S+)$/.exec(d))) {
+    const bound = shortNum(m[2]), got = shortNum(m[3]);
+    // the range: the control's own min and max, the message's bound in place of the side it names
+    const range = rangeWords({...w, ...(m[1] === '>=' ? {min: m[2]} : m[1] === '<=' ? {max: m[2]} : {})});
+    const rule = {'>=': `at least ${withUnit(bound, w.unit)}`, '>': `more than ${withUnit(bound, w.unit)}`,
+      '<=': `at most ${withUnit(bound, w.unit)}`, '<': `less than ${withUnit(bound, w.unit)}`}[m[1]];
+    return [`${w.label} is ${withUnit(got, w.unit)}: it must be ${range && (m[1] === '>=' || m[1] === '<=') ? range : rule}.`];
+  }
+  if ((m = /^must be an? (number|integer|string|object|array)[^,]*, got (null|\S+)$/.exec(d))) {
+    const range = rangeWords(w);
+    if (m[2] === 'null') return [`${w.label} is empty: enter a${m[1] === 'integer' ? ' whole' : ''} number${range ? ' ' + range : ''}.`];
+    return [`${w.label}: enter a${m[1] === 'integer' ? ' whole' : ''} ${m[1] === 'integer' ? 'number' : m[1]}${range ? ' ' + range : ''}.`];
+  }
+  if ((m = /^must be one of \[(.*)/.exec(d))) {
+    const names = [...m[1].matchAll(/"((?:[^"\\]|\\.)*)"/g)].map(x => x[1]);
+    const given = typeof value === 'string' && value ? `“${value}”` : 'That';
+    return [`${given} is not a name this server knows for ${w.label.toLowerCase()}. Known names: `,
+      el('ul', {class: 'names'}, names.map(n => el('li', {}, n)))];
+  }
+  if ((m = /^(\w+): cannot reach the requested tolerance at t = (\S+) s \(step size (\S+) s/.exec(d)))
+    return [`The motion could not be followed past t = ${amount(Number(m[2]), 's')}: to keep the accuracy asked for, the time step ` +
+      `had to shrink to ${amount(Number(m[3]), 's')}, which a computer's numbers cannot resolve. Something happens there too fast to ` +
+      'follow (a collision, a body falling into the centre, a force without bound). Try other starting values, a lower accuracy or a shorter time.'];
+  if ((m = /^(\w+): (?:the right-hand side failed|bad function value) at t = (\S+) s/.exec(d)))
+    return [`The equations of motion could not be evaluated at t = ${amount(Number(m[2]), 's')} (the bodies reach a point where a force is ` +
+      'infinite or undefined). Try other starting values or a shorter time.'];
+  if (/^is required$/.test(d)) return [`${w.label} is needed.`];
+  return [shortNumbers(d)];
+}
+
+// A compute budget or deadline problem on the control that sets the run's
+// length (data-budget on it: "swings", "orbits", …): "100,000 swings is more than
+// this server runs at once (at most about 54,000); try fewer."
+function budgetDetail(prob, c) {
+  const what = c.dataset.budget, v = Number(c.value);
+  const m = /^(\d+) steps needed, the step budget is (\d+)/.exec((prob && prob.detail) || '');
+  const frac = m ? Number(m[2]) / Number(m[1]) : prob && prob.progress && prob.progress.fraction_done;
+  const most = Number.isFinite(v) && frac > 0 && frac < 1 ? Number((v * frac).toPrecision(2)) : null;
+  const too = prob.type === '/problems/deadline-exceeded' ? 'takes longer than this server allows one request' : 'is more than this server runs at once';
+  const k = most ? 10 ** Math.max(0, Math.floor(Math.log10(most)) - 1) : 1; // two figures, rounded down
+  return `${shortNum(v)} ${what} ${too}${most ? ` (at most about ${shortNum(Math.floor(most / k) * k)})` : ''}; try fewer` +
+    (c.form && c.form.querySelector('[data-role=accuracy]') ? ', or a lower accuracy.' : '.');
+}
+
 // Clear every field error of a form and the general problem box.
 export function clearErrors(form, problemBox) {
   for (const c of form.querySelectorAll('[data-pointer]')) c.removeAttribute('aria-invalid');
-  for (const e of form.querySelectorAll('.err')) e.textContent = '';
-  problemBox.textContent = '';
+  for (const e of form.querySelectorAll('.err')) put(e);
+  put(problemBox);
 }
 
 // Place a problem+json next to the fields its errors[].pointer name: the control
 // whose data-pointer equals the pointer or is its longest prefix, else the first
-// control below it; whatever cannot be placed goes to the problem box.
+// control below it; a compute budget or deadline with no pointer goes to the
+// control marked data-budget; whatever cannot be placed goes to the problem box.
+// Every message is put in physics words (plainDetail); focus moves to the first
+// marked control.
 export function showProblem(form, problemBox, status, prob) {
   clearErrors(form, problemBox);
   const controls = [...form.querySelectorAll('[data-pointer]')];
   const left = [];
-  const errors = Array.isArray(prob && prob.errors) ? prob.errors : [];
+  let errors = Array.isArray(prob && prob.errors) ? prob.errors : [];
+  const budgetCtl = form.querySelector('[data-budget]');
+  const budget = prob && (prob.type === '/problems/compute-budget-exceeded' || prob.type === '/problems/deadline-exceeded');
   let first = null;
+  const mark = (c, nodesOf) => {
+    c.setAttribute('aria-invalid', 'true');
+    const box = document.getElementById((c.getAttribute('aria-describedby') || '').split(' ')[0]);
+    if (box) {
+      const ns = nodesOf();
+      const text = ns.map(n => typeof n === 'string' ? n : n.textContent).join('');
+      if (!box.textContent.includes(text)) add(box, box.textContent ? ' ' : null, ns); // one control may fill several places: once
+    }
+    first = first || c;
+  };
+  if (budget && budgetCtl && !errors.some(e => e.pointer)) { mark(budgetCtl, () => [budgetDetail(prob, budgetCtl)]); errors = []; }
   for (const e of errors) {
     const p = e.pointer || '';
     let best = null;
@@ -227,22 +332,33 @@ export function showProblem(form, problemBox, status, prob) {
       if ((p === cp || p.startsWith(cp + '/')) && cp.length > bestLen) { best = c; bestLen = cp.length; }
     if (!best && p) best = controls.find(c => c.dataset.pointer.split(' ').some(cp => cp.startsWith(p + '/'))) || null;
     if (!best) { left.push(e); continue; }
-    best.setAttribute('aria-invalid', 'true');
-    const box = document.getElementById(best.getAttribute('aria-describedby'));
-    // one control may fill several places (both legs' distance): say a message once
-    if (box && !box.textContent.split('; ').includes(e.detail))
-      box.textContent = (box.textContent ? box.textContent + '; ' : '') + e.detail;
-    first = first || best;
+    mark(best, () => plainDetail(e.detail, best, best.value));
   }
-  const head = `${status} ${prob && prob.title ? prob.title : 'Error'}`;
+  const head = status === 422 && first ? 'Not computed' : `${status} ${prob && prob.title ? prob.title : 'Error'}`;
   const hint = status === 401 ? el('p', {}, 'This server needs an access token: ',
     el('button', {type: 'button', class: 'secondary', onclick: () => window.dispatchEvent(new CustomEvent('mechd:token-open'))},
       'Enter the access token')) : null;
-  if (left.length || !errors.length)
-    add(problemBox, el('strong', {}, head + ': '), (prob && prob.detail) || '',
-      left.length ? el('ul', {}, left.map(e => el('li', {}, `${e.pointer || '(body)'}: ${e.detail}`))) : null, hint);
-  else add(problemBox, el('span', {class: 'muted'}, head + ' — see the marked field' + (errors.length > 1 ? 's' : '') + '.'));
+  if (!first && (left.length || !errors.length))
+    add(problemBox, el('strong', {}, head + ': '), plainDetail((prob && prob.detail) || '', null),
+      left.length ? el('ul', {}, left.map(e => el('li', {}, plainDetail(e.detail, null)))) : null, hint);
+  else if (left.length)
+    add(problemBox, el('ul', {}, left.map(e => el('li', {}, plainDetail(e.detail, null)))));
+  else add(problemBox, el('span', {class: 'muted'}, head + ' — see the marked field' + (form.querySelectorAll('[aria-invalid=true]').length > 1 ? 's' : '') + '.'));
   if (first) first.focus();
+}
+
+// The previous answer while an error stands: the column of results, picture
+// and notes dimmed, with "Not updated" over it, so nobody reads it as the
+// answer to the inputs now in the form. staleMark(S, false) takes it away.
+export function staleMark(S, on) {
+  const col = S.results.parentElement;
+  col.classList.toggle('stale', on);
+  const old = col.querySelector(':scope > [data-role=not-updated]');
+  if (old) old.remove();
+  if (on && S.results.childElementCount)
+    col.prepend(el('p', {class: 'not-updated', 'data-role': 'not-updated'},
+      'Not updated: the answer and picture below are for the previous inputs, not for what is in the form now.'));
+  S.form.dataset.stale = on ? 'true' : 'false';
 }
 
 let examplesPromise = null;
@@ -634,7 +750,10 @@ export function runner(S, path, build, show) {
   let ctl = null, endCur = null;
   const run = async () => {
     let body;
-    try { body = build(); } catch (e) { put(S.problem, String(e)); S.form.dataset.state = 'error'; return; }
+    try { body = build(); } catch (e) {
+      if (e && e.problem) { fail(422, e.problem); return; } // the lab's own check of an input, placed like the server's
+      put(S.problem, String(e)); S.form.dataset.state = 'error'; staleMark(S, true); return;
+    }
     const p = typeof path === 'function' ? path() : path;
     S.curl.update(p, body);
     if (ctl) { ctl.abort(); endCur(false); }
@@ -646,11 +765,20 @@ export function runner(S, path, build, show) {
     ctl = null;
     end(r.aborted && cancelled);
     if (r.aborted) { S.form.dataset.state = 'cancelled'; return; }
-    if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
+    if (!r.ok) { fail(r.status, r.body); return; }
     clearErrors(S.form, S.problem);
-    // show() returns false when the answer carries a failure of its own (a batch item)
-    S.form.dataset.state = show(r.body, body) === false ? 'error' : 'done';
+    // show() returns false when the answer carries a failure of its own (a batch
+    // item) that it has said, or {status, problem} to be placed on the fields
+    let out;
+    try { out = show(r.body, body); } catch (e) {
+      out = {status: r.status, problem: {title: 'Not shown', detail: 'This answer could not be drawn by the page (' + e.message + ').'}};
+    }
+    if (out && out.problem) { fail(out.status || 422, out.problem); return; }
+    staleMark(S, out === false);
+    S.form.dataset.state = out === false ? 'error' : 'done';
   };
+  // an error stands: on its field, the previous answer dimmed and labelled "not updated"
+  const fail = (status, prob) => { showProblem(S.form, S.problem, status, prob); staleMark(S, true); S.form.dataset.state = 'error'; };
   S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;
 }

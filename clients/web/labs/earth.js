@@ -199,10 +199,10 @@ export default {
       });
     };
     // Foucault
-    const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat'});
+    const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat', min: -90, max: 90});
     const pL = field({label: 'length', pointer: '/length', value: 67, unit: 'm', id: 'fou-len'});
     const pa = field({label: 'amplitude', pointer: '/release/amplitude_deg', value: 3, unit: '°', id: 'fou-amp'});
-    const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings'});
+    const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings', min: 1, step: 1, budget: 'swings'});
     const fouS = section(main, 'Foucault pendulum', 'The swing plane turns clockwise (northern hemisphere) at ω sin λ. ' +
       'The trace (and the bob when played) is drawn from the measured rate and swing period, with the turn exaggerated so that it shows; the exaggeration is written under it.', [pl, pL, pa, ps], 'Swing', 'fou');
     const fouNotes = notesBox('fou-notes');

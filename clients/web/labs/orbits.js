@@ -1,7 +1,7 @@
 // Orbits lab: the Schwarzschild precession of Mercury and light bending by the
 // Sun (POST /v1/gr/geodesic, timelike and null).
 import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize, pow10, plotTools,
-  costPreview, notesBox, relWords} from '../lib.js';
+  costPreview, notesBox, relWords, amount} from '../lib.js';
 import {player} from '../anim.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
@@ -20,7 +20,7 @@ export default {
       intro: 'A test mass around the Sun in Schwarzschild spacetime: its perihelion advances by about 6πGM/(c²a(1−e²)) per orbit.'});
     const a = field({label: 'semi-major axis', pointer: '/initial/semi_major_axis', value: 57909050000, unit: 'm', id: 'orb-a'});
     const e = field({label: 'eccentricity', pointer: '/initial/eccentricity', value: 0.20563593, id: 'orb-e'});
-    const n = field({label: 'orbits', pointer: '/orbits', value: 3, id: 'orb-n'});
+    const n = field({label: 'orbits', pointer: '/orbits', value: 3, id: 'orb-n', min: 1, budget: 'orbits'});
     add(L.form, examplePicker(['/v1/gr/geodesic'], BUILTIN, (ex) => {
       const r = ex.request;
       if (r.kind === 'null') { // a light ray: the light-bending form below
@@ -79,6 +79,7 @@ export default {
     const orbNotes = notesBox('orb-notes'); L.figure.after(orbNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r) => {
       const p = r.precession;
+      if (!p || r.motion !== 'bound') { cost.after(r); put(L.results, outcome(r, 'orbit')); put(orbNotes.box); last = null; put(plot); return; }
       cost.after(r);
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'advance per orbit (measured)'), num('orb-measured', p.measured_per_orbit, 'rad'),
@@ -128,6 +129,13 @@ export default {
     const lrun = runner(S, '/v1/gr/geodesic', () => ({M: 'sun', kind: 'null', r0: val(lr.input),
       initial: {impact_parameter: val(lb.input)}, samples: 200}), (r) => {
       const d = r.deflection;
+      if (!d || !d.arcsec) { // captured (or any outcome without a deflection): drawn and said, no numbers to compare
+        put(S.results, outcome(r, 'light'));
+        put(lightNotes.box);
+        drawPlot(lplot, () => capturePicture(lplot, r));
+        plotTools(lplot, {name: 'light-bending'});
+        return;
+      }
       put(S.results, el('dl', {class: 'nums'},
         el('dt', {}, 'deflection (measured)'), num('light-measured', d.arcsec.measured, '″'),
         el('dt', {}, 'exact'), num('light-exact', d.arcsec.exact, '″'),
@@ -147,10 +155,51 @@ export default {
   },
 };
 
+// What happened to a geodesic without a deflection or a precession to show
+// (the API's "motion": capture, escape, plunge), said in words a student reads.
+function outcome(r, what) {
+  const GM = r.units && r.units.GM_over_c2, b = r.conserved && r.conserved.impact_parameter;
+  const bc = typeof GM === 'number' ? 3 * Math.sqrt(3) * GM : null; // a photon's critical impact parameter
+  const words = {
+    capture: what === 'light'
+      ? `Captured: the ray falls into the centre and is not bent out again. Its impact parameter b = ${amount(b, 'm')} is below ` +
+        `3√3 GM/c² = ${amount(bc, 'm')}, the photon sphere's critical value, so nothing turns it back. (The Sun is a point mass here: ` +
+        'its real surface, 696,000 km from the centre, would stop any ray with b below that long before.)'
+      : 'Captured: the body falls into the centre.',
+    plunge: 'Plunge: no bound orbit turns at these radii; the body spirals into the centre.',
+    escape: what === 'light' ? 'Escape: the ray leaves without reaching its closest approach.' : 'Escape: the body is not bound and leaves.',
+    scatter: 'Scattered: the path passes and leaves again.'}[r.motion] || `Outcome: ${r.motion}.`;
+  return el('div', {}, el('p', {class: 'outcome', id: what + '-outcome', 'data-motion': r.motion}, el('strong', {}, words.split(':')[0] + ': '),
+    words.slice(words.indexOf(':') + 1).trim()),
+    r.end && typeof r.end.r === 'number' ? el('dl', {class: 'nums'}, el('dt', {}, 'ended at r'), num(what + '-end-r', r.end.r, 'm'),
+      typeof r.end.capture_radius === 'number' ? [el('dt', {}, 'capture radius 2GM/c²'), num(what + '-rcap', r.end.capture_radius, 'm')] : null) : null);
+}
+
+// A capture drawn: the ray coming in at b, the photon sphere (r = 3GM/c²) and
+// the horizon (2GM/c²) to scale with each other, the ray ending on the horizon.
+function capturePicture(root, r) {
+  const [W, H] = plotSize(root, 640, 300); put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const GM = r.units.GM_over_c2, b = r.conserved.impact_parameter, bc = 3 * Math.sqrt(3) * GM;
+  const cx = W * 0.62, cy = H / 2, k = (H * 0.32) / bc; // px per metre: the critical b drawn at a third of the height
+  const yb = cy - Math.min(b, 1.4 * bc) * k, rh = 2 * GM * k;
+  const path = `M 12 ${yb} L ${cx - 2.2 * bc * k} ${yb} Q ${cx - 0.4 * bc * k} ${yb} ${cx - rh * 0.7} ${cy - rh * 0.7}`;
+  add(root, svg('circle', {cx, cy, r: 3 * GM * k, fill: 'none', stroke: '#a65300', 'stroke-dasharray': '5 4'}),
+    svg('circle', {cx, cy, r: rh, fill: '#111'}),
+    svg('line', {x1: 12, y1: cy - bc * k, x2: W - 12, y2: cy - bc * k, stroke: '#999', 'stroke-dasharray': '3 5'}),
+    svg('path', {d: path, fill: 'none', stroke: '#1864ab', 'stroke-width': 3, id: 'light-captured-ray'}),
+    svg('text', {x: 12, y: yb - 8, 'font-size': 14, fill: '#1864ab'}, `b = ${amount(b, 'm')}`),
+    svg('text', {x: 12, y: cy - bc * k + 18, 'font-size': 14, fill: '#444'}, `critical b = 3√3 GM/c² = ${amount(bc, 'm')}`),
+    svg('text', {x: cx + 3 * GM * k + 6, y: cy + 5, 'font-size': 14, fill: '#a65300'}, 'photon sphere'),
+    svg('text', {x: W / 2, y: H - 12, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700, 'text-anchor': 'middle',
+      'data-role': 'outcome'}, 'captured: the light falls in'));
+  root.setAttribute('aria-label', `light ray captured: impact parameter ${amount(b, 'm')} below the critical ${amount(bc, 'm')}`);
+}
+
 // A schematic of the ray: its two asymptotes, the angle between them drawn 30°
 // (the real angle is ~1e-5 rad; the factor is labelled).
 function rayPicture(root, d) {
   const [W, H] = plotSize(root, 640, 300); put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  root.setAttribute('aria-label', 'light ray bent by the Sun (exaggerated)');
   const k = W / 640, shown = Math.PI / 6, cx = W / 2, cy = H / 2 + 30 * k, y0 = cy - 40 * k, L = 300 * k;
   add(root, svg('circle', {cx, cy, r: 34 * k, fill: '#f59f00'}),
     svg('line', {x1: 12, y1: y0, x2: cx, y2: y0, stroke: '#1864ab', 'stroke-width': 3}),

