@@ -2,6 +2,7 @@
 // and the access token of a server started with --token-file (asked for when
 // the server answers 401, kept for this tab's session only).
 import {el, add, getToken, setToken} from './lib.js';
+import {share, parseHash, embedded, embedBar} from './share.js';
 
 // The labs in the course's order: rotations (ch. 0), the rotating table and
 // the tides (ch. 1), … Each lab's module is loaded when it is first shown, so a
@@ -19,7 +20,8 @@ for (const lab of labs)
 
 let showing = 0; // the latest show(): an older one whose module arrives late does not mount
 async function show() {
-  const id = location.hash.slice(1) || labs[0].id;
+  const {id: hashId, params} = parseHash(location.hash); // #lab?state (share.js)
+  const id = hashId || labs[0].id;
   const lab = labs.find(l => l.id === id) || labs[0];
   const me = ++showing;
   for (const a of tabs.querySelectorAll('a'))
@@ -33,8 +35,14 @@ async function show() {
   if (me !== showing) return;
   main.dataset.lab = lab.id;
   mod.mount(main);
+  if (isEmbedded) add(main, embedBar(lab.title));
+  share(main, lab.id, lab.id === id ? params : new URLSearchParams());
 }
+// a hash the page wrote itself (replaceState) fires nothing; one pasted or followed re-mounts the lab
 window.addEventListener('hashchange', () => { show(); main.focus(); });
+// embedded in a course page (?embed=1 or inside a frame): the lab alone, compact
+const isEmbedded = embedded();
+document.body.classList.toggle('embedded', isEmbedded);
 const proj = document.getElementById('projector');
 proj.checked = localStorage.getItem('mechd-projector') === '1';
 document.body.classList.toggle('projector', proj.checked);

@@ -167,6 +167,118 @@ for (const width of [1280, 390]) {
       await page.screenshot({path: path.join(shots, `sim-${tag}-repro-failed.png`)}).catch(() => {});
     } finally { await page.close(); }
   }
+  // --- share and reset -------------------------------------------------------
+  {
+    const page = await newPage(width);
+    try {
+      // β = 0.9 typed: the address bar says so; the copied link opens a page with β = 0.9 and γ = 1/√(1 − 0.81)
+      await page.goto(`${base}/#spacetime`);
+      await settled(page);
+      await page.fill('#st-beta', '0.9');
+      await page.click('#st-submit');
+      await page.waitForFunction(() => Math.abs(Number(document.getElementById('st-gamma').dataset.value) - 2.294) < 1e-3, null, {timeout: 20000});
+      await page.waitForFunction(() => location.hash.includes('st-beta=0.9'), null, {timeout: 5000});
+      check(true, `${tag}: share: the address bar carries β = 0.9 (${page.url()})`);
+      await page.click('[data-role=copy-link]');
+      const link = await page.inputValue('.share-link');
+      check(/#spacetime\?.*st-beta=0\.9/.test(link), `${tag}: share: Copy link gives the lab and β ("${link}")`);
+      const p2 = await newPage(width);
+      await p2.goto(link);
+      await p2.waitForSelector('main[data-restored=done]', {timeout: 20000});
+      await settled(p2);
+      await p2.waitForFunction(() => document.getElementById('st-beta').value === '0.9' &&
+        Math.abs(Number(document.getElementById('st-gamma').dataset.value) - 2.294) < 1e-3, null, {timeout: 20000}).catch(() => {});
+      check(await p2.inputValue('#st-beta') === '0.9', `${tag}: share: the link opens with β = 0.9 (got ${await p2.inputValue('#st-beta')})`);
+      const g = await value(p2, '#st-gamma');
+      check(Math.abs(g - 1 / Math.sqrt(1 - 0.81)) < 1e-12, `${tag}: share: and computes γ(0.9) = 1/√0.19 = 2.2941573… (got ${g})`);
+      await p2.screenshot({path: path.join(shots, `sim-${tag}-shared.png`)});
+      // Reset: the defaults again (β = 0.6, γ = 1.25), the address bar without state
+      await p2.click('[data-role=reset]');
+      await p2.waitForFunction(() => document.getElementById('st-beta') && document.getElementById('st-beta').value === '0.6' &&
+        document.getElementById('st-gamma') && document.getElementById('st-gamma').dataset.value === '1.25', null, {timeout: 20000}).catch(() => {});
+      check(await p2.inputValue('#st-beta') === '0.6' && await value(p2, '#st-gamma') === 1.25 && !p2.url().includes('?'),
+        `${tag}: reset: β back to 0.6, γ = 1.25, no state in the URL (${p2.url()})`);
+      check(p2.errors.length === 0, `${tag}: share: no script errors on the opened link (${p2.errors.join(' | ')})`);
+      await p2.close();
+      // a worked example, the view (the exaggeration drawn) and the time (the player's slider) travel too
+      await page.goto(`${base}/#orbits`);
+      await settled(page);
+      await page.waitForFunction(() => document.querySelector('.examples select').options.length > 2, null, {timeout: 10000});
+      const exIndex = await page.$eval('.examples select', (s) => [...s.options].findIndex((o, i) => /Mercury/.test(o.textContent) && i !== s.selectedIndex));
+      const exTitle = await page.$eval('.examples select', (s, i) => s.options[i].textContent, exIndex);
+      await page.selectOption('.examples select', {index: exIndex});
+      await page.click('.examples button');
+      await settled(page);
+      await page.waitForFunction(() => document.getElementById('orb-exaggerate').options.length > 1, null, {timeout: 20000});
+      const exView = await page.$eval('#orb-exaggerate', (s) => s.options[s.options.length - 2].value);
+      await page.selectOption('#orb-exaggerate', exView);
+      const slider = page.locator('.player [data-role=time]').first();
+      await slider.focus();
+      for (let k = 0; k < 5; k++) await page.keyboard.press('PageUp');
+      await page.keyboard.press('ArrowRight');
+      const tWas = await slider.inputValue();
+      const e0 = await page.getAttribute('#orb-measured', 'data-value');
+      await page.click('[data-role=copy-link]');
+      const link2 = await page.inputValue('.share-link');
+      const p3 = await newPage(width);
+      await p3.goto(link2);
+      await p3.waitForSelector('main[data-restored=done]', {timeout: 30000});
+      const got = await p3.evaluate(() => ({ex: document.querySelector('.examples select').selectedOptions[0].textContent,
+        view: document.getElementById('orb-exaggerate').value, t: document.querySelector('.player [data-role=time]').value,
+        measured: document.getElementById('orb-measured').dataset.value}));
+      check(got.ex === exTitle && got.view === exView && got.t === tWas && got.measured === e0,
+        `${tag}: share: example "${exTitle}", view ×${exView} and time ${tWas} come back (got ${JSON.stringify(got)}; ${link2})`);
+      await p3.close();
+      check(page.errors.length === 0, `${tag}: share: no script errors (${page.errors.join(' | ')})`);
+    } catch (e) {
+      check(false, `${tag}: share: ${e.message.split('\n')[0]}`);
+    } finally { await page.close(); }
+  }
+}
+
+// --- embedding -------------------------------------------------------------------
+// A course page on another origin frames the lab: refused by default, shown
+// (compact) with --frame-ancestors naming that origin.
+{
+  const host = http.createServer((req, res) => {
+    const target = new URL(req.url, 'http://x').searchParams.get('src');
+    res.writeHead(200, {'Content-Type': 'text/html; charset=utf-8'});
+    res.end(`<!doctype html><title>Course page</title><h1>Week 3</h1><iframe id="lab" title="mechd Spacetime lab" width="900" height="700" src="${target}"></iframe>`);
+  });
+  await new Promise((r) => host.listen(0, '127.0.0.1', r));
+  const hostOrigin = `http://127.0.0.1:${host.address().port}`;
+  const allowed = startMechd(['--frame-ancestors', hostOrigin]);
+  const abase = await allowed.url;
+  try {
+    const h0 = await fetch(base + '/'), h1 = await fetch(abase + '/');
+    check(h0.headers.get('x-frame-options') === 'DENY' && /frame-ancestors 'none'/.test(h0.headers.get('content-security-policy')),
+      'embed: by default the page says X-Frame-Options: DENY and frame-ancestors \'none\'');
+    check(h1.headers.get('x-frame-options') === null && h1.headers.get('content-security-policy').includes(`frame-ancestors ${hostOrigin}`),
+      `embed: with --frame-ancestors the CSP names the course site (${h1.headers.get('content-security-policy')})`);
+    const api = await fetch(abase + '/v1');
+    check(/frame-ancestors 'none'/.test(api.headers.get('content-security-policy') || ''), 'embed: the API\'s answers stay unframeable');
+    for (const [what, src, ok] of [['refused without the option', `${base}/#spacetime`, false],
+                                   ['shown with the option', `${abase}/?embed=1#spacetime`, true]]) {
+      const page = await newPage(1280);
+      await page.goto(`${hostOrigin}/?src=${encodeURIComponent(src)}`);
+      await page.waitForTimeout(ok ? 0 : 2500);
+      const frame = page.frame({url: (u) => u.href.startsWith(ok ? abase : base)});
+      const lab = frame ? await frame.waitForSelector(ok ? 'main[data-lab=spacetime] #st-gamma' : 'main[data-lab]', {timeout: ok ? 20000 : 3000}).then(() => true, () => false) : false;
+      check(lab === ok, `embed: ${what} (the lab ${lab ? 'shows' : 'does not show'} in the course page's frame)`);
+      if (ok) {
+        const st = await frame.evaluate(() => ({embedded: document.body.classList.contains('embedded'),
+          header: getComputedStyle(document.querySelector('header')).display, out: !!document.querySelector('.embed-bar a')}));
+        check(st.embedded && st.header === 'none' && st.out, `embed: compact inside the frame (no header, a link out): ${JSON.stringify(st)}`);
+        await page.screenshot({path: path.join(shots, 'sim-embedded.png')});
+      }
+      await page.close();
+    }
+  } catch (e) {
+    check(false, `embed: ${e.message.split('\n')[0]}`);
+  } finally {
+    allowed.proc.kill('SIGTERM');
+    host.close();
+  }
 }
 
 await browser.close();
