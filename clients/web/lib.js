@@ -437,7 +437,9 @@ export function examplePicker(operations, builtin, onLoad, {selected, fits = () 
 // Linear map helper for plots.
 export function scale(d0, d1, r0, r1) {
   const k = (r1 - r0) / ((d1 - d0) || 1);
-  return (x) => r0 + (x - d0) * k;
+  const f = (x) => r0 + (x - d0) * k;
+  f.invert = (y) => d0 + (y - r0) / k; // from the picture back to the units (dragged handles)
+  return f;
 }
 
 // The width in px an <svg class="plot"> is drawn at (its viewBox width): the
@@ -589,7 +591,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
     const ly = below ? height - 8 - 20 * (nLeg - 1 - k) : legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
     if (s.label) add(root, s.dots ? svg('circle', {cx: lx + 9, cy: ly - 5, r: 4, fill: c})
       : svg('line', {x1: lx, y1: ly - 5, x2: lx + 18, y2: ly - 5, stroke: c, 'stroke-width': 3, 'stroke-dasharray': s.dash || null}),
-      svg('text', {x: lx + 24, y: ly, fill: c, 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
+      svg('text', {x: lx + 24, y: ly, fill: textShade(c), 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
   for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b}));
   // hover / touch read-out: the nearest sample's values
@@ -615,6 +617,11 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   };
   root.onpointerleave = () => { dot.setAttribute('visibility', 'hidden'); tip.setAttribute('visibility', 'hidden'); };
 }
+
+// A line colour as text: the palette's orange (3.0:1 on white), green (4.37:1)
+// and amber darkened to at least 4.5:1; the other colours already are.
+const SHADES = {'#e67700': '#a65300', '#2b8a3e': '#1f6f30', '#f59f00': '#a65300', '#f08c00': '#a65300', '#5c940d': '#3b5e08', '#0ca678': '#087055'};
+export const textShade = (c) => SHADES[String(c).toLowerCase()] || c;
 
 // The data of a line plot as CSV: one block per series ("series,x,y" rows),
 // numbers as the API gave them (full precision).
@@ -921,7 +928,8 @@ export function relWords(r) {
 //   difference said in that unit: 'eV' and 1e6 for values in MeV), how (one line: what is compared), note (more words)}.
 // The box carries data-abs and data-rel (finite numbers) for tests.
 export function notesBox(id) {
-  const box = el('section', {class: 'teach', 'data-role': 'teach', id, 'aria-label': 'What the notes say'});
+  // named by its own heading ("What the notes say: §4 … Deflection of Light"), so two boxes in a lab differ
+  const box = el('section', {class: 'teach', 'data-role': 'teach', id, 'aria-labelledby': id + '-h'});
   const update = (s) => {
     let abs = s.abs, rel = s.rel;
     if (typeof s.formulaValue === 'number' && typeof s.apiValue === 'number') {
@@ -940,7 +948,7 @@ export function notesBox(id) {
       : rel < 1e-12 ? `they agree to round-off: ${amount(abs * k, u)}, ${relWords(rel)}`
       : `${what} is ${typeof s.sign === 'number' ? (s.sign > 0 ? 'high' : 'low') + ' by' : 'off by'} ${amount(abs * k, u)}, ${relWords(rel)}`;
     const shown = (x, t) => t !== undefined ? t : fmt(x) + (s.unit && typeof x === 'number' ? ' ' + s.unit : '');
-    put(box, el('h3', {}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
+    put(box, el('h3', {id: id + '-h'}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
       s.inferred ? el('p', {class: 'muted'}, `(The number §${s.section} is read from the notes' contents: the extracted text lost it.)`) : null,
       el('div', {class: 'formula', 'data-role': 'formula'}, s.formula),
       s.how ? el('p', {class: 'muted'}, s.how) : null,

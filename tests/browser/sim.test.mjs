@@ -236,6 +236,185 @@ for (const width of [1280, 390]) {
   }
 }
 
+// --- handles: dragging a physical object, by pointer and by keyboard, changes the answer ---
+// drag(page, sel, dx, dy): press on the handle's centre and move by (dx, dy) CSS px in steps, as a hand does
+async function drag(page, sel, dx, dy) {
+  const h = page.locator(sel);
+  await h.scrollIntoViewIfNeeded();
+  const b = await h.boundingBox();
+  const x = b.x + b.width / 2, y = b.y + b.height / 2;
+  await page.mouse.move(x, y); await page.mouse.down();
+  for (let k = 1; k <= 8; k++) { await page.mouse.move(x + dx * k / 8, y + dy * k / 8); await page.waitForTimeout(25); }
+  await page.mouse.up();
+}
+// the handle's accessible slider: role, a name, a value in words with units
+const sliderOk = (page, sel) => page.$eval(sel, (g) => g.getAttribute('role') === 'slider' && g.tabIndex === 0 &&
+  !!g.getAttribute('aria-label') && /\d/.test(g.getAttribute('aria-valuetext') || '') && g.getAttribute('aria-valuenow') !== null);
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    // Spacetime: event 2 dragged up and left: x′ = γ(x − βct) from the field's new (ct, x), β = 0.6, γ = 1.25
+    await page.goto(`${base}/#spacetime`);
+    await settled(page);
+    check(await sliderOk(page, '#st-event-1'), `${tag}: spacetime: event 2 is a slider with its (ct, x) in words`);
+    const x0 = await page.getAttribute('#st-xp-1', 'data-value');
+    await drag(page, '#st-event-1', -40, -25);
+    await page.waitForFunction((b) => document.getElementById('st-xp-1').dataset.value !== b && !/^1, 1;|; 1, 1;/.test(document.getElementById('st-events').value), x0, {timeout: 20000});
+    await settled(page);
+    const evp = async () => { const e = (await page.inputValue('#st-events')).split(';')[1].split(',').map(Number);
+      return [e, await value(page, '#st-xp-1'), await value(page, '#st-ctp-1')]; };
+    let [e, xp, ctp] = await evp();
+    check(Math.abs(xp - 1.25 * (e[1] - 0.6 * e[0])) < 1e-12 && Math.abs(ctp - 1.25 * (e[0] - 0.6 * e[1])) < 1e-12 && e[0] > 1,
+      `${tag}: spacetime: dragged by pointer to (ct, x) = (${e}), the boost answers x′ = γ(x − βct) = ${xp}, ct′ = ${ctp}`);
+    await page.focus('#st-event-1');
+    for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowRight');
+    await page.waitForFunction((x) => Number(document.getElementById('st-events').value.split(';')[1].split(',')[1]) > x + 0.25, e[1], {timeout: 5000});
+    await settled(page);
+    await page.waitForTimeout(300);
+    const [e2, xp2] = await evp();
+    check(Math.abs(e2[1] - (Math.round(e[1] * 10) / 10 + 0.3)) < 1e-9 && Math.abs(xp2 - 1.25 * (e2[1] - 0.6 * e2[0])) < 1e-12,
+      `${tag}: spacetime: three ArrowRight presses move the event by 0.3 along x (${e[1]} -> ${e2[1]}) and the answer follows (x′ = ${xp2})`);
+    check(await page.evaluate(() => document.activeElement && document.activeElement.id) === 'st-event-1', `${tag}: spacetime: the focus stays on the handle through the redraw`);
+    check(/ct = [\d.]+, x = [\d.]+/.test(await page.getAttribute('#st-event-1', 'aria-valuetext')), `${tag}: spacetime: the handle says where it is`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-drag-event.png`)});
+    // Rotating table: the launch velocity dragged: the puck's start Coriolis force follows (−2mω × v′ at t = 0)
+    await page.goto('about:blank');
+    await page.goto(`${base}/#table`);
+    await settled(page);
+    check(await sliderOk(page, '#table-velocity') && await sliderOk(page, '#table-start'), `${tag}: table: the start and the velocity are sliders`);
+    const c0 = await page.getAttribute('#table-cor', 'data-value');
+    await drag(page, '#table-velocity', 30, 20);
+    await page.waitForFunction((c) => document.getElementById('table-cor') && document.getElementById('table-cor').dataset.value !== c &&
+      document.getElementById('table-experiment').value === 'custom', c0, {timeout: 20000});
+    await settled(page);
+    await page.waitForTimeout(300);
+    // Coriolis at the start, seen from the table: −2m ω ẑ × v′ with v′ = v − ω ẑ × r (m = 1 kg, ω = 1 rad/s)
+    const corOk = async () => {
+      const [rx, ry, ux, uy] = await Promise.all(['#table-px', '#table-py', '#table-vx', '#table-vy'].map(s => page.inputValue(s).then(Number)));
+      const vpx = ux + ry, vpy = uy - rx, want = [2 * vpy, -2 * vpx];
+      const got = (await page.getAttribute('#table-cor', 'data-value')).split(',').map(Number);
+      return [Math.abs(got[0] - want[0]) < 1e-9 && Math.abs(got[1] - want[1]) < 1e-9, got, want, [rx, ry, ux, uy]];
+    };
+    let [ok, got, want, inp] = await corOk();
+    check(ok, `${tag}: table: velocity dragged to (${inp.slice(2)}) m/s: Coriolis at the start ${got} = −2mω×v′ ${want}`);
+    const c1 = await page.getAttribute('#table-cor', 'data-value');
+    await page.focus('#table-start');
+    await page.keyboard.press('ArrowLeft'); await page.keyboard.press('ArrowLeft');
+    await page.waitForFunction((c) => document.getElementById('table-cor').dataset.value !== c, c1, {timeout: 20000});
+    await settled(page);
+    await page.waitForTimeout(300);
+    [ok, got, want, inp] = await corOk();
+    check(ok, `${tag}: table: the start moved by the arrow keys to (${inp.slice(0, 2)}) m: Coriolis ${got} = ${want}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-drag-table.png`)});
+    await axe(page, `${tag}: table with handles`);
+    check(page.errors.length === 0, `${tag}: handles: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: handles: ${e.message.split('\n')[0]}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-handles-failed.png`)}).catch(() => {});
+  } finally { await page.close(); }
+}
+
+// --- the smaller things --------------------------------------------------------
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    // every "What the notes say" box has a name of its own (two boxes in one lab differ)
+    for (const lab of ['orbits', 'particles', 'spacetime', 'earth', 'tops']) {
+      await page.goto('about:blank');
+      await page.goto(`${base}/#${lab}`);
+      await page.waitForFunction(() => [...document.querySelectorAll('main form[data-state]')].length > 0 &&
+        [...document.querySelectorAll('main form[data-state]')].every(f => f.dataset.state !== 'busy') &&
+        document.querySelectorAll('[data-role=teach] h3').length > 0, null, {timeout: 30000});
+      await page.waitForTimeout(300);
+      const names = await page.$$eval('[data-role=teach]', (bs) => bs.filter(b => b.childElementCount).map(b => {
+        const id = b.getAttribute('aria-labelledby'), h = id && document.getElementById(id);
+        return h ? h.textContent : b.getAttribute('aria-label');
+      }));
+      check(names.length > 0 && new Set(names).size === names.length && names.every(n => /^What the notes say: §/.test(n)),
+        `${tag}: ${lab}: each notes box has its own name (${JSON.stringify(names)})`);
+      // legend text on the plots: at least 4.5:1 on white (WCAG relative luminance)
+      const fills = await page.$$eval('svg text.legend', (ts) => ts.map(t => t.getAttribute('fill')));
+      const lum = (hex) => { const v = [1, 3, 5].map(i => parseInt(hex.slice(i, i + 2), 16) / 255)
+        .map(c => c <= 0.03928 ? c / 12.92 : ((c + 0.055) / 1.055) ** 2.4); return 0.2126 * v[0] + 0.7152 * v[1] + 0.0722 * v[2]; };
+      const low = fills.filter(f => /^#[0-9a-f]{6}$/i.test(f) && 1.05 / (lum(f) + 0.05) < 4.5);
+      check(low.length === 0, `${tag}: ${lab}: legend text at 4.5:1 or more on white (below: ${low.join(', ')})`);
+    }
+    if (width < 500) { // the phone's header leaves the lab the first screen
+      await page.goto('about:blank');
+      await page.goto(`${base}/#spacetime`);
+      await page.waitForSelector('main h2');
+      const h = await page.$eval('header', (e) => e.getBoundingClientRect().height);
+      check(h <= 0.2 * 844, `phone: the header takes ${Math.round(h)} px, at most a fifth of the 844 px screen`);
+      check(await wide(page) <= 0, 'phone: the one-row tabs scroll inside the header, not the page');
+      await page.screenshot({path: path.join(shots, 'sim-phone-header.png')});
+    }
+    check(page.errors.length === 0, `${tag}: smaller items: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: smaller items: ${e.message.split('\n')[0]}`);
+  } finally { await page.close(); }
+}
+// 100,000 orbits: 600 samples are 1 per 167 orbits: drawn as dots (no chords), the exaggeration at most a quarter turn over the run
+{
+  const page = await newPage(1280);
+  try {
+    await page.goto(`${base}/#orbits`);
+    await settled(page);
+    await page.fill('#orb-n', '100000');
+    await page.selectOption('#orb-cost-acc', 'draft');
+    await page.click('#orb-submit');
+    await page.waitForFunction(() => document.querySelector('#orb-submit').form.dataset.state === 'done', null, {timeout: 120000});
+    const st = await page.evaluate(() => ({lines: document.querySelectorAll('#orb-plot g.data polyline').length,
+      dots: document.querySelectorAll('#orb-plot g.data circle').length,
+      top: Math.max(...[...document.getElementById('orb-exaggerate').options].map(o => Number(o.value))),
+      advance: Number(document.getElementById('orb-measured').dataset.value)}));
+    // the drawn turn over the run, k δ N, stays under π/2 (δ = 5.0e-7 rad: 10⁶ would be 50 rad, eight turns)
+    check(st.lines === 0 && st.dots >= 600 && st.top * st.advance * 1e5 <= Math.PI / 2,
+      `100,000 orbits: drawn as ${st.dots} dots, no chords (${st.lines} lines), largest exaggeration ×${st.top}: ${(st.top * st.advance * 1e5).toFixed(2)} rad over the run`);
+    await page.locator('#orb-plot').scrollIntoViewIfNeeded();
+    await page.screenshot({path: path.join(shots, 'sim-desktop-100000-orbits.png')});
+  } catch (e) {
+    check(false, `100,000 orbits: ${e.message.split('\n')[0]}`);
+  } finally { await page.close(); }
+}
+
+// --- the token for the browser session -------------------------------------------
+// a second tab of the same browser does not ask again; nothing in localStorage
+{
+  const dir = fs.mkdtempSync(path.join(fs.realpathSync(process.env.TMPDIR || '/tmp'), 'mechd-sim-token-'));
+  const token = 'sim-' + Math.random().toString(36).slice(2);
+  fs.writeFileSync(path.join(dir, 'token'), token + '\n', {mode: 0o600});
+  const guarded = startMechd(['--token-file', path.join(dir, 'token')]);
+  const gbase = await guarded.url;
+  const ctx = await browser.newContext({viewport: {width: 1280, height: 900}});
+  try {
+    const t1 = await ctx.newPage();
+    await t1.goto(`${gbase}/#spacetime`);
+    await t1.waitForSelector('#token-input', {state: 'visible', timeout: 15000});
+    await t1.fill('#token-input', token);
+    await t1.click('#token-use');
+    await t1.waitForSelector('#st-gamma', {timeout: 20000});
+    const t2 = await ctx.newPage(); // a new tab, as a student opens one
+    await t2.goto(`${gbase}/#tides`);
+    const ok = await t2.waitForFunction(() => { const f = document.querySelector('main form'); return f && f.dataset.state === 'done'; },
+      null, {timeout: 20000}).then(() => true, () => false);
+    const asked = await t2.isVisible('#token-input');
+    check(ok && !asked, `token: a new tab computes without asking for the token again (computed ${ok}, asked ${asked})`);
+    const ls = await t2.evaluate(() => JSON.stringify(localStorage));
+    check(!ls.includes(token), 'token: never in localStorage');
+    await t2.click('#token-toggle'); await t2.click('#token-forget');
+    await t1.waitForFunction(() => !sessionStorage.getItem('mechd-token'), null, {timeout: 5000}).then(() => check(true, 'token: Forget forgets it in every tab'),
+      () => check(false, 'token: Forget forgets it in every tab'));
+  } catch (e) {
+    check(false, `token: ${e.message.split('\n')[0]}`);
+  } finally {
+    await ctx.close();
+    guarded.proc.kill('SIGTERM');
+    fs.rmSync(dir, {recursive: true, force: true});
+  }
+}
+
 // --- embedding -------------------------------------------------------------------
 // A course page on another origin frames the lab: refused by default, shown
 // (compact) with --frame-ancestors naming that origin.

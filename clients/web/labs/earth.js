@@ -36,7 +36,7 @@ function planView(root, east, north, label) {
     svg('text', {x: W - 14, y: cy + 24, 'font-size': 16, 'text-anchor': 'end'}, 'east'), svg('text', {x: cx + 6, y: 34, 'font-size': 16}, 'north'));
   const px = cx + east * mag, py = cy - north * mag;
   add(root, svg('circle', {cx, cy, r: 9, fill: 'none', stroke: '#2b8a3e', 'stroke-width': 3}),
-    svg('text', {x: cx - 8, y: cy + 30, 'font-size': 15, fill: '#2b8a3e', 'text-anchor': 'end'}, 'without Coriolis'),
+    svg('text', {x: cx - 8, y: cy + 30, 'font-size': 15, fill: '#1f6f30', 'text-anchor': 'end'}, 'without Coriolis'),
     svg('line', {x1: cx, y1: cy, x2: px, y2: py, stroke: '#c92a2a', 'stroke-width': 3, 'stroke-dasharray': '8 4'}),
     svg('circle', {cx: px, cy: py, r: 9, fill: '#c92a2a'}),
     svg('text', {x: px + (east >= 0 ? -10 : 10), y: py - 16, 'font-size': 16, fill: '#c92a2a', 'font-weight': 700,

@@ -46,21 +46,25 @@ export default {
       el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked in red. With the precession exaggerated, each ',
         'sample\'s angle φ is drawn as φ (2π + kδ)/(2π + δ), δ the measured advance per orbit: the perihelion then moves kδ ',
         'per orbit while r(φ) is the API\'s.'));
-    let last = null;
+    let last = null, lastOrbits = 1;
     const drawOrbit = () => {
       const r = last;
       if (!r) return;
       const s = r.samples, d = r.precession.measured_per_orbit, k = Number(exSel.value) || 1;
+      // fewer than 20 samples an orbit (600 samples over 100,000 orbits): joined, they would draw chords
+      // across the ellipse, a thicket, not its path; drawn as dots they show the ring the orbit sweeps
+      const sparse = s.r.length / lastOrbits < 20;
       const warp = (phi) => typeof d === 'number' ? phi * (2 * Math.PI + k * d) / (2 * Math.PI + d) : phi;
       const xy = s.r.map((rr, i) => [rr * Math.cos(warp(s.phi[i])), rr * Math.sin(warp(s.phi[i]))]);
       // perihelia: local minima of r
       const peri = [];
-      for (let i = 0; i < s.r.length; i++)
+      if (!sparse) for (let i = 0; i < s.r.length; i++)
         if ((i === 0 || s.r[i] <= s.r[i - 1]) && (i === s.r.length - 1 || s.r[i] < s.r[i + 1])) peri.push(xy[i]);
       const planet = svg('circle', {r: 7, fill: '#1864ab', stroke: '#fff', 'stroke-width': 2, id: 'orb-planet'});
       let XY = null;
-      linePlot(plot, [{points: xy, label: k === 1 ? 'orbit' : `orbit, precession ×${exLabel(k)}`},
-        {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}],
+      const what = sparse ? `1 point per ${fmt(lastOrbits / s.r.length, 2)} orbits` : 'orbit';
+      linePlot(plot, [{points: xy, label: k === 1 ? what : `${what}, ${sparse ? '' : 'precession '}×${exLabel(k)}`, dots: sparse, r: 1.8},
+        sparse ? null : {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}].filter(Boolean),
         {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', marks: [({X, Y}) => {
           XY = [X, Y];
           const g = svg('g', {});
@@ -77,7 +81,8 @@ export default {
     exSel.addEventListener('change', drawOrbit);
     const exLabel = (k) => k >= 1e4 ? pow10(Math.round(Math.log10(k))) : String(k);
     const orbNotes = notesBox('orb-notes'); L.figure.after(orbNotes.box); // under the figure: the picture stays by the answer
-    const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r) => {
+    const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r, req) => {
+      lastOrbits = Math.max(1, Number(req && req.orbits) || 1);
       const p = r.precession;
       if (!p || r.motion !== 'bound') { cost.after(r); put(L.results, outcome(r, 'orbit')); put(orbNotes.box); last = null; put(plot); return; }
       cost.after(r);
@@ -100,15 +105,18 @@ export default {
           'higher orders are tiny, and the rest of the difference is how precisely the perihelia are found in the integrated orbit.' : '')});
       // exaggeration factors that make the advance about 0.3 rad (17°) and a tenth of that per orbit
       const d = Math.abs(p.measured_per_orbit) || 0, prev = Number(exSel.value);
-      const top = d > 0 ? 10 ** Math.max(0, Math.round(Math.log10(0.3 / d))) : 1;
+      // ... and no more than a quarter turn over the whole run (10⁶ over 100,000 orbits would turn it round and round)
+      const top = d > 0 ? 10 ** Math.max(0, Math.min(Math.round(Math.log10(0.3 / d)), Math.floor(Math.log10(Math.PI / 2 / (d * lastOrbits))))) : 1;
       const opts = [...new Set([1, Math.max(1, top / 10), top])];
       put(exSel, opts.map(k => el('option', {value: k, selected: k === (opts.includes(prev) ? prev : top)},
         k === 1 ? 'true to scale (×1)' : `×${exLabel(k)}`)));
       const kk = Number(exSel.value);
-      exNote.textContent = d > 0 ? `real advance ${fmt(d * 180 / Math.PI * 3600, 3)}″ per orbit` +
-        (kk > 1 ? `, drawn ${fmt(kk * d * 180 / Math.PI, 3)}°` : '') : '';
-      exSel.onchange = () => { const k2 = Number(exSel.value); exNote.textContent = `real advance ${fmt(d * 180 / Math.PI * 3600, 3)}″ per orbit` +
-        (k2 > 1 ? `, drawn ${fmt(k2 * d * 180 / Math.PI, 3)}°` : ''); };
+      // the advance per orbit, real and drawn, and over the whole run when it is long
+      const say = (k2) => `real advance ${fmt(d * 180 / Math.PI * 3600, 3)}″ per orbit` + (k2 > 1 ? `, drawn ${fmt(k2 * d * 180 / Math.PI, 3)}°` : '') +
+        (lastOrbits >= 100 ? `; over the ${fmt(lastOrbits)} orbits ${fmt(lastOrbits * d * 180 / Math.PI * 3600, 3)}″` +
+          (k2 > 1 ? `, drawn ${fmt(k2 * lastOrbits * d * 180 / Math.PI, 3)}°` : '') : '');
+      exNote.textContent = d > 0 ? say(kk) : '';
+      exSel.onchange = () => { exNote.textContent = say(Number(exSel.value)); };
       last = r;
       drawOrbit();
     });

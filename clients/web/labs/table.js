@@ -6,6 +6,7 @@
 // and the effective force at the start beside the notes' formula.
 import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, notesBox} from '../lib.js';
 import {player, lerp} from '../anim.js';
+import {handle, rerun} from '../handles.js';
 
 const st = {experiment: 'through_center', omega: 1, radius: 1, mass: 1, px: 0.5, py: 0, vx: 0, vy: 0.8, t_end: 4};
 const BUILTIN = [
@@ -60,7 +61,8 @@ export default {
     el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'table-submit'}, 'Launch')));
     sync();
 
-    const room = svg('svg', {class: 'plot', id: 'table-room', role: 'img', 'aria-label': 'The puck seen from the room (inertial frame)'});
+    // a group: the puck's start and its launch velocity are handles on it (drag them, or focus and use the arrow keys)
+    const room = svg('svg', {class: 'plot', id: 'table-room', role: 'group', 'aria-label': 'The puck seen from the room (inertial frame): drag its start or its velocity arrow'});
     const onTable = svg('svg', {class: 'plot', id: 'table-table', role: 'img', 'aria-label': 'The puck seen from the turning table'});
     const play = player({label: 'The rotating table'});
     add(L.figure, el('div', {class: 'pair two'},
@@ -107,10 +109,25 @@ export default {
           el('dt', {}, 'integrated vs exact'), num('table-err', a.rotating_vs_exact.max_position_error, 'm'),
           inv ? el('dt', {}, 'Jacobi integral drift') : null, inv ? num('table-jacobi', inv.max_relative_drift) : null),
         tableNotes.box);
-      draw(room, onTable, a, play);
+      draw(room, onTable, a, play, {R: dragR, launch});
       plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
         a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});
     });
+    // the launch dragged on the room's picture: any launch, from the start and velocity dragged (in the room's frame)
+    let dragR = null;
+    const again = rerun(() => run());
+    const r3 = (v) => Number(v.toFixed(3));
+    const launch = (what, x, y, done, R, a0) => {
+      if (exp.input.value !== 'custom') { // from a preset: its start and velocity become the custom launch's
+        px.input.value = r3(a0.position[0]); py.input.value = r3(a0.position[1]);
+        vx.input.value = r3(a0.velocity_inertial[0]); vy.input.value = r3(a0.velocity_inertial[1]);
+        tEnd.input.value = r3(a0.t_end); exp.input.value = 'custom'; sync();
+      }
+      if (what === 'start') { px.input.value = r3(x); py.input.value = r3(y); }
+      else { vx.input.value = r3(x); vy.input.value = r3(y); }
+      dragR = done ? null : R;
+      again(done);
+    };
     L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
     run();
   },
@@ -118,14 +135,15 @@ export default {
 
 // Both panels, to the same scale; the player moves the puck on both and turns
 // the table on the left (the line painted on it turns with ωt).
-function draw(room, onTable, a, play) {
+function draw(room, onTable, a, play, {R: fixedR, launch} = {}) {
   const pts = [...a.inertial, ...a.rotating];
-  const R = Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
+  const R = fixedR || Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
   const w = a.parameters.omega;
   const setup = (root) => {
     const [W] = plotSize(root, 420, 420), H = W, s = (W / 2 - 8) / R;
     put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
     const X = (x) => W / 2 + s * x, Y = (y) => H / 2 - s * y;
+    X.invert = (px) => (px - W / 2) / s; Y.invert = (py) => (H / 2 - py) / s;
     add(root, svg('circle', {cx: X(0), cy: Y(0), r: s * R * 0.98, fill: '#f1f3f5', stroke: '#868e96', 'stroke-width': 1.5}));
     const line = svg('line', {stroke: '#1864ab', 'stroke-width': 3, 'data-role': 'painted'});
     const path = (ps, a2) => svg('polyline', {points: ps.map(p => `${X(p[0]).toFixed(1)},${Y(p[1]).toFixed(1)}`).join(' '), fill: 'none', ...a2});
@@ -151,6 +169,24 @@ function draw(room, onTable, a, play) {
   };
   const trail = (G, ps, i, p) => ps.slice(0, i + 1).concat([p]).map(q => `${G.X(q[0]).toFixed(1)},${G.Y(q[1]).toFixed(1)}`).join(' ');
   paint(B, 0);
+  // the launch: the start and the velocity arrow (its tip at r₀ + v τ, τ = 1/|ω|: where the puck would be after the
+  // table turns one radian), both handles
+  if (launch && a.initial) {
+    const r0 = a.initial.position, v0 = a.initial.velocity_inertial, tau = 1 / (Math.abs(w) || 1);
+    const tip = [r0[0] + v0[0] * tau, r0[1] + v0[1] * tau];
+    const a0 = {...a.initial, t_end: a.parameters.t_end};
+    const defs = svg('defs', {});
+    add(defs, arrowHead('table-arrow', '#5c3b00'));
+    add(room, defs, svg('line', {x1: A.X(r0[0]), y1: A.Y(r0[1]), x2: A.X(tip[0]), y2: A.Y(tip[1]), stroke: '#5c3b00', 'stroke-width': 3,
+      'marker-end': 'url(#table-arrow)'}),
+      handle(room, {id: 'table-start', X: A.X, Y: A.Y, at: [r0[0], r0[1]], color: '#c92a2a', step: [0.05, 0.05],
+        label: 'the puck\'s start', text: (x, y) => `start x = ${fmt(x, 3)} m, y = ${fmt(y, 3)} m`,
+        onMove: (x, y, done) => launch('start', x, y, done, R, a0)}),
+      handle(room, {id: 'table-velocity', X: A.X, Y: A.Y, at: tip, color: '#5c3b00', step: [0.05 * tau, 0.05 * tau], r: 7,
+        label: 'the launch velocity (arrow tip)', text: (x, y) => { const u = [(x - r0[0]) / tau, (y - r0[1]) / tau];
+          return `velocity vₓ = ${fmt(u[0], 3)} m/s, v_y = ${fmt(u[1], 3)} m/s (${fmt(Math.hypot(u[0], u[1]), 3)} m/s)`; },
+        onMove: (x, y, done) => launch('velocity', (x - r0[0]) / tau, (y - r0[1]) / tau, done, R, a0)}));
+  }
   play.set(a.t, (i, f, t) => {
     const j = Math.min(i + 1, a.t.length - 1);
     const p = lerp(a.inertial[i], a.inertial[j], f), q = lerp(a.rotating[i], a.rotating[j], f);
@@ -160,5 +196,11 @@ function draw(room, onTable, a, play) {
     paint(A, w * t);
     room.dataset.puck = `${p[0].toFixed(4)},${p[1].toFixed(4)}`; onTable.dataset.puck = `${q[0].toFixed(4)},${q[1].toFixed(4)}`;
   });
+}
+// An SVG arrowhead marker of the colour given.
+function arrowHead(id, color) {
+  const m = svg('marker', {id, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 7, markerHeight: 7, orient: 'auto-start-reverse'});
+  add(m, svg('path', {d: 'M 0 0 L 10 5 L 0 10 z', fill: color}));
+  return m;
 }
 const niceLen = (x) => { const p = 10 ** Math.floor(Math.log10(x)), m = x / p; return (m < 2 ? 1 : m < 5 ? 2 : 5) * p; };

@@ -3,7 +3,7 @@
 // Sun aligned (spring tide) or at a quarter Moon (neap tide). One
 // POST /v1/batch of /v1/earth/tides at every 15° (the field is symmetric about
 // the line to each body, so 0…180° is enough), plus the marked point.
-import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10, notesBox} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10, notesBox, textShade} from '../lib.js';
 import {player} from '../anim.js';
 
 const MONTH = 29.53; // days from new Moon to new Moon (the synodic month)
@@ -170,7 +170,7 @@ function drawField(root, note, {moon, sun, alpha, point, wrap}) {
     const c = Math.cos(beta * Math.PI / 180), s = Math.sin(beta * Math.PI / 180), r = W * (below ? 0.42 : 0.46);
     add(root, svg('line', {x1: cx + R0 * 1.55 * c, y1: cy - R0 * 1.55 * s, x2: cx + r * c, y2: cy - r * s, stroke: color, 'stroke-width': 2, 'stroke-dasharray': '4 4'}),
       svg('circle', {cx: cx + r * c, cy: cy - r * s, r: 9, fill: color}),
-      svg('text', {x: cx + r * c, y: cy - r * s + (below ? 28 : s > 0.5 ? 26 : -14), 'text-anchor': c > 0.5 ? 'end' : c < -0.5 ? 'start' : 'middle', 'font-size': 15, 'font-weight': 700, fill: color}, name));
+      svg('text', {x: cx + r * c, y: cy - r * s + (below ? 28 : s > 0.5 ? 26 : -14), 'text-anchor': c > 0.5 ? 'end' : c < -0.5 ? 'start' : 'middle', 'font-size': 15, 'font-weight': 700, fill: textShade(color)}, name));
   };
   if (moon) dir(0, 'Moon', '#495057');
   if (sun) dir(alpha, 'Sun', '#e67700', moon && alpha === 0);
