@@ -48,7 +48,9 @@ window.addEventListener('pointercancel', end);
 //   X, Y: scales from the picture's units to user units, with .invert. step: what one arrow key press moves
 //   (Shift: ten times, PageUp/PageDown: ten times along y, Home/End not used). axes: which arrows move it.
 //   text(x, y): the value in words with units ("ct = 1.5 s, x = 0.5 ls"), read by screen readers.
-export function handle(root, {id, X, Y, at, label, text, step = [0.1, 0.1], onMove, axes = 'xy', color = '#111', r = 9}) {
+//   nudge(sign, big) -> [x, y]: for a handle that moves along a curve (an angle on a dial), where one arrow key
+//   press takes it (sign +1: Right or Up, −1: Left or Down; big: Shift or Page keys); replaces step and axes.
+export function handle(root, {id, X, Y, at, label, text, step = [0.1, 0.1], onMove, axes = 'xy', color = '#111', r = 9, nudge}) {
   const spec = {root, X, Y, at, onMove};
   live.set(id, spec);
   const cx = X(at[0]), cy = Y(at[1]);
@@ -67,6 +69,17 @@ export function handle(root, {id, X, Y, at, label, text, step = [0.1, 0.1], onMo
     g.focus();
   });
   g.addEventListener('keydown', (e) => {
+    if (nudge) {
+      const sign = {ArrowRight: 1, ArrowUp: 1, PageUp: 1, ArrowLeft: -1, ArrowDown: -1, PageDown: -1}[e.key];
+      if (!sign) return;
+      e.preventDefault();
+      const s = live.get(id), [nx, ny] = nudge(sign, e.shiftKey || e.key.startsWith('Page'), s.at);
+      s.at = [nx, ny];
+      const t = g.isConnected ? g : document.getElementById(id);
+      if (t) t.setAttribute('aria-valuetext', text(nx, ny));
+      s.onMove(nx, ny, true);
+      return;
+    }
     const big = e.shiftKey ? 10 : 1;
     let dx = 0, dy = 0;
     if (e.key === 'ArrowLeft' && axes !== 'y') dx = -step[0];

@@ -519,7 +519,7 @@ const withFactor = (label, factor) => !factor ? label
   : /\[.*\]$/.test(label) ? label.replace(/\[(.*)\]$/, `[${factor} $1]`) : `${label} [${factor}]`;
 
 function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy = false,
-                                    width = 640, height = 400, equal = false, legend = 'top', marks = []} = {}) {
+                                    width = 640, height = 400, equal = false, legend = 'top', marks = [], frame} = {}) {
   [width, height] = plotSize(root, width, height);
   put(root);
   root.setAttribute('viewBox', `0 0 ${width} ${height}`);
@@ -529,8 +529,9 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   let [x0, x1] = d3.extent(pts, p => tx(p[0])), [y0, y1] = d3.extent(pts, p => ty(p[1]));
   if (x0 === x1) { x0 -= 1; x1 += 1; }
   if (y0 === y1) { y0 -= 1; y1 += 1; }
+  if (frame) [x0, x1, y0, y1] = frame; // held while a handle is dragged: the picture does not rescale under the pointer
   const narrow = width < 480, nx = narrow ? 4 : 6, ny = 5;
-  if (!equal) { // frame ends on round values (whole decades on a log axis)
+  if (!equal && !frame) { // frame ends on round values (whole decades on a log axis)
     if (logx) { x0 = Math.floor(x0); x1 = Math.ceil(x1); } else [x0, x1] = d3.nice(x0, x1, nx);
     if (logy) { y0 = Math.floor(y0); y1 = Math.ceil(y1); } else [y0, y1] = d3.nice(y0, y1, ny);
   }
@@ -593,7 +594,7 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
       : svg('line', {x1: lx, y1: ly - 5, x2: lx + 18, y2: ly - 5, stroke: c, 'stroke-width': 3, 'stroke-dasharray': s.dash || null}),
       svg('text', {x: lx + 24, y: ly, fill: textShade(c), 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
-  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b}));
+  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b, frame: [x0, x1, y0, y1]}));
   // hover / touch read-out: the nearest sample's values
   const dot = svg('circle', {r: 6, fill: 'none', stroke: '#111', 'stroke-width': 2, visibility: 'hidden'});
   const tip = svg('text', {'font-size': 14, 'font-weight': 700, class: 'readout', visibility: 'hidden'});

@@ -7,6 +7,7 @@
 import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, label} from '../view3d.js';
+import {handle, rerun} from '../handles.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -252,9 +253,71 @@ export default {
     const G = view3d(gbox, {label: 'The Foucault pendulum\'s swing plane on the turning Earth', id: 'fou-view', extent: 1.3});
     const globe = (a) => foucaultGlobe(G, gbox, gnote, dayPlay, a, () => frameSel.value === 'ground');
     frameSel.addEventListener('change', () => dayPlay.seek(Number(gbox.dataset.hours) || 0));
+    // direct manipulation: the launch velocity as an arrow whose tip is dragged (speed and elevation), and
+    // the pendulum's place on the Earth dragged round a meridian (the latitude); each asks again as it moves
+    const aim = svg('svg', {class: 'plot dial', id: 'can-aim', role: 'group',
+      'aria-label': 'The launch velocity: drag the arrow\'s tip, or focus it and use the arrow keys'});
+    canS.form.querySelector('.buttons').before(el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the launch velocity:'), aim));
+    const canAgain = rerun(() => cannon());
+    const drawAim = () => aimDial(aim, val(cs.input), val(ce.input), (v, e, done) => {
+      cs.input.value = v; ce.input.value = e; drawAim(); canAgain(done);
+    });
+    for (const c of [cs.input, ce.input]) c.addEventListener('input', drawAim);
+    drawAim();
+    const dial = svg('svg', {class: 'plot dial', id: 'fou-dial', role: 'group',
+      'aria-label': 'The pendulum\'s latitude: drag it round the Earth, or focus it and use the arrow keys'});
+    fouS.form.querySelector('.buttons').before(el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the pendulum round the Earth:'), dial));
+    const fouAgain = rerun(() => pend(), 200);
+    const drawDial = () => latitudeDial(dial, val(pl.input), (lat, done) => { pl.input.value = lat; drawDial(); fouAgain(done); });
+    pl.input.addEventListener('input', drawDial);
+    drawDial();
     fall(); cannon(); pend();
   },
 };
+
+// The launch velocity to scale (0 to 1000 m/s), its tip a handle: (v cos α, v sin α) in m/s; the arrow keys move
+// the tip 10 m/s across or up (Shift: 100). onMove(speed in m/s, elevation in degrees, done).
+function aimDial(root, v, e, onMove) {
+  const W = 300, H = 170, k = (W - 50) / 1000;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const X = (vx) => 24 + vx * k, Y = (vz) => H - 24 - vz * k;
+  X.invert = (px) => (px - 24) / k; Y.invert = (py) => (H - 24 - py) / k;
+  add(root, svg('line', {x1: 8, y1: Y(0), x2: W - 8, y2: Y(0), stroke: '#555', 'stroke-width': 2}));
+  for (const s of [250, 500, 750, 1000]) add(root, svg('path', {d: `M ${X(s)} ${Y(0)} A ${s * k} ${s * k} 0 0 0 ${X(0)} ${Y(s)}`, fill: 'none', stroke: '#ddd'}),
+    svg('text', {x: X(s), y: Y(0) + 16, 'font-size': 12, 'text-anchor': 'middle', fill: '#444'}, `${s}`));
+  add(root, svg('text', {x: W - 8, y: 14, 'font-size': 12, 'text-anchor': 'end', fill: '#444'}, 'm/s'));
+  const ok = Number.isFinite(v) && Number.isFinite(e), a = (ok ? e : 30) * Math.PI / 180, s0 = ok ? v : 500;
+  const tip = [s0 * Math.cos(a), s0 * Math.sin(a)];
+  const words = (vx, vz) => `${fmt(Math.hypot(vx, vz), 3)} m/s at ${fmt(Math.atan2(vz, vx) * 180 / Math.PI, 3)}° elevation`;
+  add(root, svg('line', {x1: X(0), y1: Y(0), x2: X(tip[0]), y2: Y(tip[1]), stroke: '#c92a2a', 'stroke-width': 4}),
+    svg('text', {x: 30, y: 18, 'font-size': 14, fill: '#c92a2a', 'font-weight': 700, 'data-role': 'aim-words'}, words(...tip)),
+    handle(root, {id: 'can-aim-tip', X, Y, at: tip, color: '#c92a2a', step: [10, 10], label: 'launch velocity (the arrow\'s tip)', text: words,
+      onMove: (vx, vz, done) => {
+        const sp = Math.min(1000, Math.max(1, Math.round(Math.hypot(vx, vz)))), el0 = Math.min(90, Math.max(0, Math.round(Math.atan2(vz, vx) * 360 / Math.PI) / 2));
+        onMove(sp, el0, done);
+      }}));
+}
+
+// A meridian of the Earth with the pendulum at latitude λ on it, a handle moved round the circle (the arrow
+// keys: 1°, Shift 10°). onMove(latitude in degrees, done).
+function latitudeDial(root, lat, onMove) {
+  const W = 220, H = 200, R = 80, cx = 100, cy = 100;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const X = (x) => cx + R * x, Y = (y) => cy - R * y;
+  X.invert = (px) => (px - cx) / R; Y.invert = (py) => (cy - py) / R;
+  const l = Number.isFinite(lat) ? Math.max(-90, Math.min(90, lat)) : 0, a = l * Math.PI / 180;
+  add(root, svg('circle', {cx, cy, r: R, fill: '#e7f5ff', stroke: '#1864ab', 'stroke-width': 2}),
+    svg('line', {x1: cx - R - 10, y1: cy, x2: cx + R + 10, y2: cy, stroke: '#1864ab', 'stroke-dasharray': '4 4'}),
+    svg('line', {x1: cx, y1: cy - R - 14, x2: cx, y2: cy + R + 14, stroke: '#444', 'stroke-width': 2}),
+    svg('text', {x: cx + 6, y: cy - R - 2, 'font-size': 12, fill: '#444'}, 'ω'),
+    svg('line', {x1: cx, y1: cy, x2: X(Math.cos(a)), y2: Y(Math.sin(a)), stroke: '#c92a2a', 'stroke-width': 2}),
+    svg('text', {x: 8, y: H - 8, 'font-size': 14, fill: '#c92a2a', 'font-weight': 700}, `λ = ${fmt(l, 4)}°`),
+    handle(root, {id: 'fou-lat-handle', X, Y, at: [Math.cos(a), Math.sin(a)], color: '#c92a2a', label: 'the pendulum\'s latitude',
+      text: (x, y) => `latitude ${fmt(Math.round(Math.atan2(y, Math.max(0, x)) * 180 / Math.PI * 10) / 10, 4)}°`,
+      nudge: (sign, big, at) => { const d = (Math.atan2(at[1], Math.max(0, at[0])) * 180 / Math.PI) + sign * (big ? 10 : 1);
+        const n = Math.max(-90, Math.min(90, Math.round(d))) * Math.PI / 180; return [Math.cos(n), Math.sin(n)]; },
+      onMove: (x, y, done) => onMove(Math.max(-90, Math.min(90, Math.round(Math.atan2(y, Math.max(0, x)) * 180 / Math.PI * 10) / 10)), done)}));
+}
 
 // The swing traced from above over 12 swings, the plane turned at the measured
 // rate, each swing an ellipse of the measured axis ratio `flat` (minor/major).

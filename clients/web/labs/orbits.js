@@ -3,6 +3,7 @@
 import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, examplePicker, linePlot, drawPlot, plotSize, pow10, plotTools,
   costPreview, notesBox, relWords, amount} from '../lib.js';
 import {player} from '../anim.js';
+import {handle, rerun} from '../handles.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
   request: {M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593}, orbits: 3, samples: 5}},
@@ -36,7 +37,8 @@ export default {
       orbits: val(n.input), samples: 600});
     const cost = costPreview(L.form, '/v1/gr/geodesic', orbitBody, {id: 'orb-cost'});
     add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'orb-submit'}, 'Orbit')));
-    const plot = svg('svg', {class: 'plot', id: 'orb-plot', role: 'img', 'aria-label': 'orbit'});
+    // a group: the perihelion and the aphelion are handles (drag them along the axis, or focus and use the arrow keys)
+    const plot = svg('svg', {class: 'plot', id: 'orb-plot', role: 'group', 'aria-label': 'orbit: drag the perihelion or the aphelion'});
     const exId = 'orb-exaggerate';
     const exSel = el('select', {id: exId, 'data-role': 'exaggerate'});
     const exNote = el('span', {class: 'muted', id: 'orb-ex-note'});
@@ -65,12 +67,30 @@ export default {
       const what = sparse ? `1 point per ${fmt(lastOrbits / s.r.length, 2)} orbits` : 'orbit';
       linePlot(plot, [{points: xy, label: k === 1 ? what : `${what}, ${sparse ? '' : 'precession '}×${exLabel(k)}`, dots: sparse, r: 1.8},
         sparse ? null : {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}].filter(Boolean),
-        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', marks: [({X, Y}) => {
+        {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', frame: dragFrame || undefined, marks: [({X, Y, frame}) => {
           XY = [X, Y];
           const g = svg('g', {});
           add(g, svg('circle', {cx: X(0), cy: Y(0), r: 9, fill: '#f59f00'}));
           for (const p of peri) add(g, svg('line', {x1: X(0), y1: Y(0), x2: X(p[0]), y2: Y(p[1]), stroke: '#c92a2a', 'stroke-dasharray': '5 4'}));
           add(g, planet);
+          // (over the planet, which starts at perihelion) the turning points to drag: perihelion a(1 − e) on +x where the orbit starts, aphelion a(1 + e) on −x
+          const aa = val(a.input), ee = val(e.input);
+          if (Number.isFinite(aa) && Number.isFinite(ee)) {
+            const rp = aa * (1 - ee), ra = aa * (1 + ee), AU = 1.495978707e11;
+            const words = (what, r) => `${what} ${fmt(r / 1e9, 4)} million km (${fmt(r / AU, 3)} AU)`;
+            const move = (which) => (x, y, done) => {
+              let p = which === 'peri' ? Math.abs(x) : rp, q = which === 'apo' ? Math.abs(x) : ra;
+              if (which === 'peri') p = Math.min(p, q * 0.999); else q = Math.max(q, p * 1.001);
+              p = Math.max(p, 1e9); // well outside the Sun's Schwarzschild radius, and outside the Sun itself
+              a.input.value = Number(((p + q) / 2).toPrecision(6)); e.input.value = Number(((q - p) / (q + p)).toPrecision(6));
+              dragFrame = done ? null : frame;
+              again(done);
+            };
+            add(g, handle(plot, {id: 'orb-peri', X, Y, at: [rp, 0], axes: 'x', step: [aa / 100, 0], color: '#c92a2a', label: 'perihelion distance',
+              text: (x) => words('perihelion', Math.abs(x)), onMove: move('peri')}),
+              handle(plot, {id: 'orb-apo', X, Y, at: [-ra, 0], axes: 'x', step: [aa / 100, 0], color: '#5c3b00', label: 'aphelion distance',
+                text: (x) => words('aphelion', Math.abs(x)), onMove: (x, y, done) => move('apo')(x, y, done)}));
+          }
           return g;
         }]});
       play.set(s.t, (i, f) => {
@@ -79,6 +99,8 @@ export default {
       });
     };
     exSel.addEventListener('change', drawOrbit);
+    let dragFrame = null;
+    const again = rerun(() => { run(); cost.predict(); }, 200);
     const exLabel = (k) => k >= 1e4 ? pow10(Math.round(Math.log10(k))) : String(k);
     const orbNotes = notesBox('orb-notes'); L.figure.after(orbNotes.box); // under the figure: the picture stays by the answer
     const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r, req) => {

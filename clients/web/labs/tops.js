@@ -3,6 +3,7 @@
 // of an asymmetric free body (POST /v1/rigid/rotate).
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview, notesBox} from '../lib.js';
 import {player} from '../anim.js';
+import {handle, rerun} from '../handles.js';
 import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
 
 const BUILTIN = [{title: 'Fast top: I1 = 0.02, I3 = 0.01, θ0 = 0.5, ψ̇ = 60 rad/s', operation: '/v1/rigid/top',
@@ -41,6 +42,18 @@ export default {
     // the chooser's predicted cost at the chosen accuracy (and at draft) before the run: a dry run
     const topBody = () => { const b = {}; for (const [k, c] of Object.entries(f)) b[k] = val(c.input); b.samples = 801; return b; };
     const cost = costPreview(L.form, '/v1/rigid/top', topBody, {id: 'top-cost'});
+    // direct manipulation: the top's tilt (drag its axis round the pivot) and its spin (drag along the spin bar)
+    const dial = svg('svg', {class: 'plot dial', id: 'top-dial', role: 'group',
+      'aria-label': 'The top at release: drag its axis (tilt θ0) or the spin bar (ψ̇), or focus them and use the arrow keys'});
+    add(L.form, el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the top\'s tilt and spin:'), dial));
+    const again = rerun(() => { run(); cost.predict(); }, 250);
+    const drawDial = () => topDial(dial, val(f.theta.input), val(f.psi_dot.input), (th, ps, done) => {
+      if (th !== null) f.theta.input.value = th;
+      if (ps !== null) f.psi_dot.input.value = ps;
+      drawDial(); again(done);
+    });
+    for (const c of [f.theta.input, f.psi_dot.input]) c.addEventListener('input', drawDial);
+    drawDial();
     add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
@@ -196,3 +209,39 @@ export default {
     drun();
   },
 };
+
+// The top at release seen from the side: its axis at θ0 from the vertical from the pivot, the axis' end a
+// handle moved round the pivot (arrow keys 0.05 rad, Shift 0.5); beside it the spin ψ̇ on a bar from −200 to
+// 200 rad/s, a handle moved up and down (5 rad/s, Shift 50). onMove(θ0 or null, ψ̇ or null, done).
+function topDial(root, theta, psi, onMove) {
+  const W = 300, H = 190, px = 90, py = 165, L = 130;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const th = Number.isFinite(theta) ? Math.min(Math.PI, Math.max(0, theta)) : 0.5, ps = Number.isFinite(psi) ? psi : 60;
+  const X = (x) => px + L * x, Y = (y) => py - L * y;
+  X.invert = (p) => (p - px) / L; Y.invert = (p) => (py - p) / L;
+  const tip = [Math.sin(th), Math.cos(th)];
+  const thetaOf = (x, y) => Math.min(Math.PI - 0.01, Math.max(0.01, Math.round(Math.atan2(Math.max(0, x), y) * 100) / 100));
+  add(root, svg('line', {x1: 10, y1: py, x2: 190, y2: py, stroke: '#555', 'stroke-width': 2}),
+    svg('line', {x1: px, y1: py, x2: px, y2: py - L - 10, stroke: '#999', 'stroke-dasharray': '4 4'}),
+    svg('path', {d: `M ${px} ${py - 40} A 40 40 0 0 1 ${px + 40 * tip[0]} ${py - 40 * tip[1]}`, fill: 'none', stroke: '#1864ab', 'stroke-width': 2}),
+    svg('line', {x1: px, y1: py, x2: X(tip[0]), y2: Y(tip[1]), stroke: '#1864ab', 'stroke-width': 5}),
+    svg('text', {x: 8, y: 16, 'font-size': 14, fill: '#1864ab', 'font-weight': 700}, `θ0 = ${fmt(th, 3)} rad (${fmt(th * 180 / Math.PI, 3)}°)`),
+    handle(root, {id: 'top-tilt', X, Y, at: tip, color: '#1864ab', label: 'the top\'s tilt θ0 (its axis)',
+      text: (x, y) => `tilt θ0 = ${fmt(thetaOf(x, y), 3)} rad from the vertical`,
+      nudge: (sign, big, at) => { const t = Math.min(Math.PI - 0.01, Math.max(0.01, thetaOf(at[0], at[1]) + sign * (big ? 0.5 : 0.05)));
+        return [Math.sin(t), Math.cos(t)]; },
+      onMove: (x, y, done) => onMove(thetaOf(x, y), null, done)}));
+  // the spin bar: y from −200 (bottom) to 200 rad/s (top)
+  const bx = 250, b0 = 175, b1 = 25, S = (v) => b0 + (v + 200) / 400 * (b1 - b0);
+  const SX = () => bx; SX.invert = () => 0;
+  const SY = (v) => S(v); SY.invert = (p) => (p - b0) / (b1 - b0) * 400 - 200;
+  const spinOf = (v) => Math.max(-200, Math.min(200, Math.round(v)));
+  add(root, svg('line', {x1: bx, y1: b0, x2: bx, y2: b1, stroke: '#555', 'stroke-width': 3}),
+    svg('line', {x1: bx - 6, y1: S(0), x2: bx + 6, y2: S(0), stroke: '#555', 'stroke-width': 2}),
+    svg('text', {x: bx - 10, y: S(0) + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '0'),
+    svg('text', {x: bx - 10, y: b1 + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '200'),
+    svg('text', {x: bx - 10, y: b0 + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '−200'),
+    svg('text', {x: W - 4, y: 16, 'font-size': 14, fill: '#5c3b00', 'font-weight': 700, 'text-anchor': 'end'}, `ψ̇ = ${fmt(ps, 4)} rad/s`),
+    handle(root, {id: 'top-spin', X: SX, Y: SY, at: [0, ps], axes: 'y', step: [0, 5], color: '#5c3b00', label: 'the top\'s spin ψ̇',
+      text: (x, y) => `spin ψ̇ = ${fmt(spinOf(y), 4)} rad/s`, onMove: (x, y, done) => onMove(null, spinOf(y), done)}));
+}
