@@ -308,6 +308,92 @@ for (const width of [1280, 390]) {
     check(ok, `${tag}: table: the start moved by the arrow keys to (${inp.slice(0, 2)}) m: Coriolis ${got} = ${want}`);
     await page.screenshot({path: path.join(shots, `sim-${tag}-drag-table.png`)});
     await axe(page, `${tag}: table with handles`);
+
+    // Earth: the launch velocity's tip dragged (speed and elevation), then ArrowUp adds 10 m/s upwards: the
+    // range on a non-rotating Earth would be v² sin 2α / g; the scene's differs from it only by the Coriolis
+    // and centrifugal terms (well under 1 % at 45°N)
+    await page.goto('about:blank');
+    await page.goto(`${base}/#earth`);
+    await settled(page, '#can-form');
+    check(await sliderOk(page, '#can-aim-tip') && await sliderOk(page, '#fou-lat-handle'), `${tag}: earth: the launch velocity and the latitude are sliders`);
+    const range = async () => { await settled(page, '#can-form'); await page.waitForTimeout(200);
+      const v = Number(await page.inputValue('#can-speed')), a = Number(await page.inputValue('#can-elev')) * Math.PI / 180;
+      return [v, a, await value(page, '#can-range'), v * v * Math.sin(2 * a) / 9.80665]; };
+    const r0 = await page.getAttribute('#can-range', 'data-value');
+    await drag(page, '#can-aim-tip', 30, -15);
+    await page.waitForFunction((r) => document.getElementById('can-range').dataset.value !== r, r0, {timeout: 20000});
+    let [v1, a1, got1, flat1] = await range();
+    check(v1 !== 500 && Math.abs(got1 - flat1) < 0.01 * flat1, `${tag}: cannonball: dragged to ${v1} m/s at ${(a1 * 180 / Math.PI).toFixed(1)}°: range ${got1.toFixed(0)} m, v² sin 2α / g = ${flat1.toFixed(0)} m`);
+    await page.focus('#can-aim-tip'); await page.keyboard.press('ArrowUp');
+    await page.waitForFunction((r) => document.getElementById('can-range').dataset.value !== r, String(got1), {timeout: 20000});
+    const [v2, a2, got2, flat2] = await range();
+    check(Math.abs(v2 * Math.sin(a2) - (v1 * Math.sin(a1) + 10)) < 1.5 && Math.abs(got2 - flat2) < 0.01 * flat2,
+      `${tag}: cannonball: ArrowUp adds 10 m/s upwards (${(v1 * Math.sin(a1)).toFixed(1)} -> ${(v2 * Math.sin(a2)).toFixed(1)} m/s), range ${got2.toFixed(0)} m against ${flat2.toFixed(0)} m`);
+    // the pendulum dragged round the meridian: its first-order rate is −ω sin λ (ω = 7.292115e-5 rad/s, in °/h)
+    const w = 7.292115e-5 * 180 / Math.PI * 3600;
+    const f0 = await page.getAttribute('#fou-first', 'data-value');
+    await drag(page, '#fou-lat-handle', 25, 40);
+    await page.waitForFunction((f) => document.getElementById('fou-first').dataset.value !== f, f0, {timeout: 30000});
+    await settled(page, '#fou-form'); await page.waitForTimeout(200);
+    let lat = Number(await page.inputValue('#fou-lat')), fr = await value(page, '#fou-first');
+    check(lat < 48 && Math.abs(fr + w * Math.sin(lat * Math.PI / 180)) < 1e-3 * w, `${tag}: foucault: dragged to λ = ${lat}°: ω sin λ = ${fr} °/h`);
+    await page.focus('#fou-lat-handle'); await page.keyboard.press('Shift+ArrowUp');
+    await page.waitForFunction((l) => Number(document.getElementById('fou-lat').value) > l + 5, lat, {timeout: 5000});
+    await page.waitForFunction((f) => document.getElementById('fou-first').dataset.value !== f, String(fr), {timeout: 30000});
+    await settled(page, '#fou-form'); await page.waitForTimeout(200);
+    const lat2 = Number(await page.inputValue('#fou-lat')); fr = await value(page, '#fou-first');
+    check(Math.abs(lat2 - Math.round(lat + 10)) < 1e-9 && Math.abs(fr + w * Math.sin(lat2 * Math.PI / 180)) < 1e-3 * w,
+      `${tag}: foucault: Shift+ArrowUp turns it 10° north (λ = ${lat2}°, rate ${fr} °/h)`);
+
+    // Orbits: the perihelion dragged in: a and e from r_p and r_a, the first-order advance 6πGM/(c²a(1−e²)), GM/c² = 1476.6250 m
+    await page.goto('about:blank');
+    await page.goto(`${base}/#orbits`);
+    await page.waitForFunction(() => document.querySelector('#orb-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    check(await sliderOk(page, '#orb-peri') && await sliderOk(page, '#orb-apo'), `${tag}: orbits: perihelion and aphelion are sliders`);
+    const o0 = await page.getAttribute('#orb-first', 'data-value');
+    const rp0 = 57909050000 * (1 - 0.20563593), ra0 = 57909050000 * (1 + 0.20563593);
+    await drag(page, '#orb-peri', -25, 0);
+    await page.waitForFunction((o) => document.getElementById('orb-first').dataset.value !== o &&
+      document.querySelector('#orb-submit')?.form.dataset.state === 'done', o0, {timeout: 30000});
+    await page.waitForTimeout(300);
+    const oa = Number(await page.inputValue('#orb-a')), oe = Number(await page.inputValue('#orb-e')), of = await value(page, '#orb-first');
+    check(oa * (1 - oe) < rp0 * 0.99 && Math.abs(oa * (1 + oe) - ra0) < 1e-5 * ra0 &&
+      Math.abs(of - 6 * Math.PI * 1476.6250385094204 / (oa * (1 - oe * oe))) < 1e-6 * of,
+      `${tag}: orbits: perihelion dragged to ${(oa * (1 - oe) / 1e9).toFixed(2)} million km, aphelion kept: 6πGM/(c²a(1−e²)) = ${of}`);
+    await page.focus('#orb-apo'); await page.keyboard.press('ArrowLeft');
+    await page.waitForFunction((a) => Number(document.getElementById('orb-a').value) > a, oa, {timeout: 5000});
+    check(true, `${tag}: orbits: ArrowLeft moves the aphelion out (a grows)`);
+
+    // Tops: the tilt dragged, then the spin raised by the arrow keys: the form and the answer follow
+    await page.goto('about:blank');
+    await page.goto(`${base}/#tops`);
+    await page.waitForFunction(() => document.querySelector('#top-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    check(await sliderOk(page, '#top-tilt') && await sliderOk(page, '#top-spin'), `${tag}: tops: tilt and spin are sliders`);
+    const th0 = await page.getAttribute('#top-thmin', 'data-value');
+    await drag(page, '#top-tilt', 25, 10);
+    await page.waitForFunction((t) => document.getElementById('top-thmin').dataset.value !== t, th0, {timeout: 30000});
+    await page.waitForFunction(() => document.querySelector('#top-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    const th = Number(await page.inputValue('#top-theta'));
+    // released with φ̇0 = 0 the axis starts at a turning point: θ0 is the smallest θ (the top falls from it)
+    check(th > 0.5 && Math.abs(await value(page, '#top-thmin') - th) < 1e-6, `${tag}: tops: tilt dragged to θ0 = ${th} rad, the smallest θ is θ0`);
+    await page.focus('#top-spin'); await page.keyboard.press('ArrowUp'); await page.keyboard.press('ArrowUp');
+    await page.waitForFunction(() => document.getElementById('top-psidot').value === '70', null, {timeout: 5000});
+    check(true, `${tag}: tops: two ArrowUp presses spin it 10 rad/s faster (60 -> 70)`);
+
+    // Inertia: the unit cube (1 kg) moved: about the corner its moments are 1/6 and 1/6 + |c|² twice (c its centre)
+    await page.goto('about:blank');
+    await page.goto(`${base}/#inertia`);
+    await settled(page);
+    check(await sliderOk(page, '#inertia-part-0'), `${tag}: inertia: the part is a slider`);
+    const m0 = await page.getAttribute('#inertia-moment-1', 'data-value');
+    await drag(page, '#inertia-part-0', -30, 0);
+    await page.waitForFunction((m) => document.getElementById('inertia-moment-1').dataset.value !== m, m0, {timeout: 20000});
+    await settled(page); await page.waitForTimeout(300);
+    const cpos = await Promise.all([0, 1, 2].map(j => page.inputValue(`#inertia-pos-0-${j}`).then(Number)));
+    const c2 = cpos.reduce((s2, v) => s2 + v * v, 0);
+    check(Math.abs(await value(page, '#inertia-moment-1') - (1 / 6 + c2)) < 1e-12 && Math.abs(await value(page, '#inertia-moment-0') - 1 / 6) < 1e-12,
+      `${tag}: inertia: the cube dragged to (${cpos}): moments 1/6 and 1/6 + |c|² = ${1 / 6 + c2}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-drag-inertia.png`)});
     check(page.errors.length === 0, `${tag}: handles: no script errors (${page.errors.join(' | ')})`);
   } catch (e) {
     check(false, `${tag}: handles: ${e.message.split('\n')[0]}`);
@@ -364,7 +450,7 @@ for (const width of [1280, 390]) {
     await page.fill('#orb-n', '100000');
     await page.selectOption('#orb-cost-acc', 'draft');
     await page.click('#orb-submit');
-    await page.waitForFunction(() => document.querySelector('#orb-submit').form.dataset.state === 'done', null, {timeout: 120000});
+    await page.waitForFunction(() => document.querySelector('#orb-submit')?.form.dataset.state === 'done', null, {timeout: 120000});
     const st = await page.evaluate(() => ({lines: document.querySelectorAll('#orb-plot g.data polyline').length,
       dots: document.querySelectorAll('#orb-plot g.data circle').length,
       top: Math.max(...[...document.getElementById('orb-exaggerate').options].map(o => Number(o.value))),

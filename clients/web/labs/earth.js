@@ -293,7 +293,7 @@ function aimDial(root, v, e, onMove) {
     svg('text', {x: 30, y: 18, 'font-size': 14, fill: '#c92a2a', 'font-weight': 700, 'data-role': 'aim-words'}, words(...tip)),
     handle(root, {id: 'can-aim-tip', X, Y, at: tip, color: '#c92a2a', step: [10, 10], label: 'launch velocity (the arrow\'s tip)', text: words,
       onMove: (vx, vz, done) => {
-        const sp = Math.min(1000, Math.max(1, Math.round(Math.hypot(vx, vz)))), el0 = Math.min(90, Math.max(0, Math.round(Math.atan2(vz, vx) * 360 / Math.PI) / 2));
+        const sp = Math.min(1000, Math.max(1, Math.round(Math.hypot(vx, vz)))), el0 = Math.min(90, Math.max(0, Math.round(Math.atan2(vz, vx) * 1800 / Math.PI) / 10));
         onMove(sp, el0, done);
       }}));
 }
