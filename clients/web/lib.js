@@ -579,14 +579,18 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   const hover = []; // [px, py, x, y, series label, colour] of every drawn sample
   const data = svg('g', {class: 'data'});
   add(root, data);
+  const growing = []; // series that grow with an animation: [their element(s), projected points, times]
   series.forEach((s, i) => {
     const c = s.color || colors[i % colors.length];
-    const q = s.points.filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
+    const keep = s.points.map((p, k) => k).filter(k => isFinite(tx(s.points[k][0])) && isFinite(ty(s.points[k][1])));
+    const q = keep.map(k => s.points[k]);
     const p = q.map(r => [X(tx(r[0])), Y(ty(r[1]))]);
     p.forEach((r, k) => hover.push([r[0], r[1], q[k][0], q[k][1], s.label || '', c]));
-    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c}));
-    else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
+    let drawn;
+    if (s.dots) { drawn = p.map(r => svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c})); add(data, drawn); }
+    else add(data, drawn = svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
+    if (Array.isArray(s.t)) growing.push([drawn, p, keep.map(k => s.t[k])]);
     if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
     const k = series.slice(0, i).filter(q => q.label).length, lx = below ? 12 : m.l + 8;
     const ly = below ? height - 8 - 20 * (nLeg - 1 - k) : legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
@@ -595,6 +599,22 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
       svg('text', {x: lx + 24, y: ly, fill: textShade(c), 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
   for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b, frame: [x0, x1, y0, y1]}));
+  // growing with the animation (anim.js player's grow): the samples up to time t and the point between two
+  // samples at t; Infinity draws everything
+  root._grow = (t) => {
+    root._growT = t;
+    root.dataset.grownTo = String(t);
+    for (const [drawn, p, ts] of growing) {
+      let k = ts.length - 1;
+      if (t !== Infinity) { k = -1; while (k + 1 < ts.length && ts[k + 1] <= t) k++; }
+      if (Array.isArray(drawn)) { drawn.forEach((d, j) => d.setAttribute('visibility', j <= k ? 'visible' : 'hidden')); continue; }
+      const pts = p.slice(0, k + 1);
+      if (k >= 0 && k + 1 < ts.length && t > ts[k]) { const f = (t - ts[k]) / (ts[k + 1] - ts[k]);
+        pts.push([p[k][0] + (p[k + 1][0] - p[k][0]) * f, p[k][1] + (p[k + 1][1] - p[k][1]) * f]); }
+      drawn.setAttribute('points', pts.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '));
+    }
+  };
+  if (root._growT !== undefined && root._growT !== Infinity) root._grow(root._growT);
   // hover / touch read-out: the nearest sample's values
   const dot = svg('circle', {r: 6, fill: 'none', stroke: '#111', 'stroke-width': 2, visibility: 'hidden'});
   const tip = svg('text', {'font-size': 14, 'font-weight': 700, class: 'readout', visibility: 'hidden'});

@@ -108,7 +108,7 @@ export default {
       const pts = pos.map(p => [p[0] * 100, Math.abs(p[2]) < 1e-9 ? 0 : p[2]]); // the landing's −1.4e-14 m is the ground
       const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
       let XY = null, cur = pts[0];
-      linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
+      linePlot(pathPlot, [{points: pts, label: 'with Coriolis', t}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
         {xlabel: 'east [cm]', ylabel: 'height [m]', name: 'falling-object-path', legend: 'below', marks: [({X, Y}) => {
           XY = [X, Y]; dot.setAttribute('cx', X(cur[0])); dot.setAttribute('cy', Y(cur[1]));
           // px per metre across (X counts cm) over px per metre up: how much the drift is magnified
@@ -120,7 +120,7 @@ export default {
         const j = Math.min(i + 1, pts.length - 1);
         cur = [pts[i][0] + (pts[j][0] - pts[i][0]) * f, pts[i][1] + (pts[j][1] - pts[i][1]) * f];
         if (XY) { dot.setAttribute('cx', XY[0](cur[0])); dot.setAttribute('cy', XY[1](cur[1])); }
-      });
+      }, {grow: [pathPlot]});
     };
     // cannonball
     const cs = field({label: 'speed', pointer: '/speed', value: 500, unit: 'm/s', id: 'can-speed'});
@@ -162,8 +162,11 @@ export default {
     const flightNote = el('p', {class: 'muted', id: 'can-path-note', 'aria-live': 'off'});
     const flightCurl = curlBox();
     put(flightCurl.box.querySelector('h3'), 'The animation\'s request');
-    const canPlay = player({label: 'The cannonball'});
-    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, flightCurl.box);
+    const canPlay = player({label: 'The cannonball', reverse: 'Backwards: without air the flight run backwards is a flight too, on an Earth turning the other way (the Coriolis force changes sign with the velocity).'});
+    const canEnergy = svg('svg', {class: 'plot dial energy', id: 'can-energy', role: 'img', 'aria-label': 'energy bars'});
+    const canForces = el('p', {class: 'muted', id: 'can-forces'});
+    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, canForces,
+      el('h3', {}, 'Energy (per kg)'), canEnergy, flightCurl.box);
     let flightCtl = null;
     const flight = async (a) => {
       const P = a.parameters, el0 = P.elevation_deg * Math.PI / 180, az = P.azimuth_deg * Math.PI / 180; // velocity: (east, north, up)
@@ -178,26 +181,44 @@ export default {
       const r = await api('/v1/trajectory', body, {signal: mine.signal});
       if (mine !== flightCtl || r.aborted) return;
       if (!r.ok || !r.body || !Array.isArray(r.body.t)) { flightNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
-      let t = r.body.t.slice(), pos = r.body.position.slice();
+      let t = r.body.t.slice(), pos = r.body.position.slice(), vel = (r.body.velocity || []).slice();
       const st = r.body.stopped;
-      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
-        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); vel = vel.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); vel.push(st.velocity || vel[vel.length - 1]); } }
       const down = (p) => p[0] * aim[0] + p[1] * aim[1], side = (p) => p[0] * right[0] + p[1] * right[1];
+      // on the moving ball: its velocity (1 km of arrow per 100 m/s) and its weight mg (m = 1 kg); the Coriolis
+      // force −2m ω×v (ω = ω(0, cos λ, sin λ) east-north-up) is mostly sideways, out of this picture: said in words;
+      // energy bars: ½mv² and mgz, their sum level (the Coriolis force does no work: it is always across v)
+      const Om = 7.292115e-5, lat = P.latitude_deg * Math.PI / 180, wv = [0, Om * Math.cos(lat), Om * Math.sin(lat)];
+      const coriolis = (v) => [-2 * (wv[1] * v[2] - wv[2] * v[1]), -2 * (wv[2] * v[0] - wv[0] * v[2]), -2 * (wv[0] * v[1] - wv[1] * v[0])];
+      const vecs = svg('g', {id: 'can-vectors'});
       const pts = pos.map(p => [down(p) / 1000, p[2] / 1000]);
       const ball = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'can-ball'});
       let XY = null, cur = pts[0];
-      linePlot(flightPlot, [{points: pts, label: 'with Coriolis'}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
-        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1])); return ball; }]});
+      linePlot(flightPlot, [{points: pts, label: 'with Coriolis', t}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
+        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1]));
+          const g = svg('g', {}); add(g, vecs, ball); return g; }]});
       canPlay.set(t, (i, f, tt) => {
         const j = Math.min(i + 1, pos.length - 1), p = pos[i].map((x, k) => x + (pos[j][k] - x) * f);
+        const v = vel.length === pos.length ? vel[i].map((x, k) => x + (vel[j][k] - x) * f) : null;
         cur = [down(p) / 1000, p[2] / 1000];
         if (XY) { ball.setAttribute('cx', XY[0](cur[0])); ball.setAttribute('cy', XY[1](cur[1])); }
+        if (XY && v) {
+          const bx = XY[0](cur[0]), by = XY[1](cur[1]), kx = XY[0](1) - XY[0](0); // px per km
+          put(vecs, arrow(bx, by, bx + kx * down(v) / 100, by - kx * v[2] / 100, '#1864ab', 'v'),
+            arrow(bx, by, bx, by + 46, '#5c3b00', 'mg'));
+          const fc = coriolis(v), E = [0.5 * (v[0] ** 2 + v[1] ** 2 + v[2] ** 2), P.g * p[2]];
+          energyBars(canEnergy, [['kinetic ½mv²', E[0], '#1864ab'], ['potential mgz', E[1], '#5c3b00'], ['total', E[0] + E[1], '#111']],
+            0.5 * (vel[0][0] ** 2 + vel[0][1] ** 2 + vel[0][2] ** 2), 'J');
+          canForces.textContent = `On the ball (m = 1 kg): weight mg = ${fmt(P.g, 4)} N down; Coriolis −2m ω×v = ${fmt(Math.hypot(...fc), 3)} N, ` +
+            `${fmt(side(fc), 3)} N to the right of the aim and ${fmt(fc[2], 3)} N up; speed ${fmt(Math.hypot(...v), 4)} m/s (blue arrow: 1 km per 100 m/s).`;
+        }
         flightNote.dataset.right = String(side(p));
         flightNote.dataset.down = String(down(p));
         const up = Math.abs(p[2]) < 1e-6 ? 0 : p[2]; // the landing sample's round-off, not "-4.5e-16 km up"
         flightNote.textContent = `t = ${fmt(tt, 4)} s: ${fmt(down(p) / 1000, 4)} km downrange, ${fmt(up / 1000, 4)} km up, ` +
           `${fmt(side(p), 3)} m to the right of the aim (too small to see at this scale: the plan view above magnifies it).`;
-      });
+      }, {grow: [flightPlot]}); // the flight's path grows behind the ball as it plays
     };
     // Foucault
     const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat', min: -90, max: 90});
@@ -431,4 +452,28 @@ function foucaultGlobe(G, box, note, play, a, ground) {
     box.dataset.swingDeg = String(turn * 180 / Math.PI);
     G.render();
   });
+}
+
+// An arrow from (x1, y1) to (x2, y2) in SVG units, with its head and a label by the tip.
+function arrow(x1, y1, x2, y2, color, text) {
+  const g = svg('g', {'data-role': 'vector', 'data-name': text});
+  const a = Math.atan2(y2 - y1, x2 - x1), L = Math.hypot(x2 - x1, y2 - y1), h = Math.min(10, L / 2);
+  add(g, svg('line', {x1, y1, x2, y2, stroke: color, 'stroke-width': 3}));
+  if (L > 2) add(g, svg('path', {d: `M ${x2} ${y2} L ${x2 - h * Math.cos(a - 0.45)} ${y2 - h * Math.sin(a - 0.45)} L ${x2 - h * Math.cos(a + 0.45)} ${y2 - h * Math.sin(a + 0.45)} z`, fill: color}),
+    svg('text', {x: x2 + 6, y: y2 - 4, 'font-size': 14, 'font-weight': 700, fill: color}, text));
+  return g;
+}
+
+// Energy bars: [[name, value, colour], …] against a reference value (the first bar's full height), unit said.
+function energyBars(root, bars, ref, unit) {
+  const W = 300, H = 150, base = 120, k = 95 / (Math.abs(ref) || 1), w = 60;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  add(root, svg('line', {x1: 8, y1: base, x2: W - 8, y2: base, stroke: '#555'}));
+  bars.forEach(([name, v, c], i) => {
+    const x = 20 + i * (w + 36), h = Math.max(-25, Math.min(110, v * k));
+    add(root, svg('rect', {x, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: c, 'data-role': 'bar', 'data-value': String(v)}),
+      svg('text', {x: x + w / 2, y: H - 14, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, name),
+      svg('text', {x: x + w / 2, y: H - 1, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, `${fmt(v / 1000, 3)} k${unit}`));
+  });
+  root.setAttribute('aria-label', 'energy: ' + bars.map(([n, v]) => `${n} ${fmt(v / 1000, 3)} k${unit}`).join(', '));
 }

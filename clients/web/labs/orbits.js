@@ -42,7 +42,7 @@ export default {
     const exId = 'orb-exaggerate';
     const exSel = el('select', {id: exId, 'data-role': 'exaggerate'});
     const exNote = el('span', {class: 'muted', id: 'orb-ex-note'});
-    const play = player({label: 'The orbit'});
+    const play = player({label: 'The orbit', reverse: 'Backwards: the same orbit travelled the other way round, also a geodesic (gravity has no friction: t → −t is a motion too); the perihelion still advances, in the direction of travel.'});
     add(L.figure, el('h3', {}, 'The orbit'),
       el('div', {class: 'exaggerate'}, el('label', {for: exId}, 'Precession drawn'), exSel, exNote), plot, play.root,
       el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked in red. With the precession exaggerated, each ',
@@ -65,7 +65,7 @@ export default {
       const planet = svg('circle', {r: 7, fill: '#1864ab', stroke: '#fff', 'stroke-width': 2, id: 'orb-planet'});
       let XY = null;
       const what = sparse ? `1 point per ${fmt(lastOrbits / s.r.length, 2)} orbits` : 'orbit';
-      linePlot(plot, [{points: xy, label: k === 1 ? what : `${what}, ${sparse ? '' : 'precession '}×${exLabel(k)}`, dots: sparse, r: 1.8},
+      linePlot(plot, [{points: xy, label: k === 1 ? what : `${what}, ${sparse ? '' : 'precession '}×${exLabel(k)}`, dots: sparse, r: 1.8, t: s.t},
         sparse ? null : {points: peri, label: 'perihelia', dots: true, color: '#c92a2a'}].filter(Boolean),
         {xlabel: 'x [m]', ylabel: 'y [m]', equal: true, name: 'orbit', height: 560, legend: 'below', frame: dragFrame || undefined, marks: [({X, Y, frame}) => {
           XY = [X, Y];
@@ -96,7 +96,7 @@ export default {
       play.set(s.t, (i, f) => {
         const j = Math.min(i + 1, xy.length - 1), x = xy[i][0] + (xy[j][0] - xy[i][0]) * f, y = xy[i][1] + (xy[j][1] - xy[i][1]) * f;
         if (XY) { planet.setAttribute('cx', XY[0](x)); planet.setAttribute('cy', XY[1](y)); }
-      });
+      }, {grow: [plot]}); // the path grows behind the planet as it plays
     };
     exSel.addEventListener('change', drawOrbit);
     let dragFrame = null;

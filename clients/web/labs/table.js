@@ -64,13 +64,20 @@ export default {
     // a group: the puck's start and its launch velocity are handles on it (drag them, or focus and use the arrow keys)
     const room = svg('svg', {class: 'plot', id: 'table-room', role: 'group', 'aria-label': 'The puck seen from the room (inertial frame): drag its start or its velocity arrow'});
     const onTable = svg('svg', {class: 'plot', id: 'table-table', role: 'img', 'aria-label': 'The puck seen from the turning table'});
-    const play = player({label: 'The rotating table'});
+    const tableEnergy = svg('svg', {class: 'plot dial energy', id: 'table-energy', role: 'img', 'aria-label': 'energy bars'});
+    const play = player({label: 'The rotating table', reverse: 'Backwards: in the room, the same straight line run back; on the table, the motion on a table turning the other way (ω → −ω: the Coriolis force changes sign with the velocity, the centrifugal force does not).'});
     add(L.figure, el('div', {class: 'pair two'},
       el('div', {}, el('h3', {}, 'From the room (inertial)'), room),
       el('div', {}, el('h3', {}, 'From the table (rotating)'), onTable)), play.root,
     el('p', {class: 'muted', id: 'table-legend'}, el('span', {class: 'c1'}, 'red: the puck and its path so far'), '; ',
       el('span', {class: 'c3'}, 'blue: a line painted on the table'), '; dashed: the whole path (right: the API\'s exact ' +
-      'rotated line, under the integrated one).'));
+      'rotated line, under the integrated one).'),
+    el('p', {class: 'muted', id: 'table-vectors-legend'}, 'On the puck seen from the table (right): ', el('span', {class: 'c3'}, 'v′ its velocity'),
+      ', ', el('span', {class: 'c4'}, 'the centrifugal force mω²r′'), ', ', el('span', {class: 'c2'}, 'the Coriolis force −2mω×v′'),
+      ' and in black their sum, the net force (forces to one scale, the velocity to its own).'),
+    el('h3', {}, 'Energy seen from the table'), tableEnergy,
+    el('p', {class: 'muted'}, 'Seen from the table, ½mv′² and the centrifugal potential −½mω²r′² trade, their sum (the Jacobi integral) level: ',
+      'the Coriolis force does no work, being always across v′.'));
 
     const tableNotes = notesBox('table-notes');
     const run = runner(L, '/v1/scenes/rotating-table', () => {
@@ -109,7 +116,7 @@ export default {
           el('dt', {}, 'integrated vs exact'), num('table-err', a.rotating_vs_exact.max_position_error, 'm'),
           inv ? el('dt', {}, 'Jacobi integral drift') : null, inv ? num('table-jacobi', inv.max_relative_drift) : null),
         tableNotes.box);
-      draw(room, onTable, a, play, {R: dragR, launch});
+      draw(room, onTable, a, play, {R: dragR, launch, energy: tableEnergy});
       plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
         a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});
     });
@@ -135,7 +142,7 @@ export default {
 
 // Both panels, to the same scale; the player moves the puck on both and turns
 // the table on the left (the line painted on it turns with ωt).
-function draw(room, onTable, a, play, {R: fixedR, launch} = {}) {
+function draw(room, onTable, a, play, {R: fixedR, launch, energy} = {}) {
   const pts = [...a.inertial, ...a.rotating];
   const R = fixedR || Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
   const w = a.parameters.omega;
@@ -161,7 +168,26 @@ function draw(room, onTable, a, play, {R: fixedR, launch} = {}) {
   const trailA = A.path([], {stroke: '#c92a2a', 'stroke-width': 3}), trailB = B.path([], {stroke: '#c92a2a', 'stroke-width': 3});
   const puckA = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
   const puckB = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
-  add(room, trailA, puckA); add(onTable, trailB, puckB);
+  const vecs = svg('g', {id: 'table-vectors'});
+  add(room, trailA, puckA); add(onTable, trailB, vecs, puckB);
+  // seen from the table: v′ = R(−ωt)(v − ω×r) from the room's constant velocity v, the centrifugal force mω²r′,
+  // the Coriolis force −2mω×v′ = 2mω(v′y, −v′x), the net force their sum; scales fixed by the start
+  const m = a.parameters.mass, v0 = a.initial ? a.initial.velocity_inertial : null;
+  const seen = (p, t) => {
+    const u = [v0[0] + w * p[1], v0[1] - w * p[0]], c = Math.cos(w * t), s = Math.sin(w * t);
+    const vp = [c * u[0] + s * u[1], -s * u[0] + c * u[1]];
+    return vp;
+  };
+  const forces = (q, vp) => { const cf = [m * w * w * q[0], m * w * w * q[1]], co = [2 * m * w * vp[1], -2 * m * w * vp[0]];
+    return {cf, co, net: [cf[0] + co[0], cf[1] + co[1]]}; };
+  let kF = 0, kV = 0, E0 = 1;
+  if (v0) {
+    const vp0 = seen(a.inertial[0], 0), F0 = forces(a.rotating[0], vp0), sB = B.X(1) - B.X(0);
+    kF = 50 / (Math.max(...[F0.cf, F0.co, F0.net].map(f => Math.hypot(f[0], f[1]))) || 1);
+    kV = 50 / (Math.hypot(vp0[0], vp0[1]) || 1);
+    E0 = Math.max(0.5 * m * (vp0[0] ** 2 + vp0[1] ** 2), 0.5 * m * w * w * (a.rotating[0][0] ** 2 + a.rotating[0][1] ** 2)) || 1;
+    void sB;
+  }
   // the painted line lies along the table's x′ axis: at angle ωt in the room, fixed on the table
   const paint = (G, ang) => {
     const c = R * 0.98 * Math.cos(ang), d = R * 0.98 * Math.sin(ang);
@@ -195,7 +221,17 @@ function draw(room, onTable, a, play, {R: fixedR, launch} = {}) {
     trailA.setAttribute('points', trail(A, a.inertial, i, p)); trailB.setAttribute('points', trail(B, a.rotating, i, q));
     paint(A, w * t);
     room.dataset.puck = `${p[0].toFixed(4)},${p[1].toFixed(4)}`; onTable.dataset.puck = `${q[0].toFixed(4)},${q[1].toFixed(4)}`;
-  });
+    if (v0) {
+      const vp = seen(p, t), F = forces(q, vp), bx = B.X(q[0]), by = B.Y(q[1]);
+      const ar = (f, k, c, name) => arrow(bx, by, bx + k * f[0], by - k * f[1], c, name);
+      put(vecs, ar(F.cf, kF, '#a65300', 'cf'), ar(F.co, kF, '#1f6f30', 'Cor'), ar(F.net, kF, '#111', 'net'), ar(vp, kV, '#1864ab', 'v′'));
+      onTable.dataset.forces = JSON.stringify(F);
+      if (energy) {
+        const K = 0.5 * m * (vp[0] ** 2 + vp[1] ** 2), U = -0.5 * m * w * w * (q[0] ** 2 + q[1] ** 2);
+        energyBars(energy, [['½mv′²', K, '#1864ab'], ['−½mω²r′²', U, '#a65300'], ['sum', K + U, '#111']], E0);
+      }
+    }
+  }, {grow: []});
 }
 // An SVG arrowhead marker of the colour given.
 function arrowHead(id, color) {
@@ -204,3 +240,27 @@ function arrowHead(id, color) {
   return m;
 }
 const niceLen = (x) => { const p = 10 ** Math.floor(Math.log10(x)), m = x / p; return (m < 2 ? 1 : m < 5 ? 2 : 5) * p; };
+
+// An arrow from (x1, y1) to (x2, y2) in SVG units, its head and a short name by the tip.
+function arrow(x1, y1, x2, y2, color, text) {
+  const g = svg('g', {'data-role': 'vector', 'data-name': text});
+  const a = Math.atan2(y2 - y1, x2 - x1), L = Math.hypot(x2 - x1, y2 - y1), h = Math.min(9, L / 2);
+  add(g, svg('line', {x1, y1, x2, y2, stroke: color, 'stroke-width': 2.5}));
+  if (L > 2) add(g, svg('path', {d: `M ${x2} ${y2} L ${x2 - h * Math.cos(a - 0.45)} ${y2 - h * Math.sin(a - 0.45)} L ${x2 - h * Math.cos(a + 0.45)} ${y2 - h * Math.sin(a + 0.45)} z`, fill: color}),
+    svg('text', {x: x2 + 5, y: y2 - 4, 'font-size': 12, 'font-weight': 700, fill: color}, text));
+  return g;
+}
+
+// Energy bars (in J) against a reference height E0: the bars' heights, names and values, read out in aria-label.
+function energyBars(root, bars, E0) {
+  const W = 300, H = 170, base = 85, k = 60 / (Math.abs(E0) || 1), w = 60;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  add(root, svg('line', {x1: 8, y1: base, x2: W - 8, y2: base, stroke: '#555'}));
+  bars.forEach(([name, v, c], i) => {
+    const x = 20 + i * (w + 36), h = Math.max(-75, Math.min(80, v * k));
+    add(root, svg('rect', {x, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: c, 'data-role': 'bar', 'data-value': String(v)}),
+      svg('text', {x: x + w / 2, y: 14, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, name),
+      svg('text', {x: x + w / 2, y: H - 2, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, `${fmt(v, 3)} J`));
+  });
+  root.setAttribute('aria-label', 'energy seen from the table: ' + bars.map(([n, v]) => `${n} ${fmt(v, 3)} J`).join(', '));
+}

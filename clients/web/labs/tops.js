@@ -57,7 +57,7 @@ export default {
     add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
-    const play = player({label: 'The top'});
+    const play = player({label: 'The top', reverse: 'Backwards: a top run backwards is a top too, spinning and precessing the other way (no friction: the equations are the same with t → −t, ψ̇ → −ψ̇, φ̇ → −φ̇).'});
     add(L.figure, el('h3', {}, 'The top in 3-D'), box3d, play.root,
       el('p', {class: 'muted'}, 'Tip fixed at the origin, z up. The blue curve is the path of the symmetry axis\' end ',
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
@@ -92,7 +92,7 @@ export default {
       const d = req.distance > 0 ? req.distance : 0.1, Lx = d * 1.5;
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
       let Xs = null, tCur = 0;
-      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ'}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
+      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ', t: a.t}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
         marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
           cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
       // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
@@ -127,7 +127,7 @@ export default {
         trace.geometry.setDrawRange(0, i + 1);
         V.render();
         tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
-      });
+      }, {grow: [theta]}); // θ(t) grows as it plays
     });
     run(); cost.predict();
 
