@@ -401,6 +401,69 @@ for (const width of [1280, 390]) {
   } finally { await page.close(); }
 }
 
+// --- a live view: step, frame keys, backwards, graphs that grow, vectors and energy bars ---
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    // the rotating table: one step is one sample (161 samples over the run), the key . another
+    await page.goto(`${base}/#table`);
+    await settled(page);
+    const pl = page.locator('main .player').first(); // the table's one player
+    await pl.locator('[data-role=step]').click();
+    const t1 = Number(await pl.getAttribute('data-time'));
+    await page.keyboard.press('.'); await page.keyboard.press('.');
+    const t3 = Number(await pl.getAttribute('data-time'));
+    const T = Number(await page.getAttribute('#table-t', 'data-value'));
+    check(Math.abs(t1 - T / 160) < 1e-9 * T && Math.abs(t3 - 3 * T / 160) < 1e-9 * T,
+      `${tag}: table: |▶ steps one sample (t = ${t1}, T/160 = ${T / 160}) and the key . two more (t = ${t3})`);
+    await page.keyboard.press(',');
+    check(Math.abs(Number(await pl.getAttribute('data-time')) - 2 * T / 160) < 1e-9 * T, `${tag}: table: the key , steps one back`);
+    // the forces drawn on the puck: centrifugal mω²r′ and Coriolis −2mω×v′ (m = 1 kg, ω = 1 rad/s), net their sum;
+    // the energy bars' sum ½mv′² − ½mω²r′² (the Jacobi integral) stays level as it plays
+    const F = JSON.parse(await page.getAttribute('#table-table', 'data-forces'));
+    const q = (await page.getAttribute('#table-table', 'data-puck')).split(',').map(Number);
+    check(Math.abs(F.cf[0] - q[0]) < 1e-3 && Math.abs(F.cf[1] - q[1]) < 1e-3 && Math.abs(F.net[0] - F.cf[0] - F.co[0]) < 1e-12 &&
+      await page.$$eval('#table-vectors [data-role=vector]', (v) => v.map(x => x.dataset.name).join(',')) === 'cf,Cor,net,v′',
+      `${tag}: table: v′, centrifugal (mω²r′ = ${F.cf.map(x => x.toFixed(4))} at r′ = ${q}), Coriolis and net drawn on the puck`);
+    const sum = () => page.$eval('#table-energy [data-role=bar]:last-of-type', (r) => Number(r.dataset.value));
+    const E1 = await sum();
+    for (let k = 0; k < 60; k++) await page.keyboard.press('.');
+    const E2 = await sum();
+    const bars = await page.$$eval('#table-energy [data-role=bar]', (rs) => rs.map(r => Number(r.dataset.value)));
+    check(Math.abs(E2 - E1) < 1e-6 * Math.abs(E1) && Math.abs(bars[0] + bars[1] - bars[2]) < 1e-12 && Math.abs(bars[0] - E1) > 1e-3,
+      `${tag}: table: the energy bars trade (½mv′² = ${bars[0].toFixed(4)} J now) while their sum stays level (${E1} -> ${E2} J)`);
+    // backwards: Play runs time the other way; the reverse note says what the reversed film is
+    await pl.locator('[data-role=reverse]').click();
+    check(await pl.getAttribute('data-backwards') === 'true' && /turning the other way/.test(await pl.locator('[data-role=reverse-note]').textContent()),
+      `${tag}: table: Backwards is on and says what the reversed motion is`);
+    const tb = Number(await pl.getAttribute('data-time'));
+    await pl.locator('[data-role=play]').click(); await page.waitForTimeout(400);
+    await page.evaluate(() => { const b = document.querySelector('main .player [data-role=play]');
+      if (b.getAttribute('aria-pressed') === 'true') b.click(); });
+    check(Number(await pl.getAttribute('data-time')) < tb, `${tag}: table: played backwards, the time runs down (${tb} -> ${await pl.getAttribute('data-time')})`);
+    await page.locator('#table-room').scrollIntoViewIfNeeded();
+    await page.screenshot({path: path.join(shots, `sim-${tag}-live-table.png`)});
+    // the top's θ(t) grows as the top plays: after stepping, only the samples up to t are drawn (801 in all)
+    await page.goto('about:blank');
+    await page.goto(`${base}/#tops`);
+    await page.waitForFunction(() => document.querySelector('#top-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    const n = () => page.$eval('#top-theta-plot g.data polyline', (p) => p.getAttribute('points').trim().split(/\s+/).length);
+    const full = await n();
+    const tpl = page.locator('#top-3d-box ~ .player');
+    await tpl.locator('[data-role=time]').focus(); await page.keyboard.press('Home');
+    for (let k = 0; k < 5; k++) await page.keyboard.press('ArrowRight'); // 5/1000 of the run: 2 s → 0.01 s, between samples 4 and 5
+    const grown = await n();
+    check(full === 801 && grown >= 2 && grown <= 8, `${tag}: tops: θ(t) drawn whole (${full} points) until played, then only its past (${grown} points at t = ${await tpl.getAttribute('data-time')} s)`);
+    await page.keyboard.press('End');
+    check(await n() === 801, `${tag}: tops: at the end θ(t) is whole again`);
+    check(page.errors.length === 0, `${tag}: live view: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: live view: ${e.message.split('\n')[0]}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-live-failed.png`)}).catch(() => {});
+  } finally { await page.close(); }
+}
+
 // --- the smaller things --------------------------------------------------------
 for (const width of [1280, 390]) {
   const tag = width < 500 ? 'phone' : 'desktop';
