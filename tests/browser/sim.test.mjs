@@ -457,6 +457,12 @@ for (const width of [1280, 390]) {
     check(full === 801 && grown >= 2 && grown <= 8, `${tag}: tops: θ(t) drawn whole (${full} points) until played, then only its past (${grown} points at t = ${await tpl.getAttribute('data-time')} s)`);
     await page.keyboard.press('End');
     check(await n() === 801, `${tag}: tops: at the end θ(t) is whole again`);
+    // L, ω and τ on the top: L·ẑ = p_φ and L·ê3 = I3 ω3 are conserved (released with φ̇0 = 0: p_φ = I3 ψ̇ cos θ0 = 0.01·60·cos 0.5),
+    // τ = Mgh ẑ × ê3 is horizontal, of size Mgh sin θ (M = 1 kg, h = 0.1 m)
+    const vec = JSON.parse(await page.getAttribute('#top-vectors', 'data-vectors'));
+    const pphi = 0.01 * 60 * Math.cos(0.5), tauMag = Math.hypot(...vec.tau);
+    check(Math.abs(vec.L[2] - pphi) < 2e-3 * pphi && vec.tau[2] === 0 && Math.abs(vec.tau[0] * vec.L[0] + vec.tau[1] * vec.L[1]) < 0.05 * tauMag * Math.hypot(...vec.L),
+      `${tag}: tops: L, ω, τ drawn at the end: L·ẑ = ${vec.L[2]} against p_φ = ${pphi}, τ horizontal (${tauMag.toFixed(4)} N m) and across L`);
     check(page.errors.length === 0, `${tag}: live view: no script errors (${page.errors.join(' | ')})`);
   } catch (e) {
     check(false, `${tag}: live view: ${e.message.split('\n')[0]}`);

@@ -4,7 +4,7 @@
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {handle, rerun} from '../handles.js';
-import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
+import {THREE, view3d, polyline, sceneAxes, axesArrows, label} from '../view3d.js';
 
 const BUILTIN = [{title: 'Fast top: I1 = 0.02, I3 = 0.01, θ0 = 0.5, ψ̇ = 60 rad/s', operation: '/v1/rigid/top',
   request: {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, psi_dot: 60, t_end: 2, samples: 801}},
@@ -57,11 +57,12 @@ export default {
     add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
+    const vecNote = el('p', {id: 'top-vectors', 'aria-live': 'off'});
     const play = player({label: 'The top', reverse: 'Backwards: a top run backwards is a top too, spinning and precessing the other way (no friction: the equations are the same with t → −t, ψ̇ → −ψ̇, φ̇ → −φ̇).'});
     add(L.figure, el('h3', {}, 'The top in 3-D'), box3d, play.root,
       el('p', {class: 'muted'}, 'Tip fixed at the origin, z up. The blue curve is the path of the symmetry axis\' end ',
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
-      el('h3', {}, 'θ(t)'), theta);
+      vecNote, el('h3', {}, 'θ(t)'), theta);
     const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
@@ -118,6 +119,43 @@ export default {
       const floor = new THREE.Mesh(new THREE.CircleGeometry(Lx, 64), new THREE.MeshBasicMaterial({color: 0xeeeeee, side: THREE.DoubleSide}));
       floor.position.z = -0.001; world.add(floor);
       V.frame(Lx * 0.8, [0, 0, d * 0.6]);
+      // L, ω and τ on the top as it plays: ω = φ̇ ẑ + θ̇ n̂ + ψ̇ ê3 (n̂ the line of nodes (cos φ, sin φ, 0), the
+      // rates from the samples), L = I1 (ω − ω3 ê3) + I3 ω3 ê3, τ = h ê3 × (−M g ẑ); each arrow scaled to its
+      // size at the release, its value said under the view
+      const I1 = req.I1, I3 = req.I3, Mgh = req.mass * (req.g ?? 9.80665) * req.distance;
+      const rate = (arr, k) => { const a0 = Math.max(0, k - 1), a1 = Math.min(a.t.length - 1, k + 1); return (arr[a1] - arr[a0]) / (a.t[a1] - a.t[a0]); };
+      const vectorsAt = (k) => {
+        const th = a.theta[k], ph = a.phi[k], e3 = [Math.sin(th) * Math.sin(ph), -Math.sin(th) * Math.cos(ph), Math.cos(th)];
+        const nn = [Math.cos(ph), Math.sin(ph), 0], pd = rate(a.phi, k), td = rate(a.theta, k), sd = rate(a.psi, k);
+        const w = [0, 1, 2].map(c => pd * (c === 2 ? 1 : 0) + td * nn[c] + sd * e3[c]);
+        const w3 = w[0] * e3[0] + w[1] * e3[1] + w[2] * e3[2];
+        const Lv = w.map((x, c) => I1 * (x - w3 * e3[c]) + I3 * w3 * e3[c]);
+        const tau = [-Mgh * e3[1], Mgh * e3[0], 0];
+        return {w, L: Lv, tau};
+      };
+      const v0 = vectorsAt(0), mag = (v) => Math.hypot(v[0], v[1], v[2]);
+      const arrows = [['L', 0xc92a2a], ['ω', 0x2b8a3e], ['τ', 0xa65300]].map(([nm, col]) => {
+        const h = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(0, 0, 0), d, col, 0.15 * d, 0.08 * d);
+        const s = label(nm, '#' + col.toString(16).padStart(6, '0')); s.scale.multiplyScalar(d * 0.25);
+        world.add(h, s); return [h, s];
+      });
+      const place = (k) => {
+        const v = vectorsAt(k);
+        [[v.L, v0.L], [v.w, v0.w], [v.tau, v0.tau]].forEach(([x, x0], n) => {
+          // L and ω out past the stem (1.5 d), L the longer; τ from the tip along the floor
+          const m = mag(x), len = Math.min(2.5, m / (mag(x0) || m || 1)) * d * [2.4, 1.9, 1.3][n];
+          const [h, s] = arrows[n];
+          h.visible = s.visible = m > 0;
+          if (!m) return;
+          const dir = new THREE.Vector3(...x).normalize();
+          h.setDirection(dir); h.setLength(Math.max(len, d * 0.1), 0.15 * d, 0.08 * d);
+          s.position.copy(dir.multiplyScalar(Math.max(len, d * 0.1) * 1.1));
+        });
+        vecNote.dataset.vectors = JSON.stringify(v);
+        put(vecNote, el('strong', {}, 'On the top: '), el('span', {class: 'c1'}, `L = ${fmt(mag(v.L), 4)} kg m²/s`), ', ',
+          el('span', {class: 'c2'}, `ω = ${fmt(mag(v.w), 4)} rad/s`), ', ', el('span', {class: 'c4'}, `τ = ${fmt(mag(v.tau), 4)} N m`),
+          ' (τ = dL/dt turns L round the vertical: the precession; each arrow drawn against its size at the release).');
+      };
       const qz = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(0, 0, 1), ang);
       const qx = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(1, 0, 0), ang);
       play.set(a.t, (i, fr, t) => {
@@ -125,6 +163,7 @@ export default {
         // z-x-z Euler angles: R = Rz(φ) Rx(θ) Rz(ψ) (symmetry axis (sin θ sin φ, −sin θ cos φ, cos θ), as the API's axis samples)
         topGroup.quaternion.copy(qz(at(a.phi)).multiply(qx(at(a.theta))).multiply(qz(at(a.psi))));
         trace.geometry.setDrawRange(0, i + 1);
+        place(fr > 0.5 ? j : i);
         V.render();
         tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
       }, {grow: [theta]}); // θ(t) grows as it plays
