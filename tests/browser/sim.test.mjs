@@ -463,6 +463,9 @@ for (const width of [1280, 390]) {
     const pphi = 0.01 * 60 * Math.cos(0.5), tauMag = Math.hypot(...vec.tau);
     check(Math.abs(vec.L[2] - pphi) < 2e-3 * pphi && vec.tau[2] === 0 && Math.abs(vec.tau[0] * vec.L[0] + vec.tau[1] * vec.L[1]) < 0.05 * tauMag * Math.hypot(...vec.L),
       `${tag}: tops: L, ω, τ drawn at the end: L·ẑ = ${vec.L[2]} against p_φ = ${pphi}, τ horizontal (${tauMag.toFixed(4)} N m) and across L`);
+    // the energy bars: E′ = ½I1(θ̇² + φ̇² sin²θ) + Mgh cos θ level: at the release (θ̇ = φ̇ = 0) Mgh cos θ0 = 0.98066 cos 0.5 J
+    const E0 = 1 * 9.80665 * 0.1 * Math.cos(0.5), Eend = vec.K + vec.U;
+    check(Math.abs(Eend - E0) < 1e-3 * E0 && vec.K > 1e-3, `${tag}: tops: the energy bars trade (wobble ${vec.K.toFixed(4)} J at the end) and E′ stays ${Eend.toFixed(5)} J against Mgh cos θ0 = ${E0.toFixed(5)} J`);
     check(page.errors.length === 0, `${tag}: live view: no script errors (${page.errors.join(' | ')})`);
   } catch (e) {
     check(false, `${tag}: live view: ${e.message.split('\n')[0]}`);

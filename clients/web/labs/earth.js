@@ -8,6 +8,7 @@ import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runn
 import {player} from '../anim.js';
 import {THREE, view3d, label} from '../view3d.js';
 import {handle, rerun} from '../handles.js';
+import {arrow, energyBars} from '../draw.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -209,7 +210,7 @@ export default {
             arrow(bx, by, bx, by + 46, '#5c3b00', 'mg'));
           const fc = coriolis(v), E = [0.5 * (v[0] ** 2 + v[1] ** 2 + v[2] ** 2), P.g * p[2]];
           energyBars(canEnergy, [['kinetic ½mv²', E[0], '#1864ab'], ['potential mgz', E[1], '#5c3b00'], ['total', E[0] + E[1], '#111']],
-            0.5 * (vel[0][0] ** 2 + vel[0][1] ** 2 + vel[0][2] ** 2), 'J');
+            0.5 * (vel[0][0] ** 2 + vel[0][1] ** 2 + vel[0][2] ** 2), 'energy of the ball (1 kg)');
           canForces.textContent = `On the ball (m = 1 kg): weight mg = ${fmt(P.g, 4)} N down; Coriolis −2m ω×v = ${fmt(Math.hypot(...fc), 3)} N, ` +
             `${fmt(side(fc), 3)} N to the right of the aim and ${fmt(fc[2], 3)} N up; speed ${fmt(Math.hypot(...v), 4)} m/s (blue arrow: 1 km per 100 m/s).`;
         }
@@ -452,28 +453,4 @@ function foucaultGlobe(G, box, note, play, a, ground) {
     box.dataset.swingDeg = String(turn * 180 / Math.PI);
     G.render();
   });
-}
-
-// An arrow from (x1, y1) to (x2, y2) in SVG units, with its head and a label by the tip.
-function arrow(x1, y1, x2, y2, color, text) {
-  const g = svg('g', {'data-role': 'vector', 'data-name': text});
-  const a = Math.atan2(y2 - y1, x2 - x1), L = Math.hypot(x2 - x1, y2 - y1), h = Math.min(10, L / 2);
-  add(g, svg('line', {x1, y1, x2, y2, stroke: color, 'stroke-width': 3}));
-  if (L > 2) add(g, svg('path', {d: `M ${x2} ${y2} L ${x2 - h * Math.cos(a - 0.45)} ${y2 - h * Math.sin(a - 0.45)} L ${x2 - h * Math.cos(a + 0.45)} ${y2 - h * Math.sin(a + 0.45)} z`, fill: color}),
-    svg('text', {x: x2 + 6, y: y2 - 4, 'font-size': 14, 'font-weight': 700, fill: color}, text));
-  return g;
-}
-
-// Energy bars: [[name, value, colour], …] against a reference value (the first bar's full height), unit said.
-function energyBars(root, bars, ref, unit) {
-  const W = 300, H = 150, base = 120, k = 95 / (Math.abs(ref) || 1), w = 60;
-  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
-  add(root, svg('line', {x1: 8, y1: base, x2: W - 8, y2: base, stroke: '#555'}));
-  bars.forEach(([name, v, c], i) => {
-    const x = 20 + i * (w + 36), h = Math.max(-25, Math.min(110, v * k));
-    add(root, svg('rect', {x, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: c, 'data-role': 'bar', 'data-value': String(v)}),
-      svg('text', {x: x + w / 2, y: H - 14, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, name),
-      svg('text', {x: x + w / 2, y: H - 1, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, `${fmt(v / 1000, 3)} k${unit}`));
-  });
-  root.setAttribute('aria-label', 'energy: ' + bars.map(([n, v]) => `${n} ${fmt(v / 1000, 3)} k${unit}`).join(', '));
 }

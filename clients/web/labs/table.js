@@ -7,6 +7,7 @@
 import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, notesBox} from '../lib.js';
 import {player, lerp} from '../anim.js';
 import {handle, rerun} from '../handles.js';
+import {arrow, energyBars} from '../draw.js';
 
 const st = {experiment: 'through_center', omega: 1, radius: 1, mass: 1, px: 0.5, py: 0, vx: 0, vy: 0.8, t_end: 4};
 const BUILTIN = [
@@ -228,7 +229,7 @@ function draw(room, onTable, a, play, {R: fixedR, launch, energy} = {}) {
       onTable.dataset.forces = JSON.stringify(F);
       if (energy) {
         const K = 0.5 * m * (vp[0] ** 2 + vp[1] ** 2), U = -0.5 * m * w * w * (q[0] ** 2 + q[1] ** 2);
-        energyBars(energy, [['½mv′²', K, '#1864ab'], ['−½mω²r′²', U, '#a65300'], ['sum', K + U, '#111']], E0);
+        energyBars(energy, [['½mv′²', K, '#1864ab'], ['−½mω²r′²', U, '#a65300'], ['sum', K + U, '#111']], E0, 'energy seen from the table');
       }
     }
   }, {grow: []});
@@ -240,27 +241,3 @@ function arrowHead(id, color) {
   return m;
 }
 const niceLen = (x) => { const p = 10 ** Math.floor(Math.log10(x)), m = x / p; return (m < 2 ? 1 : m < 5 ? 2 : 5) * p; };
-
-// An arrow from (x1, y1) to (x2, y2) in SVG units, its head and a short name by the tip.
-function arrow(x1, y1, x2, y2, color, text) {
-  const g = svg('g', {'data-role': 'vector', 'data-name': text});
-  const a = Math.atan2(y2 - y1, x2 - x1), L = Math.hypot(x2 - x1, y2 - y1), h = Math.min(9, L / 2);
-  add(g, svg('line', {x1, y1, x2, y2, stroke: color, 'stroke-width': 2.5}));
-  if (L > 2) add(g, svg('path', {d: `M ${x2} ${y2} L ${x2 - h * Math.cos(a - 0.45)} ${y2 - h * Math.sin(a - 0.45)} L ${x2 - h * Math.cos(a + 0.45)} ${y2 - h * Math.sin(a + 0.45)} z`, fill: color}),
-    svg('text', {x: x2 + 5, y: y2 - 4, 'font-size': 12, 'font-weight': 700, fill: color}, text));
-  return g;
-}
-
-// Energy bars (in J) against a reference height E0: the bars' heights, names and values, read out in aria-label.
-function energyBars(root, bars, E0) {
-  const W = 300, H = 170, base = 85, k = 60 / (Math.abs(E0) || 1), w = 60;
-  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
-  add(root, svg('line', {x1: 8, y1: base, x2: W - 8, y2: base, stroke: '#555'}));
-  bars.forEach(([name, v, c], i) => {
-    const x = 20 + i * (w + 36), h = Math.max(-75, Math.min(80, v * k));
-    add(root, svg('rect', {x, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: c, 'data-role': 'bar', 'data-value': String(v)}),
-      svg('text', {x: x + w / 2, y: 14, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, name),
-      svg('text', {x: x + w / 2, y: H - 2, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, `${fmt(v, 3)} J`));
-  });
-  root.setAttribute('aria-label', 'energy seen from the table: ' + bars.map(([n, v]) => `${n} ${fmt(v, 3)} J`).join(', '));
-}

@@ -4,6 +4,7 @@
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {handle, rerun} from '../handles.js';
+import {energyBars} from '../draw.js';
 import {THREE, view3d, polyline, sceneAxes, axesArrows, label} from '../view3d.js';
 
 const BUILTIN = [{title: 'Fast top: I1 = 0.02, I3 = 0.01, θ0 = 0.5, ψ̇ = 60 rad/s', operation: '/v1/rigid/top',
@@ -58,11 +59,14 @@ export default {
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
     const vecNote = el('p', {id: 'top-vectors', 'aria-live': 'off'});
+    const topEnergy = svg('svg', {class: 'plot dial energy', id: 'top-energy', role: 'img', 'aria-label': 'energy bars'});
     const play = player({label: 'The top', reverse: 'Backwards: a top run backwards is a top too, spinning and precessing the other way (no friction: the equations are the same with t → −t, ψ̇ → −ψ̇, φ̇ → −φ̇).'});
     add(L.figure, el('h3', {}, 'The top in 3-D'), box3d, play.root,
       el('p', {class: 'muted'}, 'Tip fixed at the origin, z up. The blue curve is the path of the symmetry axis\' end ',
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
-      vecNote, el('h3', {}, 'θ(t)'), theta);
+      vecNote, el('h3', {}, 'Energy'), topEnergy,
+      el('p', {class: 'muted'}, 'The notes\' E′ = E − ½I₃ω₃² (the spin\'s own energy is constant and left out): as the top dips, Mgh cos θ falls and the wobble\'s kinetic energy rises by as much; the sum stays level.'),
+      el('h3', {}, 'θ(t)'), theta);
     const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
@@ -131,7 +135,10 @@ export default {
         const w3 = w[0] * e3[0] + w[1] * e3[1] + w[2] * e3[2];
         const Lv = w.map((x, c) => I1 * (x - w3 * e3[c]) + I3 * w3 * e3[c]);
         const tau = [-Mgh * e3[1], Mgh * e3[0], 0];
-        return {w, L: Lv, tau};
+        // the notes' E′ = E − p_ψ²/2I3: the wobble's kinetic energy ½ I1 (θ̇² + φ̇² sin²θ) and M g h cos θ, their sum
+        // conserved (the spin's ½ I3 ω3², constant, left out: it would dwarf the exchange)
+        const K = 0.5 * I1 * (td * td + pd * pd * Math.sin(th) ** 2), U = Mgh * Math.cos(th);
+        return {w, L: Lv, tau, K, U};
       };
       const v0 = vectorsAt(0), mag = (v) => Math.hypot(v[0], v[1], v[2]);
       const arrows = [['L', 0xc92a2a], ['ω', 0x2b8a3e], ['τ', 0xa65300]].map(([nm, col]) => {
@@ -152,6 +159,8 @@ export default {
           s.position.copy(dir.multiplyScalar(Math.max(len, d * 0.1) * 1.1));
         });
         vecNote.dataset.vectors = JSON.stringify(v);
+        energyBars(topEnergy, [['½I₁(θ̇²+φ̇²sin²θ)', v.K, '#1864ab'], ['Mgh cos θ', v.U, '#a65300'], ['E′ = sum', v.K + v.U, '#111']],
+          v0.K + v0.U, 'the top\'s energy E′ = E − ½I₃ω₃²');
         put(vecNote, el('strong', {}, 'On the top: '), el('span', {class: 'c1'}, `L = ${fmt(mag(v.L), 4)} kg m²/s`), ', ',
           el('span', {class: 'c2'}, `ω = ${fmt(mag(v.w), 4)} rad/s`), ', ', el('span', {class: 'c4'}, `τ = ${fmt(mag(v.tau), 4)} N m`),
           ' (τ = dL/dt turns L round the vertical: the precession; each arrow drawn against its size at the release).');
