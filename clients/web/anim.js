@@ -100,7 +100,7 @@ export function player({label = 'Animation', unit = 's', seconds = 1, reverse} =
     tNow += (backwards ? -1 : 1) * dt * Number(speed.value) / seconds;
     const end = times[times.length - 1];
     if (tNow >= end) { tNow = end; show(); setPlaying(false); return; }
-    if (tNow <= times[0]) { tNow = times[0]; show(); setPlaying(false); return; }
+    if (backwards && tNow <= times[0]) { tNow = times[0]; show(); setPlaying(false); return; }
     show();
     raf = requestAnimationFrame(tick);
   };

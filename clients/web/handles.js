@@ -36,7 +36,7 @@ window.addEventListener('pointermove', (e) => {
 const end = (e) => {
   if (!drag) return;
   const spec = live.get(drag.id);
-  if (spec && e.type === 'pointerup') { const [x, y] = toUnits(spec, e); spec.onMove(x, y, true); }
+  if (spec && e.type === 'pointerup') { const [x, y] = toUnits(spec, e); spec.onMove(x, y, true); window.dispatchEvent(new Event('mechd:moved')); }
   drag = null;
   document.body.classList.remove('dragging');
 };
@@ -78,6 +78,7 @@ export function handle(root, {id, X, Y, at, label, text, step = [0.1, 0.1], onMo
       const t = g.isConnected ? g : document.getElementById(id);
       if (t) t.setAttribute('aria-valuetext', text(nx, ny));
       s.onMove(nx, ny, true);
+      window.dispatchEvent(new Event('mechd:moved'));
       return;
     }
     const big = e.shiftKey ? 10 : 1;
@@ -100,6 +101,7 @@ export function handle(root, {id, X, Y, at, label, text, step = [0.1, 0.1], onMo
     const t = g.isConnected ? g : document.getElementById(id);
     if (t) t.setAttribute('aria-valuetext', text(nx, ny));
     s.onMove(nx, ny, true);
+    window.dispatchEvent(new Event('mechd:moved')); // the address bar follows (share.js)
   });
   g.addEventListener('focus', () => { focusId = id; });
   // a blur because the picture was redrawn (this handle removed) keeps the focus for the new one; one because

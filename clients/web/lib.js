@@ -267,11 +267,11 @@ export function plainDetail(detail, c, value) {
     return [`${given} is not a name this server knows for ${w.label.toLowerCase()}. Known names: `,
       el('ul', {class: 'names'}, names.map(n => el('li', {}, n)))];
   }
-  if ((m = /^(\w+): cannot reach the requested tolerance at t = (\S+) s \(step size (\S+) s/.exec(d)))
+  if ((m = /(\w+): cannot reach the requested tolerance at t = (\S+) s \(step size (\S+) s/.exec(d)))
     return [`The motion could not be followed past t = ${amount(Number(m[2]), 's')}: to keep the accuracy asked for, the time step ` +
       `had to shrink to ${amount(Number(m[3]), 's')}, which a computer's numbers cannot resolve. Something happens there too fast to ` +
       'follow (a collision, a body falling into the centre, a force without bound). Try other starting values, a lower accuracy or a shorter time.'];
-  if ((m = /^(\w+): (?:the right-hand side failed|bad function value) at t = (\S+) s/.exec(d)))
+  if ((m = /(\w+): (?:the right-hand side failed|bad function value) at t = (\S+) s/.exec(d)))
     return [`The equations of motion could not be evaluated at t = ${amount(Number(m[2]), 's')} (the bodies reach a point where a force is ` +
       'infinite or undefined). Try other starting values or a shorter time.'];
   if (/^is required$/.test(d)) return [`${w.label} is needed.`];

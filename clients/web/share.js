@@ -46,24 +46,30 @@ const wait = (ms) => new Promise(r => setTimeout(r, ms));
 // keeps the address bar's #lab?… up to date as the student changes things,
 // and puts a "Copy link" and a "Reset" button under the lab's title.
 // Returns {link()} (the URL that reproduces the lab as it is now, with times).
+let listening = null; // the AbortController of the mounted lab's listeners: a new mount takes them off
 export function share(main, labId, params) {
+  if (listening) listening.abort();
+  const off = listening = new AbortController(), opts = {signal: off.signal};
   const dirty = new Map(); // key -> control the student changed
   let example = params.get('ex') || '';
   let restoring = false; // the events restore() sends are not the student's
   const list = () => controls(main);
   const index = () => new Map(list().map((c, i) => [keyOf(c, i), c]));
+  // the values the lab started with: a field a handle changed (no input event) differs from them
+  const init = new Map(list().map((c, i) => [keyOf(c, i), read(c)]));
   const state = (withTime) => {
     const q = new URLSearchParams();
     if (example) q.set('ex', example);
     const idx = index();
-    for (const [k, c] of dirty) if (idx.get(k) === c) q.set(k, read(c));
+    for (const [k, c] of idx)
+      if ((dirty.has(k) && dirty.get(k) === c) || (c.tagName !== 'SELECT' && init.has(k) && read(c) !== init.get(k))) q.set(k, read(c));
     if (withTime) main.querySelectorAll('[data-role=time]').forEach((s, k) => { if (!s.disabled && Number(s.value) > 0) q.set('t' + k, s.value); });
     const s = q.toString();
     return '#' + labId + (s ? '?' + s : '');
   };
   let timer = 0;
   const update = () => { clearTimeout(timer); timer = setTimeout(() => {
-    if (main.dataset.lab === labId) history.replaceState(null, '', location.pathname + location.search + state(false));
+    if (main.dataset.lab === labId && !off.signal.aborted) history.replaceState(null, '', location.pathname + location.search + state(false));
   }, 250); };
   const touched = (e) => {
     const c = e.target;
@@ -72,8 +78,9 @@ export function share(main, labId, params) {
     if (i < 0) return;
     dirty.set(keyOf(c, i), c); update();
   };
-  main.addEventListener('input', touched);
-  main.addEventListener('change', touched);
+  main.addEventListener('input', touched, opts);
+  main.addEventListener('change', touched, opts);
+  window.addEventListener('mechd:moved', () => { if (!restoring) update(); }, opts); // a handle let go
   // loading a worked example: it sets the form, so what was changed before is no longer the state
   main.addEventListener('click', (e) => {
     const b = e.target.closest('.examples button');
@@ -81,7 +88,7 @@ export function share(main, labId, params) {
     const sel = b.closest('.examples').querySelector('select');
     const opt = sel && sel.selectedOptions[0];
     if (opt) { example = opt.textContent; dirty.clear(); update(); }
-  });
+  }, opts);
 
   // the bar: Copy link, Reset, and what they did
   const note = el('span', {class: 'muted', role: 'status', 'data-role': 'share-note'});

@@ -161,6 +161,18 @@ for (const width of [1280, 390]) {
       await page.click('#fou-submit');
       await page.waitForFunction(() => /10³⁰⁰/.test(document.getElementById('fou-swings-err').textContent), null, {timeout: 20000});
       await errorOnField(page, '#fou-swings', `${tag}: 1e300 swings`, /swings is 10³⁰⁰: it must be between 1 and 1,000,000/);
+      // the integrator's words, as a numerical failure brings them (answered here by the test: a real one needs a
+      // pathological scene): no method name, the step size in a reader's form, what to try
+      await page.goto('about:blank');
+      await page.route('**/v1/scenes/rotating-table', (route) => route.fulfill({status: 422, contentType: 'application/problem+json',
+        body: JSON.stringify({type: '/problems/numerical-failure', title: 'Numerical failure', status: 422,
+          detail: 'rk8pd: cannot reach the requested tolerance at t = 1.2345678901234567 s (step size 1.93e-16 s cannot shrink further)'})}));
+      await page.goto(`${base}/#table`);
+      await page.waitForSelector('main form[data-state=error]', {timeout: 20000});
+      const box = await page.textContent('main .problem');
+      check(!/rk8pd|tolerance/.test(box) && /1\.9·10⁻¹⁶ s/.test(box) && /t = 1\.2 s/.test(box) && /Try/.test(box),
+        `${tag}: solver words translated ("${box.slice(0, 160)}…")`);
+      await page.unrouteAll({behavior: 'ignoreErrors'});
       check(page.errors.length === 0, `${tag}: repros: no script errors (${page.errors.join(' | ')})`);
     } catch (e) {
       check(false, `${tag}: repros: ${e.message.split('\n')[0]}`);
@@ -277,6 +289,10 @@ for (const width of [1280, 390]) {
       `${tag}: spacetime: three ArrowRight presses move the event by 0.3 along x (${e[1]} -> ${e2[1]}) and the answer follows (x′ = ${xp2})`);
     check(await page.evaluate(() => document.activeElement && document.activeElement.id) === 'st-event-1', `${tag}: spacetime: the focus stays on the handle through the redraw`);
     check(/ct = [\d.]+, x = [\d.]+/.test(await page.getAttribute('#st-event-1', 'aria-valuetext')), `${tag}: spacetime: the handle says where it is`);
+    // the dragged state is in the address bar too, so a copied link holds it
+    const inUrl = await page.waitForFunction(() => new URLSearchParams(location.hash.split('?')[1] || '').get('st-events') ===
+      document.getElementById('st-events').value, null, {timeout: 5000}).then(() => true, () => false);
+    check(inUrl, `${tag}: spacetime: the moved event is in the URL (${page.url()})`);
     await page.screenshot({path: path.join(shots, `sim-${tag}-drag-event.png`)});
     // Rotating table: the launch velocity dragged: the puck's start Coriolis force follows (−2mω × v′ at t = 0)
     await page.goto('about:blank');
