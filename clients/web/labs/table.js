@@ -224,7 +224,7 @@ function draw(room, onTable, a, play, {R: fixedR, launch, energy} = {}) {
     room.dataset.puck = `${p[0].toFixed(4)},${p[1].toFixed(4)}`; onTable.dataset.puck = `${q[0].toFixed(4)},${q[1].toFixed(4)}`;
     if (v0) {
       const vp = seen(p, t), F = forces(q, vp), bx = B.X(q[0]), by = B.Y(q[1]);
-      const ar = (f, k, c, name) => arrow(bx, by, bx + k * f[0], by - k * f[1], c, name);
+      const ar = (f, k, c, name) => arrow(bx, by, bx + k * f[0], by - k * f[1], c, name, 16); // 16: still 10 px in a phone's half-width panel
       put(vecs, ar(F.cf, kF, '#a65300', 'cf'), ar(F.co, kF, '#1f6f30', 'Cor'), ar(F.net, kF, '#111', 'net'), ar(vp, kV, '#1864ab', 'v′'));
       onTable.dataset.forces = JSON.stringify(F);
       if (energy) {
