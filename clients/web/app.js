@@ -120,7 +120,7 @@ if (chan) chan.onmessage = (e) => {
 };
 noteToken();
 if (chan && !getToken()) { // ask, and wait a moment for an answer before the lab's first request
-  await new Promise((r) => { heard = r; chan.postMessage({ask: true}); setTimeout(r, 250); });
+  await new Promise((r) => { heard = r; chan.postMessage({ask: true}); setTimeout(r, 120); });
   heard = null;
 }
 
