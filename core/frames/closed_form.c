@@ -389,7 +389,7 @@ static void cf_observe(const struct cf_ctx *c, struct cf_inv *iv, double t, stru
 int mech_trajectory_has_closed_form(const struct mech_trajectory_problem *p)
 {
     struct mech_trajectory_reference ref;
-    return p && mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
+    return p && mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated;
 }
 
 enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_problem *p,
@@ -415,7 +415,7 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     memset(&c, 0, sizeof c);
     c.p = p;
     c.err = err;
-    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT)
+    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated)
         return mech_error_set(err, MECH_EINVAL, NULL,
                               "the scene has no closed form (only Kepler, the harmonic "
                               "oscillator, uniform gravity with or without linear drag and the "

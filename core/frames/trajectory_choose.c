@@ -93,7 +93,8 @@ static void traj_profile(const struct mech_trajectory_problem *p,
     /* stiff: a damping time far shorter than the dynamical time and the run */
     s->stiff = drag_rate * fmin(T, p->t_end) > 1e2;
     struct mech_trajectory_reference ref;
-    s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
+    s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT &&
+                     !ref.rotated; /* a rotated reference is evidence, not an answer */
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;
     mech_chooser_profile_orbit(s, p); /* core/ode/chooser_orbit.c */
