@@ -65,7 +65,7 @@ static int choose_method(struct api_call *c, const json_t *body, struct mech_top
     struct api_integrator_system sys = top_eqs;
     sys.samples = p->samples;
     const struct mech_pilot_system pilot = {mech_top_pilot_run, p};
-    const struct api_integrator_hooks hooks = {mech_top_cost_span(p), 0.0, 0.0, &pilot};
+    const struct api_integrator_hooks hooks = {mech_top_cost_span(p), 0.0, 0.0, &pilot, 0.0};
     return api_integrator_block_parse_hooks(c, json_object_get(body, "integrator"), "/integrator",
                                             p->t_end * mech_top_rate_scale(p), &sys, NULL, &hooks,
                                             ch);
