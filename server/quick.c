@@ -94,6 +94,7 @@ void run_api(struct srv_req *r)
               atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
     long long c0 = measure ? thread_cpu_ns() : -1;
     api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    answer_settle(r); /* charge the answer's real size (answer_budget.c) */
     if (c0 < 0) return;
     long long c1 = thread_cpu_ns();
     if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);

@@ -1048,9 +1048,15 @@ static struct mech_vec3 yvec(const double *y, int off)
     return mech_vec3_make(y[off], y[off + 1], y[off + 2]);
 }
 
-/* Errors of run against the reference at every sample and the stop point. */
+/* Errors of run against the reference at every sample and the stop point,
+ * relative to the scene's scales: positions to the largest distance from the
+ * reference's centre (Kepler's body, the spring's anchor; the origin for the
+ * uniform fields) over the samples, the orbit's or oscillation's size;
+ * velocities to the largest speed over the samples and over every step of
+ * the run (speed_max), never to a value that passes through zero (a 1-D
+ * oscillator sampled once a period is at rest at every sample). */
 static enum mech_status reference_report(const struct mech_trajectory_problem *p,
-                                         const struct traj_run *run,
+                                         const struct traj_run *run, double speed_max,
                                          struct mech_trajectory_reference_report *rep,
                                          struct mech_error *err)
 {
@@ -1058,7 +1064,8 @@ static enum mech_status reference_report(const struct mech_trajectory_problem *p
     memset(rep, 0, sizeof *rep);
     rep->name = "";
     if (mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_NONE) return MECH_OK;
-    double rmax = 0.0, vmax = 0.0;
+    double rmax = 0.0, vmax = isfinite(speed_max) ? speed_max : 0.0;
+    const int centred = !strncmp(ref.name, "kepler", 6) || !strncmp(ref.name, "harmonic", 8);
     const size_t n = run->out.n_samples;
     for (size_t i = 0; i <= n; i++) {
         const double *y;
@@ -1082,7 +1089,7 @@ static enum mech_status reference_report(const struct mech_trajectory_problem *p
         rep->max_velocity_error = fmax(rep->max_velocity_error, dv);
         rep->final_position_error = de;
         rep->truncation_estimate = fmax(rep->truncation_estimate, so);
-        rmax = fmax(rmax, mech_vec3_norm(rr));
+        rmax = fmax(rmax, mech_vec3_norm(centred ? mech_vec3_sub(rr, ref.center) : rr));
         vmax = fmax(vmax, mech_vec3_norm(vr));
     }
     rep->kind = (int)ref.kind;
@@ -1218,7 +1225,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
     }
     res->invariant = res->invariants[0];
 
-    st = reference_report(p, &run, &res->reference, err);
+    st = reference_report(p, &run, res->max_speed, &res->reference, err);
     memset(&res->error_estimate, 0, sizeof res->error_estimate);
     if (st == MECH_OK && p->error_estimate && res->reference.kind == MECH_REFERENCE_NONE) {
         /* Second run at a tighter setting with what is left of the budget. */

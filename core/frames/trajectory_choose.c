@@ -94,7 +94,8 @@ static void traj_profile(const struct mech_trajectory_problem *p,
     /* stiff: a damping time far shorter than the dynamical time and the run */
     s->stiff = drag_rate * fmin(T, p->t_end) > 1e2;
     struct mech_trajectory_reference ref;
-    s->closed_form = mech_trajectory_has_closed_form(p);
+    s->closed_form = mech_trajectory_has_closed_form(p); /* a rotated reference is
+                                                            evidence, not an answer */
     mech_trajectory_reference_find(p, &ref);
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;

@@ -69,8 +69,11 @@ struct mech_trajectory_reference_report {
     double max_position_error;    /* m: max |r - r_ref| */
     double final_position_error;  /* m: at the last sample (or the stop point) */
     double max_velocity_error;    /* m/s: max |v - v_ref| */
-    double max_relative_position_error; /* max |r - r_ref| / max |r_ref| (over the samples) */
-    double max_relative_velocity_error; /* max |v - v_ref| / max |v_ref| */
+    double max_relative_position_error; /* max |r - r_ref| / max |r_ref - c| over the samples
+                                           (c: the Kepler centre or the spring's anchor, else
+                                           the origin): the orbit's or amplitude's size */
+    double max_relative_velocity_error; /* max |v - v_ref| / the largest speed over the
+                                           samples and every step of the run */
     double truncation_estimate;   /* m: first order only, max size of the neglected
                                      second-order terms (0 for exact references) */
 };
