@@ -541,6 +541,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         break;
     }
     r->state = REQ_QUEUED;
+    r->job.short_job = r->quick_route; /* a closed form: the express worker may take it */
     watch_add(h, r);
     MHD_suspend_connection(r->conn);
     /* Cannot fail; may run req_cancel (and resume) at once if the pool stopped. */
