@@ -1,5 +1,5 @@
 /* mech/reference.h — exact and first-order solutions used as references for
- * the error of numerical trajectories (DESIGN.md "Accuracy you can see").
+ * the error of numerical trajectories (every numeric answer says how good it is).
  *
  *   Kepler two-body motion (universal variables, any conic),
  *   the isotropic harmonic oscillator (spring of rest length 0) with uniform
