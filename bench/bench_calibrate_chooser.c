@@ -1,5 +1,5 @@
 /* bench_calibrate_chooser.c — measures the constants of the chooser's model
- * (core/ode/chooser.c, issue 16 "A chooser that predicts cost and error").
+ * (core/ode/chooser.c: it predicts each candidate's cost and error).
  *
  * For each scene class and candidate method it runs mech_trajectory_integrate
  * (the path the answers take) at three settings and two run lengths, and fits
