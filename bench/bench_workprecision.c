@@ -30,7 +30,7 @@
  * sweep stops after a run costing more than MECHD_BENCH_CAP seconds, and any
  * run after 4 s of wall time (the budget's deadline: it shows as FAILED).
  * Then what the accuracy presets pick on each scene (mech_trajectory_choose)
- * and the error they reach, and the issue's three targets, each printed
+ * and the error they reach, and the three targets, each printed
  * MET / NOT MET with the numbers: (1) Kepler e = 0.5, |dE/E| <= 1e-13
  * with >= 20x less CPU than DOP853 at rtol = atol = 1e-13; (2) symplectic
  * methods keep a bounded, non-secular energy error over 1e5 orbits;
@@ -1535,7 +1535,7 @@ static int same_bits(const struct row *a, const struct row *b)
 struct longrun_spec {
     const char *method;
     double div;
-    int target; /* named by the issue */
+    int target; /* one of the three targets */
 };
 static const struct longrun_spec longrun[] = {
     {"verlet", 200, 1},         {"yoshida4", 100, 1}, {"yoshida6", 50, 1}, {"gauss4", 100, 1},
@@ -1713,7 +1713,7 @@ int main(int argc, char **argv)
         scene_set_section(bench_dir);
         return 0;
     }
-    if (getenv("MECHD_BENCH_PRESETS_ONLY")) { /* only the issue-16 presets tables */
+    if (getenv("MECHD_BENCH_PRESETS_ONLY")) { /* only the presets tables */
         issue_presets_section();
         scene_set_section(bench_dir);
         return 0;
@@ -1834,7 +1834,7 @@ int main(int argc, char **argv)
     }
     printf("%s: %s\n", met(t1), t1_text);
     if (base100)
-        printf("  (guide: the issue says DOP853 at 1e-13 only reaches about 4e-11 over 100 orbits; "
+        printf("  (guide: the target expects DOP853 at 1e-13 only reaches about 4e-11 over 100 orbits; "
                "measured %.2e in %.3f s; and mechd 1000 orbits in about 50 ms: measured %.4f s)\n",
                base100->drift, base100->cpu, pick ? best_cpu : NAN);
     for (size_t i = 0; i < n_rows && base; i++) {
