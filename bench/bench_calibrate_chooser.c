@@ -1,5 +1,5 @@
 /* bench_calibrate_chooser.c — measures the constants of the chooser's model
- * (core/ode/chooser.c, issue 16 "A chooser that predicts cost and error").
+ * (core/ode/chooser.c: it predicts each candidate's cost and error).
  *
  * For each scene class and candidate method it runs mech_trajectory_integrate
  * (the path the answers take) at three settings and two run lengths, and fits
@@ -16,7 +16,7 @@
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
  * With --presets it prints instead each preset's choice, CPU and achieved
- * error on the issue's particle scenes (no calibration); --floors the
+ * error on the presets' particle scenes (no calibration); --floors the
  * round-off floors; --pendulum the Foucault pendulum's law
  * (core/frames/chooser_pendulum.c); --general the general class's rows on the
  * isotropic oscillator seen from a rotating frame. The scenes are
@@ -270,7 +270,7 @@ static void calibrate(struct scene *s, const struct method *md, double F, double
            s->spans[0], n);
 }
 
-/* --presets: each preset on the issue's particle scenes through
+/* --presets: each preset on the presets' particle scenes through
  * mech_trajectory_choose + mech_trajectory_integrate: method, CPU (best of
  * 3), achieved error, and the machine/draft and machine/balanced ratios. */
 static void presets_table(void)

@@ -14,7 +14,7 @@ program), t from 0 to T_END, rtol = atol = RTOL. One output line per RTOL:
 
     dop853 rtol=<r> steps=<n> nfev=<n> cpu=<s> max_rel_dE=<x> final=<6 reals>
 
-Issue 16's scene set (bench_workprecision's "scene set" section):
+The scene set (bench_workprecision's "scene set" section):
 
     workprecision_scipy.py --scene NAME T_END CAP_S Y0_1 .. Y0_n -- RTOL [RTOL ...]
 

@@ -84,10 +84,11 @@ static const struct opt_spec {
                            "a quick operation (closed form, small body) is answered on an I/O "
                            "thread while its measured CPU cost predicts at most this many µs; "
                            "0: every operation goes to the workers"},
-    [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "10", 0, 19,
+    [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "0", 0, 19,
                          "how much lower the compute workers' scheduling priority is than the "
-                         "I/O threads' (nice increment; with > 0 also SCHED_BATCH), so /healthz "
-                         "and quick answers win a busy core; 0: same priority"},
+                         "I/O threads' (nice increment; workers always run SCHED_BATCH, so a "
+                         "waking worker never preempts an I/O thread); 0: the same CPU share, "
+                         "so long jobs keep their fair share under a flood of cheap requests"},
     [OPT_MAX_SAMPLES] = {"--max-samples", "MECHD_MAX_SAMPLES", "200000", 1, 1000000000LL,
                          "answer budget: the samples one request may ask for, summed over its "
                          "\"samples\" members and a batch's items; more get 422 "

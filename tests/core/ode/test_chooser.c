@@ -1,4 +1,4 @@
-/* test_chooser.c — the predictive chooser (core/ode/chooser.c, issue 16): on the
+/* test_chooser.c — the predictive chooser (core/ode/chooser.c): on the
  * scene set (Kepler e = 0.5 and 0.9 over 10 and 1000 orbits, the oscillator
  * over 1e4 periods, the falling object with Coriolis) each preset meets its
  * promise (exact reference, or an independent round-off run with rk8pd at
