@@ -9,7 +9,7 @@ MECHD_ARGS ?=
 PREFIX     ?= /usr/local
 DESTDIR    ?=
 
-.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean install static-eval
+.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean install static-eval dist grader-image
 
 all: configure
 	cmake --build $(BUILD) -j $(JOBS)
@@ -81,3 +81,16 @@ static-eval: configure
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_TSAN)
+
+# Artefacts that install without building, into dist/ (scripts/make_dist.py): the
+# Python client as a pure wheel (standard library build, any Python >= 3.8), the
+# static evaluator as a tarball with its licence notices and a .sha256, SHA256SUMS.
+dist: static-eval
+	/usr/bin/python3 scripts/make_dist.py --build $(BUILD) --out dist
+
+# The PrairieLearn external-grader image (needs docker): the `grader` stage of
+# docker/Dockerfile as mechd-grader, then docker/grader-pl.Dockerfile as
+# mechd-pl-grader. Publish: docker tag mechd-pl-grader USER/mechd-pl-grader:V && docker push ...
+grader-image:
+	docker build -f docker/Dockerfile --target grader -t mechd-grader .
+	docker build -f docker/grader-pl.Dockerfile -t mechd-pl-grader .

@@ -358,7 +358,8 @@ def test_curl(url):
         except ValueError:
             check("%s prints JSON" % f, False, repr(out.stdout[:300]) + repr(out.stderr[:300]))
             continue
-        check("%s exits 0" % f, out.returncode == 0, repr(out.returncode))
+        want_rc = 22 if f == "error.sh" else 0  # curl --fail-with-body: 22 on an HTTP error
+        check("%s exits %d" % (f, want_rc), out.returncode == want_rc, repr(out.returncode))
         if f in CURL_EXPECT_ERROR:
             check("%s: HTTP 422 and a problem+json with errors[].pointer" % f,
                   code == "422" and isinstance(doc, dict) and doc.get("status") == 422 and
