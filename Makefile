@@ -67,7 +67,7 @@ docker-test:
 # Install mechd, mechd-eval (and mechd-eval-static), the docs, the front end,
 # the curl scripts and the Python client's files under $(DESTDIR)$(PREFIX):
 #   make install PREFIX=/opt/mechd DESTDIR=/tmp/stage
-# (an installed mechd serves the front end with --static-dir PREFIX/share/mechd/web).
+# (an installed mechd serves PREFIX/share/mechd/web by default).
 install: all
 	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
 

@@ -146,9 +146,77 @@ int api_docs_init(void)
                : 0;
 }
 
+/* The catalog's curl lines and examples say where the server is: written as
+ * DOCS_HOST_DEFAULT, they name the host the client asked (Host header) instead,
+ * so a line copied from GET /v1 on mechd.example.edu:9000 works as it is. Only
+ * host names, IPv4 and bracketed IPv6 addresses with an optional port are
+ * taken (at most 255 bytes); anything else keeps the default. */
+#define DOCS_HOST_DEFAULT "127.0.0.1:8080"
+#define DOCS_URL_DEFAULT "http://" DOCS_HOST_DEFAULT
+
+static int host_usable(const char *h)
+{
+    size_t n = h ? strlen(h) : 0;
+    if (n == 0 || n > 255 || !strcmp(h, DOCS_HOST_DEFAULT)) return 0;
+    for (size_t i = 0; i < n; i++) {
+        char c = h[i];
+        if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+              c == '.' || c == '-' || c == ':' || c == '[' || c == ']'))
+            return 0;
+    }
+    return 1;
+}
+
+/* The catalog with every DOCS_URL_DEFAULT written as http://host (malloc'd,
+ * NUL-terminated, *len set), or NULL when out of memory. */
+static char *catalog_for_host(const char *host, size_t *len)
+{
+    const char *text = doc_catalog.text;
+    size_t from = strlen(DOCS_URL_DEFAULT), to = strlen(host) + 7, count = 0;
+    for (const char *p = strstr(text, DOCS_URL_DEFAULT); p; p = strstr(p + from, DOCS_URL_DEFAULT))
+        count++;
+    size_t n = doc_catalog.len - count * from + count * to;
+    char *out = malloc(n + 1), *o = out;
+    if (!out) return NULL;
+    const char *p = text;
+    for (const char *q = strstr(p, DOCS_URL_DEFAULT); q; q = strstr(p, DOCS_URL_DEFAULT)) {
+        memcpy(o, p, (size_t)(q - p));
+        o += q - p;
+        o += sprintf(o, "http://%s", host);
+        p = q + from;
+    }
+    strcpy(o, p);
+    *len = n;
+    return out;
+}
+
 void api_docs_serve_catalog(const struct api_request_ext *ext, struct api_response *resp)
 {
-    serve_doc(&doc_catalog, ext, resp);
+    if (!ext || !host_usable(ext->host)) {
+        serve_doc(&doc_catalog, ext, resp);
+        return;
+    }
+    size_t len = 0;
+    char *body = catalog_for_host(ext->host, &len);
+    memset(resp, 0, sizeof *resp);
+    if (!body) { /* no memory for the copy: the default text is still right but for its host */
+        serve_doc(&doc_catalog, ext, resp);
+        return;
+    }
+    uint64_t h = api_etag_fnv1a(api_etag_build_hash(), body);
+    snprintf(resp->etag, sizeof resp->etag, "\"%016llx-h\"", (unsigned long long)h);
+    resp->cache_control = "no-cache";
+    resp->vary = "Accept-Encoding, Host";
+    if (api_etag_matches(ext->if_none_match, resp->etag)) {
+        free(body);
+        resp->status = 304;
+        resp->full_length = len;
+        return;
+    }
+    resp->status = 200;
+    resp->content_type = "application/json";
+    resp->body = body;
+    resp->body_len = len;
 }
 
 void api_docs_serve_openapi(const struct api_request_ext *ext, struct api_response *resp)

@@ -157,6 +157,7 @@ static void req_free(struct srv_req *r)
     free(r->query_request);
     free(r->if_none_match);
     free(r->accept_encoding);
+    free(r->host);
     free(r->origin);
     free(r->forwarded_for);
     free(r->body);
@@ -478,6 +479,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->aext.query_request = r->query_request;
     r->aext.if_none_match = r->if_none_match;
     r->aext.accept_encoding = r->accept_encoding;
+    r->aext.host = r->host;
     r->aext.max_samples = h->cfg->max_samples;
 
     /* GET ?request= runs an operation: it goes to the pool like a POST. */
@@ -576,13 +578,16 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
         const char *ae =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ACCEPT_ENCODING);
         r->accept_encoding = dup_str(ae);
+        const char *host = MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST);
+        r->host = dup_str(host);
         const char *origin =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ORIGIN);
         r->origin = dup_str(origin);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
-            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
+            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin) ||
+            (host && !r->host)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
         }

@@ -79,6 +79,8 @@ struct api_request_ext {
     long max_samples;          /* answer budget: samples one request may ask for, summed over
                                   every "samples" of its body (and of a batch's items);
                                   0 means API_DEFAULT_MAX_SAMPLES (--max-samples) */
+    const char *host;          /* Host header, or NULL: GET /v1's curl lines name this host
+                                  and port instead of 127.0.0.1:8080 */
 };
 
 /* Process-wide set-up of the API layer: main() (the server's, `mechd eval`'s,
