@@ -201,7 +201,7 @@ static int choose_method(struct api_call *c, const json_t *body, const struct me
     sys.samples = p->samples;
     /* the closed form's own cost: its quadrature (core/rigid/rigid_closed_form.c) */
     const struct api_integrator_hooks hooks = {0.0, mech_rigid_closed_form_predict_evaluations(p),
-                                               MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL, NULL};
+                                               MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL, NULL, 0.0};
     return api_integrator_block_parse_hooks(
         c, json_object_get(body, "integrator"), "/integrator", p->t_end * W, &sys,
         mech_rigid_has_closed_form(p) ? "torque-free rigid body" : NULL, &hooks, ch);
@@ -365,7 +365,7 @@ json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
     p.method = ch.method;
     p.opt = ch.opt;
     /* by accuracy, torque-free and off the separatrix: the chooser picks the
-     * closed form when allowed and predicted cheaper (issue 16) */
+     * closed form when allowed and predicted cheaper */
     struct mech_rigid_answer a;
     struct mech_error e;
     mech_error_clear(&e);

@@ -154,7 +154,7 @@ static void test_exact_scene(void)
     for (int partial = 1; partial >= 0; partial--) {
         struct api_request req = {"GET", "/v1/compare", NULL, NULL, 0, partial ? 3010 : 10000000,
                                   mech_clock_seconds() + 120, NULL};
-        struct api_request_ext ext = {q, NULL, 0, NULL, 0, NULL};
+        struct api_request_ext ext = {.query_request = q};
         struct api_response resp;
         api_handle_ext(&req, &ext, &resp);
         CHECK_EQ_INT(resp.status, 200);
@@ -357,7 +357,7 @@ static void test_integrators_catalog(void)
     json_t *cat = api_integrators_catalog();
     json_t *ms = json_object_get(cat, "methods");
     CHECK_EQ_INT(json_array_size(ms), mech_ode_method_count());
-    CHECK_EQ_INT(json_array_size(ms), 16); /* issue 16: + wisdom_holman(_corrected) */
+    CHECK_EQ_INT(json_array_size(ms), 16); /* with wisdom_holman(_corrected) */
     /* The method lists of /v1/trajectory's integrator block (its data file,
      * api/ops/frames/trajectory.json): oneOf[0] adaptive, oneOf[1] fixed-step. */
     const json_t *schema = NULL;

@@ -1,5 +1,6 @@
 /* mech/chooser.h — the predictive method chooser behind {"accuracy": ...} and
- * {"target_error": ...} (issue 16, "A chooser that predicts cost and error").
+ * {"target_error": ...}: it predicts each candidate's cost and error and
+ * runs the cheapest predicted to meet the target.
  *
  * Given a profile of the scene (its class, the run's length in dynamical
  * times, the scale of its state, its sample count, whether it has a
@@ -72,6 +73,9 @@ struct mech_scene_profile {
     double perturbation;    /* the other forces' acceleration relative to the central
                                one, both at distance a (Wisdom-Holman's eps); < 0:
                                unknown (no splitting is offered) */
+    double error_gain;      /* >= 1: how many times more this scene amplifies an error
+                               than its class's calibration scenes (light passing close to
+                               the photon sphere: mech_geodesic_error_gain); 0: 1 */
 };
 
 enum mech_verdict {
