@@ -202,8 +202,10 @@ def metric(m, name):
 
 def test_busy():
     # 5 s of deadline: the queue must still be full when the checks below run,
-    # even on a loaded machine.
-    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "5000", "--max-steps", "1000000000000")
+    # even on a loaded machine. --inline-max-us 0: the cube goes to the (full)
+    # queue like any request, instead of being answered on an I/O thread.
+    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "5000", "--max-steps", "1000000000000",
+               "--inline-max-us", "0")
     try:
         plain = mechd.Client(s.url, timeout=60, retries=0)
         results = {}
@@ -248,6 +250,7 @@ def test_busy():
     # taken for the whole check however slow a loaded machine is; stopping it
     # ends the two slow requests (cancelled) without waiting for the deadline.
     s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "120000", "--max-steps", "1000000000000",
+               "--inline-max-us", "0",
                "--shutdown-grace-ms", "0")
     t3 = t4 = None
     try:
