@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     }
     srv_log_set_json(cfg.log_json); /* before any thread logs */
 
-    gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
+    gsl_set_error_handler_off(); /* process-wide, once: GSL's default handler aborts */
     api_install_json_allocator(); /* jansson's allocator: process-wide, once */
     srv_mhd_panic_install();      /* libmicrohttpd's panics: survive its quiesce race */
     /* Return memory after large answers. glibc's default thresholds are

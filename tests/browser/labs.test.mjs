@@ -3,7 +3,7 @@
 // against a real mechd started on port 0. For each lab: the page loads, the
 // default request is submitted, the numbers the API returns are shown (checked
 // against closed forms), and an invalid input shows its error next to the
-// field it names. Then, as a user would (issue 15): every worked example in
+// field it names. Then, as a user would: every worked example in
 // every lab's picker loads, computes and leaves the picker showing it, with no
 // error box and no "null", "undefined" or "NaN" on the page; at 390 px no lab
 // scrolls sideways, plot text reads at >= 10 px and the spacetime β slider
@@ -12,7 +12,7 @@
 // can be cancelled; and against a mechd started with --token-file the 401
 // leads to an access-token field that makes the labs work. Screenshots of
 // every lab at 1280×800 and 390×844 go to the directory given (default
-// ./screenshots). Issue 19: animations play and pause, the time slider moves
+// ./screenshots). Motion, 3-D and plots: animations play and pause, the time slider moves
 // the time, 3-D views are drawn and turn on drag and keys (and keep their
 // WebGL context over many visits), ticks are round, the orbit has equal
 // aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers;
@@ -267,7 +267,7 @@ await lab('accuracy', async () => {
   await invalid('main form', '#acc-t', -20, '#acc-submit', '> 0');
 });
 
-// --- issue 15: the labs as a user meets them ------------------------------------
+// --- the labs as a user meets them ----------------------------------------------
 const LABS = ['inertia', 'spacetime', 'earth', 'tops', 'orbits', 'accuracy', 'rotations', 'table', 'tides', 'phase', 'particles'];
 
 // Wait until every form of the lab has answered (done, error or cancelled) and
@@ -315,7 +315,7 @@ async function everyExample(id) {
 }
 
 
-// --- each lab teaches (issue 19): the notes' formula, its section, its value beside the API's, the
+// --- each lab teaches: the notes' formula, its section, its value beside the API's, the
 // difference in words; "Copy as curl" and "Copy as Python" put the request on the clipboard; changing an
 // input changes the answer; at desktop and at phone size (where every worked example is loaded again) ----
 // For each lab: an input, a new value for it, the button that runs it, and a number the answer shows.
@@ -580,7 +580,7 @@ await lab('accuracy', async () => {
   } finally { small.proc.kill(); }
 }
 
-// --- issue 19: motion you can watch, 3-D you can turn, plots that read -----------
+// --- motion you can watch, 3-D you can turn, plots that read --------------------
 // A 3-D canvas' pixels: how many are not the white background, and a digest
 // to tell two frames apart (WebGL with preserveDrawingBuffer: readable).
 const pixels = (sel) => page.$eval(sel, (c) => {
@@ -784,7 +784,7 @@ await lab('earth', async () => {
   check(Math.abs(Number(last[2])) < 1e-9, `falling object: the animated path ends on the ground (z = ${last[2]})`);
 }, 'anim-earth');
 
-// --- issue 19, second half: the new labs (rotations, rotating table, tides,
+// --- the newer labs (rotations, rotating table, tides,
 // phase space, particles), each against closed forms computed here ------------
 const clearStates = () => page.evaluate(() => { for (const f of document.querySelectorAll('main form')) delete f.dataset.state; });
 const setRange = (sel, v) => page.$eval(sel, (e, v) => { e.value = String(v); e.dispatchEvent(new Event('input', {bubbles: true})); }, v);
@@ -974,7 +974,7 @@ await lab('particles', async () => {
   await invalid('main form', '#dk-T', -5, '#dk-submit', 'cannot be negative');
 }, 'new-particles');
 
-// --- the Foucault pendulum's swing plane over the Earth in 3-D (issue 19) -----
+// --- the Foucault pendulum's swing plane over the Earth in 3-D -----
 // Over one sidereal day the plane turns on the floor by the measured rate × the
 // day, which is 360° sin λ to first order (ω sin λ × 2π/ω): at the Panthéon's
 // 48.846° N, 271.1° clockwise. From the stars the Earth turns a full 360°;
