@@ -148,11 +148,18 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
 
 /* ======================= POST /v1/relativity/fields ======================== */
 
-static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v)
+/* In SI the first invariant is E^2 - c^2 B^2: it is answered under that
+ * name too (E2_minus_B2 keeps the same number for existing clients), and
+ * c E.B, the second in the same unit V^2/m^2. */
+static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v, int si)
 {
     json_t *o = json_object();
     json_object_set_new_nocheck(o, "E2_minus_B2", api_real(c, v->e2_minus_b2));
     json_object_set_new_nocheck(o, "E_dot_B", api_real(c, v->e_dot_b));
+    if (si) {
+        json_object_set_new_nocheck(o, "E2_minus_c2_B2", api_real(c, v->e2_minus_b2));
+        json_object_set_new_nocheck(o, "c_E_dot_B", api_real(c, MECH_EM_C * v->e_dot_b));
+    }
     return o;
 }
 
@@ -184,8 +191,8 @@ json_t *api_op_relativity_fields(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "E", api_vec3(c, r.e));
     json_object_set_new_nocheck(res, "B", api_vec3(c, r.b));
     api_velocity_describe(c, &b, res);
-    json_object_set_new_nocheck(res, "invariants_before", invariants_json(c, &r.before));
-    json_object_set_new_nocheck(res, "invariants_after", invariants_json(c, &r.after));
+    json_object_set_new_nocheck(res, "invariants_before", invariants_json(c, &r.before, si));
+    json_object_set_new_nocheck(res, "invariants_after", invariants_json(c, &r.after, si));
     json_object_set_new_nocheck(res, "field_scale_squared", api_real(c, r.scale2));
     json_t *diff = json_object();
     const double s2 = r.scale2 > 0 ? r.scale2 : 1.0;
