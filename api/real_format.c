@@ -1,7 +1,7 @@
 /* real_format.c — double -> the text jansson's json_dumps writes with
  * JSON_REAL_PRECISION(17) (printf %.17g plus jansson's touch-ups), fast (see
- * real_format.h for the contract; shared/DESIGN.md: reals print with 17
- * significant digits).
+ * real_format.h for the contract; docs/design.md: reals print with 17
+ * significant digits, the same bytes every run).
  *
  * printf's %.17g converts exactly with multi-precision arithmetic (glibc's
  * __printf_fp): ~0.5-1 µs per real, the largest cost of a small answer. Here

@@ -7,7 +7,7 @@
  * inertia (10 parts) and a short trajectory, with ratios against the floor,
  * in BENCH_ROUNDS interleaved rounds (floor, boost, inertia, trajectory,
  * floor, ...; default 5) whose medians and spreads (lowest-highest round) are
- * printed, then the issue's targets as MET / NOT MET. Finally the
+ * printed, then its targets as MET / NOT MET. Finally the
  * 100,000-vector boost: vectors per second end to end as the client sees it
  * (wall time of each request: send, parse, boost, encode, receive; range and
  * median of 5), of mechd CPU time per request, and of the core batch alone
@@ -519,7 +519,7 @@ int main(int argc, char **argv)
     printf("                      core batch (mech_boost_apply_batch, best of 20): %.3f ms = %.1f M vectors/s\n",
            core * 1e3, (double)nv / core / 1e6);
 
-    printf("\nTargets (issue 9, 2-core machine):\n");
+    printf("\nTargets (2-core machine):\n");
     if (rf.rps > 0)
         printf("  boost >= 70%% of the floor's req/s:        %5.1f %%   %s (median of the rounds' ratios)\n",
                100 * boost_ratio, boost_ratio >= 0.7 ? "MET" : "NOT MET");

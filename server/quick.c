@@ -2,22 +2,24 @@
  * worker, from its measured CPU cost (part of the HTTP front end, see http.c).
  *
  * QUICK OPERATIONS. A POST that api_quick_route() accepts (a closed-form
- * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
+ * operation, whatever the size of its body up to --max-body) is answered on the
  * I/O thread, with the same deadline, step budget and cancel flag as a pooled
  * request: the suspend -> worker -> resume hand-off (two context switches, a
  * futex wake-up and an eventfd write) costs more than such an operation. It is
  * logged and counted in /metrics like any other request. The choice is
- * measured, not assumed (DESIGN.md): runs of a quick route, inline or on a
+ * measured, not assumed: runs of a quick route, inline or on a
  * worker, update a moving average of the route's *thread CPU time*
  * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
  * the fixed costs), and a request runs inline only while its predicted time is
- * at most --inline-max-us, so a route that turns out slow (or a large body)
- * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
+ * at most --inline-max-us, so a route that turns out slow (or a body large
+ * enough to be slow: the decision is the predicted cost, never the size)
+ * goes to the pool, as a short job (workers.h, FAIR QUEUES), and never holds
+ * an I/O thread, and /healthz, for long. CPU
  * time, not wall time: a thread preempted for a millisecond during a 5 µs
  * boost (common when the clients run on the same cores) would otherwise look
  * 200 times slower, and one such run sent every later boost to
  * the niced workers, whose small queue then refused cheap requests with 503
- * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
+ * (a cheap request must never be refused for load). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
  * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of
  * a route always; one measurement moves the average by at most a factor of
  * 1 + (SRV_QUICK_CAP - 1) / 8. The decision recovers: the average decays with

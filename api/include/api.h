@@ -180,14 +180,12 @@ const char *api_problem_title(enum api_problem kind);
  * catalog, health, static text) or must go to a compute worker (POST). */
 int api_is_inline(const char *method, const char *path);
 
-/* Largest body api_quick_route accepts: a quick operation on this many bytes of
- * JSON costs tens of microseconds, less than handing it to a worker. */
-#define API_QUICK_MAX_BODY 8192u
-
 /* Whether a POST may be answered on the I/O thread: its route is marked quick
- * (closed form, cost linear in the body) and body_len <= API_QUICK_MAX_BODY.
- * Returns the route's index in api_routes, or -1 for anything else. The
- * deadline and step budget still apply to a quick request. */
+ * (closed form, cost linear in the body). Returns the route's index in
+ * api_routes, or -1 for anything else. Any body size: whether it runs there
+ * is the server's decision, from the cost it predicts for this body (its
+ * --inline-max-us), not from the size. The deadline and step budget still
+ * apply to a quick request. */
 long api_quick_route(const char *method, const char *path, size_t body_len);
 
 /* The route table, read through accessors (the server sees no struct

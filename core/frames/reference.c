@@ -160,6 +160,36 @@ static int force_is_null(const struct mech_force *f, double charge)
     return 0;
 }
 
+/* A relativistic scene: exact only for special-relativistic dynamics in an
+ * inertial frame under uniform fields (Lorentz forces and uniform gravity,
+ * the latter a constant force m g: an electric field m g / q), not null. */
+static enum mech_reference_kind relativistic_reference(const struct mech_trajectory_problem *p,
+                                                       struct mech_trajectory_reference *ref)
+{
+    if (p->relativity != MECH_RELATIVITY_SPECIAL || p->frame.type != MECH_FRAME_INERTIAL)
+        return ref->kind;
+    struct mech_vec3 eps = mech_vec3_make(0, 0, 0), om = mech_vec3_make(0, 0, 0);
+    const double qm = p->charge / p->mass;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        const struct mech_force *f = &p->forces[i];
+        if (force_is_null(f, p->charge)) continue;
+        if (f->type == MECH_FORCE_UNIFORM_GRAVITY) {
+            eps = mech_vec3_add(eps, f->u.uniform_gravity.g);
+        } else if (f->type == MECH_FORCE_LORENTZ) {
+            eps = mech_vec3_add(eps, mech_vec3_scale(f->u.lorentz.E, qm));
+            om = mech_vec3_add(om, mech_vec3_scale(f->u.lorentz.B, qm));
+        } else {
+            return ref->kind;
+        }
+    }
+    if (mech_charged_motion_init(eps, om, p->position, mech_trajectory_proper_velocity0(p),
+                                 &ref->charged, NULL) != MECH_OK)
+        return ref->kind;
+    ref->kind = MECH_REFERENCE_EXACT;
+    ref->name = "relativistic_uniform_fields";
+    return ref->kind;
+}
+
 enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
                                                         struct mech_trajectory_reference *ref)
 {
@@ -169,6 +199,7 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
     if (!p) return ref->kind;
     ref->r0 = p->position;
     ref->v0 = p->velocity;
+    if (p->relativity) return relativistic_reference(p, ref);
     struct mech_vec3 w = mech_frame_omega(&p->frame);
     const int rotating = p->frame.type == MECH_FRAME_ROTATING;
     const int noninertial = p->frame.type != MECH_FRAME_INERTIAL && !vec_is_zero(w);
@@ -287,6 +318,12 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
         const double c = (double)cosl(ang), sn = -(double)sinl(ang);
         *r = rodrigues(k, c, sn, ri);
         *v = mech_vec3_sub(rodrigues(k, c, sn, vi), mech_vec3_cross(ref->spin, *r));
+    } else if (!strcmp(ref->name, "relativistic_uniform_fields")) {
+        struct mech_charged_state cs;
+        enum mech_status st = mech_charged_motion_at_lab_time(&ref->charged, t, &cs, err);
+        if (st != MECH_OK) return st;
+        *r = cs.r;
+        *v = cs.v;
     } else if (!strcmp(ref->name, "kepler")) {
         struct mech_vec3 rr, vv;
         enum mech_status st = mech_kepler_propagate(ref->gm, mech_vec3_sub(ref->r0, ref->center),

@@ -1,5 +1,5 @@
 /* mech/reference.h — exact and first-order solutions used as references for
- * the error of numerical trajectories (DESIGN.md "Accuracy you can see").
+ * the error of numerical trajectories (every numeric answer says how good it is).
  *
  *   Kepler two-body motion (universal variables, any conic),
  *   the isotropic harmonic oscillator (spring of rest length 0) with uniform
@@ -14,6 +14,7 @@
 #ifndef MECH_REFERENCE_H
 #define MECH_REFERENCE_H
 
+#include "mech/charged_motion.h"
 #include "mech/kepler.h"
 #include "mech/status.h"
 #include "mech/trajectory_problem.h"
@@ -47,7 +48,7 @@ void mech_harmonic_propagate_dd(double omega, double omega_lo, struct mech_vec3 
  *   v = v0 e^{-x} + g t E1(x),  r = r0 + v0 t E1(x) + g t^2 E2(x),  x = gamma t,
  * E1(x) = (1 - e^{-x})/x = -expm1(-x)/x, E2(x) = (x - 1 + e^{-x})/x^2 (a series
  * for x < 1, so no cancellation); gamma = 0 gives r0 + v0 t + g t^2/2. This is
- * the issue's r0 + (m/b)(v0 - v_term)(1 - e^{-bt/m}) + v_term t, v_term = m g/b,
+ * the closed form r0 + (m/b)(v0 - v_term)(1 - e^{-bt/m}) + v_term t, v_term = m g/b,
  * rearranged so that neither large nor small b t/m cancels. Cannot fail. */
 void mech_uniform_drag_propagate(struct mech_vec3 g, double gamma, struct mech_vec3 r0,
                                  struct mech_vec3 v0, double t, struct mech_vec3 *r,
@@ -87,6 +88,7 @@ struct mech_trajectory_reference {
     struct mech_vec3 center, g, w;
     int centrifugal;
     struct mech_vec3 r0, v0;
+    struct mech_charged_motion charged; /* "relativistic_uniform_fields" */
     /* exact references seen from a frame turning at the constant rate
      * `spin` (rad/s, frame axes; 0: none): the inertial solution through the
      * inertial initial state (r0, v0 + spin x r0), turned back by spin t.
@@ -114,6 +116,10 @@ struct mech_trajectory_reference {
  *     "harmonic_oscillator_rotating", "uniform_gravity_rotating");
  *   first-order "coriolis_first_order": rotating or earth frame with
  *     Coriolis modelled, only uniform gravity (centrifugal modelled or not).
+ * With a relativistic term modelled (p->relativity) none of these: only
+ *   exact "relativistic_uniform_fields": special relativity in an inertial
+ *   frame, only Lorentz forces and uniform gravity (a constant force m g),
+ *   not null fields (mech/charged_motion.h).
  * A modelled translational term -A joins g (a uniform field). A rotation
  * that changes with time (omega_dot != 0 with a rotation term modelled), a
  * lorentz force on a charge or a third-body tide: no reference.
