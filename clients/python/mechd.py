@@ -375,7 +375,7 @@ class _Operations:
         """
         return self._operation('/v1/rotation/euler-rates', body, (('euler_zxz', euler_zxz), ('rates', rates), ('omega_body', omega_body), ('omega_space', omega_space), ('cost', cost)))
 
-    def rigid_inertia(self, body: Optional[Dict[str, Any]] = None, *, bodies: Optional[List[Any]] = None, origin: Optional[Any] = None, omega: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def rigid_inertia(self, body: Optional[Dict[str, Any]] = None, *, bodies: Optional[List[Any]] = None, origin: Optional[Any] = None, omega: Optional[List[float]] = None, incline: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Inertia tensor, principal axes, angular momentum and kinetic energy of a rigid body
 
         POST /v1/rigid/inertia. The request is `body` (a dict) and/or the keyword arguments below
@@ -387,11 +387,15 @@ class _Operations:
             bodies (required): the parts of one rigid body
             origin: one of: m, point the tensor is taken about; object; default "center_of_mass"
             omega: rad/s, angular velocity in scene axes (rotation about origin)
+            incline: rolling without slipping down an incline, for this body: the moment about the
+                    rolling axis through the centre of mass, a = g sin(angle)/(1 + I/(m R^2)), the
+                    friction needed and, with length, the time and speed (ignored inside
+                    /v1/rigid/rotate's inertia)
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('cost', cost)))
+        return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('incline', incline), ('cost', cost)))
 
     def rigid_rotate(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, inertia: Optional[Dict[str, Any]] = None, omega: Optional[List[float]] = None, orientation: Optional[Dict[str, Any]] = None, torque: Optional[Dict[str, Any]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Euler's equations with a quaternion attitude: free or torqued rotation of a rigid body, checked against the exact torque-free solution
@@ -1004,7 +1008,7 @@ class _Operations:
         """
         return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('infall_from', infall_from), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
 
-    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, orbital_period: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
 
         POST /v1/gr/geodesic. The request is `body` (a dict) and/or the keyword arguments below
@@ -1042,6 +1046,9 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            orbital_period: s, SI only: an orbital period the problem gives (Mercury: 87.969 days =
+                    7600521.6 s, sidereal) to turn the advance per orbit into arcsec per century;
+                    default the integrated orbit's radial period in coordinate time
             dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
                     error, evaluations and CPU seconds from the calibrated model) without integrating:
                     no samples, no pilot run; default false
@@ -1049,7 +1056,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('orbital_period', orbital_period), ('dry_run', dry_run), ('cost', cost)))
 
     def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, Hénon–Heiles, 3D potentials) with conserved momenta and energy
