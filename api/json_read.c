@@ -80,7 +80,7 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
 
 #define JR_MANTISSA_MAX ((uint64_t)1 << 53)
 
-/* A number token at r->p (first byte '-' or a digit), as a real.
+/* api_json_number_scan (json_read.h): a number token's value.
  *
  * The value is strtod()'s (jsonp_strtod, strconv.c). Where the token's
  * digits, read as an integer M with the decimal exponent e, have M <= 2^53 and
@@ -90,9 +90,9 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
  * floating point numbers accurately", the fast path; needs FLT_EVAL_METHOD
  * 0, so no extended-precision intermediates). M = 0 is ±0 for any exponent.
  * Every other token goes through strtod() on a NUL-terminated copy. */
-static enum jr_status jr_number(struct jr *r, json_t **out)
+const char *api_json_number_scan(const char *text, const char *limit, double *value)
 {
-    const unsigned char *s = r->p, *p = r->p, *end = r->end;
+    const unsigned char *s = (const unsigned char *)text, *p = s, *end = (const unsigned char *)limit;
     int negative = 0, exact = 1;
     uint64_t m = 0;
     long e10 = 0;
@@ -109,11 +109,11 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
             p++;
         }
     } else {
-        return JR_FALLBACK;
+        return NULL;
     }
     if (p < end && *p == '.') {
         p++;
-        if (p == end || !jr_is_digit(*p)) return JR_FALLBACK;
+        if (p == end || !jr_is_digit(*p)) return NULL;
         while (p < end && jr_is_digit(*p)) {
             if (m > JR_MANTISSA_MAX / 10) exact = 0;
             else m = m * 10 + (uint64_t)(*p - '0');
@@ -126,7 +126,7 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         long ex = 0;
         p++;
         if (p < end && (*p == '+' || *p == '-')) eneg = *p++ == '-';
-        if (p == end || !jr_is_digit(*p)) return JR_FALLBACK;
+        if (p == end || !jr_is_digit(*p)) return NULL;
         while (p < end && jr_is_digit(*p)) {
             if (ex < 100000) ex = ex * 10 + (*p - '0');
             p++;
@@ -134,7 +134,7 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         e10 += eneg ? -ex : ex;
     }
     size_t n = (size_t)(p - s);
-    if (n > API_JSON_READ_MAX_NUMBER) return JR_FALLBACK;
+    if (n > API_JSON_READ_MAX_NUMBER) return NULL;
     double v;
 #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD == 0
     if (exact && m > JR_MANTISSA_MAX) exact = 0;
@@ -159,11 +159,22 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         v = strtod(buf, &stop);
         int overflow = (v == HUGE_VAL || v == -HUGE_VAL) && errno == ERANGE;
         errno = saved_errno;
-        if (stop != buf + n || overflow) return JR_FALLBACK;
+        if (stop != buf + n || overflow) return NULL;
     }
+    *value = v;
+    return (const char *)p;
+}
+
+/* A number token at r->p (first byte '-' or a digit), as a real. */
+static enum jr_status jr_number(struct jr *r, json_t **out)
+{
+    double v;
+    const char *next =
+        api_json_number_scan((const char *)r->p, (const char *)r->end, &v);
+    if (!next) return JR_FALLBACK;
     *out = json_real(v);
     if (!*out) return JR_NOMEM; /* v is finite: only memory can fail */
-    r->p = p;
+    r->p = (const unsigned char *)next;
     return JR_OK;
 }
 
