@@ -27,6 +27,7 @@
  * (which in 2.14 corrupts its lexer when an allocation fails; see
  * tests/api/test_alloc_failure.c, JANSSON_LEXER_BUG). */
 #include "json_read.h"
+#include "real_parse.h"
 
 #include <errno.h>
 #include <float.h>
@@ -79,6 +80,8 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 #define JR_MANTISSA_MAX ((uint64_t)1 << 53)
+/* Significant digits kept exactly in 64 bits (10^19 < 2^64). */
+#define JR_DIGITS_MAX 19
 
 /* api_json_number_scan (json_read.h): a number token's value.
  *
@@ -89,11 +92,14 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
  * glibc's correctly rounded strtod() returns (Clinger 1990, "How to read
  * floating point numbers accurately", the fast path; needs FLT_EVAL_METHOD
  * 0, so no extended-precision intermediates). M = 0 is ±0 for any exponent.
- * Every other token goes through strtod() on a NUL-terminated copy. */
+ * Otherwise, with at most 19 significant digits (every nonzero digit kept in
+ * M), api_real_from_decimal (real_parse.c, Eisel-Lemire) assembles the same
+ * correctly rounded double from integer products or says it cannot decide;
+ * what is left goes through strtod() on a NUL-terminated copy. */
 const char *api_json_number_scan(const char *text, const char *limit, double *value)
 {
     const unsigned char *s = (const unsigned char *)text, *p = s, *end = (const unsigned char *)limit;
-    int negative = 0, exact = 1;
+    int negative = 0, nd = 0, dropped = 0; /* significant digits kept in m; a nonzero one left out */
     uint64_t m = 0;
     long e10 = 0;
     if (p < end && *p == '-') {
@@ -104,8 +110,13 @@ const char *api_json_number_scan(const char *text, const char *limit, double *va
         p++;
     } else if (p < end && jr_is_digit(*p)) {
         while (p < end && jr_is_digit(*p)) {
-            if (m > JR_MANTISSA_MAX / 10) exact = 0;
-            else m = m * 10 + (uint64_t)(*p - '0');
+            if (nd < JR_DIGITS_MAX) {
+                m = m * 10 + (uint64_t)(*p - '0');
+                nd++;
+            } else {
+                e10++;
+                dropped |= *p != '0';
+            }
             p++;
         }
     } else {
@@ -115,9 +126,13 @@ const char *api_json_number_scan(const char *text, const char *limit, double *va
         p++;
         if (p == end || !jr_is_digit(*p)) return NULL;
         while (p < end && jr_is_digit(*p)) {
-            if (m > JR_MANTISSA_MAX / 10) exact = 0;
-            else m = m * 10 + (uint64_t)(*p - '0');
-            e10--;
+            if (nd < JR_DIGITS_MAX) {
+                m = m * 10 + (uint64_t)(*p - '0');
+                nd += m != 0; /* leading zeros of a fraction are not significant */
+                e10--;
+            } else {
+                dropped |= *p != '0';
+            }
             p++;
         }
     }
@@ -137,15 +152,17 @@ const char *api_json_number_scan(const char *text, const char *limit, double *va
     if (n > API_JSON_READ_MAX_NUMBER) return NULL;
     double v;
 #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD == 0
-    if (exact && m > JR_MANTISSA_MAX) exact = 0;
-    if (exact && m != 0 && (e10 < -22 || e10 > 22)) exact = 0;
+    const int exact = !dropped && (m == 0 || (m <= JR_MANTISSA_MAX && e10 >= -22 && e10 <= 22));
 #else
-    exact = 0;
+    const int exact = !dropped && m == 0;
 #endif
     if (exact) {
         double x = (double)m;
         if (m != 0) x = e10 >= 0 ? x * jr_pow10[e10] : x / jr_pow10[-e10];
         v = negative ? -x : x;
+    } else if (!dropped && e10 >= -400 && e10 <= 400 &&
+               api_real_from_decimal(m, (int)e10, negative, &v)) {
+        /* Eisel-Lemire (real_parse.c): strtod's value without strtod */
     } else {
         char buf[API_JSON_READ_MAX_NUMBER + 1];
         memcpy(buf, s, n);
