@@ -104,6 +104,9 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
     const char *query = ext ? ext->query_request : NULL;
     full.no_cost = (ext && ext->no_cost) || (query && is_get(req->method ? req->method : ""));
     full.max_samples = ext && ext->max_samples > 0 ? ext->max_samples : API_DEFAULT_MAX_SAMPLES;
+    full.admit = ext ? ext->admit : NULL;
+    full.admit_ctx = ext ? ext->admit_ctx : NULL;
+    full.admit_pending = full.admit != NULL;
     if (api_init() != 0) {
         api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
         snprintf(resp->note, sizeof resp->note, "api_init failed: %.150s", api_init_error());

@@ -67,7 +67,8 @@ static json_t *problem_json(enum api_problem kind, const char *detail, const jso
 /* Whether a problem kind says the answer depended on load or time. */
 static int problem_depends_on_load(enum api_problem k)
 {
-    return k == API_PROBLEM_BUDGET || k == API_PROBLEM_CANCELLED || k == API_PROBLEM_QUEUE_FULL;
+    return k == API_PROBLEM_BUDGET || k == API_PROBLEM_CANCELLED || k == API_PROBLEM_QUEUE_FULL ||
+           k == API_PROBLEM_ANSWER_MEMORY;
 }
 
 /* The pipeline after parsing: schema validation, the answer budget, the
@@ -103,6 +104,20 @@ int api_run_parsed(size_t ri, const struct api_request *req, const json_t *body,
     if (too_large) {
         *out = too_large;
         return api_problem_status(API_PROBLEM_ANSWER_TOO_LARGE);
+    }
+    /* Admission (the server's answer-memory budget): once, for the request's
+     * own operation, before anything is computed. */
+    struct api_full_request *full_req = (struct api_full_request *)(void *)req;
+    if (full_req && full_req->admit_pending) {
+        full_req->admit_pending = 0;
+        if (full_req->admit(full_req->admit_ctx, (long)ri, api_answer_samples(ri, body))) {
+            *out = problem_json(API_PROBLEM_ANSWER_MEMORY,
+                                "the server holds as much answer memory as it may "
+                                "(--max-answer-memory) for answers still being sent; retry later",
+                                NULL, NULL);
+            *dep = 1;
+            return api_problem_status(API_PROBLEM_ANSWER_MEMORY);
+        }
     }
 
     /* The handler sees the body with its schema's defaults filled in (a

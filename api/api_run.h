@@ -16,6 +16,9 @@ struct api_full_request {
     struct api_request req; /* first member */
     int no_cost;
     long max_samples; /* > 0 */
+    int (*admit)(void *ctx, long route, double samples); /* api_request_ext's, or NULL */
+    void *admit_ctx;
+    int admit_pending; /* 1 until the first (the request's own) run reaches admission */
 };
 
 /* The pipeline after parsing, for route ri (a POST operation): schema

@@ -138,3 +138,13 @@ json_t *api_answer_budget_problem(size_t ri, const json_t *body, const char *pre
     json_object_set_new_nocheck(p, "requested", json_integer((json_int_t)sc.total));
     return p;
 }
+
+double api_answer_samples(size_t ri, const json_t *body)
+{
+    if (!api_route_counts_samples(ri)) return 0.0;
+    struct sample_count sc;
+    memset(&sc, 0, sizeof sc);
+    sc.cap = 1e300; /* count only */
+    samples_count(ri, body, NULL, 0, 0, &sc);
+    return sc.total;
+}

@@ -14,4 +14,9 @@
  * no samples and no nested operations are not walked. */
 json_t *api_answer_budget_problem(size_t ri, const json_t *body, const char *prefix, long cap);
 
+/* The samples body (validated against route ri's schema, borrowed) asks for
+ * in all, counted as api_answer_budget_problem counts them; 0 for a route
+ * whose schema has no samples and no nested operations. */
+double api_answer_samples(size_t ri, const json_t *body);
+
 #endif

@@ -382,9 +382,40 @@ static void geo_encode_diagnostics(struct api_call *c, json_t *out, const struct
     json_object_set_new_nocheck(d, "constraint", cj);
     json_object_set_new_nocheck(d, "time_unit_of_the_scaled_state",
                                 api_real(c, mech_gr_time_out(&u, T)));
-    json_object_set_new_nocheck(d, "selection", api_integrator_block_selection(c, &ch));
+    /* the error evidence: the exact deflection or periapsis advance, as an
+     * angle relative to the angle the run sweeps (pi + delta for light,
+     * 2 pi + advance per radial period), the scale of phi */
+    double err = -1.0;
+    const char *ev = NULL;
+    if (ch.chosen && g->ans.scatter && isfinite(r.measured_deflection) &&
+        isfinite(g->ans.deflection_exact)) {
+        err = fabs(r.measured_deflection - g->ans.deflection_exact) /
+              (MECH_PI + g->ans.deflection_exact);
+        ev = "the exact deflection (deflection.exact): |measured - exact| / (pi + exact), "
+             "the angle the ray sweeps";
+    } else if (ch.chosen && g->su.bound && r.n_periapses >= 2 && isfinite(r.measured_advance) &&
+               isfinite(g->su.adv_exact)) {
+        err = fabs(r.measured_advance - g->su.adv_exact) / (2.0 * MECH_PI + g->su.adv_exact);
+        ev = "the exact periapsis advance (precession.exact_per_orbit): |measured - exact| / "
+             "(2 pi + exact), the angle of one radial period";
+    }
+    json_object_set_new_nocheck(
+        d, "selection",
+        ch.chosen ? api_integrator_block_selection_achieved(
+                        c, &ch, err,
+                        ev ? ev
+                           : "none: no exact reference for this motion (captured, or a run "
+                             "without two periapses or an escape)",
+                        0.0)
+                  : api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
+}
+
+/* Light coming in from its start radius (it passes a periapsis or is captured). */
+static int photon_in(const struct mech_geodesic_problem *p)
+{
+    return p->init.kind == MECH_GEODESIC_NULL && p->init.rdot0 < 0.0;
 }
 
 json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
@@ -409,9 +440,15 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
     /* a pilot for long runs in strong field (core/gr/geodesic_run.c) */
     const struct mech_pilot_system pilot = {mech_geodesic_pilot_run, &g.p};
+    /* light coming in and scattering: its winding's error gain and its cost
+     * (mech_geodesic_error_gain, core/gr/geodesic_run.c) */
+    const double span = g.p.param_end / T;
+    const int scatter = photon_in(&g.p);
     const struct api_integrator_hooks hooks = {
-        0.0, 0.0, 0.0, mech_geodesic_pilot_applies(&g.su) ? &pilot : NULL};
-    if (!api_integrator_block_parse_hooks(c, ib, "/integrator", g.p.param_end / T, &geodesic_eqs,
+        scatter ? MECH_GEODESIC_SCATTER_COST_FACTOR * span : 0.0, 0.0, 0.0,
+        mech_geodesic_pilot_applies(&g.su) ? &pilot : NULL,
+        scatter ? mech_geodesic_error_gain(fabs(g.p.init.L)) : 0.0};
+    if (!api_integrator_block_parse_hooks(c, ib, "/integrator", span, &geodesic_eqs,
                                           NULL, &hooks, &g.ch))
         return NULL;
     if (api_dry_run_requested(body))

@@ -197,7 +197,7 @@ int api_ham_integrator_read(struct api_call *c, const json_t *block, const char 
                             const struct mech_pilot_system *pilot, struct api_ham_integ *out)
 {
     /* pilot: the flow's hook (mech_ham_pilot_run), NULL elsewhere */
-    const struct api_integrator_hooks hooks = {0.0, 0.0, 0.0, pilot};
+    const struct api_integrator_hooks hooks = {0.0, 0.0, 0.0, pilot, mech_ham_error_gain(s, y0)};
     memset(out, 0, sizeof *out);
     /* Chosen settings scale atol to the smallest scale of the state's SI
      * components, so a 1e-15 m oscillator is not integrated at atol 1e-13. */

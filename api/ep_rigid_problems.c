@@ -64,6 +64,14 @@ json_t *api_op_rigid_free_symmetric_top(struct api_call *c, const json_t *body)
     set_real(c, out, "precession_body", t.precession_body);
     json_object_set_new(out, "precession_body_period", period_or_null(c, t.precession_body));
     set_real(c, out, "notes_omega", -t.precession_body);
+    json_object_set_new(out, "precession_body_sense",
+                        json_string(t.precession_body == 0 ? "none"
+                                    : (t.precession_body > 0) == (w[2] > 0) ? "with_spin"
+                                                                            : "against_spin"));
+    set_real(c, out, "dynamical_ellipticity", t.ellipticity);
+    json_object_set_new(out, "free_precession_period", period_or_null(c, t.precession_body));
+    json_object_set_new(out, "free_precession_period_in_spin_periods",
+                        t.ellipticity != 0 ? api_real(c, 1 / fabs(t.ellipticity)) : json_null());
     json_object_set_new(out, "shape", json_string(t.prolate ? "prolate"
                                                   : i3 > ip ? "oblate"
                                                             : "spherical"));

@@ -201,7 +201,7 @@ static int choose_method(struct api_call *c, const json_t *body, const struct me
     sys.samples = p->samples;
     /* the closed form's own cost: its quadrature (core/rigid/rigid_closed_form.c) */
     const struct api_integrator_hooks hooks = {0.0, mech_rigid_closed_form_predict_evaluations(p),
-                                               MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL, NULL};
+                                               MECH_RIGID_CLOSED_FORM_CPU_PER_EVAL, NULL, 0.0};
     return api_integrator_block_parse_hooks(
         c, json_object_get(body, "integrator"), "/integrator", p->t_end * W, &sys,
         mech_rigid_has_closed_form(p) ? "torque-free rigid body" : NULL, &hooks, ch);

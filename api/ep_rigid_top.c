@@ -65,7 +65,7 @@ static int choose_method(struct api_call *c, const json_t *body, struct mech_top
     struct api_integrator_system sys = top_eqs;
     sys.samples = p->samples;
     const struct mech_pilot_system pilot = {mech_top_pilot_run, p};
-    const struct api_integrator_hooks hooks = {mech_top_cost_span(p), 0.0, 0.0, &pilot};
+    const struct api_integrator_hooks hooks = {mech_top_cost_span(p), 0.0, 0.0, &pilot, 0.0};
     return api_integrator_block_parse_hooks(c, json_object_get(body, "integrator"), "/integrator",
                                             p->t_end * mech_top_rate_scale(p), &sys, NULL, &hooks,
                                             ch);
@@ -110,6 +110,7 @@ static void encode_closed_forms(struct api_call *c, const struct mech_top_result
     set(nu, "measured_theta_min", api_real(c, r->theta_min_measured));
     set(nu, "measured_theta_max", api_real(c, r->theta_max_measured));
     set(nu, "cubic_roots_u", api_reals(c, r->turning.roots, (size_t)r->turning.n_roots));
+    set(nu, "period", real_or_null(c, r->turning.nutation_period));
     set(out, "nutation", nu);
     set(co, "p_phi", quantity(c, r->p_phi0, r->p_phi_final, r->max_p_phi_drift));
     set(co, "p_psi", quantity(c, r->p_psi0, r->p_psi_final, r->max_p_psi_drift));
@@ -120,8 +121,11 @@ static void encode_closed_forms(struct api_call *c, const struct mech_top_result
     set(sl, "stable", json_boolean(r->sleep_stable));
     set(sl, "critical_omega3", api_real(c, r->critical_omega3));
     set(out, "sleeping_top", sl);
-    set(pr, "steady_slow", real_or_null(c, r->precession_slow));
-    set(pr, "steady_fast", real_or_null(c, r->precession_fast));
+    set(pr, "steady_precession_rate_slow", real_or_null(c, r->precession_slow));
+    set(pr, "steady_precession_rate_fast", real_or_null(c, r->precession_fast));
+    set(pr, "steady_slow", real_or_null(c, r->precession_slow)); /* deprecated alias */
+    set(pr, "steady_fast", real_or_null(c, r->precession_fast)); /* deprecated alias */
+    set(pr, "nutation_averaged_rate", real_or_null(c, r->turning.precession_mean));
     set(pr, "gyroscopic_approximation", real_or_null(c, r->precession_gyroscopic));
     set(pr, "measured_mean_rate", real_or_null(c, r->precession_measured));
     set(out, "precession", pr);

@@ -41,7 +41,7 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
                                      const struct api_integrator_hooks *hooks,
                                      struct api_integrator_choice *out)
 {
-    static const struct api_integrator_hooks no_hooks = {0.0, 0.0, 0.0, NULL};
+    static const struct api_integrator_hooks no_hooks = {0.0, 0.0, 0.0, NULL, 0.0};
     if (!hooks) hooks = &no_hooks;
     memset(out, 0, sizeof *out);
     out->requested = api_call_as_given(c, in, pointer);
@@ -88,6 +88,7 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         .closed_form_evaluations = hooks->closed_form_evaluations,
         .closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval,
         .pilot = hooks->pilot,
+        .error_gain = hooks->error_gain,
         .defaulted = in == NULL,
     };
     struct mech_error e;

@@ -80,6 +80,8 @@ struct api_integrator_hooks {
                               prediction is uncertain and expensive (mech/chooser_pilot.h;
                               borrowed for the call); NULL: none. Never run for dry runs
                               ("dry_run": true in c->body). */
+    double error_gain;     /* mech_scene_profile.error_gain (0: 1): light near the photon
+                              sphere (mech_geodesic_error_gain) */
 };
 
 /* api_integrator_block_parse_cf with the hooks (NULL: none). */

@@ -64,6 +64,20 @@ static const struct problem_row problems[API_PROBLEM_COUNT] = {
         "Transfer-Encoding, Content-Length headers that disagree, or a Transfer-Encoding other "
         "than chunked (RFC 9112 section 6). Send the body with one Content-Length, or with "
         "Transfer-Encoding: chunked alone. The server closes the connection."},
+    [API_PROBLEM_ANSWER_MEMORY] = {503, "/problems/answer-memory-full", "Server busy",
+        "The answers still being sent to clients hold all the memory the server gives them "
+        "(--max-answer-memory), and this request's answer is predicted not to fit in what is "
+        "left; nothing was computed. Retry after Retry-After seconds."},
+    [API_PROBLEM_BAD_REQUEST] = {400, "/problems/bad-request", "Bad request",
+        "The request head is not valid HTTP: an HTTP/1.1 request must carry exactly one Host "
+        "header (RFC 9112 section 3.2). The server closes the connection."},
+    [API_PROBLEM_URI_TOO_LONG] = {414, "/problems/uri-too-long", "URI too long",
+        "The request target (path and query) is longer than the server reads; send a large "
+        "request as a POST body instead of GET ?request=."},
+    [API_PROBLEM_HEADERS_TOO_LARGE] = {431, "/problems/headers-too-large",
+        "Request header fields too large",
+        "The request line and headers together are larger than the server reads (RFC 6585 "
+        "section 5); send fewer or shorter headers."},
 };
 
 int api_problem_status(enum api_problem kind)
@@ -115,5 +129,7 @@ void api_response_problem(struct api_response *resp, enum api_problem kind, cons
     json_t *p = api_problem_object(kind, detail);
     api_respond_json(resp, api_problem_status(kind), "application/problem+json", p);
     json_decref(p);
-    if (kind == API_PROBLEM_QUEUE_FULL || kind == API_PROBLEM_CANCELLED) resp->retry_after = 1;
+    if (kind == API_PROBLEM_QUEUE_FULL || kind == API_PROBLEM_CANCELLED ||
+        kind == API_PROBLEM_ANSWER_MEMORY)
+        resp->retry_after = 1;
 }

@@ -2,7 +2,8 @@
  * default) with strict validation; see config.h. */
 #include "config.h"
 
-#include "static.h" /* MECHD_STATIC_DIR, the default root */
+#include "answer_mem.h" /* srv_mem_default_cap */
+#include "static.h"     /* MECHD_STATIC_DIR, the default root */
 
 #include <arpa/inet.h>
 #include <errno.h>
@@ -32,6 +33,7 @@ enum opt_id {
     OPT_INLINE_MAX_US,
     OPT_WORKER_NICE,
     OPT_MAX_SAMPLES,
+    OPT_MAX_ANSWER_MEMORY,
     OPT_MAX_CONNECTIONS,
     OPT_SHUTDOWN_GRACE_MS,
     OPT_HANGUP_GRACE_MS,
@@ -82,14 +84,22 @@ static const struct opt_spec {
                            "a quick operation (closed form, small body) is answered on an I/O "
                            "thread while its measured CPU cost predicts at most this many µs; "
                            "0: every operation goes to the workers"},
-    [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "10", 0, 19,
+    [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "0", 0, 19,
                          "how much lower the compute workers' scheduling priority is than the "
-                         "I/O threads' (nice increment; with > 0 also SCHED_BATCH), so /healthz "
-                         "and quick answers win a busy core; 0: same priority"},
+                         "I/O threads' (nice increment; workers always run SCHED_BATCH, so a "
+                         "waking worker never preempts an I/O thread); 0: the same CPU share, "
+                         "so long jobs keep their fair share under a flood of cheap requests"},
     [OPT_MAX_SAMPLES] = {"--max-samples", "MECHD_MAX_SAMPLES", "200000", 1, 1000000000LL,
                          "answer budget: the samples one request may ask for, summed over its "
                          "\"samples\" members and a batch's items; more get 422 "
                          "answer-too-large before anything is computed"},
+    [OPT_MAX_ANSWER_MEMORY] = {"--max-answer-memory", "MECHD_MAX_ANSWER_MEMORY", "auto",
+                               1048576LL, 1099511627776LL,
+                               "bytes of answers the server holds at once for clients still "
+                               "reading them (and being computed); a request whose predicted "
+                               "answer does not fit waits up to 1 s, then gets 503 "
+                               "answer-memory-full with Retry-After. auto: 512 MiB or a "
+                               "quarter of the memory (RAM or cgroup limit), whichever is less"},
     [OPT_MAX_CONNECTIONS] = {"--max-connections", "MECHD_MAX_CONNECTIONS", "512", 8, 100000,
                              "connections held open at once; a new one beyond it closes the "
                              "connection that has waited longest without sending a whole "
@@ -257,10 +267,14 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         cfg->log_json = !strcmp(value, "json");
         return 0;
     }
+    if (id == OPT_MAX_ANSWER_MEMORY && strcmp(value, "auto") == 0) {
+        cfg->max_answer_memory = srv_mem_default_cap();
+        return 0;
+    }
     long long v;
     if (parse_int(value, o->min, o->max, &v) != 0) {
-        fprintf(err, "mechd: invalid %s '%s': expected an integer in [%lld, %lld]\n", source, value,
-                o->min, o->max);
+        fprintf(err, "mechd: invalid %s '%s': expected %san integer in [%lld, %lld]\n", source,
+                value, id == OPT_MAX_ANSWER_MEMORY ? "auto or " : "", o->min, o->max);
         return -1;
     }
     switch (id) {
@@ -296,6 +310,9 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         break;
     case OPT_MAX_SAMPLES:
         cfg->max_samples = (long)v;
+        break;
+    case OPT_MAX_ANSWER_MEMORY:
+        cfg->max_answer_memory = (size_t)v;
         break;
     case OPT_MAX_CONNECTIONS:
         cfg->max_connections = (int)v;

@@ -28,6 +28,8 @@ struct srv_config {
     long inline_max_us;      /* quick operations run inline while predicted <= this, 0..1e6 µs */
     int worker_nice;         /* nice increment of the compute workers, 0..19 */
     long max_samples;        /* answer budget: samples per request (batch items summed), 1..1e9 */
+    size_t max_answer_memory; /* bytes of answers held at once (computed, not yet sent);
+                                 0 before srv_config_load, which fills in the default */
     int max_connections;     /* connections held open at once before the longest-waiting
                                 idle one is closed to make room, 8..100000 */
     long shutdown_grace_ms;  /* on SIGTERM/SIGINT, time running and queued requests get to

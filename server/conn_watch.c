@@ -376,7 +376,7 @@ void on_connection(void *cls, struct MHD_Connection *conn, void **socket_context
         h->n_conns++;
         /* Over --max-connections (not counting those already closing): make
          * room, so a health probe or a real client gets in during a flood. */
-        if (h->n_conns - h->n_shut > h->cfg->max_connections) evict_longest_waiting(h, c);
+        if (h->n_conns - h->n_shut > h->max_connections) evict_longest_waiting(h, c);
         pthread_mutex_unlock(&h->conn_mu);
     } else if (code == MHD_CONNECTION_NOTIFY_CLOSED) {
         struct srv_conn *c = *socket_context;

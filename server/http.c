@@ -41,6 +41,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "answer_mem.h"
 #include "api.h"
 #include "log.h"
 #include "static.h"
@@ -150,6 +151,7 @@ static void client_address(struct MHD_Connection *conn, char *out, size_t n)
 static void req_free(struct srv_req *r)
 {
     if (!r) return;
+    srv_mem_release(r->http ? r->http->mem : NULL, r->charged); /* an answer never sent */
     api_response_free(&r->aresp);
     free(r->method);
     free(r->path);
@@ -214,16 +216,6 @@ static void add_common_headers(struct srv_req *r, struct MHD_Response *mr, const
     }
 }
 
-/* MHD's free of an answer body: a large answer (a long trajectory, a batch)
- * leaves megabytes of freed heap in the worker's and I/O thread's malloc
- * arenas, which glibc keeps; give them back to the OS at once. */
-static void free_answer(void *body)
-{
-    size_t n = malloc_usable_size(body);
-    free(body);
-    if (n >= SRV_TRIM_BYTES) malloc_trim(0);
-}
-
 /* Never called: a 304 has no body (RFC 9110 15.4.5). */
 static ssize_t no_body(void *cls, uint64_t pos, char *buf, size_t max)
 {
@@ -267,9 +259,7 @@ static enum MHD_Result answer(struct srv_req *r, struct api_response *resp)
     } else if (resp->body && resp->body_static) {
         mr = MHD_create_response_from_buffer(resp->body_len, resp->body, MHD_RESPMEM_PERSISTENT);
     } else if (resp->body) {
-        mr = MHD_create_response_from_buffer_with_free_callback(resp->body_len, resp->body,
-                                                                 free_answer);
-        if (mr) resp->body = NULL; /* MHD owns it now */
+        mr = answer_response(r, resp); /* answer_send.c: takes the body */
     } else {
         mr = MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
     }
@@ -431,21 +421,45 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
         static const char ok[] = "{\"status\":\"ok\"}";
         *ret = answer_text(r, 200, "application/json", dup_str(ok), sizeof ok - 1);
     } else if (metrics) {
-        int queued = 0, busy = 0;
-        double busy_s = 0;
+        struct srv_metrics_gauges g = {.workers = h->cfg->workers,
+                                       .queue_capacity = h->cfg->queue,
+                                       .connections_max = h->max_connections};
         unsigned long len = 0;
-        srv_pool_stats(h->pool, &queued, &busy, &busy_s);
+        srv_pool_stats(h->pool, &g.queue_depth, &g.workers_busy, &g.worker_busy_seconds);
         pthread_mutex_lock(&h->conn_mu);
-        int open_conns = h->n_conns;
+        g.connections_open = h->n_conns;
         pthread_mutex_unlock(&h->conn_mu);
-        char *text = srv_metrics_text(queued, busy, h->cfg->workers, h->cfg->queue, busy_s,
-                                      open_conns, h->cfg->max_connections, &len);
+        srv_mem_stats(h->mem, &g.answer_memory, &g.answer_memory_max, &g.answer_memory_peak,
+                      &g.answer_memory_refused);
+        char *text = srv_metrics_text(&g, &len);
         *ret = answer_text(r, 200, "text/plain; version=0.0.4; charset=utf-8", text, len);
     } else {
         *ret = answer_text(r, 200, "text/html; charset=utf-8", dup_str(index_html),
                            sizeof index_html - 1);
     }
     return 1;
+}
+
+/* OPTIONS that is not a CORS preflight (RFC 9110 9.3.7): 204 with Allow for
+ * a path that exists (and Access-Control-Allow-Origin for a listed origin),
+ * 404 otherwise. */
+static enum MHD_Result answer_options(struct srv_req *r)
+{
+    const char *allow = allowed_methods(r->path);
+    if (!allow) return answer_problem(r, API_PROBLEM_NOT_FOUND, "no resource has this path");
+    struct MHD_Response *mr =
+        MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
+    r->state = REQ_ANSWERED;
+    if (!mr) return MHD_NO;
+    MHD_add_response_header(mr, MHD_HTTP_HEADER_ALLOW, allow);
+    MHD_add_response_header(mr, "X-Request-Id", r->id);
+    add_common_headers(r, mr, NULL);
+    if (r->close_conn || atomic_load(&r->http->stopping))
+        MHD_add_response_header(mr, MHD_HTTP_HEADER_CONNECTION, "close");
+    enum MHD_Result ret = MHD_queue_response(r->conn, MHD_HTTP_NO_CONTENT, mr);
+    MHD_destroy_response(mr);
+    if (ret == MHD_YES) r->status = MHD_HTTP_NO_CONTENT;
+    return ret;
 }
 
 /* The whole request has arrived (or is answered early): route it. */
@@ -457,6 +471,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         return MHD_NO; /* the receive limit passed: the watcher closed the connection */
     }
     if (r->oom) return answer_problem(r, API_PROBLEM_INTERNAL, NULL);
+    if (r->head_problem) return answer_problem(r, r->head_problem, r->head_detail);
     if (r->bad_framing) return answer_problem(r, API_PROBLEM_BAD_FRAMING, r->bad_framing);
     if (r->too_large) {
         snprintf(detail, sizeof detail, "the request body exceeds the limit of %zu bytes",
@@ -464,6 +479,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         return answer_problem(r, API_PROBLEM_BODY_TOO_LARGE, detail);
     }
     if (r->preflight) return answer_preflight(r);
+    if (strcmp(r->method, MHD_HTTP_METHOD_OPTIONS) == 0) return answer_options(r);
     enum MHD_Result ret;
     if (server_route(h, r, &ret)) return ret;
 
@@ -479,6 +495,8 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->aext.if_none_match = r->if_none_match;
     r->aext.accept_encoding = r->accept_encoding;
     r->aext.max_samples = h->cfg->max_samples;
+    r->aext.admit = answer_admit; /* the answer-memory budget (answer_budget.c) */
+    r->aext.admit_ctx = r;
 
     /* GET ?request= runs an operation: it goes to the pool like a POST. */
     if (strcmp(r->method, MHD_HTTP_METHOD_GET) == 0 && !r->query_request &&
@@ -523,6 +541,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         break;
     }
     r->state = REQ_QUEUED;
+    r->job.short_job = r->quick_route; /* a closed form: the express worker may take it */
     watch_add(h, r);
     MHD_suspend_connection(r->conn);
     /* Cannot fail; may run req_cancel (and resume) at once if the pool stopped. */
@@ -585,6 +604,10 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
             (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
+        }
+        if (head_problem(r, conn, version)) {
+            r->close_conn = 1;
+            return dispatch(h, r); /* answers 414, 431 or 400, before any body byte is read */
         }
         r->bad_framing = framing_problem(conn, version);
         if (r->bad_framing) {
@@ -671,7 +694,6 @@ void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
     struct srv_http *h = cls;
     struct srv_req *r = *con_cls;
     (void)conn;
-    (void)toe;
     if (!r) return;
     *con_cls = NULL;
     double now = mech_clock_seconds();
@@ -684,7 +706,15 @@ void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
                                .route = route_label(r),
                                .status = r->status,
                                .usec = (long)(us + 0.5),
-                               .bytes = r->bytes};
+                               .bytes = r->bytes,
+                               .answer_bytes = r->bytes};
+    /* Closed before the whole answer was sent: log what was sent (a tracked
+     * answer knows it to within a block; a small one went in one write that
+     * did not complete, so 0 is what is known to have arrived). */
+    if (toe != MHD_REQUEST_TERMINATED_COMPLETED_OK && r->status && r->bytes > 0) {
+        le.cut_off = 1;
+        le.bytes = r->tracked && r->sent < r->bytes ? r->sent : 0;
+    }
     srv_log_request(&le);
     /* The connection is ready for its next request: the receive limit restarts.
      * Only this I/O thread moves a connection out of CONN_BUSY. */

@@ -31,6 +31,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "answer_mem.h"
 #include "api.h"
 #include "log.h"
 #include "static.h"
@@ -38,33 +39,69 @@
 
 /* ---- lifecycle ------------------------------------------------------------------ */
 
-/* libmicrohttpd's own connection limit: --max-connections plus headroom for
- * connections accepted before the ones shut down to make room have closed
- * (libmicrohttpd accepts up to 10 at a time per I/O thread; the limit is
- * split evenly between the threads, srv_io_start). A connection over this limit is closed
- * by libmicrohttpd at once, unanswered. */
-static unsigned int conn_hard_limit(const struct srv_config *cfg)
+/* Descriptors the server holds besides its client connections: stdin,
+ * stdout, stderr; per I/O thread the listening socket (or its dup), the
+ * epoll set, our wake-up eventfd and libmicrohttpd's inter-thread channel;
+ * and a margin for the short-lived ones (/metrics reads /proc, the watcher,
+ * a static file reload, the C library). */
+#define SRV_FD_RESERVED 24u
+#define SRV_FD_PER_IO 4u
+
+/* libmicrohttpd's own connection limit for n held connections: n plus
+ * headroom for connections accepted before the ones shut down to make room
+ * have closed (libmicrohttpd accepts up to 10 at a time per I/O thread; the
+ * limit is split evenly between the threads, srv_io_start). A connection
+ * over this limit is closed by libmicrohttpd at once, unanswered. */
+static unsigned int conn_hard_limit(unsigned int n, unsigned int threads)
 {
-    unsigned int n = (unsigned int)cfg->max_connections;
-    unsigned int threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
     return n + n / 8u + 16u * threads;
 }
 
-/* Raise the soft descriptor limit to what hard_limit connections need (plus
- * the listening socket, epoll, eventfds, log and static files), up to the
- * hard limit; say so if that is not enough (accept() then fails beyond it). */
-static void ensure_descriptors(const struct srv_config *cfg, unsigned int hard_limit)
+/* Fit the connection limits to the descriptor limit (RLIMIT_NOFILE), once at
+ * start. The soft limit is raised towards what --max-connections needs, up to
+ * the hard limit. If that is still too few, --max-connections is lowered so
+ * that libmicrohttpd's limit (conn_hard_limit) stays below the descriptors
+ * left after SRV_FD_RESERVED and SRV_FD_PER_IO per I/O thread: then accept()
+ * never fails with EMFILE (in which state libmicrohttpd 0.9.75 could
+ * busy-wait a core on the still-readable listening socket), and
+ * --max-connections is reached first, so the longest-waiting idle
+ * connection is closed to make room and /healthz is still answered. Sets
+ * h->max_connections; returns libmicrohttpd's limit, or 0 when the
+ * descriptor limit leaves no room for a single connection. */
+static unsigned int fit_descriptors(struct srv_http *h, unsigned int threads)
 {
+    unsigned int n = (unsigned int)h->cfg->max_connections;
+    unsigned int hard = conn_hard_limit(n, threads);
+    rlim_t reserved = (rlim_t)SRV_FD_RESERVED + (rlim_t)SRV_FD_PER_IO * threads;
+    rlim_t need = (rlim_t)hard + reserved;
     struct rlimit rl;
-    rlim_t need = (rlim_t)hard_limit + 64u;
-    if (getrlimit(RLIMIT_NOFILE, &rl) != 0 || rl.rlim_cur >= need) return;
-    rlim_t old = rl.rlim_cur;
-    rl.rlim_cur = rl.rlim_max == RLIM_INFINITY || rl.rlim_max >= need ? need : rl.rlim_max;
-    if (setrlimit(RLIMIT_NOFILE, &rl) != 0) rl.rlim_cur = old;
-    if (rl.rlim_cur < need)
-        srv_log_note("--max-connections %d needs about %lu file descriptors but the limit is "
-                     "%lu: connections beyond it are refused",
-                     cfg->max_connections, (unsigned long)need, (unsigned long)rl.rlim_cur);
+    h->max_connections = (int)n;
+    if (getrlimit(RLIMIT_NOFILE, &rl) != 0) return hard;
+    if (rl.rlim_cur != RLIM_INFINITY && rl.rlim_cur < need) {
+        rlim_t old = rl.rlim_cur;
+        rl.rlim_cur = rl.rlim_max == RLIM_INFINITY || rl.rlim_max >= need ? need : rl.rlim_max;
+        if (setrlimit(RLIMIT_NOFILE, &rl) != 0) rl.rlim_cur = old;
+    }
+    if (rl.rlim_cur == RLIM_INFINITY || rl.rlim_cur >= need) return hard;
+    if (rl.rlim_cur < reserved + 2u * threads) {
+        srv_log_note("the descriptor limit (ulimit -n) is %lu: too low to serve connections "
+                     "(the server itself needs about %lu)",
+                     (unsigned long)rl.rlim_cur, (unsigned long)reserved);
+        return 0;
+    }
+    unsigned int avail = (unsigned int)(rl.rlim_cur - reserved);
+    /* Keep about 1/9 of them (and two per I/O thread) as the headroom of
+     * conn_hard_limit: connections accepted while shut ones close. */
+    unsigned int spare = avail / 9u + 2u * threads;
+    if (spare > avail - threads) spare = avail - threads;
+    unsigned int fit = avail - spare;
+    if (fit > n) fit = n;
+    h->max_connections = (int)fit;
+    if (fit < n)
+        srv_log_note("--max-connections %u lowered to %u: the descriptor limit (ulimit -n) is "
+                     "%lu, %lu would be needed",
+                     n, fit, (unsigned long)rl.rlim_cur, (unsigned long)need);
+    return avail;
 }
 
 /* What start_daemon needs beyond h: the address to bind and the flags. */
@@ -84,13 +121,16 @@ static struct MHD_Daemon *start_daemon(struct srv_http *h, int listen_fd, unsign
             mhd_logger, NULL, MHD_OPTION_SOCK_ADDR, d->sa, MHD_OPTION_CONNECTION_TIMEOUT,
             SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, conn_limit,
             MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION,
-            on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+            on_connection, h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL,
+            MHD_OPTION_URI_LOG_CALLBACK, on_uri, NULL, MHD_OPTION_CONNECTION_MEMORY_LIMIT,
+            (size_t)SRV_MHD_POOL, MHD_OPTION_END);
     return MHD_start_daemon(
         d->flags, 0, NULL, NULL, on_request, h, MHD_OPTION_EXTERNAL_LOGGER, mhd_logger, NULL,
         MHD_OPTION_LISTEN_SOCKET, (MHD_socket)listen_fd, MHD_OPTION_CONNECTION_TIMEOUT,
         SRV_CONNECTION_TIMEOUT_S, MHD_OPTION_CONNECTION_LIMIT, conn_limit,
         MHD_OPTION_NOTIFY_COMPLETED, on_completed, h, MHD_OPTION_NOTIFY_CONNECTION, on_connection,
-        h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_END);
+        h, MHD_OPTION_UNESCAPE_CALLBACK, unescape_no_nul, NULL, MHD_OPTION_URI_LOG_CALLBACK,
+        on_uri, NULL, MHD_OPTION_CONNECTION_MEMORY_LIMIT, (size_t)SRV_MHD_POOL, MHD_OPTION_END);
 }
 
 struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *pool)
@@ -137,15 +177,21 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
     }
 
     unsigned int io_threads = cfg->io_threads > 1 ? (unsigned int)cfg->io_threads : 1u;
-    unsigned int hard_limit = conn_hard_limit(cfg);
-    ensure_descriptors(cfg, hard_limit);
+    unsigned int hard_limit = fit_descriptors(h, io_threads);
     struct daemon_ctx dctx = {sa, flags};
-    if (srv_io_start(h, io_threads, hard_limit, start_daemon, &dctx) != 0) {
-        srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
-                     errno ? strerror(errno) : "libmicrohttpd failed to start");
+    h->mem = srv_mem_create(cfg->max_answer_memory ? cfg->max_answer_memory
+                                                   : srv_mem_default_cap());
+    h->answer_ratio = answer_ratios_new(n_routes);
+    errno = 0;
+    if (hard_limit == 0 || srv_io_start(h, io_threads, hard_limit, start_daemon, &dctx) != 0) {
+        if (hard_limit)
+            srv_log_note("cannot listen on %s port %d: %s", cfg->bind, cfg->port,
+                         errno ? strerror(errno) : "libmicrohttpd failed to start");
         srv_io_stop(h);
         pthread_mutex_destroy(&h->watch_mu);
         pthread_mutex_destroy(&h->conn_mu);
+        srv_mem_free(h->mem);
+        free(h->answer_ratio);
         free(h->quick);
         free(h);
         return NULL;
@@ -199,9 +245,11 @@ void srv_http_stop(struct srv_http *h)
         pthread_mutex_unlock(&h->watch_mu);
         pthread_join(h->watcher, NULL);
     }
-    srv_io_stop(h);
+    srv_io_stop(h); /* frees every answer still held: their memory goes back to h->mem */
     pthread_mutex_destroy(&h->watch_mu);
     pthread_mutex_destroy(&h->conn_mu);
+    srv_mem_free(h->mem);
+    free(h->answer_ratio);
     free(h->quick);
     free(h->reap_pfd);
     free(h->reap_conn);

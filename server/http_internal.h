@@ -30,9 +30,18 @@
 #define SRV_REAP_PERIOD_MS 100       /* how often waiting connections are checked for a gone client */
 #define SRV_SHUT_NUDGE_MS 1000       /* a shut connection still open this long is shut down again */
 #define SRV_QUICK_BASE_BYTES 512u    /* the fixed cost of a request, in body bytes */
+#define SRV_TRACK_MIN (64u << 10)   /* answers this large are sent through a reader that
+                                        counts the bytes sent (a cut-off answer is logged so) */
+#define SRV_TRACK_BLOCK (32u << 10) /* ... in blocks of this many bytes */
+#define SRV_MEM_WAIT_MS 1000       /* a worker waits this long for answer memory before a 503 */
 #define SRV_TRIM_BYTES (4u << 20)    /* freeing an answer this large returns free heap to the OS */
 #define SRV_DRAIN_MAX (1u << 20)     /* bytes read and dropped after a mid-body 413 */
 #define SRV_CHUNKED_GRACE (1u << 20) /* a chunked body is read this far past --max-body */
+#define SRV_TARGET_MAX (32u << 10)  /* longest request target (path and query): 414 beyond */
+#define SRV_HEADERS_MAX (32u << 10) /* largest request head (request line and headers): 431 */
+#define SRV_MHD_POOL (96u << 10)    /* libmicrohttpd's per-connection memory: room for both
+                                       limits, so that this server, not libmicrohttpd, answers
+                                       414 and 431 (as problem+json) up to about this size */
 #define SRV_REQUEST_ID_MAX 64        /* longest X-Request-Id kept from a client */
 #define SRV_QUICK_SAMPLE 16u         /* a quick route's CPU time is read on one run in this many */
 #define SRV_QUICK_CAP 8              /* a measurement counts as at most this many times the average */
@@ -77,6 +86,7 @@ struct srv_conn {
     atomic_llong ready_ms; /* mech_clock_seconds() in ms when it became ready for a request */
     int eof_sweeps;        /* consecutive reaper sweeps that found the client gone (conn_mu) */
     long long shut_ms;     /* when the server last shut it down (CONN_SHUT), 0 before (conn_mu) */
+    size_t target_len;     /* length of the current request's target as sent (I/O thread) */
     struct srv_conn *prev, *next;
 };
 
@@ -123,6 +133,15 @@ struct srv_http {
     /* Per route (route index, api.h): the measured cost of quick routes (see
      * QUICK OPERATIONS); NULL if it could not be allocated (nothing inline). */
     struct srv_quick_stat *quick;
+    /* The answer-memory budget (answer_mem.h; NULL if it could not be
+     * allocated: no budget), and per route the measured answer size
+     * (answer_budget.c), NULL if it could not be allocated. */
+    struct srv_mem *mem;
+    atomic_llong *answer_ratio;
+    /* Connections held open before the longest-waiting idle one is closed:
+     * --max-connections, lowered at start to what the descriptor limit
+     * (RLIMIT_NOFILE) leaves room for (http_daemon.c). */
+    int max_connections;
 };
 
 enum req_state {
@@ -139,7 +158,13 @@ struct srv_req {
     char id[SRV_REQUEST_ID_MAX + 1]; /* X-Request-Id: the client's (validated) or generated */
     char client[48];                 /* peer address, numeric */
     char *forwarded_for;             /* owned copy of X-Forwarded-For, or NULL */
-    unsigned long long bytes;        /* response body bytes sent */
+    unsigned long long bytes;        /* response body bytes queued (the whole answer) */
+    unsigned long long sent;         /* of a tracked answer (struct srv_answer): body bytes
+                                        sent before the last read of its reader */
+    int tracked;                     /* the answer's reader updates `sent` */
+    size_t charged;                  /* bytes reserved in the answer-memory budget for this
+                                        request's answer (handed to the answer when sent) */
+    double mem_units;                /* the size units its answer was predicted from, 0 if none */
     double t0;
     char *method, *path, *content_type;  /* owned copies */
     char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
@@ -149,6 +174,8 @@ struct srv_req {
     int too_large;
     int oom;
     const char *bad_framing; /* why the body's framing is refused (static text), or NULL */
+    enum api_problem head_problem; /* the request head is refused (414, 431, 400), or NONE */
+    const char *head_detail;       /* ... and why (static text) */
     int close_conn;          /* answer with Connection: close */
     int cors_ok;       /* Origin is in --cors-origin: send Access-Control-Allow-Origin */
     int vary_origin;   /* a /v1 answer while CORS is on: send Vary: Origin */
@@ -187,6 +214,24 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
 void on_completed(void *cls, struct MHD_Connection *conn, void **con_cls,
                   enum MHD_RequestTerminationCode toe);
 size_t unescape_no_nul(void *cls, struct MHD_Connection *c, char *s);
+void *on_uri(void *cls, const char *uri, struct MHD_Connection *conn);
+
+/* answer_send.c */
+/* The response object for resp's malloc'd body (not static, not a 304): on
+ * success it owns the body (resp->body becomes NULL) and, for a body of at
+ * least SRV_TRACK_MIN bytes sent to a non-HEAD request, r's answer-memory
+ * charge, and keeps r->sent up to date while it is sent (r->tracked). NULL
+ * when out of memory (resp and r unchanged). */
+struct MHD_Response *answer_response(struct srv_req *r, struct api_response *resp);
+
+/* http_head.c */
+/* Sets r->head_problem and r->head_detail and returns 1 when the request head
+ * is refused (target over SRV_TARGET_MAX: 414; head over SRV_HEADERS_MAX: 431;
+ * HTTP/1.1 without exactly one Host: 400), else 0. */
+int head_problem(struct srv_req *r, struct MHD_Connection *conn, const char *version);
+/* The methods path answers to ("GET, HEAD, OPTIONS", ...; static), or NULL
+ * when nothing is there. */
+const char *allowed_methods(const char *path);
 
 /* http_body.c */
 const char *framing_problem(struct MHD_Connection *conn, const char *version);
@@ -203,6 +248,19 @@ int quick_inline(struct srv_http *h, struct srv_req *r);
  * times --inline-max-us (0 when --inline-max-us is 0): run inline rather than
  * refused when the queue is full. */
 int quick_fits_when_full(const struct srv_http *h, const struct srv_req *r);
+
+/* answer_budget.c */
+/* api_request_ext.admit for r (ctx): predict the answer's size from the
+ * route's measured bytes per unit (samples and body bytes) and reserve it in
+ * h->mem: a worker waits up to SRV_MEM_WAIT_MS (never past the deadline), an
+ * I/O thread not at all. Returns 0 when reserved, 1 to refuse (503). */
+int answer_admit(void *ctx, long route, double samples);
+/* After the API ran on r: charge the answer's real size instead of the
+ * prediction (what the I/O thread will hold until it is sent: bodies of at
+ * least SRV_TRACK_MIN bytes), and learn the route's bytes per unit. */
+void answer_settle(struct srv_req *r);
+/* Per-route answer-size estimates for h (h->answer_ratio); NULL if out of memory. */
+atomic_llong *answer_ratios_new(size_t n_routes);
 
 /* io_loop.c */
 /* Starts one libmicrohttpd daemon without an internal polling thread: it

@@ -83,6 +83,7 @@ static void *io_main(void *arg)
 {
     struct srv_io *io = arg;
     tl_io = io;
+    pthread_setname_np(pthread_self(), "mechd-io");
     const union MHD_DaemonInfo *ei = MHD_get_daemon_info(io->daemon, MHD_DAEMON_INFO_EPOLL_FD);
     struct pollfd p[2] = {{ei ? ei->epoll_fd : -1, POLLIN, 0}, {io->wake_fd, POLLIN, 0}};
     while (!atomic_load(&io->stop)) {

@@ -15,13 +15,23 @@
  * is one JSON object instead, built the same way. */
 #include "log.h"
 
+#include <dirent.h>
+#include <fcntl.h>
 #include <pthread.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <time.h>
 #include <unistd.h>
+
+#ifndef MECHD_VERSION
+#define MECHD_VERSION "0.0.0"
+#endif
+#ifndef MECHD_BUILD_ID
+#define MECHD_BUILD_ID "unknown"
+#endif
 
 #define STATUS_MIN 100
 #define STATUS_MAX 599
@@ -34,6 +44,16 @@
 static const double bucket_le[] = {0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05,
                                    0.1,    0.25,  0.5,    1,     2.5,  5,     10};
 #define N_BUCKETS (sizeof bucket_le / sizeof bucket_le[0])
+
+#define HIST_SLOTS 256 /* routes with a latency histogram; the last one is the overflow "other" */
+
+/* One route's latency histogram (mechd_route_request_duration_seconds). */
+struct route_hist {
+    char route[ROUTE_LABEL_MAX];
+    unsigned long buckets[N_BUCKETS + 1]; /* last: over the largest bound */
+    double sum;
+    unsigned long count;
+};
 
 struct route_count {
     char route[ROUTE_LABEL_MAX];
@@ -51,6 +71,8 @@ static unsigned long request_timeouts; /* connections closed by --request-timeou
 static unsigned long conns_evicted;    /* closed to make room (--max-connections) */
 static unsigned long conns_reaped;     /* closed because the client had gone */
 static unsigned long conns_nudged;     /* shut down again: still open a second after */
+static struct route_hist route_hists[HIST_SLOTS];
+static int n_route_hists;
 
 /* A label value is safe in the exposition format without escaping when it has
  * only these characters (no quote, backslash or newline). */
@@ -90,6 +112,22 @@ static void count_route(const char *route, int status)
         c->status = status;
     }
     c->n++;
+}
+
+/* The histogram of route (a label as count_route takes it); stats_mu held. */
+static struct route_hist *route_hist(const char *route)
+{
+    if (!route || !label_ok(route)) route = "other";
+    for (int i = 0; i < n_route_hists; i++)
+        if (strcmp(route_hists[i].route, route) == 0) return &route_hists[i];
+    if (n_route_hists < HIST_SLOTS - 1) {
+        struct route_hist *h = &route_hists[n_route_hists++];
+        strcpy(h->route, route);
+        return h;
+    }
+    struct route_hist *h = &route_hists[HIST_SLOTS - 1]; /* full: one shared overflow */
+    strcpy(h->route, "other");
+    return h;
 }
 
 static void write_all(const char *s, size_t n)
@@ -234,6 +272,9 @@ void srv_log_request(const struct srv_log_entry *e)
         o = put_long(o, end, e->usec);
         o = put_str(o, end, ",\"bytes\":");
         o = put_ulong(o, end, (unsigned long)e->bytes);
+        o = put_str(o, end, e->cut_off ? ",\"cut_off\":true" : ",\"cut_off\":false");
+        o = put_str(o, end, ",\"answer_bytes\":");
+        o = put_ulong(o, end, (unsigned long)e->answer_bytes);
         o = put_str(o, end, ",\"client\":");
         o = put_json_str(o, end, e->client, 64);
         o = put_str(o, end, ",\"forwarded_for\":");
@@ -255,6 +296,10 @@ void srv_log_request(const struct srv_log_entry *e)
     o = put_long(o, end, e->usec);
     o = put_str(o, end, "us bytes=");
     o = put_ulong(o, end, (unsigned long)e->bytes);
+    if (e->cut_off) {
+        o = put_str(o, end, " cut_off=true answer_bytes=");
+        o = put_ulong(o, end, (unsigned long)e->answer_bytes);
+    }
     o = put_str(o, end, " client=");
     o = put_clean(o, end, e->client, 64);
     if (e->forwarded_for) {
@@ -277,6 +322,10 @@ write_line:
     duration_buckets[b]++;
     duration_sum += seconds;
     duration_count++;
+    struct route_hist *rh = route_hist(route);
+    rh->buckets[b]++;
+    rh->sum += seconds;
+    rh->count++;
     pthread_mutex_unlock(&stats_mu);
 }
 
@@ -376,9 +425,79 @@ static void text_add(struct text *t, const char *fmt, ...)
     }
 }
 
-char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue_capacity,
-                       double worker_busy_seconds, int connections_open, int connections_max,
-                       unsigned long *len_out)
+/* Prometheus' standard process metrics, from /proc (Linux; nothing elsewhere
+ * or when /proc cannot be read): CPU seconds, resident and virtual memory,
+ * open and allowed descriptors, start time. */
+static void process_metrics(struct text *t)
+{
+    long tick = sysconf(_SC_CLK_TCK), page = sysconf(_SC_PAGESIZE);
+    char buf[1024];
+    int fd = open("/proc/self/stat", O_RDONLY | O_CLOEXEC);
+    ssize_t n = fd >= 0 ? read(fd, buf, sizeof buf - 1) : -1;
+    if (fd >= 0) close(fd);
+    const char *p = n > 0 ? (buf[n] = '\0', strrchr(buf, ')')) : NULL;
+    unsigned long long utime = 0, stime = 0, start = 0, vsize = 0;
+    long long rss = 0;
+    /* After "pid (comm)": field 3 state ... 14 utime, 15 stime, 22 starttime, 23 vsize, 24 rss. */
+    int ok = p && tick > 0 &&
+             sscanf(p + 1,
+                    " %*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu %*d %*d %*d %*d %*d "
+                    "%*d %llu %llu %lld",
+                    &utime, &stime, &start, &vsize, &rss) == 5;
+    if (ok) {
+        double btime = 0;
+        fd = open("/proc/stat", O_RDONLY | O_CLOEXEC);
+        char sb[8192];
+        ssize_t k = fd >= 0 ? read(fd, sb, sizeof sb - 1) : -1;
+        if (fd >= 0) close(fd);
+        if (k > 0) {
+            sb[k] = '\0';
+            const char *bt = strstr(sb, "\nbtime ");
+            if (bt) btime = strtod(bt + 7, NULL);
+        }
+        text_add(t,
+                 "# HELP process_cpu_seconds_total Total user and system CPU time spent in "
+                 "seconds.\n"
+                 "# TYPE process_cpu_seconds_total counter\n"
+                 "process_cpu_seconds_total %.9g\n"
+                 "# HELP process_resident_memory_bytes Resident memory size in bytes.\n"
+                 "# TYPE process_resident_memory_bytes gauge\n"
+                 "process_resident_memory_bytes %lld\n"
+                 "# HELP process_virtual_memory_bytes Virtual memory size in bytes.\n"
+                 "# TYPE process_virtual_memory_bytes gauge\n"
+                 "process_virtual_memory_bytes %llu\n",
+                 (double)(utime + stime) / (double)tick, rss * (long long)page, vsize);
+        if (btime > 0)
+            text_add(t,
+                     "# HELP process_start_time_seconds Start time of the process since unix "
+                     "epoch in seconds.\n"
+                     "# TYPE process_start_time_seconds gauge\n"
+                     "process_start_time_seconds %.2f\n",
+                     btime + (double)start / (double)tick);
+    }
+    DIR *d = opendir("/proc/self/fd");
+    if (d) {
+        long open_fds = -1; /* the directory's own descriptor is not counted */
+        while (readdir(d))
+            open_fds++;
+        closedir(d);
+        open_fds -= 2; /* "." and ".." */
+        struct rlimit rl;
+        text_add(t,
+                 "# HELP process_open_fds Number of open file descriptors.\n"
+                 "# TYPE process_open_fds gauge\n"
+                 "process_open_fds %ld\n",
+                 open_fds < 0 ? 0 : open_fds);
+        if (getrlimit(RLIMIT_NOFILE, &rl) == 0 && rl.rlim_cur != RLIM_INFINITY)
+            text_add(t,
+                     "# HELP process_max_fds Maximum number of open file descriptors.\n"
+                     "# TYPE process_max_fds gauge\n"
+                     "process_max_fds %llu\n",
+                     (unsigned long long)rl.rlim_cur);
+    }
+}
+
+char *srv_metrics_text(const struct srv_metrics_gauges *g, unsigned long *len_out)
 {
     struct text t = {malloc(4096), 0, 4096, 0};
     if (!t.s) return NULL;
@@ -412,6 +531,25 @@ char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue
              "mechd_request_duration_seconds_sum %.9g\n"
              "mechd_request_duration_seconds_count %lu\n",
              cum, duration_sum, duration_count);
+    text_add(&t, "# HELP mechd_route_request_duration_seconds Time from request headers to "
+                 "completion, by route (labelled as mechd_requests_total).\n"
+                 "# TYPE mechd_route_request_duration_seconds histogram\n");
+    for (int i = 0; i < HIST_SLOTS; i++) {
+        const struct route_hist *rh = &route_hists[i];
+        if (rh->count == 0) continue;
+        unsigned long c = 0;
+        for (size_t b = 0; b < N_BUCKETS; b++) {
+            c += rh->buckets[b];
+            text_add(&t, "mechd_route_request_duration_seconds_bucket{route=\"%s\",le=\"%g\"} %lu\n",
+                     rh->route, bucket_le[b], c);
+        }
+        c += rh->buckets[N_BUCKETS];
+        text_add(&t,
+                 "mechd_route_request_duration_seconds_bucket{route=\"%s\",le=\"+Inf\"} %lu\n"
+                 "mechd_route_request_duration_seconds_sum{route=\"%s\"} %.9g\n"
+                 "mechd_route_request_duration_seconds_count{route=\"%s\"} %lu\n",
+                 rh->route, c, rh->route, rh->sum, rh->route, rh->count);
+    }
     text_add(&t,
              "# HELP mechd_request_timeouts_total Connections closed because they did not send a "
              "whole request within --request-timeout-ms.\n"
@@ -458,8 +596,34 @@ char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue
              "idle one is closed (--max-connections).\n"
              "# TYPE mechd_connections_max gauge\n"
              "mechd_connections_max %d\n",
-             queue_depth, queue_capacity, workers_busy, workers, worker_busy_seconds,
-             connections_open, connections_max);
+             g->queue_depth, g->queue_capacity, g->workers_busy, g->workers,
+             g->worker_busy_seconds, g->connections_open, g->connections_max);
+    text_add(&t,
+             "# HELP mechd_answer_memory_bytes Bytes of answers held now, computed or being "
+             "computed, for clients still reading them.\n"
+             "# TYPE mechd_answer_memory_bytes gauge\n"
+             "mechd_answer_memory_bytes %zu\n"
+             "# HELP mechd_answer_memory_max_bytes The answer-memory budget "
+             "(--max-answer-memory).\n"
+             "# TYPE mechd_answer_memory_max_bytes gauge\n"
+             "mechd_answer_memory_max_bytes %zu\n"
+             "# HELP mechd_answer_memory_peak_bytes The most answer memory held at once since "
+             "start.\n"
+             "# TYPE mechd_answer_memory_peak_bytes gauge\n"
+             "mechd_answer_memory_peak_bytes %zu\n"
+             "# HELP mechd_answer_memory_refused_total Requests answered 503 because their "
+             "predicted answer did not fit in the answer-memory budget.\n"
+             "# TYPE mechd_answer_memory_refused_total counter\n"
+             "mechd_answer_memory_refused_total %lu\n",
+             g->answer_memory, g->answer_memory_max, g->answer_memory_peak,
+             g->answer_memory_refused);
+    process_metrics(&t);
+    text_add(&t,
+             "# HELP mechd_build_info The running build: version and the git commit it was "
+             "built from.\n"
+             "# TYPE mechd_build_info gauge\n"
+             "mechd_build_info{version=\"%s\",commit=\"%s\"} 1\n",
+             MECHD_VERSION, MECHD_BUILD_ID);
     if (t.oom) {
         free(t.s);
         return NULL;

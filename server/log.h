@@ -3,6 +3,8 @@
 #ifndef SERVER_LOG_H
 #define SERVER_LOG_H
 
+#include <stddef.h>
+
 /* One finished request, as srv_log_request logs it. Strings are borrowed and
  * may be NULL (logged as "-"). */
 struct srv_log_entry {
@@ -13,7 +15,9 @@ struct srv_log_entry {
     const char *route; /* metrics label (see srv_log_request) */
     int status;        /* HTTP status sent; 0: none was sent */
     long usec;         /* from the first header to completion */
-    unsigned long long bytes; /* response body bytes */
+    unsigned long long bytes; /* response body bytes sent */
+    unsigned long long answer_bytes; /* the whole answer's body bytes */
+    int cut_off;              /* 1: the connection ended before the whole answer was sent */
 };
 
 /* Record a finished request: writes
@@ -28,8 +32,9 @@ void srv_log_request(const struct srv_log_entry *e);
 
 /* --log-format json: from now on every line (requests and notes) is one JSON
  * object: {"time", "level", "msg", and for a request "request_id", "method",
- * "path", "status", "duration_us", "bytes", "client", "forwarded_for" (null when
- * absent)}; strings escaped, control and non-ASCII bytes as '?'. Call before
+ * "path", "status", "duration_us", "bytes" (sent), "cut_off" (true when the
+ * connection ended before the whole answer was sent), "answer_bytes" (the
+ * whole answer), "client", "forwarded_for" (null when absent)}; strings escaped, control and non-ASCII bytes as '?'. Call before
  * the server's threads start (not synchronised). */
 void srv_log_set_json(int json);
 
@@ -54,12 +59,23 @@ void srv_metrics_count_shut_nudges(unsigned long n);
 /* Write a free-form line "mechd: TIMESTAMP TEXT\n" to stderr (start-up, shutdown). */
 void srv_log_note(const char *fmt, ...) __attribute__((format(printf, 1, 2)));
 
-/* Prometheus text exposition (version 0.0.4) of the counters plus the given
- * gauges (connections_open: connections registered now; connections_max:
- * --max-connections). Returns a malloc'd NUL-terminated string (caller frees)
- * and its length in *len, or NULL when out of memory. */
-char *srv_metrics_text(int queue_depth, int workers_busy, int workers, int queue_capacity,
-                       double worker_busy_seconds, int connections_open, int connections_max,
-                       unsigned long *len_out);
+/* The gauges /metrics shows besides the counters kept here. */
+struct srv_metrics_gauges {
+    int queue_depth, queue_capacity, workers_busy, workers;
+    double worker_busy_seconds;
+    int connections_open; /* connections registered now */
+    int connections_max;  /* --max-connections, as fitted to the descriptor limit */
+    size_t answer_memory, answer_memory_max, answer_memory_peak; /* bytes (answer_mem.h) */
+    unsigned long answer_memory_refused;
+};
+
+/* Prometheus text exposition (version 0.0.4) of the counters (requests by
+ * route and status, latency histograms overall and by route), the gauges g,
+ * the process metrics (process_cpu_seconds_total, process_resident_memory_bytes,
+ * process_virtual_memory_bytes, process_open_fds, process_max_fds,
+ * process_start_time_seconds; from /proc) and mechd_build_info. Returns a
+ * malloc'd NUL-terminated string (caller frees) and its length in *len, or
+ * NULL when out of memory. */
+char *srv_metrics_text(const struct srv_metrics_gauges *g, unsigned long *len_out);
 
 #endif

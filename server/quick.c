@@ -2,7 +2,7 @@
  * worker, from its measured CPU cost (part of the HTTP front end, see http.c).
  *
  * QUICK OPERATIONS. A POST that api_quick_route() accepts (a closed-form
- * operation on a body of at most API_QUICK_MAX_BODY bytes) is answered on the
+ * operation, whatever the size of its body up to --max-body) is answered on the
  * I/O thread, with the same deadline, step budget and cancel flag as a pooled
  * request: the suspend -> worker -> resume hand-off (two context switches, a
  * futex wake-up and an eventfd write) costs more than such an operation. It is
@@ -11,8 +11,10 @@
  * worker, update a moving average of the route's *thread CPU time*
  * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
  * the fixed costs), and a request runs inline only while its predicted time is
- * at most --inline-max-us, so a route that turns out slow (or a large body)
- * goes to the pool and never holds an I/O thread, and /healthz, for long. CPU
+ * at most --inline-max-us, so a route that turns out slow (or a body large
+ * enough to be slow: the decision is the predicted cost, never the size)
+ * goes to the pool, as a short job (workers.h, FAIR QUEUES), and never holds
+ * an I/O thread, and /healthz, for long. CPU
  * time, not wall time: a thread preempted for a millisecond during a 5 µs
  * boost (common when the clients run on the same cores) would otherwise look
  * 200 times slower, and one such run sent every later boost to
@@ -94,6 +96,7 @@ void run_api(struct srv_req *r)
               atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
     long long c0 = measure ? thread_cpu_ns() : -1;
     api_handle_ext(&r->areq, &r->aext, &r->aresp);
+    answer_settle(r); /* charge the answer's real size (answer_budget.c) */
     if (c0 < 0) return;
     long long c1 = thread_cpu_ns();
     if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);

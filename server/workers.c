@@ -1,17 +1,17 @@
-/* workers.c — fixed thread pool with a bounded FIFO of intrusive jobs (see
- * workers.h). One mutex guards the queue; workers wait on one condition.
- * Nothing is allocated per job, so submitting cannot fail.
+/* workers.c — fixed thread pool with a bounded queue of intrusive jobs in
+ * two FIFO lists, short and long (see workers.h, FAIR QUEUES). One mutex
+ * guards the lists; the workers wait on one condition, the express worker on
+ * its own. Nothing is allocated per job, so submitting cannot fail.
  *
- * PRIORITY. Workers run below the HTTP I/O threads: each worker lowers its own
- * scheduling priority when it starts (nice +N, default SRV_POOL_DEFAULT_NICE,
- * and SCHED_BATCH on Linux, where both are per-thread attributes), so on a
- * machine whose cores are all busy computing, the I/O threads still get a
- * core as soon as they have work: /healthz, 503s and quick operations stay
- * fast under overload (measured with tests/load/overload.py: /healthz p99
- * 1.6-4.0 ms with nice 10 against 4.6-5.5 ms at equal priority). The price:
- * anything else on the machine at normal priority (a load generator, another
- * service) now wins CPU from the workers too. N = 0 leaves the workers at
- * the I/O threads' priority. Failure to lower the priority is harmless. */
+ * PRIORITY. Every worker runs as SCHED_BATCH (Linux): a worker that wakes up
+ * never preempts a running I/O thread, so /healthz and quick answers get a
+ * core at once. By default its nice value is the I/O threads' own: equal CPU
+ * weight. With nice +10 (the earlier default) a worker weighs 110 against an
+ * I/O thread's 1024, and under a flood of cheap requests answered on the I/O
+ * threads (with the load generator on the same cores) a long job got ~1/15
+ * of a core: 0.6 s of CPU took up to 10 s of wall time and 1 in 16 ended at
+ * its deadline. --worker-nice N still lowers the workers by N. Failure to
+ * change the policy or priority is harmless. */
 #ifdef __linux__
 #define _GNU_SOURCE /* SCHED_BATCH */
 #endif
@@ -24,20 +24,34 @@
 #include <sys/resource.h>
 #include <time.h>
 
+/* One FIFO list of waiting jobs. */
+struct job_list {
+    struct srv_job *head, *tail;
+};
+
 struct srv_pool {
     pthread_mutex_t mu;
-    pthread_cond_t cv;
-    struct srv_job *head, *tail;
-    int queued;   /* jobs in the list */
+    pthread_cond_t cv;         /* the workers: a job of either kind, or stopping */
+    pthread_cond_t cv_express; /* the express worker: a short job, or stopping */
+    struct job_list list[2];   /* [0] long, [1] short jobs */
+    unsigned long long seq;    /* next arrival number */
+    int queued;   /* jobs in the lists */
     int reserved; /* slots reserved but not yet submitted */
     int capacity;
     int busy;            /* workers inside job->run */
     double busy_seconds; /* summed time of finished job->run calls */
     int stopping;
     int joined;
-    int nthreads;
+    int nthreads; /* started, the express worker (the last) included */
+    int nworkers; /* --workers: threads before the express one */
     int nice; /* added to each worker's nice value (0: unchanged) */
     pthread_t *threads;
+};
+
+/* One worker's start argument. */
+struct worker_arg {
+    struct srv_pool *p;
+    int express;
 };
 
 static double now_seconds(void)
@@ -47,15 +61,16 @@ static double now_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-/* Lower the calling thread's priority by `nice` (see PRIORITY above). On
- * Linux setpriority(PRIO_PROCESS, 0, ...) changes the calling thread only. */
+/* SCHED_BATCH, and lower the calling thread's priority by `nice` (see
+ * PRIORITY above). On Linux setpriority(PRIO_PROCESS, 0, ...) changes the
+ * calling thread only. */
 static void worker_lower_priority(int nice)
 {
-    if (nice <= 0) return;
 #if defined(__linux__) && defined(SCHED_BATCH)
     struct sched_param sp = {0};
     (void)pthread_setschedparam(pthread_self(), SCHED_BATCH, &sp);
 #endif
+    if (nice <= 0) return;
 #ifdef __linux__
     errno = 0;
     int base = getpriority(PRIO_PROCESS, 0);
@@ -64,19 +79,36 @@ static void worker_lower_priority(int nice)
 #endif
 }
 
+/* Take the next job for a worker (the oldest of both lists) or the express
+ * worker (the oldest short one); NULL if none. p->mu held. */
+static struct srv_job *take(struct srv_pool *p, int express)
+{
+    struct srv_job *s = p->list[1].head, *l = express ? NULL : p->list[0].head;
+    int k = s && (!l || s->seq < l->seq) ? 1 : l ? 0 : -1;
+    if (k < 0) return NULL;
+    struct srv_job *job = p->list[k].head;
+    p->list[k].head = job->next;
+    if (!p->list[k].head) p->list[k].tail = NULL;
+    p->queued--;
+    return job;
+}
+
 static void *worker_main(void *arg)
 {
-    struct srv_pool *p = arg;
+    struct worker_arg *wa = arg;
+    struct srv_pool *p = wa->p;
+    int express = wa->express;
+    free(wa);
+#ifdef __linux__
+    pthread_setname_np(pthread_self(), express ? "mechd-express" : "mechd-worker");
+#endif
     worker_lower_priority(p->nice);
     pthread_mutex_lock(&p->mu);
     for (;;) {
-        while (!p->head && !p->stopping)
-            pthread_cond_wait(&p->cv, &p->mu);
-        struct srv_job *job = p->head;
+        struct srv_job *job;
+        while (!(job = take(p, express)) && !p->stopping)
+            pthread_cond_wait(express ? &p->cv_express : &p->cv, &p->mu);
         if (!job) break; /* stopping and nothing left */
-        p->head = job->next;
-        if (!p->head) p->tail = NULL;
-        p->queued--;
         p->busy++;
         pthread_mutex_unlock(&p->mu);
         job->next = NULL;
@@ -101,17 +133,22 @@ struct srv_pool *srv_pool_create_nice(int workers, int capacity, int nice)
     if (workers < 1 || capacity < 1) return NULL;
     struct srv_pool *p = calloc(1, sizeof *p);
     if (!p) return NULL;
-    p->threads = calloc((size_t)workers, sizeof *p->threads);
+    p->threads = calloc((size_t)workers + 1, sizeof *p->threads);
     if (!p->threads) {
         free(p);
         return NULL;
     }
     pthread_mutex_init(&p->mu, NULL);
     pthread_cond_init(&p->cv, NULL);
+    pthread_cond_init(&p->cv_express, NULL);
     p->capacity = capacity;
     p->nice = nice < 0 ? 0 : nice;
-    for (int i = 0; i < workers; i++) {
-        if (pthread_create(&p->threads[i], NULL, worker_main, p) != 0) {
+    p->nworkers = workers;
+    for (int i = 0; i <= workers; i++) {
+        struct worker_arg *wa = malloc(sizeof *wa);
+        if (wa) *wa = (struct worker_arg){p, i == workers};
+        if (!wa || pthread_create(&p->threads[i], NULL, worker_main, wa) != 0) {
+            free(wa);
             srv_pool_free(p); /* joins the nthreads started so far */
             return NULL;
         }
@@ -144,13 +181,16 @@ void srv_pool_submit(struct srv_pool *p, struct srv_job *job)
         job->cancel(job);
         return;
     }
-    if (p->tail)
-        p->tail->next = job;
+    struct job_list *l = &p->list[job->short_job ? 1 : 0];
+    job->seq = p->seq++;
+    if (l->tail)
+        l->tail->next = job;
     else
-        p->head = job;
-    p->tail = job;
+        l->head = job;
+    l->tail = job;
     p->queued++;
     pthread_cond_signal(&p->cv);
+    if (job->short_job) pthread_cond_signal(&p->cv_express);
     pthread_mutex_unlock(&p->mu);
 }
 
@@ -158,18 +198,21 @@ int srv_pool_remove(struct srv_pool *p, struct srv_job *job)
 {
     int removed = 0;
     pthread_mutex_lock(&p->mu);
-    struct srv_job *prev = NULL;
-    for (struct srv_job *j = p->head; j; prev = j, j = j->next) {
-        if (j != job) continue;
-        if (prev)
-            prev->next = j->next;
-        else
-            p->head = j->next;
-        if (p->tail == j) p->tail = prev;
-        p->queued--;
-        j->next = NULL;
-        removed = 1;
-        break;
+    for (int k = 0; k < 2 && !removed; k++) {
+        struct job_list *l = &p->list[k];
+        struct srv_job *prev = NULL;
+        for (struct srv_job *j = l->head; j; prev = j, j = j->next) {
+            if (j != job) continue;
+            if (prev)
+                prev->next = j->next;
+            else
+                l->head = j->next;
+            if (l->tail == j) l->tail = prev;
+            p->queued--;
+            j->next = NULL;
+            removed = 1;
+            break;
+        }
     }
     pthread_mutex_unlock(&p->mu);
     return removed;
@@ -188,19 +231,23 @@ void srv_pool_stop(struct srv_pool *p)
 {
     pthread_mutex_lock(&p->mu);
     p->stopping = 1;
-    struct srv_job *list = p->head;
-    p->head = p->tail = NULL;
+    struct srv_job *lists[2] = {p->list[0].head, p->list[1].head};
+    p->list[0].head = p->list[0].tail = p->list[1].head = p->list[1].tail = NULL;
     p->queued = 0;
     pthread_cond_broadcast(&p->cv);
+    pthread_cond_broadcast(&p->cv_express);
     int join = !p->joined;
     p->joined = 1;
     pthread_mutex_unlock(&p->mu);
 
-    while (list) {
-        struct srv_job *next = list->next;
-        list->next = NULL;
-        list->cancel(list);
-        list = next;
+    for (int k = 0; k < 2; k++) {
+        struct srv_job *list = lists[k];
+        while (list) {
+            struct srv_job *next = list->next;
+            list->next = NULL;
+            list->cancel(list);
+            list = next;
+        }
     }
     if (join)
         for (int i = 0; i < p->nthreads; i++)
@@ -212,6 +259,7 @@ void srv_pool_free(struct srv_pool *p)
     if (!p) return;
     srv_pool_stop(p);
     pthread_cond_destroy(&p->cv);
+    pthread_cond_destroy(&p->cv_express);
     pthread_mutex_destroy(&p->mu);
     free(p->threads);
     free(p);

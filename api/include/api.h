@@ -31,6 +31,10 @@ enum api_problem {
     API_PROBLEM_REQUEST_MISSING,    /* 400, GET/HEAD of an operation without ?request= */
     API_PROBLEM_ANSWER_TOO_LARGE,   /* 422, the request asks for more samples than --max-samples */
     API_PROBLEM_BAD_FRAMING,        /* 400, ambiguous or unsupported body framing (server) */
+    API_PROBLEM_ANSWER_MEMORY,      /* 503 + Retry-After, the answer-memory budget is spent */
+    API_PROBLEM_BAD_REQUEST,        /* 400, a malformed request head (HTTP/1.1 without Host) */
+    API_PROBLEM_URI_TOO_LONG,       /* 414, the request target is longer than the server reads */
+    API_PROBLEM_HEADERS_TOO_LARGE,  /* 431, the request head is larger than the server reads */
     API_PROBLEM_COUNT
 };
 
@@ -79,6 +83,16 @@ struct api_request_ext {
     long max_samples;          /* answer budget: samples one request may ask for, summed over
                                   every "samples" of its body (and of a batch's items);
                                   0 means API_DEFAULT_MAX_SAMPLES (--max-samples) */
+    /* Admission (may be NULL: every request runs). Called at most once per
+     * request, on its operation (never on a batch's or check's items), after
+     * the body is parsed and validated and the samples budget has passed, and
+     * before the handler runs: route is the operation's index (api.h route
+     * numbering), samples what the request asks for in all (counted as the
+     * samples budget counts, 0 for an operation without samples). Returns 0
+     * to run the request, or nonzero to refuse it: the answer is then 503
+     * answer-memory-full with Retry-After: 1, and nothing is computed. */
+    int (*admit)(void *ctx, long route, double samples);
+    void *admit_ctx;
 };
 
 /* Process-wide set-up of the API layer: main() (the server's, `mechd eval`'s,
@@ -166,14 +180,12 @@ const char *api_problem_title(enum api_problem kind);
  * catalog, health, static text) or must go to a compute worker (POST). */
 int api_is_inline(const char *method, const char *path);
 
-/* Largest body api_quick_route accepts: a quick operation on this many bytes of
- * JSON costs tens of microseconds, less than handing it to a worker. */
-#define API_QUICK_MAX_BODY 8192u
-
 /* Whether a POST may be answered on the I/O thread: its route is marked quick
- * (closed form, cost linear in the body) and body_len <= API_QUICK_MAX_BODY.
- * Returns the route's index in api_routes, or -1 for anything else. The
- * deadline and step budget still apply to a quick request. */
+ * (closed form, cost linear in the body). Returns the route's index in
+ * api_routes, or -1 for anything else. Any body size: whether it runs there
+ * is the server's decision, from the cost it predicts for this body (its
+ * --inline-max-us), not from the size. The deadline and step budget still
+ * apply to a quick request. */
 long api_quick_route(const char *method, const char *path, size_t body_len);
 
 /* The route table, read through accessors (the server sees no struct

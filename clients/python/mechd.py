@@ -557,6 +557,23 @@ class _Operations:
         """
         return self._operation('/v1/small-oscillations', body, (('system', system), ('cost', cost)))
 
+    def coupled_oscillations(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, initial: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Coupled oscillations: normal modes and frequencies from mass and stiffness matrices (K v = w^2 M v, mass-normalised, degeneracy flagged), chains of masses and springs, the double pendulum, coupled pendulums, and the motion from initial conditions as a sum of modes
+
+        POST /v1/coupled-oscillations. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            system (required): one of: object; object; object; object
+            initial: initial conditions: answers the modal coordinates and the motion as a sum of modes
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/coupled-oscillations', body, (('system', system), ('initial', initial), ('cost', cost)))
+
     def relativity_boost(self, body: Optional[Dict[str, Any]] = None, *, vectors: Optional[Any] = None, velocity: Optional[Dict[str, Any]] = None, matrix: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Lorentz-boost 4-vectors, precise from 1 m/s to gamma = 1e15
 
@@ -1542,6 +1559,7 @@ OPERATIONS = {
     'rigid_struck_ball': '/v1/rigid/struck-ball',
     'rigid_topple': '/v1/rigid/topple',
     'small_oscillations': '/v1/small-oscillations',
+    'coupled_oscillations': '/v1/coupled-oscillations',
     'relativity_boost': '/v1/relativity/boost',
     'relativity_particle': '/v1/relativity/particle',
     'relativity_dot': '/v1/relativity/dot',

@@ -20,6 +20,11 @@ struct cf_ctx {
     struct mech_vec3 w0, wdot, A;
     int noninertial, coriolis, centrifugal, euler, translational;
     double kepler_residual; /* max over the evaluations */
+    /* "relativistic_uniform_fields": the last state's proper velocity and
+     * gamma - 1 (the energy needs it without cancellation) */
+    int relativistic;
+    struct mech_vec3 last_u;
+    double last_gm1, last_gamma, rel_max, pn1_max;
     int evaluations;
     struct mech_error *err;
 };
@@ -39,6 +44,17 @@ static enum mech_status cf_state(struct cf_ctx *c, double t, struct mech_vec3 *r
         c->kepler_residual = fmax(c->kepler_residual, res);
         *r = mech_vec3_add(rr, c->ref.center);
         *v = vv;
+        return MECH_OK;
+    }
+    if (c->relativistic) {
+        struct mech_charged_state cs;
+        enum mech_status st = mech_charged_motion_at_lab_time(&c->ref.charged, t, &cs, c->err);
+        if (st != MECH_OK) return st;
+        *r = cs.r;
+        *v = cs.v;
+        c->last_u = cs.u;
+        c->last_gm1 = cs.gamma_minus_1;
+        c->last_gamma = cs.gamma;
         return MECH_OK;
     }
     return mech_trajectory_reference_eval(&c->ref, t, r, v, NULL, c->err);
@@ -247,7 +263,9 @@ static void cf_energy(const struct cf_ctx *c, double t, struct mech_vec3 r, stru
 {
     const struct mech_trajectory_problem *p = c->p;
     const double m = p->mass;
-    double ke = 0.5 * m * mech_vec3_dot(v, v), sum = ke, mag = fabs(ke);
+    double ke = c->relativistic ? m * MECH_C * MECH_C * c->last_gm1 /* (gamma - 1) m c^2 */
+                                : 0.5 * m * mech_vec3_dot(v, v);
+    double sum = ke, mag = fabs(ke);
     for (size_t i = 0; i < p->n_forces; i++) {
         const struct mech_force *f = &p->forces[i];
         double u = 0.0;
@@ -299,9 +317,11 @@ static const char *cf_force_name(enum mech_force_type t)
 }
 
 /* |acceleration| of each force and fictitious term at (t, r, v). */
-static void cf_terms(const struct cf_ctx *c, double t, struct mech_vec3 r, struct mech_vec3 v,
-                     struct mech_trajectory_result *res)
+/* Records each term's |a| at (t, r, v); returns the sum of the forces' |a|. */
+static double cf_terms(const struct cf_ctx *c, double t, struct mech_vec3 r, struct mech_vec3 v,
+                       struct mech_trajectory_result *res)
 {
+    double asum = 0.0;
     const struct mech_trajectory_problem *p = c->p;
     for (size_t i = 0; i < p->n_forces; i++) {
         const struct mech_force *f = &p->forces[i];
@@ -325,6 +345,7 @@ static void cf_terms(const struct cf_ctx *c, double t, struct mech_vec3 r, struc
         case MECH_FORCE_THIRD_BODY_TIDE: break;
         }
         res->terms[i].max_acceleration = fmax(res->terms[i].max_acceleration, a);
+        asum += a;
     }
     if (c->noninertial) {
         const size_t n = p->n_forces;
@@ -338,6 +359,7 @@ static void cf_terms(const struct cf_ctx *c, double t, struct mech_vec3 r, struc
         for (int k = 0; k < 4; k++)
             res->terms[n + k].max_acceleration = fmax(res->terms[n + k].max_acceleration, ac[k]);
     }
+    return asum;
 }
 
 /* Whether angular momentum about one point is conserved: the integrator's
@@ -359,7 +381,7 @@ struct cf_inv {
     double l_drift, l_scale;
 };
 
-static void cf_observe(const struct cf_ctx *c, struct cf_inv *iv, double t, struct mech_vec3 r,
+static void cf_observe(struct cf_ctx *c, struct cf_inv *iv, double t, struct mech_vec3 r,
                        struct mech_vec3 v, struct mech_trajectory_result *res)
 {
     double e, scale;
@@ -381,7 +403,35 @@ static void cf_observe(const struct cf_ctx *c, struct cf_inv *iv, double t, stru
     }
     res->max_radius = fmax(res->max_radius, mech_vec3_norm(r));
     res->max_speed = fmax(res->max_speed, mech_vec3_norm(v));
-    cf_terms(c, t, r, v, res);
+    const double asum = cf_terms(c, t, r, v, res);
+    if (!c->relativistic && !c->noninertial) {
+        /* the relativistic corrections this Newtonian answer leaves out, sized
+         * at the samples: special relativity bounded by sum |a| ((gamma - 1) +
+         * beta^2)/gamma (all of it at or beyond c), the 1PN term of the one
+         * central mass */
+        const double beta = mech_vec3_norm(v) / MECH_C;
+        double srel = asum;
+        if (beta < 1.0) {
+            const double g = 1.0 / sqrt((1.0 - beta) * (1.0 + beta));
+            srel = asum * (beta * beta * g * g / (g + 1.0) + beta * beta) / g;
+        }
+        c->rel_max = fmax(c->rel_max, srel);
+        if (c->kepler)
+            c->pn1_max = fmax(c->pn1_max,
+                              mech_vec3_norm(mech_schwarzschild_1pn_accel(
+                                  c->ref.gm, mech_vec3_sub(r, c->ref.center), v)));
+    }
+    if (c->relativistic) {
+        /* the special-relativistic term's size: dv/dt - A with A = eps + v x Omega,
+         * dv/dt = (A - (A.v) v/c^2)/gamma */
+        const struct mech_vec3 A =
+            mech_vec3_add(c->ref.charged.eps, mech_vec3_cross(v, c->ref.charged.omega));
+        const double g = c->last_gamma;
+        const struct mech_vec3 d = mech_vec3_add(
+            mech_vec3_scale(A, -c->last_gm1 / g),
+            mech_vec3_scale(v, -mech_vec3_dot(A, v) / (g * MECH_C * MECH_C)));
+        c->rel_max = fmax(c->rel_max, mech_vec3_norm(d));
+    }
 }
 
 /* ---- the operation ----------------------------------------------------------- */
@@ -389,7 +439,9 @@ static void cf_observe(const struct cf_ctx *c, struct cf_inv *iv, double t, stru
 int mech_trajectory_has_closed_form(const struct mech_trajectory_problem *p)
 {
     struct mech_trajectory_reference ref;
-    return p && mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
+    /* the relativistic closed form has no stop-event scan (no monotonic grid) */
+    return p && !(p->relativity && p->has_stop) &&
+           mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated;
 }
 
 enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_problem *p,
@@ -415,12 +467,16 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     memset(&c, 0, sizeof c);
     c.p = p;
     c.err = err;
-    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT)
+    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated)
         return mech_error_set(err, MECH_EINVAL, NULL,
                               "the scene has no closed form (only Kepler, the harmonic "
                               "oscillator, uniform gravity with or without linear drag and the "
                               "free particle have one): integrate it");
     c.kepler = !strcmp(c.ref.name, "kepler");
+    c.relativistic = !strcmp(c.ref.name, "relativistic_uniform_fields");
+    if (c.relativistic && p->has_stop)
+        return mech_error_set(err, MECH_EINVAL, "stop",
+                              "the relativistic closed form has no stop event: integrate it");
     c.noninertial = p->frame.type != MECH_FRAME_INERTIAL;
     c.w0 = mech_frame_omega(&p->frame);
     if (p->frame.type == MECH_FRAME_ROTATING) {
@@ -504,6 +560,7 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
         if (res->t) res->t[i] = ti;
         if (res->position) res->position[i] = r;
         if (res->velocity) res->velocity[i] = v;
+        if (res->proper_velocity && c.relativistic) res->proper_velocity[i] = c.last_u;
         res->n_samples = i + 1;
         cf_observe(&c, &iv, ti, r, v, res);
     }
@@ -550,6 +607,16 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     }
     res->invariant = res->invariants[0];
 
+    res->relativistic = c.relativistic;
+    res->relativity_terms[0] =
+        (struct mech_trajectory_term){"relativistic", -1, c.relativistic, c.rel_max};
+    res->relativity_terms[1] =
+        (struct mech_trajectory_term){"schwarzschild_1pn", -1, 0, c.pn1_max};
+    if (c.relativistic) {
+        inv->note = "conserved: (gamma - 1) m c^2 + U (U includes -q E.r); evaluated on the "
+                    "closed form at the samples";
+        res->invariant = res->invariants[0];
+    }
     res->dimensions = 3;
     res->plane_normal = mech_vec3_make(0, 0, 0);
     res->method = "closed_form";

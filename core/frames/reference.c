@@ -124,9 +124,26 @@ void mech_coriolis_first_order(struct mech_vec3 w, struct mech_vec3 g, int centr
     }
 }
 
+/* x turned about the unit axis k by the angle whose cosine and sine are c, s
+ * (Rodrigues) */
+static struct mech_vec3 rodrigues(struct mech_vec3 k, double c, double s, struct mech_vec3 x)
+{
+    return mech_vec3_add(
+        mech_vec3_add(mech_vec3_scale(x, c), mech_vec3_scale(mech_vec3_cross(k, x), s)),
+        mech_vec3_scale(k, mech_vec3_dot(k, x) * (1.0 - c)));
+}
+
 /* ---- scene recognition ---------------------------------------------------- */
 
 static int vec_is_zero(struct mech_vec3 a) { return a.x == 0.0 && a.y == 0.0 && a.z == 0.0; }
+
+/* a lies on the axis of w (through the origin): w x a = 0 to round-off of
+ * |w| |a| (a point on the axis stays put in the inertial frame) */
+static int on_axis(struct mech_vec3 w, struct mech_vec3 a)
+{
+    return mech_vec3_norm(mech_vec3_cross(w, a)) <=
+           1e-14 * mech_vec3_norm(w) * mech_vec3_norm(a);
+}
 
 /* A force that exerts nothing whatever the state. */
 static int force_is_null(const struct mech_force *f, double charge)
@@ -143,6 +160,36 @@ static int force_is_null(const struct mech_force *f, double charge)
     return 0;
 }
 
+/* A relativistic scene: exact only for special-relativistic dynamics in an
+ * inertial frame under uniform fields (Lorentz forces and uniform gravity,
+ * the latter a constant force m g: an electric field m g / q), not null. */
+static enum mech_reference_kind relativistic_reference(const struct mech_trajectory_problem *p,
+                                                       struct mech_trajectory_reference *ref)
+{
+    if (p->relativity != MECH_RELATIVITY_SPECIAL || p->frame.type != MECH_FRAME_INERTIAL)
+        return ref->kind;
+    struct mech_vec3 eps = mech_vec3_make(0, 0, 0), om = mech_vec3_make(0, 0, 0);
+    const double qm = p->charge / p->mass;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        const struct mech_force *f = &p->forces[i];
+        if (force_is_null(f, p->charge)) continue;
+        if (f->type == MECH_FORCE_UNIFORM_GRAVITY) {
+            eps = mech_vec3_add(eps, f->u.uniform_gravity.g);
+        } else if (f->type == MECH_FORCE_LORENTZ) {
+            eps = mech_vec3_add(eps, mech_vec3_scale(f->u.lorentz.E, qm));
+            om = mech_vec3_add(om, mech_vec3_scale(f->u.lorentz.B, qm));
+        } else {
+            return ref->kind;
+        }
+    }
+    if (mech_charged_motion_init(eps, om, p->position, mech_trajectory_proper_velocity0(p),
+                                 &ref->charged, NULL) != MECH_OK)
+        return ref->kind;
+    ref->kind = MECH_REFERENCE_EXACT;
+    ref->name = "relativistic_uniform_fields";
+    return ref->kind;
+}
+
 enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
                                                         struct mech_trajectory_reference *ref)
 {
@@ -152,6 +199,7 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
     if (!p) return ref->kind;
     ref->r0 = p->position;
     ref->v0 = p->velocity;
+    if (p->relativity) return relativistic_reference(p, ref);
     struct mech_vec3 w = mech_frame_omega(&p->frame);
     const int rotating = p->frame.type == MECH_FRAME_ROTATING;
     const int noninertial = p->frame.type != MECH_FRAME_INERTIAL && !vec_is_zero(w);
@@ -206,6 +254,34 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
             ref->name = n_drag ? "uniform_gravity_linear_drag" : "uniform_gravity";
             ref->gamma = b / p->mass;
         }
+    } else if (rotating && coriolis && centrifugal && vec_is_zero(p->frame.omega_dot) &&
+               !((p->fictitious & MECH_FICTITIOUS_TRANSLATIONAL) &&
+                 !vec_is_zero(p->frame.acceleration)) &&
+               n_drag == 0 && on_axis(w, g) &&
+               (!central || on_axis(w, central->u.central_gravity.center)) &&
+               (!spring || on_axis(w, spring->u.spring.anchor)) &&
+               ((n_central == 1 && n_spring + n_uniform == 0) ||
+                (n_spring == 1 && spring->u.spring.rest_length == 0.0 && n_central == 0) ||
+                n_central + n_spring == 0)) {
+        /* every force is the same seen from the inertial frame that
+         * coincides with this one at t = 0: the inertial solution through
+         * (r0, v0 + w x r0), turned back by w t (mech_trajectory_reference_eval) */
+        ref->kind = MECH_REFERENCE_EXACT;
+        ref->rotated = 1;
+        ref->spin = w;
+        ref->v0 = mech_vec3_add(p->velocity, mech_vec3_cross(w, p->position));
+        if (n_central == 1) {
+            ref->name = "kepler_rotating";
+            ref->gm = central->u.central_gravity.gm;
+            ref->center = central->u.central_gravity.center;
+        } else if (n_spring == 1) {
+            ref->name = "harmonic_oscillator_rotating";
+            mech_harmonic_omega_dd(spring->u.spring.k, p->mass, &ref->omega, &ref->omega_lo);
+            ref->center = spring->u.spring.anchor;
+        } else {
+            ref->name = "uniform_gravity_rotating";
+            ref->gamma = 0.0;
+        }
     } else if (coriolis && n_central + n_spring + n_drag == 0) {
         ref->kind = MECH_REFERENCE_FIRST_ORDER;
         ref->name = "coriolis_first_order";
@@ -223,7 +299,32 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
     if (second_order) *second_order = 0.0;
     if (!ref || ref->kind == MECH_REFERENCE_NONE)
         return mech_error_set(err, MECH_EINVAL, NULL, "no reference solution");
-    if (!strcmp(ref->name, "kepler")) {
+    if (ref->rotated) {
+        /* the inertial motion, then seen from the frame turned by w t about
+         * w: r_R = R(-w t) r_I, v_R = R(-w t) v_I - w x r_R */
+        struct mech_trajectory_reference in = *ref;
+        in.rotated = 0;
+        in.name = !strcmp(ref->name, "kepler_rotating")                ? "kepler"
+                : !strcmp(ref->name, "harmonic_oscillator_rotating") ? "harmonic_oscillator"
+                                                                       : "uniform_gravity";
+        struct mech_vec3 ri, vi;
+        enum mech_status st = mech_trajectory_reference_eval(&in, t, &ri, &vi, NULL, err);
+        if (st != MECH_OK) return st;
+        const double wn = mech_vec3_norm(ref->spin);
+        const struct mech_vec3 k = mech_vec3_scale(ref->spin, 1.0 / wn);
+        /* the angle reduced mod 2 pi in long double: over many turns the
+         * rounding of w t alone would move the reference */
+        const long double ang = fmodl((long double)wn * (long double)t, 6.283185307179586476925286766559L);
+        const double c = (double)cosl(ang), sn = -(double)sinl(ang);
+        *r = rodrigues(k, c, sn, ri);
+        *v = mech_vec3_sub(rodrigues(k, c, sn, vi), mech_vec3_cross(ref->spin, *r));
+    } else if (!strcmp(ref->name, "relativistic_uniform_fields")) {
+        struct mech_charged_state cs;
+        enum mech_status st = mech_charged_motion_at_lab_time(&ref->charged, t, &cs, err);
+        if (st != MECH_OK) return st;
+        *r = cs.r;
+        *v = cs.v;
+    } else if (!strcmp(ref->name, "kepler")) {
         struct mech_vec3 rr, vv;
         enum mech_status st = mech_kepler_propagate(ref->gm, mech_vec3_sub(ref->r0, ref->center),
                                                     ref->v0, t, &rr, &vv, err);

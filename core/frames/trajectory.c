@@ -47,6 +47,12 @@ struct traj_ctx {
      * in an inertial frame, -1 if the scene has no split; kepler_exact when
      * the method moves that force's part exactly (no resolution check) */
     int kepler_index, kepler_exact;
+    /* relativistic corrections (mech/trajectory_problem.h): special = the
+     * state is (r, u = gamma v); pn1 = the 1PN term of force pn1_index;
+     * pn1_index is the one central_gravity of an inertial scene (-1: none),
+     * whose 1PN size is measured whether modelled or not */
+    int special, pn1, pn1_index;
+    double rel_max, pn1_max; /* largest |a| of the two corrections observed */
     struct mech_error *err;
     /* observer accumulators */
     double term_max[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
@@ -194,6 +200,23 @@ static struct mech_vec3 centrifugal_accel(struct mech_vec3 w, struct mech_vec3 r
     return mech_vec3_scale(mech_vec3_cross(w, mech_vec3_cross(w, r)), -1.0);
 }
 
+/* The Schwarzschild 1PN correction of the test particle's acceleration about
+ * force pn1_index (harmonic coordinates, mech/trajectory_problem.h):
+ *   a = (gm / (c^2 d^2)) [(4 gm/d - v^2) n + 4 (n.v) v]. d > 0 (the central
+ * force was evaluated first and refuses d = 0). */
+static struct mech_vec3 pn1_accel(const struct traj_ctx *c, struct mech_vec3 r, struct mech_vec3 v)
+{
+    const struct mech_force *f = &c->p->forces[c->pn1_index];
+    return mech_schwarzschild_1pn_accel(f->u.central_gravity.gm,
+                                        mech_vec3_sub(r, f->u.central_gravity.center), v);
+}
+
+/* gamma and v = u / gamma of a proper velocity u, gamma = sqrt(1 + u^2/c^2). */
+static double gamma_of_u(struct mech_vec3 u)
+{
+    return sqrt(1.0 + mech_vec3_dot(u, u) / (MECH_C * MECH_C));
+}
+
 /* A non-finite state or acceleration: say when and where. */
 static enum mech_status nonfinite_error(const struct traj_ctx *c, double t, struct mech_vec3 r,
                                         struct mech_vec3 v)
@@ -226,7 +249,7 @@ static void ctx_fast_setup(struct traj_ctx *c)
 {
     const struct mech_trajectory_problem *p = c->p;
     c->simple = !c->coriolis && !c->centrifugal && !c->euler && !c->translational &&
-                p->n_forces <= MECH_TRAJECTORY_MAX_FORCES;
+                !c->special && !c->pn1 && p->n_forces <= MECH_TRAJECTORY_MAX_FORCES;
     for (size_t i = 0; i < p->n_forces && c->simple; i++) {
         const struct mech_force *f = &p->forces[i];
         struct mech_vec3 u;
@@ -368,6 +391,7 @@ static enum mech_status traj_accel(double t, const double *q, const double *v, d
         if (st != MECH_OK) return st;
         acc = mech_vec3_add(acc, ai);
     }
+    if (c->pn1) acc = mech_vec3_add(acc, pn1_accel(c, r, vv));
     if (c->coriolis || c->centrifugal) { /* W(t) only when a rotation term needs it */
         const struct mech_vec3 w = omega_at(c, t);
         if (c->coriolis) acc = mech_vec3_add(acc, coriolis_accel(w, vv));
@@ -389,6 +413,35 @@ static enum mech_status traj_rhs(double t, const double *y, double *dydt, void *
     dydt[1] = y[4];
     dydt[2] = y[5];
     return traj_accel(t, y, y + 3, dydt + 3, params);
+}
+
+/* Special-relativistic dynamics in the state y = (r, u), u = gamma v:
+ *   dr/dt = u / gamma,  du/dt = F(t, r, v) / m,  gamma = sqrt(1 + u^2/c^2),
+ * (dp/dt = F with p = m u). gamma is never formed from 1 - beta, so the
+ * state keeps its digits from beta = 1e-9 to gamma = 1e6 and beyond. The
+ * frame is inertial (mech_trajectory_check), so only the forces act. */
+static enum mech_status rel_rhs(double t, const double *y, double *dydt, void *params)
+{
+    const struct traj_ctx *c = params;
+    const struct mech_vec3 r = mech_vec3_make(y[0], y[1], y[2]);
+    const struct mech_vec3 u = mech_vec3_make(y[3], y[4], y[5]);
+    const struct mech_vec3 v = mech_vec3_scale(u, 1.0 / gamma_of_u(u));
+    struct mech_vec3 acc = mech_vec3_make(0.0, 0.0, 0.0);
+    for (size_t i = 0; i < c->p->n_forces; i++) {
+        struct mech_vec3 ai;
+        enum mech_status st = force_accel(c, i, r, v, t, &ai);
+        if (st != MECH_OK) return st;
+        acc = mech_vec3_add(acc, ai);
+    }
+    if (!mech_vec3_isfinite(acc) || !mech_vec3_isfinite(r) || !mech_vec3_isfinite(v))
+        return nonfinite_error(c, t, r, v);
+    dydt[0] = v.x;
+    dydt[1] = v.y;
+    dydt[2] = v.z;
+    dydt[3] = acc.x;
+    dydt[4] = acc.y;
+    dydt[5] = acc.z;
+    return MECH_OK;
 }
 
 /* Lorentz-type split for Boris (mech/ode.h): a = e(t, q) + v x w(t, q) with
@@ -431,11 +484,10 @@ static enum mech_status traj_lorentz(double t, const double *q, double *e, doubl
 }
 
 /* The invariant at (t, r, v) and the sum of the magnitudes of its parts. */
-static void invariant_at(const struct traj_ctx *c, double t, struct mech_vec3 r,
-                         struct mech_vec3 v, double *value, double *scale)
+static void invariant_at(const struct traj_ctx *c, double t, struct mech_vec3 r, double ke,
+                         double *value, double *scale)
 {
     const double m = c->p->mass;
-    double ke = 0.5 * m * mech_vec3_dot(v, v);
     double sum = ke, mag = fabs(ke);
     for (size_t i = 0; i < c->p->n_forces; i++) {
         const struct mech_force *f = &c->p->forces[i];
@@ -480,6 +532,19 @@ static void invariant_at(const struct traj_ctx *c, double t, struct mech_vec3 r,
         sum += u;
         mag += fabs(u);
     }
+    if (c->pn1) {
+        /* the 1PN energy of the test particle (harmonic coordinates), from the
+         * Lagrangian L/m = v^2/2 + gm/d + (v^4/8 + 3 gm v^2/(2d) - gm^2/(2 d^2))/c^2:
+         * E/m = v^2/2 - gm/d + (3 v^4/8 + 3 gm v^2/(2d) + gm^2/(2 d^2))/c^2 */
+        const struct mech_force *f = &c->p->forces[c->pn1_index];
+        const double gm = f->u.central_gravity.gm;
+        const double d = mech_vec3_norm(mech_vec3_sub(r, f->u.central_gravity.center));
+        const double v2 = 2.0 * ke / m;
+        double u = m * (0.375 * v2 * v2 + 1.5 * gm * v2 / d + 0.5 * (gm / d) * (gm / d)) /
+                   (MECH_C * MECH_C);
+        sum += u;
+        mag += fabs(u);
+    }
     *value = sum;
     *scale = mag;
 }
@@ -510,21 +575,60 @@ static enum mech_status check_resolution(const struct traj_ctx *c, struct mech_v
     return MECH_OK;
 }
 
+/* Size of the special-relativistic correction to the acceleration under
+ * the forces' sum A (F/m) at velocity v, Lorentz factor gamma (gm1 = gamma - 1,
+ * 0 = beta >= 1: then the whole |A|): dv/dt = (A - (A.v) v/c^2)/gamma, so
+ * dv/dt - A = -A (gamma - 1)/gamma - (A.v) v / (gamma c^2). */
+static double special_correction(struct mech_vec3 A, struct mech_vec3 v, double gamma, double gm1)
+{
+    if (!(gamma >= 1.0)) return mech_vec3_norm(A);
+    const struct mech_vec3 d = mech_vec3_add(
+        mech_vec3_scale(A, -gm1 / gamma),
+        mech_vec3_scale(v, -mech_vec3_dot(A, v) / (gamma * MECH_C * MECH_C)));
+    return mech_vec3_norm(d);
+}
+
 static enum mech_status traj_observe(double t, const double *y, void *params)
 {
     struct traj_ctx *c = params;
     struct mech_vec3 r = mech_vec3_make(y[0], y[1], y[2]);
     struct mech_vec3 v = mech_vec3_make(y[3], y[4], y[5]);
     const size_t n = c->p->n_forces;
+    /* gamma, gamma - 1 (as u^2/c^2 / (gamma + 1) or beta^2 gamma^2 / (gamma + 1)),
+     * and the kinetic energy: relativistic in a special run */
+    double gamma = 0.0, gm1 = 0.0, ke;
+    if (c->special) {
+        const struct mech_vec3 u = v;
+        const double u2c2 = mech_vec3_dot(u, u) / (MECH_C * MECH_C);
+        gamma = sqrt(1.0 + u2c2);
+        gm1 = u2c2 / (gamma + 1.0);
+        v = mech_vec3_scale(u, 1.0 / gamma);
+        ke = c->p->mass * MECH_C * MECH_C * gm1;
+    } else {
+        ke = 0.5 * c->p->mass * mech_vec3_dot(v, v);
+        const double beta = mech_vec3_norm(v) / MECH_C;
+        if (beta < 1.0) {
+            gamma = 1.0 / sqrt((1.0 - beta) * (1.0 + beta));
+            gm1 = beta * beta * gamma * gamma / (gamma + 1.0);
+        }
+    }
     if (c->fixed_dt > 0.0) {
         enum mech_status st = check_resolution(c, r, v, t);
         if (st != MECH_OK) return st;
     }
+    struct mech_vec3 A = mech_vec3_make(0.0, 0.0, 0.0);
     for (size_t i = 0; i < n; i++) {
         struct mech_vec3 ai;
         enum mech_status st = force_accel(c, i, r, v, t, &ai);
         if (st != MECH_OK) return st;
         c->term_max[i] = fmax(c->term_max[i], mech_vec3_norm(ai));
+        A = mech_vec3_add(A, ai);
+    }
+    /* the relativistic corrections are sized whether modelled or not (an
+     * inertial frame only: elsewhere they are not offered) */
+    if (!c->noninertial) {
+        c->rel_max = fmax(c->rel_max, special_correction(A, v, gamma, gm1));
+        if (c->pn1_index >= 0) c->pn1_max = fmax(c->pn1_max, mech_vec3_norm(pn1_accel(c, r, v)));
     }
     /* Fictitious terms are sized even when omitted (DESIGN: say what was
      * left out, with its size); all four are exactly 0 in an inertial frame
@@ -542,7 +646,7 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
     c->vmax = fmax(c->vmax, vn);
 
     double inv, scale;
-    invariant_at(c, t, r, v, &inv, &scale);
+    invariant_at(c, t, r, ke, &inv, &scale);
     if (!isfinite(inv) || !isfinite(scale))
         return mech_error_set(c->err, MECH_ENUMERIC, NULL,
                               "non-finite energy at t = %.9g s", t);
@@ -556,7 +660,14 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
     if (c->track_l) {
         /* L = m (r - c) x v about the common centre of the central forces */
         struct mech_vec3 d = mech_vec3_sub(r, c->lcenter);
-        struct mech_vec3 l = mech_vec3_scale(mech_vec3_cross(d, v), c->p->mass);
+        /* r x p, p = m u in a special run (conserved by central forces too) */
+        double lf = c->special ? gamma : 1.0;
+        if (c->pn1) /* the 1PN momentum: v (1 + v^2/(2c^2) + 3 gm/(c^2 d)) */
+            lf = 1.0 + (0.5 * mech_vec3_dot(v, v) +
+                        3.0 * c->p->forces[c->pn1_index].u.central_gravity.gm /
+                            mech_vec3_norm(d)) /
+                           (MECH_C * MECH_C);
+        struct mech_vec3 l = mech_vec3_scale(mech_vec3_cross(d, v), c->p->mass * lf);
         if (t == 0.0 && c->n_observed == 0) c->l0 = l;
         c->l_last = l;
         c->ldrift_max = fmax(c->ldrift_max, mech_vec3_norm(mech_vec3_sub(l, c->l0)));
@@ -715,6 +826,7 @@ static int kepler_split_index(const struct mech_trajectory_problem *p, const cha
         }
     const char *w = NULL;
     if (p->frame.type != MECH_FRAME_INERTIAL) w = "the frame is not inertial";
+    else if (p->relativity) w = "a relativistic term is modelled (integrated whole, no split)";
     else if (n == 0) w = "the scene has no central_gravity force";
     else if (n > 1) w = "the scene has more than one";
     if (why) *why = w;
@@ -739,6 +851,18 @@ static void ctx_init(struct traj_ctx *c, const struct mech_trajectory_problem *p
     c->translational = c->noninertial && (p->fictitious & MECH_FICTITIOUS_TRANSLATIONAL);
     c->fixed_dt = fixed_dt;
     c->kepler_index = kepler_split_index(p, NULL);
+    c->special = !c->noninertial && (p->relativity & MECH_RELATIVITY_SPECIAL);
+    c->pn1_index = -1;
+    if (!c->noninertial) {
+        size_t n = 0;
+        for (size_t i = 0; i < p->n_forces; i++)
+            if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) {
+                n++;
+                c->pn1_index = (int)i;
+            }
+        if (n != 1) c->pn1_index = -1;
+    }
+    c->pn1 = c->pn1_index >= 0 && (p->relativity & MECH_RELATIVITY_SCHWARZSCHILD_1PN);
     c->track_l = angular_momentum_center(c, &c->lcenter);
     c->r_last = p->position;
     ctx_fast_setup(c);
@@ -758,6 +882,7 @@ static int scene_velocity_dependent(const struct traj_ctx *c)
 {
     const struct mech_trajectory_problem *p = c->p;
     if (scene_has_drag(p)) return 1;
+    if (c->special || c->pn1) return 1; /* v/c terms */
     if (c->coriolis && (mech_vec3_norm(c->w) > 0.0 || mech_vec3_norm(c->wdot) > 0.0)) return 1;
     for (size_t i = 0; i < p->n_forces; i++)
         if (p->forces[i].type == MECH_FORCE_LORENTZ && p->charge != 0.0 &&
@@ -777,7 +902,8 @@ static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
 {
     struct mech_vec3 n;
     c->dim2 = 0;
-    if (!c->p->reduce_planar || !mech_trajectory_plane(c->p, &n)) return;
+    /* a special run's state is (r, u): no planar form */
+    if (!c->p->reduce_planar || c->special || !mech_trajectory_plane(c->p, &n)) return;
     /* Boris rotates 3-vectors: 2-D only when it needs no Lorentz split */
     if (!strcmp(mi->name, "boris") && scene_velocity_dependent(c)) return;
     c->dim2 = 1;
@@ -787,8 +913,10 @@ static void ctx_plane(struct traj_ctx *c, const struct mech_ode_method_info *mi)
 
 /* Buffers of one run: samples (t, y) and the stop state. */
 struct traj_run {
-    double *sample_t, *sample_y; /* samples, samples * 6 */
+    double *sample_t, *sample_y; /* samples, samples * 6: (r, v) */
     double y_stop[6];
+    struct mech_vec3 *sample_u;  /* special runs: the proper velocities, else NULL */
+    struct mech_vec3 u_stop;
     struct mech_ode_result out;
 };
 
@@ -804,9 +932,21 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     /* one body: its 3 (planar: 2) coordinates are one particle */
     struct mech_ode_system sys = {6, traj_rhs, traj_accel,
                                   velocity_free ? MECH_ODE_VELOCITY_FREE : 0u, c,
-                                  dissipative ? NULL : traj_lorentz, 3, NULL};
+                                  dissipative || c->pn1 ? NULL : traj_lorentz, 3, NULL};
     double y0[6] = {p->position.x, p->position.y, p->position.z,
                     p->velocity.x, p->velocity.y, p->velocity.z};
+    if (c->special) {
+        /* first order in (r, u): no second-order form, no Lorentz split */
+        const struct mech_vec3 u0v = mech_trajectory_proper_velocity0(p);
+        sys = (struct mech_ode_system){6, rel_rhs, NULL, 0u, c, NULL, 3, NULL};
+        y0[3] = u0v.x;
+        y0[4] = u0v.y;
+        y0[5] = u0v.z;
+        if (!run->sample_u) {
+            run->sample_u = malloc(p->samples * sizeof *run->sample_u);
+            if (!run->sample_u) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
+        }
+    }
     double u0[4], u_stop[4] = {0, 0, 0, 0};
     double *u_samples = NULL;
     if (c->dim2) {
@@ -856,6 +996,20 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
         if (run->out.stopped) plane_expand(c, u_stop, run->y_stop);
         free(u_samples);
     }
+    if (c->special) {
+        /* (r, u) -> (r, v), the proper velocities kept beside */
+        for (size_t i = 0; i <= run->out.n_samples; i++) {
+            double *y = i < run->out.n_samples ? run->sample_y + 6 * i : run->y_stop;
+            if (i == run->out.n_samples && !run->out.stopped) break;
+            const struct mech_vec3 u = mech_vec3_make(y[3], y[4], y[5]);
+            const double g = gamma_of_u(u);
+            if (i < run->out.n_samples) run->sample_u[i] = u;
+            else run->u_stop = u;
+            y[3] = u.x / g;
+            y[4] = u.y / g;
+            y[5] = u.z / g;
+        }
+    }
     if (st == MECH_ENUMERIC && err && err->code == MECH_ENUMERIC && !strstr(err->text, "position") &&
         !strstr(err->text, "distance")) {
         /* The driver's own message (a non-finite state after a step) does not
@@ -872,7 +1026,9 @@ static void run_free(struct traj_run *run)
 {
     free(run->sample_t);
     free(run->sample_y);
+    free(run->sample_u);
     run->sample_t = run->sample_y = NULL;
+    run->sample_u = NULL;
 }
 
 static enum mech_status run_alloc(struct traj_run *run, size_t n, struct mech_error *err)
@@ -892,9 +1048,15 @@ static struct mech_vec3 yvec(const double *y, int off)
     return mech_vec3_make(y[off], y[off + 1], y[off + 2]);
 }
 
-/* Errors of run against the reference at every sample and the stop point. */
+/* Errors of run against the reference at every sample and the stop point,
+ * relative to the scene's scales: positions to the largest distance from the
+ * reference's centre (Kepler's body, the spring's anchor; the origin for the
+ * uniform fields) over the samples, the orbit's or oscillation's size;
+ * velocities to the largest speed over the samples and over every step of
+ * the run (speed_max), never to a value that passes through zero (a 1-D
+ * oscillator sampled once a period is at rest at every sample). */
 static enum mech_status reference_report(const struct mech_trajectory_problem *p,
-                                         const struct traj_run *run,
+                                         const struct traj_run *run, double speed_max,
                                          struct mech_trajectory_reference_report *rep,
                                          struct mech_error *err)
 {
@@ -902,7 +1064,8 @@ static enum mech_status reference_report(const struct mech_trajectory_problem *p
     memset(rep, 0, sizeof *rep);
     rep->name = "";
     if (mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_NONE) return MECH_OK;
-    double rmax = 0.0, vmax = 0.0;
+    double rmax = 0.0, vmax = isfinite(speed_max) ? speed_max : 0.0;
+    const int centred = !strncmp(ref.name, "kepler", 6) || !strncmp(ref.name, "harmonic", 8);
     const size_t n = run->out.n_samples;
     for (size_t i = 0; i <= n; i++) {
         const double *y;
@@ -926,7 +1089,7 @@ static enum mech_status reference_report(const struct mech_trajectory_problem *p
         rep->max_velocity_error = fmax(rep->max_velocity_error, dv);
         rep->final_position_error = de;
         rep->truncation_estimate = fmax(rep->truncation_estimate, so);
-        rmax = fmax(rmax, mech_vec3_norm(rr));
+        rmax = fmax(rmax, mech_vec3_norm(centred ? mech_vec3_sub(rr, ref.center) : rr));
         vmax = fmax(vmax, mech_vec3_norm(vr));
     }
     rep->kind = (int)ref.kind;
@@ -976,6 +1139,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         if (res->t) res->t[i] = run.sample_t[i];
         if (res->position) res->position[i] = yvec(y, 0);
         if (res->velocity) res->velocity[i] = yvec(y, 3);
+        if (res->proper_velocity && run.sample_u) res->proper_velocity[i] = run.sample_u[i];
     }
     if (st != MECH_OK) {
         run_free(&run);
@@ -987,6 +1151,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         res->t_stop = run.out.t_stop;
         res->stop_position = yvec(run.y_stop, 0);
         res->stop_velocity = yvec(run.y_stop, 3);
+        res->stop_proper_velocity = c.special ? run.u_stop : mech_vec3_make(0, 0, 0);
     }
     res->n_terms = p->n_forces + MECH_TRAJECTORY_N_FICTITIOUS;
     res->dimensions = c.dim2 ? 2 : 3;
@@ -1007,6 +1172,11 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                                                                 c.term_max[p->n_forces + 2]};
     res->terms[p->n_forces + 3] = (struct mech_trajectory_term){
         "translational", -1, c.translational, c.term_max[p->n_forces + 3]};
+    res->relativity_terms[0] =
+        (struct mech_trajectory_term){"relativistic", -1, c.special, c.rel_max};
+    res->relativity_terms[1] =
+        (struct mech_trajectory_term){"schwarzschild_1pn", -1, c.pn1, c.pn1_max};
+    res->relativistic = c.special;
     res->method = mi.name;
     res->stats = run.out.stats;
     res->total_steps = run.out.stats.steps;
@@ -1023,6 +1193,12 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                 : c.noninertial
                     ? "conserved: 1/2 m v^2 + U - 1/2 m |w x r|^2 (if centrifugal modelled) + m A.r "
                       "(if translational modelled); Coriolis and q v x B do no work"
+                : c.special
+                    ? "conserved: (gamma - 1) m c^2 + U, gamma - 1 = (u/c)^2/(gamma + 1) (q v x B "
+                      "does no work; U includes -q E.r)"
+                : c.pn1
+                    ? "conserved: the 1PN energy 1/2 m v^2 + U + m (3 v^4/8 + 3 gm v^2/(2 d) + "
+                      "gm^2/(2 d^2))/c^2 (harmonic coordinates)"
                     : "conserved: 1/2 m v^2 + U (q v x B does no work; U includes -q E.r)";
     inv->initial = c.inv0;
     inv->final = c.inv_last;
@@ -1033,7 +1209,11 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         struct mech_trajectory_invariant *l = &res->invariants[1];
         l->name = "angular_momentum";
         l->conserved = 1;
-        l->note = "conserved: every force is central about one point";
+        l->note = c.special ? "conserved: r x p with p = gamma m v; every force is central about "
+                              "one point"
+                  : c.pn1 ? "conserved: the 1PN angular momentum m (r x v) (1 + v^2/(2 c^2) + "
+                            "3 gm/(c^2 d)); every force is central about one point"
+                          : "conserved: every force is central about one point";
         l->is_vector = 1;
         l->initial_vector = c.l0;
         l->final_vector = c.l_last;
@@ -1045,7 +1225,7 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
     }
     res->invariant = res->invariants[0];
 
-    st = reference_report(p, &run, &res->reference, err);
+    st = reference_report(p, &run, res->max_speed, &res->reference, err);
     memset(&res->error_estimate, 0, sizeof res->error_estimate);
     if (st == MECH_OK && p->error_estimate && res->reference.kind == MECH_REFERENCE_NONE) {
         /* Second run at a tighter setting with what is left of the budget. */

@@ -5,6 +5,7 @@
 #include "mech/trajectory.h"
 #include "mech/chooser.h"
 #include "mech/chooser_orbit.h"
+#include "mech/closed_form.h"
 #include "mech/reference.h"
 #include "trajectory_scene.h"
 
@@ -93,10 +94,19 @@ static void traj_profile(const struct mech_trajectory_problem *p,
     /* stiff: a damping time far shorter than the dynamical time and the run */
     s->stiff = drag_rate * fmin(T, p->t_end) > 1e2;
     struct mech_trajectory_reference ref;
-    s->closed_form = mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT;
+    s->closed_form = mech_trajectory_has_closed_form(p); /* a rotated reference is
+                                                            evidence, not an answer */
+    mech_trajectory_reference_find(p, &ref);
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;
     mech_chooser_profile_orbit(s, p); /* core/ode/chooser_orbit.c */
+    if (p->relativity & MECH_RELATIVITY_SPECIAL) {
+        /* integrated as (r, u = gamma v): first order, no Kepler split */
+        s->second_order = 0;
+        s->perturbation = -1.0;
+    } else if (p->relativity) {
+        s->perturbation = -1.0; /* the 1PN term is integrated whole */
+    }
 }
 
 enum mech_status mech_trajectory_choose(const struct mech_trajectory_problem *p, double target,

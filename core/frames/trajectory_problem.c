@@ -2,6 +2,7 @@
  * its validation with the API path of every field, the centre about which it
  * conserves angular momentum, and the plane a planar scene stays in. */
 #include "mech/trajectory_problem.h"
+#include "mech/constants.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for error parameter paths */
@@ -11,6 +12,71 @@ static enum mech_status check_vec(struct mech_vec3 v, const char *param, struct 
 {
     if (!mech_vec3_isfinite(v))
         return mech_error_set(err, MECH_EINVAL, param, "components must be finite");
+    return MECH_OK;
+}
+
+struct mech_vec3 mech_schwarzschild_1pn_accel(double gm, struct mech_vec3 d, struct mech_vec3 v)
+{
+    const double dn = mech_vec3_norm(d);
+    const struct mech_vec3 n = mech_vec3_scale(d, 1.0 / dn);
+    const double k = (gm / (MECH_C * dn)) / (MECH_C * dn);
+    const double v2 = mech_vec3_dot(v, v), nv = mech_vec3_dot(n, v);
+    return mech_vec3_add(mech_vec3_scale(n, k * (4.0 * gm / dn - v2)),
+                         mech_vec3_scale(v, 4.0 * k * nv));
+}
+
+struct mech_vec3 mech_trajectory_proper_velocity0(const struct mech_trajectory_problem *p)
+{
+    if (p->has_proper_velocity) return p->proper_velocity;
+    const double beta = mech_vec3_norm(p->velocity) / MECH_C;
+    return mech_vec3_scale(p->velocity, 1.0 / sqrt((1.0 - beta) * (1.0 + beta)));
+}
+
+/* The relativistic corrections asked for must be modellable: an inertial
+ * frame (a rotating frame's fictitious terms are Newtonian), a speed below c
+ * for special relativity, one central mass for the 1PN term, not both. */
+static enum mech_status relativity_check(const struct mech_trajectory_problem *p,
+                                         struct mech_error *err)
+{
+    const unsigned r = p->relativity;
+    if (r & ~(MECH_RELATIVITY_SPECIAL | MECH_RELATIVITY_SCHWARZSCHILD_1PN))
+        return mech_error_set(err, MECH_EINVAL, "relativity", "unknown relativistic term");
+    if (p->has_proper_velocity) {
+        if (!mech_vec3_isfinite(p->proper_velocity))
+            return mech_error_set(err, MECH_EINVAL, "particle/proper_velocity",
+                                  "components must be finite");
+        if (!(r & MECH_RELATIVITY_SPECIAL))
+            return mech_error_set(err, MECH_EINVAL, "particle/proper_velocity",
+                                  "a proper velocity is the state of special-relativistic "
+                                  "dynamics: the model must include \"relativistic\"");
+    }
+    if (!r) return MECH_OK;
+    if (p->frame.type != MECH_FRAME_INERTIAL)
+        return mech_error_set(err, MECH_EINVAL, "relativity",
+                              "relativistic terms are modelled in an inertial frame only (the "
+                              "fictitious forces of a rotating frame are Newtonian)");
+    if ((r & MECH_RELATIVITY_SPECIAL) && (r & MECH_RELATIVITY_SCHWARZSCHILD_1PN))
+        return mech_error_set(err, MECH_EINVAL, "relativity",
+                              "\"relativistic\" and \"schwarzschild_1pn\" are not modelled "
+                              "together: the 1PN orbit about a mass already holds its "
+                              "special-relativistic kinematics");
+    if ((r & MECH_RELATIVITY_SPECIAL) && !p->has_proper_velocity &&
+        !(mech_vec3_norm(p->velocity) < MECH_C))
+        return mech_error_set(err, MECH_EDOMAIN, "particle/velocity",
+                              "|velocity| = %.17g m/s is not below c = 299792458 m/s, which "
+                              "special relativity requires (give particle.proper_velocity "
+                              "u = gamma v for speeds near c)",
+                              mech_vec3_norm(p->velocity));
+    if (r & MECH_RELATIVITY_SCHWARZSCHILD_1PN) {
+        size_t n = 0;
+        for (size_t i = 0; i < p->n_forces; i++)
+            n += p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY;
+        if (n != 1)
+            return mech_error_set(err, MECH_EINVAL, "relativity",
+                                  "\"schwarzschild_1pn\" corrects the field of exactly one "
+                                  "central mass; the scene has %zu central_gravity forces",
+                                  n);
+    }
     return MECH_OK;
 }
 
@@ -112,6 +178,7 @@ enum mech_status mech_trajectory_check(const struct mech_trajectory_problem *p,
             return mech_error_set(err, MECH_EINVAL, param, "unknown force type");
         }
     }
+    if ((st = relativity_check(p, err)) != MECH_OK) return st;
     if (!(isfinite(p->t_end) && p->t_end > 0.0))
         return mech_error_set(err, MECH_EINVAL, "t_end", "t_end must be finite and > 0");
     if (p->samples < MECH_TRAJECTORY_MIN_SAMPLES || p->samples > MECH_TRAJECTORY_MAX_SAMPLES)

@@ -79,6 +79,18 @@ enum mech_status mech_geodesic_run(const struct mech_geodesic_setup *s,
     return MECH_OK;
 }
 
+double mech_geodesic_error_gain(double b)
+{
+    if (!(b > 3.0 * sqrt(3.0)) || !isfinite(b)) return 1.0;
+    double delta = 0.0;
+    struct mech_error e;
+    mech_error_clear(&e);
+    if (mech_geodesic_deflection_quadrature(b, &delta, &e) != MECH_OK || !isfinite(delta))
+        return 1.0;
+    /* capped: past ~30 rad of winding no double-precision run keeps anything */
+    return 2.0 * exp(fmin(fmax(delta - 3.3, 0.0), 30.0));
+}
+
 int mech_geodesic_pilot_applies(const struct mech_geodesic_setup *s)
 {
     if (!s) return 0;

@@ -2,9 +2,38 @@
  * (mech_ham_pilot_run, declared in mech/hamiltonian.h; the pilot itself is
  * core/ode/chooser_pilot.c): the flow over a fraction of its run, two
  * samples, the end state for the pilot's error estimate. */
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_sf_ellint.h>
+#include <math.h>
 #include <string.h>
 
 #include "mech/hamiltonian.h"
+
+double mech_ham_error_gain(const struct mech_ham_system *s, const double *y0)
+{
+    if (!s || !y0 || s->kind != MECH_HAM_PENDULUM || !(s->g > 0.0) || !(s->length > 0.0) ||
+        !(s->mass > 0.0))
+        return 1.0;
+    const double ml2 = s->mass * s->length * s->length;
+    const double w0 = sqrt(s->g / s->length);
+    /* energy above the bottom over the separatrix's: (1 - cos q)/2 + p^2 / (2 ml2 w0)^2,
+     * 1 - cos q = 2 sin^2(q/2) without cancellation */
+    const double sh = sin(0.5 * y0[0]);
+    const double pw = y0[1] / (2.0 * ml2 * w0);
+    double m = sh * sh + pw * pw;
+    if (!(m > 0.0) || !isfinite(m)) return 1.0;
+    if (m > 1.0) m = 1.0 / m; /* over the top: the rotation's modulus */
+    if (m > 1.0 - 1e-12) return 1e6;
+    gsl_sf_result K, E;
+    const double k = sqrt(m);
+    if (gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &K) != GSL_SUCCESS ||
+        gsl_sf_ellint_Ecomp_e(k, GSL_PREC_DOUBLE, &E) != GSL_SUCCESS || !(K.val > 0.0))
+        return 1.0;
+    /* m dK/dm / K, dK/dm = (E - (1 - m) K) / (2 m (1 - m)) */
+    const double S = (E.val - (1.0 - m) * K.val) / (2.0 * (1.0 - m) * K.val);
+    const double gain = 1.0 + 40.0 * pow(fmax(S, 0.0), 0.8);
+    return isfinite(gain) ? fmin(gain, 1e6) : 1e6;
+}
 
 enum mech_status mech_ham_pilot_run(void *ctx, const char *method,
                                     const struct mech_ode_options *opt, double fraction,

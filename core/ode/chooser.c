@@ -90,6 +90,12 @@ static double model_error_no_floor(const struct chooser_row *r, double x, double
     return r->A * pow(x, r->a) * (span >= s0 ? pow(span, r->b) : pow(s0, r->b) * (span / s0));
 }
 
+/* The scene's error gain over its class's calibration (>= 1). */
+static double gain_of(const struct mech_scene_profile *s)
+{
+    return s->error_gain >= 1.0 && isfinite(s->error_gain) ? s->error_gain : 1.0;
+}
+
 static double model_error(const struct chooser_row *r, double x, double span)
 {
     span = fmax(span, 1e-3);
@@ -104,7 +110,7 @@ double mech_chooser_predict_error(const struct mech_scene_profile *s, const char
 {
     if (!s || !method || !(x > 0.0)) return -1.0;
     const struct chooser_row *r = row_of(s->cls, method);
-    return r ? model_error(r, x, s->span) : -1.0;
+    return r ? gain_of(s) * model_error(r, x, s->span) : -1.0;
 }
 
 int mech_chooser_row_info(const struct mech_scene_profile *s, const char *method,
@@ -209,7 +215,8 @@ static void predict(const struct mech_scene_profile *s, const struct method_spec
     double x = x_max_of(s, ms);
     if (r->a > 0.05) {
         /* invert model_error's power law in x */
-        double want = target / margin_of(s->cls) / (model_error_no_floor(r, 1.0, s->span));
+        double want =
+            target / margin_of(s->cls) / (gain_of(s) * model_error_no_floor(r, 1.0, s->span));
         x = pow(want, 1.0 / r->a);
     }
     else if (ms->adaptive)
@@ -218,7 +225,8 @@ static void predict(const struct mech_scene_profile *s, const struct method_spec
     if (!(x <= x_max_of(s, ms))) x = x_max_of(s, ms); /* also NaN */
     /* near the round-off floor the model's scatter is larger than the
      * margin: take the method's most accurate setting */
-    if (x < ms->x_min || floor_of(r, s->span) > target / margin_of(s->cls)) x = ms->x_min;
+    if (x < ms->x_min || gain_of(s) * floor_of(r, s->span) > target / margin_of(s->cls))
+        x = ms->x_min;
     c->adaptive = ms->adaptive;
     c->has_settings = 1;
     if (ms->adaptive) {
@@ -227,7 +235,7 @@ static void predict(const struct mech_scene_profile *s, const struct method_spec
     } else {
         c->opt.dt = x * s->T;
     }
-    c->predicted_error = model_error(r, x, s->span);
+    c->predicted_error = gain_of(s) * model_error(r, x, s->span);
     /* the cost law counts the run in calibration-orbit units where the
      * scene has a bound orbit (mech_chooser_profile_orbit): an adaptive
      * method's evaluations per orbit grow as (r_apo / r_peri)^(1/3), not
@@ -305,7 +313,7 @@ enum mech_status mech_choose(const struct mech_scene_profile *s, double target,
             continue;
         }
         predict(s, &specs[k], r, target, c);
-        floor_min = fmin(floor_min, floor_of(r, s->span));
+        floor_min = fmin(floor_min, gain_of(s) * floor_of(r, s->span));
         /* meeting the target means within the safety margin of it */
         c->verdict = c->predicted_error <= target / margin_of(s->cls) * 1.0001
                          ? MECH_VERDICT_COSTLIER

@@ -30,6 +30,7 @@ enum mech_status mech_free_symmetric_top(double i_perp, double i3, const double 
     out->space_cone = fabs(out->theta - out->alpha);
     out->precession_space = out->angular_momentum / i_perp;
     out->precession_body = (i_perp - i3) * w3 / i_perp;
+    out->ellipticity = (i3 - i_perp) / i_perp;
     out->prolate = i3 < i_perp;
     if (!isfinite(out->angular_momentum) || !isfinite(out->precession_space))
         return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite result (extreme inputs)");

@@ -193,6 +193,13 @@ enum mech_status mech_top_turning_points(const struct mech_top_problem *p,
     if (out->theta_min == out->theta_max) out->steady = 1;
     out->u_min = cos(out->theta_max);
     out->u_max = cos(out->theta_min);
+    out->sigma = sigma;
+    out->x_lo = out->steady ? x0 : lo;
+    out->x_hi = out->steady ? x0 : hi;
+    for (int i = 0; i < 4; i++) out->cubic[i] = c[i];
+    out->phi_d = D; /* b - sigma a */
+    out->phi_c = C; /* sigma a: b - a u = D + C x */
+    mech_top_nutation(out);
     return MECH_OK;
 }
 

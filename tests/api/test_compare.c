@@ -154,7 +154,7 @@ static void test_exact_scene(void)
     for (int partial = 1; partial >= 0; partial--) {
         struct api_request req = {"GET", "/v1/compare", NULL, NULL, 0, partial ? 3010 : 10000000,
                                   mech_clock_seconds() + 120, NULL};
-        struct api_request_ext ext = {q, NULL, 0, NULL, 0};
+        struct api_request_ext ext = {.query_request = q};
         struct api_response resp;
         api_handle_ext(&req, &ext, &resp);
         CHECK_EQ_INT(resp.status, 200);

@@ -47,6 +47,10 @@ static const struct {
     {API_PROBLEM_REQUEST_MISSING, 15, 400, "/problems/request-missing"},
     {API_PROBLEM_ANSWER_TOO_LARGE, 16, 422, "/problems/answer-too-large"},
     {API_PROBLEM_BAD_FRAMING, 17, 400, "/problems/bad-framing"},
+    {API_PROBLEM_ANSWER_MEMORY, 18, 503, "/problems/answer-memory-full"},
+    {API_PROBLEM_BAD_REQUEST, 19, 400, "/problems/bad-request"},
+    {API_PROBLEM_URI_TOO_LONG, 20, 414, "/problems/uri-too-long"},
+    {API_PROBLEM_HEADERS_TOO_LARGE, 21, 431, "/problems/headers-too-large"},
 };
 
 int main(void)

@@ -72,6 +72,9 @@ struct mech_scene_profile {
     double perturbation;    /* the other forces' acceleration relative to the central
                                one, both at distance a (Wisdom-Holman's eps); < 0:
                                unknown (no splitting is offered) */
+    double error_gain;      /* >= 1: how many times more this scene amplifies an error
+                               than its class's calibration scenes (light passing close to
+                               the photon sphere: mech_geodesic_error_gain); 0: 1 */
 };
 
 enum mech_verdict {

@@ -62,6 +62,22 @@ void mech_geodesic_answer_free(struct mech_geodesic_answer *a);
  * Statuses as mech_geodesic_integrate; MECH_EDOMAIN when the pilot is
  * captured or escapes (its rate is then no guide). */
 #define MECH_GEODESIC_PILOT_STRONG_R 100.0
+
+/* The chooser's profile of light that scatters (mech/chooser.h): its error
+ * gain over the first-order calibration and its run in the cost law's
+ * units. Light that passes close to the photon sphere winds around it and
+ * every error grows about e-fold per radian of the winding: measured with
+ * rk8pd at rtol 1e-6 .. 1e-12 against the exact deflection, the relative
+ * error of the deflection is 0.1 .. 5x the first-order law at b = 5.3 .. 100
+ * (deflection 3.6 .. 0.04 rad), 8 .. 16x at b = 5.22 (5.0 rad), 34 .. 69x
+ * at b = 5.2 (6.8 rad): gain = 2 max(1, e^(delta - 3.3)), delta the exact
+ * deflection (mech_geodesic_deflection_quadrature). The evaluations of a
+ * scattering ray from r0 = 100 b (at least 1000) hardly depend on b (rk8pd at
+ * 1e-8: 940 .. 1160 for b = 5.2 .. 100), 7 .. 9x the first-order law at
+ * the ray's span: cost_span = 8 span. b in GM/c^2; for light that does
+ * not scatter (captured, b <= 3 sqrt 3) gain 1 and cost_span = span. */
+double mech_geodesic_error_gain(double b);
+#define MECH_GEODESIC_SCATTER_COST_FACTOR 8.0
 int mech_geodesic_pilot_applies(const struct mech_geodesic_setup *s);
 enum mech_status mech_geodesic_pilot_run(void *ctx, const char *method,
                                          const struct mech_ode_options *opt, double fraction,

@@ -233,4 +233,18 @@ enum mech_status mech_ham_pilot_run(void *ctx, const char *method,
                                     struct mech_ode_stats *stats, double *y_end, size_t *dim,
                                     struct mech_error *err);
 
+/* The chooser's error gain of a flow (mech_scene_profile.error_gain, >= 1):
+ * how much more the flow from y0 (q, p; SI) amplifies an error than the
+ * first-order calibration systems. A one-degree-of-freedom oscillation whose
+ * frequency depends on its energy turns an energy error into a phase error
+ * that grows with time; for the plane pendulum the twist
+ * S = |d ln(omega) / d ln(E)| (E above the bottom; K(m), E(m) complete
+ * elliptic integrals, m = E / 2 m g l, 1/m over the top) sets it: measured
+ * with rk8pd at the presets over 100 s (l = 1 m, g = 9.80665) against the
+ * Jacobi-elliptic solution, the error was 3.5x the first-order law at
+ * theta0 = 1 rad (S = 0.072), 80x at 2.5 rad (S = 1.64), 400x at 3.0 rad
+ * (S = 24): gain = 1 + 40 S^0.8 (capped at 1e6, the separatrix). 1 for
+ * the other systems (their laws are the calibration's). */
+double mech_ham_error_gain(const struct mech_ham_system *s, const double *y0);
+
 #endif

@@ -33,6 +33,7 @@ struct mech_first_order_system {
                                        per sample) and CPU s of one (0: the default) */
     double closed_form_cpu_per_eval;
     const struct mech_pilot_system *pilot; /* NULL: never piloted */
+    double error_gain;      /* mech_scene_profile.error_gain (0: 1) */
     int defaulted;          /* 1: the request had no integrator block (the reason says
                                that "balanced" was the default) */
 };

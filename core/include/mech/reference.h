@@ -14,6 +14,7 @@
 #ifndef MECH_REFERENCE_H
 #define MECH_REFERENCE_H
 
+#include "mech/charged_motion.h"
 #include "mech/kepler.h"
 #include "mech/status.h"
 #include "mech/trajectory_problem.h"
@@ -87,6 +88,14 @@ struct mech_trajectory_reference {
     struct mech_vec3 center, g, w;
     int centrifugal;
     struct mech_vec3 r0, v0;
+    struct mech_charged_motion charged; /* "relativistic_uniform_fields" */
+    /* exact references seen from a frame turning at the constant rate
+     * `spin` (rad/s, frame axes; 0: none): the inertial solution through the
+     * inertial initial state (r0, v0 + spin x r0), turned back by spin t.
+     * No closed form answers such a scene (mech_trajectory_has_closed_form
+     * is 0): it is a reference for the error evidence only. */
+    struct mech_vec3 spin;
+    int rotated;
 };
 
 /* Which reference, if any, the scene p has (fills ref; ref->kind NONE if
@@ -98,8 +107,19 @@ struct mech_trajectory_reference {
  *   exact "uniform_gravity" / "uniform_gravity_linear_drag": inertial (or a
  *     frame whose fictitious terms are all absent or zero), only uniform
  *     gravity and linear drag (no forces at all is the free particle);
+ *   the same three exact ones seen from a rotating frame (type rotating,
+ *     constant omega, Coriolis and centrifugal both modelled, no Euler or
+ *     translational term acting): when every force is the same in the
+ *     inertial frame — central_gravity's centre and a spring's anchor on the
+ *     rotation axis, uniform gravity along it, no drag — the inertial motion
+ *     turned back by omega t (ref->rotated = 1; names "kepler_rotating",
+ *     "harmonic_oscillator_rotating", "uniform_gravity_rotating");
  *   first-order "coriolis_first_order": rotating or earth frame with
  *     Coriolis modelled, only uniform gravity (centrifugal modelled or not).
+ * With a relativistic term modelled (p->relativity) none of these: only
+ *   exact "relativistic_uniform_fields": special relativity in an inertial
+ *   frame, only Lorentz forces and uniform gravity (a constant force m g),
+ *   not null fields (mech/charged_motion.h).
  * A modelled translational term -A joins g (a uniform field). A rotation
  * that changes with time (omega_dot != 0 with a rotation term modelled), a
  * lorentz force on a charge or a third-body tide: no reference.

@@ -50,6 +50,9 @@ struct mech_free_symmetric_top {
     double space_cone;        /* angle between omega and L (space cone half-angle), rad */
     double precession_space;  /* phi_dot = |L| / I_perp, rad/s */
     double precession_body;   /* psi_dot = (I_perp - I3) w3 / I_perp, rad/s */
+    double ellipticity;       /* dynamical ellipticity (C - A)/A = (I3 - I_perp)/I_perp:
+                                 > 0 oblate, < 0 prolate (the difference exact when
+                                 I3 >= I_perp/2, Sterbenz) */
     double omega_magnitude;   /* |omega| */
     int prolate;              /* 1 if I3 < I_perp, 0 if oblate or spherical */
 };

@@ -65,6 +65,21 @@ struct mech_top_turning {
     double theta_min, theta_max; /* acos(u_max), acos(u_min) */
     double roots[3];        /* real roots of f found (polished), ascending */
     int n_roots;
+    /* The motion in x = 1 - sigma u (sigma = sign of cos theta0; x is the
+     * distance of u from the nearer pole, 1 - u^2 = x (2 - x)):
+     * x'^2 = cubic[3] x^3 + cubic[2] x^2 + cubic[1] x + cubic[0] (1/s^2), x in
+     * [x_lo, x_hi], and phi' = (phi_d + phi_c x) / (x (2 - x)) (rad/s). */
+    double sigma, x_lo, x_hi, cubic[4], phi_d, phi_c;
+    /* One full nutation, x_lo -> x_hi -> x_lo (s): 4 K(k) / sqrt(|c3| d) with d the
+     * distance of the cubic's third root from the far end of [x_lo, x_hi] and
+     * k^2 = (x_hi - x_lo)/d; 2 pi / sqrt(-c2) without a gravity torque (the free
+     * symmetric top). For a steady precession (x_lo = x_hi) the limit: the
+     * period of a small nutation about it. NaN on a degenerate cubic. */
+    double nutation_period;
+    /* phi' averaged over one nutation, (phi advance per nutation) / period
+     * (rad/s): complete elliptic integrals of the third kind (GSL's Carlson
+     * forms); for a steady precession the steady rate. NaN as the period. */
+    double precession_mean;
 };
 
 struct mech_top_result {
@@ -101,6 +116,15 @@ struct mech_top_result {
  * Statuses: MECH_OK; MECH_EINVAL / MECH_EDOMAIN as mech_top_integrate. */
 enum mech_status mech_top_turning_points(const struct mech_top_problem *p,
                                          struct mech_top_turning *out, struct mech_error *err);
+
+/* The nutation period and the precession averaged over a nutation of a
+ * turning-point record already filled by mech_top_turning_points (which calls
+ * this): sets t->nutation_period and t->precession_mean from x_lo, x_hi,
+ * cubic, phi_d, phi_c (see struct mech_top_turning). The cubic's third root
+ * comes from Vieta's product (no cancellation) when x_lo x_hi phi_d != 0,
+ * else from the sum. Pure, cannot fail: NaN where the integrals are not
+ * defined. */
+void mech_top_nutation(struct mech_top_turning *t);
 
 /* The closed forms of the initial state, no run: fills res->sleep_lhs
  * (I3^2 w3^2, kg^2 m^4 / s^2), sleep_rhs (4 I1 M g h, same unit),

@@ -69,8 +69,11 @@ struct mech_trajectory_reference_report {
     double max_position_error;    /* m: max |r - r_ref| */
     double final_position_error;  /* m: at the last sample (or the stop point) */
     double max_velocity_error;    /* m/s: max |v - v_ref| */
-    double max_relative_position_error; /* max |r - r_ref| / max |r_ref| (over the samples) */
-    double max_relative_velocity_error; /* max |v - v_ref| / max |v_ref| */
+    double max_relative_position_error; /* max |r - r_ref| / max |r_ref - c| over the samples
+                                           (c: the Kepler centre or the spring's anchor, else
+                                           the origin): the orbit's or amplitude's size */
+    double max_relative_velocity_error; /* max |v - v_ref| / the largest speed over the
+                                           samples and every step of the run */
     double truncation_estimate;   /* m: first order only, max size of the neglected
                                      second-order terms (0 for exact references) */
 };
@@ -96,11 +99,21 @@ struct mech_trajectory_result {
     double *t;
     struct mech_vec3 *position;
     struct mech_vec3 *velocity;
+    struct mech_vec3 *proper_velocity; /* u = gamma v, written by special-relativistic runs
+                                          (result.relativistic) only */
     /* Filled by the call. */
     size_t n_samples;         /* samples written (those at t <= t_stop when stopped) */
     int stopped;
     double t_stop;            /* NaN if not stopped */
     struct mech_vec3 stop_position, stop_velocity;
+    struct mech_vec3 stop_proper_velocity; /* special-relativistic runs, else 0 */
+    int relativistic;         /* 1: integrated with special-relativistic dynamics */
+    /* "relativistic" and "schwarzschild_1pn" (mech/trajectory_problem.h): included, and
+     * their largest |a| along the run, measured whether modelled or not (the correction
+     * to the forces' F/m at the speed reached, all of |F/m| when a Newtonian run goes at
+     * or beyond c; the 1PN term about the one central mass of an inertial scene, 0 when
+     * it has none); both 0 in a non-inertial frame */
+    struct mech_trajectory_term relativity_terms[MECH_TRAJECTORY_N_RELATIVITY];
     struct mech_trajectory_term terms[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
     size_t n_terms;           /* n_forces + 4 (coriolis, centrifugal, euler, translational
                                  always listed) */
@@ -217,7 +230,7 @@ struct mech_term_estimate {
     double position_effect;  /* m: accel_bound T^2 / 2 */
     double velocity_effect;  /* m/s: accel_bound T */
     double relative_effect;  /* max(position_effect / L, velocity_effect / V) */
-    char reason[224];        /* why included or left out (with the numbers) */
+    char reason[320];        /* why included or left out (with the numbers) */
 };
 
 /* The rule behind "fictitious": "auto", reusable by any scene that knows a
@@ -282,5 +295,53 @@ enum mech_status mech_trajectory_model_select(const struct mech_trajectory_probl
                                               double target, const struct mech_budget *budget,
                                               struct mech_trajectory_model *m,
                                               struct mech_error *err);
+
+/* ---- the relativistic corrections a scene needs -------------------------------- */
+
+/* The relativistic corrections chosen for a scene, with the evidence. */
+struct mech_relativity_model {
+    int judged;                /* 1: estimated from a run (0: a dry run, nothing known) */
+    double target;             /* relative accuracy asked for */
+    double safety;             /* MECH_TRAJECTORY_AUTO_SAFETY */
+    double time_scale;         /* T (s): t_end, or the stop time of the run judged */
+    double position_scale;     /* L (m): max |r| of that run */
+    double velocity_scale;     /* V (m/s): max |v| of that run */
+    unsigned forced_on, forced_off; /* MECH_RELATIVITY_* as requested (auto: 0, 0) */
+    unsigned relativity;       /* the MECH_RELATIVITY_* mask chosen */
+    /* "relativistic", "schwarzschild_1pn"; applicable = could be modelled here */
+    struct mech_term_estimate terms[MECH_TRAJECTORY_N_RELATIVITY];
+};
+
+/* Decide the relativistic corrections of p at relative accuracy `target`
+ * ([1e-15, 0.1]) from `run`, a finished answer of p (integrated or closed
+ * form, with p->relativity as it was run: its relativity_terms hold each
+ * correction's largest |a| along the run, measured whether modelled or not).
+ * The rule is "fictitious": "auto"'s (mech_term_effect_estimate, same safety
+ * MECH_TRAJECTORY_AUTO_SAFETY, T the run's duration, L and V its largest |r|
+ * and |v|), with these accelerations:
+ *   relativistic: the correction dv/dt - F/m of special relativity at the
+ *     speed reached, (F/m)((gamma - 1) + ...)/gamma ~ 1.5 beta^2 |F/m| for
+ *     slow particles, all of |F/m| when the Newtonian run reached c. Not
+ *     applicable when every force is central gravity (motion about masses is
+ *     the 1PN term's) and not modellable outside an inertial frame;
+ *   schwarzschild_1pn: |a_1PN| measured along the run about the one central
+ *     mass of an inertial scene (for a Kepler closed form at least its value
+ *     at the pericentre of the osculating orbit, which the samples may miss);
+ *     with several central masses or a rotating frame, the bound
+ *     sum_i |a_i| (4 gm_i / (c^2 d_i) + 5 beta^2), d_i = sqrt(gm_i / |a_i|),
+ *     and not modellable.
+ * A term in forced_on is included, in forced_off left out (each with its
+ * estimate); otherwise included iff its estimate exceeds target / safety.
+ * m->relativity is the mask to run with (== p->relativity: nothing to redo).
+ * Statuses: MECH_OK; MECH_EINVAL (NULL, target out of range); MECH_EDOMAIN
+ * (param "relativity": a correction the accuracy needs and mechd cannot
+ * model here — a rotating frame, several central masses, or both
+ * corrections at once — named with its estimate; m is filled). */
+enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_problem *p,
+                                                   const struct mech_trajectory_result *run,
+                                                   double target, unsigned forced_on,
+                                                   unsigned forced_off,
+                                                   struct mech_relativity_model *m,
+                                                   struct mech_error *err);
 
 #endif

@@ -57,6 +57,23 @@ struct mech_force {
 /* The four fictitious terms, in the order model.terms lists them. */
 #define MECH_TRAJECTORY_N_FICTITIOUS 4
 
+/* Relativistic corrections (inertial frames only):
+ * SPECIAL: special-relativistic dynamics dp/dt = F with p = gamma m v for
+ *   every force (F as the force types above define it, m the rest mass; the
+ *   state is integrated as (r, u = gamma v) with gamma = sqrt(1 + u^2/c^2),
+ *   so its digits hold from beta = 1e-9 to gamma = 1e6 and beyond);
+ * SCHWARZSCHILD_1PN: the first post-Newtonian correction of a test particle's
+ *   acceleration about the one central mass (Schwarzschild field in harmonic
+ *   coordinates; Soffel, Relativity in Astrometry, Celestial Mechanics and
+ *   Geodesy, eq. 3.2.43 with the mass of the particle -> 0):
+ *     a_1PN = (gm / (c^2 d^2)) [(4 gm/d - v^2) n + 4 (n.v) v],  n = d/|d|,
+ *   whose periapsis advance per orbit is 6 pi gm / (c^2 a (1 - e^2)). It
+ *   already holds the special-relativistic kinematics of the orbit to order
+ *   v^2/c^2, so the two are not combined. */
+#define MECH_RELATIVITY_SPECIAL 0x1u
+#define MECH_RELATIVITY_SCHWARZSCHILD_1PN 0x2u
+#define MECH_TRAJECTORY_N_RELATIVITY 2
+
 enum mech_stop_direction {
     MECH_STOP_EITHER = MECH_ODE_EITHER,
     MECH_STOP_INCREASING = MECH_ODE_INCREASING,
@@ -86,7 +103,21 @@ struct mech_trajectory_problem {
                                      mech_trajectory_plane); 0: always in three */
     int closed_form_off;          /* 1: the chooser must not pick the closed form
                                      (integrator.closed_form false) */
+    unsigned relativity;          /* MECH_RELATIVITY_* modelled (0: Newtonian) */
+    int has_proper_velocity;      /* 1: proper_velocity is the initial state (SPECIAL) and
+                                     velocity is only its u / gamma */
+    struct mech_vec3 proper_velocity; /* u0 = gamma v0, m/s (when has_proper_velocity) */
 };
+
+/* The Schwarzschild 1PN acceleration correction (m/s^2) of a test particle
+ * at displacement d (m, d != 0) from a mass of gm (m^3/s^2) with velocity v
+ * (m/s), harmonic coordinates (MECH_RELATIVITY_SCHWARZSCHILD_1PN):
+ * (gm / (c^2 |d|^2)) [(4 gm/|d| - v^2) n + 4 (n.v) v], n = d/|d|. Cannot fail. */
+struct mech_vec3 mech_schwarzschild_1pn_accel(double gm, struct mech_vec3 d, struct mech_vec3 v);
+
+/* The initial proper velocity u0 = gamma0 v0 of p (m/s): proper_velocity
+ * when given, else v0 / sqrt((1 - beta)(1 + beta)) (|v0| < c; p checked). */
+struct mech_vec3 mech_trajectory_proper_velocity0(const struct mech_trajectory_problem *p);
 
 /* Whether the scene p (with its fictitious mask as given) stays in a plane
  * through the origin: every vector that must lie in the plane (r0, v0, g of

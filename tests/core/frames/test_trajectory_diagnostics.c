@@ -345,7 +345,9 @@ static void test_reference_report(void)
     /* rk4 is exact on a quadratic: round-off only */
     CHECK(r.reference.max_position_error < 1e-8 * 7e6);
 
-    /* rotating frame, central force at the origin: Jacobi integral only */
+    /* rotating frame, central force at the origin (on the axis): the Jacobi
+     * integral, and the inertial Kepler orbit turned back as the exact
+     * reference (rk8pd at 1e-12 over 6000 s keeps it to ~1e-9) */
     p.forces = &f;
     p.frame.type = MECH_FRAME_ROTATING;
     p.frame.omega = mech_vec3_make(0, 0, 1e-4);
@@ -357,8 +359,18 @@ static void test_reference_report(void)
     CHECK_EQ_INT(run(&p, &r, &e), MECH_OK);
     CHECK_EQ_INT(r.n_invariants, 1);
     CHECK(!strcmp(r.invariants[0].name, "jacobi_integral"));
-    CHECK_EQ_INT(r.reference.kind, MECH_REFERENCE_NONE);
+    CHECK_EQ_INT(r.reference.kind, MECH_REFERENCE_EXACT);
+    CHECK(!strcmp(r.reference.name, "kepler_rotating"));
+    CHECK(r.reference.max_relative_position_error < 1e-8);
+    CHECK(r.reference.max_relative_position_error > 1e-16); /* compared, not copied */
     CHECK(r.invariants[0].max_relative_drift < 1e-10);
+    /* the centre off the axis moves in the inertial frame: no reference */
+    struct mech_force off = f;
+    off.u.central_gravity.center = mech_vec3_make(1e3, 0, 0);
+    p.forces = &off;
+    CHECK_EQ_INT(run(&p, &r, &e), MECH_OK);
+    CHECK_EQ_INT(r.reference.kind, MECH_REFERENCE_NONE);
+    p.forces = &f;
 }
 
 static void test_error_estimate(void)

@@ -81,6 +81,20 @@ static void check_free_top(void)
     CHECK(strcmp(e.param, "i3") == 0);
     double z[3] = {0, 0, 0};
     CHECK_EQ_INT(mech_free_symmetric_top(1, 1, z, &t, NULL), MECH_EINVAL);
+    /* the rigid Earth (A = 8.008e37, C = 8.034e37 kg m^2, one turn per sidereal day):
+     * (C - A)/A = 0.026/8.008 and the Euler period A/(C - A) sidereal days, ~308 */
+    double we[3] = {0, 1e-12, MECH_EARTH_OMEGA};
+    CHECK_EQ_INT(mech_free_symmetric_top(8.008e37, 8.034e37, we, &t, NULL), MECH_OK);
+    CHECK_CLOSE(t.ellipticity, 0.026 / 8.008, 1e-13, 0);
+    CHECK_CLOSE(2 * MECH_PI / fabs(t.precession_body),
+                8.008 / 0.026 * 2 * MECH_PI / MECH_EARTH_OMEGA, 1e-13, 0);
+    CHECK(t.precession_body < 0); /* oblate: omega turns against the spin */
+    CHECK_CLOSE(t.precession_space, hypot(8.008e37 * 1e-12, 8.034e37 * MECH_EARTH_OMEGA) / 8.008e37,
+                1e-15, 0);
+    /* a star: 1e60 kg m^2 */
+    CHECK_EQ_INT(mech_free_symmetric_top(1e60, 1.5e60, w, &t, NULL), MECH_OK);
+    CHECK_CLOSE(t.ellipticity, 0.5, 1e-15, 0);
+    CHECK_CLOSE(t.angular_momentum, hypot(1e60, 3e60), 1e-15, 0);
 }
 
 static void check_struck_ball(void)

@@ -120,6 +120,74 @@ static void test_nutation(void)
     CHECK_CLOSE(r.theta_max_measured, r.turning.theta_max, 0, 1e-7);
 }
 
+/* The nutation period and the precession averaged over a nutation (elliptic
+ * integrals) against a tight integration run over exactly one period: theta
+ * comes back to theta0, reaches theta_max at half the period, and phi advances
+ * by precession_mean times the period. */
+static void test_nutation_period(void)
+{
+    const double starts[][4] = {{0.5, 0, 0, 60}, {1.0, 2.0, 3.0, 40}, {2.5, 2.0, 3.0, 40},
+                                {0.8, 0, -4, 25}, {0.3, 0, 0, 8}};
+    for (int i = 0; i < 5; i++) {
+        struct mech_top_problem p = gyro();
+        p.theta = starts[i][0];
+        p.theta_dot = starts[i][1];
+        p.phi_dot = starts[i][2];
+        p.psi_dot = starts[i][3];
+        struct mech_top_turning tp;
+        struct mech_error e;
+        mech_error_clear(&e);
+        CHECK(mech_top_turning_points(&p, &tp, &e) == MECH_OK);
+        CHECK(isfinite(tp.nutation_period) && tp.nutation_period > 0);
+        p.t_end = tp.nutation_period;
+        struct mech_top_result r;
+        run(&p, &r, MECH_OK);
+        CHECK_CLOSE(th[NS - 1], p.theta, 0, 1e-9);
+        CHECK_CLOSE(ph[NS - 1] - ph[0], tp.precession_mean * tp.nutation_period, 1e-9, 1e-12);
+        if (p.theta_dot == 0) /* released at a turning point: half-way is the other one */
+            CHECK_CLOSE(th[(NS - 1) / 2],
+                        fabs(th[0] - tp.theta_min) < 1e-12 ? tp.theta_max : tp.theta_min, 0,
+                        1e-9);
+        printf("nutation period %.15g s, mean precession %.15g rad/s, measured %.15g\n",
+               tp.nutation_period, tp.precession_mean, (ph[NS - 1] - ph[0]) / p.t_end);
+    }
+    /* steady precession: the mean is the steady rate; the period is that of a small
+     * nutation about it, against a slightly disturbed run's theta returning */
+    struct mech_top_problem p = gyro();
+    const double w3 = 100, mgh = 0.980665, th0 = MECH_PI / 3, c = 0.5;
+    const double B = p.I3 * w3, slow = 2 * mgh / (B + sqrt(B * B - 4 * p.I1 * c * mgh));
+    p.theta = th0;
+    p.phi_dot = slow;
+    p.psi_dot = w3 - slow * c;
+    struct mech_top_turning tp, tq;
+    struct mech_error e;
+    CHECK(mech_top_turning_points(&p, &tp, &e) == MECH_OK);
+    CHECK(tp.steady);
+    CHECK_CLOSE(tp.precession_mean, slow, 1e-12, 0);
+    p.phi_dot = slow * (1 + 1e-6);
+    CHECK(mech_top_turning_points(&p, &tq, &e) == MECH_OK);
+    CHECK(!tq.steady);
+    CHECK_CLOSE(tq.nutation_period, tp.nutation_period, 1e-5, 0);
+    /* no gravity torque (g = 0): the free symmetric top's axis circles L at
+     * |L|/I1, so theta's period is 2 pi I1/|L| */
+    p = gyro();
+    p.g = 0;
+    p.theta = 0.7;
+    p.theta_dot = 1.5;
+    p.phi_dot = 2;
+    p.psi_dot = 9;
+    CHECK(mech_top_turning_points(&p, &tp, &e) == MECH_OK);
+    double s0 = sin(p.theta), w3f = p.phi_dot * cos(p.theta) + p.psi_dot;
+    double wp2 = p.theta_dot * p.theta_dot + p.phi_dot * p.phi_dot * s0 * s0;
+    double L = sqrt(p.I1 * p.I1 * wp2 + p.I3 * p.I3 * w3f * w3f);
+    CHECK_CLOSE(tp.nutation_period, 2 * MECH_PI * p.I1 / L, 1e-14, 0);
+    p.t_end = tp.nutation_period;
+    struct mech_top_result r;
+    run(&p, &r, MECH_OK);
+    CHECK_CLOSE(th[NS - 1], p.theta, 0, 1e-9);
+    CHECK_CLOSE(ph[NS - 1] - ph[0], tp.precession_mean * tp.nutation_period, 1e-9, 1e-12);
+}
+
 static void test_sleeping(void)
 {
     struct mech_top_problem p = gyro();
@@ -220,6 +288,7 @@ int main(void)
     gsl_set_error_handler_off();
     test_steady_precession();
     test_nutation();
+    test_nutation_period();
     test_sleeping();
     test_errors();
     TEST_MAIN_END();

@@ -1,0 +1,144 @@
+/* relativity_model.c — which relativistic corrections a trajectory needs at
+ * the accuracy asked for ("relativity": "auto", mech/trajectory.h,
+ * mech_trajectory_relativity_select): each correction's acceleration,
+ * measured along a run of the scene, goes through the auto-model's rule
+ * (term_estimate.c); a correction that is needed and cannot be modelled is
+ * an error naming it, never a silently Newtonian answer. */
+#include "mech/trajectory.h"
+
+#include <math.h>
+#include <stdio.h> /* snprintf only, for the reason text */
+#include <string.h>
+
+/* The 1PN term's size at the pericentre of the two-body orbit through p's
+ * initial state about force f (n.v = 0 there):
+ * (gm / (c^2 q^2)) |4 gm / q - v_q^2|, q = h^2 / (gm (1 + e)), v_q = h / q;
+ * 0 for a radial start (h = 0: that orbit meets the centre, refused there). */
+static double pericentre_1pn(const struct mech_trajectory_problem *p, const struct mech_force *f)
+{
+    const double gm = f->u.central_gravity.gm;
+    const struct mech_vec3 r = mech_vec3_sub(p->position, f->u.central_gravity.center);
+    const double rn = mech_vec3_norm(r);
+    const double h = mech_vec3_norm(mech_vec3_cross(r, p->velocity));
+    if (!(h > 0.0) || !(rn > 0.0)) return 0.0;
+    const double energy = 0.5 * mech_vec3_dot(p->velocity, p->velocity) - gm / rn;
+    const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
+    const double e = e2 > 0.0 ? sqrt(e2) : 0.0;
+    const double q = h * h / (gm * (1.0 + e)), vq = h / q;
+    const double k = (gm / (MECH_C * q)) / (MECH_C * q);
+    return k * fabs(4.0 * gm / q - vq * vq);
+}
+
+/* Prefix the estimate's reason with `lead` (the estimate's numbers kept). */
+static void reason_lead(struct mech_term_estimate *te, const char *lead)
+{
+    char tmp[sizeof te->reason];
+    memcpy(tmp, te->reason, sizeof tmp);
+    const size_t n = strlen(lead) < sizeof tmp - 1 ? strlen(lead) : sizeof tmp - 1;
+    memcpy(te->reason, lead, n);
+    const size_t rest = sizeof tmp - 1 - n, tl = strnlen(tmp, sizeof tmp - 1);
+    memcpy(te->reason + n, tmp, tl < rest ? tl : rest);
+    te->reason[n + (tl < rest ? tl : rest)] = '\0';
+}
+
+enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_problem *p,
+                                                   const struct mech_trajectory_result *run,
+                                                   double target, unsigned forced_on,
+                                                   unsigned forced_off,
+                                                   struct mech_relativity_model *m,
+                                                   struct mech_error *err)
+{
+    if (!p || !run || !m) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
+    memset(m, 0, sizeof *m);
+    if (!(target >= 1e-15 && target <= 0.1))
+        return mech_error_set(err, MECH_EINVAL, "integrator/target_error",
+                              "target_error must be in [1e-15, 0.1], got %.17g", target);
+    m->judged = 1;
+    m->target = target;
+    m->safety = MECH_TRAJECTORY_AUTO_SAFETY;
+    m->forced_on = forced_on;
+    m->forced_off = forced_off;
+    m->time_scale = run->stopped ? run->t_stop : p->t_end;
+    if (!(m->time_scale > 0.0)) m->time_scale = p->t_end;
+    m->position_scale = run->max_radius;
+    m->velocity_scale = run->max_speed;
+    const int inertial = p->frame.type == MECH_FRAME_INERTIAL;
+    size_t n_central = 0, n_other = 0;
+    const struct mech_force *central = NULL;
+    for (size_t i = 0; i < p->n_forces; i++) {
+        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) {
+            n_central++;
+            central = &p->forces[i];
+        } else {
+            n_other++;
+        }
+    }
+
+    /* the two accelerations */
+    double a[MECH_TRAJECTORY_N_RELATIVITY];
+    a[0] = run->relativity_terms[0].max_acceleration;
+    if (inertial && n_central == 1) {
+        a[1] = run->relativity_terms[1].max_acceleration;
+        if (run->method && !strcmp(run->method, "closed_form"))
+            a[1] = fmax(a[1], pericentre_1pn(p, central));
+    } else {
+        const double beta = fmin(1.0, m->velocity_scale / MECH_C);
+        a[1] = 0.0;
+        for (size_t i = 0; i < p->n_forces && i < run->n_terms; i++) {
+            if (p->forces[i].type != MECH_FORCE_CENTRAL_GRAVITY) continue;
+            const double ai = run->terms[i].max_acceleration, gm = p->forces[i].u.central_gravity.gm;
+            if (!(ai > 0.0)) continue;
+            const double d = sqrt(gm / ai);
+            a[1] += ai * (4.0 * gm / (MECH_C * MECH_C * d) + 5.0 * beta * beta);
+        }
+    }
+    static const char *const names[MECH_TRAJECTORY_N_RELATIVITY] = {"relativistic",
+                                                                    "schwarzschild_1pn"};
+    static const unsigned bits[MECH_TRAJECTORY_N_RELATIVITY] = {
+        MECH_RELATIVITY_SPECIAL, MECH_RELATIVITY_SCHWARZSCHILD_1PN};
+    const int applicable[MECH_TRAJECTORY_N_RELATIVITY] = {!(n_central > 0 && n_other == 0),
+                                                          n_central > 0};
+    const char *const not_applicable[MECH_TRAJECTORY_N_RELATIVITY] = {
+        "not applicable: every force is gravity about a mass, whose relativistic correction is "
+        "schwarzschild_1pn (it holds the special-relativistic kinematics to order v^2/c^2); ",
+        "not applicable: no central mass; "};
+    const char *const why_not_modellable[MECH_TRAJECTORY_N_RELATIVITY] = {
+        !inertial ? "special-relativistic dynamics are modelled in an inertial frame only" : NULL,
+        !inertial       ? "the 1PN term is modelled in an inertial frame only"
+        : n_central > 1 ? "the 1PN term is modelled about one central mass; this scene has "
+                          "several (their 1PN field is not a sum)"
+                        : NULL};
+    for (int k = 0; k < MECH_TRAJECTORY_N_RELATIVITY; k++) {
+        struct mech_term_estimate *te = &m->terms[k];
+        mech_term_effect_estimate(names[k], a[k], m->time_scale, m->position_scale,
+                                  m->velocity_scale, target, m->safety, te);
+        te->applicable = applicable[k];
+        if (forced_on & bits[k]) {
+            te->included = 1;
+            reason_lead(te, "included as requested; ");
+        } else if (forced_off & bits[k]) {
+            te->included = 0;
+            reason_lead(te, "left out as requested; ");
+        } else if (!applicable[k]) {
+            te->included = 0;
+            reason_lead(te, not_applicable[k]);
+        }
+        if (te->included) {
+            if (why_not_modellable[k])
+                return mech_error_set(
+                    err, MECH_EDOMAIN, "relativity",
+                    "the %s term is needed (estimated effect %.3g relative > %.3g / %g) but "
+                    "cannot be modelled: %s",
+                    names[k], te->relative_effect, target, m->safety, why_not_modellable[k]);
+            m->relativity |= bits[k];
+        }
+    }
+    if ((m->relativity & MECH_RELATIVITY_SPECIAL) &&
+        (m->relativity & MECH_RELATIVITY_SCHWARZSCHILD_1PN))
+        return mech_error_set(err, MECH_EDOMAIN, "relativity",
+                              "both relativistic (%.3g) and schwarzschild_1pn (%.3g) are needed "
+                              "and cannot be modelled together (a charge or force near a mass "
+                              "at relativistic speed)",
+                              m->terms[0].relative_effect, m->terms[1].relative_effect);
+    return MECH_OK;
+}
