@@ -22,7 +22,7 @@
 #include "mech/vec.h"
 
 /* The envelope: request keys every operation takes, whatever its own schema
- * (DESIGN.md). The route table adds them to the root of every POST route's
+ * (docs/design.md, "Envelope"). The route table adds them to the root of every POST route's
  * schema (api_route_schema_add_envelope, routes.c), so a route's own schema
  * must not declare them at its root; a schema that embeds another
  * operation's request (/v1/compare's "request") uses these texts. */

@@ -7,7 +7,7 @@
  * inertia (10 parts) and a short trajectory, with ratios against the floor,
  * in BENCH_ROUNDS interleaved rounds (floor, boost, inertia, trajectory,
  * floor, ...; default 5) whose medians and spreads (lowest-highest round) are
- * printed, then the issue's targets as MET / NOT MET. Finally the
+ * printed, then its targets as MET / NOT MET. Finally the
  * 100,000-vector boost: vectors per second end to end as the client sees it
  * (wall time of each request: send, parse, boost, encode, receive; range and
  * median of 5), of mechd CPU time per request, of the core batch alone

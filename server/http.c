@@ -13,7 +13,7 @@
  * else reserves a queue slot, suspends the connection and is submitted to the
  * pool; the worker runs api_handle() (which cannot fail) and resumes the
  * connection, and the next access callback sends the stored response. A full
- * queue answers 503 + Retry-After at once. (STYLE.md §9; libmicrohttpd's
+ * queue answers 503 + Retry-After at once. (The worker's step cannot fail; libmicrohttpd's
  * src/examples/suspend_resume_epoll.c.)
  */
 #ifdef __linux__
@@ -521,7 +521,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
          * long as it is predicted to cost at most SRV_QUICK_FULL_FACTOR
          * times --inline-max-us: a few sampled outliers can lift a boost's
          * estimate over the limit, and a microsecond request must not get a
-         * 503 for it (issue 15; a CI run saw 65 of 340,000). Measured, so
+         * 503 for it (a CI run saw 65 of 340,000). Measured, so
          * the estimate learns from it. */
         if (r->quick_route && quick_fits_when_full(h, r)) {
             r->quick_probe = 1;

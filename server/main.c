@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     }
     srv_log_set_json(cfg.log_json); /* before any thread logs */
 
-    gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
+    gsl_set_error_handler_off(); /* process-wide, once: GSL's default handler aborts */
     api_install_json_allocator(); /* jansson's allocator: process-wide, once */
     srv_mhd_panic_install();      /* libmicrohttpd's panics: survive its quiesce race */
     /* Return memory after large answers. glibc's default thresholds are
@@ -79,6 +79,10 @@ int main(int argc, char **argv)
     int n_static = srv_static_init(cfg.static_dir);
     if (n_static < 0)
         srv_log_note("no static files at %s: serving the built-in start page", cfg.static_dir);
+    if (srv_static_set_frame_ancestors(cfg.frame_ancestors) != 0) {
+        srv_log_note("--frame-ancestors: the list is too long");
+        return 1;
+    }
 
     /* Block the stop signals before any thread starts, so all inherit the mask. */
     sigset_t stop;

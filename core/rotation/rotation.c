@@ -147,7 +147,7 @@ enum mech_status mech_rotation_from_quaternion(const double q[4], struct mech_ma
     return MECH_OK;
 }
 
-/* ==== Representations, conversions, composition (issue 4) ====================
+/* ==== Representations, conversions, composition ==============================
  * Conventions: mech/rotation.h. Quaternions are [w, x, y, z], Hamilton product,
  * and describe the ACTIVE turn; passive matrices are the transposes. */
 

@@ -1,5 +1,5 @@
 /* test_alloc_failure.c — allocation-failure sweep of the API entry point
- * (issue 9, "Hostile input and faults").
+ * (hostile input and faults).
  *
  * For each test request (per POST route: its catalog example, the same as
  * GET ?request=, and "{}" (a validation error); plus the catalog, the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_check_kinds.py — /v1/check grades as a physicist would (issue 20):
+"""test_check_kinds.py — /v1/check grades as a physicist would:
 kinds (axis and eigenvectors up to sign, quaternion up to sign, angles modulo
 2 pi and in degrees, axis with angle as a rotation, a degenerate principal
 plane as a subspace), tolerances that make sense at zero (the problem's

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_eval_offline.py — mechd inside a grader (issue 20): mechd-eval without
+"""test_eval_offline.py — mechd inside a grader: mechd-eval without
 libmicrohttpd, the fully static mechd-eval-static, `make install`'s rules, and
 what `mechd eval` answers to input that is not JSON.
 

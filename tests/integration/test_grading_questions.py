@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_grading_questions.py — the ready questions of docs/grading/ (issue 20) run
+"""test_grading_questions.py — the ready questions of docs/grading/ run
 against mechd's offline evaluator, and their answers checked against closed forms
 computed here.
 

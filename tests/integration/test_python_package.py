@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_python_package.py — the Python client as people install and use it (issue 20).
+"""test_python_package.py — the Python client as people install and use it.
 
 Usage: /usr/bin/python3 test_python_package.py PATH/TO/mechd
 

@@ -34,7 +34,7 @@ static inline struct mech_vec3 mech_vec3_cross(struct mech_vec3 a, struct mech_v
  * in the sum, 1 in sqrt: < 2 ulp). Otherwise (tiny or huge vectors, 0,
  * inf, NaN) the scaled hypot(hypot(x, y), z), exact at the extremes. The
  * fast path is ~10x cheaper than two hypot calls: this norm is in the
- * innermost loop of every trajectory (issue 16). */
+ * innermost loop of every trajectory. */
 static inline double mech_vec3_norm(struct mech_vec3 a)
 {
     const double s = a.x * a.x + a.y * a.y + a.z * a.z;

@@ -34,7 +34,7 @@ static int hard_failure(struct mech_gsl_rhs *c, enum mech_status code, const cha
                         const char *text)
 {
     c->status = mech_error_set(c->err, code, param && param[0] ? param : NULL, "%s", text);
-    return GSL_EBADFUNC; /* stops the integration at once (STYLE.md §6) */
+    return GSL_EBADFUNC; /* stops the integration at once, cleanly: never abort */
 }
 
 int mech_gsl_rhs_numeric(struct mech_gsl_rhs *c, double t, const double *y, const char *text)

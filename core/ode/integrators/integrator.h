@@ -1,5 +1,5 @@
 /* integrators/integrator.h — the one stepper interface every ODE method in
- * libmech is written on (STYLE.md §1, after REBOUND's integrator_*.c and GSL's
+ * libmech is written on (one method a file, after REBOUND's integrator_*.c and GSL's
  * ode-initval2/rk4.c).
  *
  * DESIGN

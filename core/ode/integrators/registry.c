@@ -1,5 +1,5 @@
 /* integrators/registry.c — the const table of every ODE method libmech
- * offers, in catalog order (STYLE.md §1: no run-time registration). The API
+ * offers, in catalog order (a const table: no run-time registration). The API
  * catalog and the README's method table come from these descriptors. Add a
  * method by writing its file and one line here. */
 #include <string.h>

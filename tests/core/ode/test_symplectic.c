@@ -1,4 +1,4 @@
-/* test_symplectic.c — every fixed-step method of issue 3 (euler,
+/* test_symplectic.c — every fixed-step method of the registry (euler,
  * symplectic_euler, rk4, verlet, yoshida4, yoshida6, gauss4, gauss6, boris)
  * against closed forms, through the public driver (mech/ode.h):
  *

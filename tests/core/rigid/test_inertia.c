@@ -556,7 +556,7 @@ int main(void)
               MECH_ENUMERIC);
     }
 
-    /* 12. The shapes added for issue 4, alone, body axes = scene axes: closed
+    /* 12. The later shapes, alone, body axes = scene axes: closed
      * forms about the centre of mass and the reference point's offset.
      * cone (apex at position, opens +z): about the apex I_xx = 3M(R^2/4 + h^2)/5,
      *   centre of mass 3h/4 up, so about it 3M(R^2/4 + h^2)/5 - 9Mh^2/16
