@@ -791,7 +791,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('telescope_home_times', telescope_home_times), ('cost', cost)))
 
-    def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, direction: Optional[Dict[str, Any]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with aberration
 
         POST /v1/relativity/doppler. The request is `body` (a dict) and/or the keyword arguments below
@@ -804,11 +804,15 @@ class _Operations:
                     precision you have (near c: rapidity, gamma or one_minus_beta)
             observer_velocity: a velocity as exactly one of four forms; give the one that carries the
                     precision you have (near c: rapidity, gamma or one_minus_beta)
-            emission_direction: the direction the light travels (from the source towards the observer)
-                    in the SOURCE's rest frame; give exactly one of emission_direction and
-                    arrival_direction
-            arrival_direction: the direction the light travels when it reaches the observer, in the
-                    OBSERVER's rest frame (opposite to the line of sight towards the source)
+            emission_direction: deprecated alias of direction {vector, frame: source}: the direction the
+                    light travels (from the source towards the observer) in the SOURCE's rest frame;
+                    give exactly one of direction, emission_direction and arrival_direction
+            arrival_direction: deprecated alias of direction {vector, frame: observer}: the direction
+                    the light travels when it reaches the observer, in the OBSERVER's rest frame
+                    (opposite to the line of sight towards the source)
+            direction: the light's propagation direction and the frame it is seen in, in one field: give
+                    this, or one of the older emission_direction (= frame source) and arrival_direction
+                    (= frame observer), which stay as documented aliases
             frequency: emitted frequency in Hz, in the source's rest frame (optional; at most one of
                     frequency and wavelength)
             wavelength: emitted wavelength in m, in the source's rest frame (optional)
@@ -816,7 +820,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/relativity/doppler', body, (('source_velocity', source_velocity), ('observer_velocity', observer_velocity), ('emission_direction', emission_direction), ('arrival_direction', arrival_direction), ('frequency', frequency), ('wavelength', wavelength), ('cost', cost)))
+        return self._operation('/v1/relativity/doppler', body, (('source_velocity', source_velocity), ('observer_velocity', observer_velocity), ('emission_direction', emission_direction), ('arrival_direction', arrival_direction), ('direction', direction), ('frequency', frequency), ('wavelength', wavelength), ('cost', cost)))
 
     def relativity_fields(self, body: Optional[Dict[str, Any]] = None, *, E: Optional[List[float]] = None, B: Optional[List[float]] = None, velocity: Optional[Dict[str, Any]] = None, units: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """E and B under a boost, Heaviside–Lorentz or SI, with the invariants E² − B² and E·B
@@ -976,17 +980,20 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
-                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
-                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
-                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
+                    {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
+                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
+                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
+                    the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
             r: radius (Schwarzschild r: circumference / 2 pi) for the clocks and the circular orbit; >
                     r_s
             infall_from: radius of rest from which a body falls radially: adds radial_infall, the proper
-                    times to the horizon and to r = 0; > r_s
+                    times to the horizon and to r = 0; >= r_s (r_s itself, within 1e-12, is answered as
+                    the limit from outside)
             reference_r: radius of a static reference clock (e.g. the ground: 6371000 m mean or 6378137
                     m equatorial for the Earth): compares it with a clock on a circular orbit at r
                     (GPS). Needs r.
@@ -1006,10 +1013,12 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
-                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
-                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
-                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
+                    {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
+                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
+                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
+                    the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
