@@ -15,8 +15,11 @@
 
 #include "mech/rotation.h"
 
-/* Below this the tensor's smaller entries would be subnormal: 2^-968 = DBL_MIN * 2^54. */
-#define TINY_TENSOR 0x1p-968
+/* Below this the tensor's largest entry is itself subnormal and loses relative
+ * precision: DBL_MIN. (Smaller entries may be subnormal above it: their
+ * absolute error 2^-1074 is still below round-off of the largest. Point masses
+ * of 1e-300 kg a metre apart, 2e-300 kg m^2, are answered.) */
+#define TINY_TENSOR 0x1p-1022
 
 static int mat3_max_abs(struct mech_mat3 m, double *out)
 {
