@@ -14,8 +14,9 @@ of a longer path or a URL (`/v1/rigid/inertia`, `src/...` of another project are
 not), or a public header named as `mech/<name>.h` (core/include/mech/). Words with
 a placeholder or pattern (`<domain>`, `*`, `{a,b}`, `...`, `…`, `$`, `%`) are
 templates, not paths, and are skipped; so are CTest names, which the comments
-write as `CTest core/...` or `ctest -R ...`. A trailing `:LINE`, `'s`, or
-punctuation is not part of the path.
+write as `CTest core/...` or `ctest -R ...`. A program may be named by its
+source without the extension (`bench/bench_http` for bench/bench_http.c). A
+trailing `:LINE`, `'s`, or punctuation is not part of the path.
 Exit 0 when every named path exists, 1 otherwise.
 """
 import os
@@ -54,6 +55,12 @@ def comments(path, text):
             for m in re.finditer(r'"""(.*?)"""', text, re.S):
                 out.append((text.count("\n", 0, m.start()) + 1, m.group(1)))
     return out
+
+
+def exists(src, word):
+    """A path exists, or names a program by its source (bench/bench_http for
+    bench/bench_http.c, scripts/cases_by_domain for its .py)."""
+    return any(os.path.exists(os.path.join(src, word + ext)) for ext in ("", ".c", ".py", ".sh"))
 
 
 def clean(word):
@@ -101,7 +108,7 @@ def main():
                     if TEMPLATE.search(word) or CTEST_BEFORE.search(cline[:m.start()]):
                         continue
                     checked += 1
-                    if not os.path.exists(os.path.join(src, word.rstrip("/"))):
+                    if not exists(src, word.rstrip("/")):
                         bad.append("%s:%d: %s" % (rel, line0 + k, word))
                 for m in MECH_RE.finditer(cline):
                     checked += 1
