@@ -79,6 +79,10 @@ int main(int argc, char **argv)
     int n_static = srv_static_init(cfg.static_dir);
     if (n_static < 0)
         srv_log_note("no static files at %s: serving the built-in start page", cfg.static_dir);
+    if (srv_static_set_frame_ancestors(cfg.frame_ancestors) != 0) {
+        srv_log_note("--frame-ancestors: the list is too long");
+        return 1;
+    }
 
     /* Block the stop signals before any thread starts, so all inherit the mask. */
     sigset_t stop;
