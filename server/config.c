@@ -61,6 +61,7 @@ enum opt_id {
     OPT_SHUTDOWN_GRACE_MS,
     OPT_HANGUP_GRACE_MS,
     OPT_LOG_FORMAT,
+    OPT_FRAME_ANCESTORS,
     OPT_COUNT
 };
 
@@ -140,6 +141,10 @@ static const struct opt_spec {
     [OPT_LOG_FORMAT] = {"--log-format", "MECHD_LOG_FORMAT", "text", 0, 0,
                         "log lines on stderr: text (\"mechd: TIME req=ID ...\") or json (one "
                         "JSON object per line, for log collectors)"},
+    [OPT_FRAME_ANCESTORS] = {"--frame-ancestors", "MECHD_FRAME_ANCESTORS", "none", 0, 0,
+                             "origins whose pages may embed the front end in an iframe (a course "
+                             "site), e.g. https://course.example.edu; comma-separated; none: no "
+                             "framing (CSP frame-ancestors 'none', X-Frame-Options DENY)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -217,8 +222,8 @@ static int load_token(struct srv_config *cfg, const char *path, const char *sour
 }
 
 /* Append comma-separated origins ("scheme://host[:port]", no path, or "null"
- * is refused) to cfg->cors_origins. */
-static int add_origins(struct srv_config *cfg, const char *value, const char *source, FILE *err)
+ * is refused) to dst (cap bytes: cfg->cors_origins or cfg->frame_ancestors). */
+static int add_origins(char *dst, size_t cap, const char *value, const char *source, FILE *err)
 {
     const char *p = value;
     while (*p) {
@@ -231,17 +236,17 @@ static int add_origins(struct srv_config *cfg, const char *value, const char *so
         size_t start = strncmp(p, "https://", 8) == 0 ? 8 : 7;
         for (size_t i = start; ok && i < n; i++)
             ok = p[i] > 0x20 && p[i] < 0x7f && p[i] != '/' && p[i] != '*';
-        size_t used = strlen(cfg->cors_origins);
-        if (!ok || used + n + 2 > sizeof cfg->cors_origins) {
+        size_t used = strlen(dst);
+        if (!ok || used + n + 2 > cap) {
             fprintf(err,
                     "mechd: invalid %s '%.*s': expected an origin such as "
                     "https://lab.example.org or http://localhost:3000 (no path, no '*')\n",
                     source, (int)n, p);
             return -1;
         }
-        if (used) cfg->cors_origins[used++] = ',';
-        memcpy(cfg->cors_origins + used, p, n);
-        cfg->cors_origins[used + n] = '\0';
+        if (used) dst[used++] = ',';
+        memcpy(dst + used, p, n);
+        dst[used + n] = '\0';
         p += n;
     }
     return 0;
@@ -282,7 +287,13 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         strcpy(cfg->token_file, value);
         return load_token(cfg, value, source, err);
     }
-    if (id == OPT_CORS_ORIGIN) return add_origins(cfg, value, source, err);
+    if (id == OPT_CORS_ORIGIN)
+        return add_origins(cfg->cors_origins, sizeof cfg->cors_origins, value, source, err);
+    if (id == OPT_FRAME_ANCESTORS) {
+        cfg->frame_ancestors[0] = '\0';
+        if (strcmp(value, "none") == 0) return 0;
+        return add_origins(cfg->frame_ancestors, sizeof cfg->frame_ancestors, value, source, err);
+    }
     if (id == OPT_LOG_FORMAT) {
         if (strcmp(value, "text") && strcmp(value, "json")) {
             fprintf(err, "mechd: invalid %s '%.40s': expected text or json\n", source, value);
@@ -398,7 +409,8 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
             snprintf(source, sizeof source, "option %s", opts[found].flag);
             if (!cors_cli) cfg->cors_origins[0] = '\0';
             cors_cli = 1;
-            if (add_origins(cfg, value, source, err) != 0) return SRV_CONFIG_ERROR;
+            if (add_origins(cfg->cors_origins, sizeof cfg->cors_origins, value, source, err) != 0)
+                return SRV_CONFIG_ERROR;
             continue;
         }
         cli[found] = value;

@@ -383,7 +383,7 @@ class _Operations:
         """
         return self._operation('/v1/rotation/euler-rates', body, (('euler_zxz', euler_zxz), ('rates', rates), ('omega_body', omega_body), ('omega_space', omega_space), ('cost', cost)))
 
-    def rigid_inertia(self, body: Optional[Dict[str, Any]] = None, *, bodies: Optional[List[Any]] = None, origin: Optional[Any] = None, omega: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def rigid_inertia(self, body: Optional[Dict[str, Any]] = None, *, bodies: Optional[List[Any]] = None, origin: Optional[Any] = None, omega: Optional[List[float]] = None, incline: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Inertia tensor, principal axes, angular momentum and kinetic energy of a rigid body
 
         POST /v1/rigid/inertia. The request is `body` (a dict) and/or the keyword arguments below
@@ -395,11 +395,15 @@ class _Operations:
             bodies (required): the parts of one rigid body
             origin: one of: m, point the tensor is taken about; object; default "center_of_mass"
             omega: rad/s, angular velocity in scene axes (rotation about origin)
+            incline: rolling without slipping down an incline, for this body: the moment about the
+                    rolling axis through the centre of mass, a = g sin(angle)/(1 + I/(m R^2)), the
+                    friction needed and, with length, the time and speed (ignored inside
+                    /v1/rigid/rotate's inertia)
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('cost', cost)))
+        return self._operation('/v1/rigid/inertia', body, (('bodies', bodies), ('origin', origin), ('omega', omega), ('incline', incline), ('cost', cost)))
 
     def rigid_rotate(self, body: Optional[Dict[str, Any]] = None, *, moments: Optional[List[float]] = None, inertia: Optional[Dict[str, Any]] = None, omega: Optional[List[float]] = None, orientation: Optional[Dict[str, Any]] = None, torque: Optional[Dict[str, Any]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Euler's equations with a quaternion attitude: free or torqued rotation of a rigid body, checked against the exact torque-free solution
@@ -799,7 +803,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/worldline', body, (('legs', legs), ('units', units), ('tick_interval', tick_interval), ('telescope_home_times', telescope_home_times), ('cost', cost)))
 
-    def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def relativity_doppler(self, body: Optional[Dict[str, Any]] = None, *, source_velocity: Optional[Dict[str, Any]] = None, observer_velocity: Optional[Dict[str, Any]] = None, emission_direction: Optional[List[float]] = None, arrival_direction: Optional[List[float]] = None, direction: Optional[Dict[str, Any]] = None, frequency: Optional[float] = None, wavelength: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Relativistic Doppler shift at any angle (longitudinal, both transverse cases) with aberration
 
         POST /v1/relativity/doppler. The request is `body` (a dict) and/or the keyword arguments below
@@ -812,11 +816,15 @@ class _Operations:
                     precision you have (near c: rapidity, gamma or one_minus_beta)
             observer_velocity: a velocity as exactly one of four forms; give the one that carries the
                     precision you have (near c: rapidity, gamma or one_minus_beta)
-            emission_direction: the direction the light travels (from the source towards the observer)
-                    in the SOURCE's rest frame; give exactly one of emission_direction and
-                    arrival_direction
-            arrival_direction: the direction the light travels when it reaches the observer, in the
-                    OBSERVER's rest frame (opposite to the line of sight towards the source)
+            emission_direction: deprecated alias of direction {vector, frame: source}: the direction the
+                    light travels (from the source towards the observer) in the SOURCE's rest frame;
+                    give exactly one of direction, emission_direction and arrival_direction
+            arrival_direction: deprecated alias of direction {vector, frame: observer}: the direction
+                    the light travels when it reaches the observer, in the OBSERVER's rest frame
+                    (opposite to the line of sight towards the source)
+            direction: the light's propagation direction and the frame it is seen in, in one field: give
+                    this, or one of the older emission_direction (= frame source) and arrival_direction
+                    (= frame observer), which stay as documented aliases
             frequency: emitted frequency in Hz, in the source's rest frame (optional; at most one of
                     frequency and wavelength)
             wavelength: emitted wavelength in m, in the source's rest frame (optional)
@@ -824,7 +832,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/relativity/doppler', body, (('source_velocity', source_velocity), ('observer_velocity', observer_velocity), ('emission_direction', emission_direction), ('arrival_direction', arrival_direction), ('frequency', frequency), ('wavelength', wavelength), ('cost', cost)))
+        return self._operation('/v1/relativity/doppler', body, (('source_velocity', source_velocity), ('observer_velocity', observer_velocity), ('emission_direction', emission_direction), ('arrival_direction', arrival_direction), ('direction', direction), ('frequency', frequency), ('wavelength', wavelength), ('cost', cost)))
 
     def relativity_fields(self, body: Optional[Dict[str, Any]] = None, *, E: Optional[List[float]] = None, B: Optional[List[float]] = None, velocity: Optional[Dict[str, Any]] = None, units: Optional[str] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """E and B under a boost, Heaviside–Lorentz or SI, with the invariants E² − B² and E·B
@@ -984,17 +992,20 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
-                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
-                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
-                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
+                    {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
+                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
+                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
+                    the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
             r: radius (Schwarzschild r: circumference / 2 pi) for the clocks and the circular orbit; >
                     r_s
             infall_from: radius of rest from which a body falls radially: adds radial_infall, the proper
-                    times to the horizon and to r = 0; > r_s
+                    times to the horizon and to r = 0; >= r_s (r_s itself, within 1e-12, is answered as
+                    the limit from outside)
             reference_r: radius of a static reference clock (e.g. the ground: 6371000 m mean or 6378137
                     m equatorial for the Earth): compares it with a clock on a circular orbit at r
                     (GPS). Needs r.
@@ -1005,7 +1016,7 @@ class _Operations:
         """
         return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('infall_from', infall_from), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
 
-    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, orbital_period: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
 
         POST /v1/gr/geodesic. The request is `body` (a dict) and/or the keyword arguments below
@@ -1014,10 +1025,12 @@ class _Operations:
         ConnectionFailed. GET /v1 has the full schema and an example.
 
         Args:
-            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or "sun" (GM =
-                    1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM = 3.986004418e14 m^3/s^2,
-                    IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI; optional with
-                    units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
+                    {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
+                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
+                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
+                    the answer).
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -1041,6 +1054,9 @@ class _Operations:
             integrator: a method (adaptive: rtol/atol; fixed-step: dt), or {"accuracy": preset}, or
                     {"target_error": relative error}; default {"accuracy": "balanced"}. GET
                     /v1/integrators lists the methods and presets.
+            orbital_period: s, SI only: an orbital period the problem gives (Mercury: 87.969 days =
+                    7600521.6 s, sidereal) to turn the advance per orbit into arcsec per century;
+                    default the integrated orbit's radial period in coordinate time
             dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
                     error, evaluations and CPU seconds from the calibrated model) without integrating:
                     no samples, no pilot run; default false
@@ -1048,7 +1064,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('orbital_period', orbital_period), ('dry_run', dry_run), ('cost', cost)))
 
     def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, Hénon–Heiles, 3D potentials) with conserved momenta and energy
