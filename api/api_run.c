@@ -296,10 +296,11 @@ void api_run_post(size_t ri, struct api_full_request *req, struct api_response *
     /* The plain boost request is answered from its bytes (boost_direct.c:
      * the same answer without a JSON tree per number); every other request,
      * and every boost it declines, goes through the trees below. */
-    if (req->body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
-        struct mech_budget budget = {req->max_steps > 0 ? req->max_steps : 1,
-                                     isfinite(req->deadline) ? req->deadline : 0, req->cancel};
-        if (api_boost_direct(req->body, req->body_len, &budget, resp)) return;
+    if (req->req.body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
+        struct mech_budget budget = {req->req.max_steps > 0 ? req->req.max_steps : 1,
+                                     isfinite(req->req.deadline) ? req->req.deadline : 0,
+                                     req->req.cancel};
+        if (api_boost_direct(req->req.body, req->req.body_len, &budget, resp)) return;
     }
     /* Every tree of this request (body, answer) is built and released in
      * this scope; the answer leaves as malloc()ed text (json_arena.c). */
