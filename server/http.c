@@ -3,9 +3,11 @@
  * end, one file per DESIGN heading (shared types in http_internal.h):
  * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY: it decides
  * from the headers, through its own face http_security.h, and this file
- * answers), quick.c (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW
- * CLIENTS, CONNECTION FLOODS), http_daemon.c (start and stop) and io_loop.c
- * (I/O THREADS).
+ * answers), http_head.c (REQUEST HEAD: 414, 431, Host, what OPTIONS names),
+ * quick.c (QUICK OPERATIONS), answer_budget.c (ANSWER MEMORY), answer_send.c
+ * (the bytes of an answer sent), conn_watch.c (CANCELLATION, SLOW CLIENTS,
+ * CONNECTION FLOODS), http_daemon.c (start and stop, descriptors) and
+ * io_loop.c (I/O THREADS).
  *
  * DESIGN. Per-request state (struct srv_req) is allocated on the first access
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED.
