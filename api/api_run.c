@@ -296,11 +296,11 @@ void api_run_post(size_t ri, struct api_full_request *req, struct api_response *
     /* The plain boost request is answered from its bytes (boost_direct.c:
      * the same answer without a JSON tree per number); every other request,
      * and every boost it declines, goes through the trees below. */
-    if (req->req.body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
-        struct mech_budget budget = {req->req.max_steps > 0 ? req->req.max_steps : 1,
-                                     isfinite(req->req.deadline) ? req->req.deadline : 0,
-                                     req->req.cancel};
-        if (api_boost_direct(req->req.body, req->req.body_len, &budget, resp)) return;
+    const struct api_request *r = &req->req;
+    if (r->body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
+        struct mech_budget budget = {r->max_steps > 0 ? r->max_steps : 1,
+                                     isfinite(r->deadline) ? r->deadline : 0, r->cancel};
+        if (api_boost_direct(r->body, r->body_len, &budget, resp)) return;
     }
     /* Every tree of this request (body, answer) is built and released in
      * this scope; the answer leaves as malloc()ed text (json_arena.c). */
