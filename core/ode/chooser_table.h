@@ -18,7 +18,7 @@
  * oscillator (and general, its copy) floor: the same --floors run, an
  * ellipse and a circle over 10 .. 1e4 periods: within 0.5 .. 2.2x of
  * 4.03e-17 span^1.097 (a linear system: no Brouwer growth), and
- * tests/core/test_trajectory_diagnostics measured 1.5x on another
+ * tests/core/frames/test_trajectory_diagnostics.c measured 1.5x on another
  * amplitude: F = Fm = 1e-16 (2.5x), g = 1.097 (rk8pd keeps its own Fm).
  * Calibration scenes: central_gravity = Kepler e = 0.5 from perihelion, 10 and
  * 1000 orbits; oscillator = isotropic spring, 10 and 1e4 periods;
@@ -97,8 +97,10 @@ static const struct chooser_row chooser_table[] = {
      * stages iterate on the velocity too) and reaches round-off at any
      * setting: the flat law (a < 0.05) is used as such. yoshida6 does not
      * apply (velocity-dependent forces). */
-    {"general", "radau15", 6.7e-16, -0.173, 1.011, 166, -0.026, 76.9, 1.1e-07, 2.18e-17, 1.172, 2.18e-17},
-    /* errors 8.4e-14 2e-13 1.9e-13 3.3e-15 at x = 0.01 0.001 0.0001 1e-06 (span 62.83); fitted on 3 */
+    {"general", "radau15", 3.1e-15, 0.000, 1.011, 166, -0.026, 76.9, 1.1e-07, 2.18e-17, 1.172, 2.18e-17},
+    /* errors 8.4e-14 2e-13 1.9e-13 3.3e-15 at x = 0.01 0.001 0.0001 1e-06 (span 62.83): round-off at
+     * every setting; the fit (A = 6.7e-16, a = -0.173) replaced by the flat law through the
+     * largest, 2e-13 / 62.83^1.011 */
     {"general", "rk8pd", 0.416, 1.092, 1.016, 2.42, 0.120, 14, 1.1e-07, 2.18e-17, 1.172, 2.18e-17},
     /* errors 9e-05 6.9e-07 4.5e-09 2.1e-12 at x = 1e-05 1e-07 1e-09 1e-12 (span 62.83); fitted on 4 */
     {"general", "rkf45", 0.873, 0.989, 0.911, 1.88, 0.192, 7, 1.1e-07, 2.18e-17, 1.172, 2.18e-17},
@@ -110,6 +112,6 @@ static const struct chooser_row chooser_table[] = {
     /* wisdom_holman: only the floor columns (F, g, Fm) are used: its error
      * and cost come from the measured law with the scene's perturbation,
      * core/ode/chooser.c predict_wisdom_holman (A(e) eps (h/P)^2 orbits,
-     * bench/bench_wisdom_holman; 4.1e-7 s a step). */
+     * bench/bench_wisdom_holman.c; 4.1e-7 s a step). */
     {"central_gravity", "wisdom_holman", 0.4, 2.0, 1.0, 2.0, 1.0, 2, 6e-08, 2.5e-16, 1.500, 2.5e-16},
 };
