@@ -966,6 +966,7 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
     if (c->simple) { /* the force loop's fast path, called directly */
         sys.rhs = c->dim2 ? simple_rhs2 : simple_rhs3;
         sys.accel = c->dim2 ? simple_accel2 : simple_accel3;
+        sys.flags |= MECH_ODE_FINITE_OUTPUT; /* simple_accel screens q, v and a */
     }
     struct mech_ode_kepler_split ks;
     if (c->kepler_index >= 0) { /* one central body: offer the Kepler split */
