@@ -10,9 +10,9 @@
 #include <stdio.h> /* snprintf only, for the reason text */
 #include <string.h>
 
-/* The 1PN term's size at the pericentre of the two-body orbit through p's
- * initial state about force f (n.v = 0 there):
- * (gm / (c^2 q^2)) |4 gm / q - v_q^2|, q = h^2 / (gm (1 + e)), v_q = h / q;
+/* The 1PN term's size relative to Newtonian gravity at the pericentre of
+ * the two-body orbit through p's initial state about force f (n.v = 0
+ * there): |4 gm / q - v_q^2| / c^2, q = h^2 / (gm (1 + e)), v_q = h / q;
  * 0 for a radial start (h = 0: that orbit meets the centre, refused there). */
 static double pericentre_1pn(const struct mech_trajectory_problem *p, const struct mech_force *f)
 {
@@ -25,8 +25,36 @@ static double pericentre_1pn(const struct mech_trajectory_problem *p, const stru
     const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
     const double e = e2 > 0.0 ? sqrt(e2) : 0.0;
     const double q = h * h / (gm * (1.0 + e)), vq = h / q;
-    const double k = (gm / (MECH_C * q)) / (MECH_C * q);
-    return k * fabs(4.0 * gm / q - vq * vq);
+    return fabs(4.0 * gm / q - vq * vq) / (MECH_C * MECH_C);
+}
+
+/* The estimate of one correction: its relative size eps (against the
+ * acceleration it corrects) over the run, whose phase V T / L (L, V the
+ * largest |r| and |v|, T the duration: radians of an orbit or a gyration,
+ * ~2 for a fall from rest) it shifts by ~eps per radian, so the positions
+ * and velocities move by ~eps (1 + V T / L) relative. (The quadratic bound
+ * |a| T^2/2 of the fictitious terms would call a 1e-12 precession over
+ * 1e4 orbits a 4e-7 effect.) */
+static void correction_estimate(const char *term, double accel, double eps,
+                                const struct mech_relativity_model *m,
+                                struct mech_term_estimate *te)
+{
+    memset(te, 0, sizeof *te);
+    te->term = term;
+    te->applicable = 1;
+    const double L = m->position_scale, V = m->velocity_scale, T = m->time_scale;
+    const double phase = L > 0.0 ? V * T / L : 0.0;
+    te->accel_bound = accel;
+    te->relative_effect = eps * (1.0 + phase);
+    te->position_effect = te->relative_effect * L;
+    te->velocity_effect = te->relative_effect * V;
+    te->included = te->relative_effect > m->target / m->safety;
+    snprintf(te->reason, sizeof te->reason,
+             "estimated effect %.3g relative %s target %.3g / safety %g: up to %.3g of the "
+             "acceleration it corrects (|a| <= %.3g m/s^2) over a phase V T / L = %.4g "
+             "(eps (1 + V T / L))",
+             te->relative_effect, te->included ? ">" : "<=", m->target, m->safety, eps, accel,
+             phase);
 }
 
 /* Prefix the estimate's reason with `lead` (the estimate's numbers kept). */
@@ -74,22 +102,28 @@ enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_
         }
     }
 
-    /* the two accelerations */
-    double a[MECH_TRAJECTORY_N_RELATIVITY];
+    /* the two accelerations and their sizes relative to what they correct */
+    double a[MECH_TRAJECTORY_N_RELATIVITY], eps[MECH_TRAJECTORY_N_RELATIVITY];
     a[0] = run->relativity_terms[0].max_acceleration;
+    eps[0] = run->relativity_ratio[0];
     if (inertial && n_central == 1) {
         a[1] = run->relativity_terms[1].max_acceleration;
+        eps[1] = run->relativity_ratio[1];
         if (run->method && !strcmp(run->method, "closed_form"))
-            a[1] = fmax(a[1], pericentre_1pn(p, central));
+            eps[1] = fmax(eps[1], pericentre_1pn(p, central));
     } else {
+        /* a bound from each mass's largest pull gm/d^2 and the top speed:
+         * |a_1PN| / (gm/d^2) <= 4 gm/(c^2 d) + 5 beta^2 */
         const double beta = fmin(1.0, m->velocity_scale / MECH_C);
-        a[1] = 0.0;
+        a[1] = eps[1] = 0.0;
         for (size_t i = 0; i < p->n_forces && i < run->n_terms; i++) {
             if (p->forces[i].type != MECH_FORCE_CENTRAL_GRAVITY) continue;
             const double ai = run->terms[i].max_acceleration, gm = p->forces[i].u.central_gravity.gm;
             if (!(ai > 0.0)) continue;
             const double d = sqrt(gm / ai);
-            a[1] += ai * (4.0 * gm / (MECH_C * MECH_C * d) + 5.0 * beta * beta);
+            const double e = 4.0 * gm / (MECH_C * MECH_C * d) + 5.0 * beta * beta;
+            a[1] += ai * e;
+            eps[1] = fmax(eps[1], e);
         }
     }
     static const char *const names[MECH_TRAJECTORY_N_RELATIVITY] = {"relativistic",
@@ -105,13 +139,11 @@ enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_
     const char *const why_not_modellable[MECH_TRAJECTORY_N_RELATIVITY] = {
         !inertial ? "special-relativistic dynamics are modelled in an inertial frame only" : NULL,
         !inertial       ? "the 1PN term is modelled in an inertial frame only"
-        : n_central > 1 ? "the 1PN term is modelled about one central mass; this scene has "
-                          "several (their 1PN field is not a sum)"
+        : n_central > 1 ? "one central mass only (the 1PN field of several is not a sum)"
                         : NULL};
     for (int k = 0; k < MECH_TRAJECTORY_N_RELATIVITY; k++) {
         struct mech_term_estimate *te = &m->terms[k];
-        mech_term_effect_estimate(names[k], a[k], m->time_scale, m->position_scale,
-                                  m->velocity_scale, target, m->safety, te);
+        correction_estimate(names[k], a[k], eps[k], m, te);
         te->applicable = applicable[k];
         if (forced_on & bits[k]) {
             te->included = 1;
