@@ -94,13 +94,15 @@ json_t *api_op_trajectory(struct api_call *c, const json_t *body)
     }
 
     json_t *model = api_traj_model(c, &rq, &r);
-    if (model) json_object_set_new_nocheck(model, "relativity", api_traj_relativity_json(c, &rq, &r));
+    json_t *relativity = api_traj_relativity_json(c, &rq, &r);
+    if (model && relativity) json_object_set_new_nocheck(model, "relativity", relativity);
+    else json_decref(relativity);
     json_object_set_new_nocheck(res, "model", model);
 
     json_t *d = api_traj_diagnostics(c, &rq, &r);
     json_object_set_new_nocheck(res, "diagnostics", d);
 
-    if (!res || !jp || !jv || !model || !d ||
+    if (!res || !jp || !jv || !model || !relativity || !d ||
         json_array_size(jp) != r.n_samples) {
         json_decref(res);
         return api_call_fail_core(c, MECH_ENOMEM, NULL, "");
