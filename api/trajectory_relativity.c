@@ -124,13 +124,14 @@ json_t *api_traj_relativity_json(struct api_call *c, const struct api_traj_reque
     json_object_set_new_nocheck(j, "safety_factor", api_real(c, MECH_TRAJECTORY_AUTO_SAFETY));
     json_object_set_new_nocheck(
         j, "rule",
-        json_string("a correction is included when max(|a| T^2/2 / L, |a| T / V) > target / "
-                    "safety, with |a| its largest acceleration measured along a run of the scene "
-                    "(relativistic: dv/dt - F/m of p = gamma m v at the speed reached, all of "
-                    "|F/m| at or beyond c; schwarzschild_1pn: (gm/(c^2 d^2)) |(4 gm/d - v^2) n + "
-                    "4 (n.v) v| about the one central mass), L and V the largest |r| and |v|, T "
-                    "the duration; a correction needed that cannot be modelled is a 422 naming "
-                    "it"));
+        json_string("a correction is included when eps (1 + V T / L) > target / safety, with eps "
+                    "its largest size relative to the acceleration it corrects, measured along a "
+                    "run of the scene (relativistic: dv/dt - F/m of p = gamma m v at the speed "
+                    "reached against |F/m|, 1 at or beyond c; schwarzschild_1pn: |(4 gm/d - v^2) n "
+                    "+ 4 (n.v) v| / c^2 about the one central mass), L and V the largest |r| and "
+                    "|v|, T the duration (V T / L: the radians of an orbit or gyration the "
+                    "correction shifts by ~eps each); a correction needed that cannot be modelled "
+                    "is a 422 naming it"));
     if (m->judged) {
         json_object_set_new_nocheck(j, "time_scale", api_real(c, m->time_scale));
         json_object_set_new_nocheck(j, "position_scale", api_real(c, m->position_scale));
