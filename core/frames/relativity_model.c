@@ -57,6 +57,35 @@ static void correction_estimate(const char *term, double accel, double eps,
              phase);
 }
 
+/* A Kepler closed form is sampled, not stepped: its samples may all sit
+ * near the pericentre (3 samples of whole orbits) and miss the orbit's size.
+ * For a bound orbit take at least |centre| + the apocentre distance as L and
+ * the pericentre speed as V (both exact for the two-body orbit). */
+static void kepler_scales(const struct mech_trajectory_problem *p,
+                          const struct mech_trajectory_result *run, struct mech_relativity_model *m)
+{
+    if (!run->method || strcmp(run->method, "closed_form") || !run->reference.name ||
+        strcmp(run->reference.name, "kepler"))
+        return;
+    const struct mech_force *f = NULL;
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type == MECH_FORCE_CENTRAL_GRAVITY) f = &p->forces[i];
+    if (!f) return;
+    const double gm = f->u.central_gravity.gm;
+    const struct mech_vec3 r = mech_vec3_sub(p->position, f->u.central_gravity.center);
+    const double rn = mech_vec3_norm(r), v2 = mech_vec3_dot(p->velocity, p->velocity);
+    const double h = mech_vec3_norm(mech_vec3_cross(r, p->velocity));
+    const double energy = 0.5 * v2 - gm / rn;
+    if (!(energy < 0.0) || !(h > 0.0)) return;
+    const double e2 = 1.0 + 2.0 * energy * h * h / (gm * gm);
+    const double e = e2 > 0.0 ? sqrt(e2) : 0.0;
+    const double a = -gm / (2.0 * energy);
+    const double q = h * h / (gm * (1.0 + e));
+    m->position_scale =
+        fmax(m->position_scale, mech_vec3_norm(f->u.central_gravity.center) + a * (1.0 + e));
+    m->velocity_scale = fmax(m->velocity_scale, h / q);
+}
+
 /* Prefix the estimate's reason with `lead` (the estimate's numbers kept). */
 static void reason_lead(struct mech_term_estimate *te, const char *lead)
 {
@@ -90,6 +119,7 @@ enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_
     if (!(m->time_scale > 0.0)) m->time_scale = p->t_end;
     m->position_scale = run->max_radius;
     m->velocity_scale = run->max_speed;
+    kepler_scales(p, run, m);
     const int inertial = p->frame.type == MECH_FRAME_INERTIAL;
     size_t n_central = 0, n_other = 0;
     const struct mech_force *central = NULL;
@@ -137,10 +167,8 @@ enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_
         "schwarzschild_1pn (it holds the special-relativistic kinematics to order v^2/c^2); ",
         "not applicable: no central mass; "};
     const char *const why_not_modellable[MECH_TRAJECTORY_N_RELATIVITY] = {
-        !inertial ? "special-relativistic dynamics are modelled in an inertial frame only" : NULL,
-        !inertial       ? "the 1PN term is modelled in an inertial frame only"
-        : n_central > 1 ? "one central mass only (the 1PN field of several is not a sum)"
-                        : NULL};
+        !inertial ? "inertial frames only" : NULL,
+        !inertial ? "inertial frames only" : n_central > 1 ? "one central mass only" : NULL};
     for (int k = 0; k < MECH_TRAJECTORY_N_RELATIVITY; k++) {
         struct mech_term_estimate *te = &m->terms[k];
         correction_estimate(names[k], a[k], eps[k], m, te);
@@ -153,15 +181,19 @@ enum mech_status mech_trajectory_relativity_select(const struct mech_trajectory_
             reason_lead(te, "left out as requested; ");
         } else if (!applicable[k]) {
             te->included = 0;
-            reason_lead(te, not_applicable[k]);
+            snprintf(te->reason, sizeof te->reason,
+                     "%sits size: up to %.3g of the acceleration it would correct, estimated "
+                     "effect %.3g relative",
+                     not_applicable[k], eps[k], te->relative_effect);
         }
         if (te->included) {
             if (why_not_modellable[k])
-                return mech_error_set(
-                    err, MECH_EDOMAIN, "relativity",
-                    "the %s term is needed (estimated effect %.3g relative > %.3g / %g) but "
-                    "cannot be modelled: %s",
-                    names[k], te->relative_effect, target, m->safety, why_not_modellable[k]);
+                return mech_error_set(err, MECH_EDOMAIN, "relativity",
+                                      "%s is needed (estimated effect %.2g > %.2g / %g) and "
+                                      "cannot be modelled here (%s); \"relativity\": [] asks for "
+                                      "the Newtonian model",
+                                      names[k], te->relative_effect, target, m->safety,
+                                      why_not_modellable[k]);
             m->relativity |= bits[k];
         }
     }

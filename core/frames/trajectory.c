@@ -1125,6 +1125,12 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                               p->method ? p->method : "(null)");
     if (!budget) return mech_error_set(err, MECH_EINVAL, NULL, "no compute budget given");
     const struct mech_ode_method_info mi = mech_ode_method_describe(method);
+    if ((p->relativity & MECH_RELATIVITY_SPECIAL) && mi.second_order)
+        return mech_error_set(err, MECH_EINVAL, "integrator/method",
+                              "%s integrates q'' = a(q, v); special-relativistic dynamics are "
+                              "first order in (r, u = gamma v): use rk8pd, rkf45, rkck, gauss6 "
+                              "or choose by accuracy",
+                              mi.name);
     const char *no_split = NULL;
     if (mi.kepler_split && kepler_split_index(p, &no_split) < 0)
         return mech_error_set(err, MECH_EINVAL, "integrator/method",
