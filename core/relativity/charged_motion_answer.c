@@ -55,7 +55,16 @@ enum mech_status mech_charged_answer(const struct mech_charged_question *q,
     const struct mech_vec3 om = mech_vec3_scale(q->B, qm);
     st = mech_charged_motion_init(eps, om, q->position, q->proper_velocity, &a->motion, err);
     if (st != MECH_OK) {
-        if (err && !strcmp(err->param, "fields")) snprintf(err->param, sizeof err->param, "E");
+        /* name the request's field: q E/m or q B/m overflowing is the field's (or
+         * the charge-to-mass ratio's) doing */
+        static const char *const map[][2] = {
+            {"fields", "E"}, {"eps", "E"}, {"omega", "B"}, {"u0", "proper_velocity"},
+            {"r0", "position"}};
+        for (size_t i = 0; err && i < sizeof map / sizeof map[0]; i++)
+            if (!strcmp(err->param, map[i][0])) {
+                snprintf(err->param, sizeof err->param, "%s", map[i][1]);
+                break;
+            }
         return st;
     }
     const struct mech_charged_motion *m = &a->motion;
