@@ -138,6 +138,7 @@ static json_t *infall_json(struct api_call *c, const struct mech_schw_request *q
     set(ri, "proper_time_to_singularity", api_real(c, f->to_singularity));
     set(ri, "proper_time_horizon_to_singularity", api_real(c, f->horizon_to_singularity));
     set(ri, "coordinate_time_to_horizon", json_null());
+    set(ri, "starts_on_horizon", json_boolean(f->on_horizon));
     set(ri, "note",
         json_string("a fall from rest; the coordinate (far-away) time to the horizon "
                     "is infinite, hence null; the proper time to r = 0 equals the "

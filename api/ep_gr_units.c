@@ -17,6 +17,11 @@ int api_gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_uni
     double value = NAN;
     if (json_is_string(M)) {
         kind = !strcmp(json_string_value(M), "sun") ? MECH_GR_MASS_SUN : MECH_GR_MASS_EARTH;
+    } else if (json_is_object(M) && json_object_get(M, "surface_gravity")) {
+        /* g = GM/R^2 at R: GM = g R^2 */
+        const double g = api_number_of(M, "surface_gravity"), r = api_number_of(M, "radius");
+        kind = MECH_GR_MASS_GM;
+        value = g * r * r;
     } else if (json_is_object(M)) {
         kind = MECH_GR_MASS_GM;
         value = api_number(M, "gm", 0);
@@ -30,6 +35,23 @@ int api_gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_uni
     if (st == MECH_EDOMAIN) api_call_domain(c, "/M", "%s", e.text);
     if (st != MECH_OK && st != MECH_EDOMAIN) api_call_invalid(c, "/M", "%s", e.text);
     return st == MECH_OK;
+}
+
+/* Where GM came from, read from the request's M (c->body): the named
+ * bodies' values with their sources, so an answer says which constants it
+ * used. */
+static const char *mass_source(const struct api_call *c)
+{
+    const json_t *M = c->body ? json_object_get(c->body, "M") : NULL;
+    if (json_is_string(M))
+        return !strcmp(json_string_value(M), "sun")
+                   ? "sun: GM = 1.32712440041279419e20 m^3/s^2 (JPL DE440, Park et al. 2021)"
+                   : "earth: GM = 3.986004418e14 m^3/s^2 (IERS Conventions 2010, WGS 84)";
+    if (json_is_object(M) && json_object_get(M, "surface_gravity"))
+        return "GM = g R^2 from the given surface gravity and radius";
+    if (json_is_object(M)) return "GM as given";
+    if (M) return "GM = G M, G = 6.67430e-11 m^3/(kg s^2) (CODATA 2018)";
+    return NULL;
 }
 
 json_t *api_gr_units_json(struct api_call *c, const struct mech_gr_units *u)
@@ -50,6 +72,8 @@ json_t *api_gr_units_json(struct api_call *c, const struct mech_gr_units *u)
         json_object_set_new_nocheck(j, "GM_over_c3", api_real(c, u->s));
         json_object_set_new_nocheck(
             j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
+        const char *src = mass_source(c);
+        if (src) json_object_set_new_nocheck(j, "GM_source", json_string(src));
     }
     return j;
 }

@@ -546,6 +546,8 @@ static json_t *threshold_json(struct api_call *c, const struct mech_collision_th
                                     api_real(c, t->fixed_target_beam_energy));
         json_object_set_new_nocheck(o, "fixed_target_beam_kinetic_energy",
                                     api_real(c, t->fixed_target_beam_kinetic));
+        json_object_set_new_nocheck(o, "fixed_target_beam_momentum",
+                                    api_real(c, t->fixed_target_beam_momentum));
     }
     if (t->has_symmetric_collider)
         json_object_set_new_nocheck(o, "symmetric_collider_beam_energy",

@@ -34,14 +34,17 @@ static int check_choices(struct api_call *c, const json_t *body)
 {
     const int emit = json_object_get(body, "emission_direction") != NULL;
     const int arrive = json_object_get(body, "arrival_direction") != NULL;
-    if (emit && arrive)
-        api_call_invalid(c, "/arrival_direction",
-                         "give the light's direction once: emission_direction (source frame) "
-                         "or arrival_direction (observer frame), not both");
-    else if (!emit && !arrive)
+    const int dir = json_object_get(body, "direction") != NULL;
+    if (emit + arrive + dir > 1)
+        api_call_invalid(c, dir ? "/direction" : "/arrival_direction",
+                         "give the light's direction once: direction {vector, frame}, or the "
+                         "older emission_direction (source frame) or arrival_direction (observer "
+                         "frame), not two of them");
+    else if (!emit && !arrive && !dir)
+        /* the pointer of the field this error named before direction existed */
         api_call_invalid(c, "/emission_direction",
-                         "give the light's direction: emission_direction (in the source's frame) "
-                         "or arrival_direction (in the observer's frame)");
+                         "give the light's direction: direction {vector, frame: source or "
+                         "observer} (or emission_direction, arrival_direction)");
     if (json_object_get(body, "frequency") && json_object_get(body, "wavelength"))
         api_call_invalid(c, "/wavelength",
                          "give the emitted light as a frequency or as a wavelength, not both");
@@ -57,6 +60,8 @@ static json_t *relative_json(struct api_call *c, const struct mech_doppler *d)
     set(rel, "rapidity", api_real(c, d->rapidity));
     set(rel, "one_minus_beta", api_real(c, d->one_minus_beta));
     set(rel, "beta_gamma", api_real(c, d->beta_gamma));
+    set(rel, "gamma_one_minus_beta", api_real(c, exp(-d->rapidity)));
+    set(rel, "gamma_one_plus_beta", api_real(c, exp(d->rapidity)));
     set(rel, "observer_beta_in_source_frame", api_vec3(c, d->observer_beta_in_source));
     set(rel, "source_beta_in_observer_frame", api_vec3(c, d->source_beta_in_observer));
     return rel;
@@ -84,6 +89,8 @@ static void velocity_json(struct api_call *c, json_t *res, const char *key,
 json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
 {
     const json_t *emit = json_object_get(body, "emission_direction");
+    const json_t *dir = json_object_get(body, "direction");
+    const int source_frame = dir ? !strcmp(api_string_of(dir, "frame"), "source") : emit != NULL;
     const json_t *fj = json_object_get(body, "frequency"), *lj = json_object_get(body, "wavelength");
     const json_t *sv = json_object_get(body, "source_velocity");
     const json_t *ov = json_object_get(body, "observer_velocity");
@@ -95,8 +102,10 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
     const struct mech_doppler_request q = {
         .source = sv ? &src : NULL,
         .observer = ov ? &obs : NULL,
-        .direction = api_vec3_of(emit ? emit : json_object_get(body, "arrival_direction")),
-        .frame = emit ? MECH_DOPPLER_SOURCE_FRAME : MECH_DOPPLER_OBSERVER_FRAME,
+        .direction = api_vec3_of(dir    ? json_object_get(dir, "vector")
+                                 : emit ? emit
+                                        : json_object_get(body, "arrival_direction")),
+        .frame = source_frame ? MECH_DOPPLER_SOURCE_FRAME : MECH_DOPPLER_OBSERVER_FRAME,
         .light = fj ? MECH_DOPPLER_LIGHT_FREQUENCY
                  : lj ? MECH_DOPPLER_LIGHT_WAVELENGTH
                       : MECH_DOPPLER_LIGHT_NONE,
@@ -105,13 +114,19 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_doppler_answer(&q, &a, &e);
-    if (st != MECH_OK) return api_call_fail_core(c, st, &e, "");
+    if (st != MECH_OK) {
+        if (dir && (!strcmp(e.param, "emission_direction") || !strcmp(e.param, "arrival_direction")))
+            strcpy(e.param, "direction/vector");
+        return api_call_fail_core(c, st, &e, "");
+    }
 
     const struct mech_doppler *d = &a.d;
     json_t *res = json_object();
     set(res, "case", json_string(mech_doppler_case_name(d->kind)));
     set(res, "doppler_factor", api_real(c, d->factor));
     set(res, "doppler_factor_minus_one", api_real(c, d->factor_minus_one));
+    set(res, "doppler_factor_inverse", api_real(c, 1 / d->factor));
+    set(res, "direction_frame", json_string(source_frame ? "source" : "observer"));
     set(res, "shift", json_string(mech_doppler_shift_name(a.shift)));
     set(res, "redshift_z", api_real(c, a.redshift_z));
     if (a.has_light) light_json(c, res, &a);
@@ -133,11 +148,18 @@ json_t *api_op_relativity_doppler(struct api_call *c, const json_t *body)
 
 /* ======================= POST /v1/relativity/fields ======================== */
 
-static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v)
+/* In SI the first invariant is E^2 - c^2 B^2: it is answered under that
+ * name too (E2_minus_B2 keeps the same number for existing clients), and
+ * c E.B, the second in the same unit V^2/m^2. */
+static json_t *invariants_json(struct api_call *c, const struct mech_em_invariants *v, int si)
 {
     json_t *o = json_object();
     json_object_set_new_nocheck(o, "E2_minus_B2", api_real(c, v->e2_minus_b2));
     json_object_set_new_nocheck(o, "E_dot_B", api_real(c, v->e_dot_b));
+    if (si) {
+        json_object_set_new_nocheck(o, "E2_minus_c2_B2", api_real(c, v->e2_minus_b2));
+        json_object_set_new_nocheck(o, "c_E_dot_B", api_real(c, MECH_EM_C * v->e_dot_b));
+    }
     return o;
 }
 
@@ -169,8 +191,8 @@ json_t *api_op_relativity_fields(struct api_call *c, const json_t *body)
     json_object_set_new_nocheck(res, "E", api_vec3(c, r.e));
     json_object_set_new_nocheck(res, "B", api_vec3(c, r.b));
     api_velocity_describe(c, &b, res);
-    json_object_set_new_nocheck(res, "invariants_before", invariants_json(c, &r.before));
-    json_object_set_new_nocheck(res, "invariants_after", invariants_json(c, &r.after));
+    json_object_set_new_nocheck(res, "invariants_before", invariants_json(c, &r.before, si));
+    json_object_set_new_nocheck(res, "invariants_after", invariants_json(c, &r.after, si));
     json_object_set_new_nocheck(res, "field_scale_squared", api_real(c, r.scale2));
     json_t *diff = json_object();
     const double s2 = r.scale2 > 0 ? r.scale2 : 1.0;

@@ -365,7 +365,7 @@ json_t *api_op_rigid_rotate(struct api_call *c, const json_t *body)
     p.method = ch.method;
     p.opt = ch.opt;
     /* by accuracy, torque-free and off the separatrix: the chooser picks the
-     * closed form when allowed and predicted cheaper (issue 16) */
+     * closed form when allowed and predicted cheaper */
     struct mech_rigid_answer a;
     struct mech_error e;
     mech_error_clear(&e);

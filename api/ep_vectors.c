@@ -69,6 +69,9 @@ json_t *api_op_vectors(struct api_call *c, const json_t *body)
         json_object_set_new_nocheck(out, "a_along_b", real_or_null(c, ok, p.a_along_b));
         json_object_set_new_nocheck(out, "b_on_a", vec_or_null(c, ok, p.b_on_a));
         json_object_set_new_nocheck(out, "b_across_a", vec_or_null(c, ok, p.b_across_a));
+        json_object_set_new_nocheck(out, "difference", api_vec3(c, p.difference));
+        json_object_set_new_nocheck(out, "sum", api_vec3(c, p.sum));
+        json_object_set_new_nocheck(out, "distance", api_real(c, p.distance));
         if (!ok)
             json_array_append_new(notes, json_string(
                 p.norm_a == 0 ? "a is the zero vector: it has no direction, so the angle, "

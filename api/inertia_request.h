@@ -1,7 +1,8 @@
 /* inertia_request.h — a POST /v1/rigid/inertia request body read into core's
  * parts and computed by core/rigid/inertia.c. Shared by /v1/rigid/inertia and
  * /v1/rigid/rotate (whose "inertia" member is such a request), so neither
- * operation calls the other through JSON (issue 17 item 2). */
+ * operation calls the other through JSON: a handler calls core, never
+ * another route. */
 #ifndef API_INERTIA_REQUEST_H
 #define API_INERTIA_REQUEST_H
 

@@ -27,6 +27,7 @@
  * (which in 2.14 corrupts its lexer when an allocation fails; see
  * tests/api/test_alloc_failure.c, JANSSON_LEXER_BUG). */
 #include "json_read.h"
+#include "real_parse.h"
 
 #include <errno.h>
 #include <float.h>
@@ -79,8 +80,10 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
                                     1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 
 #define JR_MANTISSA_MAX ((uint64_t)1 << 53)
+/* Significant digits kept exactly in 64 bits (10^19 < 2^64). */
+#define JR_DIGITS_MAX 19
 
-/* A number token at r->p (first byte '-' or a digit), as a real.
+/* api_json_number_scan (json_read.h): a number token's value.
  *
  * The value is strtod()'s (jsonp_strtod, strconv.c). Where the token's
  * digits, read as an integer M with the decimal exponent e, have M <= 2^53 and
@@ -89,11 +92,14 @@ static const double jr_pow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e
  * glibc's correctly rounded strtod() returns (Clinger 1990, "How to read
  * floating point numbers accurately", the fast path; needs FLT_EVAL_METHOD
  * 0, so no extended-precision intermediates). M = 0 is ±0 for any exponent.
- * Every other token goes through strtod() on a NUL-terminated copy. */
-static enum jr_status jr_number(struct jr *r, json_t **out)
+ * Otherwise, with at most 19 significant digits (every nonzero digit kept in
+ * M), api_real_from_decimal (real_parse.c, Eisel-Lemire) assembles the same
+ * correctly rounded double from integer products or says it cannot decide;
+ * what is left goes through strtod() on a NUL-terminated copy. */
+const char *api_json_number_scan(const char *text, const char *limit, double *value)
 {
-    const unsigned char *s = r->p, *p = r->p, *end = r->end;
-    int negative = 0, exact = 1;
+    const unsigned char *s = (const unsigned char *)text, *p = s, *end = (const unsigned char *)limit;
+    int negative = 0, nd = 0, dropped = 0; /* significant digits kept in m; a nonzero one left out */
     uint64_t m = 0;
     long e10 = 0;
     if (p < end && *p == '-') {
@@ -104,20 +110,29 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         p++;
     } else if (p < end && jr_is_digit(*p)) {
         while (p < end && jr_is_digit(*p)) {
-            if (m > JR_MANTISSA_MAX / 10) exact = 0;
-            else m = m * 10 + (uint64_t)(*p - '0');
+            if (nd < JR_DIGITS_MAX) {
+                m = m * 10 + (uint64_t)(*p - '0');
+                nd++;
+            } else {
+                e10++;
+                dropped |= *p != '0';
+            }
             p++;
         }
     } else {
-        return JR_FALLBACK;
+        return NULL;
     }
     if (p < end && *p == '.') {
         p++;
-        if (p == end || !jr_is_digit(*p)) return JR_FALLBACK;
+        if (p == end || !jr_is_digit(*p)) return NULL;
         while (p < end && jr_is_digit(*p)) {
-            if (m > JR_MANTISSA_MAX / 10) exact = 0;
-            else m = m * 10 + (uint64_t)(*p - '0');
-            e10--;
+            if (nd < JR_DIGITS_MAX) {
+                m = m * 10 + (uint64_t)(*p - '0');
+                nd += m != 0; /* leading zeros of a fraction are not significant */
+                e10--;
+            } else {
+                dropped |= *p != '0';
+            }
             p++;
         }
     }
@@ -126,7 +141,7 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         long ex = 0;
         p++;
         if (p < end && (*p == '+' || *p == '-')) eneg = *p++ == '-';
-        if (p == end || !jr_is_digit(*p)) return JR_FALLBACK;
+        if (p == end || !jr_is_digit(*p)) return NULL;
         while (p < end && jr_is_digit(*p)) {
             if (ex < 100000) ex = ex * 10 + (*p - '0');
             p++;
@@ -134,18 +149,20 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         e10 += eneg ? -ex : ex;
     }
     size_t n = (size_t)(p - s);
-    if (n > API_JSON_READ_MAX_NUMBER) return JR_FALLBACK;
+    if (n > API_JSON_READ_MAX_NUMBER) return NULL;
     double v;
 #if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD == 0
-    if (exact && m > JR_MANTISSA_MAX) exact = 0;
-    if (exact && m != 0 && (e10 < -22 || e10 > 22)) exact = 0;
+    const int exact = !dropped && (m == 0 || (m <= JR_MANTISSA_MAX && e10 >= -22 && e10 <= 22));
 #else
-    exact = 0;
+    const int exact = !dropped && m == 0;
 #endif
     if (exact) {
         double x = (double)m;
         if (m != 0) x = e10 >= 0 ? x * jr_pow10[e10] : x / jr_pow10[-e10];
         v = negative ? -x : x;
+    } else if (!dropped && e10 >= -400 && e10 <= 400 &&
+               api_real_from_decimal(m, (int)e10, negative, &v)) {
+        /* Eisel-Lemire (real_parse.c): strtod's value without strtod */
     } else {
         char buf[API_JSON_READ_MAX_NUMBER + 1];
         memcpy(buf, s, n);
@@ -159,11 +176,22 @@ static enum jr_status jr_number(struct jr *r, json_t **out)
         v = strtod(buf, &stop);
         int overflow = (v == HUGE_VAL || v == -HUGE_VAL) && errno == ERANGE;
         errno = saved_errno;
-        if (stop != buf + n || overflow) return JR_FALLBACK;
+        if (stop != buf + n || overflow) return NULL;
     }
+    *value = v;
+    return (const char *)p;
+}
+
+/* A number token at r->p (first byte '-' or a digit), as a real. */
+static enum jr_status jr_number(struct jr *r, json_t **out)
+{
+    double v;
+    const char *next =
+        api_json_number_scan((const char *)r->p, (const char *)r->end, &v);
+    if (!next) return JR_FALLBACK;
     *out = json_real(v);
     if (!*out) return JR_NOMEM; /* v is finite: only memory can fail */
-    r->p = p;
+    r->p = (const unsigned char *)next;
     return JR_OK;
 }
 

@@ -36,4 +36,13 @@ json_t *api_json_read(const char *text, size_t len, json_error_t *err);
  * NULL, err as above). For tests and the allocation sweep. */
 int api_json_read_plain(const char *text, size_t len, json_t **out, json_error_t *err);
 
+/* One JSON number token at text (bytes up to stop, exclusive; text < stop),
+ * valued exactly as api_json_read() values it (strtod() on the token, as
+ * jansson with JSON_DECODE_INT_AS_REAL): the end of the token, *value set,
+ * or NULL when the bytes at text do not start a number in JSON's grammar
+ * -?(0|[1-9][0-9]*)(\.[0-9]+)?([eE][+-]?[0-9]+)?, the token is longer than
+ * API_JSON_READ_MAX_NUMBER, or it overflows (the cases api_json_read() hands
+ * to jansson). What follows the token is not looked at. Thread-safe. */
+const char *api_json_number_scan(const char *text, const char *stop, double *value);
+
 #endif

@@ -2,11 +2,12 @@
  *
  * Mirrors jansson 2.14's src/dump.c (do_dump, dump_string) for JSON_COMPACT
  * without the flags that change strings, and replaces its %.17g for reals by
- * api_real_format(). Differences in how, not what: one growing buffer
- * instead of a callback per token, no per-container hash table for cycle
- * detection (a depth bound instead: beyond it, and for strings jansson would
- * refuse, json_dumps() does the work, so the answer — text or failure — is
- * always jansson's).
+ * api_real_format() (the shortest text that reads back as the same double).
+ * Differences in how, not what: one growing buffer instead of a callback per
+ * token, no per-container hash table for cycle detection (a depth bound
+ * instead: beyond it, and for strings jansson would refuse, json_dumps()
+ * decides whether the tree can be written at all, so a failure is always
+ * jansson's).
  *
  * Allocation: malloc/realloc/free of the C library, because the text becomes
  * api_response.body, which api_response_free() frees with free(); realloc
@@ -28,6 +29,8 @@ enum jw_status { JW_OK, JW_NOMEM, JW_FALLBACK };
 struct jw {
     char *buf;
     size_t len, cap;
+    int max_depth; /* deepest container written (API_JSON_WRITE_MAX_DEPTH, or more
+                      once json_dumps() has shown the tree is acyclic) */
 };
 
 /* Make room for `need` more bytes (capacity doubles). */
@@ -192,7 +195,7 @@ static int jw_value(struct jw *w, const json_t *j, int depth)
     case JSON_STRING:
         return jw_string(w, json_string_value(j), json_string_length(j));
     case JSON_ARRAY: {
-        if (depth >= API_JSON_WRITE_MAX_DEPTH) return JW_FALLBACK;
+        if (depth >= w->max_depth) return JW_FALLBACK;
         size_t n = json_array_size(j);
         if ((st = jw_append(w, "[", 1))) return st;
         for (size_t i = 0; i < n; i++) {
@@ -205,7 +208,7 @@ static int jw_value(struct jw *w, const json_t *j, int depth)
         return JW_OK;
     }
     case JSON_OBJECT: {
-        if (depth >= API_JSON_WRITE_MAX_DEPTH) return JW_FALLBACK;
+        if (depth >= w->max_depth) return JW_FALLBACK;
         if ((st = jw_append(w, "{", 1))) return st;
         int first = 1;
         for (void *it = json_object_iter((json_t *)j); it;
@@ -227,35 +230,45 @@ static int jw_value(struct jw *w, const json_t *j, int depth)
     }
 }
 
-/* The unusual cases: jansson's own text (or its failure), copied into a
- * malloc()ed buffer because jansson's allocator may be another one. */
+/* Deepest tree written once json_dumps() has accepted it: jansson's parser
+ * stops at 2048 levels, and answers built in C are a few levels deep. */
+#define JW_DEEP_MAX_DEPTH 65536
+
+static int jw_write(struct jw *w, const json_t *j, const char *suffix)
+{
+    size_t m = suffix ? strlen(suffix) : 0;
+    int st = j ? jw_value(w, j, 0) : JW_FALLBACK;
+    if (st == JW_OK) st = jw_append(w, suffix ? suffix : "", m + 1); /* with its NUL */
+    if (st == JW_OK) w->len--; /* the NUL is not part of the text */
+    return st;
+}
+
+/* The unusual cases: where json_dumps() fails (a reference cycle, a string
+ * that is not UTF-8), so do we; a tree deeper than the bound that it
+ * accepts (so it has no cycle) is written here with the bound raised, so
+ * its reals have the same text as everywhere else. */
 static char *jw_fallback(const json_t *j, const char *suffix, size_t *len)
 {
-    char *s = json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(17));
+    char *s = j ? json_dumps(j, JSON_COMPACT | JSON_ENCODE_ANY) : NULL;
     if (!s) return NULL;
     json_malloc_t jmalloc;
     json_free_t jfree;
     json_get_alloc_funcs(&jmalloc, &jfree);
-    size_t n = strlen(s), m = suffix ? strlen(suffix) : 0;
-    char *out = malloc(n + m + 1);
-    if (out) {
-        memcpy(out, s, n);
-        if (m) memcpy(out + n, suffix, m);
-        out[n + m] = '\0';
-        if (len) *len = n + m;
-    }
     jfree(s);
-    return out;
+    struct jw w = {NULL, 0, 0, JW_DEEP_MAX_DEPTH};
+    if (jw_write(&w, j, suffix) != JW_OK) {
+        free(w.buf);
+        return NULL;
+    }
+    if (len) *len = w.len;
+    return w.buf;
 }
 
 char *api_json_write_compact(const json_t *j, const char *suffix, size_t *len)
 {
-    struct jw w = {NULL, 0, 0};
-    size_t m = suffix ? strlen(suffix) : 0;
-    int st = j ? jw_value(&w, j, 0) : JW_FALLBACK;
-    if (st == JW_OK) st = jw_append(&w, suffix ? suffix : "", m + 1); /* with its NUL */
+    struct jw w = {NULL, 0, 0, API_JSON_WRITE_MAX_DEPTH};
+    int st = jw_write(&w, j, suffix);
     if (st == JW_OK) {
-        w.len--; /* the NUL is not part of the text */
         if (len) *len = w.len;
         return w.buf;
     }

@@ -1,107 +1,116 @@
-/* real_format.c — double -> the text jansson's json_dumps writes with
- * JSON_REAL_PRECISION(17) (printf %.17g plus jansson's touch-ups), fast (see
- * real_format.h for the contract; shared/DESIGN.md: reals print with 17
- * significant digits).
+/* real_format.c — double -> the shortest decimal text that reads back as the
+ * same double (see real_format.h for the contract and the layout).
  *
- * printf's %.17g converts exactly with multi-precision arithmetic (glibc's
- * __printf_fp): ~0.5-1 µs per real, the largest cost of a small answer. Here
- * the 17 digits come from one 64-bit product instead, in the manner of
- * Loitsch 2010 ("Printing floating-point numbers quickly and accurately with
- * integers", PLDI; the diy-fp product and cached powers of ten): with v =
- * w·2^e (w exact, 64 bits) and c ~= 10^(16-X) (64 bits, within one unit),
- * N = round(v·10^(16-X)) is the 17-digit integer printf rounds to, unless the
- * discarded part lies within the product's error bound of one half: then
- * (a few per cent of values, and subnormals) snprintf decides. The result is
- * therefore always printf's own, byte for byte (tests/api/test_json_write.c
- * checks millions of values against json_dumps).
+ * The digits come from Schubfach (Giulietti 2020, "The Schubfach way to
+ * render doubles"; the 64-bit-limb arrangement of R. Abolz's Drachennest):
+ * with the double v = c 2^q, the rounding interval's ends and v itself are
+ * scaled by 10^-k (k = floor(log10 2^q), one 128-bit power of ten from the
+ * table, each product rounded to odd), which leaves at most two candidates
+ * of the shortest length in the interval - ten times coarser than 10^k, then
+ * at 10^k - and the one nearest v is taken (ties to even). Exact: no
+ * fallback, integer arithmetic only (64 x 64 -> 128-bit products), no
+ * allocation, no locale. Several times cheaper than the exact %.17g conversion it
+ * replaces (glibc's multi-precision printf), and the texts are shorter
+ * (0.6 instead of 0.59999999999999998).
  *
- * The cached powers are exact-rounded from big-integer arithmetic at build
- * time (scripts/gen_pow10_table.py -> real_format_pow10.h, committed): a
- * table generated once and checked is easier to audit than big-number code
- * in C run at first use, costs no start-up work or thread synchronisation,
- * and keeps this file free of allocation. The fast path is integer
- * arithmetic only (64-bit, and one 128-bit product by 10^j, j < 8). */
+ * The powers of ten are generated once with exact big-integer arithmetic
+ * (scripts/gen_pow10_128.py -> real_pow10_128.h, committed, also read by
+ * real_parse.c): a generated and checked table is easier to audit than
+ * multi-precision code run at first use. tests/api/test_json_write.c checks
+ * the contract's text, built there from snprintf and strtod alone, on ~2
+ * million values; tests/api/test_real_text.c reads every text back with
+ * api_json_number_scan. */
 #include "real_format.h"
 
 #include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "real_format_pow10.h"
-
-struct diyfp {
-    uint64_t f; /* significand */
-    int e;      /* binary exponent: value = f * 2^e */
-};
-
-#define DBL_SIG_BITS 52
-#define DBL_HIDDEN (UINT64_C(1) << DBL_SIG_BITS)
-#define DBL_EXP_BIAS 1075 /* 1023 + 52: value = sig * 2^(biased - 1075) */
-
-static int leading_zeros64(uint64_t x) /* x != 0 */
-{
-#if defined(__GNUC__) || defined(__clang__)
-    return __builtin_clzll(x);
-#else
-    int n = 0;
-    while (!(x & (UINT64_C(1) << 63))) {
-        x <<= 1;
-        n++;
-    }
-    return n;
-#endif
-}
-
-/* Upper 64 bits of the 128-bit product, rounded to nearest (Loitsch §2). */
-static struct diyfp diyfp_mul(struct diyfp x, struct diyfp y)
-{
-    const uint64_t m32 = UINT64_C(0xFFFFFFFF);
-    uint64_t a = x.f >> 32, b = x.f & m32, c = y.f >> 32, d = y.f & m32;
-    uint64_t ac = a * c, bc = b * c, ad = a * d, bd = b * d;
-    uint64_t mid = (bd >> 32) + (ad & m32) + (bc & m32) + (UINT64_C(1) << 31);
-    struct diyfp r = {ac + (ad >> 32) + (bc >> 32) + (mid >> 32), x.e + y.e + 64};
-    return r;
-}
-
-/* floor(a / b) for b > 0 (C's '/' truncates toward zero). */
-static int floor_div(int a, int b)
-{
-    return a >= 0 ? a / b : -((-a + b - 1) / b);
-}
+#include "real_pow10_128.h"
 
 __extension__ typedef unsigned __int128 u128;
 
-static const uint64_t pow10_u64[] = {
-    UINT64_C(1),           UINT64_C(10),           UINT64_C(100),
-    UINT64_C(1000),        UINT64_C(10000),        UINT64_C(100000),
-    UINT64_C(1000000),     UINT64_C(10000000),     UINT64_C(100000000),
-    UINT64_C(1000000000),  UINT64_C(10000000000),  UINT64_C(100000000000),
-    UINT64_C(1000000000000), UINT64_C(10000000000000), UINT64_C(100000000000000),
-    UINT64_C(1000000000000000), UINT64_C(10000000000000000), UINT64_C(100000000000000000),
-};
+#define DBL_SIG_BITS 52
+#define DBL_HIDDEN (UINT64_C(1) << DBL_SIG_BITS)
+#define DBL_EXP_BIAS 1075 /* 1023 + 52: value = c * 2^(biased - 1075) */
 
-/* 10^s (POW10_K_MIN <= s < POW10_K_MIN + 8·POW10_COUNT) as a 64-bit
- * significand rounded to nearest-ish: the cached power at or below s times
- * the exact 10^j, j < 8, renormalised with rounding. Error < 1 unit of the
- * last place (1/2 from the table, 1/2 from the renormalisation). */
-static struct diyfp pow10_diyfp(int s)
+/* floor(a / 2^s) for any sign of a (an arithmetic shift, spelled out). */
+static inline int floor_shift(int a, int s)
 {
-    const int i = floor_div(s - POW10_K_MIN, POW10_K_STEP);
-    const struct pow10_cached *cp = &pow10_cache[i];
-    const int j = s - cp->k; /* 0..7 */
-    struct diyfp c = {cp->f, cp->e};
-    if (j == 0) return c;
-    u128 p = (u128)c.f * pow10_u64[j]; /* < 2^88 */
-    int sh = 64 - leading_zeros64((uint64_t)(p >> 64)); /* 1..24 bits above 64 */
-    u128 r = (p + ((u128)1 << (sh - 1))) >> sh;
-    if (r >> 64) { /* rounding carried into a new bit */
-        r >>= 1;
-        sh++;
+    return a >= 0 ? a >> s : -((-a + (1 << s) - 1) >> s);
+}
+
+/* floor(log2 10^e), |e| <= 1233 (checked by the table's generator). */
+static inline int floor_log2_pow10(int e)
+{
+    return floor_shift(e * 1741647, 19);
+}
+
+/* The integer part of g * cp / 2^128 with its lowest bit set when the
+ * discarded part is not (near) zero: the "round to odd" of Schubfach, where
+ * g is 10^-k rounded up, so a true remainder of zero shows as 0 or 1 in the
+ * 64 bits kept below the integer part. */
+static inline uint64_t round_to_odd(const struct pow10_128 *g, uint64_t cp)
+{
+    const u128 x = (u128)g->lo * cp;
+    const u128 y = (u128)g->hi * cp;
+    const u128 z = y + (uint64_t)(x >> 64);
+    const uint64_t z1 = (uint64_t)(z >> 64), z0 = (uint64_t)z;
+    return z1 | (z0 > 1);
+}
+
+/* The shortest decimal d 10^e in the rounding interval of the positive
+ * finite double with significand field `sig` and biased exponent `biased`,
+ * the one nearest the double among those (ties: even d). d may end in
+ * zeros. */
+static void shortest(uint64_t sig, int biased, uint64_t *d, int *e)
+{
+    uint64_t c;
+    int q;
+    if (biased != 0) {
+        c = DBL_HIDDEN | sig;
+        q = biased - DBL_EXP_BIAS;
+        /* an integer below 2^53: itself (no shorter text reads back) */
+        if (q <= 0 && -q < 53 && (c & ((UINT64_C(1) << -q) - 1)) == 0) {
+            *d = c >> -q;
+            *e = 0;
+            return;
+        }
+    } else {
+        c = sig; /* subnormal */
+        q = 1 - DBL_EXP_BIAS;
     }
-    c.f = (uint64_t)r;
-    c.e += sh;
-    return c;
+    const int even = (c & 1) == 0;
+    /* the lower gap is half the upper one at a power of two (not the
+     * smallest normal exponent, whose lower neighbour is subnormal) */
+    const int lower_closer = sig == 0 && biased > 1;
+    const uint64_t cbl = 4 * c - 2 + (uint64_t)lower_closer, cb = 4 * c, cbr = 4 * c + 2;
+    /* k = floor(log10 2^q), or floor(log10 (3/4) 2^q) when lower_closer */
+    const int k = floor_shift(q * 1262611 - (lower_closer ? 524031 : 0), 22);
+    const int h = q + floor_log2_pow10(-k) + 1; /* 1..4 */
+    const struct pow10_128 *g = &pow10_128_table[-k - POW10_128_MIN];
+    const uint64_t vbl = round_to_odd(g, cbl << h);
+    const uint64_t vb = round_to_odd(g, cb << h);
+    const uint64_t vbr = round_to_odd(g, cbr << h);
+    const uint64_t lower = vbl + !even, upper = vbr - !even;
+    const uint64_t s = vb / 4;
+    if (s >= 10) { /* one digit fewer: 10 s' or 10 (s' + 1) */
+        const uint64_t sp = s / 10;
+        const int up_inside = lower <= 40 * sp, wp_inside = 40 * sp + 40 <= upper;
+        if (up_inside != wp_inside) {
+            *d = sp + (uint64_t)wp_inside;
+            *e = k + 1;
+            return;
+        }
+    }
+    const int u_inside = lower <= 4 * s, w_inside = 4 * s + 4 <= upper;
+    if (u_inside != w_inside) {
+        *d = s + (uint64_t)w_inside;
+        *e = k;
+        return;
+    }
+    const uint64_t mid = 4 * s + 2; /* both inside: the nearer, ties to even */
+    *d = s + (uint64_t)(vb > mid || (vb == mid && (s & 1) != 0));
+    *e = k;
 }
 
 static const char two_digits[201] = /* "00" "01" ... "99" */
@@ -111,84 +120,26 @@ static const char two_digits[201] = /* "00" "01" ... "99" */
     "6061626364656667686970717273747576777879"
     "8081828384858687888990919293949596979899";
 
-/* x < 10^8 as exactly eight decimal digits at d (no NUL). */
-static void put8(char *d, uint32_t x)
+/* d > 0 (at most 17 digits, no trailing zero) as decimal digits at out;
+ * returns their count. */
+static int put_digits(uint64_t d, char out[20])
 {
-    for (int i = 6; i >= 0; i -= 2) {
-        const uint32_t q = x / 100u;
-        memcpy(d + i, two_digits + 2u * (x - 100u * q), 2);
-        x = q;
+    char t[40]; /* the digits end at t + 20; a fixed 20-byte copy inlines */
+    int i = 20;
+    while (d >= 100) {
+        const uint64_t q = d / 100;
+        i -= 2;
+        memcpy(t + i, two_digits + 2 * (d - 100 * q), 2);
+        d = q;
     }
-}
-
-/* The 17 significant digits of finite positive normal v correctly rounded,
- * as printf's %.16e writes them, and the decimal exponent X of the first:
- * v ~= d.dddddddddddddddd·10^X. N = round(v·10^(16-X)) comes from one 64-bit
- * product w·c (w exact, c = 10^(16-X) within 1 unit, the product rounded:
- * within 2 units of the true value); when the part below N is within that
- * error of one half, the product cannot decide the rounding and 0 is
- * returned (the caller asks snprintf; a few per cent of values). 1 on
- * success. */
-static int digits17_fast(uint64_t f, int e, char digits[17], int *X)
-{
-    const int lz = leading_zeros64(f);
-    const struct diyfp w = {f << lz, e - lz}; /* v = w.f·2^w.e, 2^63 <= w.f */
-    /* floor(log10 v) within one: v in [2^(w.e+63), 2^(w.e+64)) */
-    int k = floor_div((w.e + 63) * 78913, 1 << 18);
-    for (int attempt = 0; attempt < 3; attempt++) {
-        const int s = 16 - k;
-        if (s < POW10_K_MIN || s >= POW10_K_MIN + POW10_K_STEP * POW10_COUNT) return 0;
-        const struct diyfp p = diyfp_mul(w, pow10_diyfp(s));
-        const int sh = -p.e; /* N ~ 2^54..2^57: sh ~ 7..10 */
-        if (sh < 2 || sh > 62) return 0;
-        uint64_t n = p.f >> sh;
-        const uint64_t frac = p.f & ((UINT64_C(1) << sh) - 1), half = UINT64_C(1) << (sh - 1);
-        if (n >= pow10_u64[17]) {
-            k++;
-            continue;
-        }
-        if (n < pow10_u64[16]) {
-            k--;
-            continue;
-        }
-        const uint64_t err = 4; /* > the 2-unit bound: a margin */
-        if (frac + err >= half && frac <= half + err) return 0;
-        if (frac > half) n++;
-        if (n == pow10_u64[17]) {
-            n = pow10_u64[16];
-            k++;
-        }
-        /* 17 digits: one, then two groups of eight in 32-bit arithmetic. */
-        const uint32_t hi = (uint32_t)(n / UINT64_C(100000000)); /* < 10^9 */
-        digits[0] = (char)('0' + hi / 100000000u);
-        put8(digits + 1, hi % 100000000u);
-        put8(digits + 9, (uint32_t)(n % UINT64_C(100000000)));
-        *X = k;
-        return 1;
+    if (d >= 10) {
+        i -= 2;
+        memcpy(t + i, two_digits + 2 * d, 2);
+    } else {
+        t[--i] = (char)('0' + d);
     }
-    return 0;
-}
-
-/* As digits17_fast for any finite positive v, through snprintf("%.16e")
- * (exact, locale-independent for this conversion's digits and exponent)
- * where the fast path cannot decide or v is subnormal. */
-static void digits17(double v, char digits[17], int *X)
-{
-    uint64_t bits;
-    memcpy(&bits, &v, sizeof bits);
-    const int biased = (int)((bits >> DBL_SIG_BITS) & 0x7FF);
-    if (biased != 0 &&
-        digits17_fast((bits & (DBL_HIDDEN - 1)) | DBL_HIDDEN, biased - DBL_EXP_BIAS, digits, X))
-        return;
-    char t[48]; /* d.dddddddddddddddde-308, the point in the locale's spelling */
-    snprintf(t, sizeof t, "%.16e", v);
-    const char *ex = strchr(t, 'e');
-    int m = 0;
-    for (const char *q = t; ex && q < ex && m < 17; q++)
-        if (*q >= '0' && *q <= '9') digits[m++] = *q;
-    while (m < 17)
-        digits[m++] = '0';
-    *X = ex ? atoi(ex + 1) : 0;
+    memcpy(out, t + i, 20);
+    return 20 - i;
 }
 
 static char *write_exponent(char *p, int x) /* |x| <= 324 */
@@ -213,55 +164,76 @@ size_t api_real_format(double x, char buf[API_REAL_FORMAT_SIZE])
 {
     uint64_t bits;
     memcpy(&bits, &x, sizeof bits);
-    char *p = buf;
-    if (((bits >> DBL_SIG_BITS) & 0x7FF) == 0x7FF) { /* NaN or infinity */
+    const int biased = (int)((bits >> DBL_SIG_BITS) & 0x7FF);
+    if (biased == 0x7FF) { /* NaN or infinity */
         memcpy(buf, "null", 5);
         return 4;
     }
+    /* The text is composed in t with fixed-size copies (inlined, no call
+     * per piece) and leaves in one fixed copy of API_REAL_FORMAT_SIZE bytes:
+     * the bytes of buf after the NUL are unspecified. */
+    char t[64], *p = t;
     if (bits >> 63) *p++ = '-';
-    if ((bits & ~(UINT64_C(1) << 63)) == 0) { /* +-0 */
+    const uint64_t sig = bits & (DBL_HIDDEN - 1);
+    if (biased == 0 && sig == 0) { /* +-0 */
         memcpy(p, "0.0", 4);
-        return (size_t)(p - buf) + 3;
+        memcpy(buf, t, 5);
+        return (size_t)(p - t) + 3;
     }
-    if (bits >> 63) x = -x;
-
-    char digits[17];
-    int X; /* decimal exponent of the first digit */
-    digits17(x, digits, &X);
-    int n = 17; /* %g drops trailing zeros */
-    while (n > 1 && digits[n - 1] == '0')
-        n--;
+    uint64_t d;
+    int e;
+    shortest(sig, biased, &d, &e);
+    /* shortest: no trailing zeros (an exact binary fraction such as 4.375
+     * comes out as 4375000000000000 10^-15: strip them in large steps) */
+    while (d % 100000000 == 0) {
+        d /= 100000000;
+        e += 8;
+    }
+    if (d % 10000 == 0) {
+        d /= 10000;
+        e += 4;
+    }
+    if (d % 100 == 0) {
+        d /= 100;
+        e += 2;
+    }
+    if (d % 10 == 0) {
+        d /= 10;
+        e++;
+    }
+    char digits[40]; /* n digits, then slack for the fixed-size copies */
+    const int n = put_digits(d, digits);
+    const int X = e + n - 1; /* decimal exponent of the first digit */
     const int decpt = X + 1; /* digits before the point */
 
-    if (X < -4 || X >= 17) { /* %g with P = 17 */
+    if (X < -4 || X >= 17) { /* scientific, as %.17g switches */
         *p++ = digits[0];
         if (n > 1) {
             *p++ = '.';
-            memcpy(p, digits + 1, (size_t)(n - 1));
+            memcpy(p, digits + 1, 20);
             p += n - 1;
         }
         p = write_exponent(p, X);
     } else if (decpt <= 0) { /* 0.000ddd: -3 <= decpt <= 0 */
-        *p++ = '0';
-        *p++ = '.';
-        for (int i = 0; i < -decpt; i++)
-            *p++ = '0';
-        memcpy(p, digits, (size_t)n);
+        memcpy(p, "0.000000", 8);
+        p += 2 - decpt;
+        memcpy(p, digits, 20);
         p += n;
     } else if (decpt < n) { /* ddd.ddd */
-        memcpy(p, digits, (size_t)decpt);
+        memcpy(p, digits, 20);
         p += decpt;
         *p++ = '.';
-        memcpy(p, digits + decpt, (size_t)(n - decpt));
+        memcpy(p, digits + decpt, 20);
         p += n - decpt;
-    } else { /* ddd000.0 */
-        memcpy(p, digits, (size_t)n);
+    } else { /* ddd000.0 (decpt <= 17) */
+        memcpy(p, digits, 20);
         p += n;
-        for (int i = n; i < decpt; i++)
-            *p++ = '0';
-        *p++ = '.';
-        *p++ = '0';
+        memcpy(p, "0000000000000000", 16);
+        p += decpt - n;
+        memcpy(p, ".0", 2);
+        p += 2;
     }
     *p = '\0';
-    return (size_t)(p - buf);
+    memcpy(buf, t, API_REAL_FORMAT_SIZE);
+    return (size_t)(p - t);
 }

@@ -1,5 +1,5 @@
 /* bench_calibrate_chooser.c — measures the constants of the chooser's model
- * (core/ode/chooser.c, issue 16 "A chooser that predicts cost and error").
+ * (core/ode/chooser.c: it predicts each candidate's cost and error).
  *
  * For each scene class and candidate method it runs mech_trajectory_integrate
  * (the path the answers take) at three settings and two run lengths, and fits
@@ -16,9 +16,11 @@
  *   ./build/bench_calibrate_chooser
  * It takes a few seconds; timings are CPU seconds of this machine.
  * With --presets it prints instead each preset's choice, CPU and achieved
- * error on the issue's particle scenes (no calibration); --floors the
+ * error on the presets' particle scenes (no calibration); --floors the
  * round-off floors; --pendulum the Foucault pendulum's law
- * (core/frames/chooser_pendulum.c). The scenes are tests/chooser_scenes.h's.
+ * (core/frames/chooser_pendulum.c); --general the general class's rows on the
+ * isotropic oscillator seen from a rotating frame. The scenes are
+ * tests/chooser_scenes.h's.
  */
 #include <math.h>
 #include <stdio.h>
@@ -71,6 +73,13 @@ static void scene_osc(struct scene *s)
     struct chooser_scene c;
     cs_oscillator(&c, "oscillator", 10); /* 10 and 1e4 periods */
     from_cs(s, &c, 10, 10000);
+}
+
+static void scene_rotosc(struct scene *s)
+{
+    struct chooser_scene c;
+    cs_rotating_oscillator(&c, "rotating oscillator", 10); /* 10 and 100 periods */
+    from_cs(s, &c, 10, 100);
 }
 
 static void scene_fall(struct scene *s)
@@ -261,7 +270,7 @@ static void calibrate(struct scene *s, const struct method *md, double F, double
            s->spans[0], n);
 }
 
-/* --presets: each preset on the issue's particle scenes through
+/* --presets: each preset on the presets' particle scenes through
  * mech_trajectory_choose + mech_trajectory_integrate: method, CPU (best of
  * 3), achieved error, and the machine/draft and machine/balanced ratios. */
 static void presets_table(void)
@@ -428,6 +437,20 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && !strcmp(argv[1], "--floors")) {
         floors_table();
+        return 0;
+    }
+    if (argc > 1 && !strcmp(argv[1], "--general")) {
+        /* the general class's own rows: the oscillator seen from a rotating
+         * frame (no yoshida6: Coriolis depends on the velocity) */
+        static struct scene g;
+        scene_rotosc(&g);
+        static const struct method gm[] = {
+            {"radau15", 1, {1e-2, 1e-3, 1e-4, 1e-6}}, {"rk8pd", 1, {1e-5, 1e-7, 1e-9, 1e-12}},
+            {"rkf45", 1, {1e-4, 1e-6, 1e-8, 1e-10}},  {"msbdf", 1, {1e-4, 1e-6, 1e-8, 1e-10}},
+            {"gauss6", 0, {0.2, 0.1, 0.05, 0.025}},
+        };
+        double gg, F = floor_of(&g, &gg);
+        for (size_t j = 0; j < sizeof gm / sizeof gm[0]; j++) calibrate(&g, &gm[j], F, gg);
         return 0;
     }
     static struct scene sc[3];

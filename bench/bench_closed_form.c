@@ -1,5 +1,5 @@
 /* bench_closed_form.c — what the closed form costs against the preset that
- * would integrate the same scene (issue 16: "cost then grows with the
+ * would integrate the same scene ("cost then grows with the
  * samples, not with the orbits").
  *
  * Scenes (201 samples): Kepler GM = a = 1, e = 0.5 and 0.9 from pericentre,

@@ -1,5 +1,5 @@
 /* bench_trajectory_overhead.c — what the trajectory operation costs over its
- * integrator (issue 16, "The integrators themselves": at most 1.5x).
+ * integrator (the goal: at most 1.5x).
  *
  * The same scene, method and tolerance run two (three) ways, in interleaved
  * rounds on the same thread:

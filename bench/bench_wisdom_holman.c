@@ -1,4 +1,4 @@
-/* bench_wisdom_holman.c — what the Wisdom–Holman splitting buys (issue 16):
+/* bench_wisdom_holman.c — what the Wisdom–Holman splitting buys:
  * on Kepler + a small third-body tide, wisdom_holman's CPU and error at a few
  * step sizes against radau15 and rk8pd at matching error, and the error
  * model err ~ A (dt/T)^p * span that the chooser can use.

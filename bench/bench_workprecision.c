@@ -1,5 +1,5 @@
 /* bench_workprecision.c — work-precision benchmark of every registered ODE
- * method (issue 3, "Benchmarks"): fixed scenes with exact references, run
+ * method: fixed scenes with exact references, run
  * across methods and tolerances / step sizes, against SciPy's solve_ivp
  * DOP853 measured in the same run (bench/workprecision_scipy.py).
  *
@@ -30,7 +30,7 @@
  * sweep stops after a run costing more than MECHD_BENCH_CAP seconds, and any
  * run after 4 s of wall time (the budget's deadline: it shows as FAILED).
  * Then what the accuracy presets pick on each scene (mech_trajectory_choose)
- * and the error they reach, and the issue's three targets, each printed
+ * and the error they reach, and the three targets, each printed
  * MET / NOT MET with the numbers: (1) Kepler e = 0.5, |dE/E| <= 1e-13
  * with >= 20x less CPU than DOP853 at rtol = atol = 1e-13; (2) symplectic
  * methods keep a bounded, non-secular energy error over 1e5 orbits;
@@ -47,8 +47,8 @@
  * is found from this file's path (__FILE__) or $MECHD_BENCH_DIR.
  * Environment: MECHD_BENCH_CAP (seconds, default 0.5): a sweep stops after
  * a run costing more than this; MECHD_BENCH_PRESETS_ONLY (any value): print
- * only issue 16's presets tables (every preset's CPU, error and method on the
- * issue's trajectory scenes, machine/draft and machine/balanced ratios, then
+ * only the presets tables (every preset's CPU, error and method on the
+ * trajectory scenes, machine/draft and machine/balanced ratios, then
  * the whole scene set through the API beside GSL rk8pd called directly and
  * SciPy DOP853); MECHD_BENCH_SCENES_ONLY: only the scene-set table.
  */
@@ -791,7 +791,7 @@ static void presets_section(const struct scene *scenes, size_t n_scenes)
     }
 }
 
-/* ---- issue 16: the presets on the issue's trajectory scenes -------------------
+/* ---- the presets on the trajectory scenes -------------------------------------
  * Through mech_trajectory_integrate (what a request gets: 201 samples, the
  * observer, the reference), each preset's method, rtol, error against the
  * exact reference (the falling object: a radau15 run at its round-off floor),
@@ -822,7 +822,7 @@ static enum mech_status issue_run(const struct mech_trajectory_problem *p,
 
 static void issue_presets_section(void)
 {
-    printf("\n## Issue 16: the presets on the trajectory scenes (through mech_trajectory_integrate, "
+    printf("\n## The presets on the trajectory scenes (through mech_trajectory_integrate, "
            "201 samples, CPU best of 3)\n");
     printf("%-22s %-9s %8s %-8s %9s %10s %-6s %10s %9s\n", "scene", "preset", "promise", "method",
            "rtol", "rel_err", "kept?", "rhs_evals", "cpu_s");
@@ -919,7 +919,7 @@ static void issue_presets_section(void)
 }
 
 
-/* ---- issue 16: the scene set through the API, beside GSL rk8pd and DOP853 ----
+/* ---- the scene set through the API, beside GSL rk8pd and DOP853 -------------
  * Every scene of tests/api/scene_set.h (the same requests and references
  * test_preset_scenes checks), each preset through api_handle (JSON, what a
  * request gets; the method and settings read from the answer's
@@ -1308,7 +1308,7 @@ static void scene_set_section(const char *bench_dir)
     static const char *const presets[] = {"draft", "balanced", "precise", "machine"};
     static const double promise[] = {1e-3, 1e-8, 1e-10, 1e-11};
     const int have_scipy = system("/usr/bin/python3 -c 'import scipy' >/dev/null 2>&1") == 0;
-    printf("\n## Issue 16: the scene set through the API (api_handle, JSON; CPU = median of %d "
+    printf("\n## The scene set through the API (api_handle, JSON; CPU = median of %d "
            "interleaved rounds, thread CPU of the whole request)\n", SS_ROUNDS);
     printf("# error: max over samples of |got - ref| / max(|ref|, scale) against the scene's "
            "reference (tests/api/scene_set.h)\n");
@@ -1535,7 +1535,7 @@ static int same_bits(const struct row *a, const struct row *b)
 struct longrun_spec {
     const char *method;
     double div;
-    int target; /* named by the issue */
+    int target; /* one of the three targets */
 };
 static const struct longrun_spec longrun[] = {
     {"verlet", 200, 1},         {"yoshida4", 100, 1}, {"yoshida6", 50, 1}, {"gauss4", 100, 1},
@@ -1703,17 +1703,17 @@ int main(int argc, char **argv)
     const double cap = cap_seconds();
     double wall0 = mech_clock_seconds();
 
-    printf("# bench_workprecision: error versus cost of every libmech ODE method (issue 3)\n");
+    printf("# bench_workprecision: error versus cost of every libmech ODE method\n");
     machine_line();
     printf("# pos_err = |q - q_exact| / L at t_end (L = a, amplitude, h, x0); max|dE/E| over every "
            "accepted step;\n# cpu_s = thread CPU seconds per run (runs < 2 ms repeated, mean); "
            "sweeps stop after a run > %.2g s\n", cap);
 
-    if (getenv("MECHD_BENCH_SCENES_ONLY")) { /* only issue 16's scene-set table */
+    if (getenv("MECHD_BENCH_SCENES_ONLY")) { /* only the scene-set table */
         scene_set_section(bench_dir);
         return 0;
     }
-    if (getenv("MECHD_BENCH_PRESETS_ONLY")) { /* only the issue-16 presets tables */
+    if (getenv("MECHD_BENCH_PRESETS_ONLY")) { /* only the presets tables */
         issue_presets_section();
         scene_set_section(bench_dir);
         return 0;
@@ -1834,7 +1834,7 @@ int main(int argc, char **argv)
     }
     printf("%s: %s\n", met(t1), t1_text);
     if (base100)
-        printf("  (guide: the issue says DOP853 at 1e-13 only reaches about 4e-11 over 100 orbits; "
+        printf("  (guide: the target expects DOP853 at 1e-13 only reaches about 4e-11 over 100 orbits; "
                "measured %.2e in %.3f s; and mechd 1000 orbits in about 50 ms: measured %.4f s)\n",
                base100->drift, base100->cpu, pick ? best_cpu : NAN);
     for (size_t i = 0; i < n_rows && base; i++) {

@@ -14,11 +14,19 @@ program), t from 0 to T_END, rtol = atol = RTOL. One output line per RTOL:
 
     dop853 rtol=<r> steps=<n> nfev=<n> cpu=<s> max_rel_dE=<x> final=<6 reals>
 
-Issue 16's scene set (bench_workprecision's "scene set" section):
+The scene set (bench_workprecision's "scene set" section):
 
     workprecision_scipy.py --scene NAME T_END CAP_S Y0_1 .. Y0_n -- RTOL [RTOL ...]
 
+    workprecision_scipy.py --scene NAME --method M T_END CAP_S Y0_1 .. Y0_n -- RTOL ...
+
+runs solve_ivp's method M (DOP853, the default, LSODA or Radau) instead
+(bench_chooser_regret); its nfev adds n evaluations per Jacobian.
+
 NAME: kepler (GM = 1, y = (q, v) in 3-D), oscillator (q'' = -q in 3-D),
+rotosc (that oscillator seen from a frame turning at 0.3 rad/s about z),
+lorentz (unit charge and mass in B = (0, 0, 1)), pendulum (m = l = 1,
+g = 9.80665, y = (theta, p)),
 rigid (Euler's equations, moments 1, 2, 3, y = omega), henon_heiles (y =
 (x, y, p_x, p_y)), falling (100 m at 32 deg N with Coriolis, y = (q, v) in
 east-north-up), top (the heavy symmetric top in Euler angles, y = (theta,
@@ -80,6 +88,23 @@ def rhs_of(name):
             phid = (pphi - ppsi * c) / (I1 * s * s)
             return [y[3], phid, ppsi / I3 - phid * c,
                     (I1 * phid * phid * s * c - ppsi * phid * s + mgl * s) / I1]
+    elif name == "rotosc":
+        # the isotropic oscillator q'' = -q seen from a frame turning at
+        # 0.3 rad/s about z: Coriolis -2 w x v and centrifugal -w x (w x q)
+        w = 0.3
+
+        def f(t, y):
+            x, yy, z, vx, vy, vz = y
+            return [vx, vy, vz, -x + 2.0 * w * vy + w * w * x, -yy - 2.0 * w * vx + w * w * yy,
+                    -z]
+    elif name == "lorentz":
+        # a unit charge and mass in B = (0, 0, 1): v' = v x B
+        def f(t, y):
+            return [y[3], y[4], y[5], y[4], -y[3], 0.0]
+    elif name == "pendulum":
+        # the plane pendulum, m = l = 1, g = 9.80665, y = (theta, p)
+        def f(t, y):
+            return [y[1], -9.80665 * math.sin(y[0])]
     elif name == "henon_heiles":
         def f(t, y):
             x, yy, px, py = y
@@ -91,6 +116,11 @@ def rhs_of(name):
 
 def scene_main(argv):
     warnings.filterwarnings("ignore", message="At least one element of `rtol` is too small")
+    method = "DOP853"
+    if "--method" in argv:  # DOP853 (default), LSODA or Radau
+        k = argv.index("--method")
+        method = argv[k + 1]
+        argv = argv[:k] + argv[k + 2:]
     sep = argv.index("--")
     name, t_end, cap = argv[2], float(argv[3]), float(argv[4])
     y0 = [float(a) for a in argv[5:sep]]
@@ -101,14 +131,17 @@ def scene_main(argv):
         return 2
     for rtol in rtols:
         c0 = time.process_time()
-        sol = solve_ivp(f, (0.0, t_end), y0, method="DOP853", rtol=rtol, atol=rtol)
+        sol = solve_ivp(f, (0.0, t_end), y0, method=method, rtol=rtol, atol=rtol)
         cpu = time.process_time() - c0
         if sol.status != 0:
-            print("dop853 rtol=%.3g failed: %s" % (rtol, sol.message), flush=True)
+            print("%s rtol=%.3g failed: %s" % (method.lower(), rtol, sol.message), flush=True)
             break
         final = " ".join(repr(float(v)) for v in sol.y[:, -1])
-        print("dop853 rtol=%.17g nfev=%d cpu=%.6f final=%s" % (rtol, sol.nfev, cpu, final),
-              flush=True)
+        # nfev: right-hand sides; Radau's and LSODA's Jacobians (njev, by finite
+        # differences: n evaluations each) are added
+        nfev = sol.nfev + (sol.njev or 0) * len(y0)
+        print("%s rtol=%.17g nfev=%d cpu=%.6f final=%s" % (method.lower(), rtol, nfev, cpu,
+                                                            final), flush=True)
         if cpu > cap:
             break
     return 0

@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #ifndef MECHD_VERSION
 #define MECHD_VERSION "0.0.0"
@@ -16,6 +17,28 @@
 #ifndef MECHD_BUILD_ID
 #define MECHD_BUILD_ID "unknown" /* the git commit it was configured from (CMake) */
 #endif
+
+/* The default front end of an installed mechd: PREFIX/share/mechd/web when this
+ * executable is PREFIX/bin/mechd and that directory holds an index.html (what
+ * `make install` lays out, wherever PREFIX or DESTDIR put it); otherwise the
+ * build's MECHD_STATIC_DIR (the source tree's clients/web). Returns buf or the
+ * static default; never fails. */
+static const char *installed_static_dir(char *buf, size_t n)
+{
+    char exe[900];
+    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len <= 0 || (size_t)len >= sizeof exe - 1) return MECHD_STATIC_DIR;
+    exe[len] = '\0';
+    char *slash = strrchr(exe, '/');
+    if (!slash) return MECHD_STATIC_DIR;
+    *slash = '\0'; /* PREFIX/bin */
+    char index[1024];
+    if (snprintf(buf, n, "%s/../share/mechd/web", exe) >= (int)n ||
+        snprintf(index, sizeof index, "%s/index.html", buf) >= (int)sizeof index ||
+        access(index, R_OK) != 0)
+        return MECHD_STATIC_DIR;
+    return buf;
+}
 
 enum opt_id {
     OPT_BIND,
@@ -38,6 +61,7 @@ enum opt_id {
     OPT_SHUTDOWN_GRACE_MS,
     OPT_HANGUP_GRACE_MS,
     OPT_LOG_FORMAT,
+    OPT_FRAME_ANCESTORS,
     OPT_COUNT
 };
 
@@ -65,7 +89,8 @@ static const struct opt_spec {
                        "step budget of one integration"},
     [OPT_STATIC_DIR] = {"--static-dir", "MECHD_STATIC_DIR", MECHD_STATIC_DIR, 0, 0,
                         "directory of the front end served at / (read once at start; when it "
-                        "is missing a built-in start page is served)"},
+                        "is missing a built-in start page is served); an installed mechd "
+                        "defaults to PREFIX/share/mechd/web"},
     [OPT_TOKEN_FILE] = {"--token-file", "MECHD_TOKEN_FILE", "", 0, 0,
                         "file holding one bearer token (printable ASCII, <= 256 bytes); when "
                         "set, every /v1 request needs 'Authorization: Bearer TOKEN'"},
@@ -116,6 +141,10 @@ static const struct opt_spec {
     [OPT_LOG_FORMAT] = {"--log-format", "MECHD_LOG_FORMAT", "text", 0, 0,
                         "log lines on stderr: text (\"mechd: TIME req=ID ...\") or json (one "
                         "JSON object per line, for log collectors)"},
+    [OPT_FRAME_ANCESTORS] = {"--frame-ancestors", "MECHD_FRAME_ANCESTORS", "none", 0, 0,
+                             "origins whose pages may embed the front end in an iframe (a course "
+                             "site), e.g. https://course.example.edu; comma-separated; none: no "
+                             "framing (CSP frame-ancestors 'none', X-Frame-Options DENY)"},
 };
 
 static void print_help(FILE *out, const char *prog)
@@ -193,8 +222,8 @@ static int load_token(struct srv_config *cfg, const char *path, const char *sour
 }
 
 /* Append comma-separated origins ("scheme://host[:port]", no path, or "null"
- * is refused) to cfg->cors_origins. */
-static int add_origins(struct srv_config *cfg, const char *value, const char *source, FILE *err)
+ * is refused) to dst (cap bytes: cfg->cors_origins or cfg->frame_ancestors). */
+static int add_origins(char *dst, size_t cap, const char *value, const char *source, FILE *err)
 {
     const char *p = value;
     while (*p) {
@@ -207,17 +236,17 @@ static int add_origins(struct srv_config *cfg, const char *value, const char *so
         size_t start = strncmp(p, "https://", 8) == 0 ? 8 : 7;
         for (size_t i = start; ok && i < n; i++)
             ok = p[i] > 0x20 && p[i] < 0x7f && p[i] != '/' && p[i] != '*';
-        size_t used = strlen(cfg->cors_origins);
-        if (!ok || used + n + 2 > sizeof cfg->cors_origins) {
+        size_t used = strlen(dst);
+        if (!ok || used + n + 2 > cap) {
             fprintf(err,
                     "mechd: invalid %s '%.*s': expected an origin such as "
                     "https://lab.example.org or http://localhost:3000 (no path, no '*')\n",
                     source, (int)n, p);
             return -1;
         }
-        if (used) cfg->cors_origins[used++] = ',';
-        memcpy(cfg->cors_origins + used, p, n);
-        cfg->cors_origins[used + n] = '\0';
+        if (used) dst[used++] = ',';
+        memcpy(dst + used, p, n);
+        dst[used + n] = '\0';
         p += n;
     }
     return 0;
@@ -258,7 +287,13 @@ static int set_option(struct srv_config *cfg, enum opt_id id, const char *value,
         strcpy(cfg->token_file, value);
         return load_token(cfg, value, source, err);
     }
-    if (id == OPT_CORS_ORIGIN) return add_origins(cfg, value, source, err);
+    if (id == OPT_CORS_ORIGIN)
+        return add_origins(cfg->cors_origins, sizeof cfg->cors_origins, value, source, err);
+    if (id == OPT_FRAME_ANCESTORS) {
+        cfg->frame_ancestors[0] = '\0';
+        if (strcmp(value, "none") == 0) return 0;
+        return add_origins(cfg->frame_ancestors, sizeof cfg->frame_ancestors, value, source, err);
+    }
     if (id == OPT_LOG_FORMAT) {
         if (strcmp(value, "text") && strcmp(value, "json")) {
             fprintf(err, "mechd: invalid %s '%.40s': expected text or json\n", source, value);
@@ -374,12 +409,14 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
             snprintf(source, sizeof source, "option %s", opts[found].flag);
             if (!cors_cli) cfg->cors_origins[0] = '\0';
             cors_cli = 1;
-            if (add_origins(cfg, value, source, err) != 0) return SRV_CONFIG_ERROR;
+            if (add_origins(cfg->cors_origins, sizeof cfg->cors_origins, value, source, err) != 0)
+                return SRV_CONFIG_ERROR;
             continue;
         }
         cli[found] = value;
     }
 
+    char installed[1024];
     for (int k = 0; k < OPT_COUNT; k++) {
         char source[64];
         const char *value = cli[k];
@@ -391,6 +428,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
         } else {
             value = opts[k].def;
             snprintf(source, sizeof source, "default of %s", opts[k].flag);
+            if (k == OPT_STATIC_DIR) value = installed_static_dir(installed, sizeof installed);
         }
         if (set_option(cfg, (enum opt_id)k, value, source, err) != 0) return SRV_CONFIG_ERROR;
     }

@@ -23,6 +23,8 @@ struct srv_config {
     char token[257];         /* the bearer token read from token_file ("" if none) */
     size_t token_len;        /* strlen(token), 0 when /v1 is open */
     char cors_origins[2048]; /* allowed origins, comma-separated, normalised; "" = CORS off */
+    char frame_ancestors[2048]; /* origins that may embed the front end in a frame,
+                                   comma-separated; "" = none may (the default) */
     int io_threads;          /* I/O threads (one libmicrohttpd daemon each), 1..64 */
     long request_timeout_ms; /* time to receive one whole request, 100..3600000 ms */
     long inline_max_us;      /* quick operations run inline while predicted <= this, 0..1e6 µs */

@@ -3,9 +3,11 @@
  * end, one file per DESIGN heading (shared types in http_internal.h):
  * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY: it decides
  * from the headers, through its own face http_security.h, and this file
- * answers), quick.c (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW
- * CLIENTS, CONNECTION FLOODS), http_daemon.c (start and stop) and io_loop.c
- * (I/O THREADS).
+ * answers), http_head.c (REQUEST HEAD: 414, 431, Host, what OPTIONS names),
+ * quick.c (QUICK OPERATIONS), answer_budget.c (ANSWER MEMORY), answer_send.c
+ * (the bytes of an answer sent), conn_watch.c (CANCELLATION, SLOW CLIENTS,
+ * CONNECTION FLOODS), http_daemon.c (start and stop, descriptors) and
+ * io_loop.c (I/O THREADS).
  *
  * DESIGN. Per-request state (struct srv_req) is allocated on the first access
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED.
@@ -13,7 +15,7 @@
  * else reserves a queue slot, suspends the connection and is submitted to the
  * pool; the worker runs api_handle() (which cannot fail) and resumes the
  * connection, and the next access callback sends the stored response. A full
- * queue answers 503 + Retry-After at once. (STYLE.md §9; libmicrohttpd's
+ * queue answers 503 + Retry-After at once. (The worker's step cannot fail; libmicrohttpd's
  * src/examples/suspend_resume_epoll.c.)
  */
 #ifdef __linux__
@@ -159,6 +161,7 @@ static void req_free(struct srv_req *r)
     free(r->query_request);
     free(r->if_none_match);
     free(r->accept_encoding);
+    free(r->host);
     free(r->origin);
     free(r->forwarded_for);
     free(r->body);
@@ -494,6 +497,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->aext.query_request = r->query_request;
     r->aext.if_none_match = r->if_none_match;
     r->aext.accept_encoding = r->accept_encoding;
+    r->aext.host = r->host;
     r->aext.max_samples = h->cfg->max_samples;
     r->aext.admit = answer_admit; /* the answer-memory budget (answer_budget.c) */
     r->aext.admit_ctx = r;
@@ -521,7 +525,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
          * long as it is predicted to cost at most SRV_QUICK_FULL_FACTOR
          * times --inline-max-us: a few sampled outliers can lift a boost's
          * estimate over the limit, and a microsecond request must not get a
-         * 503 for it (issue 15; a CI run saw 65 of 340,000). Measured, so
+         * 503 for it (a CI run saw 65 of 340,000). Measured, so
          * the estimate learns from it. */
         if (r->quick_route && quick_fits_when_full(h, r)) {
             r->quick_probe = 1;
@@ -595,13 +599,16 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
         const char *ae =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ACCEPT_ENCODING);
         r->accept_encoding = dup_str(ae);
+        const char *host = MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST);
+        r->host = dup_str(host);
         const char *origin =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ORIGIN);
         r->origin = dup_str(origin);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
-            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
+            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin) ||
+            (host && !r->host)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
         }

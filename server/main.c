@@ -59,7 +59,7 @@ int main(int argc, char **argv)
     }
     srv_log_set_json(cfg.log_json); /* before any thread logs */
 
-    gsl_set_error_handler_off(); /* process-wide, once (STYLE.md §6) */
+    gsl_set_error_handler_off(); /* process-wide, once: GSL's default handler aborts */
     api_install_json_allocator(); /* jansson's allocator: process-wide, once */
     srv_mhd_panic_install();      /* libmicrohttpd's panics: survive its quiesce race */
     /* Return memory after large answers. glibc's default thresholds are
@@ -79,6 +79,10 @@ int main(int argc, char **argv)
     int n_static = srv_static_init(cfg.static_dir);
     if (n_static < 0)
         srv_log_note("no static files at %s: serving the built-in start page", cfg.static_dir);
+    if (srv_static_set_frame_ancestors(cfg.frame_ancestors) != 0) {
+        srv_log_note("--frame-ancestors: the list is too long");
+        return 1;
+    }
 
     /* Block the stop signals before any thread starts, so all inherit the mask. */
     sigset_t stop;
@@ -104,10 +108,11 @@ int main(int argc, char **argv)
         return 1;
     }
     srv_log_note("workers=%d queue=%d io_threads=%d max_body=%zu deadline_ms=%ld max_steps=%ld "
-                 "request_timeout_ms=%ld inline_max_us=%ld worker_nice=%d static_files=%d",
+                 "request_timeout_ms=%ld inline_max_us=%ld worker_nice=%d max_answer_memory=%zu "
+                 "static_files=%d",
                  cfg.workers, cfg.queue, cfg.io_threads, cfg.max_body, cfg.deadline_ms,
                  cfg.max_steps, cfg.request_timeout_ms, cfg.inline_max_us, cfg.worker_nice,
-                 n_static < 0 ? 0 : n_static);
+                 cfg.max_answer_memory, n_static < 0 ? 0 : n_static);
 
     int sig = 0;
     while (sigwait(&stop, &sig) != 0) {

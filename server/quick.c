@@ -7,7 +7,7 @@
  * request: the suspend -> worker -> resume hand-off (two context switches, a
  * futex wake-up and an eventfd write) costs more than such an operation. It is
  * logged and counted in /metrics like any other request. The choice is
- * measured, not assumed (DESIGN.md): runs of a quick route, inline or on a
+ * measured, not assumed: runs of a quick route, inline or on a
  * worker, update a moving average of the route's *thread CPU time*
  * (CLOCK_THREAD_CPUTIME_ID) per byte of request (plus SRV_QUICK_BASE_BYTES for
  * the fixed costs), and a request runs inline only while its predicted time is
@@ -19,7 +19,7 @@
  * boost (common when the clients run on the same cores) would otherwise look
  * 200 times slower, and one such run sent every later boost to
  * the niced workers, whose small queue then refused cheap requests with 503
- * (issue 15). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
+ * (a cheap request must never be refused for load). Reading that clock is a system call (3.5-5 µs on the 2-core VM,
  * about a boost), so one run in SRV_QUICK_SAMPLE is measured, the first run of
  * a route always; one measurement moves the average by at most a factor of
  * 1 + (SRV_QUICK_CAP - 1) / 8. The decision recovers: the average decays with

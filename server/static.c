@@ -39,6 +39,9 @@ static int n_cache;
 static size_t total_bytes;
 static char root_real[PATH_MAX];
 static size_t root_len;
+/* the CSP of every file, and whether X-Frame-Options: DENY goes with it */
+static char csp[sizeof SRV_STATIC_CSP_BASE + 2100] = SRV_STATIC_CSP;
+static int frame_deny = 1;
 
 static const struct {
     const char *ext, *type, *cache;
@@ -198,6 +201,23 @@ int srv_static_init(const char *root)
     return n_cache;
 }
 
+int srv_static_set_frame_ancestors(const char *origins)
+{
+    if (!origins || !*origins) {
+        snprintf(csp, sizeof csp, "%s", SRV_STATIC_CSP);
+        frame_deny = 1;
+        return 0;
+    }
+    if (sizeof SRV_STATIC_CSP_BASE + strlen(origins) >= sizeof csp) return -1;
+    /* the CSP source list is space-separated */
+    int n = snprintf(csp, sizeof csp, "%s", SRV_STATIC_CSP_BASE);
+    for (const char *p = origins; *p && (size_t)n < sizeof csp - 1; p++)
+        csp[n++] = *p == ',' ? ' ' : *p;
+    csp[n] = '\0';
+    frame_deny = 0;
+    return 0;
+}
+
 int srv_static_count(void)
 {
     return n_cache;
@@ -233,12 +253,12 @@ int srv_static_lookup(const char *url_path, struct srv_static_file *out)
         out->content_type = e->content_type;
         out->etag = e->etag;
         out->headers[0] = (struct srv_static_header){"Cache-Control", e->cache_control};
-        out->headers[1] = (struct srv_static_header){"Content-Security-Policy", SRV_STATIC_CSP};
+        out->headers[1] = (struct srv_static_header){"Content-Security-Policy", csp};
         out->headers[2] = (struct srv_static_header){"X-Content-Type-Options", "nosniff"};
         out->headers[3] = (struct srv_static_header){"Referrer-Policy", "no-referrer"};
-        out->headers[4] = (struct srv_static_header){"X-Frame-Options", "DENY"};
-        out->headers[5] = (struct srv_static_header){"ETag", e->etag};
-        out->n_headers = 6;
+        out->headers[4] = (struct srv_static_header){"ETag", e->etag};
+        out->n_headers = 5;
+        if (frame_deny) out->headers[out->n_headers++] = (struct srv_static_header){"X-Frame-Options", "DENY"};
         return 0;
     }
     return -1;

@@ -38,11 +38,13 @@
 #define SRV_STATIC_MAX_DEPTH 8
 
 /* The Content-Security-Policy sent with every static file: everything from
- * this origin only, no inline scripts or styles, no plugins, no framing. */
-#define SRV_STATIC_CSP                                                                             \
+ * this origin only, no inline scripts or styles, no plugins; framing as
+ * srv_static_set_frame_ancestors() allows (by default none: 'none'). */
+#define SRV_STATIC_CSP_BASE                                                                        \
     "default-src 'self'; script-src 'self'; style-src 'self'; img-src 'self' data:; "              \
     "connect-src 'self'; font-src 'self'; object-src 'none'; base-uri 'none'; "                    \
-    "form-action 'self'; frame-ancestors 'none'"
+    "form-action 'self'; frame-ancestors "
+#define SRV_STATIC_CSP SRV_STATIC_CSP_BASE "'none'"
 
 struct srv_static_header {
     const char *name, *value; /* static strings or owned by the cache */
@@ -86,6 +88,15 @@ int srv_static_lookup(const char *url_path, struct srv_static_file *out);
 /* 1 if the request's If-None-Match header (may be NULL) matches f's ETag
  * (a list, weak comparison, or "*"), so a 304 Not Modified can be sent. */
 int srv_static_not_modified(const struct srv_static_file *f, const char *if_none_match);
+
+/* Let the pages of these origins (comma-separated "scheme://host[:port]", as
+ * --frame-ancestors validated them; NULL or "" for none) embed the front end
+ * in a frame: the CSP then says "frame-ancestors ORIGIN …" and no
+ * X-Frame-Options is sent (it cannot name an origin; browsers obey the CSP).
+ * By default, and with "", "frame-ancestors 'none'" and X-Frame-Options DENY.
+ * Returns 0, or -1 when the list does not fit (nothing changed). Not
+ * thread-safe: call before the server starts. */
+int srv_static_set_frame_ancestors(const char *origins);
 
 /* Number of cached files (0 before init). */
 int srv_static_count(void);

@@ -4,7 +4,7 @@
  * then submits (srv_pool_submit), which cannot fail. A worker pops the job and
  * calls job->run; on shutdown, queued jobs get job->cancel instead. Neither
  * callback can fail: results and errors live in the enclosing request
- * (STYLE.md §9). After run/cancel returns the pool never touches the job
+ * (the worker's step cannot fail). After run/cancel returns the pool never touches the job
  * again, so the callback may hand the job's memory back to its owner.
  *
  * FAIR QUEUES. A job is short (a closed-form operation: its cost is linear

@@ -77,6 +77,19 @@ static CS_UNUSED void cs_oscillator(struct chooser_scene *s, const char *name, d
     cs_fix(s);
 }
 
+/* That oscillator seen from a frame turning at 0.3 rad/s about z
+ * (Coriolis and centrifugal): the `general` class's calibration scene; its
+ * exact reference is the inertial ellipse turned back (mech/reference.h). */
+static CS_UNUSED void cs_rotating_oscillator(struct chooser_scene *s, const char *name,
+                                             double periods)
+{
+    cs_oscillator(s, name, periods);
+    s->cls = "general";
+    s->p.frame.type = MECH_FRAME_ROTATING;
+    s->p.frame.omega = mech_vec3_make(0, 0, 0.3);
+    s->p.fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
+}
+
 /* The notes' falling object: 100 m at 32 deg N, g = 9.80665, Coriolis and
  * the centrifugal term of the displacement, until t = sqrt(2 h / g). No
  * exact reference in the trajectory code (compare with a round-off run). */

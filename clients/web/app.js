@@ -2,6 +2,7 @@
 // and the access token of a server started with --token-file (asked for when
 // the server answers 401, kept for this tab's session only).
 import {el, add, getToken, setToken} from './lib.js';
+import {share, parseHash, embedded, embedBar} from './share.js';
 
 // The labs in the course's order: rotations (ch. 0), the rotating table and
 // the tides (ch. 1), … Each lab's module is loaded when it is first shown, so a
@@ -19,11 +20,16 @@ for (const lab of labs)
 
 let showing = 0; // the latest show(): an older one whose module arrives late does not mount
 async function show() {
-  const id = location.hash.slice(1) || labs[0].id;
+  const {id: hashId, params} = parseHash(location.hash); // #lab?state (share.js)
+  const id = hashId || labs[0].id;
   const lab = labs.find(l => l.id === id) || labs[0];
   const me = ++showing;
   for (const a of tabs.querySelectorAll('a'))
-    if (a.id === 'tab-' + lab.id) a.setAttribute('aria-current', 'page'); else a.removeAttribute('aria-current');
+    if (a.id === 'tab-' + lab.id) {
+      a.setAttribute('aria-current', 'page');
+      // on a phone the tabs are one row that scrolls sideways: keep the current one in view
+      if (tabs.scrollWidth > tabs.clientWidth) tabs.scrollLeft = Math.max(0, a.offsetLeft - tabs.offsetLeft - 24);
+    } else a.removeAttribute('aria-current');
   document.title = `${lab.title} — mechd labs`;
   let mod;
   try { mod = await lab.load(); } catch (e) {
@@ -33,8 +39,14 @@ async function show() {
   if (me !== showing) return;
   main.dataset.lab = lab.id;
   mod.mount(main);
+  if (isEmbedded) add(main, embedBar(lab.title));
+  share(main, lab.id, lab.id === id ? params : new URLSearchParams());
 }
+// a hash the page wrote itself (replaceState) fires nothing; one pasted or followed re-mounts the lab
 window.addEventListener('hashchange', () => { show(); main.focus(); });
+// embedded in a course page (?embed=1 or inside a frame): the lab alone, compact
+const isEmbedded = embedded();
+document.body.classList.toggle('embedded', isEmbedded);
 const proj = document.getElementById('projector');
 proj.checked = localStorage.getItem('mechd-projector') === '1';
 document.body.classList.toggle('projector', proj.checked);
@@ -58,11 +70,12 @@ const tokenForm = el('form', {id: 'token-form', class: 'token', hidden: true, 'a
   el('button', {type: 'submit', id: 'token-use'}, 'Use'),
   el('button', {type: 'button', class: 'secondary', id: 'token-forget', onclick: () => {
     setToken(''); tokenInput.value = ''; noteToken(); show();
+    if (chan) chan.postMessage({forget: true});
   }}, 'Forget'), tokenNote);
 function noteToken(msg) {
   tokenNote.textContent = (msg ? msg + ' ' : '') + (getToken()
-    ? 'A token is in use for this tab (sent as Authorization: Bearer; forgotten when the tab closes).'
-    : 'Kept for this tab only, never stored on disk; sent as Authorization: Bearer.');
+    ? 'A token is in use (sent as Authorization: Bearer; shared with this browser\'s other tabs of the labs, never stored on disk, forgotten when the last one closes).'
+    : 'Kept while a tab of the labs is open in this browser, never stored on disk; sent as Authorization: Bearer.');
 }
 function openToken(open, msg) {
   tokenForm.hidden = !open;
@@ -73,6 +86,7 @@ tokenBtn.addEventListener('click', () => openToken(tokenForm.hidden));
 tokenForm.addEventListener('submit', (e) => {
   e.preventDefault();
   setToken(tokenInput.value.trim()); tokenInput.value = '';
+  if (chan && getToken()) chan.postMessage({token: getToken()});
   openToken(false); show();
 });
 let asked = false; // open the panel once per page load, not on every 401 of a lab
@@ -85,6 +99,29 @@ window.addEventListener('mechd:unauthorized', (e) => {
 });
 window.addEventListener('mechd:token-open', () => openToken(true));
 add(document.querySelector('header'), el('div', {class: 'settings'}, tokenBtn), tokenForm);
+
+// The token for the browser session, not just the tab: a new tab asks the
+// labs' other open tabs for it on a BroadcastChannel (same origin only), and
+// one that holds it answers. It lives in each tab's sessionStorage, never on
+// disk: localStorage would keep the secret after the browser closes, on the
+// disk of a shared lab machine; with the channel it is gone once the last tab
+// of the labs closes. Forget forgets it in every tab.
+const chan = typeof BroadcastChannel === 'function' ? new BroadcastChannel('mechd-token') : null;
+let heard = null; // resolves the start-up wait when another tab answers
+if (chan) chan.onmessage = (e) => {
+  const m = e.data || {};
+  if (m.ask) { if (getToken()) chan.postMessage({token: getToken()}); return; }
+  if (m.forget) { setToken(''); noteToken(); return; }
+  if (typeof m.token === 'string' && m.token && !getToken()) {
+    setToken(m.token); noteToken();
+    if (heard) heard();
+    else if (!tokenForm.hidden) { openToken(false); show(); } // it came after this tab's 401: run again with it
+  }
+};
 noteToken();
+if (chan && !getToken()) { // ask, and wait a moment for an answer before the lab's first request
+  await new Promise((r) => { heard = r; chan.postMessage({ask: true}); setTimeout(r, 120); });
+  heard = null;
+}
 
 show();

@@ -68,7 +68,7 @@ let uid = 0;
 // A labelled number (or text/select) control; pointer = the JSON pointer it fills
 // (several, separated by spaces, when one control fills more than one place).
 export function field({label, pointer, value, unit, step = 'any', min, max, type = 'number',
-                       options, id, cls, help}) {
+                       options, id, cls, help, budget}) {
   id = id || 'f' + (++uid);
   const errId = id + '-err';
   let input;
@@ -77,7 +77,7 @@ export function field({label, pointer, value, unit, step = 'any', min, max, type
       options.map(o => el('option', {value: o[0], selected: String(o[0]) === String(value)}, o[1])));
   } else {
     input = el('input', {id, type, value, step: type === 'number' || type === 'range' ? step : undefined,
-      min, max, class: cls, 'data-pointer': pointer, 'aria-describedby': errId,
+      min, max, class: cls, 'data-pointer': pointer, 'aria-describedby': errId, 'data-budget': budget,
       inputmode: type === 'number' ? 'decimal' : undefined});
   }
   const wrap = el('div', {class: 'field'}, el('label', {for: id}, label), input,
@@ -203,22 +203,127 @@ export function curlBox() {
   return {box, update: (path, body) => { pre.textContent = curlCommand(path, body); pyPre.textContent = pythonCommand(path, body); }};
 }
 
+// --- problems in a student's words ------------------------------------------
+// A number as a reader writes it, from the server's 17-digit echo: the shortest
+// form that reads back as the same double ("1.0000000000000001e+300" -> 10³⁰⁰,
+// "148.84600000000001" -> 148.846), large and small ones as m·10ⁿ, thousands
+// grouped (100,000).
+export function shortNum(x) {
+  if (typeof x === 'string') x = Number(x);
+  if (typeof x !== 'number' || !Number.isFinite(x)) return String(x);
+  const s = String(x); // JavaScript's shortest round-trip form
+  const m = /^(-?[\d.]+)e([+-]\d+)$/.exec(s);
+  if (m) return (m[1] === '1' ? '' : m[1] === '-1' ? '−' : m[1].replace('-', '−') + '·') + pow10(Number(m[2]));
+  if (Math.abs(x) >= 1e4 && Number.isInteger(x)) return x.toLocaleString('en-US').replace('-', '−');
+  return s.replace('-', '−');
+}
+// every number in a text in its shortest form
+const NUMBER = /-?\d+(?:\.\d+)?(?:e[+-]?\d+)?/gi;
+export const shortNumbers = (text) => String(text).replace(NUMBER, (t) => /^-?\d{1,4}$/.test(t) ? t : shortNum(t));
+
+// The field's name and unit as the page shows them (its <label>, its unit span).
+function fieldWords(c) {
+  const lab = c && c.id ? document.querySelector(`label[for="${c.id}"]`) : null;
+  const wrap = c && c.closest('.field');
+  const unit = wrap && wrap.querySelector('.unit');
+  return {label: lab ? lab.textContent.trim() : (c && c.getAttribute('aria-label')) || 'this value',
+    unit: unit ? unit.textContent.trim() : '', min: c && c.getAttribute('min'), max: c && c.getAttribute('max')};
+}
+const withUnit = (v, unit) => unit ? `${v} ${unit}`.replace(/ °$/, '°') : v;
+// The allowed range of a control, in words, from its min and max (or the schema's bound in a message).
+function rangeWords(w) {
+  const lo = w.min !== null && w.min !== '' ? shortNum(w.min) : null, hi = w.max !== null && w.max !== '' ? shortNum(w.max) : null;
+  if (lo !== null && hi !== null) return `between ${withUnit(lo, w.unit)} and ${withUnit(hi, w.unit)}`;
+  if (lo !== null) return `at least ${withUnit(lo, w.unit)}`;
+  if (hi !== null) return `at most ${withUnit(hi, w.unit)}`;
+  return '';
+}
+
+// One error's detail in physics words for the control it lands on (c may be
+// null): bounds with the allowed range, an empty field, a name not in a list
+// (the list wraps: it is a <ul> of names, not one long line), the integrator's
+// words (a step size that cannot shrink, a right-hand side that failed),
+// numbers in shortest form. Returns an array of nodes.
+export function plainDetail(detail, c, value) {
+  const d = String(detail || '');
+  const w = fieldWords(c);
+  let m;
+  if ((m = /^must be (>=|>|<=|<) (\S+), got (\S+)$/.exec(d))) {
+    const bound = shortNum(m[2]), got = shortNum(m[3]);
+    // the range: the control's own min and max, the message's bound in place of the side it names
+    const range = rangeWords({...w, ...(m[1] === '>=' ? {min: m[2]} : m[1] === '<=' ? {max: m[2]} : {})});
+    const rule = {'>=': `at least ${withUnit(bound, w.unit)}`, '>': `more than ${withUnit(bound, w.unit)}`,
+      '<=': `at most ${withUnit(bound, w.unit)}`, '<': `less than ${withUnit(bound, w.unit)}`}[m[1]];
+    return [`${w.label} is ${withUnit(got, w.unit)}: it must be ${range && (m[1] === '>=' || m[1] === '<=') ? range : rule}.`];
+  }
+  if ((m = /^must be an? (number|integer|string|object|array)[^,]*, got (null|\S+)$/.exec(d))) {
+    const range = rangeWords(w);
+    if (m[2] === 'null') return [`${w.label} is empty: enter a${m[1] === 'integer' ? ' whole' : ''} number${range ? ' ' + range : ''}.`];
+    return [`${w.label}: enter a${m[1] === 'integer' ? ' whole' : ''} ${m[1] === 'integer' ? 'number' : m[1]}${range ? ' ' + range : ''}.`];
+  }
+  if ((m = /^must be one of \[(.*)/.exec(d))) {
+    const names = [...m[1].matchAll(/"((?:[^"\\]|\\.)*)"/g)].map(x => x[1]);
+    const given = typeof value === 'string' && value ? `“${value}”` : 'That';
+    return [`${given} is not a name this server knows for ${w.label.toLowerCase()}. Known names: `,
+      el('ul', {class: 'names'}, names.map(n => el('li', {}, n)))];
+  }
+  if ((m = /(\w+): cannot reach the requested tolerance at t = (\S+) s \(step size (\S+) s/.exec(d)))
+    return [`The motion could not be followed past t = ${amount(Number(m[2]), 's')}: to keep the accuracy asked for, the time step ` +
+      `had to shrink to ${amount(Number(m[3]), 's')}, which a computer's numbers cannot resolve. Something happens there too fast to ` +
+      'follow (a collision, a body falling into the centre, a force without bound). Try other starting values, a lower accuracy or a shorter time.'];
+  if ((m = /(\w+): (?:the right-hand side failed|bad function value) at t = (\S+) s/.exec(d)))
+    return [`The equations of motion could not be evaluated at t = ${amount(Number(m[2]), 's')} (the bodies reach a point where a force is ` +
+      'infinite or undefined). Try other starting values or a shorter time.'];
+  if (/^is required$/.test(d)) return [`${w.label} is needed.`];
+  return [shortNumbers(d)];
+}
+
+// A compute budget or deadline problem on the control that sets the run's
+// length (data-budget on it: "swings", "orbits", …): "100,000 swings is more than
+// this server runs at once (at most about 54,000); try fewer."
+function budgetDetail(prob, c) {
+  const what = c.dataset.budget, v = Number(c.value);
+  const m = /^(\d+) steps needed, the step budget is (\d+)/.exec((prob && prob.detail) || '');
+  const frac = m ? Number(m[2]) / Number(m[1]) : prob && prob.progress && prob.progress.fraction_done;
+  const most = Number.isFinite(v) && frac > 0 && frac < 1 ? Number((v * frac).toPrecision(2)) : null;
+  const too = prob.type === '/problems/deadline-exceeded' ? 'takes longer than this server allows one request' : 'is more than this server runs at once';
+  const k = most ? 10 ** Math.max(0, Math.floor(Math.log10(most)) - 1) : 1; // two figures, rounded down
+  return `${shortNum(v)} ${what} ${too}${most ? ` (at most about ${shortNum(Math.floor(most / k) * k)})` : ''}; try fewer` +
+    (c.form && c.form.querySelector('[data-role=accuracy]') ? ', or a lower accuracy.' : '.');
+}
+
 // Clear every field error of a form and the general problem box.
 export function clearErrors(form, problemBox) {
   for (const c of form.querySelectorAll('[data-pointer]')) c.removeAttribute('aria-invalid');
-  for (const e of form.querySelectorAll('.err')) e.textContent = '';
-  problemBox.textContent = '';
+  for (const e of form.querySelectorAll('.err')) put(e);
+  put(problemBox);
 }
 
 // Place a problem+json next to the fields its errors[].pointer name: the control
 // whose data-pointer equals the pointer or is its longest prefix, else the first
-// control below it; whatever cannot be placed goes to the problem box.
+// control below it; a compute budget or deadline with no pointer goes to the
+// control marked data-budget; whatever cannot be placed goes to the problem box.
+// Every message is put in physics words (plainDetail); focus moves to the first
+// marked control.
 export function showProblem(form, problemBox, status, prob) {
   clearErrors(form, problemBox);
   const controls = [...form.querySelectorAll('[data-pointer]')];
   const left = [];
-  const errors = Array.isArray(prob && prob.errors) ? prob.errors : [];
+  let errors = Array.isArray(prob && prob.errors) ? prob.errors : [];
+  const budgetCtl = form.querySelector('[data-budget]');
+  const budget = prob && (prob.type === '/problems/compute-budget-exceeded' || prob.type === '/problems/deadline-exceeded');
   let first = null;
+  const mark = (c, nodesOf) => {
+    c.setAttribute('aria-invalid', 'true');
+    const box = document.getElementById((c.getAttribute('aria-describedby') || '').split(' ')[0]);
+    if (box) {
+      const ns = nodesOf();
+      const text = ns.map(n => typeof n === 'string' ? n : n.textContent).join('');
+      if (!box.textContent.includes(text)) add(box, box.textContent ? ' ' : null, ns); // one control may fill several places: once
+    }
+    first = first || c;
+  };
+  if (budget && budgetCtl && !errors.some(e => e.pointer)) { mark(budgetCtl, () => [budgetDetail(prob, budgetCtl)]); errors = []; }
   for (const e of errors) {
     const p = e.pointer || '';
     let best = null;
@@ -227,22 +332,33 @@ export function showProblem(form, problemBox, status, prob) {
       if ((p === cp || p.startsWith(cp + '/')) && cp.length > bestLen) { best = c; bestLen = cp.length; }
     if (!best && p) best = controls.find(c => c.dataset.pointer.split(' ').some(cp => cp.startsWith(p + '/'))) || null;
     if (!best) { left.push(e); continue; }
-    best.setAttribute('aria-invalid', 'true');
-    const box = document.getElementById(best.getAttribute('aria-describedby'));
-    // one control may fill several places (both legs' distance): say a message once
-    if (box && !box.textContent.split('; ').includes(e.detail))
-      box.textContent = (box.textContent ? box.textContent + '; ' : '') + e.detail;
-    first = first || best;
+    mark(best, () => plainDetail(e.detail, best, best.value));
   }
-  const head = `${status} ${prob && prob.title ? prob.title : 'Error'}`;
+  const head = status === 422 && first ? 'Not computed' : `${status} ${prob && prob.title ? prob.title : 'Error'}`;
   const hint = status === 401 ? el('p', {}, 'This server needs an access token: ',
     el('button', {type: 'button', class: 'secondary', onclick: () => window.dispatchEvent(new CustomEvent('mechd:token-open'))},
       'Enter the access token')) : null;
-  if (left.length || !errors.length)
-    add(problemBox, el('strong', {}, head + ': '), (prob && prob.detail) || '',
-      left.length ? el('ul', {}, left.map(e => el('li', {}, `${e.pointer || '(body)'}: ${e.detail}`))) : null, hint);
-  else add(problemBox, el('span', {class: 'muted'}, head + ' — see the marked field' + (errors.length > 1 ? 's' : '') + '.'));
+  if (!first && (left.length || !errors.length))
+    add(problemBox, el('strong', {}, head + ': '), plainDetail((prob && prob.detail) || '', null),
+      left.length ? el('ul', {}, left.map(e => el('li', {}, plainDetail(e.detail, null)))) : null, hint);
+  else if (left.length)
+    add(problemBox, el('ul', {}, left.map(e => el('li', {}, plainDetail(e.detail, null)))));
+  else add(problemBox, el('span', {class: 'muted'}, head + ' — see the marked field' + (form.querySelectorAll('[aria-invalid=true]').length > 1 ? 's' : '') + '.'));
   if (first) first.focus();
+}
+
+// The previous answer while an error stands: the column of results, picture
+// and notes dimmed, with "Not updated" over it, so nobody reads it as the
+// answer to the inputs now in the form. staleMark(S, false) takes it away.
+export function staleMark(S, on) {
+  const col = S.results.parentElement;
+  col.classList.toggle('stale', on);
+  const old = col.querySelector(':scope > [data-role=not-updated]');
+  if (old) old.remove();
+  if (on && S.results.childElementCount)
+    col.prepend(el('p', {class: 'not-updated', 'data-role': 'not-updated'},
+      'Not updated: the answer and picture below are for the previous inputs, not for what is in the form now.'));
+  S.form.dataset.stale = on ? 'true' : 'false';
 }
 
 let examplesPromise = null;
@@ -321,7 +437,9 @@ export function examplePicker(operations, builtin, onLoad, {selected, fits = () 
 // Linear map helper for plots.
 export function scale(d0, d1, r0, r1) {
   const k = (r1 - r0) / ((d1 - d0) || 1);
-  return (x) => r0 + (x - d0) * k;
+  const f = (x) => r0 + (x - d0) * k;
+  f.invert = (y) => d0 + (y - r0) / k; // from the picture back to the units (dragged handles)
+  return f;
 }
 
 // The width in px an <svg class="plot"> is drawn at (its viewBox width): the
@@ -401,7 +519,7 @@ const withFactor = (label, factor) => !factor ? label
   : /\[.*\]$/.test(label) ? label.replace(/\[(.*)\]$/, `[${factor} $1]`) : `${label} [${factor}]`;
 
 function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy = false,
-                                    width = 640, height = 400, equal = false, legend = 'top', marks = []} = {}) {
+                                    width = 640, height = 400, equal = false, legend = 'top', marks = [], frame} = {}) {
   [width, height] = plotSize(root, width, height);
   put(root);
   root.setAttribute('viewBox', `0 0 ${width} ${height}`);
@@ -411,8 +529,9 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   let [x0, x1] = d3.extent(pts, p => tx(p[0])), [y0, y1] = d3.extent(pts, p => ty(p[1]));
   if (x0 === x1) { x0 -= 1; x1 += 1; }
   if (y0 === y1) { y0 -= 1; y1 += 1; }
+  if (frame) [x0, x1, y0, y1] = frame; // held while a handle is dragged: the picture does not rescale under the pointer
   const narrow = width < 480, nx = narrow ? 4 : 6, ny = 5;
-  if (!equal) { // frame ends on round values (whole decades on a log axis)
+  if (!equal && !frame) { // frame ends on round values (whole decades on a log axis)
     if (logx) { x0 = Math.floor(x0); x1 = Math.ceil(x1); } else [x0, x1] = d3.nice(x0, x1, nx);
     if (logy) { y0 = Math.floor(y0); y1 = Math.ceil(y1); } else [y0, y1] = d3.nice(y0, y1, ny);
   }
@@ -460,22 +579,42 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   const hover = []; // [px, py, x, y, series label, colour] of every drawn sample
   const data = svg('g', {class: 'data'});
   add(root, data);
+  const growing = []; // series that grow with an animation: [their element(s), projected points, times]
   series.forEach((s, i) => {
     const c = s.color || colors[i % colors.length];
-    const q = s.points.filter(p => isFinite(tx(p[0])) && isFinite(ty(p[1])));
+    const keep = s.points.map((p, k) => k).filter(k => isFinite(tx(s.points[k][0])) && isFinite(ty(s.points[k][1])));
+    const q = keep.map(k => s.points[k]);
     const p = q.map(r => [X(tx(r[0])), Y(ty(r[1]))]);
     p.forEach((r, k) => hover.push([r[0], r[1], q[k][0], q[k][1], s.label || '', c]));
-    if (s.dots) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c}));
-    else add(data, svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
+    let drawn;
+    if (s.dots) { drawn = p.map(r => svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: s.r || 4, fill: c})); add(data, drawn); }
+    else add(data, drawn = svg('polyline', {points: p.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '), fill: 'none', stroke: c,
       'stroke-width': 2.5, 'stroke-dasharray': s.dash || null}));
+    if (Array.isArray(s.t)) growing.push([drawn, p, keep.map(k => s.t[k])]);
     if (s.markers) for (const r of p) add(data, svg('circle', {cx: r[0].toFixed(2), cy: r[1].toFixed(2), r: 3.5, fill: c}));
     const k = series.slice(0, i).filter(q => q.label).length, lx = below ? 12 : m.l + 8;
     const ly = below ? height - 8 - 20 * (nLeg - 1 - k) : legend === 'bottom' ? height - m.b - 10 - 19 * (series.length - 1 - i) : m.t + 19 + 19 * i;
     if (s.label) add(root, s.dots ? svg('circle', {cx: lx + 9, cy: ly - 5, r: 4, fill: c})
       : svg('line', {x1: lx, y1: ly - 5, x2: lx + 18, y2: ly - 5, stroke: c, 'stroke-width': 3, 'stroke-dasharray': s.dash || null}),
-      svg('text', {x: lx + 24, y: ly, fill: c, 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
+      svg('text', {x: lx + 24, y: ly, fill: textShade(c), 'font-size': 15, 'font-weight': 700, class: 'legend'}, s.label));
   });
-  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b}));
+  for (const mk of marks) add(root, mk({X, Y, tx, ty, top: m.t, bottom: height - m.b, frame: [x0, x1, y0, y1]}));
+  // growing with the animation (anim.js player's grow): the samples up to time t and the point between two
+  // samples at t; Infinity draws everything
+  root._grow = (t) => {
+    root._growT = t;
+    root.dataset.grownTo = String(t);
+    for (const [drawn, p, ts] of growing) {
+      let k = ts.length - 1;
+      if (t !== Infinity) { k = -1; while (k + 1 < ts.length && ts[k + 1] <= t) k++; }
+      if (Array.isArray(drawn)) { drawn.forEach((d, j) => d.setAttribute('visibility', j <= k ? 'visible' : 'hidden')); continue; }
+      const pts = p.slice(0, k + 1);
+      if (k >= 0 && k + 1 < ts.length && t > ts[k]) { const f = (t - ts[k]) / (ts[k + 1] - ts[k]);
+        pts.push([p[k][0] + (p[k + 1][0] - p[k][0]) * f, p[k][1] + (p[k + 1][1] - p[k][1]) * f]); }
+      drawn.setAttribute('points', pts.map(r => r[0].toFixed(2) + ',' + r[1].toFixed(2)).join(' '));
+    }
+  };
+  if (root._growT !== undefined && root._growT !== Infinity) root._grow(root._growT);
   // hover / touch read-out: the nearest sample's values
   const dot = svg('circle', {r: 6, fill: 'none', stroke: '#111', 'stroke-width': 2, visibility: 'hidden'});
   const tip = svg('text', {'font-size': 14, 'font-weight': 700, class: 'readout', visibility: 'hidden'});
@@ -499,6 +638,11 @@ function linePlotNow(root, series, {xlabel = '', ylabel = '', logx = false, logy
   };
   root.onpointerleave = () => { dot.setAttribute('visibility', 'hidden'); tip.setAttribute('visibility', 'hidden'); };
 }
+
+// A line colour as text: the palette's orange (3.0:1 on white), green (4.37:1)
+// and amber darkened to at least 4.5:1; the other colours already are.
+const SHADES = {'#e67700': '#a65300', '#2b8a3e': '#1f6f30', '#f59f00': '#a65300', '#f08c00': '#a65300', '#5c940d': '#3b5e08', '#0ca678': '#087055'};
+export const textShade = (c) => SHADES[String(c).toLowerCase()] || c;
 
 // The data of a line plot as CSV: one block per series ("series,x,y" rows),
 // numbers as the API gave them (full precision).
@@ -634,7 +778,10 @@ export function runner(S, path, build, show) {
   let ctl = null, endCur = null;
   const run = async () => {
     let body;
-    try { body = build(); } catch (e) { put(S.problem, String(e)); S.form.dataset.state = 'error'; return; }
+    try { body = build(); } catch (e) {
+      if (e && e.problem) { fail(422, e.problem); return; } // the lab's own check of an input, placed like the server's
+      put(S.problem, String(e)); S.form.dataset.state = 'error'; staleMark(S, true); return;
+    }
     const p = typeof path === 'function' ? path() : path;
     S.curl.update(p, body);
     if (ctl) { ctl.abort(); endCur(false); }
@@ -646,11 +793,20 @@ export function runner(S, path, build, show) {
     ctl = null;
     end(r.aborted && cancelled);
     if (r.aborted) { S.form.dataset.state = 'cancelled'; return; }
-    if (!r.ok) { showProblem(S.form, S.problem, r.status, r.body); S.form.dataset.state = 'error'; return; }
+    if (!r.ok) { fail(r.status, r.body); return; }
     clearErrors(S.form, S.problem);
-    // show() returns false when the answer carries a failure of its own (a batch item)
-    S.form.dataset.state = show(r.body, body) === false ? 'error' : 'done';
+    // show() returns false when the answer carries a failure of its own (a batch
+    // item) that it has said, or {status, problem} to be placed on the fields
+    let out;
+    try { out = show(r.body, body); } catch (e) {
+      out = {status: r.status, problem: {title: 'Not shown', detail: 'This answer could not be drawn by the page (' + e.message + ').'}};
+    }
+    if (out && out.problem) { fail(out.status || 422, out.problem); return; }
+    staleMark(S, out === false);
+    S.form.dataset.state = out === false ? 'error' : 'done';
   };
+  // an error stands: on its field, the previous answer dimmed and labelled "not updated"
+  const fail = (status, prob) => { showProblem(S.form, S.problem, status, prob); staleMark(S, true); S.form.dataset.state = 'error'; };
   S.form.addEventListener('submit', (e) => { e.preventDefault(); run(); });
   return run;
 }
@@ -793,7 +949,8 @@ export function relWords(r) {
 //   difference said in that unit: 'eV' and 1e6 for values in MeV), how (one line: what is compared), note (more words)}.
 // The box carries data-abs and data-rel (finite numbers) for tests.
 export function notesBox(id) {
-  const box = el('section', {class: 'teach', 'data-role': 'teach', id, 'aria-label': 'What the notes say'});
+  // named by its own heading ("What the notes say: §4 … Deflection of Light"), so two boxes in a lab differ
+  const box = el('section', {class: 'teach', 'data-role': 'teach', id, 'aria-labelledby': id + '-h'});
   const update = (s) => {
     let abs = s.abs, rel = s.rel;
     if (typeof s.formulaValue === 'number' && typeof s.apiValue === 'number') {
@@ -812,7 +969,7 @@ export function notesBox(id) {
       : rel < 1e-12 ? `they agree to round-off: ${amount(abs * k, u)}, ${relWords(rel)}`
       : `${what} is ${typeof s.sign === 'number' ? (s.sign > 0 ? 'high' : 'low') + ' by' : 'off by'} ${amount(abs * k, u)}, ${relWords(rel)}`;
     const shown = (x, t) => t !== undefined ? t : fmt(x) + (s.unit && typeof x === 'number' ? ' ' + s.unit : '');
-    put(box, el('h3', {}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
+    put(box, el('h3', {id: id + '-h'}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
       s.inferred ? el('p', {class: 'muted'}, `(The number §${s.section} is read from the notes' contents: the extracted text lost it.)`) : null,
       el('div', {class: 'formula', 'data-role': 'formula'}, s.formula),
       s.how ? el('p', {class: 'muted'}, s.how) : null,

@@ -1,8 +1,8 @@
 /* rotating_table_scene.c — one POST /v1/scenes/rotating-table computation
  * (mech/rotating_table_scene.h): the experiment's fields checked, the
  * answer and its sample buffers allocated, and scenes.c's table run. Moved
- * from api/ep_scenes.c (issue 17) check for check, so the API's answers
- * stay byte-identical. */
+ * from api/ep_scenes.c (a handler only parses, calls core once and encodes)
+ * check for check, so the API's answers stay byte-identical. */
 #include "mech/rotating_table_scene.h"
 
 #include <math.h>

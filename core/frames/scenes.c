@@ -204,7 +204,7 @@ enum mech_status mech_scene_ballistic_run(const struct mech_scene_ballistic *s, 
 /* ---- the rotating table --------------------------------------------------- */
 
 /* Components in the table's axes at time t of an inertial vector (passive
- * rotation by w t about z, DESIGN.md conventions): x' = x cos + y sin,
+ * rotation by w t about z: rotations are passive, docs/design.md): x' = x cos + y sin,
  * y' = -x sin + y cos. */
 static struct mech_vec3 to_table(struct mech_vec3 a, double wt)
 {

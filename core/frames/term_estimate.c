@@ -9,7 +9,7 @@
 #include <string.h>
 
 /* ---- modelling only what the scene requires --------------------------------
- * DESIGN.md promise 3 and issue 6: estimate each fictitious term's effect on
+ * Model only what the scene requires (docs/design.md): estimate each fictitious term's effect on
  * the returned positions and velocities before integrating, keep only those
  * that matter at the accuracy asked for, say why for every one. */
 

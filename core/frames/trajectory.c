@@ -126,7 +126,8 @@ static double tide_potential(const struct mech_force *f, struct mech_vec3 r)
 
 /* The typed error of force_accel at the centre of central_gravity force i.
  * Kept out of line (cold): its message buffer would otherwise sit in the
- * frame of the hot force loop (issue 16: trajectory overhead). */
+ * frame of the hot force loop (the trajectory costs at most 1.5x its bare
+ * integrator, bench/bench_trajectory_overhead.c). */
 static __attribute__((noinline, cold)) enum mech_status
 central_gravity_error(const struct traj_ctx *c, size_t i, double dn, double t)
 {
@@ -233,7 +234,7 @@ static enum mech_status nonfinite_error(const struct traj_ctx *c, double t, stru
                           t, c->t_last, c->r_last.x, c->r_last.y, c->r_last.z);
 }
 
-/* ---- the force loop's fast path (issue 16: trajectory overhead) -------------
+/* ---- the force loop's fast path (trajectory overhead) -----------------------
  * Scenes whose acceleration is a sum of central gravity, uniform gravity,
  * springs and linear drag with no fictitious term (every Kepler, oscillator
  * and falling-object scene of an inertial frame) are evaluated straight from
@@ -639,9 +640,10 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
         c->pn1_max = fmax(c->pn1_max, pa);
         c->pn1_ratio = fmax(c->pn1_ratio, pa / (f->u.central_gravity.gm / (d * d)));
     }
-    /* Fictitious terms are sized even when omitted (DESIGN: say what was
-     * left out, with its size); all four are exactly 0 in an inertial frame
-     * (w = dw/dt = A = 0 there, ctx_init), where term_max keeps its 0. */
+    /* Fictitious terms are sized even when omitted (model only what the
+     * scene requires, and say what was left out, with its size); all four
+     * are exactly 0 in an inertial frame (w = dw/dt = A = 0 there,
+     * ctx_init), where term_max keeps its 0. */
     if (c->noninertial) {
         const struct mech_vec3 wt = omega_at(c, t);
         c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
@@ -970,9 +972,10 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
         u_samples = malloc(p->samples * 4 * sizeof *u_samples);
         if (!u_samples) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
     }
-    if (c->simple) { /* the force loop's fast path, called directly (issue 16) */
+    if (c->simple) { /* the force loop's fast path, called directly */
         sys.rhs = c->dim2 ? simple_rhs2 : simple_rhs3;
         sys.accel = c->dim2 ? simple_accel2 : simple_accel3;
+        sys.flags |= MECH_ODE_FINITE_OUTPUT; /* simple_accel screens q, v and a */
     }
     struct mech_ode_kepler_split ks;
     if (c->kepler_index >= 0) { /* one central body: offer the Kepler split */

@@ -81,7 +81,15 @@ static void traj_profile(const struct mech_trajectory_problem *p,
         if (p->forces[i].type != MECH_FORCE_UNIFORM_GRAVITY) only_uniform = 0;
     const double w_run = mech_vec3_norm(mech_frame_omega(&p->frame)) * p->t_end;
     if (p->frame.type != MECH_FRAME_INERTIAL && !(w_run < 1e-2)) only_uniform = 0;
-    s->cls = central        ? MECH_SCENE_CENTRAL_GRAVITY
+    /* a frame that turns appreciably over the run, its rotation terms
+     * modelled: general whatever the forces (Coriolis makes radau15 iterate
+     * its stages on the velocity: ~166 evaluations per dynamical time on the
+     * rotating oscillator against the inertial oscillator's ~33, so the
+     * inertial classes' rows mispredict it 3-4x) */
+    const int turning = p->frame.type != MECH_FRAME_INERTIAL && !(w_run < 1e-2) &&
+                        (p->fictitious & (MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL));
+    s->cls = turning        ? MECH_SCENE_GENERAL
+           : central        ? MECH_SCENE_CENTRAL_GRAVITY
            : spring         ? MECH_SCENE_OSCILLATOR
            : only_uniform   ? MECH_SCENE_UNIFORM_FIELD
                             : MECH_SCENE_GENERAL;
@@ -99,7 +107,7 @@ static void traj_profile(const struct mech_trajectory_problem *p,
     mech_trajectory_reference_find(p, &ref);
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;
-    mech_chooser_profile_orbit(s, p); /* core/ode/chooser_orbit.c */
+    mech_chooser_profile_orbit(s, p); /* core/frames/chooser_orbit.c */
     if (p->relativity & MECH_RELATIVITY_SPECIAL) {
         /* integrated as (r, u = gamma v): first order, no Kepler split */
         s->second_order = 0;

@@ -1,7 +1,8 @@
 /* trajectory_model.c — the auto-model, "fictitious": "auto"
  * (mech_trajectory_model_select, mech/trajectory.h): which fictitious terms
  * a scene needs at the accuracy asked for, judged from a cheap first pass
- * with every applicable term (DESIGN.md promise 3, issue 6). */
+ * with every applicable term: model only what the scene requires, and say
+ * what was left out with its size (docs/design.md). */
 #include "mech/trajectory.h"
 
 #include <stdio.h> /* snprintf only, for the reason text */

@@ -25,11 +25,13 @@ static double asin_minus(double s)
 enum mech_status mech_radial_infall_from_rest(double r0, struct mech_radial_infall *out,
                                               struct mech_error *err)
 {
-    if (!isfinite(r0) || !(r0 > 2.0) || r0 > 1e200)
+    if (!isfinite(r0) || !(r0 >= 2.0 * (1 - 1e-12)) || r0 > 1e200)
         return mech_error_set(err, MECH_EDOMAIN, "infall_from",
-                              "a fall from rest starts outside the horizon, 2 < r0 <= 1e200 "
-                              "GM/c^2; got %.17g",
+                              "a fall from rest starts at or outside the horizon, 2 <= r0 <= "
+                              "1e200 GM/c^2; got %.17g",
                               r0);
+    out->on_horizon = r0 <= 2.0;
+    if (out->on_horizon) r0 = 2.0; /* the limit from outside; s = 1 below is exact */
     /* r = r0 cos²(η/2): the horizon at η_h = 2 acos(s), s = sqrt(2/r0), sin η_h =
      * 2 s sqrt(1 − s²); τ = A (η + sin η) with A = sqrt(r0³/8) = r0 sqrt(r0/8). */
     const double A = r0 * sqrt(r0 / 8.0), s = sqrt(2.0 / r0), cs = sqrt(1.0 - s * s);

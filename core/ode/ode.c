@@ -38,6 +38,7 @@ enum mech_status mech_ode_eval(const struct mech_ode_system *sys, double t, cons
     enum mech_status st = sys->rhs(t, y, dydt, sys->params);
     if (st != MECH_OK)
         return mech_error_set(err, st, NULL, "the right-hand side failed at t = %.9g s", t);
+    if (sys->flags & MECH_ODE_FINITE_OUTPUT) return MECH_OK; /* the rhs tested them */
     /* every component finite: x * 0 is 0 for finite x, NaN for inf or NaN;
      * one branch instead of one per component (this runs at every stage) */
     double z = 0.0;
@@ -57,6 +58,7 @@ enum mech_status mech_ode_accel(const struct mech_ode_system *sys, double t, con
     enum mech_status st = sys->accel(t, q, v, a, sys->params);
     if (st != MECH_OK)
         return mech_error_set(err, st, NULL, "the acceleration failed at t = %.9g s", t);
+    if (sys->flags & MECH_ODE_FINITE_OUTPUT) return MECH_OK; /* the accel tested them */
     for (size_t i = 0; i < sys->dim / 2; i++)
         if (!isfinite(a[i]))
             return mech_error_set(err, MECH_ENUMERIC, NULL,

@@ -74,6 +74,7 @@ static void threshold(const struct mech_collision_request *q, double w,
         th->has_fixed_target = 1;
         th->fixed_target_beam_energy = m1 + t;
         th->fixed_target_beam_kinetic = t;
+        th->fixed_target_beam_momentum = sqrt(t * (t + 2 * m1));
     }
     if (m1 == m2 && sum / 2 >= m1) {
         th->has_symmetric_collider = 1;
@@ -104,6 +105,7 @@ static int answer_finite(const struct mech_collision_answer *a)
                         th->sqrt_s,
                         th->fixed_target_beam_energy,
                         th->fixed_target_beam_kinetic,
+                        th->fixed_target_beam_momentum,
                         th->symmetric_collider_beam_energy,
                         cm->energy};
     for (size_t i = 0; i < sizeof x / sizeof x[0]; i++)

@@ -1,5 +1,5 @@
 /* rigid_closed_form.c — the torque-free rigid body answered from its exact
- * solution, attitude included (mech/rigid_closed_form.h, issue 16): omega(t) from
+ * solution, attitude included (mech/rigid_closed_form.h): omega(t) from
  * mech_rigid_exact_omega (Jacobi elliptic functions, or the symmetric and
  * steady forms), and the orientation from the fixed angular momentum
  * (Landau & Lifshitz §37): in the frame with L along z, the Euler angles

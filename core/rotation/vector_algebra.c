@@ -74,6 +74,15 @@ enum mech_status mech_vector_pair(struct mech_vec3 a, struct mech_vec3 b,
         r.b_on_a = vldexp(mech_vec3_scale(ua, bu), eb);
         r.b_across_a = vldexp(mech_vec3_sub(bs, mech_vec3_scale(ua, bu)), eb);
     }
+    r.difference = mech_vec3_sub(a, b);
+    r.sum = mech_vec3_add(a, b);
+    int ed;
+    struct mech_vec3 ds2 = scaled(r.difference, &ed);
+    r.distance = ldexp(mech_vec3_norm(ds2), ed);
+    if (!mech_vec3_isfinite(r.difference) || !mech_vec3_isfinite(r.sum) || !isfinite(r.distance))
+        return mech_error_set(err, MECH_EDOMAIN, "b",
+                              "a + b or a - b is beyond the double range (1.8e308); scale the "
+                              "units");
     *out = r;
     return MECH_OK;
 }

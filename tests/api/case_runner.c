@@ -11,7 +11,7 @@
  * (the longest matching `tolerances` pointer prefix wins); other values exactly.
  * Every 200 answer must also match its operation's response schema (its data
  * file's response_schema, shown in GET /v1 and OpenAPI), whole, so the
- * documentation of the answers cannot drift from the code (issue 17).
+ * documentation of the answers cannot drift from the code.
  */
 #include <gsl/gsl_errno.h>
 #include <jansson.h>

@@ -1,4 +1,4 @@
-/* scene_set.h — issue 16's scene set as API requests, with the references
+/* scene_set.h — the accuracy presets' scene set as API requests, with the references
  * each scene is measured against (Kepler's equation, cos/sin, the Jacobi
  * closed form, or an independent run of a different method at rtol 1e-14),
  * shared by tests/api/test_preset_scenes.c and bench/bench_workprecision.c

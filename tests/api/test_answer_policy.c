@@ -1,6 +1,5 @@
 /* test_answer_policy.c — through api_handle_ext(), with no socket: what an
- * answer may be cached as, how large it may be, and what its problems say
- * (issue 15, items 4, 5b, 5d).
+ * answer may be cached as, how large it may be, and what its problems say.
  *
  * - A batch answer that depended on the deadline (items stopped by it) sets
  *   depends_on_load and gets no ETag and Cache-Control no-store, while the

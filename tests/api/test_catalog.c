@@ -30,7 +30,7 @@ static json_t *get_json(const char *method, const char *path, const char *body, 
     return j;
 }
 
-/* Remove every "cost" member, at any depth: DESIGN.md exempts fields under
+/* Remove every "cost" member, at any depth: byte-identity (docs/design.md) exempts fields under
  * "cost" (measured time) from byte-identity, wherever they appear. */
 static void strip_cost(json_t *j)
 {

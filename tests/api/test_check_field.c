@@ -1,12 +1,12 @@
 /* test_check_field.c — POST /v1/check reads what a field is (its kind and
  * unit) from the operations' response schemas (x-mechd-check annotations,
- * api/check_field.c), issue 20:
+ * api/check_field.c):
  *   1. every entry of the C table the annotations replaced resolves to the
  *      same kind and unit as before (the frozen list below is that table,
  *      copied from api/check_kind.c before it was deleted; "*" = any index);
  *   2. every annotation of every route names a kind and a unit mechd knows
  *      (templates: for every value of the answer string they read), at
- *      least as many as issue 20 wrote, and a few added later;
+ *      least as many as the first table had, and a few added later;
  *   3. the walk on a small schema: properties (escaped names), items (index
  *      tokens only), oneOf, units inherited through items but not properties,
  *      an unknown kind or unit ignored, pointers the schema does not describe;
@@ -203,8 +203,8 @@ static void all_routes(void)
     for (size_t i = 0; i < api_route_count; i++)
         every_annotation(api_route_response_schema(i), api_routes[i]->path, &count);
     printf("%zu x-mechd-check annotations\n", count);
-    /* the old table (34) + the ones added with it (259, issue 20); more came
-     * since (relativity, continuum, frames, rigid, ...: issue 17), and more may */
+    /* the old table (34) + the ones added with it (259); more came
+     * since (relativity, continuum, frames, rigid, ...), and more may */
     CHECK(count >= 34 + 259);
 
     /* a few of the added ones, read against their handlers */

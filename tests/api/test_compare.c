@@ -357,7 +357,7 @@ static void test_integrators_catalog(void)
     json_t *cat = api_integrators_catalog();
     json_t *ms = json_object_get(cat, "methods");
     CHECK_EQ_INT(json_array_size(ms), mech_ode_method_count());
-    CHECK_EQ_INT(json_array_size(ms), 16); /* issue 16: + wisdom_holman(_corrected) */
+    CHECK_EQ_INT(json_array_size(ms), 16); /* with wisdom_holman(_corrected) */
     /* The method lists of /v1/trajectory's integrator block (its data file,
      * api/ops/frames/trajectory.json): oneOf[0] adaptive, oneOf[1] fixed-step. */
     const json_t *schema = NULL;

@@ -1,5 +1,5 @@
-/* test_envelope.c — every operation takes the envelope keys (DESIGN.md: "Every
- * operation, with or without an integrator, takes the same envelope keys").
+/* test_envelope.c — every operation takes the envelope keys (docs/design.md:
+ * every operation, with or without an integrator, takes the same envelope keys).
  * The test walks the whole route table, so a route added later is covered
  * without touching this file: each POST route's catalog example with
  * "cost": false answers 200 with no "cost" member anywhere; with "cost": true

@@ -1,6 +1,6 @@
 /* test_preset_cost.c — the chooser's COST prediction against what the run
- * spent (issue 16, "the selection's predicted error/cost is within a stated
- * factor of the achieved one"): on every scene of tests/api/scene_set.h,
+ * spent (the selection's predicted error/cost is within a stated
+ * factor of the achieved one): on every scene of tests/api/scene_set.h,
  * the rotating table and the Foucault pendulum (100 swings: exactly, and
  * its dry run integrates nothing), each integrating preset's
  * chosen candidate's predicted_evaluations is within COST_FACTOR of the

@@ -1,4 +1,4 @@
-/* test_preset_scenes.c — issue 16: every accuracy preset keeps its promise
+/* test_preset_scenes.c — every accuracy preset keeps its promise
  * (draft 1e-3, balanced 1e-8, precise 1e-10, machine 1e-11) on every scene
  * of the issue's set, measured through the API (api_handle, JSON requests:
  * what a user gets), never a timing.
@@ -26,15 +26,15 @@
  * relative") is checked against X instead, and printed "re-stated".
  *
  * Modes: no argument — every scene but the known misses; "--known-misses"
- * — only those (registered in CMakeLists.txt with WILL_FAIL, issue 16: the
+ * — only those (registered in CMakeLists.txt with WILL_FAIL: the
  * presets' promise is not yet kept there; the chooser rewrite must turn
  * them green, then they move back to the main list).
  */
 #include "scene_set.h"
 #include "testlib.h"
 
-/* Scenes where a preset misses its promise on today's code (issue 16, the
- * chooser rewrite): "scene/preset". Filled from the measured run; empty
+/* Scenes where a preset misses its promise on today's code (for the
+ * chooser to fix): "scene/preset". Filled from the measured run; empty
  * when every promise is kept. */
 static const char *const KNOWN_MISSES[] = {
     /* none: the five registered before (Kepler e = 0.9 10 orbits machine,
@@ -141,7 +141,7 @@ int main(int argc, char **argv)
             printf("\n");
             fflush(stdout);
             CHECK(err <= restated);
-            /* the prediction (issue 16): achieved at most 30x the chosen
+            /* the prediction: achieved at most 30x the chosen
              * candidate's predicted error (the answers' within_prediction
              * factor) wherever the error is above round-off, and at least
              * 1/100 of it away from the round-off floor (prediction > 1e-11;

@@ -1,6 +1,6 @@
 /* test_problem.c — pins every mech_status to its name, its problem kind, HTTP
  * status and type URI, and every problem kind to its status/type/title
- * (STYLE.md §5: codes are append-only; a renumbering or a changed URI fails here). */
+ * (codes are append-only; a renumbering or a changed URI fails here). */
 #include <gsl/gsl_errno.h>
 #include <string.h>
 

@@ -1,4 +1,4 @@
-/* test_process_setup.c — process-wide set-up is main()'s (issue 17): the API
+/* test_process_setup.c — process-wide set-up is main()'s: the API
  * layer does not install jansson's allocator behind the caller's back, so
  * api_init() without api_install_json_allocator() first refuses, says why,
  * and every request then gets a 500 problem (never an answer built without

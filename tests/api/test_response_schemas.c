@@ -3,7 +3,7 @@
  * that compiles, is an object schema with properties, and that the answer to
  * the catalog's example matches — with and without "cost" — as do the answers
  * of the GET routes. The API cases check their own 200 answers the same way
- * (case_runner.c), so the documentation of the answers cannot drift (issue 17).
+ * (case_runner.c), so the documentation of the answers cannot drift.
  * Negative checks show the validation can fail: an answer with a required
  * member removed, or a member of the wrong type, is refused. */
 #include <gsl/gsl_errno.h>

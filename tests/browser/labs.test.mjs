@@ -3,7 +3,7 @@
 // against a real mechd started on port 0. For each lab: the page loads, the
 // default request is submitted, the numbers the API returns are shown (checked
 // against closed forms), and an invalid input shows its error next to the
-// field it names. Then, as a user would (issue 15): every worked example in
+// field it names. Then, as a user would: every worked example in
 // every lab's picker loads, computes and leaves the picker showing it, with no
 // error box and no "null", "undefined" or "NaN" on the page; at 390 px no lab
 // scrolls sideways, plot text reads at >= 10 px and the spacetime β slider
@@ -12,7 +12,7 @@
 // can be cancelled; and against a mechd started with --token-file the 401
 // leads to an access-token field that makes the labs work. Screenshots of
 // every lab at 1280×800 and 390×844 go to the directory given (default
-// ./screenshots). Issue 19: animations play and pause, the time slider moves
+// ./screenshots). Motion, 3-D and plots: animations play and pause, the time slider moves
 // the time, 3-D views are drawn and turn on drag and keys (and keep their
 // WebGL context over many visits), ticks are round, the orbit has equal
 // aspect, log axes read 10ⁿ, and the CSV export holds the API's numbers;
@@ -176,7 +176,7 @@ await lab('inertia', async () => {
   close(await value('#inertia-moment-1'), 11 / 12, 1e-12, 'cube: I2 = 11/12');
   close(await value('#inertia-moment-2'), 11 / 12, 1e-12, 'cube: I3 = 11/12');
   check((await page.textContent('.curl pre')).includes('/v1/rigid/inertia'), 'inertia: curl command shown');
-  await invalid('main form', '#inertia-mass-0', -1, '#inertia-submit', '> 0');
+  await invalid('main form', '#inertia-mass-0', -1, '#inertia-submit', 'more than 0');
   // keyboard: the view rotates with the arrow keys without an error
   await page.focus('#inertia-view'); await page.keyboard.press('ArrowLeft');
   // every worked example offered loads and computes without an error
@@ -214,7 +214,7 @@ await lab('spacetime', async () => {
   close(await value('#tw-home'), 20, 1e-12, 'twins: stay-at-home 20 yr');
   close(await value('#tw-proper'), 12, 1e-12, 'twins: traveller 12 yr');
   await invalid('main form', '#st-beta', 1.5, '#st-submit', 'beta');
-  await invalid('#twin-form', '#tw-dist', -8, '#tw-submit', '> 0');
+  await invalid('#twin-form', '#tw-dist', -8, '#tw-submit', 'more than 0');
   const general = await page.textContent('#twin-form + .problem');
   check(!general.includes('/legs/'), `twins: both legs' errors sit at the distance field (box: "${general}")`);
 });
@@ -232,7 +232,7 @@ await lab('earth', async () => {
   close(Math.abs(await value('#fou-rate')), wsin, 2e-3, 'Foucault: measured rate within the Airy correction');
   await state('#can-form', 'done');
   check((await value('#can-right')) > 0, 'cannonball: deflected to the right in the northern hemisphere');
-  await invalid('#fall-form', '#fall-height', -5, '#fall-submit', '> 0');
+  await invalid('#fall-form', '#fall-height', -5, '#fall-submit', 'more than 0');
   await invalid('#can-form', '#can-lat', 95, '#can-submit', '90');
 });
 
@@ -243,7 +243,7 @@ await lab('tops', async () => {
   check((await page.textContent('#top-sleeping')) === 'true', 'top: the sleeping-top condition holds');
   await state('#dz-form', 'done');
   check(Number.isFinite(await value('#dz-flip')), 'Dzhanibekov: the exact flip interval is shown');
-  await invalid('main form', '#top-I1', 0, '#top-submit', '> 0');
+  await invalid('main form', '#top-I1', 0, '#top-submit', 'more than 0');
 });
 
 await lab('orbits', async () => {
@@ -251,12 +251,12 @@ await lab('orbits', async () => {
   const GM = 1.32712440041279419e20, c = 299792458, a = 57909050000, e = 0.20563593;
   close(await value('#orb-first'), 6 * Math.PI * GM / (c * c * a * (1 - e * e)), 1e-9, 'Mercury: 6 pi GM/(c^2 a (1-e^2))');
   close(await value('#orb-century'), 42.98, 1e-3, 'Mercury: 43 arcsec per century');
-  await invalid('main form', '#orb-e', 1.5, '#orb-submit', '< 1');
+  await invalid('main form', '#orb-e', 1.5, '#orb-submit', 'less than 1');
   await state('#light-form', 'done');
   const b = 696340000, arcsec = 180 / Math.PI * 3600;
   close(await value('#light-first'), 4 * GM / (c * c * b) * arcsec, 1e-9, 'light bending: 4GM/(c^2 b) at the limb');
   close(await value('#light-measured'), 1.75, 1e-3, 'light bending: 1.75 arcsec measured');
-  await invalid('#light-form', '#light-b', -1, '#light-submit', '>= 0');
+  await invalid('#light-form', '#light-b', -1, '#light-submit', 'at least 0');
 });
 
 await lab('accuracy', async () => {
@@ -264,10 +264,10 @@ await lab('accuracy', async () => {
   const rows = await page.$$('#acc-table tr');
   check(rows.length > 4, `accuracy: the runs are listed (${rows.length - 1})`);
   check(await page.$('#acc-plot polyline') !== null, 'accuracy: the work-precision plot is drawn');
-  await invalid('main form', '#acc-t', -20, '#acc-submit', '> 0');
+  await invalid('main form', '#acc-t', -20, '#acc-submit', 'more than 0');
 });
 
-// --- issue 15: the labs as a user meets them ------------------------------------
+// --- the labs as a user meets them ----------------------------------------------
 const LABS = ['inertia', 'spacetime', 'earth', 'tops', 'orbits', 'accuracy', 'rotations', 'table', 'tides', 'phase', 'particles'];
 
 // Wait until every form of the lab has answered (done, error or cancelled) and
@@ -315,7 +315,7 @@ async function everyExample(id) {
 }
 
 
-// --- each lab teaches (issue 19): the notes' formula, its section, its value beside the API's, the
+// --- each lab teaches: the notes' formula, its section, its value beside the API's, the
 // difference in words; "Copy as curl" and "Copy as Python" put the request on the clipboard; changing an
 // input changes the answer; at desktop and at phone size (where every worked example is loaded again) ----
 // For each lab: an input, a new value for it, the button that runs it, and a number the answer shows.
@@ -499,7 +499,7 @@ await lab('tops', async () => {
   await page.click('#top-submit');
   await state('main form', 'error');
   const box = (await page.textContent('main .problem')).trim();
-  check(box === '422 Compute budget exceeded: step budget of 10000000 steps exhausted',
+  check(box === '422 Compute budget exceeded: step budget of 10,000,000 steps exhausted',
     `a problem's detail is shown as it is, nothing appended (got "${box}")`);
   await page.unrouteAll({behavior: 'ignoreErrors'});
 }, 'problem-detail');
@@ -580,7 +580,7 @@ await lab('accuracy', async () => {
   } finally { small.proc.kill(); }
 }
 
-// --- issue 19: motion you can watch, 3-D you can turn, plots that read -----------
+// --- motion you can watch, 3-D you can turn, plots that read --------------------
 // A 3-D canvas' pixels: how many are not the white background, and a digest
 // to tell two frames apart (WebGL with preserveDrawingBuffer: readable).
 const pixels = (sel) => page.$eval(sel, (c) => {
@@ -784,7 +784,7 @@ await lab('earth', async () => {
   check(Math.abs(Number(last[2])) < 1e-9, `falling object: the animated path ends on the ground (z = ${last[2]})`);
 }, 'anim-earth');
 
-// --- issue 19, second half: the new labs (rotations, rotating table, tides,
+// --- the newer labs (rotations, rotating table, tides,
 // phase space, particles), each against closed forms computed here ------------
 const clearStates = () => page.evaluate(() => { for (const f of document.querySelectorAll('main form')) delete f.dataset.state; });
 const setRange = (sel, v) => page.$eval(sel, (e, v) => { e.value = String(v); e.dispatchEvent(new Event('input', {bubbles: true})); }, v);
@@ -941,7 +941,7 @@ await lab('phase', async () => {
   await page.click('#pc-submit'); await state('#poincare-form', 'done');
   check(await page.$$eval('#pc-plot circle', (c) => c.length) !== dots0 || await value('#pc-crossings') !== dots0, 'phase: a new energy gives a new section');
   await page.fill('#ph-a', '-1'); await page.click('#ph-submit'); await state('main form', 'error');
-  check(/semi_axes/.test(await page.textContent('#ph-error')) && await page.getAttribute('#ph-a', 'aria-invalid') === 'true', 'phase: a negative half-width is refused at its field');
+  check(/half-width/.test(await page.textContent('#ph-a-err')) && await page.getAttribute('#ph-a', 'aria-invalid') === 'true', 'phase: a negative half-width is refused at its field');
 }, 'new-phase');
 
 await lab('particles', async () => {
@@ -974,7 +974,7 @@ await lab('particles', async () => {
   await invalid('main form', '#dk-T', -5, '#dk-submit', 'cannot be negative');
 }, 'new-particles');
 
-// --- the Foucault pendulum's swing plane over the Earth in 3-D (issue 19) -----
+// --- the Foucault pendulum's swing plane over the Earth in 3-D -----
 // Over one sidereal day the plane turns on the floor by the measured rate × the
 // day, which is 360° sin λ to first order (ω sin λ × 2π/ω): at the Panthéon's
 // 48.846° N, 271.1° clockwise. From the stars the Earth turns a full 360°;

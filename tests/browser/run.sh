@@ -1,8 +1,8 @@
 #!/bin/sh
 # run.sh — run the browser tests of the classroom front end.
 #   tests/browser/run.sh MECHD_BINARY [SCREENSHOT_DIR]
-# MECHD_BROWSER_SCRIPT=screenshots.mjs runs that script of this directory
-# instead of labs.test.mjs, with the same set-up (scripts/readme-screenshots.sh).
+# MECHD_BROWSER_SCRIPT=screenshots.mjs (or sim.test.mjs) runs that script of this
+# directory instead of labs.test.mjs, with the same set-up (scripts/readme-screenshots.sh).
 # Installs playwright-core (pinned in package-lock.json) with `npm ci` into a
 # work directory under the current directory (the build tree), never into the
 # source tree, and never downloads a browser: Debian's /usr/bin/chromium is used
@@ -59,7 +59,7 @@ fi
 echo "run.sh: node $(node --version) ($(command -v node))" >&2
 
 script=${MECHD_BROWSER_SCRIPT:-labs.test.mjs}
-case $script in labs.test.mjs|screenshots.mjs) ;; *) echo "run.sh: MECHD_BROWSER_SCRIPT must be labs.test.mjs or screenshots.mjs" >&2; exit 2 ;; esac
+case $script in labs.test.mjs|sim.test.mjs|screenshots.mjs) ;; *) echo "run.sh: MECHD_BROWSER_SCRIPT must be labs.test.mjs, sim.test.mjs or screenshots.mjs" >&2; exit 2 ;; esac
 cp "$here/package.json" "$here/package-lock.json" "$here/$script" "$work/"
 install_locked "$work"
 export MECHD_WEB_ROOT="${MECHD_WEB_ROOT:-$here/../../clients/web}"

@@ -1,5 +1,5 @@
-/* fuzz_api.c — libFuzzer harness for the API entry point (issue 9, "Hostile
- * input"): arbitrary bytes as the request body of every operation, through
+/* fuzz_api.c — libFuzzer harness for the API entry point (hostile
+ * input): arbitrary bytes as the request body of every operation, through
  * api_handle_ext() with no socket.
  *
  * Input layout: byte 0 = flags, byte 1 = route selector, rest = body.

@@ -6,7 +6,7 @@ Usage: /usr/bin/python3 test_examples.py PATH/TO/mechd
 Starts `mechd --port 0`, fetches GET /v1/examples and checks that the catalog
 parses and is well formed (unique ids, every field present, operation is a POST
 operation of GET /v1, rounding is {"relative": r} or {"absolute": a}), that the
-notes' worked examples named by issue 8 are all there, and then POSTs every
+notes' worked examples listed below are all there, and then POSTs every
 example's request to its operation: status 200, and the number at
 notes_answer.pointer equals notes_answer.value within notes_answer.rounding.
 The comparison is also checked to reject a wrong value, so the test can fail.
@@ -28,7 +28,7 @@ if len(sys.argv) < 2:
     sys.exit(2)
 MECHD = os.path.abspath(sys.argv[1])
 
-# The notes' worked examples issue 8 names (chapters 0-3) and the labs' extras:
+# The notes' worked examples every release must carry (chapters 0-3) and the labs' extras:
 # each must be in the catalog (matched by a word of the id).
 REQUIRED = ["rotation", "puck", "falling-object", "cannonball", "foucault", "tides-moon",
             "tides-sun", "dumbbell", "cube-centre", "cube-corner", "cube-corner-principal",

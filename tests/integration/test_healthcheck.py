@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """test_healthcheck.py — `mechd healthcheck`, the container HEALTHCHECK without
-curl (issue 20): exit 0 against a running mechd (by --port and by MECHD_PORT),
+curl: exit 0 against a running mechd (by --port and by MECHD_PORT),
 1 when nothing listens, when the answer is not 200 (a fake server answering
 503) and when the server never answers (a silent listener, --timeout-ms), 2
 for a usage error. Timing is never asserted, only that a silent server does not

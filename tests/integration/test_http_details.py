@@ -1,5 +1,5 @@
-"""test_http_details.py — HTTP details and answer budgets of a real mechd (issue 15, items 4, 5b
-and 5d), checked on the wire:
+"""test_http_details.py — HTTP details and answer budgets of a real mechd,
+checked on the wire:
 
 - GET of an operation without ?request= is a 400 problem saying what is needed, not a 405;
 - a 304 never carries Content-Length: 0 (RFC 9110 8.6: only the 200's length, or none);

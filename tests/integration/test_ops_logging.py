@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_ops_logging.py — operations items of issue 20: every problem names its
+"""test_ops_logging.py — what operators need: every problem names its
 request (the body's "request_id" equals the X-Request-Id header: the client's
 when valid, else a generated 32-hex id), and --log-format json
 (MECHD_LOG_FORMAT=json) writes every log line as one JSON object with the

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Connection floods do not take /healthz down (issue 15, item 5c; Python 3
+"""Connection floods do not take /healthz down (Python 3
 stdlib only).
 
 Usage: /usr/bin/python3 test_srv_connection_flood.py PATH/TO/mechd

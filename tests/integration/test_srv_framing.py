@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """HTTP body framing is refused when it is ambiguous, and an over-long chunked
-body is cut off (issue 15, item 5e; raw sockets, Python 3 stdlib only).
+body is cut off (raw sockets, Python 3 stdlib only).
 
 Usage: /usr/bin/python3 test_srv_framing.py PATH/TO/mechd
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""test_srv_ops.py — what an operator sees (issue 20): the access log, request
+"""test_srv_ops.py — what an operator sees: the access log, request
 ids, and the SIGTERM grace period.
 
 Usage: /usr/bin/python3 test_srv_ops.py PATH/TO/mechd

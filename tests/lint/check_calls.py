@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """check_calls.py BUILD_DIR SOURCE_DIR — no two source files of core/, api/ or server/
-depend on each other in a loop through their code (issue 17: "no include
+depend on each other in a loop through their code ("no include
 cycles"; check_includes.py covers the headers, this the calls).
 
 Read from the compiled objects of libmech, libmechapi and mechd

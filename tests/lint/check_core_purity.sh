@@ -1,5 +1,5 @@
 #!/bin/sh
-# core/ is pure (DESIGN.md): it never aborts, exits, asserts or does I/O, and
+# core/ is pure (docs/design.md, "Layers"): it never aborts, exits, asserts or does I/O, and
 # holds no global mutable state. Checked on the source (calls) and on the
 # built library (no writable data or bss symbols, static or not).
 # Usage: check_core_purity.sh SOURCE_DIR LIBMECH.a

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""check_includes.py SOURCE_DIR — the include graph stays a tree of layers
-(issue 17): no file includes a .c file, no header includes itself through
+"""check_includes.py SOURCE_DIR — the include graph stays a tree of layers:
+no file includes a .c file, no header includes itself through
 other headers (a cycle), and no source file in core/, api/ or server/ is
 longer than MAX_LINES without a stated reason ("Why one file" in its opening
 comment). A file being split in another change may stand in PENDING, with

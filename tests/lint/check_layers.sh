@@ -1,5 +1,5 @@
 #!/bin/sh
-# One face per layer (issue 17): the server (server/) sees the API layer only
+# One face per layer: the server (server/) sees the API layer only
 # through api/include/api.h (the only API header on its include path) — no route table (routes.h), endpoint internals
 # (endpoint.h) or other api/ header — and the API layer does not set up the
 # process in a library init path (jansson's allocator and GSL's error handler

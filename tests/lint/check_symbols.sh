@@ -1,5 +1,5 @@
 #!/bin/sh
-# Every symbol a library exports carries its layer's prefix (STYLE.md §3):
+# Every symbol a library exports carries its layer's prefix (docs/design.md):
 # libmech exports mech_*, libmechapi exports api_*. File-local functions must
 # be static. Usage: check_symbols.sh LIBMECH.a LIBMECHAPI.a
 set -eu

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Cheap requests under load (issue 15, item 1): a one-vector boost (the
+"""Cheap requests under load: a one-vector boost (the
 README's boost example, an event at rest [1, 0, 0, 0] boosted by beta = 0.6)
 costs microseconds, so mechd must answer every one 200 while it is only busy
 with I/O, even with a small queue.

@@ -25,7 +25,7 @@ TRAJECTORY = ('{"particle":{"mass":1.0,"position":[0.0,0.0,100.0],"velocity":[0.
 # A long integration: a harmonic oscillator over ~3000 periods (a few hundred
 # ms of one worker on this machine).
 # "closed_form": false: the oscillator has a closed form, which an accuracy
-# request would be answered from in microseconds (issue 16); this one must
+# request would be answered from in microseconds; this one must
 # keep a worker busy integrating.
 LONG_TRAJECTORY = ('{"particle":{"mass":1.0,"position":[1.0,0.0,0.0],"velocity":[0.0,1.0,0.0]},'
                    '"forces":[{"type":"spring","k":1.0,"anchor":[0.0,0.0,0.0]}],"t_end":20000.0,"samples":11,'

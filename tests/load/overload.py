@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Overload (issue 9, "Load and overload"): many more long integrations than
+"""Overload: many more long integrations than
 workers + queue, all at once, while /healthz is polled every 10 ms.
 
   overload.py [PATH/TO/mechd] [--clients N] [--waves N]

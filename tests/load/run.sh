@@ -1,10 +1,10 @@
 #!/bin/sh
-# Runs the load scenarios of issue 9 against MECHD (default build/mechd):
+# Runs the load scenarios against MECHD (default build/mechd):
 #   sustained.py     60 s of mixed traffic at 64 connections (+10 s warm-up)
 #   overload.py      3 waves of 40 long integrations against workers 2 + queue 4
 #   slow_clients.py  500 idle/trickling connections, new clients, timeouts (45 s)
 #   cheap_requests.py  one-vector boosts at 64 and 256 connections against
-#                    --workers 2 --queue 4: every answer must be 200 (issue 15; 2 x 5 s)
+#                    --workers 2 --queue 4: every answer must be 200 (2 x 5 s)
 # About 3 minutes in all; every scenario is bounded in time, talks only to
 # 127.0.0.1, prints its figures and fails only on functional failures (error
 # answers, lost answers, leaks, a dead server), never on timing.

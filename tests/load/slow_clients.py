@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Slow clients (issue 9, "Load and overload"): 500 connections that are
+"""Slow clients: 500 connections that are
 idle (connected, nothing sent) or trickling (a request header sent one byte
 per second) must not stop new clients from being served, and are timed out.
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Sustained load (issue 9, "Load and overload"): mixed traffic (boost,
+"""Sustained load: mixed traffic (boost,
 inertia of 10 parts, short trajectory, round-robin) at 64 connections for
 SECONDS (default 60) after a warm-up (default 10 s), with wrk on 127.0.0.1.
 

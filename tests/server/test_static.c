@@ -104,6 +104,18 @@ int main(void)
     CHECK(header(&f, "X-Content-Type-Options") &&
           strcmp(header(&f, "X-Content-Type-Options"), "nosniff") == 0);
     CHECK(header(&f, "ETag") && f.etag[0] == '"' && strlen(f.etag) == 18);
+    /* framing: none by default; the origins of --frame-ancestors may, and then
+     * no X-Frame-Options (it cannot name an origin); "" is none again */
+    CHECK(strstr(header(&f, "Content-Security-Policy"), "frame-ancestors 'none'") &&
+          header(&f, "X-Frame-Options") && strcmp(header(&f, "X-Frame-Options"), "DENY") == 0);
+    CHECK(srv_static_set_frame_ancestors("https://course.example.edu,http://localhost:3000") == 0);
+    CHECK(srv_static_lookup("/", &f) == 0 && !header(&f, "X-Frame-Options"));
+    CHECK(strstr(header(&f, "Content-Security-Policy"),
+                 "; frame-ancestors https://course.example.edu http://localhost:3000") &&
+          strstr(header(&f, "Content-Security-Policy"), "script-src 'self';"));
+    CHECK(srv_static_set_frame_ancestors("") == 0);
+    CHECK(srv_static_lookup("/", &f) == 0 && header(&f, "X-Frame-Options") &&
+          strstr(header(&f, "Content-Security-Policy"), "frame-ancestors 'none'"));
 
     CHECK(srv_static_lookup("/labs/", &f) == 0 && strcmp(f.path, "/labs/index.html") == 0);
     CHECK(srv_static_lookup("/app.js", &f) == 0 &&

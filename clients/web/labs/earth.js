@@ -7,6 +7,8 @@
 import {el, svg, put, add, field, val, fmt, num, examplePicker, labSection, runner, drawPlot, plotSize, plotTools, api, curlBox, linePlot, notesBox} from '../lib.js';
 import {player} from '../anim.js';
 import {THREE, view3d, label} from '../view3d.js';
+import {handle, rerun} from '../handles.js';
+import {arrow, energyBars} from '../draw.js';
 
 const BUILTIN = [
   {title: 'Falling object: 100 m at 32° N (notes: x_east = (1/3) ω cos λ √(8h³/g))', operation: '/v1/scenes/falling-object',
@@ -36,7 +38,7 @@ function planView(root, east, north, label) {
     svg('text', {x: W - 14, y: cy + 24, 'font-size': 16, 'text-anchor': 'end'}, 'east'), svg('text', {x: cx + 6, y: 34, 'font-size': 16}, 'north'));
   const px = cx + east * mag, py = cy - north * mag;
   add(root, svg('circle', {cx, cy, r: 9, fill: 'none', stroke: '#2b8a3e', 'stroke-width': 3}),
-    svg('text', {x: cx - 8, y: cy + 30, 'font-size': 15, fill: '#2b8a3e', 'text-anchor': 'end'}, 'without Coriolis'),
+    svg('text', {x: cx - 8, y: cy + 30, 'font-size': 15, fill: '#1f6f30', 'text-anchor': 'end'}, 'without Coriolis'),
     svg('line', {x1: cx, y1: cy, x2: px, y2: py, stroke: '#c92a2a', 'stroke-width': 3, 'stroke-dasharray': '8 4'}),
     svg('circle', {cx: px, cy: py, r: 9, fill: '#c92a2a'}),
     svg('text', {x: px + (east >= 0 ? -10 : 10), y: py - 16, 'font-size': 16, fill: '#c92a2a', 'font-weight': 700,
@@ -107,7 +109,7 @@ export default {
       const pts = pos.map(p => [p[0] * 100, Math.abs(p[2]) < 1e-9 ? 0 : p[2]]); // the landing's −1.4e-14 m is the ground
       const dot = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'fall-dot'});
       let XY = null, cur = pts[0];
-      linePlot(pathPlot, [{points: pts, label: 'with Coriolis'}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
+      linePlot(pathPlot, [{points: pts, label: 'with Coriolis', t}, {points: [[0, h], [0, 0]], label: 'without', color: '#2b8a3e', dash: '6 4'}],
         {xlabel: 'east [cm]', ylabel: 'height [m]', name: 'falling-object-path', legend: 'below', marks: [({X, Y}) => {
           XY = [X, Y]; dot.setAttribute('cx', X(cur[0])); dot.setAttribute('cy', Y(cur[1]));
           // px per metre across (X counts cm) over px per metre up: how much the drift is magnified
@@ -119,7 +121,7 @@ export default {
         const j = Math.min(i + 1, pts.length - 1);
         cur = [pts[i][0] + (pts[j][0] - pts[i][0]) * f, pts[i][1] + (pts[j][1] - pts[i][1]) * f];
         if (XY) { dot.setAttribute('cx', XY[0](cur[0])); dot.setAttribute('cy', XY[1](cur[1])); }
-      });
+      }, {grow: [pathPlot]});
     };
     // cannonball
     const cs = field({label: 'speed', pointer: '/speed', value: 500, unit: 'm/s', id: 'can-speed'});
@@ -161,8 +163,11 @@ export default {
     const flightNote = el('p', {class: 'muted', id: 'can-path-note', 'aria-live': 'off'});
     const flightCurl = curlBox();
     put(flightCurl.box.querySelector('h3'), 'The animation\'s request');
-    const canPlay = player({label: 'The cannonball'});
-    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, flightCurl.box);
+    const canPlay = player({label: 'The cannonball', reverse: 'Backwards: without air the flight run backwards is a flight too, on an Earth turning the other way (the Coriolis force changes sign with the velocity).'});
+    const canEnergy = svg('svg', {class: 'plot dial energy', id: 'can-energy', role: 'img', 'aria-label': 'energy bars'});
+    const canForces = el('p', {class: 'muted', id: 'can-forces'});
+    add(canS.figure, el('h3', {}, 'The flight, from the side'), flightPlot, canPlay.root, flightNote, canForces,
+      el('h3', {}, 'Energy (per kg)'), canEnergy, flightCurl.box);
     let flightCtl = null;
     const flight = async (a) => {
       const P = a.parameters, el0 = P.elevation_deg * Math.PI / 180, az = P.azimuth_deg * Math.PI / 180; // velocity: (east, north, up)
@@ -177,32 +182,50 @@ export default {
       const r = await api('/v1/trajectory', body, {signal: mine.signal});
       if (mine !== flightCtl || r.aborted) return;
       if (!r.ok || !r.body || !Array.isArray(r.body.t)) { flightNote.textContent = 'The animation\'s trajectory could not be computed.'; return; }
-      let t = r.body.t.slice(), pos = r.body.position.slice();
+      let t = r.body.t.slice(), pos = r.body.position.slice(), vel = (r.body.velocity || []).slice();
       const st = r.body.stopped;
-      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); }
-        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); } }
+      if (st && typeof st.t === 'number') { const k = t.findIndex(x => x > st.t); if (k > 0) { t = t.slice(0, k); pos = pos.slice(0, k); vel = vel.slice(0, k); }
+        if (st.t > t[t.length - 1]) { t.push(st.t); pos.push(st.position); vel.push(st.velocity || vel[vel.length - 1]); } }
       const down = (p) => p[0] * aim[0] + p[1] * aim[1], side = (p) => p[0] * right[0] + p[1] * right[1];
+      // on the moving ball: its velocity (1 km of arrow per 100 m/s) and its weight mg (m = 1 kg); the Coriolis
+      // force −2m ω×v (ω = ω(0, cos λ, sin λ) east-north-up) is mostly sideways, out of this picture: said in words;
+      // energy bars: ½mv² and mgz, their sum level (the Coriolis force does no work: it is always across v)
+      const Om = 7.292115e-5, lat = P.latitude_deg * Math.PI / 180, wv = [0, Om * Math.cos(lat), Om * Math.sin(lat)];
+      const coriolis = (v) => [-2 * (wv[1] * v[2] - wv[2] * v[1]), -2 * (wv[2] * v[0] - wv[0] * v[2]), -2 * (wv[0] * v[1] - wv[1] * v[0])];
+      const vecs = svg('g', {id: 'can-vectors'});
       const pts = pos.map(p => [down(p) / 1000, p[2] / 1000]);
       const ball = svg('circle', {r: 7, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, id: 'can-ball'});
       let XY = null, cur = pts[0];
-      linePlot(flightPlot, [{points: pts, label: 'with Coriolis'}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
-        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1])); return ball; }]});
+      linePlot(flightPlot, [{points: pts, label: 'with Coriolis', t}], {xlabel: 'downrange [km]', ylabel: 'height [km]', equal: true,
+        name: 'cannonball-path', marks: [({X, Y}) => { XY = [X, Y]; ball.setAttribute('cx', X(cur[0])); ball.setAttribute('cy', Y(cur[1]));
+          const g = svg('g', {}); add(g, vecs, ball); return g; }]});
       canPlay.set(t, (i, f, tt) => {
         const j = Math.min(i + 1, pos.length - 1), p = pos[i].map((x, k) => x + (pos[j][k] - x) * f);
+        const v = vel.length === pos.length ? vel[i].map((x, k) => x + (vel[j][k] - x) * f) : null;
         cur = [down(p) / 1000, p[2] / 1000];
         if (XY) { ball.setAttribute('cx', XY[0](cur[0])); ball.setAttribute('cy', XY[1](cur[1])); }
+        if (XY && v) {
+          const bx = XY[0](cur[0]), by = XY[1](cur[1]), kx = XY[0](1) - XY[0](0); // px per km
+          put(vecs, arrow(bx, by, bx + kx * down(v) / 100, by - kx * v[2] / 100, '#1864ab', 'v'),
+            arrow(bx, by, bx, by + 46, '#5c3b00', 'mg'));
+          const fc = coriolis(v), E = [0.5 * (v[0] ** 2 + v[1] ** 2 + v[2] ** 2), P.g * p[2]];
+          energyBars(canEnergy, [['kinetic ½mv²', E[0], '#1864ab'], ['potential mgz', E[1], '#5c3b00'], ['total', E[0] + E[1], '#111']],
+            0.5 * (vel[0][0] ** 2 + vel[0][1] ** 2 + vel[0][2] ** 2), 'energy of the ball (1 kg)');
+          canForces.textContent = `On the ball (m = 1 kg): weight mg = ${fmt(P.g, 4)} N down; Coriolis −2m ω×v = ${fmt(Math.hypot(...fc), 3)} N, ` +
+            `${fmt(side(fc), 3)} N to the right of the aim and ${fmt(fc[2], 3)} N up; speed ${fmt(Math.hypot(...v), 4)} m/s (blue arrow: 1 km per 100 m/s).`;
+        }
         flightNote.dataset.right = String(side(p));
         flightNote.dataset.down = String(down(p));
         const up = Math.abs(p[2]) < 1e-6 ? 0 : p[2]; // the landing sample's round-off, not "-4.5e-16 km up"
         flightNote.textContent = `t = ${fmt(tt, 4)} s: ${fmt(down(p) / 1000, 4)} km downrange, ${fmt(up / 1000, 4)} km up, ` +
           `${fmt(side(p), 3)} m to the right of the aim (too small to see at this scale: the plan view above magnifies it).`;
-      });
+      }, {grow: [flightPlot]}); // the flight's path grows behind the ball as it plays
     };
     // Foucault
-    const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat'});
+    const pl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 48.846, unit: '°', id: 'fou-lat', min: -90, max: 90});
     const pL = field({label: 'length', pointer: '/length', value: 67, unit: 'm', id: 'fou-len'});
     const pa = field({label: 'amplitude', pointer: '/release/amplitude_deg', value: 3, unit: '°', id: 'fou-amp'});
-    const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings'});
+    const ps = field({label: 'swings', pointer: '/swings', value: 100, id: 'fou-swings', min: 1, step: 1, budget: 'swings'});
     const fouS = section(main, 'Foucault pendulum', 'The swing plane turns clockwise (northern hemisphere) at ω sin λ. ' +
       'The trace (and the bob when played) is drawn from the measured rate and swing period, with the turn exaggerated so that it shows; the exaggeration is written under it.', [pl, pL, pa, ps], 'Swing', 'fou');
     const fouNotes = notesBox('fou-notes');
@@ -252,9 +275,71 @@ export default {
     const G = view3d(gbox, {label: 'The Foucault pendulum\'s swing plane on the turning Earth', id: 'fou-view', extent: 1.3});
     const globe = (a) => foucaultGlobe(G, gbox, gnote, dayPlay, a, () => frameSel.value === 'ground');
     frameSel.addEventListener('change', () => dayPlay.seek(Number(gbox.dataset.hours) || 0));
+    // direct manipulation: the launch velocity as an arrow whose tip is dragged (speed and elevation), and
+    // the pendulum's place on the Earth dragged round a meridian (the latitude); each asks again as it moves
+    const aim = svg('svg', {class: 'plot dial', id: 'can-aim', role: 'group',
+      'aria-label': 'The launch velocity: drag the arrow\'s tip, or focus it and use the arrow keys'});
+    canS.form.querySelector('.buttons').before(el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the launch velocity:'), aim));
+    const canAgain = rerun(() => cannon());
+    const drawAim = () => aimDial(aim, val(cs.input), val(ce.input), (v, e, done) => {
+      cs.input.value = v; ce.input.value = e; drawAim(); canAgain(done);
+    });
+    for (const c of [cs.input, ce.input]) c.addEventListener('input', drawAim);
+    drawAim();
+    const dial = svg('svg', {class: 'plot dial', id: 'fou-dial', role: 'group',
+      'aria-label': 'The pendulum\'s latitude: drag it round the Earth, or focus it and use the arrow keys'});
+    fouS.form.querySelector('.buttons').before(el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the pendulum round the Earth:'), dial));
+    const fouAgain = rerun(() => pend(), 200);
+    const drawDial = () => latitudeDial(dial, val(pl.input), (lat, done) => { pl.input.value = lat; drawDial(); fouAgain(done); });
+    pl.input.addEventListener('input', drawDial);
+    drawDial();
     fall(); cannon(); pend();
   },
 };
+
+// The launch velocity to scale (0 to 1000 m/s), its tip a handle: (v cos α, v sin α) in m/s; the arrow keys move
+// the tip 10 m/s across or up (Shift: 100). onMove(speed in m/s, elevation in degrees, done).
+function aimDial(root, v, e, onMove) {
+  const W = 300, H = 170, k = (W - 50) / 1000;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const X = (vx) => 24 + vx * k, Y = (vz) => H - 24 - vz * k;
+  X.invert = (px) => (px - 24) / k; Y.invert = (py) => (H - 24 - py) / k;
+  add(root, svg('line', {x1: 8, y1: Y(0), x2: W - 8, y2: Y(0), stroke: '#555', 'stroke-width': 2}));
+  for (const s of [250, 500, 750, 1000]) add(root, svg('path', {d: `M ${X(s)} ${Y(0)} A ${s * k} ${s * k} 0 0 0 ${X(0)} ${Y(s)}`, fill: 'none', stroke: '#ddd'}),
+    svg('text', {x: X(s), y: Y(0) + 16, 'font-size': 12, 'text-anchor': 'middle', fill: '#444'}, `${s}`));
+  add(root, svg('text', {x: W - 8, y: 14, 'font-size': 12, 'text-anchor': 'end', fill: '#444'}, 'm/s'));
+  const ok = Number.isFinite(v) && Number.isFinite(e), a = (ok ? e : 30) * Math.PI / 180, s0 = ok ? v : 500;
+  const tip = [s0 * Math.cos(a), s0 * Math.sin(a)];
+  const words = (vx, vz) => `${fmt(Math.hypot(vx, vz), 3)} m/s at ${fmt(Math.atan2(vz, vx) * 180 / Math.PI, 3)}° elevation`;
+  add(root, svg('line', {x1: X(0), y1: Y(0), x2: X(tip[0]), y2: Y(tip[1]), stroke: '#c92a2a', 'stroke-width': 4}),
+    svg('text', {x: 30, y: 18, 'font-size': 14, fill: '#c92a2a', 'font-weight': 700, 'data-role': 'aim-words'}, words(...tip)),
+    handle(root, {id: 'can-aim-tip', X, Y, at: tip, color: '#c92a2a', step: [10, 10], label: 'launch velocity (the arrow\'s tip)', text: words,
+      onMove: (vx, vz, done) => {
+        const sp = Math.min(1000, Math.max(1, Math.round(Math.hypot(vx, vz)))), el0 = Math.min(90, Math.max(0, Math.round(Math.atan2(vz, vx) * 1800 / Math.PI) / 10));
+        onMove(sp, el0, done);
+      }}));
+}
+
+// A meridian of the Earth with the pendulum at latitude λ on it, a handle moved round the circle (the arrow
+// keys: 1°, Shift 10°). onMove(latitude in degrees, done).
+function latitudeDial(root, lat, onMove) {
+  const W = 220, H = 200, R = 80, cx = 100, cy = 100;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const X = (x) => cx + R * x, Y = (y) => cy - R * y;
+  X.invert = (px) => (px - cx) / R; Y.invert = (py) => (cy - py) / R;
+  const l = Number.isFinite(lat) ? Math.max(-90, Math.min(90, lat)) : 0, a = l * Math.PI / 180;
+  add(root, svg('circle', {cx, cy, r: R, fill: '#e7f5ff', stroke: '#1864ab', 'stroke-width': 2}),
+    svg('line', {x1: cx - R - 10, y1: cy, x2: cx + R + 10, y2: cy, stroke: '#1864ab', 'stroke-dasharray': '4 4'}),
+    svg('line', {x1: cx, y1: cy - R - 14, x2: cx, y2: cy + R + 14, stroke: '#444', 'stroke-width': 2}),
+    svg('text', {x: cx + 6, y: cy - R - 2, 'font-size': 12, fill: '#444'}, 'ω'),
+    svg('line', {x1: cx, y1: cy, x2: X(Math.cos(a)), y2: Y(Math.sin(a)), stroke: '#c92a2a', 'stroke-width': 2}),
+    svg('text', {x: 8, y: H - 8, 'font-size': 14, fill: '#c92a2a', 'font-weight': 700}, `λ = ${fmt(l, 4)}°`),
+    handle(root, {id: 'fou-lat-handle', X, Y, at: [Math.cos(a), Math.sin(a)], color: '#c92a2a', label: 'the pendulum\'s latitude',
+      text: (x, y) => `latitude ${fmt(Math.round(Math.atan2(y, Math.max(0, x)) * 180 / Math.PI * 10) / 10, 4)}°`,
+      nudge: (sign, big, at) => { const d = (Math.atan2(at[1], Math.max(0, at[0])) * 180 / Math.PI) + sign * (big ? 10 : 1);
+        const n = Math.max(-90, Math.min(90, Math.round(d))) * Math.PI / 180; return [Math.cos(n), Math.sin(n)]; },
+      onMove: (x, y, done) => onMove(Math.max(-90, Math.min(90, Math.round(Math.atan2(y, Math.max(0, x)) * 180 / Math.PI * 10) / 10)), done)}));
+}
 
 // The swing traced from above over 12 swings, the plane turned at the measured
 // rate, each swing an ellipse of the measured axis ratio `flat` (minor/major).

@@ -1,7 +1,8 @@
 // Inertia lab: build a body from parts (POST /v1/rigid/inertia), see the
 // tensor, the principal moments and the principal axes drawn over the body in
 // a small 3D view (drag or arrow keys to rotate).
-import {el, put, add, field, val, fmt, num, labLayout, runner, examplePicker, notesBox} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, notesBox} from '../lib.js';
+import {handle, rerun} from '../handles.js';
 import {THREE, view3d, axesArrows, sceneAxes, label as tag} from '../view3d.js';
 
 const SHAPES = {
@@ -152,8 +153,41 @@ export default {
             'principal moments M s²/6 and 11 M s²/12 twice (§2.5, Example: Cube Rotating about a Corner).'});
       }
       draw();
+      drawPlan();
     });
+    // the parts seen from above (x right, y up): each part's position a handle to drag (or arrow keys, 0.1 m)
+    const plan = svg('svg', {class: 'plot dial', id: 'inertia-plan', role: 'group',
+      'aria-label': 'The parts from above: drag a part to move it in x and y, or focus it and use the arrow keys'});
+    add(L.figure, el('h3', {}, 'The parts from above: drag one to move it'), plan,
+      el('p', {class: 'muted'}, 'Each part at its position in x and y (z stays as typed); the ring is the centre of mass.'));
+    let planR = null;
+    const again = rerun(() => run(), 150);
+    const drawPlan = () => {
+      const ps = rows.map(r => r.pos.map(f => val(f.input)));
+      const R = planR || Math.max(1, ...ps.flatMap(p => [Math.abs(p[0]), Math.abs(p[1])]).filter(Number.isFinite)) * 1.4;
+      const W = 300, H = 300, k = (W / 2 - 16) / R;
+      put(plan); plan.setAttribute('viewBox', `0 0 ${W} ${H}`);
+      const X = (x) => W / 2 + k * x, Y = (y) => H / 2 - k * y;
+      X.invert = (p) => (p - W / 2) / k; Y.invert = (p) => (H / 2 - p) / k;
+      add(plan, svg('line', {x1: 8, y1: Y(0), x2: W - 8, y2: Y(0), stroke: '#aaa'}), svg('line', {x1: X(0), y1: 8, x2: X(0), y2: H - 8, stroke: '#aaa'}),
+        svg('text', {x: W - 12, y: Y(0) - 6, 'font-size': 13, fill: '#444'}, 'x'), svg('text', {x: X(0) + 6, y: 18, 'font-size': 13, fill: '#444'}, 'y'),
+        svg('text', {x: 8, y: H - 8, 'font-size': 12, fill: '#444'}, `±${fmt(Number(R.toPrecision(2)))} m`));
+      const cm = state.answer && state.answer.center_of_mass;
+      if (cm) add(plan, svg('circle', {cx: X(cm[0]), cy: Y(cm[1]), r: 6, fill: 'none', stroke: '#a65300', 'stroke-width': 2}));
+      ps.forEach((p, i) => {
+        if (!Number.isFinite(p[0]) || !Number.isFinite(p[1])) return;
+        add(plan, handle(plan, {id: `inertia-part-${i}`, X, Y, at: [p[0], p[1]], step: [0.1, 0.1], color: '#1864ab',
+          label: `part ${i + 1} (${rows[i].shape.input.value})`,
+          text: (x, y) => `part ${i + 1} at x = ${fmt(x, 3)} m, y = ${fmt(y, 3)} m, z = ${fmt(p[2], 3)} m`,
+          onMove: (x, y, done) => {
+            rows[i].pos[0].input.value = Number(x.toFixed(2)); rows[i].pos[1].input.value = Number(y.toFixed(2));
+            planR = done ? null : R; drawPlan(); again(done);
+          }}),
+        svg('text', {x: X(p[0]) + 12, y: Y(p[1]) - 10, 'font-size': 13, fill: '#1864ab', 'font-weight': 700}, String(i + 1)));
+      });
+    };
     draw();
+    drawPlan();
     run();
   },
 };

@@ -83,13 +83,8 @@ export default {
     }, (res, req) => {
       const first = res.results[0];
       if (first.status !== 200) { // a batch item's problem: its pointers start /operations/0/request
-        const pr = first.problem || first.body || {}, e = pr.errors || [];
-        put(L.results, el('p', {class: 'problem', id: 'ph-error'}, e.map(x => `${x.pointer.replace('/operations/0/request', '')}: ${x.detail}`).join('; ') || pr.detail || 'failed'));
-        for (const x of e) { // mark the field it names
-          const f = L.form.querySelector(`[data-pointer="${x.pointer}"]`);
-          if (f) { f.setAttribute('aria-invalid', 'true'); const box = document.getElementById(f.getAttribute('aria-describedby')); if (box) box.textContent = x.detail; }
-        }
-        put(plot); return false;
+        // placed on the fields it names like any problem; the previous loop stays, dimmed and labelled "not updated"
+        return {status: first.status, problem: first.problem || first.body || {}};
       }
       const lv = first.body, flows = res.results.slice(1).filter(r => r.status === 200).map(r => r.body);
       const runs = lv.runs, A0 = lv.area_initial;

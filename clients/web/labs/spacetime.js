@@ -5,6 +5,7 @@
 import {player} from '../anim.js';
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot,
         drawPlot, plotSize, plotTools, notesBox} from '../lib.js';
+import {handle, rerun} from '../handles.js';
 
 const BUILTIN = [
   {title: 'Boost by β = 0.6: the event (ct, x) = (1, 0) → (1.25, −0.75)', operation: '/v1/relativity/boost',
@@ -46,7 +47,8 @@ export default {
     const setBeta = (b) => { beta.input.value = b; slider.value = clampB(b); shown.textContent = 'β = ' + fmt(b); };
     const parse = () => ev.input.value.split(';').map(s => s.trim()).filter(Boolean)
       .map(s => { const [t, x] = s.split(',').map(v => (v === undefined || v.trim() === '' ? NaN : Number(v))); return [t, x, 0, 0]; });
-    const plot = svg('svg', {class: 'plot', id: 'st-diagram', role: 'img', 'aria-label': 'Minkowski diagram'});
+    // a group, not an image: the events on it are handles (role slider) to drag or move with the arrow keys
+    const plot = svg('svg', {class: 'plot', id: 'st-diagram', role: 'group', 'aria-label': 'Minkowski diagram: drag an event, or focus it and use the arrow keys'});
     const tickNote = el('span', {id: 'st-ticks'});
     // the slider sits right under the diagram it moves (on a phone too)
     add(L.figure, el('h3', {}, 'Minkowski diagram'), plot,
@@ -78,10 +80,21 @@ export default {
         how: 'Every event boosted by the formula in this page and by the API; the difference is the largest over the events\' ct′ and x′.',
         note: 'The API keeps its digits near β = 1 by working with the rapidity (γ = cosh η, βγ = sinh η); this page takes ' +
           '1 − β² as (1 − β)(1 + β), which loses nothing when β is typed in.'});
-      drawPlot(plot, () => diagram(plot, body.vectors, a.beta[0], tickNote));
+      drawPlot(plot, () => diagram(plot, body.vectors, a.beta[0], tickNote, {R: dragR, onEvent: moveEvent}));
       plotTools(plot, {name: 'minkowski', csv: () => 'event,ct,x,ct_boosted,x_boosted,beta\n' +
         body.vectors.map((v, i) => [i + 1, v[0], v[1], a.vectors[i][0], a.vectors[i][1], a.beta[0]].join(',')).join('\n') + '\n'});
     });
+    // an event dragged on the diagram (or moved with the arrow keys): its (ct, x) in the events field, the boost asked again
+    let dragR = null;
+    const again = rerun(() => run());
+    const moveEvent = (i, x, t, done, R) => {
+      const vs = parse(), r2 = (v) => Number(v.toFixed(2));
+      if (!vs[i]) return;
+      vs[i] = [r2(t), r2(x)];
+      ev.input.value = vs.map(v => `${v[0]}, ${v[1]}`).join('; ');
+      dragR = done ? null : R; // the scale stays put while the event is dragged
+      again(done);
+    };
     slider.addEventListener('input', () => { beta.input.value = slider.value; shown.textContent = 'β = ' + fmt(Number(slider.value)); run(); });
     beta.input.addEventListener('change', () => { const b = val(beta.input); if (isFinite(b)) { slider.value = clampB(b); shown.textContent = 'β = ' + fmt(b); } });
     run();
@@ -159,10 +172,12 @@ function niceStep(R, n) {
   return (f < 1.5 ? 1 : f < 3.5 ? 2 : f < 7.5 ? 5 : 10) * p;
 }
 
-function diagram(root, vectors, b, note) {
-  const [W, H] = plotSize(root, 640, 480), R = Math.max(2.5, ...vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])]).filter(isFinite)) * 1.2;
+function diagram(root, vectors, b, note, {R: fixedR, onEvent} = {}) {
+  const [W, H] = plotSize(root, 640, 480);
+  const R = fixedR || Math.max(2.5, ...vectors.flatMap(v => [Math.abs(v[0]), Math.abs(v[1])]).filter(isFinite)) * 1.2;
   put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
   const s = (H / 2 - 10) / R, X = (x) => W / 2 + s * x, Y = (t) => H / 2 - s * t;
+  X.invert = (px) => (px - W / 2) / s; Y.invert = (py) => (H / 2 - py) / s;
   const ln = (x0, t0, x1, t1, a) => add(root, svg('line', {x1: X(x0), y1: Y(t0), x2: X(x1), y2: Y(t1), ...a}));
   ln(-R * 1.4, 0, R * 1.4, 0, {stroke: '#000', 'stroke-width': 1.5}); ln(0, -R, 0, R, {stroke: '#000', 'stroke-width': 1.5});
   add(root, svg('text', {x: Math.min(X(R * 1.3), W - 14), y: Y(0) - 6, 'font-size': 18}, 'x'), svg('text', {x: X(0) + 6, y: Y(R) + 16, 'font-size': 18}, 'ct'));
@@ -204,7 +219,9 @@ function diagram(root, vectors, b, note) {
       }
       add(root, svg('polyline', {points: pts.join(' '), fill: 'none', stroke: '#c92a2a', 'stroke-dasharray': '6 5', 'stroke-width': 1.5}));
     }
-    add(root, svg('circle', {cx: X(x), cy: Y(t), r: 7, fill: '#c92a2a'}),
-      svg('text', {x: X(x) + 9, y: Y(t) - 9, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, String(i + 1)));
+    add(root, onEvent ? handle(root, {id: `st-event-${i}`, X, Y, at: [x, t], color: '#c92a2a', r: 8, step: [0.1, 0.1],
+      label: `event ${i + 1}`, text: (x1, t1) => `event ${i + 1}: ct = ${fmt(t1, 4)}, x = ${fmt(x1, 4)}`,
+      onMove: (x1, t1, done) => onEvent(i, x1, t1, done, R)}) : svg('circle', {cx: X(x), cy: Y(t), r: 7, fill: '#c92a2a'}),
+      svg('text', {x: X(x) + 11, y: Y(t) - 11, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, String(i + 1)));
   });
 }

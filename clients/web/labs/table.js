@@ -6,6 +6,8 @@
 // and the effective force at the start beside the notes' formula.
 import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, notesBox} from '../lib.js';
 import {player, lerp} from '../anim.js';
+import {handle, rerun} from '../handles.js';
+import {arrow, energyBars} from '../draw.js';
 
 const st = {experiment: 'through_center', omega: 1, radius: 1, mass: 1, px: 0.5, py: 0, vx: 0, vy: 0.8, t_end: 4};
 const BUILTIN = [
@@ -60,15 +62,23 @@ export default {
     el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'table-submit'}, 'Launch')));
     sync();
 
-    const room = svg('svg', {class: 'plot', id: 'table-room', role: 'img', 'aria-label': 'The puck seen from the room (inertial frame)'});
+    // a group: the puck's start and its launch velocity are handles on it (drag them, or focus and use the arrow keys)
+    const room = svg('svg', {class: 'plot', id: 'table-room', role: 'group', 'aria-label': 'The puck seen from the room (inertial frame): drag its start or its velocity arrow'});
     const onTable = svg('svg', {class: 'plot', id: 'table-table', role: 'img', 'aria-label': 'The puck seen from the turning table'});
-    const play = player({label: 'The rotating table'});
+    const tableEnergy = svg('svg', {class: 'plot dial energy', id: 'table-energy', role: 'img', 'aria-label': 'energy bars'});
+    const play = player({label: 'The rotating table', reverse: 'Backwards: in the room, the same straight line run back; on the table, the motion on a table turning the other way (ω → −ω: the Coriolis force changes sign with the velocity, the centrifugal force does not).'});
     add(L.figure, el('div', {class: 'pair two'},
       el('div', {}, el('h3', {}, 'From the room (inertial)'), room),
       el('div', {}, el('h3', {}, 'From the table (rotating)'), onTable)), play.root,
     el('p', {class: 'muted', id: 'table-legend'}, el('span', {class: 'c1'}, 'red: the puck and its path so far'), '; ',
       el('span', {class: 'c3'}, 'blue: a line painted on the table'), '; dashed: the whole path (right: the API\'s exact ' +
-      'rotated line, under the integrated one).'));
+      'rotated line, under the integrated one).'),
+    el('p', {class: 'muted', id: 'table-vectors-legend'}, 'On the puck seen from the table (right): ', el('span', {class: 'c3'}, 'v′ its velocity'),
+      ', ', el('span', {class: 'c4'}, 'the centrifugal force mω²r′'), ', ', el('span', {class: 'c2'}, 'the Coriolis force −2mω×v′'),
+      ' and in black their sum, the net force (forces to one scale, the velocity to its own).'),
+    el('h3', {}, 'Energy seen from the table'), tableEnergy,
+    el('p', {class: 'muted'}, 'Seen from the table, ½mv′² and the centrifugal potential −½mω²r′² trade, their sum (the Jacobi integral) level: ',
+      'the Coriolis force does no work, being always across v′.'));
 
     const tableNotes = notesBox('table-notes');
     const run = runner(L, '/v1/scenes/rotating-table', () => {
@@ -107,10 +117,25 @@ export default {
           el('dt', {}, 'integrated vs exact'), num('table-err', a.rotating_vs_exact.max_position_error, 'm'),
           inv ? el('dt', {}, 'Jacobi integral drift') : null, inv ? num('table-jacobi', inv.max_relative_drift) : null),
         tableNotes.box);
-      draw(room, onTable, a, play);
+      draw(room, onTable, a, play, {R: dragR, launch, energy: tableEnergy});
       plotTools(onTable, {name: 'rotating-table', csv: () => 't,x_room,y_room,x_table,y_table,x_table_exact,y_table_exact\n' +
         a.t.map((t, i) => [t, a.inertial[i][0], a.inertial[i][1], a.rotating[i][0], a.rotating[i][1], a.rotating_exact[i][0], a.rotating_exact[i][1]].join(',')).join('\n') + '\n'});
     });
+    // the launch dragged on the room's picture: any launch, from the start and velocity dragged (in the room's frame)
+    let dragR = null;
+    const again = rerun(() => run());
+    const r3 = (v) => Number(v.toFixed(3));
+    const launch = (what, x, y, done, R, a0) => {
+      if (exp.input.value !== 'custom') { // from a preset: its start and velocity become the custom launch's
+        px.input.value = r3(a0.position[0]); py.input.value = r3(a0.position[1]);
+        vx.input.value = r3(a0.velocity_inertial[0]); vy.input.value = r3(a0.velocity_inertial[1]);
+        tEnd.input.value = r3(a0.t_end); exp.input.value = 'custom'; sync();
+      }
+      if (what === 'start') { px.input.value = r3(x); py.input.value = r3(y); }
+      else { vx.input.value = r3(x); vy.input.value = r3(y); }
+      dragR = done ? null : R;
+      again(done);
+    };
     L.results.before(L.figure); // the picture first, the numbers under it (on a phone, right below the form)
     run();
   },
@@ -118,14 +143,15 @@ export default {
 
 // Both panels, to the same scale; the player moves the puck on both and turns
 // the table on the left (the line painted on it turns with ωt).
-function draw(room, onTable, a, play) {
+function draw(room, onTable, a, play, {R: fixedR, launch, energy} = {}) {
   const pts = [...a.inertial, ...a.rotating];
-  const R = Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
+  const R = fixedR || Math.max(...pts.map(p => Math.hypot(p[0], p[1])), a.parameters.radius || 0) * 1.12 || 1;
   const w = a.parameters.omega;
   const setup = (root) => {
     const [W] = plotSize(root, 420, 420), H = W, s = (W / 2 - 8) / R;
     put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
     const X = (x) => W / 2 + s * x, Y = (y) => H / 2 - s * y;
+    X.invert = (px) => (px - W / 2) / s; Y.invert = (py) => (H / 2 - py) / s;
     add(root, svg('circle', {cx: X(0), cy: Y(0), r: s * R * 0.98, fill: '#f1f3f5', stroke: '#868e96', 'stroke-width': 1.5}));
     const line = svg('line', {stroke: '#1864ab', 'stroke-width': 3, 'data-role': 'painted'});
     const path = (ps, a2) => svg('polyline', {points: ps.map(p => `${X(p[0]).toFixed(1)},${Y(p[1]).toFixed(1)}`).join(' '), fill: 'none', ...a2});
@@ -143,7 +169,26 @@ function draw(room, onTable, a, play) {
   const trailA = A.path([], {stroke: '#c92a2a', 'stroke-width': 3}), trailB = B.path([], {stroke: '#c92a2a', 'stroke-width': 3});
   const puckA = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
   const puckB = svg('circle', {r: 8, fill: '#c92a2a', stroke: '#fff', 'stroke-width': 2, 'data-role': 'puck'});
-  add(room, trailA, puckA); add(onTable, trailB, puckB);
+  const vecs = svg('g', {id: 'table-vectors'});
+  add(room, trailA, puckA); add(onTable, trailB, vecs, puckB);
+  // seen from the table: v′ = R(−ωt)(v − ω×r) from the room's constant velocity v, the centrifugal force mω²r′,
+  // the Coriolis force −2mω×v′ = 2mω(v′y, −v′x), the net force their sum; scales fixed by the start
+  const m = a.parameters.mass, v0 = a.initial ? a.initial.velocity_inertial : null;
+  const seen = (p, t) => {
+    const u = [v0[0] + w * p[1], v0[1] - w * p[0]], c = Math.cos(w * t), s = Math.sin(w * t);
+    const vp = [c * u[0] + s * u[1], -s * u[0] + c * u[1]];
+    return vp;
+  };
+  const forces = (q, vp) => { const cf = [m * w * w * q[0], m * w * w * q[1]], co = [2 * m * w * vp[1], -2 * m * w * vp[0]];
+    return {cf, co, net: [cf[0] + co[0], cf[1] + co[1]]}; };
+  let kF = 0, kV = 0, E0 = 1;
+  if (v0) {
+    const vp0 = seen(a.inertial[0], 0), F0 = forces(a.rotating[0], vp0), sB = B.X(1) - B.X(0);
+    kF = 50 / (Math.max(...[F0.cf, F0.co, F0.net].map(f => Math.hypot(f[0], f[1]))) || 1);
+    kV = 50 / (Math.hypot(vp0[0], vp0[1]) || 1);
+    E0 = Math.max(0.5 * m * (vp0[0] ** 2 + vp0[1] ** 2), 0.5 * m * w * w * (a.rotating[0][0] ** 2 + a.rotating[0][1] ** 2)) || 1;
+    void sB;
+  }
   // the painted line lies along the table's x′ axis: at angle ωt in the room, fixed on the table
   const paint = (G, ang) => {
     const c = R * 0.98 * Math.cos(ang), d = R * 0.98 * Math.sin(ang);
@@ -151,6 +196,24 @@ function draw(room, onTable, a, play) {
   };
   const trail = (G, ps, i, p) => ps.slice(0, i + 1).concat([p]).map(q => `${G.X(q[0]).toFixed(1)},${G.Y(q[1]).toFixed(1)}`).join(' ');
   paint(B, 0);
+  // the launch: the start and the velocity arrow (its tip at r₀ + v τ, τ = 1/|ω|: where the puck would be after the
+  // table turns one radian), both handles
+  if (launch && a.initial) {
+    const r0 = a.initial.position, v0 = a.initial.velocity_inertial, tau = 1 / (Math.abs(w) || 1);
+    const tip = [r0[0] + v0[0] * tau, r0[1] + v0[1] * tau];
+    const a0 = {...a.initial, t_end: a.parameters.t_end};
+    const defs = svg('defs', {});
+    add(defs, arrowHead('table-arrow', '#5c3b00'));
+    add(room, defs, svg('line', {x1: A.X(r0[0]), y1: A.Y(r0[1]), x2: A.X(tip[0]), y2: A.Y(tip[1]), stroke: '#5c3b00', 'stroke-width': 3,
+      'marker-end': 'url(#table-arrow)'}),
+      handle(room, {id: 'table-start', X: A.X, Y: A.Y, at: [r0[0], r0[1]], color: '#c92a2a', step: [0.05, 0.05],
+        label: 'the puck\'s start', text: (x, y) => `start x = ${fmt(x, 3)} m, y = ${fmt(y, 3)} m`,
+        onMove: (x, y, done) => launch('start', x, y, done, R, a0)}),
+      handle(room, {id: 'table-velocity', X: A.X, Y: A.Y, at: tip, color: '#5c3b00', step: [0.05 * tau, 0.05 * tau], r: 7,
+        label: 'the launch velocity (arrow tip)', text: (x, y) => { const u = [(x - r0[0]) / tau, (y - r0[1]) / tau];
+          return `velocity vₓ = ${fmt(u[0], 3)} m/s, v_y = ${fmt(u[1], 3)} m/s (${fmt(Math.hypot(u[0], u[1]), 3)} m/s)`; },
+        onMove: (x, y, done) => launch('velocity', (x - r0[0]) / tau, (y - r0[1]) / tau, done, R, a0)}));
+  }
   play.set(a.t, (i, f, t) => {
     const j = Math.min(i + 1, a.t.length - 1);
     const p = lerp(a.inertial[i], a.inertial[j], f), q = lerp(a.rotating[i], a.rotating[j], f);
@@ -159,6 +222,22 @@ function draw(room, onTable, a, play) {
     trailA.setAttribute('points', trail(A, a.inertial, i, p)); trailB.setAttribute('points', trail(B, a.rotating, i, q));
     paint(A, w * t);
     room.dataset.puck = `${p[0].toFixed(4)},${p[1].toFixed(4)}`; onTable.dataset.puck = `${q[0].toFixed(4)},${q[1].toFixed(4)}`;
-  });
+    if (v0) {
+      const vp = seen(p, t), F = forces(q, vp), bx = B.X(q[0]), by = B.Y(q[1]);
+      const ar = (f, k, c, name) => arrow(bx, by, bx + k * f[0], by - k * f[1], c, name, 16); // 16: still 10 px in a phone's half-width panel
+      put(vecs, ar(F.cf, kF, '#a65300', 'cf'), ar(F.co, kF, '#1f6f30', 'Cor'), ar(F.net, kF, '#111', 'net'), ar(vp, kV, '#1864ab', 'v′'));
+      onTable.dataset.forces = JSON.stringify(F);
+      if (energy) {
+        const K = 0.5 * m * (vp[0] ** 2 + vp[1] ** 2), U = -0.5 * m * w * w * (q[0] ** 2 + q[1] ** 2);
+        energyBars(energy, [['½mv′²', K, '#1864ab'], ['−½mω²r′²', U, '#a65300'], ['sum', K + U, '#111']], E0, 'energy seen from the table');
+      }
+    }
+  }, {grow: []});
+}
+// An SVG arrowhead marker of the colour given.
+function arrowHead(id, color) {
+  const m = svg('marker', {id, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 7, markerHeight: 7, orient: 'auto-start-reverse'});
+  add(m, svg('path', {d: 'M 0 0 L 10 5 L 0 10 z', fill: color}));
+  return m;
 }
 const niceLen = (x) => { const p = 10 ** Math.floor(Math.log10(x)), m = x / p; return (m < 2 ? 1 : m < 5 ? 2 : 5) * p; };

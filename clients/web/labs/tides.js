@@ -3,7 +3,7 @@
 // Sun aligned (spring tide) or at a quarter Moon (neap tide). One
 // POST /v1/batch of /v1/earth/tides at every 15° (the field is symmetric about
 // the line to each body, so 0…180° is enough), plus the marked point.
-import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10, notesBox} from '../lib.js';
+import {el, svg, put, add, field, val, fmt, num, labLayout, runner, examplePicker, plotSize, plotTools, pow10, notesBox, textShade} from '../lib.js';
 import {player} from '../anim.js';
 
 const MONTH = 29.53; // days from new Moon to new Moon (the synodic month)
@@ -62,15 +62,10 @@ export default {
       return {operations: ops};
     }, (res, req) => {
       const bad = res.results.findIndex(r => r.status !== 200);
-      if (bad >= 0) {
+      if (bad >= 0) { // placed on the field at fault like any problem (the marked point's item comes first); the picture stays, dimmed
         const pr = res.results[bad].problem || res.results[bad].body || {};
-        const detail = (pr.errors && pr.errors[0] && pr.errors[0].detail) || pr.detail || 'failed';
-        put(L.results, el('p', {class: 'problem', id: 'tides-error'}, `${req.operations[bad].request.body} at ${req.operations[bad].request.angle_deg}°: ${detail}`));
-        for (const x of pr.errors || []) { // the marked point's field, when it is the one at fault
-          const f = L.form.querySelector(`[data-pointer="${x.pointer}"]`);
-          if (f) { f.setAttribute('aria-invalid', 'true'); const box = document.getElementById(f.getAttribute('aria-describedby')); if (box) box.textContent = x.detail; }
-        }
-        put(plot); return false;
+        return {status: res.results[bad].status, problem: {...pr, errors: (pr.errors || []).map(x => ({...x,
+          pointer: x.pointer && x.pointer.startsWith('/operations/') ? x.pointer : `/operations/${bad}/request${x.pointer || ''}`}))}};
       }
       const m = 1 + 180 / STEP, body = (k) => res.results.slice(k * (m + 1), (k + 1) * (m + 1)).map(r => r.body);
       const [moon, sunA] = [body(0), body(1)];
@@ -175,7 +170,7 @@ function drawField(root, note, {moon, sun, alpha, point, wrap}) {
     const c = Math.cos(beta * Math.PI / 180), s = Math.sin(beta * Math.PI / 180), r = W * (below ? 0.42 : 0.46);
     add(root, svg('line', {x1: cx + R0 * 1.55 * c, y1: cy - R0 * 1.55 * s, x2: cx + r * c, y2: cy - r * s, stroke: color, 'stroke-width': 2, 'stroke-dasharray': '4 4'}),
       svg('circle', {cx: cx + r * c, cy: cy - r * s, r: 9, fill: color}),
-      svg('text', {x: cx + r * c, y: cy - r * s + (below ? 28 : s > 0.5 ? 26 : -14), 'text-anchor': c > 0.5 ? 'end' : c < -0.5 ? 'start' : 'middle', 'font-size': 15, 'font-weight': 700, fill: color}, name));
+      svg('text', {x: cx + r * c, y: cy - r * s + (below ? 28 : s > 0.5 ? 26 : -14), 'text-anchor': c > 0.5 ? 'end' : c < -0.5 ? 'start' : 'middle', 'font-size': 15, 'font-weight': 700, fill: textShade(color)}, name));
   };
   if (moon) dir(0, 'Moon', '#495057');
   if (sun) dir(alpha, 'Sun', '#e67700', moon && alpha === 0);

@@ -3,7 +3,9 @@
 // of an asymmetric free body (POST /v1/rigid/rotate).
 import {el, svg, put, add, field, val, fmt, num, labLayout, labSection, runner, examplePicker, linePlot, costPreview, notesBox} from '../lib.js';
 import {player} from '../anim.js';
-import {THREE, view3d, polyline, sceneAxes, axesArrows} from '../view3d.js';
+import {handle, rerun} from '../handles.js';
+import {energyBars} from '../draw.js';
+import {THREE, view3d, polyline, sceneAxes, axesArrows, label} from '../view3d.js';
 
 const BUILTIN = [{title: 'Fast top: I1 = 0.02, I3 = 0.01, θ0 = 0.5, ψ̇ = 60 rad/s', operation: '/v1/rigid/top',
   request: {I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, psi_dot: 60, t_end: 2, samples: 801}},
@@ -41,13 +43,29 @@ export default {
     // the chooser's predicted cost at the chosen accuracy (and at draft) before the run: a dry run
     const topBody = () => { const b = {}; for (const [k, c] of Object.entries(f)) b[k] = val(c.input); b.samples = 801; return b; };
     const cost = costPreview(L.form, '/v1/rigid/top', topBody, {id: 'top-cost'});
+    // direct manipulation: the top's tilt (drag its axis round the pivot) and its spin (drag along the spin bar)
+    const dial = svg('svg', {class: 'plot dial', id: 'top-dial', role: 'group',
+      'aria-label': 'The top at release: drag its axis (tilt θ0) or the spin bar (ψ̇), or focus them and use the arrow keys'});
+    add(L.form, el('div', {class: 'dial-box'}, el('p', {class: 'muted'}, 'Or drag the top\'s tilt and spin:'), dial));
+    const again = rerun(() => { run(); cost.predict(); }, 250);
+    const drawDial = () => topDial(dial, val(f.theta.input), val(f.psi_dot.input), (th, ps, done) => {
+      if (th !== null) f.theta.input.value = th;
+      if (ps !== null) f.psi_dot.input.value = ps;
+      drawDial(); again(done);
+    });
+    for (const c of [f.theta.input, f.psi_dot.input]) c.addEventListener('input', drawDial);
+    drawDial();
     add(L.form, cost.wrap, el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'top-submit'}, 'Spin')));
     const box3d = el('div', {class: 'view3d-box', id: 'top-3d-box'});
     const theta = svg('svg', {class: 'plot', id: 'top-theta-plot', role: 'img', 'aria-label': 'theta against time'});
-    const play = player({label: 'The top'});
+    const vecNote = el('p', {id: 'top-vectors', 'aria-live': 'off'});
+    const topEnergy = svg('svg', {class: 'plot dial energy', id: 'top-energy', role: 'img', 'aria-label': 'energy bars'});
+    const play = player({label: 'The top', reverse: 'Backwards: a top run backwards is a top too, spinning and precessing the other way (no friction: the equations are the same with t → −t, ψ̇ → −ψ̇, φ̇ → −φ̇).'});
     add(L.figure, el('h3', {}, 'The top in 3-D'), box3d, play.root,
       el('p', {class: 'muted'}, 'Tip fixed at the origin, z up. The blue curve is the path of the symmetry axis\' end ',
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
+      vecNote, el('h3', {}, 'Energy'), topEnergy,
+      el('p', {class: 'muted'}, 'The notes\' E′ = E − ½I₃ω₃² (the spin\'s own energy is constant and left out): as the top dips, Mgh cos θ falls and the wobble\'s kinetic energy rises by as much; the sum stays level.'),
       el('h3', {}, 'θ(t)'), theta);
     const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
     const topGroup = new THREE.Group(), world = new THREE.Group();
@@ -79,7 +97,7 @@ export default {
       const d = req.distance > 0 ? req.distance : 0.1, Lx = d * 1.5;
       const cursor = svg('line', {stroke: '#111', 'stroke-width': 1.5, 'stroke-dasharray': '4 3'});
       let Xs = null, tCur = 0;
-      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ'}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
+      linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ', t: a.t}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
         marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
           cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
       // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
@@ -105,6 +123,48 @@ export default {
       const floor = new THREE.Mesh(new THREE.CircleGeometry(Lx, 64), new THREE.MeshBasicMaterial({color: 0xeeeeee, side: THREE.DoubleSide}));
       floor.position.z = -0.001; world.add(floor);
       V.frame(Lx * 0.8, [0, 0, d * 0.6]);
+      // L, ω and τ on the top as it plays: ω = φ̇ ẑ + θ̇ n̂ + ψ̇ ê3 (n̂ the line of nodes (cos φ, sin φ, 0), the
+      // rates from the samples), L = I1 (ω − ω3 ê3) + I3 ω3 ê3, τ = h ê3 × (−M g ẑ); each arrow scaled to its
+      // size at the release, its value said under the view
+      const I1 = req.I1, I3 = req.I3, Mgh = req.mass * (req.g ?? 9.80665) * req.distance;
+      const rate = (arr, k) => { const a0 = Math.max(0, k - 1), a1 = Math.min(a.t.length - 1, k + 1); return (arr[a1] - arr[a0]) / (a.t[a1] - a.t[a0]); };
+      const vectorsAt = (k) => {
+        const th = a.theta[k], ph = a.phi[k], e3 = [Math.sin(th) * Math.sin(ph), -Math.sin(th) * Math.cos(ph), Math.cos(th)];
+        const nn = [Math.cos(ph), Math.sin(ph), 0], pd = rate(a.phi, k), td = rate(a.theta, k), sd = rate(a.psi, k);
+        const w = [0, 1, 2].map(c => pd * (c === 2 ? 1 : 0) + td * nn[c] + sd * e3[c]);
+        const w3 = w[0] * e3[0] + w[1] * e3[1] + w[2] * e3[2];
+        const Lv = w.map((x, c) => I1 * (x - w3 * e3[c]) + I3 * w3 * e3[c]);
+        const tau = [-Mgh * e3[1], Mgh * e3[0], 0];
+        // the notes' E′ = E − p_ψ²/2I3: the wobble's kinetic energy ½ I1 (θ̇² + φ̇² sin²θ) and M g h cos θ, their sum
+        // conserved (the spin's ½ I3 ω3², constant, left out: it would dwarf the exchange)
+        const K = 0.5 * I1 * (td * td + pd * pd * Math.sin(th) ** 2), U = Mgh * Math.cos(th);
+        return {w, L: Lv, tau, K, U};
+      };
+      const v0 = vectorsAt(0), mag = (v) => Math.hypot(v[0], v[1], v[2]);
+      const arrows = [['L', 0xc92a2a], ['ω', 0x2b8a3e], ['τ', 0xa65300]].map(([nm, col]) => {
+        const h = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(0, 0, 0), d, col, 0.15 * d, 0.08 * d);
+        const s = label(nm, '#' + col.toString(16).padStart(6, '0')); s.scale.multiplyScalar(d * 0.25);
+        world.add(h, s); return [h, s];
+      });
+      const place = (k) => {
+        const v = vectorsAt(k);
+        [[v.L, v0.L], [v.w, v0.w], [v.tau, v0.tau]].forEach(([x, x0], n) => {
+          // L and ω out past the stem (1.5 d), L the longer; τ from the tip along the floor
+          const m = mag(x), len = Math.min(2.5, m / (mag(x0) || m || 1)) * d * [2.4, 1.9, 1.3][n];
+          const [h, s] = arrows[n];
+          h.visible = s.visible = m > 0;
+          if (!m) return;
+          const dir = new THREE.Vector3(...x).normalize();
+          h.setDirection(dir); h.setLength(Math.max(len, d * 0.1), 0.15 * d, 0.08 * d);
+          s.position.copy(dir.multiplyScalar(Math.max(len, d * 0.1) * 1.1));
+        });
+        vecNote.dataset.vectors = JSON.stringify(v);
+        energyBars(topEnergy, [['½I₁(θ̇²+φ̇²sin²θ)', v.K, '#1864ab'], ['Mgh cos θ', v.U, '#a65300'], ['E′ = sum', v.K + v.U, '#111']],
+          v0.K + v0.U, 'the top\'s energy E′ = E − ½I₃ω₃²');
+        put(vecNote, el('strong', {}, 'On the top: '), el('span', {class: 'c1'}, `L = ${fmt(mag(v.L), 4)} kg m²/s`), ', ',
+          el('span', {class: 'c2'}, `ω = ${fmt(mag(v.w), 4)} rad/s`), ', ', el('span', {class: 'c4'}, `τ = ${fmt(mag(v.tau), 4)} N m`),
+          ' (τ = dL/dt turns L round the vertical: the precession; each arrow drawn against its size at the release).');
+      };
       const qz = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(0, 0, 1), ang);
       const qx = (ang) => new THREE.Quaternion().setFromAxisAngle(new THREE.Vector3(1, 0, 0), ang);
       play.set(a.t, (i, fr, t) => {
@@ -112,9 +172,10 @@ export default {
         // z-x-z Euler angles: R = Rz(φ) Rx(θ) Rz(ψ) (symmetry axis (sin θ sin φ, −sin θ cos φ, cos θ), as the API's axis samples)
         topGroup.quaternion.copy(qz(at(a.phi)).multiply(qx(at(a.theta))).multiply(qz(at(a.psi))));
         trace.geometry.setDrawRange(0, i + 1);
+        place(fr > 0.5 ? j : i);
         V.render();
         tCur = t; if (Xs) { cursor.setAttribute('x1', Xs(t)); cursor.setAttribute('x2', Xs(t)); }
-      });
+      }, {grow: [theta]}); // θ(t) grows as it plays
     });
     run(); cost.predict();
 
@@ -196,3 +257,39 @@ export default {
     drun();
   },
 };
+
+// The top at release seen from the side: its axis at θ0 from the vertical from the pivot, the axis' end a
+// handle moved round the pivot (arrow keys 0.05 rad, Shift 0.5); beside it the spin ψ̇ on a bar from −200 to
+// 200 rad/s, a handle moved up and down (5 rad/s, Shift 50). onMove(θ0 or null, ψ̇ or null, done).
+function topDial(root, theta, psi, onMove) {
+  const W = 300, H = 190, px = 90, py = 165, L = 130;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+  const th = Number.isFinite(theta) ? Math.min(Math.PI, Math.max(0, theta)) : 0.5, ps = Number.isFinite(psi) ? psi : 60;
+  const X = (x) => px + L * x, Y = (y) => py - L * y;
+  X.invert = (p) => (p - px) / L; Y.invert = (p) => (py - p) / L;
+  const tip = [Math.sin(th), Math.cos(th)];
+  const thetaOf = (x, y) => Math.min(Math.PI - 0.01, Math.max(0.01, Math.round(Math.atan2(Math.max(0, x), y) * 100) / 100));
+  add(root, svg('line', {x1: 10, y1: py, x2: 190, y2: py, stroke: '#555', 'stroke-width': 2}),
+    svg('line', {x1: px, y1: py, x2: px, y2: py - L - 10, stroke: '#999', 'stroke-dasharray': '4 4'}),
+    svg('path', {d: `M ${px} ${py - 40} A 40 40 0 0 1 ${px + 40 * tip[0]} ${py - 40 * tip[1]}`, fill: 'none', stroke: '#1864ab', 'stroke-width': 2}),
+    svg('line', {x1: px, y1: py, x2: X(tip[0]), y2: Y(tip[1]), stroke: '#1864ab', 'stroke-width': 5}),
+    svg('text', {x: 8, y: 16, 'font-size': 14, fill: '#1864ab', 'font-weight': 700}, `θ0 = ${fmt(th, 3)} rad (${fmt(th * 180 / Math.PI, 3)}°)`),
+    handle(root, {id: 'top-tilt', X, Y, at: tip, color: '#1864ab', label: 'the top\'s tilt θ0 (its axis)',
+      text: (x, y) => `tilt θ0 = ${fmt(thetaOf(x, y), 3)} rad from the vertical`,
+      nudge: (sign, big, at) => { const t = Math.min(Math.PI - 0.01, Math.max(0.01, thetaOf(at[0], at[1]) + sign * (big ? 0.5 : 0.05)));
+        return [Math.sin(t), Math.cos(t)]; },
+      onMove: (x, y, done) => onMove(thetaOf(x, y), null, done)}));
+  // the spin bar: y from −200 (bottom) to 200 rad/s (top)
+  const bx = 250, b0 = 175, b1 = 25, S = (v) => b0 + (v + 200) / 400 * (b1 - b0);
+  const SX = () => bx; SX.invert = () => 0;
+  const SY = (v) => S(v); SY.invert = (p) => (p - b0) / (b1 - b0) * 400 - 200;
+  const spinOf = (v) => Math.max(-200, Math.min(200, Math.round(v)));
+  add(root, svg('line', {x1: bx, y1: b0, x2: bx, y2: b1, stroke: '#555', 'stroke-width': 3}),
+    svg('line', {x1: bx - 6, y1: S(0), x2: bx + 6, y2: S(0), stroke: '#555', 'stroke-width': 2}),
+    svg('text', {x: bx - 10, y: S(0) + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '0'),
+    svg('text', {x: bx - 10, y: b1 + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '200'),
+    svg('text', {x: bx - 10, y: b0 + 4, 'font-size': 11, 'text-anchor': 'end', fill: '#444'}, '−200'),
+    svg('text', {x: W - 4, y: 16, 'font-size': 14, fill: '#5c3b00', 'font-weight': 700, 'text-anchor': 'end'}, `ψ̇ = ${fmt(ps, 4)} rad/s`),
+    handle(root, {id: 'top-spin', X: SX, Y: SY, at: [0, ps], axes: 'y', step: [0, 5], color: '#5c3b00', label: 'the top\'s spin ψ̇',
+      text: (x, y) => `spin ψ̇ = ${fmt(spinOf(y), 4)} rad/s`, onMove: (x, y, done) => onMove(null, spinOf(y), done)}));
+}

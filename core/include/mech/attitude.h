@@ -1,6 +1,6 @@
 /* mech/attitude.h — unit-quaternion attitude kinematics for rigid bodies.
  *
- * Convention (mech/rotation.h, DESIGN.md): orientations are PASSIVE. The
+ * Convention (mech/rotation.h, the notes' convention): orientations are PASSIVE. The
  * quaternion q = [w, x, y, z] = [cos(a/2), sin(a/2) n] describes the turn of
  * the space axes by a about n into the body axes; its passive matrix
  * R = (w^2 - |v|^2) 1 + 2 v v^T - 2 w [v]x takes space components to body

@@ -2,7 +2,7 @@
  *
  * A boost is described by its rapidity η ≥ 0 and a unit direction n: the new
  * frame moves with velocity βc n, β = tanh η (passive, as in the notes §3.4:
- * x' = γ(x − βct), ct' = γ(ct − βx); DESIGN.md "HTTP contract").
+ * x' = γ(x − βct), ct' = γ(ct − βx); docs/design.md "Conventions").
  * 4-vectors are x = (x0, x1, x2, x3) with x0 = ct (or E/c), metric (−,+,+,+).
  *
  * Precision (notes/numerics.md "Special relativity in floating point"): the

@@ -1,5 +1,6 @@
 /* mech/chooser.h — the predictive method chooser behind {"accuracy": ...} and
- * {"target_error": ...} (issue 16, "A chooser that predicts cost and error").
+ * {"target_error": ...}: it predicts each candidate's cost and error and
+ * runs the cheapest predicted to meet the target.
  *
  * Given a profile of the scene (its class, the run's length in dynamical
  * times, the scale of its state, its sample count, whether it has a

@@ -1,6 +1,6 @@
 /* mech/chooser_pilot.h — a short pilot run where the chooser's prediction is
- * uncertain and being wrong is expensive (issue 16, "a short pilot run where
- * that is cheaper than being wrong").
+ * uncertain and being wrong is expensive (a short pilot run where
+ * that is cheaper than being wrong).
  *
  * The calibrated table (mech/chooser.h) has no closed-form estimate of the
  * step count for some systems (the heavy top, Hamiltonian flows such as

@@ -1,6 +1,6 @@
 /* mech/closed_form.h — trajectories answered from their exact solution
- * instead of an integrator (issue 16: "the closed form, when the scene has
- * one and the user asked by accuracy"): Kepler two-body motion (universal
+ * instead of an integrator (the closed form, when the scene has
+ * one and the user asked by accuracy): Kepler two-body motion (universal
  * variables, any eccentricity, radial orbits included), the isotropic
  * harmonic oscillator (with uniform gravity), uniform gravity with or
  * without linear drag, the free particle — the scenes for which

@@ -39,6 +39,7 @@ struct mech_collision_threshold {
      * 0 when the two at rest already reach it) */
     int has_fixed_target;
     double fixed_target_beam_energy, fixed_target_beam_kinetic;
+    double fixed_target_beam_momentum; /* sqrt(T (T + 2 m1)): no cancellation at small T */
     /* equal masses and sqrt_s / 2 >= m: each beam's energy in a symmetric
      * head-on collider */
     int has_symmetric_collider;

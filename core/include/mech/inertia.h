@@ -3,11 +3,11 @@
  * rotation (notes ch. 2: §2.1-2.5).
  *
  * Units: SI (kg, m, kg m^2, rad/s, J). Tensors are in scene axes.
- * Precision (DESIGN.md "Numerics"): the centre of mass is found relative to the
- * first part's centre of mass and refined once; the tensor about it is accumulated
- * in centred coordinates, then moved to the requested origin with the parallel
- * axis theorem (notes §2.3), so a small body far from the scene origin keeps
- * full relative precision. Reentrant; allocations: a scratch array of n part
+ * Precision (docs/design.md, "Precision by construction"): the centre of mass
+ * is found relative to the first part's centre of mass and refined once; the
+ * tensor about it is accumulated in centred coordinates, then moved to the
+ * requested origin with the parallel axis theorem (notes §2.3), so a small
+ * body far from the scene origin keeps full relative precision. Reentrant; allocations: a scratch array of n part
  * results per mech_inertia_compute*() call, the mesh edge list (mech/mesh.h) and GSL's 3x3
  * eigen-workspace inside mech_inertia_principal().
  */

@@ -66,6 +66,10 @@ struct mech_ode_kepler_split {
 
 /* mech_ode_system.flags */
 #define MECH_ODE_VELOCITY_FREE 0x1u /* accel does not depend on v (lets Verlet be explicit) */
+/* rhs and accel return MECH_ENUMERIC themselves whenever a component they
+ * write is not finite, so the driver does not test every derivative again
+ * (it does for systems without the flag) */
+#define MECH_ODE_FINITE_OUTPUT 0x2u
 
 struct mech_ode_system {
     size_t dim;              /* state dimension, >= 1 (even when accel is given) */

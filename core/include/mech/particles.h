@@ -12,7 +12,7 @@
  * photon is massless. Antiparticles have their particle's mass (CPT).
  *
  * The table is an X-macro so the API can build its schema enum and catalog
- * text from the same entries the lookup uses (STYLE.md §1: one const table,
+ * text from the same entries the lookup uses (one const table,
  * no runtime registration): MECH_PARTICLE_TABLE(X, SEP) expands to
  * X(name, mass_MeV, source) SEP X(...) ..., name and source string literals,
  * mass a numeric literal.

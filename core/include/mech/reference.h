@@ -1,5 +1,5 @@
 /* mech/reference.h — exact and first-order solutions used as references for
- * the error of numerical trajectories (DESIGN.md "Accuracy you can see").
+ * the error of numerical trajectories (every numeric answer says how good it is).
  *
  *   Kepler two-body motion (universal variables, any conic),
  *   the isotropic harmonic oscillator (spring of rest length 0) with uniform
@@ -48,7 +48,7 @@ void mech_harmonic_propagate_dd(double omega, double omega_lo, struct mech_vec3 
  *   v = v0 e^{-x} + g t E1(x),  r = r0 + v0 t E1(x) + g t^2 E2(x),  x = gamma t,
  * E1(x) = (1 - e^{-x})/x = -expm1(-x)/x, E2(x) = (x - 1 + e^{-x})/x^2 (a series
  * for x < 1, so no cancellation); gamma = 0 gives r0 + v0 t + g t^2/2. This is
- * the issue's r0 + (m/b)(v0 - v_term)(1 - e^{-bt/m}) + v_term t, v_term = m g/b,
+ * the closed form r0 + (m/b)(v0 - v_term)(1 - e^{-bt/m}) + v_term t, v_term = m g/b,
  * rearranged so that neither large nor small b t/m cancels. Cannot fail. */
 void mech_uniform_drag_propagate(struct mech_vec3 g, double gamma, struct mech_vec3 r0,
                                  struct mech_vec3 v0, double t, struct mech_vec3 *r,

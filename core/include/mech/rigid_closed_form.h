@@ -1,5 +1,5 @@
 /* mech/rigid_closed_form.h — the torque-free rigid body answered from its
- * exact solution (Jacobi elliptic functions, issue 16) instead of an
+ * exact solution (Jacobi elliptic functions) instead of an
  * integrator, with the same result as mech_rigid_rotate (mech/rigid_rotation.h).
  * The trajectories' closed forms are mech/closed_form.h's.
  *

@@ -4,7 +4,7 @@
  * extrinsic and the rotation vector), conversions back to every form with
  * gimbal-lock handling, composition, residuals, and the active sense.
  *
- * Convention (notes ch. 0 and §2.6; DESIGN.md "Conventions"): rotations are
+ * Convention (notes ch. 0 and §2.6; docs/design.md): rotations are
  * PASSIVE. A rotation matrix R takes the components of a vector in the old
  * (scene) axes to its components in the new (body) axes, v_new = R v_old; the
  * rows of R are the new axes written in the old ones. All four constructors
@@ -67,7 +67,7 @@ enum mech_status mech_rotation_from_axis_angle(struct mech_vec3 axis, double ang
 enum mech_status mech_rotation_from_quaternion(const double q[4], struct mech_mat3 *out,
                                                struct mech_error *err);
 
-/* ==== Representations, conversions and composition (issue 4) ==============
+/* ==== Representations, conversions and composition ========================
  *
  * Every form below describes one TURN (a right-handed rotation by some angle
  * about some axis). Its matrix depends on the SENSE:

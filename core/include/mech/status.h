@@ -1,7 +1,7 @@
 /* mech/status.h — status codes and the caller-owned error record shared by
  * every fallible libmech function.
  *
- * Contract (STYLE.md §4, §5): fallible functions return enum mech_status and
+ * Contract (docs/design.md, "Numerics and errors"): fallible functions return enum mech_status and
  * take an optional `struct mech_error *` last. The first error recorded wins;
  * later ones are ignored. Nothing is allocated on an error path. Codes are
  * append-only: never renumber or remove one (pinned by tests/api/test_problem.c).

@@ -36,6 +36,9 @@ struct mech_vector_pair {
     double b_along_a, a_along_b;     /* signed components: a.b/|a|, a.b/|b| */
     struct mech_vec3 b_on_a;         /* projection of b on a: (a.b/|a|^2) a */
     struct mech_vec3 b_across_a;     /* b - b_on_a: the part of b normal to a */
+    struct mech_vec3 difference;     /* a - b (each component rounded once) */
+    struct mech_vec3 sum;            /* a + b */
+    double distance;                 /* |a - b|, from the rounded difference */
 };
 
 /* Everything in struct mech_vector_pair for a and b (finite components, any
@@ -43,8 +46,9 @@ struct mech_vector_pair {
  * |a||b| (absolute), angle to a few ulp relative for any angle, including
  * ones near 0 and pi (near-parallel vectors).
  * Returns MECH_OK; MECH_EINVAL with param "a" or "b" for a non-finite
- * component; MECH_EDOMAIN with param "b" when |a||b| exceeds the double range
- * (a product would overflow). out must not be NULL; written only on success. */
+ * component; MECH_EDOMAIN with param "b" when |a||b|, a + b or a - b exceeds
+ * the double range (a product or a sum would overflow). out must not be
+ * NULL; written only on success. */
 enum mech_status mech_vector_pair(struct mech_vec3 a, struct mech_vec3 b,
                                   struct mech_vector_pair *out, struct mech_error *err);
 

@@ -34,7 +34,7 @@ static int hard_failure(struct mech_gsl_rhs *c, enum mech_status code, const cha
                         const char *text)
 {
     c->status = mech_error_set(c->err, code, param && param[0] ? param : NULL, "%s", text);
-    return GSL_EBADFUNC; /* stops the integration at once (STYLE.md §6) */
+    return GSL_EBADFUNC; /* stops the integration at once, cleanly: never abort */
 }
 
 int mech_gsl_rhs_numeric(struct mech_gsl_rhs *c, double t, const double *y, const char *text)
@@ -46,18 +46,31 @@ int mech_gsl_rhs_numeric(struct mech_gsl_rhs *c, double t, const double *y, cons
     return MECH_GSL_TRIAL_REJECT;
 }
 
-int mech_gsl_rhs_eval(struct mech_gsl_rhs *c, double t, const double *y, double *dydt)
+/* A failed evaluation (status st, counted already): evaluate again,
+ * uncounted, for its explanation. Out of line, so that the hot path below
+ * keeps a small frame (no error struct on its stack). */
+static __attribute__((noinline, cold)) int rhs_failed(struct mech_gsl_rhs *c, enum mech_status st,
+                                                      double t, const double *y, double *dydt)
 {
-    /* the hot path records nothing (no error struct to clear per stage) */
-    enum mech_status st = mech_ode_eval(c->sys, t, y, dydt, c->stats, NULL);
-    if (st == MECH_OK) return GSL_SUCCESS;
-    /* a failure: evaluate again, uncounted, for its explanation */
     struct mech_error e;
     mech_error_clear(&e);
     if (mech_ode_eval(c->sys, t, y, dydt, NULL, &e) == MECH_OK || e.code != st)
         snprintf(e.text, sizeof e.text, "the right-hand side failed at t = %.9g s", t);
     if (st == MECH_ENUMERIC) return mech_gsl_rhs_numeric(c, t, y, e.text);
     return hard_failure(c, st, e.param, e.text);
+}
+
+int mech_gsl_rhs_eval(struct mech_gsl_rhs *c, double t, const double *y, double *dydt)
+{
+    /* the hot path records nothing (no error struct to clear per stage) */
+    const struct mech_ode_system *sys = c->sys;
+    if (sys->flags & MECH_ODE_FINITE_OUTPUT) { /* mech_ode_eval's work, inlined */
+        if (c->stats) c->stats->rhs_evaluations++;
+        const enum mech_status st = sys->rhs(t, y, dydt, sys->params);
+        return st == MECH_OK ? GSL_SUCCESS : rhs_failed(c, st, t, y, dydt);
+    }
+    const enum mech_status st = mech_ode_eval(sys, t, y, dydt, c->stats, NULL);
+    return st == MECH_OK ? GSL_SUCCESS : rhs_failed(c, st, t, y, dydt);
 }
 
 int mech_gsl_rhs_fn(double t, const double y[], double dydt[], void *params)

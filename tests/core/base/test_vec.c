@@ -2,7 +2,7 @@
  * scale, and the trajectory force loop's fast path against its generic loop.
  *
  * mech_vec3_norm takes sqrt(x^2 + y^2 + z^2) where that sum is safely in
- * range and falls back to hypot otherwise (issue 16). Checked against
+ * range and falls back to hypot otherwise. Checked against
  * sqrtl of the sum in long double (x87: 64-bit mantissa, exponent range to
  * 1e+-4932, so no square over/underflows for any double): random vectors
  * with independent exponents from 1e-320 to 1e300, tiny (1e-200) and huge

@@ -92,7 +92,7 @@ static void test_period(void)
     CHECK_CLOSE(mech_pendulum_period(l, g, a),
                 T0 * (1.0 + a * a / 16.0 + 11.0 * pow(a, 4) / 3072.0), 1e-14, 0);
 
-    /* The correction T/T0 - 1 = 2K(k)/pi - 1 (issue 15 item 7) against an independent
+    /* The correction T/T0 - 1 = 2K(k)/pi - 1 against an independent
      * method: the series sum_{n>=1} ((2n-1)!!/(2n)!!)^2 k^(2n) (A & S 17.3.11) of positive
      * terms, in long double, k = sin(alpha/2). T/T0 - 1 in doubles was off by 1.8e-5
      * relative at alpha = 1e-5 rad, 5.8e-10 at 1e-3, 4.8e-13 at 0.05. */

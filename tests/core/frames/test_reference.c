@@ -514,7 +514,7 @@ static void test_recognition_issue6(void)
 }
 
 /* Near-parabolic ellipses (e = 0.999, 0.99999) over 1.5 periods against
- * Kepler's equation solved in long double for the state as given (issue 16):
+ * Kepler's equation solved in long double for the state as given:
  * beta = 2 gm / r0 - v^2 cancels to 1 - e, and formed in plain double it cost
  * the period ~eps / (1 - e) (1.2e-10 relative in position at e = 0.99999). */
 static void test_kepler_near_parabolic_digits(void)
@@ -554,7 +554,7 @@ static void test_kepler_near_parabolic_digits(void)
     }
 }
 
-/* 1e4 periods of the oscillator through the reference (issue 16): the phase
+/* 1e4 periods of the oscillator through the reference: the phase
  * omega t must not lose n eps over n periods (the old cos(sqrt(k/m) t) was off
  * by 4e-13 here); against cos/sin in long double. */
 static void test_harmonic_long(void)

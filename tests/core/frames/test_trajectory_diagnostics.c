@@ -3,7 +3,7 @@
  *   each preset (draft 1e-3, balanced 1e-8, precise 1e-10, machine 1e-11
  *   relative) meets its promise against the exact references: Kepler e = 0.5
  *   and e = 0.9 over 10 orbits, a harmonic oscillator over 20 periods, a
- *   projectile with drag; target_error likewise; issue 16's set (Kepler 10
+ *   projectile with drag; target_error likewise; the presets' scene set (Kepler 10
  *   and 1000 orbits, oscillator 1e4 periods, falling object with Coriolis):
  *   each preset within its promise or its stated round-off floor, and the
  *   four presets four computations of rising cost (rhs evaluations);
@@ -98,7 +98,7 @@ static void check_presets(struct mech_trajectory_problem p, const char *scene)
     }
 }
 
-/* Issue 16, "Presets that mean what they say": on Kepler e = 0.5 and 0.9 over
+/* Presets that mean what they say: on Kepler e = 0.5 and 0.9 over
  * 10 and 1000 orbits each preset meets its promise, or (long runs at balanced,
  * precise and machine) the selection re-states it and the error
  * stays within the stated round-off floor; and the four presets are four

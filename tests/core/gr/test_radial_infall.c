@@ -39,6 +39,17 @@ static void test_values(void)
     CHECK_EQ_INT(mech_radial_infall_from_rest(2.0 * (1 + 1e-12), &f, NULL), MECH_OK);
     CHECK_CLOSE(f.horizon_to_singularity, MECH_PI, 1e-5, 0);
     CHECK(f.to_horizon < 1e-5);
+    CHECK(!f.on_horizon);
+    /* On the horizon (and within 1e-12 below it, as a radius in metres rounds): the
+     * limit, tau(r0 -> 2M) = 0, tau(-> 0) = (pi/2) sqrt(2^3/2) = pi */
+    const double on[] = {2.0, 2.0 * (1 - 1e-13)};
+    for (int i = 0; i < 2; i++) {
+        CHECK_EQ_INT(mech_radial_infall_from_rest(on[i], &f, NULL), MECH_OK);
+        CHECK(f.on_horizon);
+        CHECK(f.to_horizon == 0);
+        CHECK_CLOSE(f.to_singularity, MECH_PI, 1e-15, 0);
+        CHECK_CLOSE(f.horizon_to_singularity, MECH_PI, 1e-15, 0);
+    }
 }
 
 static void test_errors(void)
@@ -46,7 +57,7 @@ static void test_errors(void)
     struct mech_radial_infall f;
     struct mech_error e;
     mech_error_clear(&e);
-    CHECK_EQ_INT(mech_radial_infall_from_rest(2.0, &f, &e), MECH_EDOMAIN);
+    CHECK_EQ_INT(mech_radial_infall_from_rest(2.0 * (1 - 1e-9), &f, &e), MECH_EDOMAIN);
     CHECK(!strcmp(e.param, "infall_from"));
     mech_error_clear(&e);
     CHECK_EQ_INT(mech_radial_infall_from_rest(NAN, &f, &e), MECH_EDOMAIN);

@@ -169,7 +169,7 @@ int main(void)
     CHECK_CLOSE(c2.net, c1.net, 1e-15, 0);
     CHECK_CLOSE(c3.net, c1.net, 1e-15, 0);
 
-    /* Clocks near the reference (issue 15 item 6): the tower and the ground.
+    /* Clocks near the reference: the tower and the ground.
      * R = 6371000 m, m = GM_earth/c^2 as the API forms it (the double 0x1.22a76c6285c0bp-8),
      * r = R + 1 cm, 1 m, 22.5 m (Pound-Rebka), 1 km, the GPS orbit, and r = 1.5 R + 1 m and
      * 1.5 R where net changes sign. Expected values: Python's decimal at 80 digits from the

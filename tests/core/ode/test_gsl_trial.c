@@ -1,7 +1,8 @@
 /* test_gsl_trial.c — the GSL adapters (rk8pd, rkck, rkf45, msbdf) reject a
  * trial step whose right-hand side is non-finite and shrink the step, and
  * stop with MECH_ENUMERIC only when the accepted state itself is bad
- * (issue 16, "non-finite trial" defect; integrators/gsl_rhs.h).
+ * (a non-finite trial is a rejected step, not a failed run;
+ * ode/integrators/gsl_rhs.h).
  *
  * Scene: x' = 1 - x, x(0) = 0, exact x = 1 - exp(-t), with the right-hand
  * side non-finite for x > 1 (a region the solution approaches but never

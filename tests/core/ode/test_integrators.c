@@ -3,7 +3,7 @@
  *   harmonic oscillator x'' = -x (x = cos t), with the observed convergence
  *   order of rk4 (4) and verlet (2) from two step sizes (every fixed-step
  *   method's order on two problems is in test_symplectic.c);
- *   the registry of issue 3 (14 methods, each with doc and reference);
+ *   the registry (14 methods, each with doc and reference);
  *   free fall stop time sqrt(2h/g) located to 1e-10 relative by every method
  *   of order >= 2 that is exact on a parabola (msbdf: 1e-9 at rtol 1e-10),
  *   the Euler methods' dt/2 offset;
@@ -103,8 +103,8 @@ static double ho_error(const char *name, double dt, double rtol, double t_end,
 
 static void test_registry(void)
 {
-    /* issue 3: 5 adaptive + 9 fixed-step methods, in catalog order; issue
-     * 16: wisdom_holman and wisdom_holman_corrected */
+    /* 5 adaptive + 9 fixed-step methods, in catalog order, then
+     * wisdom_holman and wisdom_holman_corrected */
     static const char *const names[] = {"rk8pd",  "rkck",     "rkf45",   "radau15",
                                         "msbdf",  "euler",    "symplectic_euler",
                                         "rk4",    "verlet",   "yoshida4", "yoshida6",

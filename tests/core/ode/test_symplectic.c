@@ -1,4 +1,4 @@
-/* test_symplectic.c — every fixed-step method of issue 3 (euler,
+/* test_symplectic.c — every fixed-step method of the registry (euler,
  * symplectic_euler, rk4, verlet, yoshida4, yoshida6, gauss4, gauss6, boris)
  * against closed forms, through the public driver (mech/ode.h):
  *
@@ -27,7 +27,7 @@
  *     integrator/dt; budgets (steps, deadline, cancel) stop runaway runs.
  *
  * Sized to run in a few seconds (well under a minute with ASan+UBSan): the
- * 1e5-orbit figures belong to bench/workprecision.
+ * 1e5-orbit figures belong to bench/bench_workprecision.c.
  */
 #include <float.h>
 #include <gsl/gsl_errno.h>

@@ -71,6 +71,8 @@ static void test_antiproton_threshold(void)
     CHECK(a.threshold.has_fixed_target);
     CHECK_CLOSE(a.threshold.fixed_target_beam_energy, 7 * m_p, 1e-15, 0);
     CHECK_CLOSE(a.threshold.fixed_target_beam_kinetic, 6 * m_p, 1e-15, 0);
+    /* p = sqrt(E^2 - m^2) = sqrt(49 - 1) m_p */
+    CHECK_CLOSE(a.threshold.fixed_target_beam_momentum, sqrt(48.0) * m_p, 1e-15, 0);
     CHECK(a.threshold.has_symmetric_collider);
     CHECK_CLOSE(a.threshold.symmetric_collider_beam_energy, 2 * m_p, 1e-15, 0);
     /* the beam at exactly 6 m_p kinetic is the threshold: sqrt(s) = 4 m_p */

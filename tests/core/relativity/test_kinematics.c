@@ -476,7 +476,7 @@ static void test_collisions(void)
     mech_kin_collision_s(&a, &b, 0.0, &s, &d);
     double de = asinh(2.0) - asinh(3.0);
     CHECK_CLOSE(d, 4 * M_P * M_P * sinh(de / 2) * sinh(de / 2), 1e-14, 0);
-    /* Co-moving with nearly equal velocities (issue 15 item 7): d = 2(E1E2 - p1p2 - m1m2),
+    /* Co-moving with nearly equal velocities: d = 2(E1E2 - p1p2 - m1m2),
      * E = sqrt(m^2 + p^2), by Python's decimal at 80 digits from the same doubles (the
      * direct form loses ~12 of the 80 digits here). The old rapidity difference
      * asinh(p1/m1) - asinh(p2/m2) was off by 2.2e-5 relative at p2 = p1 (1 + 2^-40) and
@@ -512,7 +512,7 @@ static void test_collisions(void)
     CHECK_EQ_INT(mech_kin_motion_at_rest(0, &a, NULL), MECH_EDOMAIN);
 }
 
-/* p_a − p_b of nearly equal beams (issue 15 item 7; the CM velocity of nearly
+/* p_a − p_b of nearly equal beams (the CM velocity of nearly
  * symmetric head-on beams): expected values by Python's decimal at 80 digits
  * from the same doubles, sqrt(E² − m²), sqrt(T² + 2mT) or p for each beam, then
  * subtracted (the direct form loses at most 14 of the 80 digits here). The

@@ -211,8 +211,8 @@ static void test_errors(void)
     CHECK_EQ_INT(mech_worldline_run(two, 2, 1.0, &one, r, &tot, NULL), MECH_EBUDGET);
 }
 
-/* Per-leg telescope intervals of a short leg late in a long trip (issue 15
- * item 7): 10 years out at 0.6c, then one day (1/365.25 yr) further out and one
+/* Per-leg telescope intervals of a short leg late in a long trip
+ * (no answer is a difference of nearly equal numbers): 10 years out at 0.6c, then one day (1/365.25 yr) further out and one
  * day back. Radially receding the traveller sees home time T(1 − β) pass and
  * home sees the leg over T(1 + β); approaching, the other way round. Exact
  * rationals of the same doubles (Python fractions): T(1 − β) =

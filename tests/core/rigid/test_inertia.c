@@ -543,7 +543,19 @@ int main(void)
         struct mech_inertia_part tiny = part(MECH_SHAPE_SPHERE, 1e-300, zero, 1e-300, 0, 0);
         mech_error_clear(&e);
         CHECK(mech_inertia_compute(&tiny, 1, NULL, &b, &res, &e) == MECH_ENUMERIC);
-        struct mech_inertia_part far2[2] = {
+        /* tiny but representable: two 1e-300 kg points at +-1 m on x: I = diag(0, 2e-300,
+         * 2e-300) kg m^2, all normal doubles */
+        struct mech_inertia_part specks[2] = {
+            part(MECH_SHAPE_POINT, 1e-300, mech_vec3_make(1, 0, 0), 0, 0, 0),
+            part(MECH_SHAPE_POINT, 1e-300, mech_vec3_make(-1, 0, 0), 0, 0, 0)};
+        mech_error_clear(&e);
+        CHECK(mech_inertia_compute(specks, 2, NULL, &b, &res, &e) == MECH_OK);
+        CHECK_CLOSE(res.tensor.a[1][1], 2e-300, 1e-15, 0);
+        CHECK_CLOSE(res.tensor.a[2][2], 2e-300, 1e-15, 0);
+        CHECK(res.tensor.a[0][0] == 0);
+        CHECK_CLOSE(res.principal.moments[2], 2e-300, 1e-15, 0);
+        CHECK(res.principal.moments[0] == 0);
+                struct mech_inertia_part far2[2] = {
             part(MECH_SHAPE_POINT, 1, zero, 0, 0, 0),
             part(MECH_SHAPE_POINT, 1, mech_vec3_make(1e200, 0, 0), 0, 0, 0)};
         CHECK(mech_inertia_compute(far2, 2, NULL, &b, &res, NULL) == MECH_ENUMERIC);
@@ -556,7 +568,7 @@ int main(void)
               MECH_ENUMERIC);
     }
 
-    /* 12. The shapes added for issue 4, alone, body axes = scene axes: closed
+    /* 12. The later shapes, alone, body axes = scene axes: closed
      * forms about the centre of mass and the reference point's offset.
      * cone (apex at position, opens +z): about the apex I_xx = 3M(R^2/4 + h^2)/5,
      *   centre of mass 3h/4 up, so about it 3M(R^2/4 + h^2)/5 - 9Mh^2/16

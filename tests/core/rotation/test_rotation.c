@@ -48,7 +48,7 @@ static void qmul(const double p[4], const double q[4], double r[4])
     r[3] = p[0] * q[3] + p[1] * q[2] - p[2] * q[1] + p[3] * q[0];
 }
 
-/* ---- issue 4: sequences, conversions, composition -------------------------- */
+/* ---- sequences, conversions, composition ---------------------------------- */
 
 /* Elementary ACTIVE rotation about axis ax (0 = x, 1 = y, 2 = z), built here
  * independently of the library: the vector is turned right-handedly. */

@@ -169,6 +169,26 @@ static void test_errors(void)
     CHECK(p.dot == 0 && p.cross.x == 0 && p.norm_a == 0);
 }
 
+/* a - b, a + b and |a - b|: the 3-4-5 triangle at 1, 1e-300 (where squaring
+ * the components underflows) and 1e150 */
+static void test_difference(void)
+{
+    const double scales[] = {1, 1e-300, 1e150};
+    for (int i = 0; i < 3; i++) {
+        double k = scales[i];
+        struct mech_vector_pair p;
+        struct mech_error e;
+        mech_error_clear(&e);
+        CHECK(mech_vector_pair(mech_vec3_make(3 * k, 1 * k, 0), mech_vec3_make(0, 5 * k, 0), &p,
+                               &e) == MECH_OK);
+        CHECK_CLOSE(p.difference.x, 3 * k, 1e-16, 0);
+        CHECK_CLOSE(p.difference.y, -4 * k, 1e-16, 0);
+        CHECK(p.difference.z == 0);
+        CHECK_CLOSE(p.sum.y, 6 * k, 2e-16, 0);
+        CHECK_CLOSE(p.distance, 5 * k, 2e-16, 0);
+    }
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -176,6 +196,7 @@ int main(void)
     test_near_parallel();
     test_extremes();
     test_triple();
+    test_difference();
     test_errors();
     TEST_MAIN_END();
 }
