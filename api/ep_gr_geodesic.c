@@ -300,8 +300,16 @@ static void geo_encode_precession(struct api_call *c, json_t *out, const struct 
         pj, "first_order_formula",
         json_string("6 pi GM/(c^2 a (1 - e^2)), a(1 - e^2) = 2 r_p r_a/(r_p + r_a)"));
     if (!u.geometric) {
-        const double per_century = GR_CENTURY_S / mech_gr_time_out(&u, Tt) * GR_ARCSEC;
+        /* a period the problem gives (Mercury's sidereal 87.969 d) or the orbit's own */
+        const json_t *pgiven = c->body ? json_object_get(c->body, "orbital_period") : NULL;
+        const double period = pgiven ? json_number_value(pgiven) : mech_gr_time_out(&u, Tt);
+        const double per_century = GR_CENTURY_S / period * GR_ARCSEC;
         json_t *ac = json_object();
+        json_object_set_new_nocheck(ac, "period_used", api_real(c, period));
+        json_object_set_new_nocheck(ac, "period_source",
+                                    json_string(pgiven ? "given (orbital_period)"
+                                                       : "the orbit's radial period in "
+                                                         "coordinate time"));
         json_object_set_new_nocheck(
             ac, "measured", has ? api_real(c, r.measured_advance * per_century) : json_null());
         json_object_set_new_nocheck(ac, "exact", api_real(c, adv_exact * per_century));
@@ -332,6 +340,11 @@ static void geo_encode_deflection(struct api_call *c, json_t *out, const struct 
     /* the quadrature keeps full relative precision for tiny deflections; the
      * elliptic form loses ~eps pi / delta to the final "- pi" */
     json_object_set_new_nocheck(dj, "exact", api_real(c, dq));
+    json_object_set_new_nocheck(
+        dj, "which_to_use",
+        json_string("exact: the geometry's deflection for this impact parameter, by "
+                    "quadrature; measured is the integrated ray's (a check on the "
+                    "integration, within its tolerance of exact)"));
     const double ell_prec = ans.elliptic_precision;
     json_object_set_new_nocheck(dj, "exact_elliptic",
                                 ell_prec < 1e-3 ? api_real(c, dx) : json_null());
@@ -423,6 +436,11 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     struct geo_call g;
     memset(&g, 0, sizeof g);
     if (!api_gr_units_read(c, body, &g.u)) return NULL;
+    if (g.u.geometric && json_object_get(body, "orbital_period")) {
+        api_call_invalid(c, "/orbital_period",
+                         "a period in seconds needs SI units (the rates per century are SI only)");
+        return NULL;
+    }
     if (!geo_request_read(c, body, &g)) return NULL;
 
     struct mech_error e;

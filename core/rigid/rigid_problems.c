@@ -87,3 +87,38 @@ enum mech_status mech_topple_box(double m, double a, double b, double g, struct 
         return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite result (extreme inputs)");
     return MECH_OK;
 }
+
+enum mech_status mech_rolling_incline(double m, double i_axis, double radius, double angle,
+                                      double g, double length,
+                                      struct mech_rolling_incline *out,
+                                      struct mech_error *err)
+{
+    if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output");
+    if (!positive(m)) return mech_error_set(err, MECH_EINVAL, "mass", "must be finite and > 0");
+    if (!(isfinite(i_axis) && i_axis >= 0))
+        return mech_error_set(err, MECH_EINVAL, "moment", "must be finite and >= 0");
+    if (!positive(radius))
+        return mech_error_set(err, MECH_EINVAL, "radius",
+                              "the rolling radius must be finite and > 0, got %.17g", radius);
+    if (!(angle > 0 && angle < 1.5707963267948966))
+        return mech_error_set(err, MECH_EINVAL, "angle",
+                              "the incline's angle must be in (0, pi/2) rad, got %.17g", angle);
+    if (!positive(g)) return mech_error_set(err, MECH_EINVAL, "g", "must be finite and > 0");
+    if (!(isfinite(length) && length >= 0))
+        return mech_error_set(err, MECH_EINVAL, "length", "must be finite and >= 0");
+    /* k = I/(m R^2) computed as (I/m)/R/R so neither m R^2 nor I overflows on the way */
+    const double k = i_axis / m / radius / radius, s = sin(angle);
+    out->moment_axis = i_axis;
+    out->k = k;
+    out->acceleration = g * s / (1 + k);
+    out->friction_force = m * g * s * (k / (1 + k));
+    out->min_friction_coefficient = tan(angle) * (k / (1 + k));
+    out->time = length > 0 ? sqrt(2 * length / out->acceleration) : 0;
+    out->speed = sqrt(2 * out->acceleration * length);
+    out->angular_speed = out->speed / radius;
+    out->sliding_fraction = 1 / (1 + k);
+    if (!isfinite(out->k) || !isfinite(out->time) || !isfinite(out->speed) ||
+        !isfinite(out->angular_speed) || !isfinite(out->friction_force))
+        return mech_error_set(err, MECH_ENUMERIC, NULL, "non-finite result (extreme inputs)");
+    return MECH_OK;
+}

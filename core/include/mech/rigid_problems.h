@@ -96,4 +96,31 @@ struct mech_topple {
 enum mech_status mech_topple_box(double m, double a, double b, double g, struct mech_topple *out,
                                  struct mech_error *err);
 
+struct mech_rolling_incline {
+    double moment_axis;     /* I about the rolling axis through the centre of mass, kg m^2 */
+    double k;               /* I / (m R^2), dimensionless */
+    double acceleration;    /* g sin(a) / (1 + k), m/s^2, along the slope */
+    double friction_force;  /* m g sin(a) k / (1 + k), N: static friction needed */
+    double min_friction_coefficient; /* tan(a) k / (1 + k): rolls without slipping above it */
+    double time;            /* sqrt(2 L / acceleration), s (0 for L = 0) */
+    double speed;           /* sqrt(2 acceleration L) = sqrt(2 g h / (1 + k)), m/s */
+    double angular_speed;   /* speed / R, rad/s */
+    double sliding_fraction; /* 1/(1 + k): the share of the drop's energy m g h that is
+                                translational at the bottom (k/(1 + k) rotational) */
+};
+
+/* A body of mass m (kg, > 0) rolling without slipping down an incline of
+ * angle a (rad, 0 < a < pi/2) in gravity g (m/s^2, > 0), on a rolling radius R
+ * (m, > 0: the distance from the axis through the centre of mass to the
+ * contact line), with moment i_axis (kg m^2, >= 0) about that axis, over a
+ * distance L along the slope (m, >= 0). Energy or torque about the contact:
+ * m g sin(a) = m a_cm (1 + I/(m R^2)), so a_cm = g sin(a) / (1 + k); the
+ * friction m a_cm k holds the roll, needing mu >= tan(a) k/(1 + k).
+ * Statuses: MECH_OK; MECH_EINVAL param "mass", "moment", "radius", "angle",
+ * "g", "length" (outside the ranges above, not finite). */
+enum mech_status mech_rolling_incline(double m, double i_axis, double radius, double angle,
+                                      double g, double length,
+                                      struct mech_rolling_incline *out,
+                                      struct mech_error *err);
+
 #endif

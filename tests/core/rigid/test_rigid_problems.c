@@ -181,11 +181,47 @@ static void check_topple(void)
     CHECK_EQ_INT(mech_topple_box(1, -1, 1, g, &t, NULL), MECH_EINVAL);
 }
 
+/* Rolling down an incline: a = g sin(a)/(1 + k) for the ball (k = 2/5: 5/7 g sin a),
+ * the cylinder (1/2: 2/3), the hoop (1: 1/2) and a sliding block (k = 0: g sin a);
+ * second method: energy, m g L sin(a) = m v^2 (1 + k)/2 at the bottom. */
+static void check_rolling(void)
+{
+    const double ks[] = {0.4, 0.5, 1.0, 0.0}, frac[] = {5.0 / 7, 2.0 / 3, 0.5, 1.0};
+    const double m = 2.5, R = 0.12, g = 9.81, a = 0.4, L = 3.0;
+    for (int i = 0; i < 4; i++) {
+        struct mech_rolling_incline r;
+        CHECK_EQ_INT(mech_rolling_incline(m, ks[i] * m * R * R, R, a, g, L, &r, NULL), MECH_OK);
+        CHECK_CLOSE(r.k, ks[i], 1e-15, 0);
+        CHECK_CLOSE(r.acceleration, frac[i] * g * sin(a), 1e-15, 0);
+        CHECK_CLOSE(0.5 * m * r.speed * r.speed * (1 + ks[i]), m * g * L * sin(a), 1e-14, 0);
+        CHECK_CLOSE(0.5 * r.acceleration * r.time * r.time, L, 1e-14, 0);
+        CHECK_CLOSE(r.angular_speed * R, r.speed, 1e-15, 0);
+        /* friction: m g sin a - f = m a_cm */
+        CHECK_CLOSE(m * g * sin(a) - r.friction_force, m * r.acceleration, 1e-14, 1e-15);
+        CHECK_CLOSE(r.min_friction_coefficient, r.friction_force / (m * g * cos(a)), 1e-14,
+                    1e-16);
+    }
+    struct mech_rolling_incline r;
+    struct mech_error e;
+    mech_error_clear(&e);
+    CHECK_EQ_INT(mech_rolling_incline(1, 1, 1, 1.6, 9.81, 1, &r, &e), MECH_EINVAL);
+    CHECK(!strcmp(e.param, "angle"));
+    mech_error_clear(&e);
+    CHECK_EQ_INT(mech_rolling_incline(1, 1, 0, 0.5, 9.81, 1, &r, &e), MECH_EINVAL);
+    CHECK(!strcmp(e.param, "radius"));
+    /* a planet-sized ball: nothing overflows on the way (I/m/R/R) */
+    CHECK_EQ_INT(mech_rolling_incline(6e24, 0.4 * 6e24 * 6.4e6 * 6.4e6, 6.4e6, 0.5, 9.81, 10,
+                                      &r, NULL),
+                 MECH_OK);
+    CHECK_CLOSE(r.k, 0.4, 1e-15, 0);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
     check_free_top();
     check_struck_ball();
     check_topple();
+    check_rolling();
     TEST_MAIN_END();
 }
