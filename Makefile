@@ -9,7 +9,7 @@ MECHD_ARGS ?=
 PREFIX     ?= /usr/local
 DESTDIR    ?=
 
-.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean install static-eval
+.PHONY: all deps configure run test test-sanitize test-tsan bench fuzz load docker-test clean install static-eval dist grader-image
 
 # Builds and test runs keep their whole output in a log under the build tree
 # and print a summary: a line per failure, CTest's closing lines on success
@@ -80,7 +80,7 @@ docker-test:
 # Install mechd, mechd-eval (and mechd-eval-static), the docs, the front end,
 # the curl scripts and the Python client's files under $(DESTDIR)$(PREFIX):
 #   make install PREFIX=/opt/mechd DESTDIR=/tmp/stage
-# (an installed mechd serves the front end with --static-dir PREFIX/share/mechd/web).
+# (an installed mechd serves PREFIX/share/mechd/web by default).
 install: all
 	DESTDIR="$(DESTDIR)" cmake --install $(BUILD) --prefix "$(PREFIX)"
 
@@ -94,3 +94,16 @@ static-eval: configure
 
 clean:
 	rm -rf $(BUILD) $(BUILD_SAN) $(BUILD_TSAN)
+
+# Artefacts that install without building, into dist/ (scripts/make_dist.py): the
+# Python client as a pure wheel (standard library build, any Python >= 3.8), the
+# static evaluator as a tarball with its licence notices and a .sha256, SHA256SUMS.
+dist: static-eval
+	/usr/bin/python3 scripts/make_dist.py --build $(BUILD) --out dist
+
+# The PrairieLearn external-grader image (needs docker): the `grader` stage of
+# docker/Dockerfile as mechd-grader, then docker/grader-pl.Dockerfile as
+# mechd-pl-grader. Publish: docker tag mechd-pl-grader USER/mechd-pl-grader:V && docker push ...
+grader-image:
+	docker build -f docker/Dockerfile --target grader -t mechd-grader .
+	docker build -f docker/grader-pl.Dockerfile -t mechd-pl-grader .

@@ -26,7 +26,7 @@ static int is_get(const char *m)
 }
 
 /* A GET route: call the handler without a body; it cannot fail on input. */
-static void run_resource(size_t ri, const struct api_request *req, struct api_response *resp)
+static void run_resource(size_t ri, struct api_full_request *req, struct api_response *resp)
 {
     struct api_call call;
     memset(&call, 0, sizeof call);
@@ -139,7 +139,7 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
     }
     const char *want = api_routes[ri]->method;
     if (!strcmp(want, "POST") && is_get(m) && query) {
-        api_run_query((size_t)ri, req, ext, resp);
+        api_run_query((size_t)ri, &full, ext, resp);
         return;
     }
     if (!strcmp(want, "POST") && is_get(m)) {
@@ -154,9 +154,9 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
         return;
     }
     if (!strcmp(want, "GET")) {
-        run_resource((size_t)ri, req, resp);
+        run_resource((size_t)ri, &full, resp);
     } else {
-        api_run_post((size_t)ri, req, resp);
+        api_run_post((size_t)ri, &full, resp);
         resp->cache_control = "no-store";
     }
 }

@@ -30,7 +30,7 @@ static int request_etag(const char *path, const json_t *body, char *buf, size_t 
     return 0;
 }
 
-void api_run_query(size_t ri, const struct api_request *req, const struct api_request_ext *ext,
+void api_run_query(size_t ri, struct api_full_request *req, const struct api_request_ext *ext,
                    struct api_response *resp)
 {
     json_error_t jerr;

@@ -6,10 +6,11 @@
 
 #include "api.h"
 
+struct api_full_request; /* api_run.h */
+
 /* Run POST operation ri on ext->query_request (the request JSON, decoded;
- * not NULL) and answer into resp, with its ETag and Cache-Control. req must be
- * the req of an api_full_request (api_run.h). */
-void api_run_query(size_t ri, const struct api_request *req, const struct api_request_ext *ext,
+ * not NULL) and answer into resp, with its ETag and Cache-Control. */
+void api_run_query(size_t ri, struct api_full_request *req, const struct api_request_ext *ext,
                    struct api_response *resp);
 
 #endif

@@ -21,15 +21,14 @@
 #include "routes.h"
 #include "schema.h"
 
-static int request_no_cost(const struct api_request *req)
+static int request_no_cost(const struct api_full_request *req)
 {
-    return req ? ((const struct api_full_request *)(const void *)req)->no_cost : 0;
+    return req ? req->no_cost : 0;
 }
 
-static long request_max_samples(const struct api_request *req)
+static long request_max_samples(const struct api_full_request *req)
 {
-    return req ? ((const struct api_full_request *)(const void *)req)->max_samples
-               : API_DEFAULT_MAX_SAMPLES;
+    return req ? req->max_samples : API_DEFAULT_MAX_SAMPLES;
 }
 
 /* Copy of `errors` with every pointer prefixed (new reference). */
@@ -79,7 +78,7 @@ static int problem_depends_on_load(enum api_problem k)
  * request (a batch) asked for no measured cost. *dep is set to 1 when the
  * outcome depended on load or time (the handler said so, or a budget,
  * deadline or cancellation stopped it), else left alone. */
-int api_run_parsed(size_t ri, const struct api_request *req, const json_t *body, const char *prefix,
+int api_run_parsed(size_t ri, struct api_full_request *req, const json_t *body, const char *prefix,
                    int no_cost, json_t **out, char *note, size_t note_n, int *dep)
 {
     const struct api_route *r = api_routes[ri];
@@ -107,10 +106,9 @@ int api_run_parsed(size_t ri, const struct api_request *req, const json_t *body,
     }
     /* Admission (the server's answer-memory budget): once, for the request's
      * own operation, before anything is computed. */
-    struct api_full_request *full_req = (struct api_full_request *)(void *)req;
-    if (full_req && full_req->admit_pending) {
-        full_req->admit_pending = 0;
-        if (full_req->admit(full_req->admit_ctx, (long)ri, api_answer_samples(ri, body))) {
+    if (req && req->admit_pending) {
+        req->admit_pending = 0;
+        if (req->admit(req->admit_ctx, (long)ri, api_answer_samples(ri, body))) {
             *out = problem_json(API_PROBLEM_ANSWER_MEMORY,
                                 "the server holds as much answer memory as it may "
                                 "(--max-answer-memory) for answers still being sent; retry later",
@@ -136,9 +134,9 @@ int api_run_parsed(size_t ri, const struct api_request *req, const json_t *body,
     call.req = req;
     call.given = body;
     call.body = full;
-    call.budget.max_steps = req->max_steps > 0 ? req->max_steps : 1;
-    call.budget.deadline = isfinite(req->deadline) ? req->deadline : 0;
-    call.budget.cancel = req->cancel;
+    call.budget.max_steps = req->req.max_steps > 0 ? req->req.max_steps : 1;
+    call.budget.deadline = isfinite(req->req.deadline) ? req->req.deadline : 0;
+    call.budget.cancel = req->req.cancel;
     int want_cost =
         !no_cost && !request_no_cost(req) && !json_is_false(json_object_get(body, "cost"));
     call.no_cost = !want_cost;
@@ -257,10 +255,11 @@ static int is_json_media_type(const char *ct)
 }
 
 /* Parse, validate, run and answer an operation's JSON body. */
-static void run_body(size_t ri, const struct api_request *req, struct api_response *resp)
+static void run_body(size_t ri, struct api_full_request *req, struct api_response *resp)
 {
     json_error_t jerr;
-    json_t *body = api_json_read(req->body ? req->body : "", req->body ? req->body_len : 0, &jerr);
+    const struct api_request *r = &req->req;
+    json_t *body = api_json_read(r->body ? r->body : "", r->body ? r->body_len : 0, &jerr);
     if (!body) {
         if (api_parse_out_of_memory(&jerr, resp)) return;
         char d[300];
@@ -271,7 +270,7 @@ static void run_body(size_t ri, const struct api_request *req, struct api_respon
     api_run_body_into(ri, req, body, resp);
 }
 
-void api_run_body_into(size_t ri, const struct api_request *req, json_t *body,
+void api_run_body_into(size_t ri, struct api_full_request *req, json_t *body,
                        struct api_response *resp)
 {
     json_t *out = NULL;
@@ -284,23 +283,24 @@ void api_run_body_into(size_t ri, const struct api_request *req, json_t *body,
     resp->depends_on_load = dep;
 }
 
-void api_run_post(size_t ri, const struct api_request *req, struct api_response *resp)
+void api_run_post(size_t ri, struct api_full_request *req, struct api_response *resp)
 {
-    if (!is_json_media_type(req->content_type)) {
+    const char *ct = req->req.content_type;
+    if (!is_json_media_type(ct)) {
         char d[200];
         snprintf(d, sizeof d, "send the body as Content-Type: application/json (got %s%.80s%s)",
-                 req->content_type ? "'" : "", req->content_type ? req->content_type : "none",
-                 req->content_type ? "'" : "");
+                 ct ? "'" : "", ct ? ct : "none", ct ? "'" : "");
         api_response_problem(resp, API_PROBLEM_UNSUPPORTED_MEDIA, d);
         return;
     }
     /* The plain boost request is answered from its bytes (boost_direct.c:
      * the same answer without a JSON tree per number); every other request,
      * and every boost it declines, goes through the trees below. */
-    if (req->body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
-        struct mech_budget budget = {req->max_steps > 0 ? req->max_steps : 1,
-                                     isfinite(req->deadline) ? req->deadline : 0, req->cancel};
-        if (api_boost_direct(req->body, req->body_len, &budget, resp)) return;
+    const struct api_request *r = &req->req;
+    if (r->body && !strcmp(api_routes[ri]->path, "/v1/relativity/boost")) {
+        struct mech_budget budget = {r->max_steps > 0 ? r->max_steps : 1,
+                                     isfinite(r->deadline) ? r->deadline : 0, r->cancel};
+        if (api_boost_direct(r->body, r->body_len, &budget, resp)) return;
     }
     /* Every tree of this request (body, answer) is built and released in
      * this scope; the answer leaves as malloc()ed text (json_arena.c). */

@@ -72,7 +72,8 @@ static int needs_token(const char *path)
 
 static char *example_curl(const struct api_route *r)
 {
-    /* A command that works when pasted into a shell against `make run`. */
+    /* A command that works when pasted into a shell against `make run`; GET /v1
+     * writes the host and port it was asked on instead (api_docs.c). */
     size_t n = strlen(r->example) + strlen(r->path) + 128;
     char *s = malloc(n);
     if (s)
@@ -255,9 +256,63 @@ static const char bearer_description[] =
     "/metrics, /problems/{slug} and the front end never ask for it. Without --token-file no "
     "request needs a token.";
 
+/* Schema pieces the grading operations share, named in components/schemas so
+ * that generated clients (openapi-typescript, @hey-api/openapi-ts) give them
+ * one type each: a nested operation's request (any JSON object: its own
+ * operation's schema validates it), and /v1/check's answer and tolerance.
+ * name: where a member of an object schema moves to. */
+static const struct shared_piece {
+    const char *route, *pointer, *name;
+} shared_pieces[] = {
+    {"/v1/check", "/properties/request", "OperationRequest"},
+    {"/v1/check", "/properties/answer", "CheckAnswer"},
+    {"/v1/check", "/properties/tolerance", "CheckTolerance"},
+    {"/v1/batch", "/properties/operations/items/properties/request", "OperationRequest"},
+    {"/v1/batch", "/properties/operations/items", "BatchItem"},
+};
+
+/* The request schema of route i as the OpenAPI document shows it (new
+ * reference): the route's own, or for the grading operations a copy whose
+ * shared pieces are $refs into components (moved into `components`). */
+static json_t *openapi_request_schema(size_t i, json_t *components)
+{
+    const char *path = api_routes[i]->path;
+    json_t *copy = NULL;
+    for (size_t k = 0; k < sizeof shared_pieces / sizeof shared_pieces[0]; k++) {
+        const struct shared_piece *sp = &shared_pieces[k];
+        if (strcmp(sp->route, path)) continue;
+        if (!copy) copy = json_deep_copy(request_schemas[i]);
+        /* walk to the parent of the piece */
+        char buf[160];
+        snprintf(buf, sizeof buf, "%s", sp->pointer);
+        char *last = strrchr(buf, '/');
+        if (!copy || !last) break;
+        *last = '\0';
+        json_t *parent = copy;
+        char *save = NULL;
+        for (char *tok = strtok_r(buf + 1, "/", &save); tok && parent;
+             tok = strtok_r(NULL, "/", &save))
+            parent = json_object_get(parent, tok);
+        json_t *piece = json_object_get(parent, last + 1);
+        if (!piece) continue;
+        if (!json_object_get(components, sp->name)) {
+            json_t *c = json_deep_copy(piece);
+            /* any members: typed clients get an open object, not an empty one */
+            if (!strcmp(sp->name, "OperationRequest") && !json_object_get(c, "additionalProperties"))
+                json_object_set_new(c, "additionalProperties", json_object());
+            json_object_set_new(components, sp->name, c);
+        }
+        char ref[96];
+        snprintf(ref, sizeof ref, "#/components/schemas/%s", sp->name);
+        json_object_set_new(parent, last + 1, json_pack("{s:s}", "$ref", ref));
+    }
+    return copy ? copy : json_incref((json_t *)request_schemas[i]);
+}
+
 static json_t *build_openapi(void)
 {
     json_t *paths = json_object();
+    json_t *shared = json_object(); /* components/schemas of the shared pieces */
     for (size_t i = 0; i < api_route_count; i++) {
         const struct api_route *r = api_routes[i];
         char opid[128];
@@ -277,11 +332,11 @@ static json_t *build_openapi(void)
             "422", problem_response(status_422), "500", problem_response("Internal error."),
             "503", problem_response("Queue full or shutting down; see Retry-After."), "405",
             problem_response("Wrong method."));
-        json_t *op = json_pack("{s:s,s:s,s:s,s:{s:b,s:{s:{s:O,s:o}}},s:o}", "operationId", opid,
+        json_t *op = json_pack("{s:s,s:s,s:s,s:{s:b,s:{s:{s:o,s:o}}},s:o}", "operationId", opid,
                                "summary", r->summary, "description", r->description,
                                "requestBody", "required", 1, "content", "application/json",
-                               "schema", request_schemas[i], "example", ex, "responses",
-                               responses);
+                               "schema", openapi_request_schema(i, shared), "example", ex,
+                               "responses", responses);
         if (!op) { json_decref(paths); return NULL; }
         char method[16];
         snprintf(method, sizeof method, "%s", r->method);
@@ -298,7 +353,7 @@ static json_t *build_openapi(void)
         json_object_set_new(paths, resources[i].path, json_pack("{s:o}", "get", get));
     }
     json_t *problem_schema = json_loads(problem_schema_text, 0, NULL);
-    return json_pack("{s:s,s:{s:s,s:s,s:s},s:[{s:s,s:s}],s:[{s:[]}],s:o,"
+    json_t *doc = json_pack("{s:s,s:{s:s,s:s,s:s},s:[{s:s,s:s}],s:[{s:[]}],s:o,"
                      "s:{s:{s:o,s:o},s:{s:{s:s,s:s,s:s}}}}",
                      "openapi", "3.1.0", "info", "title", "mechd", "version", MECHD_VERSION,
                      "description", service_description, "servers", "url", "/", "description",
@@ -306,6 +361,10 @@ static json_t *build_openapi(void)
                      paths, "components", "schemas", "Problem", problem_schema, "Envelope",
                      envelope_schema(), "securitySchemes", "bearerAuth", "type", "http",
                      "scheme", "bearer", "description", bearer_description);
+    json_t *schemas = json_object_get(json_object_get(doc, "components"), "schemas");
+    if (schemas) json_object_update(schemas, shared);
+    json_decref(shared);
+    return doc;
 }
 
 /* ---- numbers as a reader expects them ----------------------------------------------

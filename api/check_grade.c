@@ -59,7 +59,7 @@ static const char *kind_words(enum api_check_kind k)
     case API_KIND_EIGENVECTORS:
         return "eigenvectors as rows (each of either sign; rows of equal eigenvalues may be any "
                "orthonormal basis of their subspace)";
-    case API_KIND_AXIS_ANGLE: return "a rotation as {\"axis\": [x, y, z], \"angle\": a}";
+    case API_KIND_AXIS_ANGLE: return "a rotation: an axis with its angle";
     default: return "a number";
     }
 }
@@ -165,49 +165,83 @@ static int grade_whole(struct api_call *c, struct api_check_grade *g, const json
     return 0;
 }
 
-/* The student-facing message: the verdict, what was expected in shape, kind
- * and unit, and the value itself only when reveal is set. */
-json_t *api_check_feedback(const struct api_check_grade *g, const json_t *want, const char *unit,
-                           const char *field_unit, int reveal)
+void api_check_number_words(double x, char *buf, size_t n)
 {
-    char shape[128], msg[900];
+    char t[40];
+    snprintf(t, sizeof t, "%.6g", x == 0 ? 0.0 : x); /* no "-0" */
+    char *e = strchr(t, 'e');
+    if (!e) {
+        snprintf(buf, n, "%s", t);
+        return;
+    }
+    /* 1e+06 -> 1e6, 2.5e-05 -> 2.5e-5 */
+    int ex = atoi(e + 1);
+    *e = '\0';
+    snprintf(buf, n, "%se%d", t, ex);
+}
+
+/* A value in words into buf: numbers shortest (6 figures), arrays as
+ * [a, b, c], an axis with its angle as "axis [x, y, z], angle a"; each
+ * number divided by f (into the student's unit). */
+static void value_words(const json_t *v, double f, char *buf, size_t n, int depth)
+{
+    if (n == 0) return;
+    buf[0] = '\0';
+    if (json_is_number(v)) {
+        api_check_number_words(json_number_value(v) / f, buf, n);
+        return;
+    }
+    if (json_is_object(v)) {
+        char ax[200], an[40];
+        value_words(json_object_get(v, "axis"), 1, ax, sizeof ax, depth + 1);
+        api_check_number_words(json_number_value(json_object_get(v, "angle")) / f, an, sizeof an);
+        snprintf(buf, n, "axis %s, angle %s", ax, an);
+        return;
+    }
+    if (!json_is_array(v) || depth > 8) return;
+    size_t o = 0;
+    for (size_t i = 0; i < json_array_size(v) && o + 8 < n; i++) {
+        if (i == 20) {
+            o += (size_t)snprintf(buf + o, n - o, ", ...");
+            break;
+        }
+        o += (size_t)snprintf(buf + o, n - o, "%s", i ? ", " : "[");
+        if (o >= n) break;
+        value_words(json_array_get(v, i), f, buf + o, n - o, depth + 1);
+        o += strlen(buf + o);
+    }
+    if (o + 2 < n) snprintf(buf + o, n - o, "]");
+}
+
+/* The student-facing message: the verdict, the slip or problem (`why`), what
+ * was expected in shape, kind and unit, and the value itself only when
+ * reveal is set. */
+json_t *api_check_feedback(const struct api_check_grade *g, int correct, const json_t *want,
+                           const char *unit, const char *field_unit, int reveal, const char *why)
+{
+    char shape[128], msg[1400];
     if (json_is_object(want))
-        snprintf(shape, sizeof shape, "an object {\"axis\": [3 numbers], \"angle\": a number}");
+        snprintf(shape, sizeof shape, "an axis of 3 numbers with an angle");
     else
         api_check_shape_words(want, shape, sizeof shape);
     const char *u = unit ? unit : field_unit;
     const char *what = kind_words(g->kind);
     if (json_is_array(want) && g->kind == API_KIND_NUMBER) what = "numbers, each judged on its own";
     if (json_is_array(want) && g->kind == API_KIND_ANGLE) what = "angles, each modulo a full turn";
-    int n = snprintf(msg, sizeof msg, "%s Expected %s, given as %s%s%s%s%s",
-                     g->wrong == 0 ? "Correct." : "Not within the tolerance.", what, shape,
-                     u && strcmp(u, "1") ? ", in " : "", u && strcmp(u, "1") ? u : "",
-                     u && !strcmp(u, "1") ? ", dimensionless" : "",
-                     !u ? " (in SI units unless answer.unit says otherwise)" : "");
+    int n = snprintf(msg, sizeof msg, "%s%s%s Expected %s, given as %s%s%s%s",
+                     correct ? "Correct." : "Not correct.", why && why[0] ? " " : "",
+                     why ? why : "", what, shape, u && strcmp(u, "1") ? ", in " : "",
+                     u && strcmp(u, "1") ? u : "", u && !strcmp(u, "1") ? ", dimensionless" : "");
     if (g->note && n > 0 && (size_t)n < sizeof msg)
         n += snprintf(msg + n, sizeof msg - (size_t)n, "; %s", g->note);
-    if (n > 0 && (size_t)n < sizeof msg) snprintf(msg + n, sizeof msg - (size_t)n, ".");
-    if (!reveal) return json_string(msg);
-    json_t *shown =
-        json_is_object(want) ? json_deep_copy(want) : api_check_scaled_copy(want, 1 / g->factor, 0);
-    if (json_is_object(want) && shown && g->factor != 1)
-        json_object_set_new(
-            shown, "angle",
-            json_real(json_number_value(json_object_get(want, "angle")) / g->factor));
-    char *text =
-        shown ? json_dumps(shown, JSON_COMPACT | JSON_ENCODE_ANY | JSON_REAL_PRECISION(6)) : NULL;
-    json_decref(shown);
-    char full[1400];
-    snprintf(full, sizeof full, "%s The expected value is %.400s%s%s.", msg, text ? text : "?",
-             u && strcmp(u, "1") ? " " : "", u && strcmp(u, "1") ? u : "");
-    /* json_dumps allocates through jansson's allocator, which inside an
-     * operation request is the per-thread arena (api_alloc.c): free(3) on that
-     * memory aborts the process. Give it back the way it came. */
-    json_malloc_t jmalloc;
-    json_free_t jfree;
-    json_get_alloc_funcs(&jmalloc, &jfree);
-    if (text) jfree(text);
-    return json_string(full);
+    if (n > 0 && (size_t)n < sizeof msg) n += snprintf(msg + n, sizeof msg - (size_t)n, ".");
+    if (reveal && n > 0 && (size_t)n < sizeof msg) {
+        char text[600];
+        value_words(want, g->factor > 0 ? g->factor : 1, text, sizeof text, 0);
+        snprintf(msg + n, sizeof msg - (size_t)n, " The expected value is %s%s%s.", text,
+                 u && strcmp(u, "1") ? " " : "", u && strcmp(u, "1") ? u : "");
+    }
+    return json_string(msg);
 }
 
 int api_check_grade_field(struct api_call *c, struct api_check_grade *g, const json_t *want,

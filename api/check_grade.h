@@ -47,12 +47,19 @@ int api_check_grade_field(struct api_call *c, struct api_check_grade *g, const j
                           const json_t *value, const json_t *parent, const char *pointer,
                           const char *kind_ptr);
 
-/* The student-facing message for a graded field: the verdict, what was
- * expected (kind, shape and unit: the student's unit, else field_unit; both
- * may be NULL) and, only when reveal is set, the expected value converted to
- * the student's unit (6 significant digits). New reference (NULL only when
- * out of memory). */
-json_t *api_check_feedback(const struct api_check_grade *g, const json_t *want, const char *unit,
-                           const char *field_unit, int reveal);
+/* The student-facing message for a graded field: the verdict (correct), the
+ * sentence `why` (a slip or a problem with the answer, plain words; NULL or
+ * "" for none), what was expected (kind, shape and unit: the student's unit,
+ * else field_unit; both may be NULL, then no unit is named) and, only when
+ * reveal is set, the expected value converted to the student's unit
+ * (divided by g->factor; numbers in their shortest form to 6 significant
+ * figures). Never a JSON pointer or a field path. New reference (NULL only
+ * when out of memory). */
+json_t *api_check_feedback(const struct api_check_grade *g, int correct, const json_t *want,
+                           const char *unit, const char *field_unit, int reveal, const char *why);
+
+/* x in its shortest form to 6 significant figures, for words: 5, 0.25,
+ * 26.5651, 1.5e-7, 5e7 (no "5.0", no "e+07", no "-0"). Into buf (n bytes). */
+void api_check_number_words(double x, char *buf, size_t n);
 
 #endif

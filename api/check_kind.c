@@ -141,7 +141,11 @@ double api_check_bound(const struct api_check_tol *t, double mag)
     double b = t->rec_abs + t->rec_rel * mag;
     if (t->rel >= 0 && t->rel * mag > b) b = t->rel * mag;
     if (t->abs >= 0 && t->abs > b) b = t->abs;
-    if (t->sig > 0 && sig_bound(mag, t->sig) > b) b = sig_bound(mag, t->sig);
+    if (t->sig > 0) {
+        double su = t->sig_unit > 0 ? t->sig_unit : 1;
+        double sb = sig_bound(mag / su, t->sig) * su;
+        if (sb > b) b = sb;
+    }
     return b;
 }
 

@@ -63,12 +63,16 @@ extern const char api_unit_list[];
 struct api_check_tol {
     double rel, abs;
     int sig;
+    double sig_unit; /* 0: figures counted in the field's unit; else the factor of the
+                        student's unit to the field's, the figures counted in it */
     double scale;
     double rec_rel, rec_abs;
 };
 
 /* The bound on |a - e| for an expected magnitude mag >= 0: the largest of
- * rel*mag, abs, half a unit in the sig-th figure of mag, rec_abs + rec_rel*mag. */
+ * rel*mag, abs, half a unit in the sig-th figure of mag (of mag / sig_unit,
+ * times sig_unit, when sig_unit > 0: the figures of the value written in the
+ * student's unit), rec_abs + rec_rel*mag. */
 double api_check_bound(const struct api_check_tol *t, double mag);
 
 /* Result of comparing one answer. */

@@ -32,8 +32,11 @@
     "that integrate), so equal requests give byte-identical answers; in a batch, false also "   \
     "applies to every item\"}"
 
+struct api_full_request; /* api_run.h */
+
 struct api_call {
-    const struct api_request *req;
+    struct api_full_request *req; /* the request being run and the pipeline's settings
+                                     (api_run.h); an operation that runs others passes it on */
     struct mech_budget budget;   /* from the request: max_steps, deadline, cancel */
     json_t *errors;              /* [{pointer, detail}] collected so far (owned) */
     enum api_problem problem;    /* set when the call failed */

@@ -3,7 +3,7 @@
  * axes, the rotation matrix and its time derivative (dR/dt = -[omega_body]x R
  * for the passive R); or angles with omega -> the rates, with gimbal lock
  * answered by a typed note, never NaN. JSON <-> core only; the mathematics is
- * core/euler_rates.c. */
+ * core/rotation/euler_rates.c. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -3,7 +3,7 @@
  * of power laws, as /v1/small-oscillations takes it, or a Kepler gm), with
  * their radius, energy, angular and radial frequencies, periods, apsidal
  * angle and stability (notes ch. 5, "Motion in a Central Potential").
- * JSON <-> core only; the physics is core/circular_orbit.c. */
+ * JSON <-> core only; the physics is core/hamiltonian/circular_orbit.c. */
 #include <math.h>
 #include <string.h>
 

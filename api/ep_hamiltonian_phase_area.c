@@ -1,7 +1,7 @@
 /* ep_hamiltonian_phase_area.c — POST /v1/hamiltonian/phase-area: the
  * phase-space area enclosed by an energy contour of a 1-D system and the
  * period as its energy derivative (notes "Phase Space and Liouville's
- * Theorem"). JSON <-> core only; the physics is core/phase_area.c. */
+ * Theorem"). JSON <-> core only; the physics is core/hamiltonian/phase_area.c. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * particle's Lagrangian, canonical momentum m(v + omega x r), Hamiltonian in
  * a rotating frame and the inertial energy (notes ch. 1 homework: "calculate
  * the Hamiltonian in the rotating frame and see if it is the total energy").
- * JSON <-> core only; the physics is core/rotating_hamiltonian.c. */
+ * JSON <-> core only; the physics is core/hamiltonian/rotating_hamiltonian.c. */
 #include "endpoint.h"
 #include "mech/rotating_hamiltonian.h"
 

@@ -1,5 +1,5 @@
 /* ep_integrators.c — GET /v1/integrators: every ODE method of the registry
- * (core/integrators/registry.c) with its properties, order, doc string and
+ * (core/ode/integrators/registry.c) with its properties, order, doc string and
  * citation, and the accuracy presets with what each maps to. Everything comes
  * from the const descriptors, so the catalog cannot drift from the code. */
 #include "ep_integrators.h"

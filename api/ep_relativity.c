@@ -1,6 +1,6 @@
 /* ep_relativity.c — POST /v1/relativity/boost: Lorentz-boost one or many
  * 4-vectors into the frame moving with velocity βc, keeping precision at
- * 1 m/s and at β = 1 − 1e-15 (core/boost.c does the numerics). */
+ * 1 m/s and at β = 1 − 1e-15 (core/relativity/boost.c does the numerics). */
 #include <stdio.h>
 #include <stdlib.h>
 

@@ -1,7 +1,7 @@
 /* ep_relativity_dot.c — POST /v1/relativity/dot: the Minkowski dot product
  * of any two 4-vectors (notes §3 "Summary of 4-Vectors"), each vector's
  * square and kind, and the relative Lorentz factor of two timelike ones.
- * JSON <-> core only; the numerics are core/four_vector.c. */
+ * JSON <-> core only; the numerics are core/relativity/four_vector.c. */
 #include "endpoint.h"
 #include "mech/four_vector.h"
 

@@ -1,7 +1,7 @@
 /* ep_relativity_force.c — POST /v1/relativity/force: Newton's second law in
  * special relativity, F = dp/dt = gamma m a_perp + gamma^3 m a_par, either
  * way round, with the power and the 4-force (notes §3 "The Force 4-Vector").
- * JSON <-> core only; the physics is core/relativistic_force.c. */
+ * JSON <-> core only; the physics is core/relativity/relativistic_force.c. */
 #include "endpoint.h"
 #include "mech/relativistic_force.h"
 #include "velocity_request.h"

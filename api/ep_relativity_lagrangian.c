@@ -1,7 +1,7 @@
 /* ep_relativity_lagrangian.c — POST /v1/relativity/lagrangian: the
  * relativistic Lagrangian, canonical momentum and Hamiltonian of a charged
  * particle in given potentials or uniform fields (notes §3, L = −mc²/γ − V,
- * H = E + V). JSON <-> core only; the physics is core/charged_lagrangian.c. */
+ * H = E + V). JSON <-> core only; the physics is core/relativity/charged_lagrangian.c. */
 #include <string.h>
 
 #include "endpoint.h"

@@ -1,7 +1,7 @@
 /* ep_relativity_michelson_morley.c — POST /v1/relativity/michelson-morley:
  * the notes' ether analysis of the Michelson–Morley experiment (§3.2, §3.4),
  * exact beside the notes' beta^2 L, and the null result with the Lorentz
- * contraction. JSON <-> core only; the physics is core/michelson_morley.c. */
+ * contraction. JSON <-> core only; the physics is core/relativity/michelson_morley.c. */
 #include "endpoint.h"
 #include "mech/michelson_morley.h"
 

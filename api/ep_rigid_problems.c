@@ -2,7 +2,7 @@
  *   POST /v1/rigid/free-symmetric-top  (notes §2.9: cones and precession rates)
  *   POST /v1/rigid/struck-ball         (notes §2.11 HW 3: rolling without slipping)
  *   POST /v1/rigid/topple              (notes §2.11 HW 4: a box falling off its edge)
- * JSON <-> core only: physics and derivations in core/rigid_problems.c and
+ * JSON <-> core only: physics and derivations in core/rigid/rigid_problems.c and
  * mech/rigid_problems.h. */
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* ep_rigid_stability.c — POST /v1/rigid/stability: linear stability of
  * torque-free spin about a principal axis (notes §2.10). JSON <-> core only;
- * the physics is core/stability.c (derivation in mech/stability.h). */
+ * the physics is core/rigid/stability.c (derivation in mech/stability.h). */
 #include <math.h>
 #include <stdio.h>
 

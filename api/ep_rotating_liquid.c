@@ -1,6 +1,6 @@
 /* ep_rotating_liquid.c — POST /v1/frames/rotating-liquid: the free surface of a
  * liquid turning with its container (notes §1.5 homework 2). JSON <-> core only;
- * the physics and its derivation are in core/rotating_liquid.c and
+ * the physics and its derivation are in core/frames/rotating_liquid.c and
  * mech/rotating_liquid.h. */
 #include <math.h>
 #include <stdio.h>

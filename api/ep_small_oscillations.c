@@ -3,7 +3,7 @@
  * a near-circular orbit in a central potential, the conical pendulum, a
  * physical pendulum (a body from /v1/rigid/inertia about any pivot and axis)
  * and the normal modes of the linearised Foucault pendulum.
- * JSON <-> core only; the physics is core/small_oscillations.c. */
+ * JSON <-> core only; the physics is core/hamiltonian/small_oscillations.c. */
 #include <math.h>
 #include <string.h>
 

@@ -2,7 +2,7 @@
  * user (an inertia tensor, a stress, a quadratic form): trace, invariants,
  * isotropic and deviatoric parts, principal values and axes, and the tensor
  * applied to a vector. JSON <-> core only; the mathematics is
- * core/sym_tensor.c, whose eigen-solver is /v1/rigid/inertia's. */
+ * core/rigid/sym_tensor.c, whose eigen-solver is /v1/rigid/inertia's. */
 #include "endpoint.h"
 #include "mech/sym_tensor.h"
 

@@ -3,7 +3,7 @@
  * method, sampled evenly in time, optionally stopped at a coordinate
  * crossing; answers the samples, the stop event, the model terms with their
  * sizes, and diagnostics (steps, evaluations, energy / Jacobi drift).
- * core/trajectory.c does the physics, core/ode.c the integration. */
+ * core/frames/trajectory.c does the physics, core/ode/ode.c the integration. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -221,7 +221,7 @@ int api_inertia_body_compute(struct api_call *c, const json_t *body,
         api_call_fail_core(c, st, &e, "");
         return 0;
     }
-    /* angle between L and omega (atan2, core/vector_algebra.c) and omega x L;
+    /* angle between L and omega (atan2, core/rotation/vector_algebra.c) and omega x L;
      * when the pair cannot be formed the answer says null, not an error */
     struct mech_error e2;
     mech_error_clear(&e2);

@@ -213,7 +213,7 @@ void api_integrator_block_stats(struct api_call *c, json_t *d,
 }
 
 /* The stated factor within which the achieved error should fall of the
- * predicted one (tests/core/test_chooser.c, docs/accuracy.md). */
+ * predicted one (tests/core/ode/test_chooser.c, docs/accuracy.md). */
 #define API_PREDICTION_FACTOR 30.0
 
 static json_t *candidate_json(struct api_call *c, const struct mech_candidate *k)

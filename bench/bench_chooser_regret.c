@@ -623,9 +623,10 @@ int main(int argc, char **argv)
             within += re <= 1.25 && !miss;
             lsum += log(re);
             ln++;
-            printf(" %s%.2f%s [%.2f] %s%s%s |", re > 1.25 ? "**" : "", re, re > 1.25 ? "**" : "",
+            printf(" %s%.2f%s [%.2f] %s%s%s", re > 1.25 ? "**" : "", re, re > 1.25 ? "**" : "",
                    rc, c->method, miss ? " MISS" : "", over ? " over" : "");
-            if (miss) printf("(%.1e)", c->err);
+            if (miss) printf(" (%.1e)", c->err);
+            printf(" |");
         }
         printf("\n");
     }

@@ -9,6 +9,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #ifndef MECHD_VERSION
 #define MECHD_VERSION "0.0.0"
@@ -16,6 +17,28 @@
 #ifndef MECHD_BUILD_ID
 #define MECHD_BUILD_ID "unknown" /* the git commit it was configured from (CMake) */
 #endif
+
+/* The default front end of an installed mechd: PREFIX/share/mechd/web when this
+ * executable is PREFIX/bin/mechd and that directory holds an index.html (what
+ * `make install` lays out, wherever PREFIX or DESTDIR put it); otherwise the
+ * build's MECHD_STATIC_DIR (the source tree's clients/web). Returns buf or the
+ * static default; never fails. */
+static const char *installed_static_dir(char *buf, size_t n)
+{
+    char exe[900];
+    ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+    if (len <= 0 || (size_t)len >= sizeof exe - 1) return MECHD_STATIC_DIR;
+    exe[len] = '\0';
+    char *slash = strrchr(exe, '/');
+    if (!slash) return MECHD_STATIC_DIR;
+    *slash = '\0'; /* PREFIX/bin */
+    char index[1024];
+    if (snprintf(buf, n, "%s/../share/mechd/web", exe) >= (int)n ||
+        snprintf(index, sizeof index, "%s/index.html", buf) >= (int)sizeof index ||
+        access(index, R_OK) != 0)
+        return MECHD_STATIC_DIR;
+    return buf;
+}
 
 enum opt_id {
     OPT_BIND,
@@ -66,7 +89,8 @@ static const struct opt_spec {
                        "step budget of one integration"},
     [OPT_STATIC_DIR] = {"--static-dir", "MECHD_STATIC_DIR", MECHD_STATIC_DIR, 0, 0,
                         "directory of the front end served at / (read once at start; when it "
-                        "is missing a built-in start page is served)"},
+                        "is missing a built-in start page is served); an installed mechd "
+                        "defaults to PREFIX/share/mechd/web"},
     [OPT_TOKEN_FILE] = {"--token-file", "MECHD_TOKEN_FILE", "", 0, 0,
                         "file holding one bearer token (printable ASCII, <= 256 bytes); when "
                         "set, every /v1 request needs 'Authorization: Bearer TOKEN'"},
@@ -392,6 +416,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
         cli[found] = value;
     }
 
+    char installed[1024];
     for (int k = 0; k < OPT_COUNT; k++) {
         char source[64];
         const char *value = cli[k];
@@ -403,6 +428,7 @@ enum srv_config_result srv_config_load(struct srv_config *cfg, int argc, char **
         } else {
             value = opts[k].def;
             snprintf(source, sizeof source, "default of %s", opts[k].flag);
+            if (k == OPT_STATIC_DIR) value = installed_static_dir(installed, sizeof installed);
         }
         if (set_option(cfg, (enum opt_id)k, value, source, err) != 0) return SRV_CONFIG_ERROR;
     }

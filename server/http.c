@@ -3,9 +3,11 @@
  * end, one file per DESIGN heading (shared types in http_internal.h):
  * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY: it decides
  * from the headers, through its own face http_security.h, and this file
- * answers), quick.c (QUICK OPERATIONS), conn_watch.c (CANCELLATION, SLOW
- * CLIENTS, CONNECTION FLOODS), http_daemon.c (start and stop) and io_loop.c
- * (I/O THREADS).
+ * answers), http_head.c (REQUEST HEAD: 414, 431, Host, what OPTIONS names),
+ * quick.c (QUICK OPERATIONS), answer_budget.c (ANSWER MEMORY), answer_send.c
+ * (the bytes of an answer sent), conn_watch.c (CANCELLATION, SLOW CLIENTS,
+ * CONNECTION FLOODS), http_daemon.c (start and stop, descriptors) and
+ * io_loop.c (I/O THREADS).
  *
  * DESIGN. Per-request state (struct srv_req) is allocated on the first access
  * callback and freed in MHD_OPTION_NOTIFY_COMPLETED.
@@ -159,6 +161,7 @@ static void req_free(struct srv_req *r)
     free(r->query_request);
     free(r->if_none_match);
     free(r->accept_encoding);
+    free(r->host);
     free(r->origin);
     free(r->forwarded_for);
     free(r->body);
@@ -494,6 +497,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
     r->aext.query_request = r->query_request;
     r->aext.if_none_match = r->if_none_match;
     r->aext.accept_encoding = r->accept_encoding;
+    r->aext.host = r->host;
     r->aext.max_samples = h->cfg->max_samples;
     r->aext.admit = answer_admit; /* the answer-memory budget (answer_budget.c) */
     r->aext.admit_ctx = r;
@@ -595,13 +599,16 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
         const char *ae =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ACCEPT_ENCODING);
         r->accept_encoding = dup_str(ae);
+        const char *host = MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_HOST);
+        r->host = dup_str(host);
         const char *origin =
             MHD_lookup_connection_value(conn, MHD_HEADER_KIND, MHD_HTTP_HEADER_ORIGIN);
         r->origin = dup_str(origin);
         *con_cls = r;
         atomic_fetch_add(&h->inflight, 1);
         if (!r->method || !r->path || (ct && !r->content_type) || (qr && !r->query_request) ||
-            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin)) {
+            (inm && !r->if_none_match) || (ae && !r->accept_encoding) || (origin && !r->origin) ||
+            (host && !r->host)) {
             r->oom = 1;
             return dispatch(h, r); /* answers 500 */
         }

@@ -169,6 +169,7 @@ struct srv_req {
     char *method, *path, *content_type;  /* owned copies */
     char *query_request, *if_none_match; /* owned copies: ?request= (decoded), If-None-Match */
     char *accept_encoding;               /* owned copy of Accept-Encoding, or NULL */
+    char *host;                          /* owned copy of Host, or NULL (GET /v1's curl lines) */
     char *body;
     size_t body_len, body_cap, body_seen;
     int too_large;

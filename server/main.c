@@ -108,10 +108,11 @@ int main(int argc, char **argv)
         return 1;
     }
     srv_log_note("workers=%d queue=%d io_threads=%d max_body=%zu deadline_ms=%ld max_steps=%ld "
-                 "request_timeout_ms=%ld inline_max_us=%ld worker_nice=%d static_files=%d",
+                 "request_timeout_ms=%ld inline_max_us=%ld worker_nice=%d max_answer_memory=%zu "
+                 "static_files=%d",
                  cfg.workers, cfg.queue, cfg.io_threads, cfg.max_body, cfg.deadline_ms,
                  cfg.max_steps, cfg.request_timeout_ms, cfg.inline_max_us, cfg.worker_nice,
-                 n_static < 0 ? 0 : n_static);
+                 cfg.max_answer_memory, n_static < 0 ? 0 : n_static);
 
     int sig = 0;
     while (sigwait(&stop, &sig) != 0) {

@@ -93,6 +93,8 @@ struct api_request_ext {
      * answer-memory-full with Retry-After: 1, and nothing is computed. */
     int (*admit)(void *ctx, long route, double samples);
     void *admit_ctx;
+    const char *host;          /* Host header, or NULL: GET /v1's curl lines name this host
+                                  and port instead of 127.0.0.1:8080 */
 };
 
 /* Process-wide set-up of the API layer: main() (the server's, `mechd eval`'s,

@@ -4,7 +4,7 @@
 # Usage: MECHD_URL=http://host:port continuum_rod.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/continuum/rod" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/continuum/rod" --json '{
   "length": 1, "density": 7850, "youngs_modulus": 2e11,
   "section": {"width": 0.02, "height": 0.005}, "ends": "clamped-free"
 }'

@@ -4,6 +4,6 @@
 # Usage: MECHD_URL=http://host:port continuum_string.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/continuum/string" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/continuum/string" --json '{
   "tension": 100, "linear_density": 0.01, "length": 0.5
 }'

@@ -6,7 +6,7 @@
 # Usage: MECHD_URL=http://host:port frames_rotating_liquid.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/frames/rotating-liquid" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/frames/rotating-liquid" --json '{
   "omega": 10,
   "radius": 0.1,
   "depth": 0.05,

@@ -4,6 +4,6 @@
 # Usage: MECHD_URL=http://host:port relativity_force.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/force" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/force" --json '{
   "mass": 9.1093837015e-31, "velocity": {"beta": [0.6, 0, 0]}, "acceleration": [1e15, 2e15, 0]
 }'

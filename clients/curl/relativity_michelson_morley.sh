@@ -5,6 +5,6 @@
 # Usage: MECHD_URL=http://host:port relativity_michelson_morley.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/michelson-morley" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/michelson-morley" --json '{
   "arm_length": 11, "speed": 30000, "wavelength": 5.5e-7
 }'

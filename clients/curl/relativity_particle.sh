@@ -5,6 +5,6 @@
 # Usage: MECHD_URL=http://host:port relativity_particle.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/particle" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/relativity/particle" --json '{
   "particle": "mu-", "beta": 0.9999, "proper_lifetime": 2e-6
 }'

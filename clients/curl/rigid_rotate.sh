@@ -5,7 +5,7 @@
 # Usage: MECHD_URL=http://host:port rigid_rotate.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rigid/rotate" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rigid/rotate" --json '{
   "moments": [1, 2, 3],
   "omega": [0.05, 1, 0.05],
   "t_end": 60,

@@ -6,7 +6,7 @@
 # Usage: MECHD_URL=http://host:port rotation_euler_rates.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/euler-rates" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/rotation/euler-rates" --json '{
   "euler_zxz": [0.3, 0.6, 0.1],
   "rates": [1.5, 0, 20]
 }'

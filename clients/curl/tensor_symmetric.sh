@@ -5,7 +5,7 @@
 # Usage: MECHD_URL=http://host:port tensor_symmetric.sh
 # MECHD_TOKEN, when set, goes as the bearer token (through stdin: not in ps).
 printf '%s' "${MECHD_TOKEN:+Authorization: Bearer $MECHD_TOKEN}" |
-  exec curl -s -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/tensor/symmetric" --json '{
+  exec curl -sS --fail-with-body -H @- "${MECHD_URL:-http://127.0.0.1:8080}/v1/tensor/symmetric" --json '{
   "tensor": [[0.6666666666666666, -0.25, -0.25],
              [-0.25, 0.6666666666666666, -0.25],
              [-0.25, -0.25, 0.6666666666666666]],

@@ -65,7 +65,10 @@ from typing import Any, Callable, Dict, List, Optional, Tuple, Union
 __all__ = ["Client", "MechdError", "ProblemError", "BadRequest", "Unauthorized", "NotFound", "MethodNotAllowed",
            "PayloadTooLarge", "UnsupportedMediaType", "ValidationError", "DomainError",
            "AnswerTooLarge", "BudgetExceeded", "NumericalFailure", "InternalError", "ServerBusy", "ShuttingDown",
-           "ConnectionFailed", "OPERATIONS", "resolve_pointer", "check_example"]
+           "ConnectionFailed", "Timeout", "OPERATIONS", "resolve_pointer", "check_example",
+           "__version__"]
+
+__version__ = "0.2.0"
 
 DEFAULT_URL = "http://127.0.0.1:8080"
 
@@ -179,6 +182,11 @@ class ShuttingDown(ServerBusy):
 
 class ConnectionFailed(MechdError):
     """No HTTP answer (refused, reset, timed out); .status is None."""
+
+
+class Timeout(ConnectionFailed):
+    """No answer within the client's timeout (seconds per attempt); .status is None. Not
+    retried: the server may still be computing, and asking again would double its work."""
 
 
 _BY_TYPE = {
@@ -1668,6 +1676,43 @@ class Client(_Operations):
             raise ValueError("token: a bearer token cannot hold a line break")
         self._server_batch = None  # None: unknown yet; False: the server has no batch
         self._lock = threading.Lock()
+        # Connection reuse: one kept-alive HTTP connection per thread (http.client is
+        # not thread-safe), all closed by close() or at the end of a `with` block. A
+        # proxy from the environment (http_proxy ...) makes every request go through
+        # urllib instead, one connection each.
+        u = urllib.parse.urlsplit(self.base_url)
+        self._scheme, self._host, self._port = u.scheme or "http", u.hostname or "", u.port
+        self._prefix = u.path.rstrip("/")
+        self._via_urllib = self._scheme not in ("http", "https") or bool(
+            urllib.request.getproxies().get(self._scheme)
+            and not urllib.request.proxy_bypass(u.netloc))
+        self._local = threading.local()
+        self._conns = []  # every connection opened, for close()
+
+    def __enter__(self) -> "Client":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Close the kept-alive connections of every thread (the client stays usable: the
+        next request opens a new one)."""
+        with self._lock:
+            conns, self._conns = self._conns, []
+        for c in conns:
+            c.close()
+        self._local = threading.local()
+
+    def _connection(self) -> http.client.HTTPConnection:
+        conn = getattr(self._local, "conn", None)
+        if conn is None:
+            cls = http.client.HTTPSConnection if self._scheme == "https" else http.client.HTTPConnection
+            conn = cls(self._host, self._port, timeout=self.timeout)
+            self._local.conn = conn
+            with self._lock:
+                self._conns.append(conn)
+        return conn
 
     # -- low level ------------------------------------------------------------------
     def request(self, method: str, path: str, data: Optional[bytes] = None,
@@ -1690,6 +1735,9 @@ class Client(_Operations):
             headers["Authorization"] = "Bearer " + self.token
         if data is not None and content_type:
             headers["Content-Type"] = content_type
+        if not self._via_urllib:
+            target = self._prefix + path + (url[len(self.base_url + path):] if query else "")
+            return self._exchange_kept(method, url, target, data, headers)
         req = urllib.request.Request(url, data=data, method=method, headers=headers)
         try:
             with _OPENER.open(req, timeout=self.timeout) as resp:
@@ -1704,9 +1752,40 @@ class Client(_Operations):
             return e.code, {k.lower(): v for k, v in (e.headers or {}).items()}, body
         except (urllib.error.URLError, socket.timeout, ConnectionError, OSError, http.client.HTTPException) as e:
             reason = getattr(e, "reason", e)
+            if isinstance(reason, socket.timeout) or isinstance(e, socket.timeout):
+                raise Timeout(None, None, None, "%s %s: no answer within %g s"
+                              % (method, url, self.timeout)) from None
             if isinstance(reason, _DROPPED) or isinstance(e, _DROPPED):
                 raise ConnectionDropped("%s %s: %s" % (method, url, reason)) from None
             raise ConnectionFailed(None, None, None, "%s %s: %s" % (method, url, reason)) from None
+
+    def _exchange_kept(self, method, url, target, data, headers):
+        """One exchange on this thread's kept-alive connection. A connection the server
+        closed while it was idle is replaced once, at once (nothing was sent on it);
+        otherwise failures map as in _exchange."""
+        for attempt in (0, 1):
+            conn = self._connection()
+            reused = conn.sock is not None
+            try:
+                conn.request(method, target or "/", body=data, headers=headers)
+                resp = conn.getresponse()
+                body = resp.read()
+                hdrs = {k.lower(): v for k, v in resp.getheaders()}
+                if resp.will_close:
+                    conn.close()
+                return resp.status, hdrs, body
+            except socket.timeout:
+                conn.close()
+                raise Timeout(None, None, None, "%s %s: no answer within %g s"
+                              % (method, url, self.timeout)) from None
+            except _DROPPED + (OSError, http.client.HTTPException) as e:
+                conn.close()
+                if reused and attempt == 0 and isinstance(e, _DROPPED):
+                    continue
+                if isinstance(e, _DROPPED):
+                    raise ConnectionDropped("%s %s: %s" % (method, url, e)) from None
+                raise ConnectionFailed(None, None, None, "%s %s: %s" % (method, url, e)) from None
+        raise ConnectionDropped("%s %s: closed twice" % (method, url))
 
     def _once(self, method, path, data, content_type):
         status, headers, body = self._exchange(method, path, data, content_type, None)
@@ -1770,22 +1849,22 @@ class Client(_Operations):
         return self.call(path, req)
 
     # -- resources ------------------------------------------------------------------
-    def catalog(self):
+    def catalog(self) -> Dict[str, Any]:
         """GET /v1: every operation with its summary, schema and example request."""
         return self.call("/v1")
 
-    def examples(self):
+    def examples(self) -> List[Dict[str, Any]]:
         """GET /v1/examples: the course notes' worked examples (a list)."""
         return self.call("/v1/examples")["examples"]
 
-    def example(self, example_id):
+    def example(self, example_id: str) -> Dict[str, Any]:
         """One example of GET /v1/examples by id; KeyError if there is none."""
         for e in self.examples():
             if e["id"] == example_id:
                 return e
         raise KeyError(example_id)
 
-    def run_example(self, example):
+    def run_example(self, example: Union[str, Dict[str, Any]]) -> Tuple[Any, Any, bool]:
         """Run an example (a dict or its id): (answer, value at its pointer, matches the notes)."""
         if isinstance(example, str):
             example = self.example(example)
@@ -1793,26 +1872,33 @@ class Client(_Operations):
         got, ok = check_example(example, answer)
         return answer, got, ok
 
-    def integrators(self):
+    def integrators(self) -> Dict[str, Any]:
         """GET /v1/integrators: the ODE methods and accuracy presets."""
         return self.call("/v1/integrators")
 
-    def health(self):
+    def health(self) -> bool:
         """True when GET /healthz answers 2xx."""
         status, _, _ = self.request("GET", "/healthz")
         return 200 <= status < 300
 
-    def check(self, operation, request, pointer, value, relative=None, absolute=None,
-              significant_figures=None, *, kind=None, unit=None, scale=None, reveal=None):
+    def check(self, operation: str, request: Dict[str, Any], pointer: str, value: Any,
+              relative: Optional[float] = None, absolute: Optional[float] = None,
+              significant_figures: Optional[int] = None, *, kind: Optional[str] = None,
+              unit: Optional[str] = None, scale: Optional[float] = None,
+              reveal: Optional[bool] = None,
+              significant_figures_in: Optional[str] = None) -> Dict[str, Any]:
         """POST /v1/check: grade a student's value at pointer of operation's answer.
 
         kind ("axis", "quaternion", "angle", "eigenvectors", ...; default what the
         operation's response schema says of the field), unit (the student's unit: "km", "eV", "deg", ...), scale (the
         problem's size in the field's unit, for values that should be zero) and reveal
-        (the feedback names the expected value) are passed when not None.
+        (the feedback names the expected value) are passed when not None;
+        significant_figures_in ("field" or "answer") says in which unit the figures count.
+        value may be what the student typed ("27.9 deg"): it is graded, never refused.
         """
         tol = {k: v for k, v in (("relative", relative), ("absolute", absolute),
                                  ("significant_figures", significant_figures),
+                                 ("significant_figures_in", significant_figures_in),
                                  ("scale", scale)) if v is not None}
         answer = {"pointer": pointer, "value": value}
         if kind is not None:
@@ -1827,7 +1913,8 @@ class Client(_Operations):
         return self.call("/v1/check", body)
 
     # -- many requests ----------------------------------------------------------------
-    def batch(self, items, concurrency=4, use_server=True):
+    def batch(self, items: List[Any], concurrency: int = 4,
+              use_server: bool = True) -> List[Any]:
         """Run many operations; items are (path, body) pairs or {"operation", "request"} dicts.
         Returns a list in the same order: the answer dict, or the MechdError for that item.
         Uses POST /v1/batch when the server has it (and use_server), else `concurrency`
@@ -1880,25 +1967,57 @@ class Client(_Operations):
 
 
 def main(argv: Optional[List[str]] = None) -> int:
-    """The mechd-client command: python3 -m mechd PATH [JSON-BODY|-]."""
+    """The mechd-client command (also python3 -m mechd, python3 mechd.py); see --help.
+    Exit status: 0 the answer printed; 1 the server refused the request (its
+    problem+json printed); 2 usage; 3 no answer (connection failed, timeout)."""
+    import argparse
     import sys
-    return _main(sys.argv if argv is None else argv)
-
-
-def _main(argv):
-    """python3 mechd.py PATH [JSON-BODY|-] : print the answer (MECHD_URL picks the server)."""
-    import os
-    import sys
-    if len(argv) < 2:
-        sys.stderr.write("usage: mechd.py PATH [JSON-BODY | -]   (MECHD_URL=%s, MECHD_TOKEN)\n" % DEFAULT_URL)
-        return 2
+    argv = sys.argv[1:] if argv is None else list(argv)
+    ap = argparse.ArgumentParser(
+        prog="mechd-client",
+        description="Send one request to a mechd server and print its JSON answer.",
+        epilog="The request body is JSON text, '-' (read from standard input) or @FILE; "
+               "without one, PATH is fetched with GET. Examples: mechd-client /v1 ; "
+               "mechd-client /v1/relativity/boost @boost.json ; "
+               "echo '{...}' | mechd-client --url http://mechd:8080 /v1/check -")
+    ap.add_argument("path", metavar="PATH", help="the operation's path, e.g. /v1/rigid/inertia")
+    ap.add_argument("body", metavar="BODY", nargs="?",
+                    help="the request: JSON text, - for standard input, or @FILE")
+    ap.add_argument("--url", default=os.environ.get("MECHD_URL", DEFAULT_URL),
+                    help="the server (default: $MECHD_URL, else %s)" % DEFAULT_URL)
+    ap.add_argument("--token-file", metavar="FILE",
+                    help="a file holding the bearer token (default: $MECHD_TOKEN)")
+    ap.add_argument("--timeout", type=float, default=60.0, help="seconds per attempt (default 60)")
+    ap.add_argument("--version", action="version", version="%(prog)s " + __version__)
+    args = ap.parse_args(argv)
+    if not args.path.startswith("/"):
+        ap.error("PATH must start with '/' (e.g. /v1/rigid/inertia), not %r" % args.path)
     body = None
-    if len(argv) > 2:
-        body = json.loads(sys.stdin.read() if argv[2] == "-" else argv[2])
-    client = Client(os.environ.get("MECHD_URL", DEFAULT_URL))  # token: $MECHD_TOKEN
     try:
-        print(json.dumps(client.call(argv[1], body), indent=2))
+        if args.body == "-":
+            text = sys.stdin.read()
+        elif args.body is not None and args.body.startswith("@"):
+            with open(args.body[1:], encoding="utf-8") as f:
+                text = f.read()
+        else:
+            text = args.body
+        if text is not None:
+            body = json.loads(text)
+        token = None
+        if args.token_file:
+            with open(args.token_file, encoding="utf-8") as f:
+                token = f.read().strip()
+    except OSError as e:
+        ap.error(str(e))
+    except ValueError as e:
+        ap.error("the request is not JSON: %s" % e)
+    try:
+        with Client(args.url, timeout=args.timeout, token=token) as client:
+            print(json.dumps(client.call(args.path, body), indent=2))
         return 0
+    except ConnectionFailed as e:
+        sys.stderr.write("mechd-client: %s\n" % e.detail)
+        return 3
     except MechdError as e:
         print(json.dumps(e.problem or {"detail": e.detail}, indent=2))
         return 1
@@ -1906,4 +2025,4 @@ def _main(argv):
 
 if __name__ == "__main__":
     import sys
-    sys.exit(_main(sys.argv))
+    sys.exit(main())

@@ -107,7 +107,7 @@ static void traj_profile(const struct mech_trajectory_problem *p,
     mech_trajectory_reference_find(p, &ref);
     s->closed_form_name = s->closed_form ? ref.name : NULL;
     s->closed_form_allowed = !p->closed_form_off;
-    mech_chooser_profile_orbit(s, p); /* core/ode/chooser_orbit.c */
+    mech_chooser_profile_orbit(s, p); /* core/frames/chooser_orbit.c */
     if (p->relativity & MECH_RELATIVITY_SPECIAL) {
         /* integrated as (r, u = gamma v): first order, no Kepler split */
         s->second_order = 0;

@@ -237,9 +237,6 @@ int mech_trajectory_angular_center(const struct mech_trajectory_problem *p, int 
 
 /* ---- planar scenes --------------------------------------------------------- */
 
-/* Unit vector of a (a != 0). */
-static struct mech_vec3 unit(struct mech_vec3 a) { return mech_vec3_scale(a, 1.0 / mech_vec3_norm(a)); }
-
 /* |n.u| <= 1e-15 |u| with n a unit vector: u lies in the plane of normal n. */
 static int in_plane(struct mech_vec3 n, struct mech_vec3 u)
 {
@@ -259,7 +256,7 @@ static struct mech_vec3 perpendicular_to(struct mech_vec3 u)
     struct mech_vec3 e = ax <= ay && ax <= az ? mech_vec3_make(1, 0, 0)
                          : ay <= az           ? mech_vec3_make(0, 1, 0)
                                               : mech_vec3_make(0, 0, 1);
-    return unit(mech_vec3_cross(e, u));
+    return mech_vec3_unit(mech_vec3_cross(e, u));
 }
 
 int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_vec3 *normal)
@@ -309,7 +306,7 @@ int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_v
     int have = 0;
     for (size_t i = 0; i < nn && !have; i++)
         if (mech_vec3_norm(nrm[i]) > 0.0) {
-            n = unit(nrm[i]);
+            n = mech_vec3_unit(nrm[i]);
             have = 1;
         }
     for (size_t i = 0; i < ni && !have; i++) {
@@ -317,7 +314,7 @@ int mech_trajectory_plane(const struct mech_trajectory_problem *p, struct mech_v
         for (size_t j = i + 1; j < ni && !have; j++) {
             struct mech_vec3 x = mech_vec3_cross(inp[i], inp[j]);
             if (mech_vec3_norm(x) > 1e-15 * mech_vec3_norm(inp[i]) * mech_vec3_norm(inp[j])) {
-                n = unit(x);
+                n = mech_vec3_unit(x);
                 have = 1;
             }
         }

@@ -10,7 +10,7 @@
  * The presets are targets (draft 1e-3, balanced 1e-8, precise 1e-10, machine
  * 1e-11 relative); the method and its setting come from the predictive
  * chooser (mech/chooser.h, core/ode/chooser.c: a model calibrated by
- * bench/bench_calibrate_chooser), which lists every candidate with its
+ * bench/bench_calibrate_chooser.c), which lists every candidate with its
  * predicted error and cost and picks the cheapest predicted to meet the
  * target. The `method`/`rtol` fields of the table below are what the
  * chooser typically picks on a 10-orbit Kepler scene, kept for GET

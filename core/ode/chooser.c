@@ -172,7 +172,7 @@ static double x_max_of(const struct mech_scene_profile *s, const struct method_s
  * the setting on the calibration scene, an adaptive tolerance of target /
  * margin: other scenes of the class, drag say, are not polynomial). */
 /* Wisdom-Holman's error constant per unit perturbation, err = A(e) eps
- * (h/P)^2 orbits (bench/bench_wisdom_holman: A = 192 at e = 0.5, 847 at
+ * (h/P)^2 orbits (bench/bench_wisdom_holman.c: A = 192 at e = 0.5, 847 at
  * e = 0.9, span exponent 0.97 and 0.57; a power of (1 + e) / (1 - e)
  * through both), and its CPU per step (a Kepler drift and a kick: 41 ms for
  * 1e5 steps, same bench). */

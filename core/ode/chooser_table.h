@@ -18,7 +18,7 @@
  * oscillator (and general, its copy) floor: the same --floors run, an
  * ellipse and a circle over 10 .. 1e4 periods: within 0.5 .. 2.2x of
  * 4.03e-17 span^1.097 (a linear system: no Brouwer growth), and
- * tests/core/test_trajectory_diagnostics measured 1.5x on another
+ * tests/core/frames/test_trajectory_diagnostics.c measured 1.5x on another
  * amplitude: F = Fm = 1e-16 (2.5x), g = 1.097 (rk8pd keeps its own Fm).
  * Calibration scenes: central_gravity = Kepler e = 0.5 from perihelion, 10 and
  * 1000 orbits; oscillator = isotropic spring, 10 and 1e4 periods;
@@ -112,6 +112,6 @@ static const struct chooser_row chooser_table[] = {
     /* wisdom_holman: only the floor columns (F, g, Fm) are used: its error
      * and cost come from the measured law with the scene's perturbation,
      * core/ode/chooser.c predict_wisdom_holman (A(e) eps (h/P)^2 orbits,
-     * bench/bench_wisdom_holman; 4.1e-7 s a step). */
+     * bench/bench_wisdom_holman.c; 4.1e-7 s a step). */
     {"central_gravity", "wisdom_holman", 0.4, 2.0, 1.0, 2.0, 1.0, 2, 6e-08, 2.5e-16, 1.500, 2.5e-16},
 };

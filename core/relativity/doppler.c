@@ -24,19 +24,6 @@
 
 /* ---- accurate small vector arithmetic ------------------------------------ */
 
-/* Unit vector along d (scaled first so nothing overflows); 0 if d is zero or
- * not finite. */
-static int unit(struct mech_vec3 d, struct mech_vec3 *n)
-{
-    if (!mech_vec3_isfinite(d)) return 0;
-    double m = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
-    if (m == 0) return 0;
-    struct mech_vec3 s = mech_vec3_make(d.x / m, d.y / m, d.z / m);
-    double len = mech_vec3_norm(s);
-    *n = mech_vec3_make(s.x / len, s.y / len, s.z / len);
-    return 1;
-}
-
 static struct mech_vec3 negated(struct mech_vec3 v)
 {
     return mech_vec3_make(0.0 - v.x, 0.0 - v.y, 0.0 - v.z);
@@ -124,7 +111,7 @@ void mech_doppler_relative_motion(const struct mech_boost *frame, const struct m
     /* Collinear motion keeps the frame's own axis bit for bit. */
     if (mperp.x == 0 && mperp.y == 0 && mperp.z == 0)
         dir = wpar >= 0 ? n : negated(n);
-    else if (!unit(*w, &dir))
+    else if (!mech_vec3_unit_checked(*w, &dir))
         dir = n;
     if (direction) *direction = dir;
     /* γ and γ − 1 from |w| = βγ: γ − 1 = |w|²/(1 + γ) (no cancellation). */
@@ -144,7 +131,7 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
 {
     if (!out) return mech_error_set(err, MECH_EINVAL, NULL, "no output given");
     struct mech_vec3 dn;
-    if (!unit(direction, &dn))
+    if (!mech_vec3_unit_checked(direction, &dn))
         return mech_error_set(err, MECH_EINVAL, "direction",
                               "the light's direction must be a nonzero finite vector");
     struct mech_boost rest;
@@ -238,9 +225,9 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
          * c = β_F × β_G (perpendicular to both boosts, so the same vector in
          * the lab, F and G) and takes â_F to −â_G. Collinear motion: R = 1. */
         struct mech_vec3 eperp = mech_vec3_make(0, 0, 0);
-        if (sf > 0 && unit(mech_cross_compensated(af, mech_cross_compensated(dn, af)), &eperp)) {
+        if (sf > 0 && mech_vec3_unit_checked(mech_cross_compensated(af, mech_cross_compensated(dn, af)), &eperp)) {
             struct mech_vec3 axis;
-            if (unit(mech_cross_compensated(source->direction, observer->direction), &axis) &&
+            if (mech_vec3_unit_checked(mech_cross_compensated(source->direction, observer->direction), &axis) &&
                 source->rapidity > 0 && observer->rapidity > 0) {
                 const struct mech_vec3 b = negated(ag);
                 const double so = mech_vec3_dot(axis, mech_cross_compensated(af, b));
@@ -249,7 +236,7 @@ enum mech_status mech_doppler_compute(const struct mech_boost *source,
                 eperp = rotate(eperp, axis, cos(om), sin(om));
             }
         }
-        if (!unit(mech_vec3_add(mech_vec3_scale(ag, cg), mech_vec3_scale(eperp, sg)), &ng)) ng = ag;
+        if (!mech_vec3_unit_checked(mech_vec3_add(mech_vec3_scale(ag, cg), mech_vec3_scale(eperp, sg)), &ng)) ng = ag;
 
         /* Name the case (MECH_DOPPLER_CASE_TOL); α_S < π/2 means the light
          * runs along the observer's velocity: the observer recedes. */

@@ -218,7 +218,7 @@ static int unit_direction(struct mech_vec3 d, struct mech_vec3 *n)
     double s = fmax(fabs(d.x), fmax(fabs(d.y), fabs(d.z)));
     if (s == 0) return 0;
     struct mech_vec3 u = mech_vec3_scale(d, 1.0 / s);
-    *n = mech_vec3_scale(u, 1.0 / mech_vec3_norm(u));
+    *n = mech_vec3_unit(u);
     return 1;
 }
 

@@ -133,7 +133,7 @@ enum mech_status mech_velocity_add_light(struct mech_vec3 direction, const struc
         return mech_error_set(err, MECH_EINVAL, "direction",
                               "the direction of the light must be a nonzero finite vector");
     struct mech_vec3 k = mech_vec3_scale(direction, 1.0 / m);
-    k = mech_vec3_scale(k, 1.0 / mech_vec3_norm(k));
+    k = mech_vec3_unit(k);
     struct angle_parts ap = angle_between(frame->direction, k);
     /* Photon (1, k): light-cone components along n_f are u = 1 − c, v = 1 + c;
      * the boost scales u' = e^{η} u, v' = e^{−η} v (core/relativity/boost.c). Then
@@ -146,7 +146,7 @@ enum mech_status mech_velocity_add_light(struct mech_vec3 direction, const struc
     double ratio = 0.5 * sum;
     if (!isfinite(ratio) || !mech_vec3_isfinite(kp))
         return mech_error_set(err, MECH_ENUMERIC, "velocity", "the boosted light is not finite");
-    *direction_out = mech_vec3_scale(kp, 1.0 / mech_vec3_norm(kp));
+    *direction_out = mech_vec3_unit(kp);
     *frequency_ratio = ratio;
     return MECH_OK;
 }
@@ -237,7 +237,7 @@ enum mech_status mech_boost_compose(const struct mech_boost *v, size_t n,
          * the active turn q: express v in the pure-boost frame's axes. */
         struct mech_boost vr = v[k];
         vr.direction = quat_rotate(q, v[k].direction);
-        vr.direction = mech_vec3_scale(vr.direction, 1.0 / mech_vec3_norm(vr.direction));
+        vr.direction = mech_vec3_unit(vr.direction);
         vr.beta_vec = mech_vec3_scale(vr.direction, vr.beta);
         /* B(vr) B(acc) = R2 B(acc ⊕ vr): the velocity of the new frame in the
          * original is vr seen from a frame moving with −acc. */

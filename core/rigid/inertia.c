@@ -563,11 +563,6 @@ static struct mech_vec3 sign_fix(struct mech_vec3 v)
     return v;
 }
 
-static struct mech_vec3 normalise(struct mech_vec3 v)
-{
-    return mech_vec3_scale(v, 1.0 / mech_vec3_norm(v));
-}
-
 /* Orthonormal pair spanning the plane normal to the unit vector u: the
  * projection of the first scene axis least aligned with u (ties within 1e-12
  * go to the lowest index), then u x that. */
@@ -579,7 +574,7 @@ static void plane_basis(struct mech_vec3 u, struct mech_vec3 *v, struct mech_vec
     while (k < 2 && fabs(uc[k]) > mn + 1e-12)
         k++;
     struct mech_vec3 e = mech_vec3_make(k == 0, k == 1, k == 2);
-    *v = normalise(mech_vec3_sub(e, mech_vec3_scale(u, uc[k])));
+    *v = mech_vec3_unit(mech_vec3_sub(e, mech_vec3_scale(u, uc[k])));
     *w = mech_vec3_cross(u, *v);
 }
 
@@ -634,16 +629,16 @@ enum mech_status mech_inertia_principal(struct mech_mat3 t, struct mech_inertia_
         e[0] = mech_vec3_make(1, 0, 0);
         e[1] = mech_vec3_make(0, 1, 0);
     } else if (d01) {
-        plane_basis(normalise(e[2]), &e[0], &e[1]);
+        plane_basis(mech_vec3_unit(e[2]), &e[0], &e[1]);
     } else if (d12) {
-        e[0] = sign_fix(normalise(e[0]));
+        e[0] = sign_fix(mech_vec3_unit(e[0]));
         plane_basis(e[0], &e[1], &e[2]);
     }
     /* Sign rule, Gram-Schmidt, right-handed completion. */
-    e[0] = sign_fix(normalise(e[0]));
+    e[0] = sign_fix(mech_vec3_unit(e[0]));
     e[1] = mech_vec3_sub(e[1], mech_vec3_scale(e[0], mech_vec3_dot(e[0], e[1])));
-    e[1] = sign_fix(normalise(e[1]));
-    e[2] = normalise(mech_vec3_cross(e[0], e[1]));
+    e[1] = sign_fix(mech_vec3_unit(e[1]));
+    e[2] = mech_vec3_unit(mech_vec3_cross(e[0], e[1]));
     for (int k = 0; k < 3; k++) {
         res.axes.a[k][0] = e[k].x;
         res.axes.a[k][1] = e[k].y;

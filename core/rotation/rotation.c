@@ -86,7 +86,10 @@ enum mech_status mech_rotation_from_euler_zxz(double phi, double theta, double p
 }
 
 /* Unit vector along v (non-zero, finite), scaled first so that no square
- * overflows or underflows. Returns 0 for a zero vector. */
+ * overflows or underflows. Returns 0 for a zero vector. Products with the
+ * reciprocals, where mech_vec3_unit_checked (mech/vec.h) divides: the two
+ * differ in the last bit, and the rotation operations' answers are kept as they
+ * are. */
 static int unit(struct mech_vec3 v, struct mech_vec3 *u)
 {
     double s = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));

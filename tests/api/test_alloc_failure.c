@@ -238,6 +238,18 @@ static void add_requests(void)
         "{\"operation\": \"/v1/rotation/convert\", \"request\": {\"axis_angle\": {\"axis\": "
         "[0, 0, 1], \"angle\": 1}}, \"answer\": {\"pointer\": \"/axis_angle\", \"value\": "
         "{\"axis\": [0, 0, -1], \"angle\": -57.3}, \"unit\": \"deg\"}, \"reveal\": true}", NULL);
+    /* a student's odd answers: text with a unit read, swapped components and
+     * the reciprocal found by grading copies (check_answer.c, check_slip.c) */
+    add("POST /v1/check swapped text", "POST", "/v1/check",
+        "{\"operation\": \"/v1/rigid/inertia\", \"request\": {\"bodies\": [{\"shape\": "
+        "\"box\", \"mass\": 12, \"size\": [1, 2, 3], \"position\": [0, 0, 0]}]}, "
+        "\"answer\": {\"pointer\": \"/principal/moments\", \"value\": \"[\\\"5 kg m2\\\", 13, 10]\"}}",
+        NULL);
+    add("POST /v1/check reciprocal", "POST", "/v1/check",
+        "{\"operation\": \"/v1/rigid/inertia\", \"request\": {\"bodies\": [{\"shape\": "
+        "\"box\", \"mass\": 12, \"size\": [1, 2, 3], \"position\": [0, 0, 0]}]}, "
+        "\"answer\": {\"pointer\": \"/principal/moments\", \"value\": [\"1/5\", 0.1, 0.076923076923]}}",
+        NULL);
 }
 
 /* ---- running and judging ------------------------------------------------------------ */

@@ -64,7 +64,7 @@ static char *general_answer(const char *body, long max_steps, int *status)
         *status = 400;
         return strdup("");
     }
-    api_run_body_into(boost_ri, &full.req, j, &resp);
+    api_run_body_into(boost_ri, &full, j, &resp);
     *status = resp.status;
     char *b = strndup(resp.body ? resp.body : "", resp.body_len);
     api_response_free(&resp);

@@ -11,8 +11,9 @@
 # file afterwards fails the test, whatever the test itself said, and its
 # contents are printed. exitcode=66 still makes a reporting mechd exit 66,
 # which the tests that check a clean shutdown's status catch as well.
-# tests/tsan.supp (next to this directory) holds the narrow suppressions for
-# uninstrumented libraries, each with the reason it is not a race.
+# A tsan.supp in tests/ (next to this directory), when there is one, holds
+# the narrow suppressions for uninstrumented libraries, each with the reason
+# it is not a race; none is committed today.
 set -u
 if [ $# -lt 2 ]; then
   echo "usage: $0 LOGDIR COMMAND [ARG...]" >&2

@@ -4,8 +4,9 @@ kinds (axis and eigenvectors up to sign, quaternion up to sign, angles modulo
 2 pi and in degrees, axis with angle as a rotation, a degenerate principal
 plane as a subspace), tolerances that make sense at zero (the problem's
 scale), units (km, g cm^2, deg, eV ... converted; a unit of another dimension
-refused at /answer/unit), shape messages that count the expected numbers,
-and feedback that never names the expected value unless reveal is true.
+graded wrong with feedback in words, never refused), shape messages that
+count the expected numbers, text answers as students type them, and
+feedback that never names the expected value unless reveal is true.
 
 Usage: /usr/bin/python3 test_check_kinds.py PATH/TO/mechd
 Runs `mechd eval` (same code as the server's /v1/check, no socket). Every
@@ -122,8 +123,11 @@ verdict("the opposite sense is wrong", False, rc, r)
 check("  ... its error is the angle between the rotations, 2 rad",
       rc == 0 and abs(r["absolute_error"] - 2) < 1e-12, json.dumps(r)[:300])
 rc, r = grade("/v1/rotation/convert", ROT, "/axis_angle", [0, 0, 1, 1])
-refused("an array for an axis_angle answer is refused at /answer/value", rc, r, "/answer/value",
-        ["axis", "angle"])
+verdict("an array for an axis_angle answer is wrong (mistake shape), not refused", False, rc, r)
+check("  ... the feedback asks for an axis with its angle", r.get("mistake") == "shape"
+      and "an axis of 3 numbers with an angle" in r.get("feedback", ""), json.dumps(r)[:300])
+rc, r = grade("/v1/rotation/convert", ROT, "/axis_angle", {"axis": [0, 0, 2], "angle": "57.2958 deg"})
+verdict("an axis_angle with its angle typed as text in degrees (57.2958 deg = 1 rad)", True, rc, r)
 
 # ---- tolerances at zero --------------------------------------------------------
 # tensor[0][1] = 0; the row's scale is 13 kg m^2; 3 figures of 13 -> 0.05.
@@ -152,17 +156,36 @@ rc, r = grade("/v1/rigid/inertia", dict(BOX, omega=[0, 0, 2]), "/kinetic_energy"
               10 / 1.602176634e-19, unit="eV")
 verdict("kinetic energy I w^2/2 = 5 * 4 / 2 = 10 J given in eV", True, rc, r)
 rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments/0", 5, unit="km")
-refused("km for a moment of inertia: 422 at /answer/unit naming kg m^2", rc, r, "/answer/unit",
-        ["kg m^2"])
+verdict("km for a moment of inertia: graded wrong, not refused", False, rc, r)
+check("  ... the feedback says in words a length was given and the answer is a moment of inertia",
+      "A length was given" in r.get("feedback", "")
+      and "moment of inertia, in kg m^2" in r.get("feedback", "")
+      and r.get("mistake") == "unit_dimension", r.get("feedback"))
 rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments/0", 5, unit="furlong")
-refused("an unknown unit: 422 at /answer/unit", rc, r, "/answer/unit", ["unknown unit"])
+verdict("an unknown unit: graded wrong, not refused", False, rc, r)
+check("  ... mistake unit_unknown", r.get("mistake") == "unit_unknown", json.dumps(r)[:300])
 
 # ---- shape messages, feedback ----------------------------------------------------
 rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments", [5, 10])
-refused("a wrong shape says 3 numbers were expected and 2 given", rc, r, "/answer/value",
-        ["an array of 3 numbers", "not an array of 2 numbers"])
+verdict("a wrong shape is wrong, not refused", False, rc, r)
+check("  ... the feedback says 2 numbers were given and 3 expected",
+      "an array of 2 numbers" in r.get("feedback", "")
+      and "an array of 3 numbers" in r.get("feedback", ""), r.get("feedback"))
 rc, r = grade("/v1/rigid/inertia", BOX, "/tensor", 5)
-refused("a number for a matrix names its 3 x 3 shape", rc, r, "/answer/value", ["3 x 3"])
+verdict("a number for a matrix is wrong", False, rc, r)
+check("  ... the feedback names the 3 x 3 shape", "3 x 3" in r.get("feedback", ""), r.get("feedback"))
+for odd in ["", "   ", "abc", "1e999", "--", "[1,", "{}", True, None, [], [[1]], ["x"],
+            {"axis": 1}, "5 5", "5,5", "(((((((((((((((((((((((((((((1", "0x10", "nan", "inf",
+            "\u00e9\u00e9", "5 " + "m" * 300, "1/0"]:
+    rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments/0", odd)
+    check("an odd answer %r is graded wrong with feedback, never refused" % (odd,),
+          rc == 0 and r.get("correct") is False and r.get("feedback", "").startswith("Not correct")
+          and "/" not in r.get("feedback", "").replace("kg m^2", ""), "rc=%d %s" % (rc, json.dumps(r)[:300]))
+for text, right in [("5", True), ("5.0 kg m^2", True), ("5 kg*m^2", True), ("5 kg m2", True),
+                    ("5e7 g cm^2", True), ("10/2", True), ("2.5*2", True), ("5.0 x 10^0", True),
+                    ("-5", False), ("sqrt(25)", True), ("(2+3)", True)]:
+    rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments/0", text)
+    verdict("text %r for the moment 5 kg m^2 is %s" % (text, right), right, rc, r)
 rc, r = grade("/v1/rigid/inertia", BOX, "/principal/moments/0", 5.3721)
 fb = r.get("feedback", "")
 check("feedback of a wrong answer names kind and unit, not the value",

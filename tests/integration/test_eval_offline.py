@@ -34,8 +34,9 @@ import struct
 import subprocess
 import sys
 import tempfile
+import urllib.request
 
-from mechdtest import check, summary
+from mechdtest import check, start_mechd, stop_mechd, summary
 
 if len(sys.argv) < 2:
     sys.stderr.write("usage: test_eval_offline.py PATH/TO/mechd\n")
@@ -210,6 +211,24 @@ def test_install():
         rc, out, err = run([os.path.join(root, "bin", "mechd-eval")], json.dumps(REQUESTS[0]).encode())
         doc = json.loads(out) if rc == 0 else {}
         check("the installed mechd-eval answers (gamma 1.25)", abs(doc.get("gamma", 0) - 1.25) < 1e-15, (rc, err[:200]))
+        # An installed mechd serves PREFIX/share/mechd/web by default, not the build tree's.
+        marker = "<!-- staged front end %s -->" % os.getpid()
+        with open(os.path.join(root, "share", "mechd", "web", "index.html"), "a") as f:
+            f.write(marker + "\n")
+        try:
+            proc, port = start_mechd(os.path.join(root, "bin", "mechd"), stderr=subprocess.DEVNULL)
+        except RuntimeError as e:
+            proc, port = None, str(e)
+        if check("the installed mechd starts", proc is not None, port):
+            try:
+                with urllib.request.urlopen("http://127.0.0.1:%d/" % port, timeout=30) as r:
+                    page = r.read().decode("utf-8", "replace")
+            except OSError as e:
+                page = str(e)
+            finally:
+                stop_mechd(proc)
+            check("the installed mechd serves the front end under its prefix by default "
+                  "(PREFIX/share/mechd/web)", marker in page, page[-300:])
     finally:
         shutil.rmtree(stage, ignore_errors=True)
 

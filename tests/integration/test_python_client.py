@@ -88,9 +88,10 @@ def expect_error(name, cls, fn, status, ptype, pointer=None):
 
 CUBE = {"bodies": [{"shape": "box", "mass": 1, "size": [1, 1, 1], "position": [0.5, 0.5, 0.5]}],
         "origin": [0, 0, 0]}
-# The same cube as 128 coincident boxes of mass 1/128 (exact in binary): the
-# body is over API_QUICK_MAX_BODY (8 KiB), so the server queues it for a worker
-# instead of answering it on the I/O thread, and a full queue refuses it 503.
+# The same cube as 128 coincident boxes of mass 1/128 (exact in binary). The
+# servers of test_busy run with --inline-max-us 0, so the server queues it for
+# a worker instead of answering it on the I/O thread, and a full queue refuses
+# it 503.
 QUEUED_CUBE = {"bodies": [{"shape": "box", "mass": 1 / 128, "size": [1, 1, 1], "position": [0.5, 0.5, 0.5]}] * 128,
                "origin": [0, 0, 0]}
 
@@ -203,7 +204,8 @@ def metric(m, name):
 def test_busy():
     # 5 s of deadline: the queue must still be full when the checks below run,
     # even on a loaded machine.
-    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "5000", "--max-steps", "1000000000000")
+    s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "5000", "--max-steps", "1000000000000",
+               "--inline-max-us", "0")
     try:
         plain = mechd.Client(s.url, timeout=60, retries=0)
         results = {}
@@ -248,7 +250,7 @@ def test_busy():
     # taken for the whole check however slow a loaded machine is; stopping it
     # ends the two slow requests (cancelled) without waiting for the deadline.
     s = Server("--workers", "1", "--queue", "1", "--deadline-ms", "120000", "--max-steps", "1000000000000",
-               "--shutdown-grace-ms", "0")
+               "--shutdown-grace-ms", "0", "--inline-max-us", "0")
     t3 = t4 = None
     try:
         plain = mechd.Client(s.url, timeout=180, retries=0)
@@ -358,7 +360,8 @@ def test_curl(url):
         except ValueError:
             check("%s prints JSON" % f, False, repr(out.stdout[:300]) + repr(out.stderr[:300]))
             continue
-        check("%s exits 0" % f, out.returncode == 0, repr(out.returncode))
+        want_rc = 22 if f == "error.sh" else 0  # curl --fail-with-body: 22 on an HTTP error
+        check("%s exits %d" % (f, want_rc), out.returncode == want_rc, repr(out.returncode))
         if f in CURL_EXPECT_ERROR:
             check("%s: HTTP 422 and a problem+json with errors[].pointer" % f,
                   code == "422" and isinstance(doc, dict) and doc.get("status") == 422 and

@@ -54,17 +54,22 @@ def install(tmp):
     src = os.path.join(tmp, "src")
     shutil.copytree(SRC, src, ignore=shutil.ignore_patterns("__pycache__", "build", "*.egg-info"))
     site = os.path.join(tmp, "site")
-    out = subprocess.run([sys.executable, "-m", "pip", "install", "--no-index", "--no-build-isolation",
+    out = subprocess.run([sys.executable, "-m", "pip", "install", "--no-index",
                           "--no-cache-dir", "--disable-pip-version-check", "--target", site, src],
                          capture_output=True, text=True, timeout=240)
-    ok = check("pip install --no-index ./clients/python succeeds (offline)", out.returncode == 0,
+    ok = check("pip install --no-index ./clients/python succeeds (offline, build isolation on: "
+               "its backend needs nothing)", out.returncode == 0,
                out.stdout[-800:] + out.stderr[-800:])
     return site if ok else None
 
 
 def test_installed(mechd, site, url):
-    check("the installed module is the one imported",
-          os.path.dirname(os.path.abspath(mechd.__file__)) == os.path.abspath(site), mechd.__file__)
+    check("the installed package is the one imported",
+          os.path.dirname(os.path.abspath(mechd.__file__)) == os.path.join(os.path.abspath(site), "mechd"),
+          mechd.__file__)
+    check("the installed package is typed (PEP 561 py.typed) and has __version__",
+          os.path.isfile(os.path.join(site, "mechd", "py.typed"))
+          and re.fullmatch(r"\d+\.\d+\.\d+", getattr(mechd, "__version__", "")), mechd.__file__)
     cli = os.path.join(site, "bin", "mechd-client")
     if check("pip installed the mechd-client command", os.path.exists(cli)):
         env = dict(os.environ, PYTHONPATH=site, MECHD_URL=url)
@@ -204,15 +209,48 @@ def test_token(mechd):
             env = dict(os.environ, MECHD_URL=url, MECHD_TOKEN=tok, CURL_HOME=home)
             out = subprocess.run(["sh", os.path.join(d, f)], capture_output=True, text=True, timeout=120, env=env)
             code = out.stdout.rpartition("\n")[2]
-            if code != ("422" if f == "error.sh" else "200"):
-                bad.append((f, code))
-        check("every clients/curl script sends MECHD_TOKEN (%d scripts: 200, error.sh 422)" % len(scripts),
+            want = ("422", 22) if f == "error.sh" else ("200", 0)
+            if (code, out.returncode) != want:
+                bad.append((f, code, out.returncode))
+            if f == "error.sh" and "/problems/domain-error" not in out.stdout:
+                bad.append((f, "no problem+json printed"))
+        check("every clients/curl script sends MECHD_TOKEN (%d scripts: 200 exit 0; error.sh 422, "
+              "exit 22 like curl --fail-with-body, its problem+json printed)" % len(scripts),
               scripts and not bad, repr(bad[:5]))
         env = dict(os.environ, MECHD_URL=url, CURL_HOME=home)
         env.pop("MECHD_TOKEN", None)
         out = subprocess.run(["sh", os.path.join(d, "inertia.sh")], capture_output=True, text=True, timeout=60, env=env)
-        check("without MECHD_TOKEN a curl script gets the 401", out.stdout.rpartition("\n")[2] == "401",
-              repr(out.stdout[-100:]))
+        check("without MECHD_TOKEN a curl script gets the 401 and exits non-zero (22)",
+              out.stdout.rpartition("\n")[2] == "401" and out.returncode == 22
+              and "/problems/unauthorized" in out.stdout, repr((out.returncode, out.stdout[-200:])))
+        # The command line: --token-file, --url, a request from a file and from stdin.
+        cli = [sys.executable, "-m", "mechd"]
+        cenv = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(mechd.__file__))
+                    if mechd.__file__.endswith("__init__.py") else os.path.dirname(mechd.__file__))
+        cenv.pop("MECHD_TOKEN", None)
+        cenv.pop("MECHD_URL", None)
+        req = os.path.join(tmp, "req.json")
+        with open(req, "w") as f:
+            json.dump(CUBE, f)
+        out = subprocess.run(cli + ["--url", url, "--token-file", os.path.join(tmp, "token"),
+                                    "/v1/rigid/inertia", "@" + req],
+                             capture_output=True, text=True, timeout=60, env=cenv)
+        try:
+            lo = min(json.loads(out.stdout)["principal"]["moments"])
+        except (ValueError, KeyError):
+            lo = None
+        check("mechd-client --url --token-file PATH @FILE: the cube's 1/6", close(lo, 1 / 6, 1e-13),
+              repr((out.returncode, out.stdout[:200], out.stderr[-200:])))
+        out = subprocess.run(cli + ["--url", url, "--token-file", os.path.join(tmp, "token"),
+                                    "/v1/rigid/inertia", "-"], input=json.dumps(CUBE),
+                             capture_output=True, text=True, timeout=60, env=cenv)
+        check("mechd-client ... PATH - reads the request from stdin", out.returncode == 0
+              and '"principal"' in out.stdout, repr((out.returncode, out.stderr[-200:])))
+        out = subprocess.run(cli + ["--url", url, "/v1/rigid/inertia", "@" + req],
+                             capture_output=True, text=True, timeout=60, env=cenv)
+        check("mechd-client without the token: exit 1 and the 401 problem printed",
+              out.returncode == 1 and "/problems/unauthorized" in out.stdout,
+              repr((out.returncode, out.stdout[:200])))
     finally:
         stop_mechd(proc)
         shutil.rmtree(tmp, ignore_errors=True)
@@ -331,6 +369,124 @@ def test_retries(mechd, url):
         f.stop()
 
 
+def test_cli_and_client(mechd, url):
+    """--help, the context manager's connection reuse, Timeout."""
+    cli = [sys.executable, "-m", "mechd"]
+    env = dict(os.environ, PYTHONPATH=os.path.dirname(os.path.dirname(mechd.__file__)))
+    out = subprocess.run(cli + ["--help"], capture_output=True, text=True, timeout=60, env=env)
+    check("mechd-client --help: usage with --url and --token-file, exit 0, no request sent",
+          out.returncode == 0 and "--url" in out.stdout and "--token-file" in out.stdout
+          and "127.0.0.1:8080--help" not in out.stdout + out.stderr, out.stdout[:300] + out.stderr[-300:])
+    out = subprocess.run(cli + ["--url", "http://127.0.0.1:1", "/v1"], capture_output=True, text=True,
+                         timeout=60, env=env)
+    check("mechd-client with no server: exit 3 and a message on stderr",
+          out.returncode == 3 and "mechd-client:" in out.stderr, repr((out.returncode, out.stderr[-200:])))
+    with mechd.Client(url, token="") as c:
+        c.rigid_inertia(CUBE)
+        s1 = c._local.conn.sock.getsockname()
+        c.rigid_inertia(CUBE)
+        s2 = c._local.conn.sock.getsockname()
+        conn = c._local.conn
+    check("Client as a context manager reuses one connection for two requests (same local port)",
+          s1 == s2, repr((s1, s2)))
+    check("... and closes it at the end of the with block", conn.sock is None, repr(conn.sock))
+    # A server that accepts and never answers: Timeout, under ConnectionFailed and MechdError,
+    # not retried (one connection), after about the timeout.
+    lsock = socket.socket()
+    lsock.bind(("127.0.0.1", 0))
+    lsock.listen(8)
+    accepted = []
+
+    def hold():
+        while True:
+            try:
+                cs, _ = lsock.accept()
+            except OSError:
+                return
+            accepted.append(cs)
+
+    threading.Thread(target=hold, daemon=True).start()
+    t0 = time.monotonic()
+    try:
+        mechd.Client("http://127.0.0.1:%d" % lsock.getsockname()[1], timeout=0.5, retries=3,
+                     token="").rigid_inertia(CUBE)
+        e = None
+    except mechd.MechdError as x:
+        e = x
+    dt = time.monotonic() - t0
+    check("no answer within timeout=0.5 s: mechd.Timeout (a ConnectionFailed, a MechdError), "
+          "not retried", isinstance(e, mechd.Timeout) and isinstance(e, mechd.ConnectionFailed)
+          and len(accepted) == 1 and dt < 10, repr((e, len(accepted), dt)))
+    lsock.close()
+    for cs in accepted:
+        cs.close()
+
+
+def test_wheel(tmp):
+    """The wheel of `make dist`, built with the standard library, installed with
+    pip --no-index into a venv that has no setuptools."""
+    sys.path.insert(0, SRC)
+    import mechd_build
+    sys.path.remove(SRC)
+    out_dir = os.path.join(tmp, "dist")
+    name = mechd_build.build_wheel(out_dir)
+    whl = os.path.join(out_dir, name)
+    import zipfile
+    import hashlib
+    import base64
+    with zipfile.ZipFile(whl) as z:
+        names = z.namelist()
+        rec = z.read([n for n in names if n.endswith(".dist-info/RECORD")][0]).decode().splitlines()
+        bad = []
+        for line in rec:
+            fn, h, size = line.rsplit(",", 2)
+            if not h:
+                continue
+            data = z.read(fn)
+            want = "sha256=" + base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+            if h != want or int(size) != len(data):
+                bad.append(fn)
+        wheel_meta = z.read([n for n in names if n.endswith(".dist-info/WHEEL")][0]).decode()
+    check("the wheel is pure (py3-none-any) with mechd/__init__.py, __main__.py, py.typed, "
+          "entry points", name.endswith("-py3-none-any.whl") and "Root-Is-Purelib: true" in wheel_meta
+          and {"mechd/__init__.py", "mechd/__main__.py", "mechd/py.typed"} <= set(names)
+          and any(n.endswith("entry_points.txt") for n in names), repr(names))
+    check("its RECORD holds the right sha256 and size of every file", not bad and len(rec) == len(names),
+          repr(bad))
+    again = os.path.join(tmp, "dist2", mechd_build.build_wheel(os.path.join(tmp, "dist2")))
+    check("building it twice gives the same bytes (fixed timestamps)",
+          open(whl, "rb").read() == open(again, "rb").read())
+    import ast
+    try:
+        for f in ("mechd.py", "mechd_build.py"):
+            ast.parse(open(os.path.join(SRC, f)).read(), feature_version=(3, 8))
+        syntax = True
+    except SyntaxError as e:
+        syntax = e
+    check("mechd.py and its build backend are Python 3.8 syntax", syntax is True, repr(syntax))
+    venv = os.path.join(tmp, "venv")
+    out = subprocess.run([sys.executable, "-m", "venv", venv], capture_output=True, text=True, timeout=240)
+    if not check("python3 -m venv works", out.returncode == 0, out.stderr[-300:]):
+        return
+    py = os.path.join(venv, "bin", "python")
+    subprocess.run([py, "-m", "pip", "uninstall", "-q", "-y", "setuptools", "wheel"],
+                   capture_output=True, timeout=240)
+    out = subprocess.run([py, "-m", "pip", "install", "--no-index", "--disable-pip-version-check", whl],
+                         capture_output=True, text=True, timeout=240)
+    ok = subprocess.run([py, "-c", "import setuptools"], capture_output=True).returncode != 0
+    check("pip install --no-index dist/*.whl in a venv without setuptools", out.returncode == 0 and ok,
+          out.stdout[-300:] + out.stderr[-300:])
+    out = subprocess.run([py, "-c", "import mechd, os; print(mechd.__version__, "
+                          "os.path.exists(os.path.join(os.path.dirname(mechd.__file__), 'py.typed')))"],
+                         capture_output=True, text=True, timeout=60)
+    check("the installed wheel imports, with __version__ and py.typed",
+          out.returncode == 0 and out.stdout.split() == [mechd_build.version(), "True"], out.stdout + out.stderr)
+    out = subprocess.run([os.path.join(venv, "bin", "mechd-client"), "--version"], capture_output=True,
+                         text=True, timeout=60)
+    check("the wheel's mechd-client command runs", out.returncode == 0 and mechd_build.version() in out.stdout,
+          out.stdout + out.stderr)
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix="mechd-pip-")
     proc, port = start_mechd(MECHD, ["--deadline-ms", "300000"], stderr=subprocess.DEVNULL)
@@ -346,7 +502,9 @@ def main():
         test_catalog_methods(mechd, catalog, url)
         test_named_and_problems(mechd, url)
         test_retries(mechd, url)
+        test_cli_and_client(mechd, url)
         test_token(mechd)
+        test_wheel(tmp)
     finally:
         stop_mechd(proc)
         shutil.rmtree(tmp, ignore_errors=True)

@@ -7,7 +7,7 @@
  *
  * The error is that of the answer's measured quantities: the swing period
  * (relative) and the precession rate (relative to W). Model (measured
- * 2026-11-27, bench/bench_calibrate_chooser --pendulum: l = 67 m, latitudes
+ * 2026-11-27, bench/bench_calibrate_chooser.c --pendulum: l = 67 m, latitudes
  * 32 .. 80 deg, amplitudes 3 .. 30 deg, 100 and 1000 swings, against
  * rattle_yoshida4 at 12800 steps per swing):
  *   error = C_p (2 pi / n)^p (1 + 3 alpha^2),  n = steps per swing,

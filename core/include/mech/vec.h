@@ -43,6 +43,30 @@ static inline double mech_vec3_norm(struct mech_vec3 a)
 }
 static inline int mech_vec3_isfinite(struct mech_vec3 a)
 { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+/* Unit vector along a: a scaled by 1/|a|. a must be non-zero and finite (a
+ * zero or non-finite a gives a non-finite result); for a vector that may be
+ * zero, tiny or huge use mech_vec3_unit_checked. */
+static inline struct mech_vec3 mech_vec3_unit(struct mech_vec3 a)
+{ return mech_vec3_scale(a, 1.0 / mech_vec3_norm(a)); }
+
+/* Unit vector along any v: divided first by max|v_i| so that no square
+ * overflows or underflows, then by the norm of that. Divisions, not products
+ * with a reciprocal, so each component is correctly rounded: the Doppler
+ * factor along the line of flight at gamma = 1e15
+ * (tests/core/relativity/test_doppler.c) is right only in this form.
+ * Returns 1 and sets *u, or 0 (leaving *u untouched) when v is zero or not
+ * finite. */
+static inline int mech_vec3_unit_checked(struct mech_vec3 v, struct mech_vec3 *u)
+{
+    if (!mech_vec3_isfinite(v)) return 0;
+    const double m = fmax(fabs(v.x), fmax(fabs(v.y), fabs(v.z)));
+    if (m == 0) return 0;
+    const struct mech_vec3 s = mech_vec3_make(v.x / m, v.y / m, v.z / m);
+    const double len = mech_vec3_norm(s);
+    *u = mech_vec3_make(s.x / len, s.y / len, s.z / len);
+    return 1;
+}
 static inline double mech_vec3_get(struct mech_vec3 a, int i)
 { return i == 0 ? a.x : (i == 1 ? a.y : a.z); }
 

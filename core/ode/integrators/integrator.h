@@ -112,23 +112,31 @@ struct mech_integrator {
 extern const struct mech_integrator *const mech_integrator_table[];
 extern const size_t mech_integrator_count;
 
-/* Descriptors, one per file. */
-extern const struct mech_integrator mech_integrator_rk8pd; /* gsl_rk.c */
-extern const struct mech_integrator mech_integrator_rkck;  /* gsl_rk.c */
-extern const struct mech_integrator mech_integrator_rkf45; /* gsl_rk.c */
-extern const struct mech_integrator mech_integrator_rk4;   /* rk4.c */
-extern const struct mech_integrator mech_integrator_verlet;/* verlet.c */
-extern const struct mech_integrator mech_integrator_euler;            /* euler.c */
-extern const struct mech_integrator mech_integrator_symplectic_euler; /* symplectic_euler.c */
-extern const struct mech_integrator mech_integrator_yoshida4;         /* yoshida.c */
-extern const struct mech_integrator mech_integrator_yoshida6;         /* yoshida.c */
-extern const struct mech_integrator mech_integrator_gauss4;           /* gauss_legendre.c */
-extern const struct mech_integrator mech_integrator_gauss6;           /* gauss_legendre.c */
-extern const struct mech_integrator mech_integrator_boris;            /* boris.c */
-extern const struct mech_integrator mech_integrator_radau15;          /* radau15.c */
-extern const struct mech_integrator mech_integrator_msbdf;            /* gsl_msbdf.c */
-extern const struct mech_integrator mech_integrator_wisdom_holman;    /* wisdom_holman.c */
-extern const struct mech_integrator mech_integrator_wisdom_holman_corrected; /* wisdom_holman.c */
+/* Every method, in catalog order (adaptive first, then fixed step), with the
+ * file that defines its descriptor mech_integrator_<name>: the one list. It
+ * declares the descriptors here and fills registry.c's table, so a method is
+ * added by its file and one line here. */
+#define MECH_INTEGRATOR_LIST(X)                                                                 \
+    X(rk8pd)                    /* gsl_rk.c */                                                  \
+    X(rkck)                     /* gsl_rk.c */                                                  \
+    X(rkf45)                    /* gsl_rk.c */                                                  \
+    X(radau15)                  /* radau15.c */                                                 \
+    X(msbdf)                    /* gsl_msbdf.c */                                               \
+    X(euler)                    /* euler.c */                                                   \
+    X(symplectic_euler)         /* symplectic_euler.c */                                        \
+    X(rk4)                      /* rk4.c */                                                     \
+    X(verlet)                   /* verlet.c */                                                  \
+    X(yoshida4)                 /* yoshida.c */                                                 \
+    X(yoshida6)                 /* yoshida.c */                                                 \
+    X(gauss4)                   /* gauss_legendre.c */                                          \
+    X(gauss6)                   /* gauss_legendre.c */                                          \
+    X(boris)                    /* boris.c */                                                   \
+    X(wisdom_holman)            /* wisdom_holman.c */                                           \
+    X(wisdom_holman_corrected)  /* wisdom_holman.c */
+
+#define MECH_INTEGRATOR_DECLARE(name) extern const struct mech_integrator mech_integrator_##name;
+MECH_INTEGRATOR_LIST(MECH_INTEGRATOR_DECLARE)
+#undef MECH_INTEGRATOR_DECLARE
 
 /* Evaluate the first-order right-hand side, counting one evaluation and
  * checking the result is finite (MECH_ENUMERIC otherwise). */

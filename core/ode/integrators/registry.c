@@ -1,31 +1,17 @@
 /* integrators/registry.c — the const table of every ODE method libmech
  * offers, in catalog order (a const table: no run-time registration). The API
  * catalog and the README's method table come from these descriptors. Add a
- * method by writing its file and one line here. */
+ * method by writing its file and one line in MECH_INTEGRATOR_LIST
+ * (integrator.h). */
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
 
+#define MECH_INTEGRATOR_ENTRY(name) &mech_integrator_##name,
 const struct mech_integrator *const mech_integrator_table[] = {
-    /* adaptive */
-    &mech_integrator_rk8pd,
-    &mech_integrator_rkck,
-    &mech_integrator_rkf45,
-    &mech_integrator_radau15,
-    &mech_integrator_msbdf,
-    /* fixed step */
-    &mech_integrator_euler,
-    &mech_integrator_symplectic_euler,
-    &mech_integrator_rk4,
-    &mech_integrator_verlet,
-    &mech_integrator_yoshida4,
-    &mech_integrator_yoshida6,
-    &mech_integrator_gauss4,
-    &mech_integrator_gauss6,
-    &mech_integrator_boris,
-    &mech_integrator_wisdom_holman,
-    &mech_integrator_wisdom_holman_corrected,
+    MECH_INTEGRATOR_LIST(MECH_INTEGRATOR_ENTRY)
 };
+#undef MECH_INTEGRATOR_ENTRY
 const size_t mech_integrator_count = sizeof mech_integrator_table / sizeof mech_integrator_table[0];
 
 const struct mech_integrator *mech_ode_method_find(const char *name)

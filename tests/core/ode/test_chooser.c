@@ -272,7 +272,7 @@ static void test_cost_over_eccentricity(void)
 
 /* Wisdom-Holman's prediction uses the scene's perturbation (core/frames/chooser_orbit.c,
  * predict_wisdom_holman): Kepler e = 0.5 and 0.9 with a tide of gm3 =
- * eps D^3 / 2 at D = 20 (bench/bench_wisdom_holman's scene), 100 orbits.
+ * eps D^3 / 2 at D = 20 (bench/bench_wisdom_holman.c's scene), 100 orbits.
  * The profile's eps is the tide at distance a = 1 on the x axis, exactly
  * gm3 (1/19^2 - 1/20^2) = 1.0803 eps; the splitting run at the candidate's
  * step errs within the stated factors of its prediction (against rk8pd at

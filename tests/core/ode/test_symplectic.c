@@ -27,7 +27,7 @@
  *     integrator/dt; budgets (steps, deadline, cancel) stop runaway runs.
  *
  * Sized to run in a few seconds (well under a minute with ASan+UBSan): the
- * 1e5-orbit figures belong to bench/workprecision.
+ * 1e5-orbit figures belong to bench/bench_workprecision.c.
  */
 #include <float.h>
 #include <gsl/gsl_errno.h>
