@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "integrator_block.h"
+#include "trajectory_relativity.h"
 #include "mech/reference.h"
 
 static int axis_of(const char *s) { return s[0] - 'x'; }
@@ -40,6 +41,7 @@ static void traj_block_read(struct api_call *c, struct api_traj_request *rq, con
     rq->accuracy = NULL;
     memset(&rq->choice, 0, sizeof rq->choice);
     q->model_target = api_traj_block_target(in);
+    rq->model_target = q->model_target;
     const char *method = in ? api_string(in, "method", NULL) : NULL;
     if (method) {
         q->by_accuracy = 0;
@@ -214,6 +216,7 @@ int api_traj_request_parse(struct api_call *c, const json_t *body, const char *p
                             : strcmp(d, "increasing") == 0 ? MECH_STOP_INCREASING
                                                            : MECH_STOP_EITHER;
     }
+    if (!api_traj_relativity_parse(c, body, prefix, rq)) return 0;
     /* "auto" and the integrator block: one pass of core's pipeline (a dry run
      * integrates nothing: "auto" then keeps every applicable term) */
     char ptr[64];

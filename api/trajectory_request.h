@@ -32,6 +32,14 @@ struct api_traj_request {
     /* "fictitious": "auto" */
     int auto_model;                       /* 1: the terms were chosen by the estimate */
     struct mech_trajectory_model model;   /* its evidence (when auto_model) */
+    double model_target;     /* the relative accuracy the model is chosen for */
+    /* "relativity" (trajectory_relativity.h) */
+    int rel_auto;                         /* 1: "auto" (the default) */
+    unsigned rel_on, rel_off;             /* MECH_RELATIVITY_* forced in / out */
+    struct mech_relativity_model rel_model; /* the decision (rel_model.judged: made) */
+    int rel_rerun;                        /* 1: the answer is a second run */
+    const char *rel_first_method;         /* the first run's method (static) */
+    struct mech_ode_stats rel_first_stats;
 };
 
 /* The relative accuracy an integrator block asks for (NULL: balanced): a

@@ -856,6 +856,32 @@ class _Operations:
         """
         return self._operation('/v1/relativity/fields', body, (('E', E), ('B', B), ('velocity', velocity), ('units', units), ('cost', cost)))
 
+    def relativity_charge_in_fields(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, charge: Optional[float] = None, E: Optional[List[float]] = None, B: Optional[List[float]] = None, force: Optional[List[float]] = None, position: Optional[List[float]] = None, velocity: Optional[Dict[str, Any]] = None, proper_velocity: Optional[List[float]] = None, times: Optional[List[float]] = None, proper_times: Optional[List[float]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """A charge in uniform E and B: the frame where they are parallel or one vanishes, the helix or hyperbolic motion there, and the state at lab or proper times
+
+        POST /v1/relativity/charge-in-fields. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass (required): rest mass m, kg
+            charge (required): charge q, C
+            E: electric field, V/m; default 0
+            B: magnetic field, T; default 0
+            force: a constant extra force, N (e.g. m g): an electric field F/q; default 0
+            position: position at t = 0, m; default 0
+            velocity: a velocity as exactly one of four forms; give the one that carries the precision
+                    you have (near c: rapidity, gamma or one_minus_beta)
+            proper_velocity: u = gamma v at t = 0, m/s (instead of velocity); default 0
+            times: lab (coordinate) times since the start, s; default []
+            proper_times: proper times since the start, s; default []
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/charge-in-fields', body, (('mass', mass), ('charge', charge), ('E', E), ('B', B), ('force', force), ('position', position), ('velocity', velocity), ('proper_velocity', proper_velocity), ('times', times), ('proper_times', proper_times), ('cost', cost)))
+
     def relativity_kinematics_invariant_mass(self, body: Optional[Dict[str, Any]] = None, *, energy_unit: Optional[str] = None, momenta: Optional[List[Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Invariant mass and centre-of-momentum velocity of a set of 4-momenta or particles
 
@@ -1252,7 +1278,7 @@ class _Operations:
         """
         return self._operation('/v1/continuum/rod', body, (('length', length), ('density', density), ('youngs_modulus', youngs_modulus), ('section', section), ('ends', ends), ('shear_modulus', shear_modulus), ('poisson_ratio', poisson_ratio), ('modes', modes), ('cost', cost)))
 
-    def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def trajectory(self, body: Optional[Dict[str, Any]] = None, *, particle: Optional[Dict[str, Any]] = None, frame: Optional[Any] = None, forces: Optional[List[Any]] = None, fictitious: Optional[Any] = None, relativity: Optional[Any] = None, t_end: Optional[float] = None, samples: Optional[int] = None, dry_run: Optional[bool] = None, integrator: Optional[Any] = None, error_estimate: Optional[bool] = None, stop: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Integrate a particle in an inertial, rotating or Earth frame, with model terms and drift
 
         POST /v1/trajectory. The request is `body` (a dict) and/or the keyword arguments below
@@ -1266,6 +1292,17 @@ class _Operations:
             forces: array of any (<= 32 items)
             fictitious: terms modelled in a rotating or earth frame: a list, or "auto" (model only the
                     terms that matter at the requested accuracy); default all four
+            relativity: relativistic corrections: "auto" (default: each is judged from the answer's run
+                    - its largest size eps relative to the acceleration it corrects, measured along the
+                    run, over the run's phase V T / L (L, V the largest |r| and |v|, T the duration):
+                    estimated effect eps (1 + V T / L), above target/10 (the safety of fictitious
+                    "auto") it is included and the scene runs again; a correction needed that cannot be
+                    modelled is a 422 naming it) or the list to model (an empty list: Newtonian).
+                    relativistic: dp/dt = F with p = gamma m v for every force, integrated in (r, u =
+                    gamma v), inertial frame, |v| < c; schwarzschild_1pn: the 1PN acceleration (GM/(c^2
+                    d^2)) [(4 GM/d - v^2) n + 4 (n.v) v] about the one central_gravity mass
+                    (Schwarzschild field, harmonic coordinates; periapsis advance 6 pi GM/(c^2 a (1 -
+                    e^2)) per orbit), inertial frame; not both at once; default "auto"
             t_end (required): s
             samples: integer >= 2, <= 100000; default 101
             dry_run: true: answer only diagnostics.selection (every candidate method with its predicted
@@ -1283,7 +1320,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/trajectory', body, (('particle', particle), ('frame', frame), ('forces', forces), ('fictitious', fictitious), ('t_end', t_end), ('samples', samples), ('dry_run', dry_run), ('integrator', integrator), ('error_estimate', error_estimate), ('stop', stop), ('cost', cost)))
+        return self._operation('/v1/trajectory', body, (('particle', particle), ('frame', frame), ('forces', forces), ('fictitious', fictitious), ('relativity', relativity), ('t_end', t_end), ('samples', samples), ('dry_run', dry_run), ('integrator', integrator), ('error_estimate', error_estimate), ('stop', stop), ('cost', cost)))
 
     def compare(self, body: Optional[Dict[str, Any]] = None, *, operation: Optional[str] = None, request: Optional[Dict[str, Any]] = None, runs: Optional[List[Any]] = None, sweep: Optional[Dict[str, Any]] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Run one scene with many integrator settings: error, drift, steps and CPU per run
@@ -1596,6 +1633,7 @@ OPERATIONS = {
     'relativity_worldline': '/v1/relativity/worldline',
     'relativity_doppler': '/v1/relativity/doppler',
     'relativity_fields': '/v1/relativity/fields',
+    'relativity_charge_in_fields': '/v1/relativity/charge-in-fields',
     'relativity_kinematics_invariant_mass': '/v1/relativity/kinematics/invariant-mass',
     'relativity_kinematics_decay': '/v1/relativity/kinematics/decay',
     'relativity_kinematics_compton': '/v1/relativity/kinematics/compton',

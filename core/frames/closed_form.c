@@ -24,7 +24,7 @@ struct cf_ctx {
      * gamma - 1 (the energy needs it without cancellation) */
     int relativistic;
     struct mech_vec3 last_u;
-    double last_gm1, last_gamma, rel_max, pn1_max;
+    double last_gm1, last_gamma, rel_max, pn1_max, rel_ratio, pn1_ratio;
     int evaluations;
     struct mech_error *err;
 };
@@ -416,10 +416,14 @@ static void cf_observe(struct cf_ctx *c, struct cf_inv *iv, double t, struct mec
             srel = asum * (beta * beta * g * g / (g + 1.0) + beta * beta) / g;
         }
         c->rel_max = fmax(c->rel_max, srel);
-        if (c->kepler)
-            c->pn1_max = fmax(c->pn1_max,
-                              mech_vec3_norm(mech_schwarzschild_1pn_accel(
-                                  c->ref.gm, mech_vec3_sub(r, c->ref.center), v)));
+        if (asum > 0.0) c->rel_ratio = fmax(c->rel_ratio, srel / asum);
+        if (c->kepler) {
+            const struct mech_vec3 d = mech_vec3_sub(r, c->ref.center);
+            const double pa = mech_vec3_norm(mech_schwarzschild_1pn_accel(c->ref.gm, d, v));
+            const double dn = mech_vec3_norm(d);
+            c->pn1_max = fmax(c->pn1_max, pa);
+            c->pn1_ratio = fmax(c->pn1_ratio, pa / (c->ref.gm / (dn * dn)));
+        }
     }
     if (c->relativistic) {
         /* the special-relativistic term's size: dv/dt - A with A = eps + v x Omega,
@@ -431,6 +435,8 @@ static void cf_observe(struct cf_ctx *c, struct cf_inv *iv, double t, struct mec
             mech_vec3_scale(A, -c->last_gm1 / g),
             mech_vec3_scale(v, -mech_vec3_dot(A, v) / (g * MECH_C * MECH_C)));
         c->rel_max = fmax(c->rel_max, mech_vec3_norm(d));
+        const double an = mech_vec3_norm(A);
+        if (an > 0.0) c->rel_ratio = fmax(c->rel_ratio, mech_vec3_norm(d) / an);
     }
 }
 
@@ -612,6 +618,8 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
         (struct mech_trajectory_term){"relativistic", -1, c.relativistic, c.rel_max};
     res->relativity_terms[1] =
         (struct mech_trajectory_term){"schwarzschild_1pn", -1, 0, c.pn1_max};
+    res->relativity_ratio[0] = c.rel_ratio;
+    res->relativity_ratio[1] = c.pn1_ratio;
     if (c.relativistic) {
         inv->note = "conserved: (gamma - 1) m c^2 + U (U includes -q E.r); evaluated on the "
                     "closed form at the samples";

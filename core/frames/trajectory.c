@@ -53,6 +53,7 @@ struct traj_ctx {
      * whose 1PN size is measured whether modelled or not */
     int special, pn1, pn1_index;
     double rel_max, pn1_max; /* largest |a| of the two corrections observed */
+    double rel_ratio, pn1_ratio; /* and relative to what they correct */
     struct mech_error *err;
     /* observer accumulators */
     double term_max[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
@@ -627,9 +628,17 @@ static enum mech_status traj_observe(double t, const double *y, void *params)
     }
     /* the relativistic corrections are sized whether modelled or not (an
      * inertial frame only: elsewhere they are not offered) */
-    if (!c->noninertial) {
-        c->rel_max = fmax(c->rel_max, special_correction(A, v, gamma, gm1));
-        if (c->pn1_index >= 0) c->pn1_max = fmax(c->pn1_max, mech_vec3_norm(pn1_accel(c, r, v)));
+    {
+        const double sc = special_correction(A, v, gamma, gm1), an = mech_vec3_norm(A);
+        c->rel_max = fmax(c->rel_max, sc);
+        if (an > 0.0) c->rel_ratio = fmax(c->rel_ratio, sc / an);
+    }
+    if (c->pn1_index >= 0) {
+        const double pa = mech_vec3_norm(pn1_accel(c, r, v));
+        const struct mech_force *f = &c->p->forces[c->pn1_index];
+        const double d = mech_vec3_norm(mech_vec3_sub(r, f->u.central_gravity.center));
+        c->pn1_max = fmax(c->pn1_max, pa);
+        c->pn1_ratio = fmax(c->pn1_ratio, pa / (f->u.central_gravity.gm / (d * d)));
     }
     /* Fictitious terms are sized even when omitted (model only what the
      * scene requires, and say what was left out, with its size); all four
@@ -1119,6 +1128,12 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
                               p->method ? p->method : "(null)");
     if (!budget) return mech_error_set(err, MECH_EINVAL, NULL, "no compute budget given");
     const struct mech_ode_method_info mi = mech_ode_method_describe(method);
+    if ((p->relativity & MECH_RELATIVITY_SPECIAL) && mi.second_order)
+        return mech_error_set(err, MECH_EINVAL, "integrator/method",
+                              "%s integrates q'' = a(q, v); special-relativistic dynamics are "
+                              "first order in (r, u = gamma v): use rk8pd, rkf45, rkck, gauss6 "
+                              "or choose by accuracy",
+                              mi.name);
     const char *no_split = NULL;
     if (mi.kepler_split && kepler_split_index(p, &no_split) < 0)
         return mech_error_set(err, MECH_EINVAL, "integrator/method",
@@ -1179,6 +1194,8 @@ enum mech_status mech_trajectory_integrate(const struct mech_trajectory_problem 
         (struct mech_trajectory_term){"relativistic", -1, c.special, c.rel_max};
     res->relativity_terms[1] =
         (struct mech_trajectory_term){"schwarzschild_1pn", -1, c.pn1, c.pn1_max};
+    res->relativity_ratio[0] = c.rel_ratio;
+    res->relativity_ratio[1] = c.pn1_ratio;
     res->relativistic = c.special;
     res->method = mi.name;
     res->stats = run.out.stats;

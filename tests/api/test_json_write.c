@@ -107,51 +107,80 @@ static int reads_back(const char *d, int P, int X, double x)
     return strtod(t, NULL) == x;
 }
 
-/* The contract's text of finite x from snprintf and strtod alone. */
-static void reference_text(double x, char *out)
+/* Whether some P-digit decimal reads back as a > 0: the nearest one
+ * (%.{P-1}e, correctly rounded) when it does, else the P-digit decimal on
+ * the other side of a; its digits in d (P of them) and the exponent of the
+ * first in *X. */
+static int candidate(double a, int P, char d[24], int *X)
+{
+    char t[64];
+    snprintf(t, sizeof t, "%.*e", P - 1, a); /* the nearest P-digit decimal */
+    int n = 0;
+    const char *e = strchr(t, 'e');
+    for (const char *q = t; q < e; q++)
+        if (*q >= '0' && *q <= '9') d[n++] = *q;
+    *X = atoi(e + 1);
+    const double y = strtod(t, NULL);
+    if (y == a) return 1;
+    int i = P - 1; /* the P-digit decimal on the other side of a */
+    if (y < a) {
+        while (i >= 0 && d[i] == '9') d[i--] = '0';
+        if (i < 0) { /* 99..9 + 1 = 10..0: one more digit, dropped */
+            d[0] = '1';
+            (*X)++;
+        } else {
+            d[i]++;
+        }
+    } else {
+        while (i >= 0 && d[i] == '0') d[i--] = '9';
+        d[i]--;
+        if (d[0] == '0') { /* 10..0 - 1 = 99..9, a digit fewer */
+            memmove(d, d + 1, (size_t)(P - 1));
+            d[P - 1] = '9';
+            (*X)--;
+        }
+    }
+    return reads_back(d, P, *X, a);
+}
+
+/* The contract's text of finite x from snprintf and strtod alone: the
+ * smallest P with a P-digit decimal that reads back (no shorter decimal
+ * does: one with fewer digits is also a (P-1)-digit decimal with zeros
+ * appended), that decimal, laid out. hint (the digit count of the text
+ * under test) is tried first: P = hint when no (hint-1)-digit decimal reads
+ * back and a hint-digit one does; otherwise every P from 1 is searched. */
+static void reference_text(double x, int hint, char *out)
 {
     if (x == 0) {
         strcpy(out, signbit(x) ? "-0.0" : "0.0");
         return;
     }
     const double a = fabs(x);
-    for (int P = 1; P <= 17; P++) {
-        char t[64], d[24];
-        snprintf(t, sizeof t, "%.*e", P - 1, a); /* the nearest P-digit decimal */
-        int n = 0;
-        const char *e = strchr(t, 'e');
-        for (const char *q = t; q < e; q++)
-            if (*q >= '0' && *q <= '9') d[n++] = *q;
-        int X = atoi(e + 1);
-        int ok = strtod(t, NULL) == a;
-        if (!ok) { /* the P-digit decimal on the other side of x */
-            const int up = strtod(t, NULL) < a;
-            int i = P - 1;
-            if (up) {
-                while (i >= 0 && d[i] == '9') d[i--] = '0';
-                if (i < 0) { /* 99..9 + 1 = 10..0: one more digit, dropped */
-                    d[0] = '1';
-                    X++;
-                } else {
-                    d[i]++;
-                }
-            } else {
-                while (i >= 0 && d[i] == '0') d[i--] = '9';
-                d[i]--;
-                if (d[0] == '0') { /* 10..0 - 1 = 99..9, a digit fewer */
-                    memmove(d, d + 1, (size_t)(P - 1));
-                    d[P - 1] = '9';
-                    X--;
-                }
-            }
-            ok = reads_back(d, P, X, a);
-        }
-        if (!ok) continue;
-        while (P > 1 && d[P - 1] == '0') P--;
-        layout(x < 0, d, P, X, out);
+    char d[24];
+    int X, P = 0;
+    if (hint >= 1 && hint <= 17 && (hint == 1 || !candidate(a, hint - 1, d, &X)) &&
+        candidate(a, hint, d, &X))
+        P = hint;
+    for (int k = 1; !P && k <= 17; k++)
+        if (candidate(a, k, d, &X)) P = k;
+    if (!P) {
+        strcpy(out, "(no text)");
         return;
     }
-    strcpy(out, "(no text)");
+    while (P > 1 && d[P - 1] == '0') P--;
+    layout(x < 0, d, P, X, out);
+}
+
+/* Significant digits of a number text (leading and trailing zeros not
+ * counted). */
+static int significant_digits(const char *t)
+{
+    char d[40];
+    int n = 0;
+    for (const char *q = t; *q && *q != 'e' && n < 39; q++)
+        if (*q >= '0' && *q <= '9' && (n || *q != '0')) d[n++] = *q;
+    while (n > 0 && d[n - 1] == '0') n--;
+    return n;
 }
 
 static long n_roundtrip, n_bad_roundtrip, n_notation_bad;
@@ -168,7 +197,7 @@ static void check_one(double x)
     ok = ok && *end == '\0' && bits_of(y) == bits_of(x);
     if (!ok && n_bad_roundtrip++ < 10)
         fprintf(stderr, "round trip: %a (%.17g) -> \"%s\" -> %a\n", x, x, buf, y);
-    reference_text(x, jt);
+    reference_text(x, significant_digits(buf), jt);
     if (strcmp(buf, jt) && n_notation_bad++ < 10)
         fprintf(stderr, "text: %a -> \"%s\", reference \"%s\"\n", x, buf, jt);
 }

@@ -114,6 +114,9 @@ struct mech_trajectory_result {
      * or beyond c; the 1PN term about the one central mass of an inertial scene, 0 when
      * it has none); both 0 in a non-inertial frame */
     struct mech_trajectory_term relativity_terms[MECH_TRAJECTORY_N_RELATIVITY];
+    /* and each one's largest size relative to the acceleration it corrects
+     * (relativistic: the forces' |F/m|; schwarzschild_1pn: gm/d^2), same points */
+    double relativity_ratio[MECH_TRAJECTORY_N_RELATIVITY];
     struct mech_trajectory_term terms[MECH_TRAJECTORY_MAX_FORCES + MECH_TRAJECTORY_N_FICTITIOUS];
     size_t n_terms;           /* n_forces + 4 (coriolis, centrifugal, euler, translational
                                  always listed) */
@@ -316,20 +319,21 @@ struct mech_relativity_model {
  * ([1e-15, 0.1]) from `run`, a finished answer of p (integrated or closed
  * form, with p->relativity as it was run: its relativity_terms hold each
  * correction's largest |a| along the run, measured whether modelled or not).
- * The rule is "fictitious": "auto"'s (mech_term_effect_estimate, same safety
- * MECH_TRAJECTORY_AUTO_SAFETY, T the run's duration, L and V its largest |r|
- * and |v|), with these accelerations:
- *   relativistic: the correction dv/dt - F/m of special relativity at the
- *     speed reached, (F/m)((gamma - 1) + ...)/gamma ~ 1.5 beta^2 |F/m| for
- *     slow particles, all of |F/m| when the Newtonian run reached c. Not
+ * Each correction's estimate: eps, its largest size relative to the
+ * acceleration it corrects, over the run's phase V T / L (T its duration,
+ * L and V its largest |r| and |v|: the radians of an orbit or gyration, ~2
+ * for a fall from rest), which a correction of relative size eps shifts by
+ * ~eps per radian: relative effect eps (1 + V T / L), included above
+ * target / MECH_TRAJECTORY_AUTO_SAFETY (the safety of "fictitious": "auto").
+ *   relativistic: dv/dt - F/m of p = gamma m v at the speed reached, against
+ *     the forces' |F/m| (~1.5 beta^2; 1 when the Newtonian run reached c). Not
  *     applicable when every force is central gravity (motion about masses is
  *     the 1PN term's) and not modellable outside an inertial frame;
- *   schwarzschild_1pn: |a_1PN| measured along the run about the one central
- *     mass of an inertial scene (for a Kepler closed form at least its value
- *     at the pericentre of the osculating orbit, which the samples may miss);
- *     with several central masses or a rotating frame, the bound
- *     sum_i |a_i| (4 gm_i / (c^2 d_i) + 5 beta^2), d_i = sqrt(gm_i / |a_i|),
- *     and not modellable.
+ *   schwarzschild_1pn: |a_1PN| / (gm/d^2) measured along the run about the one
+ *     central mass of an inertial scene (for a Kepler closed form at least its
+ *     value at the pericentre of the osculating orbit, which the samples may
+ *     miss); with several central masses or a rotating frame, the bound
+ *     4 gm / (c^2 d) + 5 beta^2, d = sqrt(gm / max gm/d^2), and not modellable.
  * A term in forced_on is included, in forced_off left out (each with its
  * estimate); otherwise included iff its estimate exceeds target / safety.
  * m->relativity is the mask to run with (== p->relativity: nothing to redo).
