@@ -19,8 +19,8 @@ a second one fills the queue, so any request handed to the pool is refused
 - quick requests are counted in /metrics (route and status labels, latency
   histogram count) and logged, one line each, like pooled ones;
 - malformed and invalid quick requests get their 400/422 problem+json;
-- the measured guard: with --inline-max-us 1 the first boost runs inline
-  (no measurement yet), the next is predicted slower than 1 µs and goes to
+- the measured guard: with --inline-max-us 1 the first boost of 2000
+  events runs inline (no measurement yet), the next is predicted slower than 1 µs and goes to
   the full pool: 503, and so do the next 62, but the 64th predicted too slow
   runs inline as a probe that re-measures the route (the decision can
   recover); with --inline-max-us 0 every boost goes to the pool;
@@ -60,6 +60,12 @@ BOOST = json.dumps({"vectors": [1, 0, 0, 0], "velocity": {"beta": [0.6, 0, 0]}})
 BIG_N = 400
 BIG_VECTORS = [[1.0 + i, 0.5, 0.25, -0.125] for i in range(BIG_N)]
 BIG_BOOST = json.dumps({"vectors": BIG_VECTORS, "velocity": {"beta": [0.6, 0, 0]}}).encode()
+# The guard's boost: 2000 events, so its measured cost (~0.4 µs an event
+# read, boosted and written) is far above --inline-max-us 1 even with the
+# queue full (quick_fits_when_full allows SRV_QUICK_FULL_FACTOR = 16 times
+# the limit); a one-event boost now costs about 1 µs and would fit that.
+GUARD_BOOST = json.dumps({"vectors": [[1.0 + i, 0.5, 0.25, -0.125] for i in range(2000)],
+                          "velocity": {"beta": [0.6, 0, 0]}}).encode()
 
 
 def send(port, method, path, body=b"", timeout=30):
@@ -202,14 +208,14 @@ def test_guard():
         socks = []
         try:
             fill_pool(port, socks, "--inline-max-us %s" % limit)
-            sts = [call(port, "POST", "/v1/relativity/boost", BOOST)[0] for _ in range(2)]
+            sts = [call(port, "POST", "/v1/relativity/boost", GUARD_BOOST)[0] for _ in range(2)]
             check("--inline-max-us %s: %s (%s)" % (limit, what, expect), sts == expect, repr(sts))
             if limit == "1":
                 # The decision recovers: a route predicted too slow is still run
                 # inline, and re-measured, once in 64 such requests
                 # (SRV_QUICK_REPROBE), so the one above (too_slow #1) and the
                 # next 62 go to the full pool and the 64th runs inline: 200.
-                sts = [call(port, "POST", "/v1/relativity/boost", BOOST)[0] for _ in range(63)]
+                sts = [call(port, "POST", "/v1/relativity/boost", GUARD_BOOST)[0] for _ in range(63)]
                 check("--inline-max-us 1: 62 more boosts go to the full pool (503), the 64th predicted "
                       "too slow is a re-measuring probe run inline (200)",
                       sts == [503] * 62 + [200], repr(sts))
