@@ -348,6 +348,10 @@ static json_t *encode_answer(struct api_call *c, const struct mech_rigid_problem
                                                 "(diagnostics.reference): max |omega - exact| "
                                                 "/ |omega0| over the samples",
                                                 0));
+    json_t *ach = json_object_get(json_object_get(d, "selection"), "achieved");
+    if (ach) /* the schema's count: the run's own right-hand sides */
+        json_object_set_new_nocheck(ach, "evaluations",
+                                    json_integer((json_int_t)a->r.stats.rhs_evaluations));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_t *f = encode_flip(c, &a->r);
     if (f) json_object_set_new_nocheck(out, "flip", f);
