@@ -232,6 +232,16 @@ await lab('earth', async () => {
   close(Math.abs(await value('#fou-rate')), wsin, 2e-3, 'Foucault: measured rate within the Airy correction');
   await state('#can-form', 'done');
   check((await value('#can-right')) > 0, 'cannonball: deflected to the right in the northern hemisphere');
+  check(['coriolis', 'coriolis_centrifugal'].includes(await page.getAttribute('#fall-model-used', 'data-value')), 'falling object: the answer names the model auto solved');
+  // the textbooks' model asked for by name: the run solves r'' = g - 2 w x r' and names it; its exact
+  // landing (the linear equation's matrix exponential, mpmath) is 0.018618187559714791 m east
+  await page.selectOption('#fall-model', 'coriolis');
+  await page.evaluate(() => { delete document.querySelector('#fall-form').dataset.state; });
+  await page.click('#fall-submit');
+  await state('#fall-form', 'done');
+  check((await page.getAttribute('#fall-model-used', 'data-value')) === 'coriolis', 'falling object: the model chosen is the one solved and named');
+  close(await value('#fall-east'), 0.018618187559714791, 1e-6, 'falling object: Coriolis only, against the exact landing');
+  await page.selectOption('#fall-model', 'auto');
   await invalid('#fall-form', '#fall-height', -5, '#fall-submit', 'more than 0');
   await invalid('#can-form', '#can-lat', 95, '#can-submit', '90');
 });
