@@ -6,12 +6,12 @@
 
 #include "mech/constants.h"
 
-/* The legacy Moon was given by its mass, 7.342e22 kg; its GM is G times it. */
-#define LEGACY_MOON_MASS 7.342e22
-#define LEGACY_SUN_GM 1.32712440018e20
-#define MOON_RADIUS 1.7374e6   /* IAU WG on cartographic coordinates 2015, mean */
-#define SUN_RADIUS 6.957e8     /* IAU 2015 Resolution B3, nominal */
-#define EARTH_RADIUS MECH_EARTH_RADIUS_MEAN /* IUGG mean radius R1, 6371008.8 m */
+/* The legacy Moon was given by its mass; its GM is G times it. */
+#define LEGACY_MOON_MASS MECH_LEGACY_MOON_MASS
+#define LEGACY_SUN_GM MECH_LEGACY_SUN_GM
+#define MOON_RADIUS MECH_MOON_RADIUS
+#define SUN_RADIUS MECH_SUN_RADIUS
+#define EARTH_RADIUS MECH_EARTH_RADIUS_MEAN
 
 static const struct mech_named_body de440[] = {
     {"sun", MECH_SUN_GM, MECH_SUN_GM / MECH_GRAVITATIONAL_CONSTANT, SUN_RADIUS, MECH_AU,
