@@ -226,7 +226,7 @@ static void all_routes(void)
                           &unit) == 1);
     CHECK(kind == API_KIND_ANGLE && same_str(unit, "rad"));
 
-    /* some added later, read against their encoders (api/ops/*/*.c) */
+    /* some added later, read against their encoders (the handlers in api/ops/<domain>/) */
     CHECK(api_check_field("/v1/relativity/particle", "/lifetime/decay_length", &kind, &unit) == 1);
     CHECK(kind == API_KIND_NUMBER && same_str(unit, "m")); /* beta gamma c tau */
     CHECK(api_check_field("/v1/relativity/particle", "/mass", &kind, &unit) == 1);
