@@ -77,7 +77,11 @@ export default {
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'θ min'), num('top-thmin', a.nutation.theta_min, 'rad'),
         el('dt', {}, 'θ max'), num('top-thmax', a.nutation.theta_max, 'rad'),
-        el('dt', {}, 'mean precession'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
+        el('dt', {}, 'nutation period'), num('top-nut-period', a.nutation.period, 's'),
+        el('dt', {}, 'precession averaged over a nutation'), num('top-prec-avg', a.precession.nutation_averaged_rate, 'rad/s'),
+        el('dt', {}, 'mean precession (measured over the run)'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
+        el('dt', {}, 'steady precession rates at θ0 (slow, fast)'), el('dd', {id: 'top-steady'},
+          [a.precession.steady_precession_rate_slow, a.precession.steady_precession_rate_fast].map(v => typeof v === 'number' ? fmt(v, 5) : '—').join(', ') + ' rad/s'),
         el('dt', {}, 'sleeping top stable'), el('dd', {id: 'top-sleeping'}, String(a.sleeping_top.stable)),
         el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
       // notes (Lagrange Equations for Top with One Fixed Point): p_φ and p_ψ conserved, and the energy
