@@ -612,6 +612,21 @@ for (const width of [1280, 390]) {
     const thEnd = run.theta[run.theta.length - 1], dphi = run.phi[run.phi.length - 1] - run.phi[0];
     check(Math.abs(thEnd - 0.5) < 1e-6 && Math.abs(dphi / T - avg) < 1e-6 * avg,
       `${tag}: tops: after the nutation period T = ${T} s the integrated top is back at θ0 (${thEnd}) and has precessed at the averaged rate (${dphi / T} against ${avg} rad/s)`);
+    // the free body (I = 1, 2, 3 kg m², ω = (0.01, 1, 0.01) rad/s): ω drawn on it, T = ½ΣIₖωₖ² = 1.0002 J by axis; the sum
+    // stays level while the middle axis' share falls as the body flips
+    await page.waitForFunction(() => document.querySelector('#dz-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    const shares = await page.evaluate(async () => {
+      const s = document.querySelector('#dz-3d-box ~ .player [data-role=time]'), out = [];
+      for (let v = 0; v <= 1000; v += 20) {
+        s.value = String(v); s.dispatchEvent(new Event('input', {bubbles: true}));
+        out.push(JSON.parse(document.getElementById('dz-energy').dataset.parts));
+      }
+      return out;
+    });
+    const T0 = 0.5 * (1 * 1e-4 + 2 * 1 + 3 * 1e-4), sums = shares.map(p => p[0] + p[1] + p[2]);
+    const level = Math.max(...sums.map(x => Math.abs(x - T0))) / T0, low = Math.min(...shares.map(p => p[1])) / T0;
+    check(level < 1e-6 && low < 0.5 && /ω = [\d.]+ rad\/s/.test(await page.textContent('#dz-vectors')),
+      `${tag}: tops: the free body's energy by axis sums to ½ΣIω² = ${T0} J (within ${level.toExponential(1)}) while the middle axis' share falls to ${low.toFixed(3)} in the flip`);
     check(page.errors.length === 0, `${tag}: orbit vectors, tops: no script errors (${page.errors.join(' | ')})`);
   } catch (e) {
     check(false, `${tag}: orbit vectors: ${e.message.split('\n')[0]}`);

@@ -140,8 +140,11 @@ export default {
           a.degenerate ? [el('dt', {}, 'degenerate'), el('dd', {}, 'two or more modes share a frequency: any mix of them is a mode too')] : null,
           a.zero_modes ? [el('dt', {}, 'zero modes'), el('dd', {}, `${a.zero_modes} (the whole moves off at a steady speed)`)] : null,
           mo ? [el('dt', {}, 'energy'), num('osc-energy-total', mo.energy, 'J'),
-            el('dt', {}, 'modal amplitudes a_k'), el('dd', {id: 'osc-a', 'data-value': JSON.stringify(mo.modal_position)}, show(mo.modal_position.map(x => Number(x.toPrecision(5))))),
-            el('dt', {}, 'energy in each mode'), el('dd', {id: 'osc-mode-energy'}, mo.mode_energies.map(x => amount(x, 'J')).join(', '))] : null),
+            // round-off in a mode the start does not excite (10⁻¹⁷ beside 0.14) reads 0; data-value keeps the numbers
+            el('dt', {}, 'modal amplitudes a_k'), el('dd', {id: 'osc-a', 'data-value': JSON.stringify(mo.modal_position)},
+              show(mo.modal_position.map(x => (Math.abs(x) < 1e-12 * Math.max(...mo.modal_position.map(Math.abs)) ? 0 : Number(x.toPrecision(5)))))),
+            el('dt', {}, 'energy in each mode'), el('dd', {id: 'osc-mode-energy'},
+              mo.mode_energies.map(x => amount(Math.abs(x) < 1e-24 * Math.abs(mo.energy) ? 0 : x, 'J')).join(', '))] : null),
         el('p', {class: 'muted'}, 'Shapes are mass-normalised (vᵀMv = 1), their largest entry positive.'));
       teach(oscNotes, a, req);
       if (!mo || !mo.samples.length) { put(scene); put(energy); put(qplot); return; }
