@@ -688,7 +688,7 @@ for (const width of [1280, 390]) {
     await page.fill('#osc-masses', '1, foo, 1'); await page.fill('#osc-springs', '1, 1, 1, 1'); await page.fill('#osc-q', '0.1, 0, 0');
     await page.click('#osc-submit');
     await page.waitForSelector('main form[data-state=error]', {timeout: 20000});
-    await errorOnField(page, '#osc-masses', `${tag}: oscillations: a mass "foo"`, /mass/i);
+    await errorOnField(page, '#osc-masses', `${tag}: oscillations: a mass "foo"`, /“foo” \(mass 2\) is not a number/);
     await axe(page, `${tag}: oscillations`);
     check(page.errors.length === 0, `${tag}: oscillations: no script errors (${page.errors.join(' | ')})`);
   } catch (e) {

@@ -27,9 +27,16 @@ const fits = (ex) => ex.request && ex.request.system && ['spring_chain', 'double
 const NAMES = [['spring_chain', 'masses and springs in a line'], ['double_pendulum', 'double pendulum'],
   ['coupled_pendulums', 'two pendulums joined by a spring'], ['matrices', 'mass and stiffness matrices']];
 const COLORS = ['#c92a2a', '#1864ab', '#2b8a3e', '#a65300', '#862e9c', '#0b7285', '#5c940d', '#a61e4d', '#364fc7', '#495057', '#d9480f', '#087f5b'];
-// "1, 2 3" -> [1, 2, 3]; an entry that is not a number is sent as null (the server names it)
-const list = (s) => s.trim() === '' ? [] : s.trim().split(/[\s,]+/).map(x => (x === '' || !Number.isFinite(Number(x)) ? NaN : Number(x)));
-const matrix = (s) => s.trim() === '' ? [] : s.split(';').map(r => list(r));
+// "1, 2 3" -> [1, 2, 3]; an entry that is not a number is the lab's own error on that field, in words
+// (sent, it would come back as "null" at /…/1: "masses is empty" for "1, foo, 1")
+function list(s, pointer, what) {
+  const words = s.trim() === '' ? [] : s.trim().split(/[\s,]+/);
+  const bad = words.findIndex(x => !Number.isFinite(Number(x)));
+  if (bad >= 0) throw {problem: {title: 'Not a number', status: 422, errors: [{pointer,
+    detail: `“${words[bad].slice(0, 20)}” (${what} ${bad + 1}) is not a number: give numbers separated by commas.`}]}};
+  return words.map(Number);
+}
+const matrix = (s, pointer) => s.trim() === '' ? [] : s.split(';').map((r, i) => list(r, pointer, `row ${i + 1}, entry`));
 const show = (a) => a.map(x => fmt(x)).join(', ');
 const showM = (m) => m.map(r => show(r)).join('; ');
 
@@ -102,15 +109,18 @@ export default {
 
     const build = () => {
       const s = sys.input.value, system = {name: s};
-      if (s === 'spring_chain') { system.masses = list(f.masses.input.value); system.springs = list(f.springs.input.value); system.walls = f.walls.input.value; }
+      if (s === 'spring_chain') {
+        system.masses = list(f.masses.input.value, '/system/masses', 'mass'); system.springs = list(f.springs.input.value, '/system/springs', 'spring');
+        system.walls = f.walls.input.value;
+      }
       if (s === 'double_pendulum') for (const k of ['m1', 'm2', 'l1', 'l2']) system[k] = val(f[k].input);
       if (s === 'coupled_pendulums') {
         for (const k of ['mass', 'length', 'k']) system[k] = val(f[k].input);
         if (f.attach.input.value.trim() !== '') system.attach = val(f.attach.input);
       }
-      if (s === 'matrices') { system.mass_matrix = matrix(f.M.input.value); system.stiffness_matrix = matrix(f.K.input.value); }
-      const T = val(tEnd.input), initial = {q: list(q0.input.value)};
-      if (qd0.input.value.trim() !== '') initial.qdot = list(qd0.input.value);
+      if (s === 'matrices') { system.mass_matrix = matrix(f.M.input.value, '/system/mass_matrix'); system.stiffness_matrix = matrix(f.K.input.value, '/system/stiffness_matrix'); }
+      const T = val(tEnd.input), initial = {q: list(q0.input.value, '/initial/q', 'entry')};
+      if (qd0.input.value.trim() !== '') initial.qdot = list(qd0.input.value, '/initial/qdot', 'entry');
       initial.times = Array.from({length: SAMPLES}, (_, i) => (i === SAMPLES - 1 ? T : T * i / (SAMPLES - 1)));
       return {system, initial};
     };

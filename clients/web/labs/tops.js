@@ -66,7 +66,8 @@ export default {
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
       vecNote, el('h3', {}, 'Energy'), topEnergy,
       el('p', {class: 'muted'}, 'The notes\' E′ = E − ½I₃ω₃² (the spin\'s own energy is constant and left out): as the top dips, Mgh cos θ falls and the wobble\'s kinetic energy rises by as much; the sum stays level.'),
-      el('h3', {}, 'θ(t)'), theta);
+      el('h3', {}, 'θ(t)'), theta,
+      el('p', {class: 'muted'}, 'Dotted: whole nutation periods T from the release (the closed form 4K(k)/√(β(u₃ − u₁))): θ is back at its start at each.'));
     const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
@@ -103,7 +104,14 @@ export default {
       let Xs = null, tCur = 0;
       linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ', t: a.t}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
         marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
-          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; },
+        // whole nutation periods from the release (the closed form's T): released at a turning point, θ is back there at each
+        ({X, top, bottom}) => {
+          const T = a.nutation.period, g = svg('g', {'data-role': 'nutation-periods'}), end = a.t[a.t.length - 1];
+          if (typeof T === 'number' && T > 0 && end / T <= 40)
+            for (let n = 1; n * T <= end; n++) add(g, svg('line', {x1: X(n * T), x2: X(n * T), y1: top, y2: bottom, stroke: '#a65300', 'stroke-dasharray': '2 4'}));
+          return g;
+        }]});
       // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
       world.clear();
       world.add(sceneAxes(Lx * 0.9));
