@@ -665,6 +665,25 @@ for (const width of [1280, 390]) {
     const mid = await page.$$eval('#osc-scene rect[data-x]', (r) => r.map(x => Number(x.dataset.x)));
     check(Math.abs(am[0]) < 1e-12 * Math.abs(am[1]) && Math.abs(am[2]) < 1e-12 * Math.abs(am[1]) && Math.abs(mid[1]) < 1e-12 && Math.abs(mid[0] + mid[2]) < 1e-12,
       `${tag}: oscillations: started in mode 2, a_k = (${am}), the middle mass still (${mid[1]}) and the outer ones opposite (${mid[0]}, ${mid[2]})`);
+    // the start dragged: the first mass's ring moved right by pointer, the middle one's by ArrowUp (0.01 m); the energy
+    // answered is ½qᵀKq with K = [[2, −1, 0], [−1, 2, −1], [0, −1, 2]] N/m for the new start, at rest
+    const qNow = async () => (await page.inputValue('#osc-q')).split(',').map(Number);
+    const Eof = (q) => 0.5 * (2 * q[0] * q[0] + 2 * q[1] * q[1] + 2 * q[2] * q[2] - 2 * q[0] * q[1] - 2 * q[1] * q[2]);
+    check(await sliderOk(page, '#osc-start-q0'), `${tag}: oscillations: each start is a slider with its value in words`);
+    const before = await qNow();
+    // (sliderOk and drag are defined with the handles' section below: hoisted functions)
+    await drag(page, '#osc-start-q0', 40, 0);
+    await page.waitForFunction((q) => document.getElementById('osc-q').value !== q, before.join(', '), {timeout: 10000});
+    await settled(page); await page.waitForTimeout(400); await settled(page);
+    let qs = await qNow();
+    check(qs[0] > before[0] && Math.abs(await value(page, '#osc-energy-total') - Eof(qs)) < 1e-14,
+      `${tag}: oscillations: the first mass's start dragged to ${qs[0]} m: E = ½qᵀKq = ${Eof(qs)} J`);
+    await page.focus('#osc-start-q1'); await page.keyboard.press('ArrowUp');
+    await page.waitForFunction(() => Number(document.getElementById('osc-q').value.split(',')[1]) === 0.01, null, {timeout: 10000});
+    await settled(page); await page.waitForTimeout(400); await settled(page);
+    qs = await qNow();
+    check(Math.abs(await value(page, '#osc-energy-total') - Eof(qs)) < 1e-14, `${tag}: oscillations: ArrowUp starts the middle mass at 0.01 m: E = ${Eof(qs)} J`);
+    check(/x1 starts at 0\.01 m/.test(await page.getAttribute('#osc-start-q1', 'aria-valuetext')), `${tag}: oscillations: the handle says where it starts`);
     await page.locator('#osc-scene').scrollIntoViewIfNeeded();
     await page.screenshot({path: path.join(shots, `sim-${tag}-oscillations.png`)});
     // every worked example computes, clean; the double pendulum's ω² = (2 ∓ √2) g/l

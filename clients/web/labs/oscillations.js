@@ -8,6 +8,7 @@
 import {el, svg, put, add, field, val, fmt, num, amount, labLayout, runner, examplePicker, linePlot, notesBox, relWords} from '../lib.js';
 import {player, lerp} from '../anim.js';
 import {energyBars} from '../draw.js';
+import {handle, rerun} from '../handles.js';
 
 const OP = '/v1/coupled-oscillations';
 const SAMPLES = 241;
@@ -95,7 +96,8 @@ export default {
     el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'osc-submit'}, 'Set it moving')));
     showGroup();
 
-    const scene = svg('svg', {class: 'plot', id: 'osc-scene', role: 'img', 'aria-label': 'the system moving'});
+    // a group: the start of each coordinate is a handle in it (an image's children would be hidden from assistive technology)
+    const scene = svg('svg', {class: 'plot', id: 'osc-scene', role: 'group', 'aria-label': 'the system moving; drag a ring to set where it starts'});
     const energy = svg('svg', {class: 'plot dial energy', id: 'osc-energy', role: 'img', 'aria-label': 'energy bars'});
     const qplot = svg('svg', {class: 'plot', id: 'osc-q-plot', role: 'img', 'aria-label': 'the coordinates against time'});
     const sceneNote = el('p', {class: 'muted', id: 'osc-scene-note'});
@@ -124,6 +126,8 @@ export default {
       initial.times = Array.from({length: SAMPLES}, (_, i) => (i === SAMPLES - 1 ? T : T * i / (SAMPLES - 1)));
       return {system, initial};
     };
+    let dragBig = null;
+    const again = rerun(() => run(), 200);
     const run = runner(L, OP, build, (a, req) => {
       const modes = a.modes, n = a.coordinates.length, mo = a.motion;
       const startIn = (k) => { // q(0) along mode k, at the amplitude the start had (or 0.1), at rest
@@ -163,8 +167,14 @@ export default {
       const E0 = quad(M, S[0].qdot) + quad(K, S[0].q);
       linePlot(qplot, a.coordinates.map((c, i) => ({points: S.map(s => [s.t, s.q[i]]), label: c, t: ts, color: COLORS[i % COLORS.length]})),
         {xlabel: 't [s]', ylabel: a.system === 'spring_chain' ? 'x [m]' : a.system === 'matrices' ? 'q' : 'θ [rad]', name: 'oscillations-q', legend: 'below'});
-      const drawScene = sceneFor(scene, a, S);
+      const drawScene = sceneFor(scene, a, S, dragBig, req.system);
       put(sceneNote, drawScene.note);
+      // the start, dragged: q(0) in the form, asked again (the scale kept while the handle is held)
+      startHandles(scene, a, drawScene, req.initial.q, (i, v, done) => {
+        const q = req.initial.q.slice(); q[i] = v;
+        q0.input.value = show(q);
+        dragBig = done ? null : drawScene.big; again(done);
+      });
       play.set(ts, (i, fr) => {
         const j = Math.min(i + 1, S.length - 1), q = lerp(S[i].q, S[j].q, fr), qd = lerp(S[i].qdot, S[j].qdot, fr);
         drawScene.at(q);
@@ -236,10 +246,13 @@ function teach(box, a, req) {
 
 // The system drawn at q: a chain (blocks and zig-zag springs between walls, the displacements drawn large,
 // the factor said), pendulums (rods and bobs, the angles drawn true unless tiny), or bars for matrices.
-function sceneFor(root, a, S) {
+// Each returns {note, at(q), place(i, q) -> [x, y], value(i, x, y, q) -> q_i}: where coordinate i's start handle
+// sits for the start q, and the value a handle dragged to (x, y) gives it (picture units). big: the scale
+// (the largest |q| of the run), kept while a handle is dragged.
+function sceneFor(root, a, S, keep, sysReq) {
   const W = 640, H = 230, n = a.coordinates.length, sys = a.system;
   put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
-  const big = Math.max(...S.flatMap(s => s.q.map(Math.abs)), 1e-300);
+  const big = keep || Math.max(...S.flatMap(s => s.q.map(Math.abs)), 1e-300);
   const g = svg('g', {id: 'osc-moving'}); add(root, g);
   const zig = (x1, y1, x2, y2) => { // a spring: a zig-zag of 8 teeth
     const pts = [[x1, y1]], L = Math.hypot(x2 - x1, y2 - y1) || 1, ux = (x2 - x1) / L, uy = (y2 - y1) / L;
@@ -251,8 +264,9 @@ function sceneFor(root, a, S) {
     const gap = (W - 40) / (n + 1), y = H / 2, k = 0.35 * gap / big, box = Math.min(30, gap * 0.5), wl = 20, wr = W - 20;
     const wantL = hasWall(a, 'left'), wantR = hasWall(a, 'right');
     add(root, svg('rect', {x: wl - 10, y: y - 40, width: 10, height: 80, fill: '#adb5bd'}), svg('rect', {x: wr, y: y - 40, width: 10, height: 80, fill: '#adb5bd'}));
-    return {note: `Equilibrium spacing drawn ${fmt(gap, 3)} px; displacements drawn ×${fmt(k, 3)} px per metre, so the largest (${amount(big, 'm')}) is a third of it. ` +
-      'Grey: the walls (a spring to a wall is drawn only where the chain has one).',
+    return {big, note: `Displacements drawn large: the largest of the run (${amount(big, 'm')}) is drawn a third of the spacing between the masses. ` +
+      'Grey: the walls (a spring to a wall is drawn only where the chain has one). The rings below are where the masses start: drag one.',
+    place: (i, q) => [20 + gap * (i + 1) + k * q[i], y + 48], value: (i, x) => (x - 20 - gap * (i + 1)) / k,
     at: (q) => {
       const xs = q.map((x, i) => 20 + gap * (i + 1) + k * x);
       put(g, wantL ? zig(wl, y, xs[0] - box / 2, y) : null,
@@ -266,8 +280,13 @@ function sceneFor(root, a, S) {
     const ex = big < 0.35 ? 0.35 / big : 1; // tiny angles drawn larger, said
     const note = ex > 1 ? `Angles drawn ×${fmt(ex, 3)} (the largest, ${fmt(big * 180 / Math.PI, 3)}°, drawn at 20°).` : 'Angles drawn true.';
     if (sys === 'double_pendulum') {
-      const px = W / 2, py = 24, L1 = 85, L2 = 85; // the rods drawn equal
-      return {note, at: (q) => {
+      // the rods to scale with each other, 170 units together
+      const l1 = sysReq.l1 > 0 ? sysReq.l1 : 1, l2 = sysReq.l2 > 0 ? sysReq.l2 : 1, px = W / 2, py = 24, L1 = 170 * l1 / (l1 + l2), L2 = 170 * l2 / (l1 + l2);
+      const bob1 = (q) => [px + L1 * Math.sin(q[0] * ex), py + L1 * Math.cos(q[0] * ex)];
+      return {big, note: note + ' The rings are where the bobs start: drag one round its rod\'s pivot.',
+        place: (i, q) => { const b = bob1(q); return i === 0 ? b : [b[0] + L2 * Math.sin(q[1] * ex), b[1] + L2 * Math.cos(q[1] * ex)]; },
+        value: (i, x, y, q) => { const o = i === 0 ? [px, py] : bob1(q); return Math.atan2(x - o[0], y - o[1]) / ex; },
+        at: (q) => {
         const t1 = q[0] * ex, t2 = q[1] * ex, x1 = px + L1 * Math.sin(t1), y1 = py + L1 * Math.cos(t1), x2 = x1 + L2 * Math.sin(t2), y2 = y1 + L2 * Math.cos(t2);
         put(g, svg('line', {x1: px - 40, y1: py, x2: px + 40, y2: py, stroke: '#555', 'stroke-width': 3}),
           svg('line', {x1: px, y1: py, x2: x1, y2: y1, stroke: '#333', 'stroke-width': 3}), svg('line', {x1, y1, x2, y2, stroke: '#333', 'stroke-width': 3}),
@@ -276,9 +295,12 @@ function sceneFor(root, a, S) {
       }};
     }
     const L = 170, py = 24, p1 = W / 2 - 90, p2 = W / 2 + 90;
-    return {note: note + ' The spring (grey) joins the rods.', at: (q) => {
+    return {big, note: note + ' The spring (grey) joins the rods. The rings are where the bobs start: drag one round its pivot.',
+      place: (i, q) => [(i ? p2 : p1) + L * Math.sin(q[i] * ex), py + L * Math.cos(q[i] * ex)],
+      value: (i, x, y) => Math.atan2(x - (i ? p2 : p1), y - py) / ex,
+      at: (q) => {
       const t1 = q[0] * ex, t2 = q[1] * ex, b1 = [p1 + L * Math.sin(t1), py + L * Math.cos(t1)], b2 = [p2 + L * Math.sin(t2), py + L * Math.cos(t2)];
-      const fa = 0.7, s1 = [p1 + fa * L * Math.sin(t1), py + fa * L * Math.cos(t1)], s2 = [p2 + fa * L * Math.sin(t2), py + fa * L * Math.cos(t2)];
+      const fa = sysReq.attach > 0 && sysReq.length > 0 ? Math.min(1, sysReq.attach / sysReq.length) : 1, s1 = [p1 + fa * L * Math.sin(t1), py + fa * L * Math.cos(t1)], s2 = [p2 + fa * L * Math.sin(t2), py + fa * L * Math.cos(t2)];
       put(g, svg('line', {x1: p1 - 40, y1: py, x2: p2 + 40, y2: py, stroke: '#555', 'stroke-width': 3}),
         svg('line', {x1: p1, y1: py, x2: b1[0], y2: b1[1], stroke: '#333', 'stroke-width': 3}), svg('line', {x1: p2, y1: py, x2: b2[0], y2: b2[1], stroke: '#333', 'stroke-width': 3}),
         zig(s1[0], s1[1], s2[0], s2[1]),
@@ -289,7 +311,9 @@ function sceneFor(root, a, S) {
   // matrices: one bar per coordinate, heights against the largest |q| of the run
   const w = Math.min(60, (W - 40) / n - 8), base = H / 2, k = (H / 2 - 20) / big;
   add(root, svg('line', {x1: 10, y1: base, x2: W - 10, y2: base, stroke: '#555'}));
-  return {note: 'Each coordinate as a bar, against the largest value of the run.', at: (q) => {
+  return {big, note: 'Each coordinate as a bar, against the largest value of the run; the rings are where each starts: drag one up or down.',
+    place: (i, q) => [20 + (i + 0.5) * (W - 40) / n, base - k * q[i]], value: (i, x, y) => (base - y) / k,
+    at: (q) => {
     put(g, q.map((x, i) => { const h = k * x, cx = 20 + (i + 0.5) * (W - 40) / n;
       return [svg('rect', {x: cx - w / 2, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: COLORS[i % COLORS.length]}),
         svg('text', {x: cx, y: H - 6, 'font-size': 14, 'text-anchor': 'middle', fill: '#333'}, a.coordinates[i])]; }).flat());
@@ -303,4 +327,22 @@ function hasWall(a, end) {
   if (n === 1) return K[0][0] > 0; // one mass: both walls drawn when it is held at all
   const i = end === 'left' ? 0 : n - 1, j = end === 'left' ? 1 : n - 2;
   return K[i][i] + K[i][j] > 1e-12 * Math.abs(K[i][i]);
+}
+
+// The start handles: one ring per coordinate at its q(0) (sceneFor's place), dragged or moved by the arrow keys
+// (a tenth of the run's scale, rounded; Shift ten times): onMove(i, q_i, done).
+function startHandles(root, a, sc, q0, onMove) {
+  const id = (x) => x; id.invert = id;
+  const step = 10 ** Math.floor(Math.log10(sc.big)) / 10, unit = a.system === 'spring_chain' ? 'm' : a.system === 'matrices' ? '' : 'rad';
+  const round = (v) => Number((Math.round(v / step * 10) * step / 10).toPrecision(6));
+  const g = svg('g', {id: 'osc-start'});
+  a.coordinates.forEach((c, i) => {
+    if (!Number.isFinite(q0[i])) return;
+    const say = (v) => `${c} starts at ${fmt(v, 4)}${unit ? ' ' + unit : ''}` + (unit === 'rad' ? ` (${fmt(v * 180 / Math.PI, 3)}°)` : '');
+    add(g, handle(root, {id: `osc-start-q${i}`, X: id, Y: id, at: sc.place(i, q0), color: COLORS[i % COLORS.length], label: `where ${c} starts`,
+      text: (x, y) => say(sc.value(i, x, y, q0)),
+      nudge: (sign, big, at) => { const v = round(sc.value(i, at[0], at[1], q0) + sign * step * (big ? 10 : 1)); const q = q0.slice(); q[i] = v; return sc.place(i, q); },
+      onMove: (x, y, done) => onMove(i, round(sc.value(i, x, y, q0)), done)}));
+  });
+  add(root, g);
 }
