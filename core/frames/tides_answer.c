@@ -1,7 +1,7 @@
 /* tides_answer.c — one POST /v1/earth/tides computation
  * (mech/tides_answer.h): the body resolved from gm or mass, the tidal
  * acceleration and equilibrium tide of tides.c, and the Moon and the Sun
- * combined. Moved from api/ep_frames_earth.c (a handler only parses, calls
+ * combined. Moved from api/ops/earth/gravity.c (a handler only parses, calls
  * core once and encodes) operation for operation, so the API's answers stay
  * byte-identical. */
 #include "mech/tides_answer.h"
