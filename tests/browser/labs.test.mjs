@@ -779,7 +779,9 @@ await lab('inertia', async () => {
 await lab('earth', async () => {
   await settled();
   const cx0 = await page.getAttribute('#fou-bob', 'cx');
-  await page.click('#fou-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
+  await page.click('#fou-plot ~ .player [data-role=play]');
+  // (a loaded machine may draw few frames in a moment: wait for the bob to leave its start, up to 5 s)
+  await page.waitForFunction((c) => document.getElementById('fou-bob').getAttribute('cx') !== c, cx0, {timeout: 5000}).catch(() => {});
   await pauseIfPlaying('#fou-plot ~ .player [data-role=play]');
   check(await page.getAttribute('#fou-bob', 'cx') !== cx0, 'animation: the Foucault bob swings when played');
   // the falling object falls when played (from /v1/trajectory's samples), and lands where the scene says

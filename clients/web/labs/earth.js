@@ -445,7 +445,7 @@ function foucaultGlobe(G, box, note, play, a, ground) {
     new THREE.LineBasicMaterial({color: 0x555555}));
   site.add(start);
   G.frame(1.15);
-  G.view.yaw = -0.45; G.view.pitch = 0.6; // the floor (longitude 0, latitude λ) towards the camera at the start
+  G.aim(-0.45, 0.6); // the floor (longitude 0, latitude λ) towards the camera at the start
   const turnDay = rate * day * 180 / Math.PI, still = a.precession.first_order_rate === 0;
   put(note, `Seen from the stars, the Earth turns once in a sidereal day (${fmt(day / 3600, 4)} h). The floor at ${fmt(a.setup.latitude_deg, 5)}° `,
     `(drawn large, north green) turns with it; the swing plane (red) turns on the floor by ${still ? 'nothing: at the equator ω sin λ = 0'
