@@ -33,8 +33,13 @@
  *
  * Run: build/bench_chooser_regret [OUT_DIR] (default build/bench-out): the
  * tables on stdout, chooser_regret.dat and chooser_regret.png (gnuplot) in
- * OUT_DIR. MECHD_BENCH_DIR points at bench/ (for the SciPy script) when run
- * outside its source tree. About a minute on 2 shared cores.
+ * OUT_DIR, and chooser_hindsight.tsv (every swept run: method, setting,
+ * error, evaluations, CPU) and chooser_runs.tsv (the chooser's and presets'
+ * runs with their predictions), which bench/fit_chooser_rows.py fits into
+ * the chooser's rows. MECHD_BENCH_DIR points at bench/ (for the SciPy
+ * script) when run outside its source tree; MECHD_REGRET_SCENES=0,3 measures
+ * only those scenes, MECHD_REGRET_QUICK=1 skips GSL and SciPy (while tuning).
+ * About 8 minutes on 2 shared cores (1 without GSL and SciPy).
  */
 #define _GNU_SOURCE
 #include <errno.h>
