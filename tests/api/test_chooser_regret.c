@@ -69,6 +69,11 @@ static const struct rcase CASES[] = {
      S_KEPLER, 0.09999999999999998, 4.358898943540674, 4.358898943540674, 1e-3, 1.25},
 };
 
+struct res {
+    int ok;
+    double err, evals, atol_scale, achieved; /* achieved: selection.achieved.error, -1: none */
+};
+
 /* First-order operations with an exact reference: the torque-free body
  * (Jacobi's elliptic functions, mech_rigid_exact_omega: omega relative to
  * |omega0| ~ 1) and the pendulum's flow (Jacobi's sn, cn: q relative to
@@ -106,7 +111,7 @@ static void pendulum_exact(double t, double *q, double *p)
 
 static struct res orun(const struct ocase *c, json_t *integ)
 {
-    struct res o = {0, INFINITY, 0, 1};
+    struct res o = {0, INFINITY, 0, 1, -1};
     json_t *b = with_integrator(c->body, integ);
     int st;
     ss_quiet = 1;
@@ -116,6 +121,8 @@ static struct res orun(const struct ocase *c, json_t *integ)
     if (st == 200) {
         o.ok = 1;
         o.evals = json_number_value(at(a, "diagnostics/rhs_evaluations"));
+        const json_t *ach = at(a, "diagnostics/selection/achieved/error");
+        if (json_is_number(ach)) o.achieved = json_number_value(ach);
         const json_t *pil = at(a, "diagnostics/selection/pilot/evaluations");
         if (json_is_number(pil)) o.evals += json_number_value(pil);
         const double rt = json_number_value(at(a, "diagnostics/rtol")),
@@ -175,14 +182,9 @@ static void exact(const struct rcase *c, double t, double *r, double *v)
     }
 }
 
-struct res {
-    int ok;
-    double err, evals, atol_scale;
-};
-
 static struct res run(const struct rcase *c, json_t *integ)
 {
-    struct res o = {0, INFINITY, 0, 1};
+    struct res o = {0, INFINITY, 0, 1, -1};
     json_t *b = with_integrator(c->body, integ);
     int st;
     ss_quiet = 1;
@@ -192,6 +194,8 @@ static struct res run(const struct rcase *c, json_t *integ)
     if (st == 200) {
         o.ok = 1;
         o.evals = json_number_value(at(a, "diagnostics/rhs_evaluations"));
+        const json_t *ach = at(a, "diagnostics/selection/achieved/error");
+        if (json_is_number(ach)) o.achieved = json_number_value(ach);
         const double rt = json_number_value(at(a, "diagnostics/rtol")),
                      at_ = json_number_value(at(a, "diagnostics/atol"));
         if (rt > 0 && at_ > 0) o.atol_scale = at_ / rt;
@@ -243,6 +247,11 @@ int main(void)
                c->name, c->target, ch.evals, ch.err, bm, bx, best, ch.evals / best, c->bound);
         CHECK(ch.err <= c->target);
         CHECK(isfinite(best) && ch.evals <= c->bound * best);
+        /* the evidence: selection.achieved.error present, never more than 3x
+         * optimistic nor 1000x pessimistic against the exact reference */
+        printf("  achieved %.2e / true %.2e = %.2f\n", ch.achieved, ch.err, ch.achieved / ch.err);
+        CHECK(ch.achieved >= 0.0);
+        CHECK(ch.achieved >= ch.err / 3.0 && ch.achieved <= 1000.0 * ch.err);
     }
     for (size_t i = 0; i < sizeof OCASES / sizeof *OCASES; i++) {
         const struct ocase *c = &OCASES[i];
@@ -270,6 +279,11 @@ int main(void)
                c->name, c->target, ch.evals, ch.err, bm, bx, best, ch.evals / best, c->bound);
         CHECK(ch.err <= c->target);
         CHECK(isfinite(best) && ch.evals <= c->bound * best);
+        /* the evidence: selection.achieved.error present, never more than 3x
+         * optimistic nor 1000x pessimistic against the exact reference */
+        printf("  achieved %.2e / true %.2e = %.2f\n", ch.achieved, ch.err, ch.achieved / ch.err);
+        CHECK(ch.achieved >= 0.0);
+        CHECK(ch.achieved >= ch.err / 3.0 && ch.achieved <= 1000.0 * ch.err);
     }
     TEST_MAIN_END();
 }
