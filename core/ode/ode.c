@@ -75,6 +75,13 @@ struct solver {
     size_t next_sample;
     struct mech_ode_result *res;
     struct mech_error *err;
+    /* dense output (see dense_sample): the accepted step's end derivatives
+     * (the method's buffers, NULL when it has none for this step), and the
+     * starts of the two steps before it, (tc, yc, fc) and (td, yd, fd);
+     * n_prev of them are known (0..2) */
+    const double *fa, *fb;
+    double tc, td, *yc, *fc, *yd, *fd;
+    int dense, n_prev;
 };
 
 static int all_finite(const double *y, size_t n)
@@ -121,6 +128,74 @@ static void write_sample(struct solver *s, double t, const double *y)
     s->res->n_samples = s->next_sample;
 }
 
+/* Dense output of a second-order system y = (q, v), f = (v, a), nq = dim/2.
+ *
+ * Nodes, each with q, q' = v and q'' = a: the accepted step's ends ta, tb
+ * and the starts tc, td of the two steps before it (tb > ta > tc > td). Per
+ * component, the Hermite interpolant through ta, tb and tc (degree 8, Newton
+ * form on ta,ta,ta,tb,tb,tb,tc,tc,tc) gives q(ts) and, as its derivative,
+ * v(ts); the three further Newton terms through td (degree 11) estimate its
+ * error, as an embedded pair estimates a step's. The sample is taken from
+ * the interpolant only when that estimate is within the step's tolerance,
+ * atol + rtol max(|y(ta)|, |y(tb)|), for every component of q and v: then it
+ * is as good as a sub-step's and costs no evaluation. Otherwise (returns 0)
+ * the caller sub-steps. Times are taken relative to ta, so no digit is lost
+ * to a large t. */
+enum { DENSE_NODES = 4, DENSE_TERMS = 3 * DENSE_NODES, DENSE_OUT = 9 };
+
+static int dense_sample(const struct solver *s, double ta, const double *ya, double tb,
+                        const double *yb, double ts, double *out)
+{
+    const size_t nq = s->dim / 2;
+    const double rtol = s->p->opt.rtol, atol = s->p->opt.atol;
+    const double node_t[DENSE_NODES] = {0.0, tb - ta, s->tc - ta, s->td - ta};
+    const double *node_y[DENSE_NODES] = {ya, yb, s->yc, s->yd};
+    const double *node_f[DENSE_NODES] = {s->fa, s->fb, s->fc, s->fd};
+    double z[DENSE_TERMS];
+    for (int k = 0; k < DENSE_TERMS; k++) z[k] = node_t[k / 3];
+    const double x = ts - ta;
+    /* w[j] = prod_{k<j} (x - z_k) and its derivative dw[j] */
+    double w[DENSE_TERMS], dw[DENSE_TERMS];
+    w[0] = 1.0;
+    dw[0] = 0.0;
+    for (int j = 1; j < DENSE_TERMS; j++) {
+        w[j] = w[j - 1] * (x - z[j - 1]);
+        dw[j] = dw[j - 1] * (x - z[j - 1]) + w[j - 1];
+    }
+    for (size_t i = 0; i < nq; i++) {
+        /* divided differences, confluent (Hermite) where a point repeats:
+         * f[z,z] = q', f[z,z,z] = q''/2; col holds column j of the table,
+         * updated in place from the bottom */
+        double col[DENSE_TERMS], c[DENSE_TERMS];
+        for (int k = 0; k < DENSE_TERMS; k++) col[k] = node_y[k / 3][i];
+        c[0] = col[0];
+        for (int j = 1; j < DENSE_TERMS; j++) {
+            for (int k = DENSE_TERMS - 1; k >= j; k--) {
+                if (k / 3 == (k - j) / 3) /* the same point */
+                    col[k] = j == 1 ? node_f[k / 3][i] : 0.5 * node_f[k / 3][nq + i];
+                else
+                    col[k] = (col[k] - col[k - 1]) / (z[k] - z[k - j]);
+            }
+            c[j] = col[j];
+        }
+        double q = 0.0, v = 0.0, eq = 0.0, ev = 0.0;
+        for (int j = 0; j < DENSE_OUT; j++) {
+            q += c[j] * w[j];
+            v += c[j] * dw[j];
+        }
+        for (int j = DENSE_OUT; j < DENSE_TERMS; j++) {
+            eq += c[j] * w[j];
+            ev += c[j] * dw[j];
+        }
+        const double tq = atol + rtol * fmax(fabs(ya[i]), fabs(yb[i]));
+        const double tv = atol + rtol * fmax(fabs(ya[nq + i]), fabs(yb[nq + i]));
+        if (!(fabs(eq) <= tq) || !(fabs(ev) <= tv) || !isfinite(q) || !isfinite(v)) return 0;
+        out[i] = q;
+        out[nq + i] = v;
+    }
+    return 1;
+}
+
 /* Write every sample with time <= t_hi, the step being [ta, tb] with states ya, yb. */
 static enum mech_status emit_samples(struct solver *s, double ta, const double *ya, double tb,
                                      const double *yb, double t_hi)
@@ -130,9 +205,11 @@ static enum mech_status emit_samples(struct solver *s, double ta, const double *
         if (ts > t_hi) break;
         const double *ys = yb;
         if (ts != tb) {
-            enum mech_status st = substep(s, ta, ya, ts, s->ysub);
-            if (st != MECH_OK) return st;
             ys = s->ysub;
+            if (!(s->fa && s->n_prev == 2 && dense_sample(s, ta, ya, tb, yb, ts, s->ysub))) {
+                enum mech_status st = substep(s, ta, ya, ts, s->ysub);
+                if (st != MECH_OK) return st;
+            }
         }
         enum mech_status st = observe(s, ts, ys);
         if (st != MECH_OK) return st;
@@ -329,12 +406,23 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         return st;
     }
 
-    struct solver s = {p, m, NULL, p->sys->dim, NULL, NULL, NULL, 0, res, err};
-    double *block = malloc(3 * s.dim * sizeof *block);
+    struct solver s = {p, m, NULL, p->sys->dim, NULL, NULL, NULL, 0, res, err,
+                       NULL, NULL, 0.0, 0.0, NULL, NULL, NULL, NULL, 0, 0};
+    /* dense output: a second-order system, a method that hands over its
+     * step's derivatives, and samples that can fall inside a step */
+    s.dense = adaptive && m->step_derivs && p->sys->accel && s.dim % 2 == 0 &&
+              p->n_samples > 2;
+    double *block = malloc((s.dense ? 7 : 3) * s.dim * sizeof *block);
     if (!block) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
     s.y = block;
     s.yprev = block + s.dim;
     s.ysub = block + 2 * s.dim;
+    if (s.dense) {
+        s.yc = block + 3 * s.dim;
+        s.fc = block + 4 * s.dim;
+        s.yd = block + 5 * s.dim;
+        s.fd = block + 6 * s.dim;
+    }
     st = m->alloc(&s.ws, s.dim, &p->opt, err);
     if (st != MECH_OK) {
         free(block);
@@ -383,6 +471,8 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         }
         res->stats.steps++;
         res->t_reached = t;
+        s.fa = s.fb = NULL;
+        if (s.dense && !m->step_derivs(s.ws, &s.fa, &s.fb)) s.fa = s.fb = NULL;
 
         if (p->event) {
             double g_new = p->event(t, s.y, p->event_params);
@@ -410,6 +500,16 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         /* Observed only when the step end is part of the answer (not past a stop). */
         if ((st = observe(&s, t, s.y)) != MECH_OK) goto fail;
         if ((st = emit_samples(&s, tprev, s.yprev, t, s.y, t)) != MECH_OK) goto fail;
+        if (s.fa) { /* this step's start is the next step's node c, c its node d */
+            double *ty = s.yd, *tf = s.fd;
+            s.yd = s.yc, s.fd = s.fc, s.td = s.tc;
+            s.yc = ty, s.fc = tf, s.tc = tprev;
+            memcpy(s.yc, s.yprev, s.dim * sizeof *s.yc);
+            memcpy(s.fc, s.fa, s.dim * sizeof *s.fc);
+            if (s.n_prev < 2) s.n_prev++;
+        } else {
+            s.n_prev = 0;
+        }
     }
     m->free(s.ws);
     free(block);
