@@ -63,7 +63,7 @@ static double t_end_of(long orbits) { return 2.0 * MECH_PI * (double)orbits; }
 
 /* ---- the bare right-hand sides (GM = 1) ----------------------------------- */
 
-/* a = d (-(GM/|d|^2)/|d|), as core/frames/trajectory.c writes central gravity. */
+/* a = d (-(GM/|d|^2)/|d|), as core/frames/trajectory_fast.c writes central gravity. */
 static void kepler_accel_n(const double *q, double *a, int n)
 {
     double s2 = 0.0;

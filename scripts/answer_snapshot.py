@@ -13,8 +13,9 @@ data-driven API case under tests/api/cases/ (request.json: body or body_text,
 content_type), with the status, the content type and the body's exact bytes.
 Each request carries a fixed X-Request-Id, so the only parts of an answer that
 may differ run to run are measured times: the keys listed in VOLATILE are
-replaced by null before writing (CPU seconds, wall time), and the steps
-and time reached by a run cut off at its deadline, nothing else.
+replaced by null before writing (CPU seconds, wall time), the steps
+and time reached by a run cut off at its deadline, and the server's port
+(free, new each run) where an answer quotes its own address; nothing else.
 Exit status of --diff: 0 identical, 1 differences (each printed).
 """
 import json
@@ -53,6 +54,12 @@ def mask(v):
     return v
 
 
+def unport(base, raw):
+    """The server's own address (a free port, new each run) as written in the
+    catalog's curl lines, replaced by a fixed placeholder."""
+    return raw.replace(base.encode(), b"http://127.0.0.1:PORT")
+
+
 def call(base, method, path, body=None, ctype="application/json", rid="snapshot"):
     data = None if body is None else (body if isinstance(body, bytes) else body.encode())
     path = urllib.parse.quote(path, safe="/?=&%:+,;@!$'()*[]~")  # non-ASCII cases
@@ -62,9 +69,9 @@ def call(base, method, path, body=None, ctype="application/json", rid="snapshot"
     req.add_header("X-Request-Id", rid)
     try:
         with urllib.request.urlopen(req, timeout=120) as r:
-            return r.status, r.headers.get("Content-Type", ""), r.read()
+            return r.status, r.headers.get("Content-Type", ""), unport(base, r.read())
     except urllib.error.HTTPError as e:
-        return e.code, e.headers.get("Content-Type", ""), e.read()
+        return e.code, e.headers.get("Content-Type", ""), unport(base, e.read())
     except (OSError, ValueError) as e:  # a case the client library itself refuses to send
         return 0, "", ("client: %s" % type(e).__name__).encode()
 

@@ -21,8 +21,9 @@
 set -eu
 
 PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-dev zlib1g-dev curl python3"
-# python3-pip, python3-setuptools: the Python client's offline `pip install` (test_python_package.py)
-PKGS="$PKGS python3-pip python3-setuptools"
+# python3-pip, python3-setuptools: the Python client's offline `pip install`; python3-venv:
+# the built wheel installed into a fresh venv without setuptools (both in test_python_package.py)
+PKGS="$PKGS python3-pip python3-setuptools python3-venv"
 for opt in "$@"; do
   case "$opt" in
     --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk gdb" ;;

@@ -36,6 +36,17 @@ test)
   grep -E '^ *[0-9]+/[0-9]+ Test +#[0-9]+: .*(\*\*\*|Failed|Timeout|Exception|Not Run)' "$log" || true
   grep -E 'tests passed|tests failed out of|Total Test time|No tests were found' "$log" || true
   if [ "$status" != 0 ]; then
+    # each failing test's own output (its last 60 lines): where the log is
+    # thrown away with its machine (a container build, CI), this is all there is
+    awk '
+      function flush() { if (n) { s = n > 60 ? n - 60 : 0; for (i = s + 1; i <= n; i++) print buf[i]; print "--- end of " name } n = 0 }
+      /^ *[0-9]+\/[0-9]+ Test +#[0-9]+: / || /^ *Start +[0-9]+: / || /tests passed|tests failed out of/ {
+        flush(); grab = 0
+        if ($0 ~ /(\*\*\*|Failed|Timeout|Exception)/ && $0 ~ /Test +#/) { grab = 1; name = $0; print "--- output of " $0 }
+        next
+      }
+      grab { buf[++n] = $0 }
+      END { flush() }' "$log" | head -n 400
     sed -n '/The following tests FAILED:/,$p' "$log" | head -n 80
     echo "tests FAILED (full output of each failing test: $log)"
   else

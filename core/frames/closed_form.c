@@ -257,7 +257,7 @@ static struct mech_vec3 cf_omega(const struct cf_ctx *c, double t)
 }
 
 /* Energy (or Jacobi integral) at (t, r, v), and the sum of its parts' sizes;
- * the same expression as the integrator's (core/frames/trajectory.c). */
+ * the same expression as the integrator's (core/frames/trajectory_observe.c). */
 static void cf_energy(const struct cf_ctx *c, double t, struct mech_vec3 r, struct mech_vec3 v,
                       double *value, double *scale)
 {

@@ -1,5 +1,5 @@
 /* trajectory_scene.h — private to core/frames: what the trajectory's
- * equations of motion (trajectory.c) tell the chooser's profile of a scene
+ * equations of motion (trajectory_equations.c) tell the chooser's profile of a scene
  * (trajectory_choose.c) without handing out their context. */
 #ifndef MECH_FRAMES_TRAJECTORY_SCENE_H
 #define MECH_FRAMES_TRAJECTORY_SCENE_H

@@ -9,7 +9,7 @@
  * (1e200) vectors, subnormal components, the edges of the fast path's range,
  * exact Pythagorean triples scaled by 2^k, and inf / NaN / 0.
  *
- * Fast path of the force loop (core/frames/trajectory.c simple_accel): a scene of
+ * Fast path of the force loop (core/frames/trajectory_fast.c simple_accel): a scene of
  * central gravity, uniform gravity, a spring and drag is integrated once as
  * is (fast path) and once with an extra lorentz force on an uncharged
  * particle, which contributes exactly 0 but sends the scene through the
