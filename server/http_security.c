@@ -4,7 +4,7 @@
  * SECURITY. With --token-file, every /v1 request needs the bearer token
  * (checked on the first callback, before any body byte is read; compared in
  * constant time); /healthz, /metrics, /problems/... and the front end stay open.
- * The 401 and the preflight's 403 are the problem table's (api/problem.c).
+ * The 401 and the preflight's 403 are the problem table's (api/http/problem.c).
  * CORS is off unless --cors-origin lists origins: only those get
  * Access-Control-Allow-Origin on /v1 answers and a 204 to a preflight. Every
  * answer built here carries nosniff, Referrer-Policy, X-Frame-Options and a

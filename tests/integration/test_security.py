@@ -164,7 +164,7 @@ def test_auth(port, example_path, example_body):
             check("%s %s, %s: WWW-Authenticate Bearer" % (method, path, name),
                   www.startswith("Bearer") and (("invalid_token" in www) == invalid), www)
             check_security_headers("401 %s %s" % (method, name), h)
-    # The 401 is the problem table's (api/problem.c), built like every other
+    # The 401 is the problem table's (api/http/problem.c), built like every other
     # problem: its type's page names the same title, a newline ends the body,
     # "instance" is the path, and it is never cached.
     st, h, payload = request(port, "POST", example_path, example_body)
