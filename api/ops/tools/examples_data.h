@@ -492,6 +492,22 @@ static const char *const api_examples_data[] = {
     "  \"request\": {\"mass\": 5.9722e24, \"angular_momentum\": 2.6617e40, \"gm\": 1.32712440018e20},\n"
     "  \"notes_answer\": {\"pointer\": \"/orbits/0/radius\", \"value\": 149671078734.58072, \"rounding\": {\"relative\": 1e-12}, \"text\": \"V_eff = L²/(2mr²) − GMm/r is least where m r³ V' = L²: r = L²/(GM m²) = 1.4967e11 m for L = 2.6617e40 kg m²/s; there ω_r = ω_φ (apsidal angle π, Bertrand) and the period is 2π√(r³/GM) = 365.5 days.\"}\n"
     "}",
+    "{\n"
+    "  \"id\": \"vertical-shot-west\",\n"
+    "  \"title\": \"A shot straight up lands west (100 m at 32°, Coriolis only)\",\n"
+    "  \"section\": \"1.5 Homework 3\",\n"
+    "  \"operation\": \"/v1/scenes/vertical-shot\",\n"
+    "  \"request\": {\"height\": 100, \"latitude_deg\": 32, \"model\": \"coriolis\", \"cost\": false},\n"
+    "  \"notes_answer\": {\"pointer\": \"/numerical/east\", \"value\": -0.0744727489499361, \"rounding\": {\"relative\": 1e-05}, \"text\": \"With the Coriolis force alone, x = −ω cos λ (v0 t² − g t³/3) at t = 2 v0/g: the shot lands (4/3) ω cos λ √(8h³/g) = 7.45 cm to the west, four times the eastward deflection of an object dropped from the top of its flight.\"}\n"
+    "}",
+    "{\n"
+    "  \"id\": \"sun-mass-loss\",\n"
+    "  \"title\": \"The mass the Sun converts to radiation each second\",\n"
+    "  \"section\": \"3 Homework 8\",\n"
+    "  \"operation\": \"/v1/relativity/mass-energy\",\n"
+    "  \"request\": {\"flux\": 1366, \"distance\": 1.5e11},\n"
+    "  \"notes_answer\": {\"pointer\": \"/mass_loss_rate\", \"value\": 4297359391.855344, \"rounding\": {\"relative\": 1e-12}, \"text\": \"1366 W/m² at 1.5e11 m from the Sun, radiated evenly in all directions: L = 4π d² F = 3.86e26 W, and the rest mass converted is L/c² = 4.3e9 kg each second.\"}\n"
+    "}",
 };
 
 #endif
