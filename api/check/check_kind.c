@@ -110,6 +110,7 @@ static const struct api_unit units[] = {
     {"N m", 1, "torque"},
     {"W", 1, "P"},
     {"kW", 1e3, "P"},
+    {"kg/s", 1, "M/T"},
 };
 
 const char api_unit_list[] =
@@ -117,7 +118,7 @@ const char api_unit_list[] =
     "erg, eV, keV, MeV, GeV, TeV, rad, deg, rev, arcmin, arcsec, mrad, m/s, km/s, km/h, cm/s, "
     "m/s^2, rad/s, deg/s, rpm, rev/s, Hz, kHz, kg m^2, g cm^2, kg m^2/s, J s, kg m/s, eV/c, keV/c, "
     "MeV/c, GeV/c, TeV/c, eV/c^2, keV/c^2, MeV/c^2, GeV/c^2, TeV/c^2, eV^2, keV^2, MeV^2, GeV^2, "
-    "TeV^2, N, kN, N m, W, kW";
+    "TeV^2, N, kN, N m, W, kW, kg/s";
 
 const struct api_unit *api_unit_find(const char *name)
 {

@@ -107,6 +107,9 @@ static void handle(const struct api_request *req0, const struct api_request_ext 
     full.admit = ext ? ext->admit : NULL;
     full.admit_ctx = ext ? ext->admit_ctx : NULL;
     full.admit_pending = full.admit != NULL;
+    full.gate = ext ? ext->gate : NULL;
+    full.gate_ctx = ext ? ext->gate_ctx : NULL;
+    full.gate_armed = full.gate != NULL;
     if (api_init() != 0) {
         api_response_problem(resp, API_PROBLEM_INTERNAL, "internal error");
         snprintf(resp->note, sizeof resp->note, "api_init failed: %.150s", api_init_error());

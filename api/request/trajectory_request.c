@@ -58,6 +58,18 @@ static void traj_block_read(struct api_call *c, struct api_traj_request *rq, con
     rq->accuracy = preset ? preset->name : NULL;
 }
 
+/* The run's predicted CPU seconds: the chosen candidate's prediction, twice
+ * with "error_estimate" (a second run at a tighter setting); -1 when nothing
+ * predicted it (the client gave the method and its step or tolerances). */
+static double traj_predicted_cpu(const struct api_traj_request *rq)
+{
+    const struct mech_selection *sel = &rq->choice.sel;
+    if (!rq->chosen || sel->chosen < 0 || (size_t)sel->chosen >= sel->n) return -1.0;
+    const struct mech_candidate *k = &sel->c[sel->chosen];
+    if (!k->predicted || !(k->predicted_cpu_s >= 0)) return -1.0;
+    return k->predicted_cpu_s * (rq->p.error_estimate ? 2.0 : 1.0);
+}
+
 /* The block read, then the model → choose pipeline of core
  * (mech_trajectory_plan), with "auto" resolved when with_model says so (the
  * base request; /v1/compare's runs re-choose only). Returns 0 after
@@ -70,6 +82,9 @@ static int traj_plan(struct api_call *c, struct api_traj_request *rq, const json
     traj_block_read(c, rq, in, pointer, &q);
     q.auto_model = with_model && rq->auto_model;
     q.dry_run = rq->dry_run;
+    /* Under a cost gate: the first pass of "auto" is a run of unknown
+     * length before any prediction, so such a request stops here. */
+    if (q.auto_model && !q.dry_run && api_call_cost_gate(c, -1.0)) return 0;
     struct mech_trajectory_plan plan;
     struct mech_error e;
     mech_error_clear(&e);
@@ -92,6 +107,7 @@ static int traj_plan(struct api_call *c, struct api_traj_request *rq, const json
         rq->choice = plan.choice;
         rq->closed_form = plan.closed_form;
     }
+    if (!rq->dry_run && api_call_cost_gate(c, traj_predicted_cpu(rq))) return 0;
     return 1;
 }
 

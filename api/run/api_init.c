@@ -176,6 +176,17 @@ long api_quick_route(const char *method, const char *path, size_t body_len)
     return ri >= 0 && api_routes[ri]->quick ? ri : -1;
 }
 
+long api_gated_route(const char *method, const char *path)
+{
+    /* The operations whose handlers call api_call_cost_gate before they
+     * integrate: the trajectory's chooser predicts its CPU. */
+    static const char *const gated[] = {"/v1/trajectory"};
+    if (!method || !path || strcmp(method, "POST") != 0) return -1;
+    for (size_t i = 0; i < sizeof gated / sizeof gated[0]; i++)
+        if (!strcmp(path, gated[i])) return api_route_index(path);
+    return -1;
+}
+
 size_t api_operation_count(void)
 {
     return api_route_count;

@@ -137,6 +137,8 @@ int api_run_parsed(size_t ri, struct api_full_request *req, const json_t *body, 
     call.budget.max_steps = req->req.max_steps > 0 ? req->req.max_steps : 1;
     call.budget.deadline = isfinite(req->req.deadline) ? req->req.deadline : 0;
     call.budget.cancel = req->req.cancel;
+    call.gated = req->gate_armed; /* only the request's own operation is gated */
+    req->gate_armed = 0;
     int want_cost =
         !no_cost && !request_no_cost(req) && !json_is_false(json_object_get(body, "cost"));
     call.no_cost = !want_cost;
@@ -147,6 +149,12 @@ int api_run_parsed(size_t ri, struct api_full_request *req, const json_t *body, 
     json_t *result = r->fn(&call, full);
     double cpu = r->reports_cost ? mech_cpu_seconds() - cpu0 : 0.0;
     json_decref(full);
+    if (req->deferred) { /* the gate stopped it: nothing to answer */
+        json_decref(result);
+        json_decref(call.errors);
+        json_decref(call.extra);
+        return 0;
+    }
 
     if (result && call.problem == API_PROBLEM_NONE && call.nonfinite) {
         call.problem = API_PROBLEM_NUMERIC;
@@ -279,6 +287,11 @@ void api_run_body_into(size_t ri, struct api_full_request *req, json_t *body,
     int dep = 0;
     int status = api_run_parsed(ri, req, body, "", 0, &out, note, sizeof note, &dep);
     json_decref(body);
+    if (req->deferred) {
+        json_decref(out);
+        resp->deferred = 1;
+        return;
+    }
     api_respond_outcome(resp, status, out, note);
     resp->depends_on_load = dep;
 }

@@ -21,6 +21,10 @@ struct api_full_request {
     int (*admit)(void *ctx, long route, double samples); /* api_request_ext's, or NULL */
     void *admit_ctx;
     int admit_pending; /* 1 until the first (the request's own) run reaches admission */
+    int (*gate)(void *ctx, double predicted_cpu_s); /* api_request_ext's, or NULL */
+    void *gate_ctx;
+    int gate_armed;    /* 1 until the first (the request's own) run starts: its call is gated */
+    int deferred;      /* the gate stopped the request (api_call_cost_gate) */
 };
 
 /* The pipeline after parsing, for route ri (a POST operation): schema

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "run/api_run.h"
 #include "run/endpoint.h"
 #include "http/respond.h"
 
@@ -61,6 +62,16 @@ const json_t *api_call_as_given(const struct api_call *c, const json_t *value,
     if (!c || !value || !c->body || pointer_get(c->body, pointer) != value) return value;
     const json_t *g = pointer_get(c->given, pointer);
     return g ? g : value;
+}
+
+int api_call_cost_gate(struct api_call *c, double predicted_cpu_s)
+{
+    if (!c || !c->gated) return 0;
+    c->gated = 0;
+    struct api_full_request *req = c->req;
+    if (!req || !req->gate || !req->gate(req->gate_ctx, predicted_cpu_s)) return 0;
+    req->deferred = 1;
+    return 1;
 }
 
 void api_call_invalid(struct api_call *c, const char *pointer, const char *fmt, ...)

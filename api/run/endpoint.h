@@ -56,7 +56,17 @@ struct api_call {
                                     item or run stopped by the deadline or a budget, a partial
                                     result): the answer is then never cached and gets no ETag
                                     (Cache-Control: no-store), whatever its status */
+    int gated;                   /* the request's own operation, run under a cost gate: it
+                                    calls api_call_cost_gate once its cost is predicted */
 };
+
+/* For an operation that predicts its cost (api_gated_route): ask the
+ * request's gate (api_request_ext) whether to go on, once, with the
+ * predicted CPU seconds (-1 for unknown). Returns 0 to go on (always, when
+ * c is not gated, as for a batch's items), 1 when the gate stopped the
+ * request: the handler then returns NULL at once, computing nothing more;
+ * the request is answered as deferred. */
+int api_call_cost_gate(struct api_call *c, double predicted_cpu_s);
 
 /* Handler: returns a new reference to the result object, or NULL after
  * recording why (validation/domain errors or a failure). Must not leak on

@@ -57,6 +57,8 @@ static json_t *td_spring_neap(struct api_call *c, const struct mech_tides_answer
     put(s, "sun_distance", api_real(c, a->sun.distance));
     put(s, "spring_height", api_real(c, a->spring_height));
     put(s, "neap_height", api_real(c, a->neap_height));
+    put(s, "moon_source", json_string(a->moon.source));
+    put(s, "sun_source", json_string(a->sun.source));
     return s;
 }
 
@@ -73,6 +75,24 @@ json_t *api_op_earth_tides(struct api_call *c, const json_t *body)
     q.angle_deg = api_number_of(body, "angle_deg");
     q.radius = api_number_of(body, "radius");
     q.gm_earth = api_number_of(body, "gm_earth");
+    mech_body_set_parse(api_string_of(body, "named_bodies"), &q.set); /* the schema's enum */
+    const json_t *on = json_object_get(body, "on");
+    if (on && (api_call_given(c, "/radius") || api_call_given(c, "/gm_earth"))) {
+        api_call_invalid(c, api_call_given(c, "/radius") ? "/radius" : "/gm_earth",
+                         "give on (the body the tides are raised on, with its radius and GM) "
+                         "or the older radius and gm_earth, not both");
+        return NULL;
+    }
+    q.has_on = on != NULL;
+    if (json_is_string(on)) q.on.name = json_string_value(on);
+    if (json_is_object(on)) {
+        q.on.has_gm = json_object_get(on, "gm") != NULL;
+        q.on.has_mass = json_object_get(on, "mass") != NULL;
+        q.on.has_radius = json_object_get(on, "radius") != NULL;
+        q.on.gm = api_number(on, "gm", 0);
+        q.on.mass = api_number(on, "mass", 0);
+        q.on.radius = api_number(on, "radius", 0);
+    }
     struct mech_tides_answer a;
     struct mech_error e;
     mech_error_clear(&e);
@@ -92,7 +112,15 @@ json_t *api_op_earth_tides(struct api_call *c, const json_t *body)
     put(bo, "distance", api_real(c, a.body.distance));
     put(bo, "source", json_string(a.body.source));
     put(out, "body", bo);
-    put(out, "radius", api_real(c, q.radius));
+    json_t *oo = json_object();
+    put(oo, "name", json_string(a.on.name));
+    put(oo, "gm", api_real(c, a.on_gm));
+    put(oo, "mass", api_real(c, a.on.mass));
+    put(oo, "radius", api_real(c, a.on_radius));
+    put(oo, "source", json_string(a.on.source));
+    put(out, "on", oo);
+    put(out, "named_bodies", json_string(mech_body_set_name(q.set)));
+    put(out, "radius", api_real(c, a.on_radius));
     put(out, "angle_deg", api_real(c, q.angle_deg));
     put(out, "r_over_d", api_real(c, a.acceleration.u));
     put(out, "pull_at_centre", api_real(c, a.acceleration.pull));
@@ -106,7 +134,8 @@ json_t *api_op_earth_tides(struct api_call *c, const json_t *body)
     put(eq, "high", api_real(c, a.height.high));
     put(eq, "low", api_real(c, a.height.low));
     put(eq, "range", api_real(c, a.height.range));
-    put(eq, "gm_earth", api_real(c, q.gm_earth));
+    put(eq, "gm_on", api_real(c, a.on_gm));
+    put(eq, "gm_earth", api_real(c, a.on_gm)); /* the older name of gm_on */
     put(eq, "formula",
         json_string("h = GM r^4 (3 cos^2 theta - 1) / (2 GM_E d^3); range = "
                     "3 GM r^4 / (2 GM_E d^3) (notes: g h = 3 GM r^2 / (2 d^3))"));

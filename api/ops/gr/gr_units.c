@@ -6,6 +6,18 @@
 
 #include "ops/gr/gr_units.h"
 #include "mech/constants.h"
+#include "mech/named_bodies.h"
+
+/* The named body M names in the request's set (named_bodies, default
+ * "DE440"), or NULL when M is not a name. */
+static const struct mech_named_body *named_m(const json_t *body)
+{
+    const json_t *M = body ? json_object_get(body, "M") : NULL;
+    enum mech_body_set set = MECH_BODY_SET_DE440;
+    const char *sn = api_string_of(body, "named_bodies");
+    if (*sn && !mech_body_set_parse(sn, &set)) return NULL;
+    return json_is_string(M) ? mech_named_body(set, json_string_value(M)) : NULL;
+}
 
 /* Parse M and units; the set-up and its checks are mech_gr_units_init.
  * Returns 0 after recording an error. */
@@ -16,7 +28,11 @@ int api_gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_uni
     enum mech_gr_mass kind = MECH_GR_MASS_NONE;
     double value = NAN;
     if (json_is_string(M)) {
-        kind = !strcmp(json_string_value(M), "sun") ? MECH_GR_MASS_SUN : MECH_GR_MASS_EARTH;
+        /* a named body: its GM in the request's set (the schema allows only
+         * known names and sets) */
+        const struct mech_named_body *nb = named_m(body);
+        kind = MECH_GR_MASS_GM;
+        value = nb ? nb->gm : NAN;
     } else if (json_is_object(M) && json_object_get(M, "surface_gravity")) {
         /* g = GM/R^2 at R: GM = g R^2 */
         const double g = api_number_of(M, "surface_gravity"), r = api_number_of(M, "radius");
@@ -43,10 +59,8 @@ int api_gr_units_read(struct api_call *c, const json_t *body, struct mech_gr_uni
 static const char *mass_source(const struct api_call *c)
 {
     const json_t *M = c->body ? json_object_get(c->body, "M") : NULL;
-    if (json_is_string(M))
-        return !strcmp(json_string_value(M), "sun")
-                   ? "sun: GM = 1.32712440041279419e20 m^3/s^2 (JPL DE440, Park et al. 2021)"
-                   : "earth: GM = 3.986004418e14 m^3/s^2 (IERS Conventions 2010, WGS 84)";
+    const struct mech_named_body *nb = named_m(c->body);
+    if (nb) return nb->source;
     if (json_is_object(M) && json_object_get(M, "surface_gravity"))
         return "GM = g R^2 from the given surface gravity and radius";
     if (json_is_object(M)) return "GM as given";
@@ -74,6 +88,10 @@ json_t *api_gr_units_json(struct api_call *c, const struct mech_gr_units *u)
             j, "mass_kg", api_real(c, u->GM / MECH_GRAVITATIONAL_CONSTANT)); /* M = GM/G */
         const char *src = mass_source(c);
         if (src) json_object_set_new_nocheck(j, "GM_source", json_string(src));
+        if (c->body && json_is_string(json_object_get(c->body, "M"))) {
+            const char *sn = api_string_of(c->body, "named_bodies");
+            json_object_set_new_nocheck(j, "named_bodies", json_string(*sn ? sn : "DE440"));
+        }
     }
     return j;
 }

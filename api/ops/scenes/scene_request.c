@@ -67,10 +67,28 @@ static json_t *landing_json(struct api_call *c, const struct mech_scene_landing 
     return j;
 }
 
+/* The equations the run solved: the model asked for and the terms it kept. */
+static json_t *physics_model_json(enum mech_scene_model model,
+                                  const struct mech_trajectory_problem *p)
+{
+    const int cf = (p->fictitious & MECH_FICTITIOUS_CENTRIFUGAL) != 0;
+    json_t *j = json_object();
+    json_object_set_new_nocheck(j, "requested", json_string(mech_scene_model_name(model)));
+    json_object_set_new_nocheck(j, "name", json_string(cf ? "coriolis_centrifugal" : "coriolis"));
+    json_object_set_new_nocheck(
+        j, "equation",
+        json_string(cf ? "r'' = g - 2 w x r' - w x (w x r), r from the launch point: Coriolis "
+                         "and the change of the centrifugal term along the path"
+                       : "r'' = g - 2 w x r': Coriolis only, as most textbooks solve the "
+                         "scene (the centrifugal term at the launch point is inside the "
+                         "effective g; its change along the path is neglected)"));
+    return j;
+}
+
 static json_t *ballistic_answer(struct api_call *c, const char *scene,
                                 struct mech_scene_ballistic_result *r, json_t *parameters,
                                 json_t *formula, int south, const struct mech_vec3 *fwd,
-                                const char *accuracy)
+                                const char *accuracy, enum mech_scene_model model)
 {
     json_t *res = json_object();
     json_object_set_new_nocheck(res, "scene", json_string(scene));
@@ -115,7 +133,9 @@ static json_t *ballistic_answer(struct api_call *c, const char *scene,
     json_object_set_new_nocheck(res, "agreement", q);
     struct api_traj_request rq;
     api_scene_rq(&rq, &r->problem, &r->model, &r->choice, accuracy);
+    rq.auto_model = model == MECH_SCENE_MODEL_AUTO;
     json_object_set_new_nocheck(res, "model", api_traj_model(c, &rq, &r->run));
+    json_object_set_new_nocheck(res, "physics_model", physics_model_json(model, &r->problem));
     json_object_set_new_nocheck(res, "diagnostics", api_traj_diagnostics(c, &rq, &r->run));
     return res;
 }
@@ -131,6 +151,10 @@ int api_scene_earth_params(struct api_call *c, const json_t *body, struct mech_s
     memset(s, 0, sizeof *s);
     s->latitude_deg = api_number(body, "latitude_deg", 0);
     s->g = api_number_of(body, "g");
+    const char *m = api_string_of(body, "model");
+    s->model = !strcmp(m, "coriolis")               ? MECH_SCENE_MODEL_CORIOLIS
+               : !strcmp(m, "coriolis_centrifugal") ? MECH_SCENE_MODEL_CORIOLIS_CENTRIFUGAL
+                                                    : MECH_SCENE_MODEL_AUTO;
     return api_earth_rotation(c, body, "", "omega_magnitude", MECH_EARTH_OMEGA_SIDEREAL, &s->omega);
 }
 
@@ -163,6 +187,7 @@ json_t *api_scene_run_ballistic(struct api_call *c, const json_t *body, const ch
     if (sd.dry_run) {
         struct api_traj_request rq;
         api_scene_rq(&rq, &r->problem, &r->model, &r->choice, api_scene_accuracy_name(body));
+        rq.auto_model = sd.model == MECH_SCENE_MODEL_AUTO;
         rq.dry_run = 1;
         json_decref(parameters);
         json_decref(formula);
@@ -170,8 +195,9 @@ json_t *api_scene_run_ballistic(struct api_call *c, const json_t *body, const ch
         free(r);
         return res;
     }
-    json_t *res =
-        ballistic_answer(c, scene, r, parameters, formula, south, fwd, api_scene_accuracy_name(body));
+    json_object_set_new_nocheck(parameters, "model", json_string(mech_scene_model_name(sd.model)));
+    json_t *res = ballistic_answer(c, scene, r, parameters, formula, south, fwd,
+                                   api_scene_accuracy_name(body), sd.model);
     free(r);
     return res;
 }

@@ -27,7 +27,8 @@ void api_scene_rq(struct api_traj_request *rq, const struct mech_trajectory_prob
                   const char *accuracy);
 
 /* The Earth's parameters of a ballistic scene into *s (zeroed first): latitude_deg,
- * g and the rotation rate (omega_magnitude or sidereal_day, not both). 1 on
+ * g, the model (auto, coriolis or coriolis_centrifugal: the schema's enum) and
+ * the rotation rate (omega_magnitude or sidereal_day, not both). 1 on
  * success, 0 after recording an error. */
 int api_scene_earth_params(struct api_call *c, const json_t *body, struct mech_scene_ballistic *s);
 
