@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "json_read.h"
-#include "mech/boost.h"
+#include "mech/relativity/boost.h"
 #include "real_format.h"
 
 /* The schema's bounds (api/ops/relativity/boost.json). */

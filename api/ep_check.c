@@ -29,7 +29,7 @@
 #include "check_slip.h"
 #include "check_tree.h"
 #include "grading_nest.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 #include "endpoint.h"
 #include "respond.h"
 

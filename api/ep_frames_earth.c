@@ -13,10 +13,10 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/earth_gravity_answer.h"
-#include "mech/effective_force.h"
-#include "mech/tides_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/earth_gravity_answer.h"
+#include "mech/frames/effective_force.h"
+#include "mech/answers/frames/tides_answer.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

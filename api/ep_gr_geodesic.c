@@ -15,11 +15,11 @@
 #include "endpoint.h"
 #include "ep_gr_units.h"
 #include "integrator_block.h"
-#include "mech/constants.h"
-#include "mech/geodesic.h"
-#include "mech/geodesic_run.h"
-#include "mech/geodesic_setup.h"
-#include "mech/gr_units.h"
+#include "mech/base/constants.h"
+#include "mech/gr/geodesic.h"
+#include "mech/answers/gr/geodesic_run.h"
+#include "mech/answers/gr/geodesic_setup.h"
+#include "mech/gr/gr_units.h"
 #include "trajectory_request.h"
 
 /* Constants (documented in the route's description). */

@@ -9,7 +9,7 @@
 
 #include "endpoint.h"
 #include "ep_gr_units.h"
-#include "mech/schwarzschild_answer.h"
+#include "mech/answers/gr/schwarzschild_answer.h"
 
 #define MICROSECONDS_PER_DAY 86400e6
 

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "ep_gr_units.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 /* Parse M and units; the set-up and its checks are mech_gr_units_init.
  * Returns 0 after recording an error. */

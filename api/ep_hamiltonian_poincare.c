@@ -13,7 +13,7 @@
 
 #include "endpoint.h"
 #include "ep_hamiltonian_request.h"
-#include "mech/poincare_orbits.h"
+#include "mech/answers/hamiltonian/poincare_orbits.h"
 
 static void set(json_t *o, const char *key, json_t *v)
 {

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "endpoint.h"
-#include "mech/boost.h"
+#include "mech/relativity/boost.h"
 #include "velocity_request.h"
 
 /* ---- request bounds (api/ops/relativity/boost.json) ----------------------

@@ -7,8 +7,8 @@
 #include <stdlib.h>
 
 #include "endpoint.h"
-#include "mech/charged_motion_answer.h"
-#include "mech/constants.h"
+#include "mech/answers/relativity/charged_motion_answer.h"
+#include "mech/base/constants.h"
 #include "velocity_request.h"
 
 static double *times_of(const json_t *a, size_t *n)

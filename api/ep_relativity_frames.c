@@ -11,12 +11,12 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/interval.h"
-#include "mech/velocity_addition.h"
-#include "mech/telescope.h"
-#include "mech/worldline_answer.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/interval.h"
+#include "mech/relativity/velocity_addition.h"
+#include "mech/relativity/telescope.h"
+#include "mech/answers/relativity/worldline_answer.h"
 #include "velocity_request.h"
 
 /* ======================= velocity addition ================================= */

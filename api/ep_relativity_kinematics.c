@@ -17,12 +17,12 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/collision_answer.h"
-#include "mech/decay_estimate.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/answers/relativity/collision_answer.h"
+#include "mech/relativity/decay_estimate.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "kin_request.h"
 
 

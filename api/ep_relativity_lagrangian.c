@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/charged_lagrangian.h"
+#include "mech/relativity/charged_lagrangian.h"
 #include "velocity_request.h"
 
 json_t *api_op_relativity_lagrangian(struct api_call *c, const json_t *body)

@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/doppler_answer.h"
-#include "mech/em_fields.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/doppler_answer.h"
+#include "mech/relativity/em_fields.h"
 #include "velocity_request.h"
 
 

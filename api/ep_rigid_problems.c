@@ -3,13 +3,13 @@
  *   POST /v1/rigid/struck-ball         (notes §2.11 HW 3: rolling without slipping)
  *   POST /v1/rigid/topple              (notes §2.11 HW 4: a box falling off its edge)
  * JSON <-> core only: physics and derivations in core/rigid/rigid_problems.c and
- * mech/rigid_problems.h. */
+ * mech/rigid/rigid_problems.h. */
 #include <math.h>
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/rigid_problems.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_problems.h"
 
 
 static void set_real(struct api_call *c, json_t *o, const char *k, double x)

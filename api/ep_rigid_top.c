@@ -11,7 +11,7 @@
 
 #include "endpoint.h"
 #include "integrator_block.h"
-#include "mech/top_answer.h"
+#include "mech/answers/rigid/top_answer.h"
 
 static void set(json_t *o, const char *key, json_t *v)
 {

@@ -2,7 +2,7 @@
  * /v1/rotation/apply: one rotation in every representation, the product of a
  * list of rotations, and a rotation applied to vectors and rank-2 tensors.
  * JSON <-> core only: the parsing and encoding of a rotation is
- * rotation_request.c, the mathematics core/rotation/rotation.c (mech/rotation.h). */
+ * rotation_request.c, the mathematics core/rotation/rotation.c (mech/rotation/rotation.h). */
 #include <stdlib.h>
 #include <string.h>
 

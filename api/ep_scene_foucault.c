@@ -16,9 +16,9 @@
 #include "earth_rotation.h"
 #include "endpoint.h"
 #include "integrator_block.h"
-#include "mech/constants.h"
-#include "mech/foucault_scene.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/foucault_scene.h"
+#include "mech/frames/trajectory.h"
 #include "trajectory_request.h"
 
 /* diagnostics.selection, the shape every time-evolution operation gives it

@@ -14,11 +14,11 @@
 
 #include "earth_rotation.h"
 #include "endpoint.h"
-#include "mech/constants.h"
-#include "mech/rotating_table_scene.h"
-#include "mech/scenes.h"
-#include "mech/scenes_first_order.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/rotating_table_scene.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/scenes_first_order.h"
+#include "mech/frames/trajectory.h"
 #include "integrator_block.h"
 #include "trajectory_request.h"
 

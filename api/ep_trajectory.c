@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "endpoint.h"
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 #include "trajectory_relativity.h"
 #include "trajectory_request.h"
 

@@ -1,10 +1,10 @@
 /* reference.c — exact and first-order reference solutions for trajectories
- * (mech/reference.h): Kepler (by core/ode/kepler.c's universal variables),
+ * (mech/frames/reference.h): Kepler (by core/ode/kepler.c's universal variables),
  * the harmonic oscillator, uniform gravity with linear drag, the first-order
  * Coriolis solution, and the recognition of which one a scene has.
  */
-#include "mech/reference.h"
-#include "mech/constants.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <math.h>

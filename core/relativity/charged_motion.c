@@ -1,13 +1,13 @@
 /* charged_motion.c — exact special-relativistic motion of a charge in
- * uniform static fields (mech/charged_motion.h): boost to the frame where
+ * uniform static fields (mech/relativity/charged_motion.h): boost to the frame where
  * E and B are parallel, the hyperbolic-plus-circular motion there in proper
  * time, the displacement boosted back; lab time inverted to proper time. */
-#include "mech/charged_motion.h"
+#include "mech/relativity/charged_motion.h"
 
 #include <float.h>
 #include <math.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 const char *mech_charged_field_kind_name(enum mech_charged_field_kind k)
 {

@@ -1,12 +1,12 @@
 /* charged_motion_answer.c — one /v1/relativity/charge-in-fields answer
- * (mech/charged_motion_answer.h) from the exact motion of charged_motion.c. */
-#include "mech/charged_motion_answer.h"
+ * (mech/answers/relativity/charged_motion_answer.h) from the exact motion of charged_motion.c. */
+#include "mech/answers/relativity/charged_motion_answer.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for parameter paths */
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 static enum mech_status times_check(const double *x, size_t n, const char *name,
                                     struct mech_error *err)

@@ -17,9 +17,9 @@
 
 #include "api.h"
 #include "ep_integrators.h"
-#include "mech/budget.h"
-#include "mech/ode.h"
-#include "mech/vec.h"
+#include "mech/base/budget.h"
+#include "mech/ode/ode.h"
+#include "mech/base/vec.h"
 #include "routes.h"
 #include "testlib.h"
 #include "trajectory_request.h"

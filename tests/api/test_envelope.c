@@ -12,7 +12,7 @@
 
 #include "api.h"
 #include "catalog.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "routes.h"
 #include "testlib.h"
 

@@ -27,7 +27,7 @@
 #include <string.h>
 
 #include "json_write.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "real_format.h"
 #include "testlib.h"
 

@@ -16,8 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/charged_motion.h"
-#include "mech/constants.h"
+#include "mech/relativity/charged_motion.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 #define QP 1.602176634e-19     /* C, exact SI */

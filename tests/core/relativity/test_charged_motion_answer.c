@@ -16,8 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/charged_motion_answer.h"
-#include "mech/constants.h"
+#include "mech/answers/relativity/charged_motion_answer.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 #define QP 1.602176634e-19
