@@ -47,7 +47,7 @@ static enum mech_status cf_state(struct cf_ctx *c, double t, struct mech_vec3 *r
         return MECH_OK;
     }
     if (c->relativistic) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&c->ref.charged, t, &cs, c->err);
         if (st != MECH_OK) return st;
         *r = cs.r;

@@ -319,7 +319,7 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
         *r = rodrigues(k, c, sn, ri);
         *v = mech_vec3_sub(rodrigues(k, c, sn, vi), mech_vec3_cross(ref->spin, *r));
     } else if (!strcmp(ref->name, "relativistic_uniform_fields")) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&ref->charged, t, &cs, err);
         if (st != MECH_OK) return st;
         *r = cs.r;

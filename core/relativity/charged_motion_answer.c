@@ -27,8 +27,8 @@ static enum mech_status times_check(const double *x, size_t n, const char *name,
 
 enum mech_status mech_charged_answer(const struct mech_charged_question *q,
                                      struct mech_charged_answer *a,
-                                     struct mech_charged_state *states_t,
-                                     struct mech_charged_state *states_tau,
+                                     struct mech_charged_motion_state *states_t,
+                                     struct mech_charged_motion_state *states_tau,
                                      struct mech_error *err)
 {
     if (!q || !a) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");

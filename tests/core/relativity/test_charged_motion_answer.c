@@ -32,7 +32,7 @@ int main(void)
 {
     gsl_set_error_handler_off();
     struct mech_charged_answer a;
-    struct mech_charged_state st[4], sp[4];
+    struct mech_charged_motion_state st[4], sp[4];
     struct mech_error e;
 
     /* E x B drift, proton, E = 0.8 c (1 T) along y, B = 1 T along z */

@@ -88,7 +88,7 @@ struct mech_charged_motion {
 };
 
 /* One state on the worldline. */
-struct mech_charged_state {
+struct mech_charged_motion_state {
     double t;                /* lab time since the start, s */
     double tau;              /* proper time since the start, s */
     struct mech_vec3 r;      /* lab position, m */
@@ -112,14 +112,14 @@ enum mech_status mech_charged_motion_init(struct mech_vec3 eps, struct mech_vec3
  * MECH_EINVAL (NULL, tau not finite or < 0, param "tau"); MECH_ENUMERIC (the
  * state overflows: gamma beyond ~1e300, param "tau"). */
 enum mech_status mech_charged_motion_at_proper_time(const struct mech_charged_motion *m,
-                                                    double tau, struct mech_charged_state *s,
+                                                    double tau, struct mech_charged_motion_state *s,
                                                     struct mech_error *err);
 
 /* The state at lab time t >= 0 (s) since the start (proper time found as
  * the header says). Statuses: those of mech_charged_motion_at_proper_time,
  * param "t". */
 enum mech_status mech_charged_motion_at_lab_time(const struct mech_charged_motion *m, double t,
-                                                 struct mech_charged_state *s,
+                                                 struct mech_charged_motion_state *s,
                                                  struct mech_error *err);
 
 #endif

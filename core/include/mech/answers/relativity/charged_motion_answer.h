@@ -69,8 +69,8 @@ struct mech_charged_answer {
  * "E"); MECH_ENUMERIC (a state overflows: "times/i", "proper_times/i"). */
 enum mech_status mech_charged_answer(const struct mech_charged_question *q,
                                      struct mech_charged_answer *a,
-                                     struct mech_charged_state *states_t,
-                                     struct mech_charged_state *states_tau,
+                                     struct mech_charged_motion_state *states_t,
+                                     struct mech_charged_motion_state *states_tau,
                                      struct mech_error *err);
 
 #endif
