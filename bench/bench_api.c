@@ -13,7 +13,7 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 
 static double per_call(double seconds, void (*fn)(const struct api_route *), const struct api_route *r)
 {

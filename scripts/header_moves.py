@@ -8,7 +8,8 @@ Usage:
   scripts/header_moves.py [FILE ...]   rewrite `mech/<name>.h` (and
         `core/include/mech/<name>.h`) in the given files, or, with no
         argument, in every tracked text file except the operations' data
-        (api/ops/: their descriptions are served by GET /v1 as they stand)
+        (api/ops/**/*.json: their descriptions are served by GET /v1 as they
+        stand)
   scripts/header_moves.py --git-mv     move the headers themselves (once)
 A branch that still includes the old flat names needs only the first form
 after merging main.
@@ -19,7 +20,7 @@ import subprocess
 import sys
 
 DOMAINS = {
-    "base": "budget compensated constants status vec",
+    "base": "budget compensated constants named_bodies status vec",
     "ode": "accuracy chooser chooser_pilot kepler method_choice ode",
     "rotation": "attitude euler_rates rotation vector_algebra",
     "rigid": "inertia mesh rigid_closed_form rigid_problems rigid_rotation stability "
@@ -29,7 +30,7 @@ DOMAINS = {
               "scenes_first_order tides trajectory trajectory_plan trajectory_problem",
     "relativity": "boost charged_lagrangian charged_motion decay_estimate doppler "
                   "elastic_scattering em_fields four_vector interval kinematics "
-                  "michelson_morley particle_state particles relativistic_force rocket "
+                  "mass_energy michelson_morley particle_state particles relativistic_force rocket "
                   "telescope velocity_addition worldline",
     "gr": "geodesic gr_units radial_infall schwarzschild",
     "hamiltonian": "apsides circular_orbit coupled_oscillations hamiltonian liouville "
@@ -74,8 +75,9 @@ def tracked():
                          check=True).stdout.split("\n")
     for f in out:
         base = os.path.basename(f)
-        if f and not f.startswith("api/ops/") and (f.endswith(TEXT) or base in (
-                "CMakeLists.txt", "Makefile", "Dockerfile")):
+        data = f.startswith("api/ops/") and f.endswith(".json")
+        if f and not data and (f.endswith(TEXT) or base in ("CMakeLists.txt", "Makefile",
+                                                             "Dockerfile")):
             yield os.path.join(ROOT, f)
 
 

@@ -13,10 +13,10 @@ every file and writes, into OUT_DIR (the build tree):
                    request_schema, example, reports_cost, quick,
                    response_schema) line per operation, in catalog order: an
                    X-macro file (as Redis generates commands.def from
-                   src/commands/*.json). api/routes.c expands it into the
+                   src/commands/*.json). api/run/routes.c expands it into the
                    route table.
   ops_handlers.h   the prototype of every handler, included by the handler
-                   files (api/endpoint.h) so the compiler checks each one.
+                   files (api/run/endpoint.h) so the compiler checks each one.
   ops.stamp        written on every successful run (ops.def and
                    ops_handlers.h are rewritten only when their text changes,
                    so an edit that does not change them recompiles nothing).
@@ -28,8 +28,8 @@ catalog's curl line quotes it.
 
 A response schema's properties and items may carry the annotation
 "x-mechd-check": {"kind": K, "unit": U} (what the field is for POST
-/v1/check: api/check_field.h, docs/grading.md "Kinds and units"); K must be
-a kind and U a unit of api/check_kind.c (read from its kind_names[] and
+/v1/check: api/check/check_field.h, docs/grading.md "Kinds and units"); K must be
+a kind and U a unit of api/check/check_kind.c (read from its kind_names[] and
 units[] tables when --sources is given), or a template such as
 "{/energy_unit}/c" whose every expansion (the enum of the answer's string at
 /energy_unit, or of the request property energy_unit) is one; no other "x-"
@@ -56,7 +56,7 @@ import os
 import re
 import sys
 
-ENVELOPE_KEYS = ("cost",)  # added to every POST schema by api/routes.c
+ENVELOPE_KEYS = ("cost",)  # added to every POST schema by api/run/routes.c
 METHODS = ("GET", "POST")
 REQUIRED = {"path": str, "method": str, "summary": str, "description": str, "handler": str,
             "flags": dict, "response_schema": dict}
@@ -113,10 +113,10 @@ CHECK_KEY = "x-mechd-check"  # what a field of the answer is, for POST /v1/check
 
 def check_vocabulary(src_dir):
     """The kind and unit names POST /v1/check knows, read from the C tables of
-    SRC_DIR/check_kind.c (kind_names[], units[]): (kinds, units)."""
-    rel = "api/check_kind.c"
+    SRC_DIR/check/check_kind.c (kind_names[], units[]): (kinds, units)."""
+    rel = "api/check/check_kind.c"
     try:
-        text = open(os.path.join(src_dir, "check_kind.c"), encoding="utf-8").read()
+        text = open(os.path.join(src_dir, "check", "check_kind.c"), encoding="utf-8").read()
     except OSError as e:
         fail(rel, "cannot read: %s" % e)
     m = re.search(r"kind_names\[API_KIND_COUNT\]\s*=\s*\{(.*?)\};", text, re.S)
@@ -201,7 +201,7 @@ def check_annotations(schema, rel, where, vocab, allowed, doc, props_map=False):
             for unit in unit_expansions(val.get("unit"), doc, rel, here):
                 if vocab and unit not in vocab[1]:
                     fail(rel, '%s/unit: unknown unit "%s" (known: %s; add a unit to '
-                         "api/check_kind.c units[] first)"
+                         "api/check/check_kind.c units[] first)"
                          % (here, unit, ", ".join(sorted(vocab[1]))))
             continue
         if key in ("examples", "default", "const", "enum"):
@@ -285,8 +285,8 @@ def collect(ops_dir, src_dir=None):
         for f in sorted(files):
             full = os.path.join(dirpath, f)
             rel = os.path.relpath(full, ops_dir)
-            if full == order_path:
-                continue
+            if full == order_path or f.endswith((".c", ".h")):
+                continue  # the handlers and their readers live beside their data
             if not f.endswith(".json") or os.sep not in rel or rel.count(os.sep) != 1:
                 fail(os.path.join(os.path.basename(ops_dir), rel),
                      "not an operation file: expected <domain>/<operation>.json")

@@ -54,13 +54,22 @@ int answer_admit(void *ctx, long route, double samples)
     double units = samples * SRV_ANSWER_SAMPLE_UNITS + (double)r->body_len + SRV_ANSWER_BASE_UNITS;
     double predicted = units * (double)ratio / SRV_ANSWER_RATIO_ONE;
     if (!(predicted >= 0) || predicted > 1e18) predicted = 1e18;
-    long wait_ms = 0;
+    long wait_ms = r->gate_attempt ? -1 : 0; /* a gated attempt's refusal is no refusal */
     if (!srv_io_current()) { /* a worker may wait; an I/O thread must not */
         double left_ms = (r->areq.deadline - mech_clock_seconds()) * 1000.0;
         wait_ms = left_ms < SRV_MEM_WAIT_MS ? (long)left_ms : SRV_MEM_WAIT_MS;
     }
+    r->samples = samples;
     size_t got = srv_mem_reserve(h->mem, (size_t)predicted, wait_ms, &r->cancel);
-    if (got == 0 && predicted >= 1.0) return 1;
+    if (got == 0 && predicted >= 1.0) {
+        /* Started on the I/O thread under the cost gate: not refused here,
+         * but sent to a worker, which may wait for memory. */
+        if (r->gate_attempt) {
+            r->mem_deferred = 1;
+            return 0;
+        }
+        return 1;
+    }
     r->charged = got;
     r->mem_units = units;
     if (r->route_index < 0) r->route_index = route; /* learn under this route; metrics label */

@@ -84,7 +84,7 @@ size_t srv_mem_reserve(struct srv_mem *m, size_t n, long wait_ms, const volatile
         m->used += n;
         if (m->used > m->peak) m->peak = m->used;
         got = n;
-    } else {
+    } else if (wait_ms >= 0) {
         m->refused++;
     }
     pthread_mutex_unlock(&m->mu);

@@ -21,7 +21,8 @@ void srv_mem_free(struct srv_mem *m);
  * (to be given back with srv_mem_release or srv_mem_adjust), or 0 when they
  * did not fit: when wait_ms > 0 the caller first waits up to wait_ms for
  * answers to be released, giving up early once *cancel (may be NULL) is
- * nonzero. A refusal is counted (srv_mem_stats). n == 0 reserves nothing and
+ * nonzero. A refusal is counted (srv_mem_stats), except with wait_ms < 0 (a
+ * try that will be made again elsewhere). n == 0 reserves nothing and
  * returns 0 without counting. */
 size_t srv_mem_reserve(struct srv_mem *m, size_t n, long wait_ms, const volatile int *cancel);
 

@@ -106,8 +106,8 @@ static const struct opt_spec {
                                 "(headers and body, counted from the connection or its previous "
                                 "answer); slower connections are closed"},
     [OPT_INLINE_MAX_US] = {"--inline-max-us", "MECHD_INLINE_MAX_US", "100", 0, 1000000,
-                           "a quick operation (closed form, small body) is answered on an I/O "
-                           "thread while its measured CPU cost predicts at most this many µs; "
+                           "a quick operation (closed form) or a trajectory is answered on an "
+                           "I/O thread while its predicted CPU cost is at most this many µs; "
                            "0: every operation goes to the workers"},
     [OPT_WORKER_NICE] = {"--worker-nice", "MECHD_WORKER_NICE", "0", 0, 19,
                          "how much lower the compute workers' scheduling priority is than the "

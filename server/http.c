@@ -341,12 +341,12 @@ static enum MHD_Result answer_server_problem(struct srv_req *r, enum api_problem
 }
 
 /* A CORS preflight (OPTIONS with Origin and Access-Control-Request-Method) of
- * /v1: 204 with the allowed methods and headers for a listed origin, else the
- * 403 (SECURITY, http_security.c, decides). */
+ * /v1 from a listed origin: 204 with the allowed methods and headers
+ * (SECURITY, http_security.c, decides). A preflight from any other origin is
+ * answered as a plain OPTIONS (answer_options): Allow and no CORS headers, so
+ * the browser refuses the cross-origin request itself. */
 static enum MHD_Result answer_preflight(struct srv_req *r)
 {
-    const char *refused = srv_preflight_refusal(r->cors_ok);
-    if (refused) return answer_server_problem(r, API_PROBLEM_CORS_FORBIDDEN, refused);
     struct MHD_Response *mr =
         MHD_create_response_from_buffer(0, (void *)"", MHD_RESPMEM_PERSISTENT);
     r->state = REQ_ANSWERED;
@@ -443,9 +443,10 @@ static int server_route(struct srv_http *h, struct srv_req *r, enum MHD_Result *
     return 1;
 }
 
-/* OPTIONS that is not a CORS preflight (RFC 9110 9.3.7): 204 with Allow for
- * a path that exists (and Access-Control-Allow-Origin for a listed origin),
- * 404 otherwise. */
+/* OPTIONS that is not an allowed CORS preflight (RFC 9110 9.3.7): 204 with
+ * Allow for a path that exists (and Access-Control-Allow-Origin for a listed
+ * origin), 404 otherwise. A preflight from an origin not listed gets this
+ * answer too: no Access-Control-* header. */
 static enum MHD_Result answer_options(struct srv_req *r)
 {
     const char *allow = allowed_methods(r->path);
@@ -481,7 +482,7 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
                  h->cfg->max_body);
         return answer_problem(r, API_PROBLEM_BODY_TOO_LARGE, detail);
     }
-    if (r->preflight) return answer_preflight(r);
+    if (r->preflight && r->cors_ok) return answer_preflight(r);
     if (strcmp(r->method, MHD_HTTP_METHOD_OPTIONS) == 0) return answer_options(r);
     enum MHD_Result ret;
     if (server_route(h, r, &ret)) return ret;
@@ -518,6 +519,14 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
             return answer(r, &r->aresp);
         }
     }
+    /* An operation that predicts its cost: started here under the cost gate,
+     * finished here when predicted cheap (see GATED OPERATIONS, quick.c). */
+    long gi = qi >= 0 || r->query_request ? -1 : api_gated_route(r->method, r->path);
+    if (gi >= 0) {
+        r->route_index = gi;
+        r->gated = 1;
+        if (gate_try_inline(h, r)) return answer(r, &r->aresp);
+    }
     switch (srv_pool_reserve(h->pool)) {
     case SRV_POOL_FULL:
         /* A quick operation predicted too slow to answer here is still
@@ -545,7 +554,8 @@ static enum MHD_Result dispatch(struct srv_http *h, struct srv_req *r)
         break;
     }
     r->state = REQ_QUEUED;
-    r->job.short_job = r->quick_route; /* a closed form: the express worker may take it */
+    /* A closed form, or an operation predicted short: the express worker may take it. */
+    r->job.short_job = r->quick_route || r->job.short_job;
     watch_add(h, r);
     MHD_suspend_connection(r->conn);
     /* Cannot fail; may run req_cancel (and resume) at once if the pool stopped. */

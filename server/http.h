@@ -4,7 +4,8 @@
  * (cfg->request_timeout_ms) and the connection limit (cfg->max_connections:
  * the longest-waiting idle connection makes room; connections whose client
  * has gone are reaped), answers the server-owned routes (/healthz, /metrics,
- * /), cheap GETs and quick POSTs (api_quick_route) inline, and hands
+ * /), cheap GETs, quick POSTs (api_quick_route) and gated POSTs predicted
+ * cheap (api_gated_route) inline, and hands
  * everything else to the worker pool with suspend/resume; a queued job whose
  * client hangs up leaves the queue at once.
  *

@@ -147,6 +147,7 @@ struct srv_http *srv_http_start(const struct srv_config *cfg, struct srv_pool *p
         atomic_init(&h->quick[i].cost, 0);
         atomic_init(&h->quick[i].runs, 0);
         atomic_init(&h->quick[i].too_slow, 0);
+        atomic_init(&h->quick[i].ratio, 0);
     }
     atomic_init(&h->next_id, 0);
     atomic_init(&h->stopping, 0);

@@ -48,6 +48,13 @@
 #define SRV_QUICK_REPROBE 64u        /* a route predicted too slow runs inline once in this many */
 #define SRV_QUICK_FULL_FACTOR 16.0   /* with the queue full, a quick route predicted at most this
                                         many times --inline-max-us runs inline instead of a 503 */
+#define SRV_GATE_BODY_MAX (16u << 10) /* a gated request is started on the I/O thread (parsed,
+                                        validated, its cost predicted) only up to this body */
+#define SRV_GATE_RATIO_ONE 1024      /* fixed point of a gated route's measured/predicted CPU */
+#define SRV_GATE_RATIO_MIN 256       /* ... kept within 1/4 .. 4 of the chooser's prediction */
+#define SRV_GATE_RATIO_MAX 4096
+#define SRV_GATE_SAMPLE_NS 1000.0    /* encoding one sample of an answer, beside the prediction */
+#define SRV_SHORT_JOB_US 2000.0      /* a gated request predicted within this is a short job */
 
 /* Sent with every answer mechd builds (static files carry their own set from
  * static.c: same nosniff / Referrer-Policy / X-Frame-Options, a CSP that lets
@@ -68,6 +75,8 @@ struct srv_quick_stat {
     atomic_uint runs;    /* runs so far: every SRV_QUICK_SAMPLE-th is measured */
     atomic_uint too_slow; /* requests predicted over --inline-max-us: every
                              SRV_QUICK_REPROBE-th runs inline anyway */
+    atomic_llong ratio;   /* a gated route's moving average of thread CPU per predicted
+                             CPU (SRV_GATE_RATIO_ONE = as predicted); 0 = not measured */
 };
 
 /* Receive state of a connection (struct srv_conn.rx), switched by CAS. */
@@ -201,6 +210,12 @@ struct srv_req {
     long route_index;    /* route index (api.h) of a POST to an operation, else -1 */
     int quick_route;     /* route is quick and the body small enough (api_quick_route) */
     int quick_probe;     /* runs inline although predicted too slow: measure it */
+    int gated;           /* a POST to a gated route (api_gated_route, see GATED OPERATIONS) */
+    int gate_attempt;    /* being started on the I/O thread under the cost gate */
+    int mem_deferred;    /* ... and its answer memory did not fit: stop at the gate */
+    double predicted_cpu_s; /* what the gate was told (-1 unknown, 0 not asked) */
+    double samples;      /* samples the request asks for (answer_admit) */
+    double gate_est_ns;  /* the estimate the gate decided on (0: none) */
     struct srv_req *watch_prev, *watch_next; /* in http->watched, under watch_mu */
     int watching;
 };
@@ -245,6 +260,13 @@ void take_body(struct srv_http *h, struct srv_req *r, const char *data, size_t n
 /* quick.c */
 void run_api(struct srv_req *r);
 int quick_inline(struct srv_http *h, struct srv_req *r);
+/* A POST to a gated route: start it on the I/O thread under the cost gate
+ * when --inline-max-us allows and its body is at most SRV_GATE_BODY_MAX.
+ * Returns 1 when r->aresp holds its answer (computed here, or a problem),
+ * 0 when it must go to the pool (the gate stopped it, or it was not started
+ * here): r->aext then carries the recording gate for the worker's run and
+ * r->job.short_job says whether the prediction makes it a short job. */
+int gate_try_inline(struct srv_http *h, struct srv_req *r);
 /* 1 if a quick route's request is predicted to cost at most SRV_QUICK_FULL_FACTOR
  * times --inline-max-us (0 when --inline-max-us is 0): run inline rather than
  * refused when the queue is full. */

@@ -4,9 +4,11 @@
  * SECURITY. With --token-file, every /v1 request needs the bearer token
  * (checked on the first callback, before any body byte is read; compared in
  * constant time); /healthz, /metrics, /problems/... and the front end stay open.
- * The 401 and the preflight's 403 are the problem table's (api/problem.c).
+ * The 401 is the problem table's (api/http/problem.c).
  * CORS is off unless --cors-origin lists origins: only those get
- * Access-Control-Allow-Origin on /v1 answers and a 204 to a preflight. Every
+ * Access-Control-Allow-Origin on /v1 answers and a 204 with the allowed
+ * methods and headers to a preflight; a preflight from any other origin is
+ * answered as a plain OPTIONS (204 with Allow, no CORS header). Every
  * answer built here carries nosniff, Referrer-Policy, X-Frame-Options and a
  * CSP of default-src 'none' (static files carry static.c's own set).
  * Answers libmicrohttpd writes itself (431 header too large, 400 on a broken
@@ -100,13 +102,6 @@ void srv_access_check(const struct srv_config *cfg, struct MHD_Connection *conn,
         given ? "Bearer realm=\"mechd\", error=\"invalid_token\"" : "Bearer realm=\"mechd\"";
     out->refusal = given ? "the bearer token is not valid for this server"
                          : "this server requires 'Authorization: Bearer TOKEN' for /v1";
-}
-
-/* CORS preflight for /v1: 204 with the allowed methods and headers for a
- * listed origin, else 403. */
-const char *srv_preflight_refusal(int cors_ok)
-{
-    return cors_ok ? NULL : "this origin is not in the server's --cors-origin list";
 }
 
 void srv_preflight_headers(struct MHD_Response *mr)

@@ -15,8 +15,9 @@
 struct srv_access {
     int cors_ok;     /* Origin is in --cors-origin: answers carry Access-Control-Allow-Origin */
     int vary_origin; /* a /v1 answer while CORS is on: answers carry Vary: Origin */
-    int preflight;   /* a CORS preflight of /v1: answer it with srv_preflight_* once
-                        the request is complete (it carries no credentials) */
+    int preflight;   /* a CORS preflight of /v1 (it carries no credentials): once the
+                        request is complete, answer it with srv_preflight_headers if
+                        cors_ok, else as a plain OPTIONS (Allow, no CORS header) */
     const char *refusal;          /* the 401's detail (the token is missing or wrong), or
                                      NULL: the request may go on */
     const char *www_authenticate; /* the 401's WWW-Authenticate value, with refusal */
@@ -29,11 +30,6 @@ struct srv_access {
 void srv_access_check(const struct srv_config *cfg, struct MHD_Connection *conn,
                       const char *method, const char *path, const char *origin,
                       struct srv_access *out);
-
-/* The 403 detail for a preflight from an origin not listed (cors_ok 0), or
- * NULL when the preflight is allowed (then answer 204 with
- * srv_preflight_headers). */
-const char *srv_preflight_refusal(int cors_ok);
 
 /* Add an allowed preflight's Access-Control-Allow-Methods, -Allow-Headers
  * and -Max-Age to mr (borrowed). */

@@ -27,6 +27,25 @@
  * is measured) once in SRV_QUICK_REPROBE requests, so a full pool that
  * refuses it cannot freeze a stale estimate. The first request of a route runs
  * inline.
+ *
+ * GATED OPERATIONS. An operation whose cost is not linear in its body (an
+ * integration) but predicted by its chooser before it integrates
+ * (api_gated_route: /v1/trajectory) is started on the I/O thread under a cost
+ * gate (api_request_ext.gate), whatever its body's size up to
+ * SRV_GATE_BODY_MAX: parsed, validated, its answer memory admitted and its
+ * method chosen there. The gate then decides from the prediction: the
+ * chooser's predicted CPU plus SRV_GATE_SAMPLE_NS per sample asked for, times
+ * the route's measured ratio of thread CPU to that prediction (a moving
+ * average like the quick routes' cost, from 1 until measured, kept within
+ * 1/4 .. 4). Predicted within --inline-max-us, it is computed and answered on
+ * the I/O thread; else it stops before computing anything and goes to the
+ * pool (a short job when predicted within SRV_SHORT_JOB_US: the express
+ * worker may take it), which runs it again from its body. A run with no
+ * prediction (a method and step given by the client, the first pass of
+ * "fictitious": "auto") or whose answer memory must wait goes to the pool as
+ * a long job. The first parse is the price of deciding from the cost: a few
+ * microseconds per kilobyte, against a hand-off that a cheap integration no
+ * longer pays.
  */
 #ifdef __linux__
 #define _GNU_SOURCE /* POLLRDHUP */
@@ -85,21 +104,101 @@ static void quick_record(struct srv_quick_stat *q, long long cpu_ns, size_t body
                           memory_order_relaxed);
 }
 
-/* Run the API on r; for a quick route, measure the run's thread CPU time on
- * one run in SRV_QUICK_SAMPLE (and on every probe) for the route's average. */
+/* The gated request r's predicted thread CPU in ns before the route's ratio:
+ * the chooser's prediction + SRV_GATE_SAMPLE_NS per sample. */
+static double gate_base_ns(const struct srv_req *r)
+{
+    return r->predicted_cpu_s * 1e9 + r->samples * SRV_GATE_SAMPLE_NS;
+}
+
+static double gate_estimate_ns(const struct srv_http *h, const struct srv_req *r)
+{
+    long long ratio = h->quick ? atomic_load_explicit(&h->quick[r->route_index].ratio,
+                                                      memory_order_relaxed)
+                               : 0;
+    if (ratio <= 0) ratio = SRV_GATE_RATIO_ONE;
+    return gate_base_ns(r) * (double)ratio / SRV_GATE_RATIO_ONE;
+}
+
+/* Fold one measured full run of a gated request (cpu_ns of thread CPU) into
+ * its route's ratio: weight 1/8, within SRV_GATE_RATIO_MIN .. _MAX. */
+static void gate_record_run(struct srv_quick_stat *q, long long cpu_ns, const struct srv_req *r)
+{
+    double base = gate_base_ns(r);
+    if (!(base > 0)) return;
+    double m = (double)cpu_ns * SRV_GATE_RATIO_ONE / base;
+    long long measured = m < SRV_GATE_RATIO_MIN   ? SRV_GATE_RATIO_MIN
+                         : m > SRV_GATE_RATIO_MAX ? SRV_GATE_RATIO_MAX
+                                                  : (long long)m;
+    long long old = atomic_load_explicit(&q->ratio, memory_order_relaxed);
+    atomic_store_explicit(&q->ratio, old ? old + (measured - old) / 8 : measured,
+                          memory_order_relaxed);
+}
+
+/* The gate of a request started on the I/O thread: go on (0) when predicted
+ * within --inline-max-us, else stop (1): it goes to the pool. */
+static int gate_inline(void *ctx, double predicted_cpu_s)
+{
+    struct srv_req *r = ctx;
+    r->predicted_cpu_s = predicted_cpu_s >= 0 ? predicted_cpu_s : -1.0;
+    if (r->predicted_cpu_s < 0) return 1;
+    r->gate_est_ns = gate_estimate_ns(r->http, r);
+    if (r->mem_deferred) return 1;
+    return r->gate_est_ns > (double)r->http->cfg->inline_max_us * 1000.0;
+}
+
+/* The gate of a run on a worker: records the prediction, never stops. */
+static int gate_record(void *ctx, double predicted_cpu_s)
+{
+    struct srv_req *r = ctx;
+    r->predicted_cpu_s = predicted_cpu_s >= 0 ? predicted_cpu_s : -1.0;
+    return 0;
+}
+
+int gate_try_inline(struct srv_http *h, struct srv_req *r)
+{
+    r->aext.gate_ctx = r;
+    r->aext.gate = gate_record;
+    if (!h->quick || h->cfg->inline_max_us <= 0 || r->body_len > SRV_GATE_BODY_MAX) return 0;
+    r->aext.gate = gate_inline;
+    r->gate_attempt = 1;
+    run_api(r);
+    r->gate_attempt = 0;
+    if (!r->aresp.deferred) return 1;
+    api_response_free(&r->aresp);
+    r->aext.gate = gate_record;
+    r->mem_deferred = 0;
+    r->job.short_job = r->predicted_cpu_s > 0 && r->gate_est_ns > 0 &&
+                       r->gate_est_ns <= SRV_SHORT_JOB_US * 1000.0;
+    r->predicted_cpu_s = 0;
+    return 0;
+}
+
+/* Run the API on r; for a quick or gated route, measure the run's thread CPU
+ * time on one run in SRV_QUICK_SAMPLE (and on every probe) for the route's
+ * average (a gated run stopped at its gate is not measured). */
 void run_api(struct srv_req *r)
 {
-    struct srv_quick_stat *q =
-        r->quick_route && r->http->quick ? &r->http->quick[r->route_index] : NULL;
+    struct srv_quick_stat *q = (r->quick_route || r->gated) && r->http->quick && r->route_index >= 0
+                                   ? &r->http->quick[r->route_index]
+                                   : NULL;
+    /* A gated route's runs are all measured until its ratio is known (its
+     * first runs may all be pooled, after attempts stopped at the gate). */
     int measure =
         q && (r->quick_probe ||
+              (r->gated && !r->gate_attempt &&
+               atomic_load_explicit(&q->ratio, memory_order_relaxed) == 0) ||
               atomic_fetch_add_explicit(&q->runs, 1, memory_order_relaxed) % SRV_QUICK_SAMPLE == 0);
     long long c0 = measure ? thread_cpu_ns() : -1;
     api_handle_ext(&r->areq, &r->aext, &r->aresp);
     answer_settle(r); /* charge the answer's real size (answer_budget.c) */
     if (c0 < 0) return;
     long long c1 = thread_cpu_ns();
-    if (c1 >= c0) quick_record(q, c1 - c0, r->body_len);
+    if (c1 < c0) return;
+    if (r->quick_route)
+        quick_record(q, c1 - c0, r->body_len);
+    else if (!r->aresp.deferred && r->aresp.status == 200 && r->predicted_cpu_s > 0)
+        gate_record_run(q, c1 - c0, r);
 }
 
 /* Whether the quick request r runs inline: predicted to finish within

@@ -8,8 +8,9 @@
  * again, so the callback may hand the job's memory back to its owner.
  *
  * FAIR QUEUES. A job is short (a closed-form operation: its cost is linear
- * in its body, milliseconds at most) or long (an integration, a search: up to
- * the deadline). The workers take jobs of both kinds in arrival order, so a
+ * in its body, milliseconds at most; or an integration predicted to take a
+ * few milliseconds at most) or long (an integration, a search: up to the
+ * deadline). The workers take jobs of both kinds in arrival order, so a
  * flood of short jobs delays a long one only by the short jobs that arrived
  * before it; one more thread, the express worker, takes short jobs only, so a
  * short job never waits for a long one to finish while every worker computes

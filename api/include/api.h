@@ -71,6 +71,8 @@ struct api_response {
     size_t full_length;       /* a 304's: the length of the 200's body when known (sent as its
                                  Content-Length, RFC 9110 8.6), 0 for unknown: none is sent */
     int instance_set;         /* a problem body already carries "instance" */
+    int deferred;             /* 1: not run: api_request_ext's gate stopped it before it
+                                 computed (status 0, no body); run it again without a gate */
 };
 
 /* What only the HTTP server and `mechd eval` know about a request (all optional).
@@ -95,6 +97,18 @@ struct api_request_ext {
     void *admit_ctx;
     const char *host;          /* Host header, or NULL: GET /v1's curl lines name this host
                                   and port instead of 127.0.0.1:8080 */
+    /* Cost gate (may be NULL: nothing is stopped). Called at most once per
+     * request, on its own operation (never on a batch's items), by an
+     * operation that predicts its cost (api_gated_route) once the prediction
+     * is made and before anything long is computed: predicted_cpu_s is the
+     * chosen method's predicted CPU seconds (the chooser's predicted_cpu_s),
+     * or -1 when nothing predicts it (a method and step given by the client,
+     * or a first pass of unknown length to run before the choice). Returns
+     * 0 to go on, nonzero to stop: the response is then resp->deferred = 1
+     * (status 0, no body), and the caller runs the request again, elsewhere
+     * and without the gate. */
+    int (*gate)(void *ctx, double predicted_cpu_s);
+    void *gate_ctx;
 };
 
 /* Process-wide set-up of the API layer: main() (the server's, `mechd eval`'s,
@@ -189,6 +203,13 @@ int api_is_inline(const char *method, const char *path);
  * --inline-max-us), not from the size. The deadline and step budget still
  * apply to a quick request. */
 long api_quick_route(const char *method, const char *path, size_t body_len);
+
+/* Whether a POST operation predicts its own cost before it computes (its
+ * chooser's predicted CPU, through api_request_ext's gate): the route's index,
+ * or -1. Such a request can be started on the I/O thread with a gate that
+ * stops it, before anything long is computed, when the prediction is too
+ * long for there. */
+long api_gated_route(const char *method, const char *path);
 
 /* The route table, read through accessors (the server sees no struct
  * api_route). Routes are numbered 0 .. api_operation_count()-1 in a fixed

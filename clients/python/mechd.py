@@ -654,6 +654,27 @@ class _Operations:
         """
         return self._operation('/v1/relativity/dot', body, (('a', a), ('b', b), ('cost', cost)))
 
+    def relativity_mass_energy(self, body: Optional[Dict[str, Any]] = None, *, mass: Optional[float] = None, energy: Optional[float] = None, luminosity: Optional[float] = None, flux: Optional[float] = None, distance: Optional[float] = None, duration: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+        """Rest energy E = m c^2 either way, and the rest-mass loss L/c^2 of a luminosity (the Sun's mass loss from its luminosity or the solar constant)
+
+        POST /v1/relativity/mass-energy. The request is `body` (a dict) and/or the keyword arguments below
+        (merged; a keyword that is not None wins). Returns the answer as a dict; raises
+        ProblemError (ValidationError at the JSON pointer of a bad field, ...) or
+        ConnectionFailed. GET /v1 has the full schema and an example.
+
+        Args:
+            mass: rest mass, kg: answers its rest energy
+            energy: energy, J: answers the rest mass E / c^2 it is equivalent to
+            luminosity: radiated power L, W: answers the rest-mass loss rate L / c^2
+            flux: energy flux F at the distance `distance`, W/m^2 (isotropic emission: L = 4 pi d^2 F)
+            distance: distance from the source at which the flux was measured, m (with flux only)
+            duration: s, with a luminosity or a flux: adds mass_lost = L t / c^2
+            cost: envelope key, taken by every operation: false leaves out the measured time (the cost
+                    block of the operations that integrate), so equal requests give byte-identical
+                    answers; in a batch, false also applies to every item; default true
+        """
+        return self._operation('/v1/relativity/mass-energy', body, (('mass', mass), ('energy', energy), ('luminosity', luminosity), ('flux', flux), ('distance', distance), ('duration', duration), ('cost', cost)))
+
     def relativity_rocket(self, body: Optional[Dict[str, Any]] = None, *, beta: Optional[float] = None, speed: Optional[float] = None, gamma: Optional[float] = None, gamma_minus_one: Optional[float] = None, one_minus_beta: Optional[float] = None, rapidity: Optional[float] = None, beta_gamma: Optional[float] = None, mass_ratio: Optional[float] = None, exhaust_beta: Optional[float] = None, exhaust_speed: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """The relativistic rocket: the mass ratio for a final speed or rapidity (or the speed a mass ratio gives), any exhaust speed, beside Tsiolkovsky's
 
@@ -1009,7 +1030,7 @@ class _Operations:
         """
         return self._operation('/v1/relativity/kinematics/collision', body, (('energy_unit', energy_unit), ('beam', beam), ('target', target), ('crossing_angle', crossing_angle), ('crossing_angle_deg', crossing_angle_deg), ('sqrt_s', sqrt_s), ('final_state', final_state), ('cost', cost)))
 
-    def gr_schwarzschild(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, r: Optional[float] = None, infall_from: Optional[float] = None, reference_r: Optional[float] = None, effective_potential: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_schwarzschild(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, named_bodies: Optional[str] = None, units: Optional[str] = None, r: Optional[float] = None, infall_from: Optional[float] = None, reference_r: Optional[float] = None, effective_potential: Optional[Dict[str, Any]] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Schwarzschild radius, clock rates and red shift, circular orbits and their stability, ISCO, photon sphere, effective potentials; GPS-style clock comparison
 
         POST /v1/gr/schwarzschild. The request is `body` (a dict) and/or the keyword arguments below
@@ -1020,10 +1041,16 @@ class _Operations:
         Args:
             M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
                     {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
-                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
-                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
-                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
-                    the answer).
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440;
+                    1.32712440018e20, DE405, with named_bodies "legacy") or "earth" (GM = 3.986004418e14
+                    m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI;
+                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            named_bodies: the set of named-body constants M = "sun"/"earth" takes: DE440 (default: the
+                    Sun's GM 1.32712440041279419e20 m^3/s^2, JPL DE440) or legacy (the values mechd used
+                    before DE440: the Sun's GM 1.32712440018e20 m^3/s^2, DE405, so an older client's
+                    answers stay the same); the Earth's GM is 3.986004418e14 m^3/s^2 (IERS 2010) in
+                    both. units.GM_source states the value used and its source, units.named_bodies the
+                    set; default "DE440"
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -1040,9 +1067,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('units', units), ('r', r), ('infall_from', infall_from), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
+        return self._operation('/v1/gr/schwarzschild', body, (('M', M), ('named_bodies', named_bodies), ('units', units), ('r', r), ('infall_from', infall_from), ('reference_r', reference_r), ('effective_potential', effective_potential), ('cost', cost)))
 
-    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, orbital_period: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def gr_geodesic(self, body: Optional[Dict[str, Any]] = None, *, M: Optional[Any] = None, named_bodies: Optional[str] = None, units: Optional[str] = None, kind: Optional[str] = None, r0: Optional[float] = None, phi0: Optional[float] = None, initial: Optional[Any] = None, tau_end: Optional[float] = None, orbits: Optional[int] = None, lambda_end: Optional[float] = None, r_escape: Optional[float] = None, samples: Optional[int] = None, constraint_bound: Optional[float] = None, integrator: Optional[Any] = None, orbital_period: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Equatorial timelike and null geodesics of Schwarzschild: periapsis advance and light deflection measured beside the exact values and 1PN formulas
 
         POST /v1/gr/geodesic. The request is `body` (a dict) and/or the keyword arguments below
@@ -1053,10 +1080,16 @@ class _Operations:
         Args:
             M: the central mass: kg, or {gm: m^3/s^2} (GM, the precisely known quantity), or
                     {surface_gravity: g, radius: R} (GM = g R^2, for a problem that gives the surface
-                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440) or "earth" (GM =
-                    3.986004418e14 m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with
-                    units SI; optional with units geometric (then it only adds the SI scale GM/c^2 to
-                    the answer).
+                    gravity), or "sun" (GM = 1.32712440041279419e20 m^3/s^2, JPL DE440;
+                    1.32712440018e20, DE405, with named_bodies "legacy") or "earth" (GM = 3.986004418e14
+                    m^3/s^2, IERS 2010); a mass in kg uses G = 6.67430e-11. Required with units SI;
+                    optional with units geometric (then it only adds the SI scale GM/c^2 to the answer).
+            named_bodies: the set of named-body constants M = "sun"/"earth" takes: DE440 (default: the
+                    Sun's GM 1.32712440041279419e20 m^3/s^2, JPL DE440) or legacy (the values mechd used
+                    before DE440: the Sun's GM 1.32712440018e20 m^3/s^2, DE405, so an older client's
+                    answers stay the same); the Earth's GM is 3.986004418e14 m^3/s^2 (IERS 2010) in
+                    both. units.GM_source states the value used and its source, units.named_bodies the
+                    set; default "DE440"
             units: SI: lengths m, times s, specific angular momentum m^2/s, speeds m/s. geometric: G = c
                     = 1 with M = 1: lengths in GM/c^2, times in GM/c^3, specific angular momentum in
                     GM/c, speeds in c.; default "SI"
@@ -1090,7 +1123,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/gr/geodesic', body, (('M', M), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('orbital_period', orbital_period), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/gr/geodesic', body, (('M', M), ('named_bodies', named_bodies), ('units', units), ('kind', kind), ('r0', r0), ('phi0', phi0), ('initial', initial), ('tau_end', tau_end), ('orbits', orbits), ('lambda_end', lambda_end), ('r_escape', r_escape), ('samples', samples), ('constraint_bound', constraint_bound), ('integrator', integrator), ('orbital_period', orbital_period), ('dry_run', dry_run), ('cost', cost)))
 
     def hamiltonian_flow(self, body: Optional[Dict[str, Any]] = None, *, system: Optional[Any] = None, q: Optional[List[float]] = None, p: Optional[List[float]] = None, t_end: Optional[float] = None, samples: Optional[int] = None, integrator: Optional[Any] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Hamiltonian systems from a catalog (oscillator, pendulums, cylinder, central power laws, Hénon–Heiles, 3D potentials) with conserved momenta and energy
@@ -1414,7 +1447,7 @@ class _Operations:
         """
         return self._operation('/v1/earth/gravity', body, (('latitude_deg', latitude_deg), ('height', height), ('radius', radius), ('gm', gm), ('g0', g0), ('omega', omega), ('sidereal_day', sidereal_day), ('cost', cost)))
 
-    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, moon: Optional[Dict[str, Any]] = None, sun: Optional[Dict[str, Any]] = None, gm_earth: Optional[float] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def earth_tides(self, body: Optional[Dict[str, Any]] = None, *, body_: Optional[Any] = None, moon: Optional[Dict[str, Any]] = None, sun: Optional[Dict[str, Any]] = None, gm_earth: Optional[float] = None, angle_deg: Optional[float] = None, radius: Optional[float] = None, named_bodies: Optional[str] = None, on: Optional[Any] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Tidal acceleration of the Moon, the Sun or any body, exact (without cancellation) and to first order in r/d, equilibrium tide heights, spring and neap tides
 
         POST /v1/earth/tides. The request is `body` (a dict) and/or the keyword arguments below
@@ -1430,16 +1463,32 @@ class _Operations:
             sun: the Sun used by body "sun" and by spring_neap: any of gm or mass, distance; default
                     DE440 GM, 1 au
             gm_earth: m^3/s^2, the Earth's GM in the tide height (g = GM_E / r^2); default IERS 2010;
-                    default 398600441800000
+                    for tides raised on another body use on (gm_earth set to that body's GM is the
+                    older, deprecated form); default 398600441800000
             angle_deg: degrees, angle at the Earth's centre between the body and the point; default 0
-            radius: m, distance of the point from the Earth's centre; default 6371008.8
+            radius: m, distance of the point from the Earth's centre; for tides raised on another body
+                    use on (radius set to that body's radius is the older, deprecated form); default
+                    6371008.8
+            named_bodies: the constants of the named bodies ("moon", "sun", and `on`): DE440 (default:
+                    GM_moon 4.902800118e12, GM_sun 1.32712440041279419e20 m^3/s^2, JPL DE440) or legacy
+                    (the values mechd used before DE440: the Moon's mass 7.342e22 kg, GM = G m; GM_sun
+                    1.32712440018e20, DE405); the answer states the values used and their source
+                    (body.source, on.source, spring_neap.moon_source, sun_source) and named_bodies the
+                    set; default "DE440"
+            on: the body the tides are raised on (default the Earth of radius and gm_earth): "earth",
+                    "moon" or "sun" (the set's GM and mean radius: 6371008.8 m, 1.7374e6 m, 6.957e8 m),
+                    or {gm (m^3/s^2) or mass (kg), radius (m): the point's distance from its centre}; a
+                    named body takes radius to move the point. The tide-raising body's distance and
+                    angle_deg are then from its centre. Replaces the older way, still accepted as a
+                    deprecated alias: radius and gm_earth set to the other body's radius and GM (not
+                    both forms at once)
             cost: envelope key, taken by every operation: false leaves out the measured time (the cost
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('cost', cost)))
+        return self._operation('/v1/earth/tides', body, (('body', body_), ('moon', moon), ('sun', sun), ('gm_earth', gm_earth), ('angle_deg', angle_deg), ('radius', radius), ('named_bodies', named_bodies), ('on', on), ('cost', cost)))
 
-    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_falling_object(self, body: Optional[Dict[str, Any]] = None, *, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, model: Optional[str] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Drop from a height near the Earth: east (and small south) deflection vs the notes' formula
 
         POST /v1/scenes/falling-object. The request is `body` (a dict) and/or the keyword arguments below
@@ -1455,6 +1504,12 @@ class _Operations:
             sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
                     default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
                     not both
+            model: the equations of motion: auto (default: the fictitious terms that matter at the
+                    requested accuracy, model.terms says which), coriolis (r'' = g - 2 w x r', Coriolis
+                    only, as most textbooks solve the scene: the centrifugal term at the launch point is
+                    inside the effective g), coriolis_centrifugal (r'' = g - 2 w x r' - w x (w x r), the
+                    centrifugal term's change along the path too); physics_model in the answer names the
+                    one solved; default "auto"
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1465,9 +1520,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/falling-object', body, (('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('model', model), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_vertical_shot(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, height: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, model: Optional[str] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Shot straight up near the Earth: lands west, (4/3) W cos(lat) sqrt(8 h^3/g), vs numerical
 
         POST /v1/scenes/vertical-shot. The request is `body` (a dict) and/or the keyword arguments below
@@ -1484,6 +1539,12 @@ class _Operations:
             sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
                     default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
                     not both
+            model: the equations of motion: auto (default: the fictitious terms that matter at the
+                    requested accuracy, model.terms says which), coriolis (r'' = g - 2 w x r', Coriolis
+                    only, as most textbooks solve the scene: the centrifugal term at the launch point is
+                    inside the effective g), coriolis_centrifugal (r'' = g - 2 w x r' - w x (w x r), the
+                    centrifugal term's change along the path too); physics_model in the answer names the
+                    one solved; default "auto"
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1494,9 +1555,9 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/vertical-shot', body, (('speed', speed), ('height', height), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('model', model), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
-    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
+    def scenes_cannonball(self, body: Optional[Dict[str, Any]] = None, *, speed: Optional[float] = None, elevation_deg: Optional[float] = None, azimuth_deg: Optional[float] = None, latitude_deg: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, model: Optional[str] = None, accuracy: Optional[str] = None, target_error: Optional[float] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Cannonball at any elevation and azimuth: Coriolis deflection, range and flight-time change
 
         POST /v1/scenes/cannonball. The request is `body` (a dict) and/or the keyword arguments below
@@ -1515,6 +1576,12 @@ class _Operations:
             sidereal_day: s, the Earth's rotation period relative to the stars (86164.0989 s for the
                     default rate): sets the rotation rate to 2 pi / sidereal_day; give it or the rate,
                     not both
+            model: the equations of motion: auto (default: the fictitious terms that matter at the
+                    requested accuracy, model.terms says which), coriolis (r'' = g - 2 w x r', Coriolis
+                    only, as most textbooks solve the scene: the centrifugal term at the launch point is
+                    inside the effective g), coriolis_centrifugal (r'' = g - 2 w x r' - w x (w x r), the
+                    centrifugal term's change along the path too); physics_model in the answer names the
+                    one solved; default "auto"
             accuracy: preset (relative error 1e-3, 1e-8, 1e-10, 1e-11); or target_error; default
                     "balanced"
             target_error: relative error on positions and velocities (not with accuracy)
@@ -1525,7 +1592,7 @@ class _Operations:
                     block of the operations that integrate), so equal requests give byte-identical
                     answers; in a batch, false also applies to every item; default true
         """
-        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
+        return self._operation('/v1/scenes/cannonball', body, (('speed', speed), ('elevation_deg', elevation_deg), ('azimuth_deg', azimuth_deg), ('latitude_deg', latitude_deg), ('g', g), ('omega_magnitude', omega_magnitude), ('sidereal_day', sidereal_day), ('model', model), ('accuracy', accuracy), ('target_error', target_error), ('dry_run', dry_run), ('cost', cost)))
 
     def scenes_foucault(self, body: Optional[Dict[str, Any]] = None, *, latitude_deg: Optional[float] = None, length: Optional[float] = None, g: Optional[float] = None, omega_magnitude: Optional[float] = None, sidereal_day: Optional[float] = None, mass: Optional[float] = None, release: Optional[Dict[str, Any]] = None, swings: Optional[float] = None, precessions: Optional[float] = None, duration: Optional[float] = None, integrator: Optional[Dict[str, Any]] = None, accuracy: Optional[str] = None, fictitious: Optional[Any] = None, target_error: Optional[float] = None, error_estimate: Optional[bool] = None, dry_run: Optional[bool] = None, cost: Optional[bool] = None) -> Dict[str, Any]:
         """Foucault pendulum: the full nonlinear pendulum in the Earth frame, precession vs W sin(lat)
@@ -1624,6 +1691,7 @@ OPERATIONS = {
     'relativity_boost': '/v1/relativity/boost',
     'relativity_particle': '/v1/relativity/particle',
     'relativity_dot': '/v1/relativity/dot',
+    'relativity_mass_energy': '/v1/relativity/mass-energy',
     'relativity_rocket': '/v1/relativity/rocket',
     'relativity_force': '/v1/relativity/force',
     'relativity_lagrangian': '/v1/relativity/lagrangian',

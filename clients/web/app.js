@@ -10,7 +10,7 @@ import {share, parseHash, embedded, embedBar} from './share.js';
 // for the labs drawn in 3-D).
 const labs = [
   ['rotations', 'Rotations'], ['table', 'Rotating table'], ['inertia', 'Inertia'], ['tops', 'Tops'], ['earth', 'Earth'],
-  ['tides', 'Tides'], ['orbits', 'Orbits'], ['phase', 'Phase space'], ['spacetime', 'Spacetime'], ['particles', 'Particles'],
+  ['tides', 'Tides'], ['orbits', 'Orbits'], ['oscillations', 'Oscillations'], ['phase', 'Phase space'], ['spacetime', 'Spacetime'], ['particles', 'Particles'],
   ['accuracy', 'Accuracy'],
 ].map(([id, title]) => ({id, title, load: () => import(`./labs/${id}.js`).then(m => m.default)}));
 const main = document.getElementById('lab');

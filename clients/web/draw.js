@@ -15,18 +15,21 @@ export function arrow(x1, y1, x2, y2, color, text, size = 13) {
   return g;
 }
 
-// energyBars(root, [[name, value in J, colour], …], ref, what): bars on a baseline (negative values
-// below it), heights against ref (in J: the largest size expected), each bar's name and value (with an
-// SI prefix: 96 kJ), and the whole said in root's aria-label ("what: name value, …").
-export function energyBars(root, bars, ref, what = 'energy') {
-  const W = 300, H = 170, base = 92, k = 62 / (Math.abs(ref) || 1), w = 60;
-  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`);
+// energyBars(root, [[name, value, colour], …], ref, what, unit): bars on a baseline (negative values
+// below it), heights against ref (in the unit, J by default: the largest size expected), each bar's name
+// and value (with an SI prefix: 96 kJ), and the whole said in root's aria-label ("what: name value, …").
+export function energyBars(root, bars, ref, what = 'energy', unit = 'J') {
+  // three bars in 300 units (shown at most 300 px wide), four or more 90 units each in a wider picture (style.css:
+  // .wide, at most 400 px), so the names and values keep their 12 px on a phone
+  const wide = bars.length > 3, W = wide ? 40 + bars.length * 90 : 300, step = wide ? 90 : 96;
+  const H = 170, base = 92, k = 62 / (Math.abs(ref) || 1), w = 60;
+  put(root); root.setAttribute('viewBox', `0 0 ${W} ${H}`); root.classList.toggle('wide', wide);
   add(root, svg('line', {x1: 8, y1: base, x2: W - 8, y2: base, stroke: '#555'}));
   bars.forEach(([name, v, c], i) => {
-    const x = 20 + i * (w + 36), h = Math.max(-60, Math.min(72, v * k));
+    const x = 20 + i * step, h = Math.max(-60, Math.min(72, v * k));
     add(root, svg('rect', {x, y: h >= 0 ? base - h : base, width: w, height: Math.abs(h), fill: c, 'data-role': 'bar', 'data-value': String(v)}),
       svg('text', {x: x + w / 2, y: 14, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, name),
-      svg('text', {x: x + w / 2, y: H - 2, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, amount(v, 'J')));
+      svg('text', {x: x + w / 2, y: H - 2, 'font-size': 12, 'text-anchor': 'middle', fill: '#333'}, amount(v, unit)));
   });
-  root.setAttribute('aria-label', `${what}: ` + bars.map(([n, v]) => `${n} ${amount(v, 'J')}`).join(', '));
+  root.setAttribute('aria-label', `${what}: ` + bars.map(([n, v]) => `${n} ${amount(v, unit)}`).join(', '));
 }

@@ -946,7 +946,8 @@ export function relWords(r) {
 //   formula − full difference when it reports one, kept to its digits),
 //   source: 'api' (the formula's value is the API's) or 'page' (computed here
 //   from the inputs), sourceText (says it otherwise), diffUnit and diffScale (the
-//   difference said in that unit: 'eV' and 1e6 for values in MeV), how (one line: what is compared), note (more words)}.
+//   difference said in that unit: 'eV' and 1e6 for values in MeV), how (one line: what is compared), note (more words),
+//   cite (a topic the notes do not treat: the standard text cited instead, "Beyond the notes: …", section then a short tag)}.
 // The box carries data-abs and data-rel (finite numbers) for tests.
 export function notesBox(id) {
   // named by its own heading ("What the notes say: §4 … Deflection of Light"), so two boxes in a lab differ
@@ -969,7 +970,8 @@ export function notesBox(id) {
       : rel < 1e-12 ? `they agree to round-off: ${amount(abs * k, u)}, ${relWords(rel)}`
       : `${what} is ${typeof s.sign === 'number' ? (s.sign > 0 ? 'high' : 'low') + ' by' : 'off by'} ${amount(abs * k, u)}, ${relWords(rel)}`;
     const shown = (x, t) => t !== undefined ? t : fmt(x) + (s.unit && typeof x === 'number' ? ' ' + s.unit : '');
-    put(box, el('h3', {id: id + '-h'}, 'What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' ', s.heading),
+    put(box, el('h3', {id: id + '-h'}, s.cite ? ['Beyond the notes: ', el('span', {'data-role': 'section'}, s.cite), ' — ']
+      : ['What the notes say: ', el('span', {'data-role': 'section'}, '§' + s.section), ' '], s.heading),
       s.inferred ? el('p', {class: 'muted'}, `(The number §${s.section} is read from the notes' contents: the extracted text lost it.)`) : null,
       el('div', {class: 'formula', 'data-role': 'formula'}, s.formula),
       s.how ? el('p', {class: 'muted'}, s.how) : null,

@@ -5,16 +5,19 @@
 // selects: the form's values and the view's choices such as the exaggeration
 // or the frame), the worked example loaded (ex=its title) and, in the link
 // that "Copy link" makes, the time each animation shows (t0, t1, … as the
-// slider's position 0…1000). A control is named by its id when the lab gave it
+// slider's position 0…1000) and the camera of each 3-D view the student turned
+// (v0, v1, … as yaw,pitch,zoom: view3d.js). A control is named by its id when the lab gave it
 // one, else by its place among the lab's controls (c12); the example picker
-// and the players' speed are not state. Only what the student touched is
+// and the players' speed are not state. A lab whose form grows (the inertia
+// lab's parts) keeps that structure in one hidden input of its own and marks
+// the grown controls data-noshare. Only what the student touched is
 // written, so a link stays short and the lab's later defaults still apply.
 //
 // Restoring (on a page opened at such a URL, or a link pasted into the tab):
 // the example is loaded first, then the controls are set (with input and
 // change events, so a slider's label follows) and every form holding one is
 // submitted; once the runs have answered, the animations are put at their
-// times. Reset opens #lab afresh (a reload: labs keep their inputs in module
+// times and the 3-D views turned as they were. Reset opens #lab afresh (a reload: labs keep their inputs in module
 // state between visits, which only a new page forgets).
 import {el, examples} from './lib.js';
 
@@ -25,6 +28,7 @@ const controls = (main) => [...main.querySelectorAll('input, select, textarea')]
 const keyOf = (c, i) => c.id && !AUTO_ID.test(c.id) ? c.id : 'c' + i;
 const read = (c) => c.type === 'checkbox' ? (c.checked ? '1' : '0') : c.value;
 function write(c, v) {
+  if (read(c) === v) return true; // as it is: no events (a select's change may rebuild the form around it)
   if (c.type === 'checkbox') c.checked = v === '1';
   else if (c.tagName === 'SELECT' && ![...c.options].some(o => o.value === v)) return false; // an option the run has not offered yet
   else c.value = v;
@@ -62,8 +66,13 @@ export function share(main, labId, params) {
     if (example) q.set('ex', example);
     const idx = index();
     for (const [k, c] of idx)
-      if ((dirty.has(k) && dirty.get(k) === c) || (c.tagName !== 'SELECT' && init.has(k) && read(c) !== init.get(k))) q.set(k, read(c));
+      // (a control named by its place may be another one after a redraw; one with an id is the same)
+      if ((dirty.has(k) && (dirty.get(k) === c || !/^c\d+$/.test(k))) || (c.tagName !== 'SELECT' && init.has(k) && read(c) !== init.get(k))) q.set(k, read(c));
     if (withTime) main.querySelectorAll('[data-role=time]').forEach((s, k) => { if (!s.disabled && Number(s.value) > 0) q.set('t' + k, s.value); });
+    main.querySelectorAll('canvas.view3d').forEach((cv, k) => {
+      const cam = cv.camera && cv.camera.get();
+      if (cam && cam.turned) q.set('v' + k, [cam.yaw, cam.pitch, cam.zoom].map(x => Number(x.toFixed(3))).join(','));
+    });
     const s = q.toString();
     return '#' + labId + (s ? '?' + s : '');
   };
@@ -126,7 +135,7 @@ export function share(main, labId, params) {
     }
     const idx = index(), forms = new Set(), late = [];
     for (const [k, v] of params) {
-      if (k === 'ex' || /^t\d+$/.test(k)) continue;
+      if (k === 'ex' || /^[tv]\d+$/.test(k)) continue;
       const c = idx.get(k);
       if (!c) continue;
       dirty.set(k, c);
@@ -134,8 +143,8 @@ export function share(main, labId, params) {
       if (c.form) forms.add(c.form);
     }
     for (const f of forms) if (f.querySelector('[type=submit]')) f.requestSubmit();
-    const times = [...params].filter(([k]) => /^t\d+$/.test(k));
-    if (!late.length && !times.length) return;
+    const times = [...params].filter(([k]) => /^t\d+$/.test(k)), cams = [...params].filter(([k]) => /^v\d+$/.test(k));
+    if (!late.length && !times.length && !cams.length) return;
     // after the runs have answered: the choices their answers offer, then the times
     for (let k = 0; k < 150 && !(k > 2 && settled(main)); k++) await wait(100);
     for (const [c, v] of late) write(c, v);
@@ -143,6 +152,11 @@ export function share(main, labId, params) {
     for (const [k, v] of times) {
       const s = sliders[Number(k.slice(1))];
       if (s && !s.disabled) { s.value = v; s.dispatchEvent(new Event('input', {bubbles: true})); }
+    }
+    const canvases = main.querySelectorAll('canvas.view3d');
+    for (const [k, v] of cams) {
+      const cv = canvases[Number(k.slice(1))], [yaw, pitch, zoom] = v.split(',').map(Number);
+      if (cv && cv.camera) cv.camera.set({yaw, pitch, zoom});
     }
   };
   const done = [...params].length ? restore() : Promise.resolve();

@@ -9,10 +9,14 @@ import {el, put, plotTools} from './lib.js';
 
 export {THREE};
 
-// view3d(container, {label, extent, id}) -> {scene, camera, canvas, view, render(), frame(extent), ok}
+// view3d(container, {label, extent, id}) -> {scene, camera, canvas, view, render(), frame(extent), aim(yaw, pitch), ok}
 //   container: an element the canvas (4:3, its laid-out width) is put into;
 //   extent: the scene's radius in its units, for the camera distance;
 //   id: the canvas' id (one renderer per id, reused when the lab is mounted again).
+// The camera (view.yaw, view.pitch, view.zoom) is part of a lab's shared state:
+// canvas.camera.get() / .set({yaw, pitch, zoom}) read and put it (share.js), and
+// once the student has turned or zoomed it (view.turned) a lab's aim() no
+// longer moves it; each turn tells the address bar (a 'mechd:moved' event).
 // One WebGL renderer per view id, kept across re-mounts of a lab (a browser
 // allows only a few WebGL contexts at once; a lab is re-mounted on every tab
 // change and example load). Its canvas' listeners act on the view last made.
@@ -39,6 +43,16 @@ export function view3d(container, {label = '3-D view', extent = 1, id = 'view3d'
     canvas.setAttribute('role', 'img');
     canvas.dataset.render = '1';
     listen(canvas, () => entry.cur);
+    canvas.camera = {
+      get: () => entry.cur && {yaw: entry.cur.view.yaw, pitch: entry.cur.view.pitch, zoom: entry.cur.view.zoom, turned: !!entry.cur.view.turned},
+      set: ({yaw, pitch, zoom}) => {
+        const c = entry.cur; if (!c) return;
+        if (Number.isFinite(yaw)) c.view.yaw = yaw;
+        if (Number.isFinite(pitch)) c.view.pitch = Math.max(-1.5, Math.min(1.5, pitch));
+        if (Number.isFinite(zoom)) c.view.zoom = Math.max(0.5, Math.min(5, zoom));
+        c.view.turned = true; c.render();
+      },
+    };
     // export (lib.js plotTools) asks for a fresh frame before reading the pixels
     window.addEventListener('mechd:render', (e) => { if (e.detail === canvas && entry.cur) entry.cur.draw(); });
     if (typeof ResizeObserver === 'function') new ResizeObserver(() => entry.cur && entry.cur.render()).observe(canvas);
@@ -54,12 +68,13 @@ export function view3d(container, {label = '3-D view', extent = 1, id = 'view3d'
   const fill = new THREE.DirectionalLight(0xffffff, 0.8); fill.position.set(-4, 3, -2); scene.add(fill);
   const camera = new THREE.PerspectiveCamera(35, 4 / 3, 0.01, 1000);
   camera.up.set(0, 0, 1);
-  const view = {yaw: -0.9, pitch: 0.45, dist: 4 * extent, min: extent, target: new THREE.Vector3()};
+  // zoom: the distance over the framed one (4 × the scene's radius), 0.5 … 5
+  const view = {yaw: -0.9, pitch: 0.45, zoom: 1, min: extent, target: new THREE.Vector3(), turned: false};
   let pending = false;
   const place = () => {
-    const c = Math.cos(view.pitch);
-    camera.position.set(view.target.x + view.dist * c * Math.cos(view.yaw), view.target.y + view.dist * c * Math.sin(view.yaw),
-      view.target.z + view.dist * Math.sin(view.pitch));
+    const c = Math.cos(view.pitch), dist = 4 * view.min * view.zoom;
+    camera.position.set(view.target.x + dist * c * Math.cos(view.yaw), view.target.y + dist * c * Math.sin(view.yaw),
+      view.target.z + dist * Math.sin(view.pitch));
     camera.lookAt(view.target);
   };
   const size = () => {
@@ -72,28 +87,35 @@ export function view3d(container, {label = '3-D view', extent = 1, id = 'view3d'
   };
   const cur = {
     view,
-    draw() { pending = false; if (entry.cur !== cur) return; size(); place(); renderer.render(scene, camera); canvas.dataset.yaw = view.yaw.toFixed(3); },
+    draw() {
+      pending = false; if (entry.cur !== cur) return; size(); place(); renderer.render(scene, camera);
+      canvas.dataset.yaw = view.yaw.toFixed(3); canvas.dataset.pitch = view.pitch.toFixed(3); canvas.dataset.zoom = view.zoom.toFixed(3);
+    },
     render() { if (!pending) { pending = true; requestAnimationFrame(() => cur.draw()); } },
   };
   entry.cur = cur;
   cur.render();
   return {
     ok: true, scene, camera, canvas, view, render: cur.render,
-    // aim at a scene of this radius around target
-    frame(extent2, target = [0, 0, 0]) { view.dist = 4 * extent2; view.min = extent2; view.target.set(...target); cur.render(); },
+    // aim at a scene of this radius around target (the zoom the student chose kept)
+    frame(extent2, target = [0, 0, 0]) { view.min = extent2; view.target.set(...target); cur.render(); },
+    // the lab's own viewpoint, unless the student has turned the view (or a link has)
+    aim(yaw, pitch) { if (view.turned) return; view.yaw = yaw; view.pitch = pitch; cur.render(); },
   };
 }
 
 // The controls, attached once per canvas: pointer (mouse, pen, one finger)
 // turns; two fingers or the wheel zoom; arrow keys turn and + / − zoom.
 function listen(canvas, current) {
+  let told = 0; // the address bar hears of a turn once it rests (share.js keeps the camera in the link)
+  const moved = () => { clearTimeout(told); told = setTimeout(() => window.dispatchEvent(new Event('mechd:moved')), 300); };
   const turn = (dyaw, dpitch) => {
     const c = current(); if (!c) return;
-    c.view.yaw += dyaw; c.view.pitch = Math.max(-1.5, Math.min(1.5, c.view.pitch + dpitch)); c.render();
+    c.view.yaw += dyaw; c.view.pitch = Math.max(-1.5, Math.min(1.5, c.view.pitch + dpitch)); c.view.turned = true; c.render(); moved();
   };
   const zoom = (k) => {
     const c = current(); if (!c) return;
-    c.view.dist = Math.max(2 * c.view.min, Math.min(20 * c.view.min, c.view.dist * k)); c.render();
+    c.view.zoom = Math.max(0.5, Math.min(5, c.view.zoom * k)); c.view.turned = true; c.render(); moved();
   };
   const pts = new Map();
   let pinch = 0;

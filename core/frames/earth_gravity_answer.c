@@ -1,7 +1,7 @@
 /* earth_gravity_answer.c — one POST /v1/earth/gravity computation
  * (mech/answers/frames/earth_gravity_answer.h): the sphere from gm or g0 and omega or the
  * sidereal day, earth.c's effective gravity and normal gravity, and their
- * difference. Moved from api/ep_frames_earth.c (a handler only parses,
+ * difference. Moved from api/ops/earth/gravity.c (a handler only parses,
  * calls core once and encodes) operation for operation, so the API's
  * answers stay byte-identical. */
 #include "mech/answers/frames/earth_gravity_answer.h"

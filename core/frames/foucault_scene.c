@@ -2,7 +2,7 @@
  * (mech/answers/frames/foucault_scene.h): the scales and the centrifugal estimate of
  * foucault_first_order.c, the chooser of chooser_pendulum.c, the runs of
  * pendulum.c, and the Richardson estimate and expected rate beside them.
- * Moved from api/ep_scene_foucault.c (a handler only parses, calls core once
+ * Moved from api/ops/scenes/foucault.c (a handler only parses, calls core once
  * and encodes) operation for operation, so the API's answers stay
  * byte-identical. */
 #include "mech/answers/frames/foucault_scene.h"

@@ -1,7 +1,7 @@
 /* rotating_table_scene.c — one POST /v1/scenes/rotating-table computation
  * (mech/answers/frames/rotating_table_scene.h): the experiment's fields checked, the
  * answer and its sample buffers allocated, and scenes.c's table run. Moved
- * from api/ep_scenes.c (a handler only parses, calls core once and encodes)
+ * from api/ops/scenes/scene_request.c (a handler only parses, calls core once and encodes)
  * check for check, so the API's answers stay byte-identical. */
 #include "mech/answers/frames/rotating_table_scene.h"
 

@@ -12,6 +12,16 @@
 #include <stdio.h>
 #include <string.h>
 
+const char *mech_scene_model_name(enum mech_scene_model m)
+{
+    switch (m) {
+    case MECH_SCENE_MODEL_AUTO: return "auto";
+    case MECH_SCENE_MODEL_CORIOLIS: return "coriolis";
+    case MECH_SCENE_MODEL_CORIOLIS_CENTRIFUGAL: return "coriolis_centrifugal";
+    }
+    return NULL;
+}
+
 void mech_scene_ballistic_fix(struct mech_scene_ballistic_result *out)
 {
     out->problem.forces = out->forces;
@@ -96,18 +106,22 @@ static enum mech_status check_ballistic(const struct mech_scene_ballistic *s,
     if (!(s->r0.z > 0.0 || s->v0.z > 0.0))
         return mech_error_set(err, MECH_EDOMAIN, "v0",
                               "a projectile starting on the ground must be fired upwards");
+    if (!mech_scene_model_name(s->model))
+        return mech_error_set(err, MECH_EDOMAIN, "model",
+                              "model must be auto, coriolis or coriolis_centrifugal");
     return MECH_OK;
 }
 
 /* A scene's run planned by core's trajectory pipeline (mech/frames/trajectory_plan.h):
- * "auto" picks the fictitious terms (all of them for a dry run), the chooser
- * the method for target; the first pass's steps come off *budget. */
-static enum mech_status scene_plan(struct mech_trajectory_problem *p, double target, int dry_run,
-                                   struct mech_budget *budget,
+ * with auto_model, "auto" picks the fictitious terms (all of them for a dry
+ * run), else p->fictitious is kept; the chooser picks the method for target;
+ * the first pass's steps come off *budget. */
+static enum mech_status scene_plan(struct mech_trajectory_problem *p, int auto_model,
+                                   double target, int dry_run, struct mech_budget *budget,
                                    struct mech_trajectory_model *model,
                                    struct mech_trajectory_choice *choice, struct mech_error *err)
 {
-    const struct mech_trajectory_plan_request q = {1, dry_run, target, 1, target};
+    const struct mech_trajectory_plan_request q = {auto_model, dry_run, target, 1, target};
     struct mech_trajectory_plan plan;
     enum mech_status st = mech_trajectory_plan(p, &q, budget, &plan, err);
     *model = plan.model;
@@ -179,10 +193,15 @@ enum mech_status mech_scene_ballistic_run(const struct mech_scene_ballistic *s, 
     p->stop_direction = MECH_STOP_DECREASING;
     p->reduce_planar = 1;
 
-    /* "auto" (which fictitious terms matter at this accuracy), then the
-     * method; a dry run stops at the selection */
+    /* the terms: "auto" (which fictitious terms matter at this accuracy) or
+     * the model asked for; then the method; a dry run stops at the selection */
+    const int auto_model = s->model == MECH_SCENE_MODEL_AUTO;
+    if (s->model == MECH_SCENE_MODEL_CORIOLIS) p->fictitious = MECH_FICTITIOUS_CORIOLIS;
+    if (s->model == MECH_SCENE_MODEL_CORIOLIS_CENTRIFUGAL)
+        p->fictitious = MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL;
     struct mech_budget b2 = *budget;
-    if ((st = scene_plan(p, target, s->dry_run, &b2, &out->model, &out->choice, err)) != MECH_OK ||
+    if ((st = scene_plan(p, auto_model, target, s->dry_run, &b2, &out->model, &out->choice,
+                         err)) != MECH_OK ||
         s->dry_run)
         return st;
     if ((st = mech_trajectory_integrate(p, &b2, &out->run, err)) != MECH_OK) return st;
@@ -280,7 +299,8 @@ enum mech_status mech_scene_table_run(const struct mech_scene_table *s, double t
     p->samples = s->samples;
     p->reduce_planar = 1;
     struct mech_budget b2 = *budget;
-    enum mech_status st = scene_plan(p, target, s->dry_run, &b2, &out->model, &out->choice, err);
+    enum mech_status st =
+        scene_plan(p, 1, target, s->dry_run, &b2, &out->model, &out->choice, err);
     if (st != MECH_OK || s->dry_run) return st;
     struct mech_trajectory_result *r = &out->run;
     memset(r, 0, sizeof *r);

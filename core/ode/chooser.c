@@ -3,7 +3,7 @@
  * bench/bench_calibrate_chooser.c), the choice of the cheapest predicted to
  * meet the target. The one place the method-choice policy lives: particle
  * trajectories (core/frames/trajectory.c, mech_trajectory_choose) and the
- * first-order operations (api/integrator_block.c) both call mech_choose. */
+ * first-order operations (api/request/integrator_block.c) both call mech_choose. */
 #include "mech/ode/chooser.h"
 #include "mech/ode/chooser_pilot.h"
 

@@ -21,8 +21,8 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "routes.h"
-#include "schema.h"
+#include "run/routes.h"
+#include "schema/schema.h"
 #include "testlib.h"
 
 /* The whole answer of a 200 to `path` against the route's response schema. */

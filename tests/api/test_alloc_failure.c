@@ -6,7 +6,7 @@
  * examples resource, a problem document, malformed JSON and a wrong path):
  * run it once to learn its answer and its allocation count N, then for
  * n = P+1..N (P: a body parse done by jansson, see JANSSON_LEXER_BUG; 0 for
- * the plain bodies api/json_read.c parses itself) make allocation n
+ * the plain bodies api/json/json_read.c parses itself) make allocation n
  * fail and check that
  *   - nothing crashes (ASan/UBSan build: a NULL dereference aborts the test);
  *   - the answer is the normal one (the failure was absorbed: same status,
@@ -41,9 +41,9 @@
 #include <string.h>
 
 #include "api.h"
-#include "json_read.h"
+#include "json/json_read.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 /* ---- the allocator wrapper ---------------------------------------------------- */
@@ -228,7 +228,7 @@ static void add_requests(void)
         "{\"operations\": [{\"path\": \"/v1/relativity/boost\", \"request\": {}},"
         " {\"path\": \"/v1/nowhere\", \"request\": {}}]}", NULL);
     /* /v1/check's whole-quantity kinds (eigenvectors with a degenerate plane,
-     * axis_angle), a unit and the revealing feedback: check_kind.c's paths. */
+     * axis_angle), a unit and the revealing feedback: api/check/check_kind.c's paths. */
     add("POST /v1/check eigenvectors", "POST", "/v1/check",
         "{\"operation\": \"/v1/rigid/inertia\", \"request\": {\"bodies\": [{\"shape\": "
         "\"cylinder\", \"mass\": 2, \"radius\": 1, \"height\": 1, \"position\": [0, 0, 0]}]}, "
@@ -239,7 +239,7 @@ static void add_requests(void)
         "[0, 0, 1], \"angle\": 1}}, \"answer\": {\"pointer\": \"/axis_angle\", \"value\": "
         "{\"axis\": [0, 0, -1], \"angle\": -57.3}, \"unit\": \"deg\"}, \"reveal\": true}", NULL);
     /* a student's odd answers: text with a unit read, swapped components and
-     * the reciprocal found by grading copies (check_answer.c, check_slip.c) */
+     * the reciprocal found by grading copies (api/check/check_answer.c, api/check/check_slip.c) */
     add("POST /v1/check swapped text", "POST", "/v1/check",
         "{\"operation\": \"/v1/rigid/inertia\", \"request\": {\"bodies\": [{\"shape\": "
         "\"box\", \"mass\": 12, \"size\": [1, 2, 3], \"position\": [0, 0, 0]}]}, "
@@ -365,7 +365,7 @@ static void report(const struct request *r, const struct tally *t)
  * json_loads()/json_loadb() corrupts the lexer: out-of-bounds write (SEGV) or
  * a free of a non-heap pointer inside libjansson (upstream akheron/jansson
  * issues #362, PR #364). Not mechd's code. Request bodies (and ?request=) are
- * parsed by api_json_read() (api/json_read.c): a plain document entirely by
+ * parsed by api_json_read() (api/json/json_read.c): a plain document entirely by
  * its own fast path, whose allocations are swept like any other (P = 0);
  * anything else is handed to json_loadb(), so for such a text the sweep does
  * not fail the parse's allocations: it counts them (P) by parsing the same

@@ -1,4 +1,4 @@
-/* test_boost_direct.c — the boost answered from bytes (api/boost_direct.c)
+/* test_boost_direct.c — the boost answered from bytes (api/run/boost_direct.c)
  * against the general pipeline, and against the Lorentz transformation.
  *
  * Same bytes: for varied plain requests (one 4-vector or lists of 1..3000;
@@ -24,10 +24,10 @@
 #include <string.h>
 
 #include "api.h"
-#include "api_init.h"
-#include "api_run.h"
-#include "boost_direct.h"
-#include "json_read.h"
+#include "run/api_init.h"
+#include "run/api_run.h"
+#include "run/boost_direct.h"
+#include "json/json_read.h"
 #include "mech/base/budget.h"
 #include "testlib.h"
 

@@ -8,7 +8,7 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 /* Is j the string want? (false for NULL or a non-string) */

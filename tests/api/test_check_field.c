@@ -1,9 +1,9 @@
 /* test_check_field.c — POST /v1/check reads what a field is (its kind and
  * unit) from the operations' response schemas (x-mechd-check annotations,
- * api/check_field.c):
+ * api/check/check_field.c):
  *   1. every entry of the C table the annotations replaced resolves to the
  *      same kind and unit as before (the frozen list below is that table,
- *      copied from api/check_kind.c before it was deleted; "*" = any index);
+ *      copied from api/check/check_kind.c before it was deleted; "*" = any index);
  *   2. every annotation of every route names a kind and a unit mechd knows
  *      (templates: for every value of the answer string they read), at
  *      least as many as the first table had, and a few added later;
@@ -20,16 +20,16 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "check_field.h"
-#include "check_kind.h"
-#include "routes.h"
+#include "check/check_field.h"
+#include "check/check_kind.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 struct frozen {
     const char *op, *pointer, *kind, *unit;
 };
 
-/* api/check_kind.c's defaults[] as it was at commit 507235b (34 entries). */
+/* api/check/check_kind.c's defaults[] as it was at commit 507235b (34 entries). */
 static const struct frozen old_table[] = {
     {"/v1/rigid/inertia", "/mass", "number", "kg"},
     {"/v1/rigid/inertia", "/center_of_mass", "vector", "m"},
@@ -226,7 +226,7 @@ static void all_routes(void)
                           &unit) == 1);
     CHECK(kind == API_KIND_ANGLE && same_str(unit, "rad"));
 
-    /* some added later, read against their encoders (api/ep_*.c) */
+    /* some added later, read against their encoders (the handlers in api/ops/<domain>/) */
     CHECK(api_check_field("/v1/relativity/particle", "/lifetime/decay_length", &kind, &unit) == 1);
     CHECK(kind == API_KIND_NUMBER && same_str(unit, "m")); /* beta gamma c tau */
     CHECK(api_check_field("/v1/relativity/particle", "/mass", &kind, &unit) == 1);

@@ -16,13 +16,13 @@
 #include <string.h>
 
 #include "api.h"
-#include "ep_integrators.h"
+#include "ops/integrators/integrators.h"
 #include "mech/base/budget.h"
 #include "mech/ode/ode.h"
 #include "mech/base/vec.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
-#include "trajectory_request.h"
+#include "request/trajectory_request.h"
 
 static json_t *post(const char *path, json_t *body, long max_steps, int *status)
 {

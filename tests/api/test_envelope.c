@@ -11,9 +11,9 @@
 #include <string.h>
 
 #include "api.h"
-#include "catalog.h"
+#include "catalog/catalog.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 static json_t *call(const char *method, const char *path, const json_t *body, int *status)

@@ -1,4 +1,4 @@
-/* test_json_arena.c — the per-request jansson arena (api/json_arena.c) and
+/* test_json_arena.c — the per-request jansson arena (api/json/json_arena.c) and
  * operation requests that run on it.
  *
  * The arena itself: nothing is handed out outside a scope; allocations are
@@ -23,7 +23,7 @@
 #include <string.h>
 
 #include "api.h"
-#include "json_arena.h"
+#include "json/json_arena.h"
 #include "mech/base/budget.h"
 #include "testlib.h"
 
@@ -138,7 +138,7 @@ static char *boost_request(int n, double beta)
         o += (size_t)snprintf(s + o, cap - o, "%s[%.17g,%.17g,%.17g,-0.125]", i ? "," : "",
                               1.0 + i, 0.5 * i - 3.0, 0.25 * (i % 7));
     /* the rapidity form: the beta form of a boost is answered without
-     * trees (api/boost_direct.c), and these requests are here for the trees */
+     * trees (api/run/boost_direct.c), and these requests are here for the trees */
     snprintf(s + o, cap - o, "],\"velocity\":{\"rapidity\":%.17g,\"direction\":[1,0,0]}}",
              atanh(beta));
     return s;

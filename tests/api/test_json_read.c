@@ -1,4 +1,4 @@
-/* test_json_read.c — api_json_read() (api/json_read.c) against jansson.
+/* test_json_read.c — api_json_read() (api/json/json_read.c) against jansson.
  *
  * For every input the answer must be json_loadb(text, len,
  * JSON_DECODE_INT_AS_REAL | JSON_REJECT_DUPLICATES)'s: both NULL with the same
@@ -19,9 +19,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json_read.h"
+#include "json/json_read.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)

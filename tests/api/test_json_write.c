@@ -1,5 +1,5 @@
-/* test_json_write.c — the response writer (api/json_write.c) and its real
- * formatter (api/real_format.c: the shortest text that reads back as the
+/* test_json_write.c — the response writer (api/json/json_write.c) and its real
+ * formatter (api/json/real_format.c: the shortest text that reads back as the
  * same double).
  *
  * (a) ~2.2 million doubles (random bit patterns over every exponent,
@@ -26,9 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json_write.h"
+#include "json/json_write.h"
 #include "mech/base/budget.h"
-#include "real_format.h"
+#include "json/real_format.h"
 #include "testlib.h"
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
@@ -69,7 +69,7 @@ static double of_bits(uint64_t b)
     return x;
 }
 
-/* The contract's layout (real_format.h) of the significant digits d (n of
+/* The contract's layout (api/json/real_format.h) of the significant digits d (n of
  * them, no trailing zero) with X the decimal exponent of the first, sign
  * first. */
 static void layout(int negative, const char *d, int n, int X, char *out)
@@ -340,7 +340,7 @@ static void check_text(double x, const char *want)
 
 static void test_texts(void)
 {
-    /* Digits: CPython's repr(x); layout: real_format.h's (%.17g's switch to
+    /* Digits: CPython's repr(x); layout: api/json/real_format.h's (%.17g's switch to
      * scientific at X < -4 or X >= 17, ".0" on integral texts, exponent
      * without '+' and leading zeros). */
     check_text(0.6, "0.6");

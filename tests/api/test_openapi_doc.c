@@ -1,15 +1,15 @@
-/* test_openapi_doc.c — api/catalog.c on a small route table of its own: the
+/* test_openapi_doc.c — api/catalog/catalog.c on a small route table of its own: the
  * OpenAPI document takes each 200 answer's schema from the route's
  * response_schema (any JSON object when it has none), and both documents
  * print numbers as written: integers as integers, reals in their shortest
- * round-trip form. The table here replaces routes.c's (catalog.c reads only
+ * round-trip form. The table here replaces api/run/routes.c's (api/catalog/catalog.c reads only
  * api_routes, api_route_count and api_envelope_properties), so the test does
  * not depend on which operations describe their answers today. */
 #include <gsl/gsl_errno.h>
 #include <string.h>
 
-#include "catalog.h"
-#include "routes.h"
+#include "catalog/catalog.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 static json_t *demo_fn(struct api_call *c, const json_t *body)
@@ -77,7 +77,7 @@ static json_t *response_schema_at(json_t *doc, const char *path, const char *met
 int main(void)
 {
     gsl_set_error_handler_off();
-    /* Parsed as api_init.c parses them: as written. */
+    /* Parsed as api/run/api_init.c parses them: as written. */
     json_t *req[3] = {json_loads(DEMO_SCHEMA, 0, NULL), json_loads(DEMO_SCHEMA, 0, NULL), NULL};
     json_t *ans[3] = {json_loads(DEMO_ANSWER, 0, NULL), NULL,
                       json_loads(resource.response_schema, 0, NULL)};

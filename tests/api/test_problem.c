@@ -4,7 +4,7 @@
 #include <gsl/gsl_errno.h>
 #include <string.h>
 
-#include "endpoint.h"
+#include "run/endpoint.h"
 #include "testlib.h"
 
 static const struct {

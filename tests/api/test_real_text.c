@@ -1,6 +1,6 @@
 /* test_real_text.c — numbers in and out: the JSON number reader
  * (api_json_number_scan: Clinger's exact path, Eisel-Lemire in
- * api/real_parse.c, strtod for the rest) against glibc's strtod, and the
+ * api/json/real_parse.c, strtod for the rest) against glibc's strtod, and the
  * writer's texts (api_real_format) read back by it.
  *
  * (a) the reader gives strtod's double bit for bit on ~2 million texts:
@@ -27,9 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "json_read.h"
-#include "real_format.h"
-#include "real_parse.h"
+#include "json/json_read.h"
+#include "json/real_format.h"
+#include "json/real_parse.h"
 #include "testlib.h"
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)

@@ -14,8 +14,8 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "routes.h"
-#include "schema.h"
+#include "run/routes.h"
+#include "schema/schema.h"
 #include "testlib.h"
 
 /* The answer (parsed) of method path body, status in *status. */

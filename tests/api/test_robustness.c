@@ -16,7 +16,7 @@
 
 #include "api.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 #include "testlib.h"
 
 /* Mutations per route (each also sent byte-damaged: about twice as many

@@ -3,7 +3,7 @@
  * compiled validator (api/schema_*.c) gives exactly the errors — count, pointer,
  * detail, order — of a reference interpreter kept below (the interpreter mechd
  * used before schemas were compiled: it walks the schema's jansson objects;
- * for a oneOf that matches no branch it applies the rules of schema.h, written
+ * for a oneOf that matches no branch it applies the rules of api/schema/schema.h, written
  * again from the json_t), over every route schema with its catalog example
  * and hundreds of mutated copies each, and the comparison must meet each way
  * of reporting such a oneOf; hand-derived messages pin the texts themselves. */
@@ -15,10 +15,10 @@
 #include <time.h>
 
 #include "api.h"
-#include "catalog.h"
-#include "respond.h"
-#include "routes.h"
-#include "schema.h"
+#include "catalog/catalog.h"
+#include "http/respond.h"
+#include "run/routes.h"
+#include "schema/schema.h"
 #include "testlib.h"
 
 /* ==== reference interpreter (test only) =====================================
@@ -97,7 +97,7 @@ static void ref_key(char *buf, const char *base, const char *key)
 
 static void ref_validate(struct rctx *v, const json_t *s, const json_t *inst, const char *ptr);
 
-/* ---- choosing the branch to report (the rules of schema.h, written again
+/* ---- choosing the branch to report (the rules of api/schema/schema.h, written again
  * from the schema's json_t: type names as strings, key sets by walking
  * properties and nested oneOf on every call) ---- */
 
@@ -1084,7 +1084,7 @@ int main(void)
                 "/r|unknown key; allowed here: shape, m, p");
     /* No branch matches: the branch the instance was meant to be is chosen by
      * what tells the branches apart, or the choice itself is what is wrong
-     * (hand-derived from the rules in schema.h). An unknown discriminator
+     * (hand-derived from the rules in api/schema/schema.h). An unknown discriminator
      * value is named with the values allowed (it used to be the fewest-errors
      * branch's 'must be "point"'). */
     EXPECT_LIST(shapes, "{\"shape\":\"cube\"}", "", 1,

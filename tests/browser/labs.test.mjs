@@ -232,6 +232,16 @@ await lab('earth', async () => {
   close(Math.abs(await value('#fou-rate')), wsin, 2e-3, 'Foucault: measured rate within the Airy correction');
   await state('#can-form', 'done');
   check((await value('#can-right')) > 0, 'cannonball: deflected to the right in the northern hemisphere');
+  check(['coriolis', 'coriolis_centrifugal'].includes(await page.getAttribute('#fall-model-used', 'data-value')), 'falling object: the answer names the model auto solved');
+  // the textbooks' model asked for by name: the run solves r'' = g - 2 w x r' and names it; its exact
+  // landing (the linear equation's matrix exponential, mpmath) is 0.018618187559714791 m east
+  await page.selectOption('#fall-model', 'coriolis');
+  await page.evaluate(() => { delete document.querySelector('#fall-form').dataset.state; });
+  await page.click('#fall-submit');
+  await state('#fall-form', 'done');
+  check((await page.getAttribute('#fall-model-used', 'data-value')) === 'coriolis', 'falling object: the model chosen is the one solved and named');
+  close(await value('#fall-east'), 0.018618187559714791, 1e-6, 'falling object: Coriolis only, against the exact landing');
+  await page.selectOption('#fall-model', 'auto');
   await invalid('#fall-form', '#fall-height', -5, '#fall-submit', 'more than 0');
   await invalid('#can-form', '#can-lat', 95, '#can-submit', '90');
 });
@@ -769,7 +779,9 @@ await lab('inertia', async () => {
 await lab('earth', async () => {
   await settled();
   const cx0 = await page.getAttribute('#fou-bob', 'cx');
-  await page.click('#fou-plot ~ .player [data-role=play]'); await page.waitForTimeout(600);
+  await page.click('#fou-plot ~ .player [data-role=play]');
+  // (a loaded machine may draw few frames in a moment: wait for the bob to leave its start, up to 5 s)
+  await page.waitForFunction((c) => document.getElementById('fou-bob').getAttribute('cx') !== c, cx0, {timeout: 5000}).catch(() => {});
   await pauseIfPlaying('#fou-plot ~ .player [data-role=play]');
   check(await page.getAttribute('#fou-bob', 'cx') !== cx0, 'animation: the Foucault bob swings when played');
   // the falling object falls when played (from /v1/trajectory's samples), and lands where the scene says
@@ -900,6 +912,9 @@ await lab('tides', async () => {
   close(await value('#tides-moon-range'), moon, 1e-9, 'tides: the Moon\'s range 3 GM r⁴/(2 GM_E d³)');
   close(await value('#tides-sun-range'), sun, 1e-9, 'tides: the Sun\'s range');
   close(await value('#tides-spring'), moon + sun, 1e-9, 'tides: spring range = sum'); close(await value('#tides-neap'), moon - sun, 1e-9, 'tides: neap range = difference');
+  const constants = await page.textContent('#tides-constants');
+  check(/DE440/.test(constants) && constants.includes('4.902800118e12') && constants.includes('1.32712440041279419e20'),
+    `tides: the lab states the named bodies' values and their source ("${constants.slice(0, 80)}")`);
   // the arrows: 24, outwards below the Moon (+x), inwards at 90° (down the screen is towards the centre)
   const arrows = await page.$$eval('#tides-field [data-role=tide-arrow]', (ls) => ls.map(l => ['x1', 'y1', 'x2', 'y2'].map(k => Number(l.getAttribute(k)))));
   check(arrows.length === 24 && arrows[0][2] > arrows[0][0] + 5 && arrows[6][3] > arrows[6][1] + 2 && arrows[12][2] < arrows[12][0] - 5,

@@ -48,7 +48,10 @@ if [ "$(node_major)" -lt 20 ]; then
     if [ -x "$d/node" ]; then PATH=$d:$PATH; fi
   done
   export PATH
-  [ "$(node_major)" -ge 20 ] || { echo "run.sh: no Node.js >= 20 for $(uname -m) in $rt (node-runtime/package.json lists linux x64 and arm64)" >&2; exit 1; }
+  # (npm skips an optional package whose download failed and still exits 0:
+  # drop the install then, so the next run tries again instead of finding it
+  # "up to date")
+  [ "$(node_major)" -ge 20 ] || { rm -rf "$rt/node_modules"; echo "run.sh: no Node.js >= 20 for $(uname -m) in $rt (node-runtime/package.json lists linux x64 and arm64; did the npm registry answer?)" >&2; exit 1; }
   # The official build trusts only its bundled CAs; Debian's node (and npm)
   # use the system store: keep trusting what the machine trusts.
   if [ -z "${NODE_EXTRA_CA_CERTS:-}" ] && [ -r /etc/ssl/certs/ca-certificates.crt ]; then

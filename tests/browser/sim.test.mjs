@@ -495,6 +495,227 @@ for (const width of [1280, 390]) {
   } finally { await page.close(); }
 }
 
+// --- the whole state in a link: a body's parts and a 3-D view's camera; rolling down an incline ---
+// The solid sphere (2 kg, R = 0.5 m) on a 30° slope: k = I/(mR²) = 2/5, a = g sin α/(1 + k) = 3.50238 m/s²,
+// over 2 m t = √(2L/a), v = √(2aL). A point of 1 kg added at (0, 0, 1): the centre of mass moves up the z axis,
+// the moment about z stays the sphere's 0.2 kg m², so k = 0.2/(3 · 0.25) and the mass is 3 kg.
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    await page.goto(`${base}/#inertia`);
+    await settled(page);
+    await page.waitForFunction(() => [...document.querySelector('.examples select').options].some(o => /Solid sphere/.test(o.textContent)), null, {timeout: 10000});
+    await page.waitForTimeout(300);
+    const idx = await page.$eval('.examples select', (s) => [...s.options].findIndex(o => /Solid sphere/.test(o.textContent)));
+    await page.selectOption('.examples select', {index: idx});
+    await page.click('.examples button');
+    await settled(page);
+    const g = 9.80665, incline = async (k, m) => {
+      const a = g * 0.5 / (1 + k);
+      const got = {k: await value(page, '#inertia-inc-k'), a: await value(page, '#inertia-inc-a'), t: await value(page, '#inertia-inc-time'),
+        v: await value(page, '#inertia-inc-speed'), m: await value(page, '#inertia-total-mass')};
+      return [Math.abs(got.k - k) < 1e-12 && Math.abs(got.a - a) < 1e-12 * a && Math.abs(got.t - Math.sqrt(4 / a)) < 1e-12 * got.t &&
+        Math.abs(got.v - Math.sqrt(4 * a)) < 1e-12 * got.v && got.m === m, got, a];
+    };
+    await page.fill('#inertia-inc-angle', '30'); await page.fill('#inertia-inc-radius', '0.5'); await page.fill('#inertia-inc-length', '2');
+    await page.click('#inertia-submit');
+    await page.waitForSelector('#inertia-inc-a', {timeout: 20000}); await settled(page);
+    let [ok, got, a] = await incline(0.4, 2);
+    check(ok, `${tag}: incline: the solid sphere rolls at g sin 30°/(1 + 2/5) = ${a} m/s², 2 m in √(2L/a) (got ${JSON.stringify(got)})`);
+    await page.click('#inertia-add-part');
+    await page.fill('#inertia-pos-1-2', '1');
+    await page.click('#inertia-submit');
+    await page.waitForFunction(() => document.getElementById('inertia-total-mass')?.dataset.value === '3', null, {timeout: 20000});
+    await settled(page);
+    [ok, got, a] = await incline(0.2 / 0.75, 3);
+    check(ok, `${tag}: incline: a point of 1 kg added on the axis: k = 0.2/(3 · 0.5²), a = ${a} m/s² (got ${JSON.stringify(got)})`);
+    // the 3-D view turned by the keys: 0.1 rad a press
+    const view = page.locator('#inertia-view');
+    await view.scrollIntoViewIfNeeded(); await view.focus();
+    const yaw0 = Number(await view.getAttribute('data-yaw'));
+    for (let k = 0; k < 3; k++) await page.keyboard.press('ArrowLeft');
+    await page.keyboard.press('ArrowUp');
+    await page.waitForFunction((y) => Math.abs(Number(document.getElementById('inertia-view').dataset.yaw) - y - 0.3) < 1e-3, yaw0, {timeout: 5000});
+    const cam = await view.evaluate((c) => [c.dataset.yaw, c.dataset.pitch]);
+    await page.waitForFunction(() => /[?&]v0=/.test(location.hash) && /inertia-parts=/.test(location.hash), null, {timeout: 5000}).catch(() => {});
+    check(/[?&]v0=/.test(page.url()) && /inertia-parts=/.test(page.url()), `${tag}: share: the address bar keeps the parts and the camera (${page.url().length} characters)`);
+    await page.click('[data-role=copy-link]');
+    const link = await page.inputValue('.share-link');
+    const p2 = await newPage(width);
+    await p2.goto(link);
+    await p2.waitForSelector('main[data-restored=done]', {timeout: 30000});
+    await settled(p2);
+    await p2.waitForFunction(() => document.getElementById('inertia-total-mass')?.dataset.value === '3', null, {timeout: 20000}).catch(() => {});
+    const got2 = await p2.evaluate(() => ({parts: document.querySelectorAll('#parts fieldset.part').length,
+      shapes: [...document.querySelectorAll('#parts select')].map(s => s.value).join(','),
+      a: document.getElementById('inertia-inc-a')?.dataset.value, cam: [document.getElementById('inertia-view').dataset.yaw, document.getElementById('inertia-view').dataset.pitch]}));
+    check(got2.parts === 2 && got2.shapes === 'sphere,point' && Number(got2.a) === got.a && got2.cam[0] === cam[0] && got2.cam[1] === cam[1],
+      `${tag}: share: the link rebuilds both parts, the incline and the camera (${JSON.stringify(got2)} against a = ${got.a}, camera ${cam})`);
+    await p2.locator('#inertia-incline').scrollIntoViewIfNeeded();
+    await p2.screenshot({path: path.join(shots, `sim-${tag}-inertia-link.png`)});
+    check(p2.errors.length === 0, `${tag}: share: no script errors on the opened inertia link (${p2.errors.join(' | ')})`);
+    await p2.close();
+    // the Earth's 3-D view keeps its camera through a link too (the lab's own viewpoint does not override it)
+    await page.goto('about:blank');
+    await page.goto(`${base}/#earth?v0=1.234,0.321,1.5`);
+    await page.waitForSelector('main[data-restored=done]', {timeout: 30000});
+    await page.waitForFunction(() => document.getElementById('fou-view')?.dataset.yaw === '1.234', null, {timeout: 20000}).catch(() => {});
+    const fc = await page.$eval('#fou-view', (c) => [c.dataset.yaw, c.dataset.pitch, c.dataset.zoom]);
+    check(fc.join() === '1.234,0.321,1.500', `${tag}: share: the Foucault view opens at the linked camera (${fc})`);
+    check(page.errors.length === 0, `${tag}: inertia and camera links: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: inertia link: ${e.message.split('\n')[0]}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-inertia-link-failed.png`)}).catch(() => {});
+  } finally { await page.close(); }
+}
+
+// --- the orbit's live view: v, gravity and the relativistic term on the planet, energy bars ---
+// Mercury (a = 57.909 Gm, e = 0.2056): at perihelion the speed is Newton's vis-viva √(GM(1 + e)/(a(1 − e))) to the
+// relativistic order GM/(c²a) ~ 10⁻⁸, the pull GM/r², and ½v² − GM/r (+ the tiny relativistic term) is −GM/2a.
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    await page.goto(`${base}/#orbits`);
+    await page.waitForFunction(() => document.querySelector('#orb-submit')?.form.dataset.state === 'done' && document.getElementById('orb-plot').dataset.state,
+      null, {timeout: 30000});
+    const GM = 1476.6250385094204 * 299792458 ** 2, A = 57909050000, E = 0.20563593, rp = A * (1 - E);
+    const st = async () => JSON.parse(await page.getAttribute('#orb-plot', 'data-state'));
+    const s0 = await st(), v0 = Math.hypot(s0.vr, s0.vt), visviva = Math.sqrt(GM * (1 + E) / (A * (1 - E)));
+    const sum = (s) => s.K + s.U + s.Ugr;
+    check(Math.abs(s0.r - rp) < 1e-9 * rp && Math.abs(v0 - visviva) < 1e-6 * visviva && Math.abs(s0.g - GM / (rp * rp)) < 1e-9 * s0.g &&
+      Math.abs(sum(s0) + GM / (2 * A)) < 1e-6 * GM / (2 * A),
+      `${tag}: orbits: at perihelion v = ${v0} m/s (vis-viva ${visviva}), g = GM/r², energy ${sum(s0)} J/kg against −GM/2a = ${-GM / (2 * A)}`);
+    const pl = page.locator('.player').first();
+    await pl.locator('[data-role=time]').focus();
+    for (let k = 0; k < 60; k++) await page.keyboard.press('.');
+    const s1 = await st();
+    check(s1.r > rp * 1.05 && s1.K < s0.K * 0.95 && Math.abs(sum(s1) - sum(s0)) < 1e-9 * Math.abs(sum(s0)) && Math.abs(s1.vt * s1.r - s0.vt * s0.r) < 1e-9 * s0.vt * s0.r,
+      `${tag}: orbits: 60 samples on, the kinetic bar has fallen (${s0.K.toExponential(4)} → ${s1.K.toExponential(4)} J/kg), the sum stays level and r v_φ = L`);
+    const names = await page.$$eval('#orb-vectors [data-role=vector]', (v) => v.map(x => x.dataset.name));
+    const bars = await page.$$eval('#orb-energy [data-role=bar]', (rs) => rs.map(r => Number(r.dataset.value)));
+    check(names[0] === 'v' && names[1] === 'g' && /^GR ×/.test(names[2] || '') && bars.length === 4 && Math.abs(bars[3] - sum(s1)) < 1e-6 * Math.abs(bars[3]),
+      `${tag}: orbits: v, g and the relativistic term (exaggerated like the precession) drawn on the planet, four energy bars (${names}; ${bars.map(b => b.toExponential(3))})`);
+    check(/relativistic term 3GML²\/\(c²r⁴\)/.test(await page.textContent('#orb-vec-note')), `${tag}: orbits: the forces said in words`);
+    await page.locator('#orb-plot').scrollIntoViewIfNeeded();
+    await page.screenshot({path: path.join(shots, `sim-${tag}-orbit-vectors.png`)});
+    // Tops: the nutation period and the precession averaged over one nutation, against the integrated motion: the
+    // top released at θ0 with φ̇0 = 0 is back at θ0 one period later, having precessed by the averaged rate × T
+    await page.goto('about:blank');
+    await page.goto(`${base}/#tops`);
+    await page.waitForFunction(() => document.querySelector('#top-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    const T = await value(page, '#top-nut-period'), avg = await value(page, '#top-prec-avg');
+    const run = await (await fetch(base + '/v1/rigid/top', {method: 'POST', headers: {'Content-Type': 'application/json'},
+      body: JSON.stringify({I1: 0.02, I3: 0.01, mass: 1, distance: 0.1, theta: 0.5, psi_dot: 60, phi_dot: 0, t_end: T, samples: 3,
+        integrator: {accuracy: 'precise'}})})).json();
+    const thEnd = run.theta[run.theta.length - 1], dphi = run.phi[run.phi.length - 1] - run.phi[0];
+    check(Math.abs(thEnd - 0.5) < 1e-6 && Math.abs(dphi / T - avg) < 1e-6 * avg,
+      `${tag}: tops: after the nutation period T = ${T} s the integrated top is back at θ0 (${thEnd}) and has precessed at the averaged rate (${dphi / T} against ${avg} rad/s)`);
+    // the free body (I = 1, 2, 3 kg m², ω = (0.01, 1, 0.01) rad/s): ω drawn on it, T = ½ΣIₖωₖ² = 1.0002 J by axis; the sum
+    // stays level while the middle axis' share falls as the body flips
+    await page.waitForFunction(() => document.querySelector('#dz-submit')?.form.dataset.state === 'done', null, {timeout: 30000});
+    const shares = await page.evaluate(async () => {
+      const s = document.querySelector('#dz-3d-box ~ .player [data-role=time]'), out = [];
+      for (let v = 0; v <= 1000; v += 20) {
+        s.value = String(v); s.dispatchEvent(new Event('input', {bubbles: true}));
+        out.push(JSON.parse(document.getElementById('dz-energy').dataset.parts));
+      }
+      return out;
+    });
+    const T0 = 0.5 * (1 * 1e-4 + 2 * 1 + 3 * 1e-4), sums = shares.map(p => p[0] + p[1] + p[2]);
+    const level = Math.max(...sums.map(x => Math.abs(x - T0))) / T0, low = Math.min(...shares.map(p => p[1])) / T0;
+    check(level < 1e-6 && low < 0.5 && /ω = [\d.]+ rad\/s/.test(await page.textContent('#dz-vectors')),
+      `${tag}: tops: the free body's energy by axis sums to ½ΣIω² = ${T0} J (within ${level.toExponential(1)}) while the middle axis' share falls to ${low.toFixed(3)} in the flip`);
+    check(page.errors.length === 0, `${tag}: orbit vectors, tops: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: orbit vectors: ${e.message.split('\n')[0]}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-orbit-vectors-failed.png`)}).catch(() => {});
+  } finally { await page.close(); }
+}
+
+// --- the oscillations lab: normal modes against closed forms, the motion as a sum of modes, energy level ---
+for (const width of [1280, 390]) {
+  const tag = width < 500 ? 'phone' : 'desktop';
+  const page = await newPage(width);
+  try {
+    await page.goto(`${base}/#oscillations`);
+    await settled(page);
+    // three equal masses (1 kg) and springs (1 N/m) between walls: ω_j = 2 sin(jπ/8) rad/s
+    const om = async () => Promise.all([0, 1, 2].map(k => value(page, `#osc-omega-${k}`)));
+    const w = await om();
+    check(w.every((x, j) => Math.abs(x - 2 * Math.sin((j + 1) * Math.PI / 8)) < 1e-12), `${tag}: oscillations: ω_j = 2√(k/m) sin(jπ/8) (${w})`);
+    check(Number(await page.getAttribute('#osc-notes', 'data-abs')) < 1e-12, `${tag}: oscillations: the closed form's box agrees to round-off`);
+    // the start q = (0.1, 0, 0) m: E = ½ qᵀKq = ½ · 2 N/m · 0.01 m² = 0.01 J; the bars trade and their sum stays level
+    check(Math.abs(await value(page, '#osc-energy-total') - 0.01) < 1e-15, `${tag}: oscillations: E = ½qᵀKq = 0.01 J`);
+    const en = async () => JSON.parse(await page.getAttribute('#osc-energy', 'data-energy'));
+    await page.locator('#osc-scene ~ .player [data-role=time]').focus();
+    for (let k = 0; k < 7; k++) await page.keyboard.press('.');
+    const e1 = await en();
+    check(e1.T > 1e-4 && Math.abs(e1.T + e1.U - 0.01) < 1e-12, `${tag}: oscillations: ½q̇ᵀMq̇ = ${e1.T} J and ½qᵀKq = ${e1.U} J sum to 0.01 J`);
+    // started in mode 2 (v ∝ (1, 0, −1)): only that mode is excited and the middle mass stays still
+    await page.click('#osc-start-1');
+    await page.waitForFunction(() => document.getElementById('osc-q').value.startsWith('0.1, 0, -0.1'), null, {timeout: 5000});
+    await settled(page);
+    await page.waitForFunction(() => document.getElementById('osc-a') && JSON.parse(document.getElementById('osc-a').dataset.value)[1] !== 0.05 &&
+      document.querySelector('#osc-submit').form.dataset.state === 'done', null, {timeout: 20000});
+    const am = JSON.parse(await page.getAttribute('#osc-a', 'data-value'));
+    await page.locator('#osc-scene ~ .player [data-role=time]').focus();
+    for (let k = 0; k < 9; k++) await page.keyboard.press('.');
+    const mid = await page.$$eval('#osc-scene rect[data-x]', (r) => r.map(x => Number(x.dataset.x)));
+    check(Math.abs(am[0]) < 1e-12 * Math.abs(am[1]) && Math.abs(am[2]) < 1e-12 * Math.abs(am[1]) && Math.abs(mid[1]) < 1e-12 && Math.abs(mid[0] + mid[2]) < 1e-12,
+      `${tag}: oscillations: started in mode 2, a_k = (${am}), the middle mass still (${mid[1]}) and the outer ones opposite (${mid[0]}, ${mid[2]})`);
+    // the start dragged: the first mass's ring moved right by pointer, the middle one's by ArrowUp (0.01 m); the energy
+    // answered is ½qᵀKq with K = [[2, −1, 0], [−1, 2, −1], [0, −1, 2]] N/m for the new start, at rest
+    const qNow = async () => (await page.inputValue('#osc-q')).split(',').map(Number);
+    const Eof = (q) => 0.5 * (2 * q[0] * q[0] + 2 * q[1] * q[1] + 2 * q[2] * q[2] - 2 * q[0] * q[1] - 2 * q[1] * q[2]);
+    check(await sliderOk(page, '#osc-start-q0'), `${tag}: oscillations: each start is a slider with its value in words`);
+    const before = await qNow();
+    // (sliderOk and drag are defined with the handles' section below: hoisted functions)
+    await drag(page, '#osc-start-q0', 40, 0);
+    await page.waitForFunction((q) => document.getElementById('osc-q').value !== q, before.join(', '), {timeout: 10000});
+    await settled(page); await page.waitForTimeout(400); await settled(page);
+    let qs = await qNow();
+    check(qs[0] > before[0] && Math.abs(await value(page, '#osc-energy-total') - Eof(qs)) < 1e-14,
+      `${tag}: oscillations: the first mass's start dragged to ${qs[0]} m: E = ½qᵀKq = ${Eof(qs)} J`);
+    await page.focus('#osc-start-q1'); await page.keyboard.press('ArrowUp');
+    await page.waitForFunction(() => Number(document.getElementById('osc-q').value.split(',')[1]) === 0.01, null, {timeout: 10000});
+    await settled(page); await page.waitForTimeout(400); await settled(page);
+    qs = await qNow();
+    check(Math.abs(await value(page, '#osc-energy-total') - Eof(qs)) < 1e-14, `${tag}: oscillations: ArrowUp starts the middle mass at 0.01 m: E = ${Eof(qs)} J`);
+    check(/x1 starts at 0\.01 m/.test(await page.getAttribute('#osc-start-q1', 'aria-valuetext')), `${tag}: oscillations: the handle says where it starts`);
+    await page.locator('#osc-scene').scrollIntoViewIfNeeded();
+    await page.screenshot({path: path.join(shots, `sim-${tag}-oscillations.png`)});
+    // every worked example computes, clean; the double pendulum's ω² = (2 ∓ √2) g/l
+    const titles = await page.$$eval('.examples select option', (o) => o.map(x => x.textContent));
+    for (let i = 0; i < titles.length; i++) {
+      await page.selectOption('.examples select', {index: i});
+      await page.click('.examples button');
+      await page.waitForTimeout(100); await settled(page);
+      const bad = await page.evaluate(() => { const t = document.querySelector('main').innerText;
+        return [/(?<![A-Za-z])(NaN|undefined)(?![A-Za-z])/.test(t), [...document.querySelectorAll('.problem, .err')].some(b => b.textContent.trim())]; });
+      check(!bad[0] && !bad[1] && await page.getAttribute('main form', 'data-state') === 'done', `${tag}: oscillations: the example "${titles[i]}" computes, clean`);
+      if (/Double pendulum/.test(titles[i])) {
+        const d = await Promise.all([0, 1].map(k => value(page, `#osc-omega-${k}`)));
+        check(Math.abs(d[0] ** 2 - (2 - Math.SQRT2) * 9.80665) < 1e-12 * 9.80665 && Math.abs(d[1] ** 2 - (2 + Math.SQRT2) * 9.80665) < 1e-12 * 9.80665,
+          `${tag}: oscillations: the equal double pendulum's ω² = (2 ∓ √2) g/l (${d.map(x => x * x)})`);
+      }
+    }
+    check(await wide(page) <= 0, `${tag}: oscillations: nothing wider than the screen (${await wide(page)} px)`);
+    // a mass that is not a number: said on its field
+    await page.selectOption('#osc-system', 'spring_chain');
+    await page.fill('#osc-masses', '1, foo, 1'); await page.fill('#osc-springs', '1, 1, 1, 1'); await page.fill('#osc-q', '0.1, 0, 0');
+    await page.click('#osc-submit');
+    await page.waitForSelector('main form[data-state=error]', {timeout: 20000});
+    await errorOnField(page, '#osc-masses', `${tag}: oscillations: a mass "foo"`, /“foo” \(mass 2\) is not a number/);
+    await axe(page, `${tag}: oscillations`);
+    check(page.errors.length === 0, `${tag}: oscillations: no script errors (${page.errors.join(' | ')})`);
+  } catch (e) {
+    check(false, `${tag}: oscillations: ${e.message.split('\n')[0]}`);
+    await page.screenshot({path: path.join(shots, `sim-${tag}-oscillations-failed.png`)}).catch(() => {});
+  } finally { await page.close(); }
+}
+
 // --- the smaller things --------------------------------------------------------
 for (const width of [1280, 390]) {
   const tag = width < 500 ? 'phone' : 'desktop';

@@ -9,11 +9,11 @@
 #include "mech/continuum.h"
 #include "mech/frames.h"
 #include "mech/gr.h"
-#include "mech/hamiltonian.h"
-#include "mech/ode.h"
+#include "mech/hamiltonian/hamiltonian.h"
+#include "mech/ode/ode.h"
 #include "mech/relativity.h"
 #include "mech/rigid.h"
-#include "mech/rotation.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 int main(void)

@@ -23,7 +23,7 @@
 #include "api.h"
 #include "fuzz_common.h"
 #include "mech/base/budget.h"
-#include "routes.h"
+#include "run/routes.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

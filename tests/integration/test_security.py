@@ -8,7 +8,8 @@ bearer-token authentication of /v1 (401 problem+json with WWW-Authenticate
 when the token is missing, wrong, a prefix, longer, or in another scheme; 200
 with it, for GET and POST and HEAD), that /healthz, /metrics, the front end and
 /problems stay open; CORS (preflight and Access-Control-Allow-Origin only for
-listed origins, nothing when CORS is off); the security headers on every kind
+listed origins; a preflight from any other origin, or with CORS off, is
+answered as a plain OPTIONS: 204 with Allow and no Access-Control-*); the security headers on every kind
 of answer; the static file server refusing traversal (plain, encoded,
 double-encoded, absolute, backslashes) with 400 or 404; and option validation
 (missing or empty token file, bad origins -> exit 2). Every socket and
@@ -164,7 +165,7 @@ def test_auth(port, example_path, example_body):
             check("%s %s, %s: WWW-Authenticate Bearer" % (method, path, name),
                   www.startswith("Bearer") and (("invalid_token" in www) == invalid), www)
             check_security_headers("401 %s %s" % (method, name), h)
-    # The 401 is the problem table's (api/problem.c), built like every other
+    # The 401 is the problem table's (api/http/problem.c), built like every other
     # problem: its type's page names the same title, a newline ends the body,
     # "instance" is the path, and it is never cached.
     st, h, payload = request(port, "POST", example_path, example_body)
@@ -228,13 +229,16 @@ def test_cors(port, example_path, example_body):
     for origin in ["http://evil.example", "http://lab.example.org.evil.example",
                    "https://lab.example.org", "http://lab.example.org:80", "null",
                    "http://localhost:3001"]:
+        # Answered as a plain OPTIONS (RFC 9110 9.3.7): Allow, no CORS header,
+        # so the browser itself refuses the cross-origin request (was: 403).
         st, h, payload = request(port, "OPTIONS", example_path, headers=dict(preflight, Origin=origin))
-        doc = check_problem("preflight from unlisted %s" % origin, st, h, payload, 403,
-                            "/problems/cors-origin-not-allowed")
-        check("403 body from the problem table (title, newline-terminated)",
-              doc.get("title") == "Origin not allowed" and payload.endswith(b"}\n"), payload)
+        check("preflight from unlisted %s -> 204 with Allow, empty body" % origin,
+              st == 204 and payload == b""
+              and sorted(m.strip() for m in h.get("allow", "").split(","))
+              == ["GET", "HEAD", "OPTIONS", "POST"], (st, h, payload[:200]))
         check("preflight from %s: no Access-Control-*" % origin,
               not any(k.startswith("access-control-") for k in h), h)
+        check_security_headers("204 preflight from an unlisted origin", h)
         st, h, _ = request(port, "POST", example_path, example_body,
                            headers=dict(auth(), Origin=origin))
         check("POST from unlisted %s: 200 but no Allow-Origin" % origin,
@@ -302,8 +306,14 @@ def test_cors_off(example_path, example_body):
               h)
         st, h, _ = request(srv.port, "OPTIONS", example_path,
                            headers={"Origin": ALLOWED[0], "Access-Control-Request-Method": "POST"})
-        check("CORS off: preflight refused, no Access-Control-*",
-              st >= 400 and not any(k.startswith("access-control-") for k in h), (st, h))
+        check("CORS off: preflight answered 204 with Allow, no Access-Control-*",
+              st == 204 and "POST" in h.get("allow", "")
+              and not any(k.startswith("access-control-") for k in h), (st, h))
+        st, h, payload = request(srv.port, "OPTIONS", "/v1/no/such/operation",
+                                 headers={"Origin": ALLOWED[0],
+                                          "Access-Control-Request-Method": "POST"})
+        check("CORS off: preflight of an unknown path -> 404, no Access-Control-*",
+              st == 404 and not any(k.startswith("access-control-") for k in h), (st, h))
     finally:
         srv.stop()
 

@@ -10,7 +10,7 @@ which symbols each file's code refers to. File A depends on file B when A's
 code (a .text section) refers to a symbol B defines (a call, a function's
 address, a variable), or A's data refers to a variable of B. A table in A's
 data that holds B's functions' addresses is no dependency of A on B: that
-is how the route table (api/routes.c) reaches the handlers, and how a handler
+is how the route table (api/run/routes.c) reaches the handlers, and how a handler
 that runs other operations (/v1/batch) calls back into the pipeline without a
 loop. Every loop of dependencies is printed with the symbols that close it.
 

@@ -52,20 +52,27 @@ export default {
     put(main);
     add(main, el('h2', {}, 'Earth: the rotating frame'), examplePicker(['/v1/scenes/falling-object', '/v1/scenes/cannonball', '/v1/scenes/foucault'], BUILTIN, (ex) => {
       const r = ex.request;
-      if (ex.operation === '/v1/scenes/falling-object') { fh.input.value = r.height; fl.input.value = r.latitude_deg; fall(); fallS.form.scrollIntoView(); }
+      if (ex.operation === '/v1/scenes/falling-object') { fh.input.value = r.height; fl.input.value = r.latitude_deg;
+        fm.input.value = r.model ?? 'auto'; fall(); fallS.form.scrollIntoView(); }
       if (ex.operation === '/v1/scenes/cannonball') { cs.input.value = r.speed; ce.input.value = r.elevation_deg;
-        ca.input.value = r.azimuth_deg ?? 0; cl.input.value = r.latitude_deg; cannon(); canS.form.scrollIntoView(); }
+        ca.input.value = r.azimuth_deg ?? 0; cl.input.value = r.latitude_deg; cm.input.value = r.model ?? 'auto'; cannon(); canS.form.scrollIntoView(); }
       if (ex.operation === '/v1/scenes/foucault') { pl.input.value = r.latitude_deg; pL.input.value = r.length ?? 67;
         pa.input.value = (r.release && r.release.amplitude_deg) ?? 3; ps.input.value = r.swings ?? 100; pend(); fouS.form.scrollIntoView(); }
     }));
     // falling object
     const fh = field({label: 'height h', pointer: '/height', value: 100, unit: 'm', id: 'fall-height'});
     const fl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 32, unit: '°', id: 'fall-lat'});
+    // the equations the numerical run solves (the scenes' model): as the textbooks do (Coriolis only) or more
+    const models = [['auto', 'auto: the terms that matter'], ['coriolis', 'Coriolis only (textbooks)'],
+      ['coriolis_centrifugal', 'Coriolis and centrifugal']];
+    const fm = field({label: 'model', pointer: '/model', value: 'auto', options: models, id: 'fall-model'});
     const fallS = section(main, 'Falling object', 'Dropped from rest, it lands east of the point below (and a little south). ' +
-      'Without the Earth\'s rotation it would land exactly below.', [fh, fl], 'Drop', 'fall');
+      'Without the Earth\'s rotation it would land exactly below.', [fh, fl, fm], 'Drop', 'fall');
     const fallNotes = notesBox('fall-notes');
-    const fall = runner(fallS, '/v1/scenes/falling-object', () => ({height: val(fh.input), latitude_deg: val(fl.input)}), (a) => {
+    const fall = runner(fallS, '/v1/scenes/falling-object', () => ({height: val(fh.input), latitude_deg: val(fl.input),
+      model: val(fm.input)}), (a) => {
       put(fallS.results, el('dl', {class: 'nums'},
+        el('dt', {}, 'model solved'), el('dd', {id: 'fall-model-used', 'data-value': a.physics_model.name}, a.physics_model.equation),
         el('dt', {}, 'fall time'), num('fall-t', a.numerical.t, 's'),
         el('dt', {}, 'east (numerical)'), num('fall-east', a.numerical.east, 'm'),
         el('dt', {}, 'east (first order)'), num('fall-east-1', a.first_order.east, 'm'),
@@ -77,7 +84,7 @@ export default {
         formula: ['x', el('sub', {}, 'east'), ' = ⅓ ω g t³ cos λ = ⅓ ω cos λ √(8h³/g),  t = √(2h/g)'],
         what: 'the first-order formula', formulaValue: a.first_order.east, apiValue: a.numerical.east, diff: -a.difference.east,
         unit: 'm', source: 'api', how: 'The eastward drift at the ground: the notes keep only the Coriolis term, first order in ω; ' +
-          'the API integrates the full equations (Coriolis and centrifugal) to the landing.',
+          'the API integrates ' + a.physics_model.equation + ' to the landing.',
         note: 'The notes: "for a height of 100 meters, at 32 degrees latitude, the displacement is about 1.9 cm."'});
       drawPlot(fallS.plot, () => planView(fallS.plot, a.numerical.east, a.numerical.north, `${fmt(a.numerical.east * 100, 4)} cm east`));
       fallPath(a);
@@ -128,13 +135,15 @@ export default {
     const ce = field({label: 'elevation', pointer: '/elevation_deg', value: 30, unit: '°', id: 'can-elev'});
     const ca = field({label: 'azimuth', pointer: '/azimuth_deg', value: 0, unit: '° from east', id: 'can-az'});
     const cl = field({label: 'latitude λ', pointer: '/latitude_deg', value: 45, unit: '°', id: 'can-lat'});
+    const cm = field({label: 'model', pointer: '/model', value: 'auto', options: models, id: 'can-model'});
     const canS = section(main, 'Cannonball', 'Fired over the rotating Earth it is deflected to the right in the northern ' +
       'hemisphere (to the left in the southern). The picture shows the landing point relative to where it would land on a ' +
-      'non-rotating Earth.', [cs, ce, ca, cl], 'Fire', 'can');
+      'non-rotating Earth.', [cs, ce, ca, cl, cm], 'Fire', 'can');
     const canNotes = notesBox('can-notes');
     const cannon = runner(canS, '/v1/scenes/cannonball', () => ({speed: val(cs.input), elevation_deg: val(ce.input),
-      azimuth_deg: val(ca.input), latitude_deg: val(cl.input)}), (a) => {
+      azimuth_deg: val(ca.input), latitude_deg: val(cl.input), model: val(cm.input)}), (a) => {
       put(canS.results, el('dl', {class: 'nums'},
+        el('dt', {}, 'model solved'), el('dd', {id: 'can-model-used', 'data-value': a.physics_model.name}, a.physics_model.equation),
         el('dt', {}, 'time of flight'), num('can-t', a.numerical.t, 's'),
         el('dt', {}, 'range'), num('can-range', a.numerical.range, 'm'),
         el('dt', {}, 'deflection to the right'), num('can-right', a.numerical.right, 'm'),
@@ -436,7 +445,7 @@ function foucaultGlobe(G, box, note, play, a, ground) {
     new THREE.LineBasicMaterial({color: 0x555555}));
   site.add(start);
   G.frame(1.15);
-  G.view.yaw = -0.45; G.view.pitch = 0.6; // the floor (longitude 0, latitude λ) towards the camera at the start
+  G.aim(-0.45, 0.6); // the floor (longitude 0, latitude λ) towards the camera at the start
   const turnDay = rate * day * 180 / Math.PI, still = a.precession.first_order_rate === 0;
   put(note, `Seen from the stars, the Earth turns once in a sidereal day (${fmt(day / 3600, 4)} h). The floor at ${fmt(a.setup.latitude_deg, 5)}° `,
     `(drawn large, north green) turns with it; the swing plane (red) turns on the floor by ${still ? 'nothing: at the equator ω sin λ = 0'

@@ -34,7 +34,21 @@ export default {
       intro: 'Build a rigid body from parts. mechd returns the inertia tensor about the origin you choose, ' +
              'the principal moments and the principal axes, drawn over the body (drag or use the arrow keys to turn it).'});
     state = state || {req: structuredClone(BUILTIN[0].request), answer: null};
-    const partsBox = el('div', {id: 'parts'});
+    // the parts (their number, shapes, sizes, positions, orientations) travel in a link as one hidden input
+    // holding them as JSON (share.js): its own controls are rebuilt with each part added or removed
+    const partsBox = el('div', {id: 'parts', 'data-noshare': true});
+    const partsState = el('input', {type: 'hidden', id: 'inertia-parts', value: JSON.stringify(state.req.bodies)});
+    const publish = () => { // the parts as they stand, told to the address bar when they changed
+      const v = JSON.stringify(state.req.bodies);
+      if (v !== partsState.value) { partsState.value = v; partsState.dispatchEvent(new Event('input', {bubbles: true})); }
+    };
+    partsState.addEventListener('change', () => { // a link's parts (share.js restores them)
+      let b = null;
+      try { b = JSON.parse(partsState.value); } catch (e) { b = null; }
+      if (!Array.isArray(b) || !b.length || b.length > 64 || !b.every(x => x && typeof x === 'object' && typeof x.shape === 'string')) return;
+      state.req.bodies = b; renderParts(); drawPlan();
+    });
+    partsBox.addEventListener('change', () => { sync(); publish(); });
     const originSel = field({label: 'Origin', pointer: '/origin', value: Array.isArray(state.req.origin) ? 'point' : 'center_of_mass',
       options: [['center_of_mass', 'centre of mass'], ['point', 'a point']], id: 'inertia-origin'});
     const o = Array.isArray(state.req.origin) ? state.req.origin : [0, 0, 0];
@@ -43,6 +57,16 @@ export default {
     const w = Array.isArray(state.req.omega) ? state.req.omega : ['', '', ''];
     const om = w.map((v, k) => field({label: 'ω' + 'xyz'[k], pointer: `/omega/${k}`, value: v, unit: 'rad/s', cls: 'small',
       id: `inertia-omega-${k}`}));
+    // rolling down an incline (optional: the slope's angle and the rolling radius ask for it)
+    const inc = state.req.incline || {};
+    const incAngle = field({label: 'slope angle', pointer: '/incline/angle_deg', value: inc.angle_deg ?? '', unit: '°', id: 'inertia-inc-angle',
+      help: 'between 0° and 90°'});
+    const incRadius = field({label: 'rolling radius', pointer: '/incline/radius', value: inc.radius ?? '', unit: 'm', id: 'inertia-inc-radius',
+      help: 'rolling axis to the slope'});
+    const incAxis = (inc.axis || [0, 0, 1]).map((v, k) => field({label: 'rolling axis ' + 'xyz'[k], pointer: `/incline/axis/${k}`, value: v,
+      cls: 'small', id: `inertia-inc-axis-${k}`}));
+    const incLength = field({label: 'distance rolled', pointer: '/incline/length', value: inc.length ?? '', unit: 'm', id: 'inertia-inc-length',
+      help: 'optional: adds the time and speed'});
     const rows = [];
     const renderParts = () => {
       rows.length = 0;
@@ -53,7 +77,7 @@ export default {
         shape.input.addEventListener('change', () => {
           sync(); const nb = {shape: shape.input.value, mass: b.mass, position: b.position};
           for (const [k, , n, d] of SHAPES[nb.shape]) nb[k] = b[k] !== undefined && (n === 3) === Array.isArray(b[k]) ? b[k] : d;
-          state.req.bodies[i] = nb; renderParts();
+          state.req.bodies[i] = nb; renderParts(); publish();
         });
         const mass = field({label: 'mass', pointer: `${p}/mass`, value: b.mass, unit: 'kg', id: `inertia-mass-${i}`});
         const dims = (SHAPES[b.shape] || []).flatMap(([k, lab, n]) => n === 3
@@ -66,7 +90,7 @@ export default {
         return el('fieldset', {class: 'part'}, el('legend', {}, `Part ${i + 1}`), shape.wrap, mass.wrap,
           dims.map(d => d.wrap), pos.map(d => d.wrap),
           el('button', {type: 'button', class: 'secondary', 'aria-label': `Remove part ${i + 1}`,
-            disabled: state.req.bodies.length < 2, onclick: () => { sync(); state.req.bodies.splice(i, 1); renderParts(); }},
+            disabled: state.req.bodies.length < 2, onclick: () => { sync(); state.req.bodies.splice(i, 1); renderParts(); publish(); }},
             'Remove part'));
       }));
     };
@@ -83,20 +107,34 @@ export default {
       state.req.origin = originSel.input.value === 'point' ? ox.map(f => val(f.input)) : 'center_of_mass';
       // ω is optional: all three empty leaves it out (then no L and T)
       if (om.every(f => f.input.value.trim() === '')) delete state.req.omega; else state.req.omega = om.map(f => val(f.input));
+      // the incline: asked for when its angle or radius is given (the distance is optional)
+      if (incAngle.input.value.trim() === '' && incRadius.input.value.trim() === '') delete state.req.incline;
+      else {
+        state.req.incline = {angle_deg: val(incAngle.input), radius: val(incRadius.input), axis: incAxis.map(f => val(f.input))};
+        if (incLength.input.value.trim() !== '') state.req.incline.length = val(incLength.input);
+      }
     };
     add(L.form,
       examplePicker(['/v1/rigid/inertia'], BUILTIN, (ex) => {
         // the form is rebuilt for the example's parts; the picker keeps showing it
         state.req = structuredClone(ex.request); state.answer = null; state.example = ex.id || ex.title;
+        // Copy link and Reset (share.js) stay under the title, the embedded page's link out at the end
+        const bar = main.querySelector(':scope > .share'), out = main.querySelector(':scope > .embed-bar');
         this.mount(main);
+        const h = main.querySelector('h2');
+        if (bar && h) h.after(bar);
+        if (out) add(main, out);
       }, {selected: state.example}),
-      partsBox,
-      el('div', {class: 'buttons'}, el('button', {type: 'button', class: 'secondary', onclick: () => {
-        sync(); state.req.bodies.push({shape: 'point', mass: 1, position: [0, 0, 1]}); renderParts();
+      partsState, partsBox,
+      el('div', {class: 'buttons'}, el('button', {type: 'button', class: 'secondary', id: 'inertia-add-part', onclick: () => {
+        sync(); state.req.bodies.push({shape: 'point', mass: 1, position: [0, 0, 1]}); renderParts(); publish();
       }}, 'Add part')),
       el('fieldset', {}, el('legend', {}, 'Tensor about'), originSel.wrap, ox.map(f => f.wrap)),
       el('fieldset', {}, el('legend', {}, 'Turning at ω (optional)'), om.map(f => f.wrap),
         el('p', {class: 'muted'}, 'Give ω to see the angular momentum L = I ω and the kinetic energy ½ ω·L.')),
+      el('fieldset', {}, el('legend', {}, 'Rolling down an incline (optional)'), incAngle.wrap, incRadius.wrap, incAxis.map(f => f.wrap), incLength.wrap,
+        el('p', {class: 'muted'}, 'The body rolls without slipping from rest about the rolling axis through its centre of mass ',
+          '(a ball or a cylinder: its radius; a cylinder as built rolls about z).')),
       el('div', {class: 'buttons'}, el('button', {type: 'submit', id: 'inertia-submit'}, 'Compute')));
     renderParts();
     const box3d = el('div', {class: 'view3d-box'});
@@ -106,13 +144,13 @@ export default {
         ' from the origin of the tensor (lengths ∝ moments); the grey ellipsoid of inertia x·I x = const has semi-axes ∝ 1/√Iₖ ',
         '(longest along the smallest moment; capped at 3× the shortest where a moment is near zero). Drag, or focus it and use the arrow keys, to turn it.'));
     const V = view3d(box3d, {label: 'The body, its principal axes and ellipsoid of inertia in 3-D', id: 'inertia-view'});
-    if (state.cam) { V.view.yaw = state.cam.yaw; V.view.pitch = state.cam.pitch; } // the view as it was turned
+    if (state.cam) for (const k of ['yaw', 'pitch', 'zoom', 'turned']) V.view[k] = state.cam[k]; // the view as it was turned
     state.cam = V.view;
     const world = new THREE.Group();
     V.scene.add(world);
     const draw = () => { drawBody(world, state); V.frame(extentOf(state) * 1.45); };
     const notes = notesBox('inertia-notes'); L.figure.after(notes.box); // under the figure: the picture stays by the answer
-    const run = runner(L, '/v1/rigid/inertia', () => { sync(); return structuredClone(state.req); }, (a) => {
+    const run = runner(L, '/v1/rigid/inertia', () => { sync(); publish(); return structuredClone(state.req); }, (a) => {
       state.answer = a;
       const m = a.principal.moments;
       // round-off next to zero (a dumbbell's 7e-17 about its axis) reads 0; data-value keeps the number
@@ -132,7 +170,8 @@ export default {
         Array.isArray(a.angular_momentum) ? el('dl', {class: 'nums'},
           el('dt', {}, 'ω'), el('dd', {}, `(${state.req.omega.map(v => fmt(v)).join(', ')}) rad/s`),
           el('dt', {}, 'L = I ω'), el('dd', {id: 'inertia-L'}, `(${a.angular_momentum.map(v => fmt(v)).join(', ')}) kg m²/s`),
-          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null);
+          el('dt', {}, 'kinetic energy'), num('inertia-T', a.kinetic_energy, 'J')) : null,
+        a.incline ? rolling(a.incline, state.req.incline) : null);
       // notes §2.3 Parallel Axis Theorem: about a point O with the centre of mass at a from it,
       // I_ij = I_ij(cm) + M (a² δ_ij − a_i a_j); computed here from the API's tensor about the centre of mass
       const o = Array.isArray(a.origin) ? a.origin : a.center_of_mass, d = a.center_of_mass.map((c, k) => c - o[k]);
@@ -263,4 +302,32 @@ function drawBody(world, st) {
   world.add(ell);
   const cm = new THREE.Mesh(new THREE.TorusGeometry(ext * 0.06, ext * 0.012, 8, 24), new THREE.MeshBasicMaterial({color: 0xe67700}));
   cm.position.set(...a.center_of_mass); world.add(cm);
+}
+
+// The answer's incline block: the body rolling without slipping down the slope from rest, a = g sin α/(1 + k),
+// k = I/(m R²) (torque about the contact line), drawn as the slope with the body at the start and the end.
+function rolling(r, req) {
+  const deg = req.angle_deg, g = req.g ?? 9.80665, al = deg * Math.PI / 180;
+  const W = 320, H = 150, x0 = 20, y0 = 22, x1 = W - 20, y1 = Math.min(H - 14, y0 + (x1 - x0) * Math.tan(al));
+  const xe = Math.min(x1, x0 + (y1 - y0) / Math.tan(al)), R = 12, nx = Math.sin(al), ny = -Math.cos(al); // the slope's outward normal
+  const pic = svg('svg', {class: 'plot dial', id: 'inertia-incline-plot', role: 'img', viewBox: `0 0 ${W} ${H}`,
+    'aria-label': `the body rolling down a ${fmt(deg, 3)}° slope`});
+  add(pic, svg('path', {d: `M ${x0} ${y0} L ${xe} ${y1} L ${x0} ${y1} z`, fill: '#e9ecef', stroke: '#555'}),
+  svg('circle', {cx: x0 + 18 * Math.cos(al) + R * nx, cy: y0 + 18 * Math.sin(al) + R * ny, r: R, fill: '#8c98a8'}),
+  svg('circle', {cx: xe - 18 * Math.cos(al) + R * nx, cy: y1 - 18 * Math.sin(al) + R * ny, r: R, fill: 'none', stroke: '#1864ab', 'stroke-width': 2, 'stroke-dasharray': '4 3'}),
+  svg('text', {x: xe - 60, y: y1 - 6, 'font-size': 13, fill: '#444'}, `${fmt(deg, 3)}°`));
+  return el('div', {id: 'inertia-incline'}, el('h3', {}, 'Rolling down the incline'), pic,
+    el('dl', {class: 'nums'},
+      el('dt', {}, 'I about the rolling axis'), num('inertia-inc-I', r.moment_axis, 'kg m²'),
+      el('dt', {}, 'k = I/(m R²)'), num('inertia-inc-k', r.k),
+      el('dt', {}, 'acceleration g sin α/(1 + k)'), num('inertia-inc-a', r.acceleration, 'm/s²'),
+      el('dt', {}, 'sliding without friction, g sin α'), el('dd', {}, fmt(g * Math.sin(al), 6) + ' m/s²'),
+      typeof r.time === 'number' ? [el('dt', {}, `time for ${fmt(req.length)} m`), num('inertia-inc-time', r.time, 's'),
+        el('dt', {}, 'speed at the end'), num('inertia-inc-speed', r.speed, 'm/s'),
+        el('dt', {}, 'turning at the end'), num('inertia-inc-omega', r.angular_speed, 'rad/s')] : null,
+      el('dt', {}, 'friction needed'), num('inertia-inc-friction', r.friction_force, 'N'),
+      el('dt', {}, 'least friction coefficient'), num('inertia-inc-mu', r.min_friction_coefficient),
+      el('dt', {}, 'share of m g h in moving along'), num('inertia-inc-share', r.translational_energy_fraction)),
+    el('p', {class: 'muted'}, `Torque about the contact line: m g sin α = m a (1 + k). A body sliding without friction would ` +
+      `arrive √(1 + k) = ${fmt(Math.sqrt(1 + r.k), 4)} times sooner; rolling, the rest of m g h (a share k/(1 + k)) goes into turning.`));
 }

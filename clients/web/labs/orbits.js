@@ -4,6 +4,7 @@ import {el, put, add, field, val, fmt, num, svg, labLayout, labSection, runner, 
   costPreview, notesBox, relWords, amount} from '../lib.js';
 import {player} from '../anim.js';
 import {handle, rerun} from '../handles.js';
+import {arrow, energyBars} from '../draw.js';
 
 const BUILTIN = [{title: 'Mercury: 43″ per century', operation: '/v1/gr/geodesic',
   request: {M: 'sun', kind: 'timelike', initial: {semi_major_axis: 57909050000, eccentricity: 0.20563593}, orbits: 3, samples: 5}},
@@ -43,11 +44,17 @@ export default {
     const exSel = el('select', {id: exId, 'data-role': 'exaggerate'});
     const exNote = el('span', {class: 'muted', id: 'orb-ex-note'});
     const play = player({label: 'The orbit', reverse: 'Backwards: the same orbit travelled the other way round, also a geodesic (gravity has no friction: t → −t is a motion too); the perihelion still advances, in the direction of travel.'});
+    const energy = svg('svg', {class: 'plot dial energy', id: 'orb-energy', role: 'img', 'aria-label': 'energy bars'});
+    const vecNote = el('p', {class: 'muted', id: 'orb-vec-note'});
     add(L.figure, el('h3', {}, 'The orbit'),
-      el('div', {class: 'exaggerate'}, el('label', {for: exId}, 'Precession drawn'), exSel, exNote), plot, play.root,
+      el('div', {class: 'exaggerate'}, el('label', {for: exId}, 'Precession drawn'), exSel, exNote), plot, play.root, vecNote,
       el('p', {class: 'muted'}, 'Sun at the origin (orange); perihelia marked in red. With the precession exaggerated, each ',
         'sample\'s angle φ is drawn as φ (2π + kδ)/(2π + δ), δ the measured advance per orbit: the perihelion then moves kδ ',
-        'per orbit while r(φ) is the API\'s.'));
+        'per orbit while r(φ) is the API\'s.'),
+      el('h3', {}, 'Energy per kilogram, as it plays'), energy,
+      el('p', {class: 'muted'}, 'From the orbit\'s constants E and L (the API\'s conserved values) at the planet\'s r: ',
+        'the radial equation of the Schwarzschild orbit, ½ṙ² + ½L²/r² − GM/r − GM L²/(c²r³) = ½c²(E² − 1) (dots: proper time), ',
+        'read as kinetic energy, Newton\'s potential and the relativistic term. Kinetic and potential trade; their sum stays level.'));
     let last = null, lastOrbits = 1;
     const drawOrbit = () => {
       const r = last;
@@ -63,6 +70,7 @@ export default {
       if (!sparse) for (let i = 0; i < s.r.length; i++)
         if ((i === 0 || s.r[i] <= s.r[i - 1]) && (i === s.r.length - 1 || s.r[i] < s.r[i + 1])) peri.push(xy[i]);
       const planet = svg('circle', {r: 7, fill: '#1864ab', stroke: '#fff', 'stroke-width': 2, id: 'orb-planet'});
+      const vecs = svg('g', {id: 'orb-vectors'}); // the velocity and the forces on the planet, drawn per frame
       let XY = null;
       const what = sparse ? `1 point per ${fmt(lastOrbits / s.r.length, 2)} orbits` : 'orbit';
       linePlot(plot, [{points: xy, label: k === 1 ? what : `${what}, ${sparse ? '' : 'precession '}×${exLabel(k)}`, dots: sparse, r: 1.8, t: s.t},
@@ -72,7 +80,7 @@ export default {
           const g = svg('g', {});
           add(g, svg('circle', {cx: X(0), cy: Y(0), r: 9, fill: '#f59f00'}));
           for (const p of peri) add(g, svg('line', {x1: X(0), y1: Y(0), x2: X(p[0]), y2: Y(p[1]), stroke: '#c92a2a', 'stroke-dasharray': '5 4'}));
-          add(g, planet);
+          add(g, planet, vecs);
           // (over the planet, which starts at perihelion) the turning points to drag: perihelion a(1 − e) on +x where the orbit starts, aphelion a(1 + e) on −x
           const aa = val(a.input), ee = val(e.input);
           if (Number.isFinite(aa) && Number.isFinite(ee)) {
@@ -93,9 +101,28 @@ export default {
           }
           return g;
         }]});
+      const live = liveState(r);
+      if (sparse || !live) { put(energy); vecNote.textContent = sparse ? 'The velocity, the forces and the energy bars are drawn when the orbit is (20 samples an orbit or more).' : ''; }
       play.set(s.t, (i, f) => {
         const j = Math.min(i + 1, xy.length - 1), x = xy[i][0] + (xy[j][0] - xy[i][0]) * f, y = xy[i][1] + (xy[j][1] - xy[i][1]) * f;
         if (XY) { planet.setAttribute('cx', XY[0](x)); planet.setAttribute('cy', XY[1](y)); }
+        if (!live || !XY || sparse) return;
+        // the state at this frame: r and φ between the samples, the radial direction where the planet is drawn
+        const rr = s.r[i] + (s.r[j] - s.r[i]) * f, th = Math.atan2(y, x), dir = Math.sign(s.r[j] - s.r[i]) || Math.sign(s.r[i] - s.r[Math.max(0, i - 1)]);
+        const q = live.at(rr, dir), ur = [Math.cos(th), Math.sin(th)], ut = [-Math.sin(th), Math.cos(th)];
+        const v = [q.vr * ur[0] + q.vt * ut[0], q.vr * ur[1] + q.vt * ut[1]];
+        const px = XY[0](x), py = XY[1](y), mpx = Math.abs(XY[0](1) - XY[0](0)); // px per metre
+        const kv = live.vScale * mpx, kg = live.gScale * mpx;
+        put(vecs, arrow(px, py, px + kv * v[0], py - kv * v[1], '#1864ab', 'v', 16),
+          arrow(px, py, px - kg * q.g * ur[0], py + kg * q.g * ur[1], '#a65300', 'g', 16),
+          k > 1 ? arrow(px, py, px - kg * k * q.gr * ur[0], py + kg * k * q.gr * ur[1], '#6741d9', `GR ×${exLabel(k)}`, 16) : null);
+        plot.dataset.state = JSON.stringify({r: rr, vr: q.vr, vt: q.vt, g: q.g, gr: q.gr, K: q.K, U: q.U, Ugr: q.Ugr});
+        energyBars(energy, [['½v²', q.K, '#1864ab'], ['−GM/r', q.U, '#a65300'], ['−GML²/c²r³', q.Ugr, '#6741d9'], ['sum', q.K + q.U + q.Ugr, '#111']],
+          live.ref, 'energy per kilogram', 'J/kg');
+        vecNote.textContent = `At r = ${amount(rr, 'm')}: speed ${amount(Math.hypot(q.vr, q.vt), 'm/s')} (blue, v), gravity GM/r² = ${amount(q.g, 'm/s²')} ` +
+          `per kilogram (orange, g), and the relativistic term 3GML²/(c²r⁴) = ${amount(q.gr, 'm/s²')}, ${relWords(q.gr / q.g)} of it` +
+          (k > 1 ? ` (violet, drawn ×${exLabel(k)} like the precession)` : ' (too short to draw: choose an exaggerated precession to see it)') +
+          '; both pull towards the Sun, and their sum is the net force.';
       }, {grow: [plot]}); // the path grows behind the planet as it plays
     };
     exSel.addEventListener('change', drawOrbit);
@@ -106,7 +133,7 @@ export default {
     const run = runner(L, '/v1/gr/geodesic', () => cost.withAccuracy(orbitBody()), (r, req) => {
       lastOrbits = Math.max(1, Number(req && req.orbits) || 1);
       const p = r.precession;
-      if (!p || r.motion !== 'bound') { cost.after(r); put(L.results, outcome(r, 'orbit')); put(orbNotes.box); last = null; put(plot); return; }
+      if (!p || r.motion !== 'bound') { cost.after(r); put(L.results, outcome(r, 'orbit')); put(orbNotes.box); last = null; put(plot); put(energy); vecNote.textContent = ''; return; }
       cost.after(r);
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'advance per orbit (measured)'), num('orb-measured', p.measured_per_orbit, 'rad'),
@@ -237,4 +264,24 @@ function rayPicture(root, d) {
     svg('line', {x1: cx, y1: y0, x2: W - 12, y2: y0, stroke: '#999', 'stroke-dasharray': '6 5'}),
     svg('text', {x: cx + 90 * k + 10, y: y0 + 30, 'font-size': 17, fill: '#c92a2a', 'font-weight': 700}, `δ = ${fmt(d.arcsec.measured, 4)}″`),
     svg('text', {x: 12, y: H - 12, 'font-size': 14, fill: '#444'}, `angle drawn ×${fmt(shown / d.measured, 3)}`));
+}
+
+// The planet's velocity, the forces per kilogram and the energies per kilogram at radius r, from the
+// orbit's constants (E/(mc²) and L/m, the API's conserved values) and the Schwarzschild radial equation
+//   ½ṙ² + ½L²/r² − GM/r − GM L²/(c²r³) = ½c²(E² − 1)      (dots: proper time; E² − 1 = ε(2 + ε), ε = E − 1)
+// differentiated: r̈ = −GM/r² + L²/r³ − 3GM L²/(c²r⁴): Newton's gravity and the relativistic term.
+// dir: the sign of ṙ (outwards +1). Null when the answer lacks what is needed (geometric units, no GM).
+function liveState(r) {
+  const u = r.units || {}, cs = r.conserved || {}, GM = u.GM, c = u.c, L = cs.angular_momentum, eps = cs.energy_minus_one;
+  if (u.system !== 'SI' || ![GM, c, L, eps].every(Number.isFinite) || !r.samples || !r.samples.r.length) return null;
+  const total = 0.5 * c * c * eps * (2 + eps);
+  const at = (rr, dir) => {
+    const K = total + GM / rr + GM * L * L / (c * c * rr ** 3); // ½v² = ½ṙ² + ½L²/r²
+    const vt = L / rr, vr = (dir || 0) * Math.sqrt(Math.max(0, 2 * K - vt * vt));
+    return {vr, vt, K, U: -GM / rr, Ugr: -GM * L * L / (c * c * rr ** 3), g: GM / (rr * rr), gr: 3 * GM * L * L / (c * c * rr ** 4)};
+  };
+  // scales: the fastest speed (at the smallest r) and the strongest pull drawn half the mean radius long
+  const rmin = Math.min(...r.samples.r), rmean = r.samples.r.reduce((a, b) => a + b, 0) / r.samples.r.length;
+  const top = at(rmin, 0);
+  return {at, vScale: rmean / 2 / top.vt, gScale: rmean / 2 / top.g, ref: Math.max(Math.abs(top.U), top.K)};
 }

@@ -66,7 +66,8 @@ export default {
         '(nutation loops); the stripes on the disc show the spin ψ. Drawn from the API\'s θ, φ, ψ samples.'),
       vecNote, el('h3', {}, 'Energy'), topEnergy,
       el('p', {class: 'muted'}, 'The notes\' E′ = E − ½I₃ω₃² (the spin\'s own energy is constant and left out): as the top dips, Mgh cos θ falls and the wobble\'s kinetic energy rises by as much; the sum stays level.'),
-      el('h3', {}, 'θ(t)'), theta);
+      el('h3', {}, 'θ(t)'), theta,
+      el('p', {class: 'muted'}, 'Dotted: whole nutation periods T from the release (the closed form 4K(k)/√(β(u₃ − u₁))): θ is back at its start at each.'));
     const V = view3d(box3d, {label: 'The top in 3-D', id: 'top-view'});
     const topGroup = new THREE.Group(), world = new THREE.Group();
     V.scene.add(world);
@@ -77,7 +78,11 @@ export default {
       put(L.results, el('dl', {class: 'nums'},
         el('dt', {}, 'θ min'), num('top-thmin', a.nutation.theta_min, 'rad'),
         el('dt', {}, 'θ max'), num('top-thmax', a.nutation.theta_max, 'rad'),
-        el('dt', {}, 'mean precession'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
+        el('dt', {}, 'nutation period'), num('top-nut-period', a.nutation.period, 's'),
+        el('dt', {}, 'precession averaged over a nutation'), num('top-prec-avg', a.precession.nutation_averaged_rate, 'rad/s'),
+        el('dt', {}, 'mean precession (measured over the run)'), num('top-prec', a.precession.measured_mean_rate, 'rad/s'),
+        el('dt', {}, 'steady precession rates at θ0 (slow, fast)'), el('dd', {id: 'top-steady'},
+          [a.precession.steady_precession_rate_slow, a.precession.steady_precession_rate_fast].map(v => typeof v === 'number' ? fmt(v, 5) : '—').join(', ') + ' rad/s'),
         el('dt', {}, 'sleeping top stable'), el('dd', {id: 'top-sleeping'}, String(a.sleeping_top.stable)),
         el('dt', {}, 'energy drift'), num('top-drift', a.conserved.energy.max_relative_drift)));
       // notes (Lagrange Equations for Top with One Fixed Point): p_φ and p_ψ conserved, and the energy
@@ -99,7 +104,14 @@ export default {
       let Xs = null, tCur = 0;
       linePlot(theta, [{points: a.t.map((t, i) => [t, a.theta[i]]), label: 'θ', t: a.t}], {xlabel: 't [s]', ylabel: 'θ [rad]', name: 'top-theta',
         marks: [({X, top, bottom}) => { Xs = X; cursor.setAttribute('y1', top); cursor.setAttribute('y2', bottom);
-          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; }]});
+          cursor.setAttribute('x1', X(tCur)); cursor.setAttribute('x2', X(tCur)); return cursor; },
+        // whole nutation periods from the release (the closed form's T): released at a turning point, θ is back there at each
+        ({X, top, bottom}) => {
+          const T = a.nutation.period, g = svg('g', {'data-role': 'nutation-periods'}), end = a.t[a.t.length - 1];
+          if (typeof T === 'number' && T > 0 && end / T <= 40)
+            for (let n = 1; n * T <= end; n++) add(g, svg('line', {x1: X(n * T), x2: X(n * T), y1: top, y2: bottom, stroke: '#a65300', 'stroke-dasharray': '2 4'}));
+          return g;
+        }]});
       // the top: a cone from the tip to a disc at the centre of mass, striped to show the spin
       world.clear();
       world.add(sceneAxes(Lx * 0.9));
@@ -192,10 +204,14 @@ export default {
     const dbox = el('div', {class: 'view3d-box', id: 'dz-3d-box'});
     const dplot = svg('svg', {class: 'plot', id: 'dz-plot', role: 'img', 'aria-label': 'omega components against time'});
     const dplay = player({label: 'The free body'});
+    const dzVec = el('p', {id: 'dz-vectors'});
+    const dzEnergy = svg('svg', {class: 'plot dial energy', id: 'dz-energy', role: 'img', 'aria-label': 'energy bars'});
     add(D.figure, el('h3', {}, 'The body in 3-D'), dbox, dplay.root,
       el('p', {class: 'muted'}, 'A uniform box with the same principal moments (thickness kept visible), its axes ',
         el('span', {class: 'c1'}, 'e₁'), ', ', el('span', {class: 'c2'}, 'e₂ (the middle one, spun about)'), ', ',
         el('span', {class: 'c3'}, 'e₃'), '; grey: the angular momentum L, fixed in space. Drawn from the API\'s attitude quaternions.'),
+      dzVec, el('h3', {}, 'Energy of each turn'), dzEnergy,
+      el('p', {class: 'muted'}, 'No torque: T = ½ Σ Iₖωₖ² stays what it was, while the share of each principal axis changes as the body flips.'),
       el('h3', {}, 'ω in the body frame'), dplot);
     const DV = view3d(dbox, {label: 'The free rigid body in 3-D', id: 'dz-view'});
     const body = new THREE.Group(), dworld = new THREE.Group();
@@ -244,12 +260,26 @@ export default {
       const Ls = a.angular_momentum && a.angular_momentum[0];
       if (Ls && Math.hypot(...Ls) > 0)
         dworld.add(new THREE.ArrowHelper(new THREE.Vector3(...Ls).normalize(), new THREE.Vector3(), 1.3, 0x555555, 0.15, 0.07));
+      // ω on the body (green): its body components turned into space by the attitude, drawn against its size at the start
+      const wArrow = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1, 0x2b8a3e, 0.15, 0.07);
+      const wTag = label('ω', '#2b8a3e'); wTag.scale.multiplyScalar(0.25);
+      dworld.add(wArrow, wTag);
+      const w0n = om.length ? Math.hypot(...om[0]) || 1 : 1;
       DV.frame(0.9);
       const qa = new THREE.Quaternion(), qb = new THREE.Quaternion();
       if (q.length === t.length) dplay.set(t, (i, fr, tt) => {
         const j = Math.min(i + 1, q.length - 1); // API: [w, x, y, z], body to space
         qa.set(q[i][1], q[i][2], q[i][3], q[i][0]); qb.set(q[j][1], q[j][2], q[j][3], q[j][0]);
         body.quaternion.slerpQuaternions(qa, qb, fr);
+        const wb = om[i].map((x, k) => x + (om[j][k] - x) * fr), ws = new THREE.Vector3(...wb).applyQuaternion(body.quaternion);
+        const len = 1.2 * Math.hypot(...wb) / w0n;
+        if (len > 0) { wArrow.setDirection(ws.clone().normalize()); wArrow.setLength(len, 0.15, 0.07); wTag.position.copy(ws.normalize().multiplyScalar(len * 1.1)); }
+        const parts = wb.map((x, k) => 0.5 * I[k] * x * x);
+        energyBars(dzEnergy, [['½I₁ω₁²', parts[0], '#c92a2a'], ['½I₂ω₂²', parts[1], '#2b8a3e'], ['½I₃ω₃²', parts[2], '#1864ab'],
+          ['T = sum', parts[0] + parts[1] + parts[2], '#111']], T0, 'the kinetic energy by principal axis');
+        dzEnergy.dataset.parts = JSON.stringify(parts);
+        put(dzVec, el('strong', {}, 'On the body: '), el('span', {class: 'c2'}, `ω = ${fmt(Math.hypot(...wb), 4)} rad/s`),
+          ' (green; in the body (', wb.map(x => fmt(x, 3)).join(', '), ') rad/s), L fixed in space (grey): ω wanders round L as the body flips.');
         DV.render();
         tCur = tt; if (Xs) { cursor.setAttribute('x1', Xs(tt)); cursor.setAttribute('x2', Xs(tt)); }
       });

@@ -9,6 +9,7 @@
 #include "mech/base/budget.h"
 #include "mech/base/compensated.h"
 #include "mech/base/constants.h"
+#include "mech/base/named_bodies.h"
 #include "mech/base/status.h"
 #include "mech/base/vec.h"
 

@@ -1,4 +1,4 @@
-/* mech/hamiltonian.h — every public header of the hamiltonian domain in one include:
+/* mech/hamiltonian/hamiltonian.h — every public header of the hamiltonian domain in one include:
  * Hamiltonian mechanics: Hamilton's equations, Liouville's theorem and
  * phase areas, Poincare sections, rotating systems, small and coupled
  * oscillations, circular orbits, steady motion and apsides, state scales.

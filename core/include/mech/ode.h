@@ -1,4 +1,4 @@
-/* mech/ode.h — every public header of the ode domain in one include:
+/* mech/ode/ode.h — every public header of the ode domain in one include:
  * time integration: the initial-value driver and its integrators, the Kepler
  * propagator, the accuracy presets, the predictive method chooser and its pilot
  * runs, the method-choice policy for first-order systems.

@@ -18,6 +18,7 @@
 #include "mech/relativity/four_vector.h"
 #include "mech/relativity/interval.h"
 #include "mech/relativity/kinematics.h"
+#include "mech/relativity/mass_energy.h"
 #include "mech/relativity/michelson_morley.h"
 #include "mech/relativity/particle_state.h"
 #include "mech/relativity/particles.h"

@@ -1,4 +1,4 @@
-/* mech/rotation.h — every public header of the rotation domain in one include:
+/* mech/rotation/rotation.h — every public header of the rotation domain in one include:
  * orientation: rotation matrices, Euler angles, axis-angle and quaternions,
  * attitude kinematics, Euler-angle rates, vector algebra.
  * One header per concept lives in mech/rotation/; include those where a file needs

@@ -45,7 +45,9 @@ if ! node_ok; then
     if [ -x "$d/node" ]; then PATH=$d:$PATH; fi
   done
   export PATH
-  node_ok || { echo "run.sh: no Node.js >= 20.19 for $(uname -m) in $rt" >&2; exit 1; }
+  # (npm skips an optional package whose download failed and still exits 0:
+  # drop the install so the next run tries again)
+  node_ok || { rm -rf "$rt/node_modules"; echo "run.sh: no Node.js >= 20.19 for $(uname -m) in $rt (did the npm registry answer?)" >&2; exit 1; }
   if [ -z "${NODE_EXTRA_CA_CERTS:-}" ] && [ -r /etc/ssl/certs/ca-certificates.crt ]; then
     NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt
     export NODE_EXTRA_CA_CERTS

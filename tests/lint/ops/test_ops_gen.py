@@ -16,7 +16,7 @@ naming the file, on each kind of broken data file.
    of the answer or has unbalanced braces, a "$ref" to no operation's
    request schema or a circular one) each make the generator exit 1 with a
    message naming the file; a "$ref" is replaced by the schema it names;
-   the kinds and units it reads from api/check_kind.c are the C lists.
+   the kinds and units it reads from api/check/check_kind.c are the C lists.
 3. Generating into a scratch directory writes ops.def with one API_OP per
    data file and ops_handlers.h with one prototype each.
 Python 3 standard library only.
@@ -175,14 +175,14 @@ broken("unbalanced template", decay_unit("{/energy_unit/c"),
        "api/ops/relativity/kinematics_decay.json", "unbalanced braces")
 
 # Every kind and unit the C tables know is accepted (ops_gen reads them from
-# api/check_kind.c): the vocabulary it reads is the one the server parses.
+# api/check/check_kind.c): the vocabulary it reads is the one the server parses.
 sys.path.insert(0, os.path.join(SRC, "scripts"))
 import ops_gen  # noqa: E402
 kinds, units = ops_gen.check_vocabulary(API)
 kind_list = re.search(r'api_check_kind_list\[\] =\s*"([^;]*)";',
-                      open(os.path.join(API, "check_kind.c")).read(), re.S).group(1)
+                      open(os.path.join(API, "check", "check_kind.c")).read(), re.S).group(1)
 unit_list = re.search(r'api_unit_list\[\] =\s*(".*?");',
-                      open(os.path.join(API, "check_kind.c")).read(), re.S).group(1)
+                      open(os.path.join(API, "check", "check_kind.c")).read(), re.S).group(1)
 unit_list = "".join(re.findall(r'"([^"]*)"', unit_list))
 check(kinds == set(kind_list.split(", ")), "kinds read %s = api_check_kind_list" % sorted(kinds))
 check(units == set(unit_list.split(", ")), "units read = api_unit_list (%d)" % len(units))

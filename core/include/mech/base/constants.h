@@ -76,5 +76,14 @@
 /* Mass of the Earth, kg (IAU 2015 nominal / CODATA: 5.9722e24); only reported:
  * the tide height uses GM_E = MECH_EARTH_GM above. */
 #define MECH_EARTH_MASS 5.9722e24
+/* Mean radii, m: the Moon 1737.4 km (IAU Working Group on Cartographic
+ * Coordinates 2015), the Sun 695 700 km (IAU 2015 Resolution B3, nominal). */
+#define MECH_MOON_RADIUS 1.7374e6
+#define MECH_SUN_RADIUS 6.957e8
+/* The named bodies' earlier ("legacy") set, kept selectable so that answers a
+ * client had do not change: the Sun's GM of JPL DE405, m^3/s^2, and the
+ * Moon's mass from the JPL planetary fact sheet, kg (rounded; GM = G m). */
+#define MECH_LEGACY_SUN_GM 1.32712440018e20
+#define MECH_LEGACY_MOON_MASS 7.342e22
 
 #endif

@@ -35,6 +35,20 @@
 #include "mech/frames/trajectory.h"
 #include "mech/base/vec.h"
 
+/* Which fictitious terms a ballistic scene's run models. */
+enum mech_scene_model {
+    MECH_SCENE_MODEL_AUTO = 0,             /* the terms that matter at the target accuracy
+                                              (mech_trajectory_model_select) */
+    MECH_SCENE_MODEL_CORIOLIS,             /* Coriolis only: r'' = g - 2 w x r', as most
+                                              textbooks solve these scenes (g the effective g) */
+    MECH_SCENE_MODEL_CORIOLIS_CENTRIFUGAL, /* Coriolis and the centrifugal term of the
+                                              displacement: r'' = g - 2 w x r' - w x (w x r) */
+};
+
+/* The request name of a model ("auto", "coriolis", "coriolis_centrifugal");
+ * NULL for a value outside the enum. */
+const char *mech_scene_model_name(enum mech_scene_model m);
+
 /* A projectile near the Earth (local axes east, north, up; origin on the
  * ground, which is z = 0). */
 struct mech_scene_ballistic {
@@ -45,6 +59,7 @@ struct mech_scene_ballistic {
     struct mech_vec3 v0; /* m/s; the projectile must reach z = 0 going down */
     int dry_run;         /* 1: stop after the choice (problem, choice set; every applicable
                             fictitious term assumed, no first pass, nothing integrated) */
+    enum mech_scene_model model; /* the terms the run models (0: auto) */
 };
 
 /* A landing point: time and position. */
@@ -75,13 +90,14 @@ struct mech_scene_ballistic_result {
 };
 
 /* Run a ballistic scene at relative accuracy `target` ([1e-15, 0.1]):
- * "auto" term selection (Coriolis, centrifugal) by
- * mech_trajectory_model_select, method by mech_trajectory_choose, stop at
+ * the terms of s->model (auto: the selection by
+ * mech_trajectory_model_select), method by mech_trajectory_choose, stop at
  * z = 0 going down, t_end = 2 T0 + 1 s. The centrifugal term enters the
  * series only when the run models it, so `unexplained` compares like with
  * like.
  * Statuses: MECH_OK; MECH_EDOMAIN (param "latitude_deg", "g", "omega",
- * "r0", "v0": out of range, or a projectile that never comes down);
+ * "r0", "v0": out of range, or a projectile that never comes down; "model":
+ * not one of the enum);
  * MECH_EINVAL (target); those of mech_trajectory_integrate (budget...);
  * MECH_ENUMERIC if the run does not land before t_end. */
 enum mech_status mech_scene_ballistic_run(const struct mech_scene_ballistic *s, double target,

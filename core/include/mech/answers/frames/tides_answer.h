@@ -10,6 +10,7 @@
 #ifndef MECH_TIDES_ANSWER_H
 #define MECH_TIDES_ANSWER_H
 
+#include "mech/base/named_bodies.h"
 #include "mech/base/status.h"
 #include "mech/frames/tides.h"
 
@@ -27,14 +28,25 @@ struct mech_tides_body_given {
     double gm, mass, distance;
 };
 
+/* The body the tides are raised on, when it is not the Earth of
+ * radius/gm_earth: a named body of the set, or gm or mass and a radius. */
+struct mech_tides_on_given {
+    const char *name; /* "earth", "moon", "sun" (the set's values), or NULL: custom */
+    int has_gm, has_mass, has_radius;
+    double gm, mass, radius; /* m^3/s^2, kg, m (the point's distance from its centre) */
+};
+
 struct mech_tides_request {
+    enum mech_body_set set; /* the named bodies' constants: DE440 (0, default) or legacy */
+    int has_on;             /* 1: `on` replaces radius and gm_earth */
+    struct mech_tides_on_given on;
     enum mech_tides_body_kind body;
     struct mech_tides_body_given custom;    /* the body object (MECH_TIDES_BODY_CUSTOM only; without
                                                a distance it is 0, refused as inside the sphere) */
     struct mech_tides_body_given moon, sun; /* overrides of the built-in Moon and Sun */
     double angle_deg; /* [0, 180], between the body and the point, at the Earth's centre */
-    double radius;    /* m, > 0: the point's distance from the Earth's centre */
-    double gm_earth;  /* m^3/s^2, > 0: g = GM_E / r² in the tide height */
+    double radius;    /* m, > 0: the point's distance from the Earth's centre (has_on: unused) */
+    double gm_earth;  /* m^3/s^2, > 0: g = GM_E / r² in the tide height (has_on: unused) */
 };
 
 /* A body as used: name "moon", "sun" or "custom" and the source of its
@@ -47,6 +59,8 @@ struct mech_tides_body {
 
 struct mech_tides_answer {
     struct mech_tides_body body;      /* the tide-raising body */
+    struct mech_tides_body on;        /* the body raised on (distance: 0; the Earth by default) */
+    double on_radius, on_gm;          /* m, m^3/s^2: the point's radius and the GM of `on` used */
     struct mech_tides_body moon, sun; /* as used by spring_neap */
     struct mech_tide_acceleration acceleration;
     struct mech_tide_height height; /* the body's equilibrium tide */
@@ -68,6 +82,9 @@ struct mech_tides_answer {
  *     body gives neither; "<body>/gm", "/mass", "/distance" for a given value
  *     not finite and > 0; those of mech_tide_acceleration and mech_tide_height
  *     ("angle_deg", "radius", "gm_earth", ...);
+ *   MECH_EINVAL "on" for both gm and mass, neither, or an unknown name;
+ *     "on/radius" (or "on/gm", "on/mass") not finite and > 0; "on" naming
+ *     the tide-raising body itself;
  *   MECH_EDOMAIN when the body does not lie outside the sphere through the
  *     point: "moon/distance" or "sun/distance" when that distance was given,
  *     "radius" when the built-in one was, "body/distance" for a custom body;

@@ -3,7 +3,7 @@
  * (the projectile's CM or lab angle, or the recoil's lab angle, in radians
  * or degrees) turned into the scattering (mech/relativity/elastic_scattering.h), the
  * projectile's own γ, β and rapidity, and the branch used. The API's handler
- * reads the unit, the masses and the projectile's motion (api/kin_request.c,
+ * reads the unit, the masses and the projectile's motion (api/ops/relativity/kin_request.c,
  * shared with the other kinematics operations), calls mech_elastic_answer()
  * once and encodes.
  *
