@@ -89,6 +89,8 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         .closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval,
         .pilot = hooks->pilot,
         .error_gain = hooks->error_gain,
+        .rows = sys->rows,
+        .second_order = sys->second_order,
         .defaulted = in == NULL,
     };
     struct mech_error e;
@@ -164,6 +166,23 @@ static json_t *pilot_json(struct api_call *c, const struct mech_pilot_report *r)
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch)
 {
     return api_integrator_block_selection_achieved(c, ch, -1.0, NULL, -1.0);
+}
+
+json_t *api_integrator_block_selection_run(struct api_call *c,
+                                           const struct api_integrator_choice *ch, double error,
+                                           const char *evidence, int at_least_law)
+{
+    if (!ch->chosen || ch->mc.sel.chosen < 0) return api_integrator_block_selection(c, ch);
+    const double law = ch->mc.sel.c[ch->mc.sel.chosen].predicted_error;
+    if (at_least_law && error >= 0.0 && isfinite(error)) {
+        error = fmax(error, law);
+    } else if (!(error >= 0.0) || !isfinite(error)) {
+        error = law;
+        evidence = "no exact reference for this run: the chooser's calibrated law at the setting "
+                   "run (its rows measured on this operation's own scene, where the measured "
+                   "error lies within 0.3 .. 3x of the law), a prediction, not a measurement";
+    }
+    return api_integrator_block_selection_achieved(c, ch, error, evidence, 0.0);
 }
 
 json_t *api_integrator_block_selection_achieved(struct api_call *c,

@@ -42,6 +42,10 @@ struct api_integrator_system {
     double state_scale;    /* atol = rtol x state_scale for chosen settings (> 0) */
     size_t samples;        /* samples written (each costs a sub-step); 0 if unknown */
     double rhs_cost_s;     /* CPU s of one right-hand side if known, else 0 */
+    const char *rows;      /* the chooser's rows for this operation (mech_scene_profile.rows;
+                              static), NULL: the first_order class's */
+    int second_order;      /* 1: the system also has the form q'' = a(q) (separable
+                              Hamiltonians), so radau15 is a candidate */
 };
 
 /* The settings of a block that names a method: rtol and atol (for an
@@ -94,6 +98,17 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *block, co
 /* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason",
  * and when chosen scene_class, span, model, candidates}. New reference. */
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch);
+
+/* The selection of a run that was integrated: with selection.achieved when
+ * the method was chosen by accuracy, its error the measured `error` (< 0:
+ * none measured) with its `evidence`, else the calibrated law's prediction at
+ * the setting run (the chooser's rows, measured on the operation's own
+ * scene), the evidence saying it is a prediction; at_least_law: `error` is
+ * a lower bound (an invariant's error, which can cancel) and the larger of it
+ * and the law is reported. New reference. */
+json_t *api_integrator_block_selection_run(struct api_call *c,
+                                           const struct api_integrator_choice *ch, double error,
+                                           const char *evidence, int at_least_law);
 
 /* The same with selection.achieved (when chosen and cpu_s >= 0): the
  * achieved relative error (< 0: unknown) and its evidence (NULL: none). */

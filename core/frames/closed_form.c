@@ -447,7 +447,8 @@ int mech_trajectory_has_closed_form(const struct mech_trajectory_problem *p)
     struct mech_trajectory_reference ref;
     /* the relativistic closed form has no stop-event scan (no monotonic grid) */
     return p && !(p->relativity && p->has_stop) &&
-           mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated;
+           mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated &&
+           !ref.evidence_only;
 }
 
 enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_problem *p,
@@ -473,7 +474,8 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     memset(&c, 0, sizeof c);
     c.p = p;
     c.err = err;
-    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated)
+    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated ||
+        c.ref.evidence_only)
         return mech_error_set(err, MECH_EINVAL, NULL,
                               "the scene has no closed form (only Kepler, the harmonic "
                               "oscillator, uniform gravity with or without linear drag and the "

@@ -24,6 +24,8 @@ static void profile_of(const struct mech_first_order_system *s, struct mech_scen
     prof->closed_form_name = s->closed_form_name;
     prof->closed_form_allowed = s->closed_form_allowed;
     prof->error_gain = s->error_gain >= 1.0 && isfinite(s->error_gain) ? s->error_gain : 1.0;
+    prof->rows = s->rows;
+    prof->second_order = s->second_order;
 }
 
 /* out->reason for the choice made on prof. */

@@ -178,9 +178,9 @@ static void pilot_scenes(void)
          "{\"system\":{\"name\":\"henon_heiles\"},\"q\":[0,0.1],\"p\":[0.39,0],"
          "\"t_end\":30000,\"samples\":11,\"cost\":false}",
          "balanced"},
-        {"geodesic r_p = 10 M, 1000 orbits", "/v1/gr/geodesic",
+        {"geodesic r_p = 10 M, 2000 orbits", "/v1/gr/geodesic",
          "{\"units\":\"geometric\",\"kind\":\"timelike\",\"initial\":{\"periapsis\":10,"
-         "\"apoapsis\":30},\"orbits\":1000,\"samples\":11,\"cost\":false}",
+         "\"apoapsis\":30},\"orbits\":2000,\"samples\":11,\"cost\":false}",
          "balanced"},
     };
     for (size_t i = 0; i < sizeof sc / sizeof *sc; i++) {

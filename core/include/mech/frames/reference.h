@@ -96,6 +96,9 @@ struct mech_trajectory_reference {
      * is 0): it is a reference for the error evidence only. */
     struct mech_vec3 spin;
     int rotated;
+    /* 1: a reference for the error evidence only, never a closed-form answer
+     * ("uniform_fields_newtonian": g holds q E / m + g, w holds q B / m) */
+    int evidence_only;
 };
 
 /* Which reference, if any, the scene p has (fills ref; ref->kind NONE if
@@ -122,7 +125,8 @@ struct mech_trajectory_reference {
  *   not null fields (mech/relativity/charged_motion.h).
  * A modelled translational term -A joins g (a uniform field). A rotation
  * that changes with time (omega_dot != 0 with a rotation term modelled), a
- * lorentz force on a charge or a third-body tide: no reference.
+ * lorentz force beside a central body, spring or drag, or a third-body tide:
+ * no reference.
  * p must be valid (as mech_trajectory_integrate checks). Cannot fail. */
 enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajectory_problem *p,
                                                         struct mech_trajectory_reference *ref);

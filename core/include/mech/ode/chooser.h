@@ -75,7 +75,10 @@ struct mech_scene_profile {
                                unknown (no splitting is offered) */
     double error_gain;      /* >= 1: how many times more this scene amplifies an error
                                than its class's calibration scenes (light passing close to
-                               the photon sphere: mech_geodesic_error_gain); 0: 1 */
+                               the photon sphere: mech_geodesic_error_gain); 0: 1 */    const char *rows;       /* the table rows measured on this kind of scene itself
+                               ("rigid_body", "heavy_top", "geodesic",
+                               "hamiltonian_flow"; static); NULL or a name without rows:
+                               the class's */
 };
 
 enum mech_verdict {

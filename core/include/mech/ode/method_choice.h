@@ -34,6 +34,10 @@ struct mech_first_order_system {
     double closed_form_cpu_per_eval;
     const struct mech_pilot_system *pilot; /* NULL: never piloted */
     double error_gain;      /* mech_scene_profile.error_gain (0: 1) */
+    const char *rows;       /* mech_scene_profile.rows (NULL: the first_order class's) */
+    int second_order;       /* 1: the system also has the form q'' = a(q) (separable
+                               Hamiltonians; the caller integrates it so when radau15 is
+                               chosen) */
     int defaulted;          /* 1: the request had no integrator block (the reason says
                                that "balanced" was the default) */
 };
