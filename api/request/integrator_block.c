@@ -6,8 +6,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/accuracy.h"
-#include "mech/method_choice.h"
+#include "mech/ode/accuracy.h"
+#include "mech/ode/method_choice.h"
 
 struct mech_ode_options api_integrator_settings(const json_t *block)
 {
@@ -69,7 +69,7 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         out->opt = api_integrator_settings(in);
         return 1;
     }
-    /* by accuracy: the one policy for first-order systems (mech/method_choice.h) */
+    /* by accuracy: the one policy for first-order systems (mech/ode/method_choice.h) */
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     const struct mech_accuracy_preset *preset = NULL;
     const double target = mech_accuracy_target(te != NULL, json_number_value(te),
@@ -141,7 +141,7 @@ int api_dry_run_requested(const json_t *body)
     return json_is_true(json_object_get(body, "dry_run"));
 }
 
-/* selection.pilot: what the pilot did and cost (mech/chooser_pilot.h). */
+/* selection.pilot: what the pilot did and cost (mech/ode/chooser_pilot.h). */
 static json_t *pilot_json(struct api_call *c, const struct mech_pilot_report *r)
 {
     json_t *o = json_object();

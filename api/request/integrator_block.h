@@ -9,7 +9,7 @@
  *   are refused with a 422 at <pointer>/method saying why.
  * - {"accuracy": preset} or {"target_error": x} (default accuracy "balanced"):
  *   the target (a preset's promise), given to the predictive chooser
- *   (mech/chooser.h, class first_order, span = the run in dynamical times):
+ *   (mech/ode/chooser.h, class first_order, span = the run in dynamical times):
  *   the cheapest candidate (rk8pd, rkf45; msbdf when stiff) predicted to meet
  *   it, every candidate listed with its predictions in the selection;
  *   atol = rtol x the caller's state scale (1 for dimensionless states).
@@ -18,10 +18,10 @@
 #define API_INTEGRATOR_BLOCK_H
 
 #include "run/endpoint.h"
-#include "mech/chooser.h"
-#include "mech/chooser_pilot.h"
-#include "mech/method_choice.h"
-#include "mech/ode.h"
+#include "mech/ode/chooser.h"
+#include "mech/ode/chooser_pilot.h"
+#include "mech/ode/method_choice.h"
+#include "mech/ode/ode.h"
 
 struct api_integrator_choice {
     const char *method;          /* static or borrowed from the block */
@@ -29,7 +29,7 @@ struct api_integrator_choice {
     const json_t *requested;     /* the block (borrowed) or NULL */
     int chosen;                  /* 1: from a preset / target error / the default */
     const char *accuracy;        /* preset name or NULL */
-    struct mech_method_choice mc; /* when chosen: core's choice (mech/method_choice.h):
+    struct mech_method_choice mc; /* when chosen: core's choice (mech/ode/method_choice.h):
                                     target, reason, the chooser's candidates, closed_form
                                     (method/opt above stay the best integrator's), the
                                     pilot, whose steps were taken off c->budget.max_steps */
@@ -81,7 +81,7 @@ struct api_integrator_hooks {
                                         per sample) and CPU s of one (0: the default) */
     double closed_form_cpu_per_eval;
     const struct mech_pilot_system *pilot; /* a short pilot run of the system when the
-                              prediction is uncertain and expensive (mech/chooser_pilot.h;
+                              prediction is uncertain and expensive (mech/ode/chooser_pilot.h;
                               borrowed for the call); NULL: none. Never run for dry runs
                               ("dry_run": true in c->body). */
     double error_gain;     /* mech_scene_profile.error_gain (0: 1): light near the photon

@@ -1,17 +1,17 @@
 /* closed_form.c — trajectories evaluated from their exact solution
- * (mech/closed_form.h): the samples, the stop event located on the closed
+ * (mech/frames/closed_form.h): the samples, the stop event located on the closed
  * form to round-off, the invariants and the model terms at the samples, and
  * the evidence (invariant drift, Kepler residual). Nothing is integrated.
  */
-#include "mech/closed_form.h"
-#include "mech/constants.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
 
-#include "mech/reference.h"
+#include "mech/frames/reference.h"
 
 struct cf_ctx {
     const struct mech_trajectory_problem *p;
@@ -47,7 +47,7 @@ static enum mech_status cf_state(struct cf_ctx *c, double t, struct mech_vec3 *r
         return MECH_OK;
     }
     if (c->relativistic) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&c->ref.charged, t, &cs, c->err);
         if (st != MECH_OK) return st;
         *r = cs.r;

@@ -1,10 +1,10 @@
 /* reference.c — exact and first-order reference solutions for trajectories
- * (mech/reference.h): Kepler (by core/ode/kepler.c's universal variables),
+ * (mech/frames/reference.h): Kepler (by core/ode/kepler.c's universal variables),
  * the harmonic oscillator, uniform gravity with linear drag, the first-order
  * Coriolis solution, and the recognition of which one a scene has.
  */
-#include "mech/reference.h"
-#include "mech/constants.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <math.h>
@@ -383,7 +383,7 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
     } else if (!strcmp(ref->name, "uniform_fields_newtonian")) {
         lorentz_propagate(ref, t, r, v);
     } else if (!strcmp(ref->name, "relativistic_uniform_fields")) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&ref->charged, t, &cs, err);
         if (st != MECH_OK) return st;
         *r = cs.r;

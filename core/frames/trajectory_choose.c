@@ -1,12 +1,12 @@
 /* trajectory_choose.c — choosing by accuracy for a trajectory
- * (mech/trajectory.h): the accuracy presets and the scene's profile handed
- * to the predictive chooser (mech/chooser.h), which picks the method and its
+ * (mech/frames/trajectory.h): the accuracy presets and the scene's profile handed
+ * to the predictive chooser (mech/ode/chooser.h), which picks the method and its
  * setting ({"accuracy": ...} / {"target_error": ...}). */
-#include "mech/trajectory.h"
-#include "mech/chooser.h"
-#include "mech/chooser_orbit.h"
-#include "mech/closed_form.h"
-#include "mech/reference.h"
+#include "mech/frames/trajectory.h"
+#include "mech/ode/chooser.h"
+#include "mech/frames/chooser_orbit.h"
+#include "mech/frames/closed_form.h"
+#include "mech/frames/reference.h"
 #include "trajectory_scene.h"
 
 #include <math.h>

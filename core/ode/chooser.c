@@ -1,11 +1,11 @@
-/* chooser.c — the predictive method chooser (see mech/chooser.h): candidates,
+/* chooser.c — the predictive method chooser (see mech/ode/chooser.h): candidates,
  * the calibrated model of their error and cost (chooser_table.h, measured by
  * bench/bench_calibrate_chooser.c), the choice of the cheapest predicted to
  * meet the target. The one place the method-choice policy lives: particle
  * trajectories (core/frames/trajectory.c, mech_trajectory_choose) and the
  * first-order operations (api/request/integrator_block.c) both call mech_choose. */
-#include "mech/chooser.h"
-#include "mech/chooser_pilot.h"
+#include "mech/ode/chooser.h"
+#include "mech/ode/chooser_pilot.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -15,11 +15,11 @@
 #include "run/endpoint.h"
 #include "ops/gr/gr_units.h"
 #include "request/integrator_block.h"
-#include "mech/constants.h"
-#include "mech/geodesic.h"
-#include "mech/geodesic_run.h"
-#include "mech/geodesic_setup.h"
-#include "mech/gr_units.h"
+#include "mech/base/constants.h"
+#include "mech/gr/geodesic.h"
+#include "mech/answers/gr/geodesic_run.h"
+#include "mech/answers/gr/geodesic_setup.h"
+#include "mech/gr/gr_units.h"
 #include "request/trajectory_request.h"
 
 /* Constants (documented in the route's description). */
@@ -460,10 +460,10 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         "the geodesic equations with r, dr/dtau, phi and t carried together",
         "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0, "geodesic", 0};
     if (g.photon) geodesic_eqs.rows = "geodesic_null"; /* light's own measured rows */
-    /* a pilot for long runs in strong field (core/gr/geodesic_run.c) */
+    /* a pilot for long runs in strong field (core/answers/gr/geodesic_run.c) */
     const struct mech_pilot_system pilot = {mech_geodesic_pilot_run, &g.p};
     /* light coming in and scattering: its winding's error gain and its cost
-     * (mech_geodesic_error_gain, core/gr/geodesic_run.c) */
+     * (mech_geodesic_error_gain, core/answers/gr/geodesic_run.c) */
     const double span = g.p.param_end / T;
     const int scatter = photon_in(&g.p);
     const struct api_integrator_hooks hooks = {

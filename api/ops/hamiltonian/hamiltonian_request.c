@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "ops/hamiltonian/hamiltonian_request.h"
-#include "mech/ham_state_scale.h"
+#include "mech/hamiltonian/state_scale.h"
 
 /* ---- the system ---------------------------------------------------------------- */
 
