@@ -82,11 +82,7 @@ static enum mech_status run_scene(const struct mech_trajectory_problem *p,
         u_samples = malloc(p->samples * 4 * sizeof *u_samples);
         if (!u_samples) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
     }
-    if (c->simple) { /* the force loop's fast path, called directly */
-        sys.rhs = c->dim2 ? mech_traj_simple_rhs2 : mech_traj_simple_rhs3;
-        sys.accel = c->dim2 ? mech_traj_simple_accel2 : mech_traj_simple_accel3;
-        sys.flags |= MECH_ODE_FINITE_OUTPUT; /* simple_accel screens q, v and a */
-    }
+    mech_traj_fast_install(c, &sys); /* the force loop's fast path, called directly */
     struct mech_ode_kepler_split ks;
     if (c->kepler_index >= 0) { /* one central body: offer the Kepler split */
         mech_traj_kepler_split_fill(c, &ks);

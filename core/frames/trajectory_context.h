@@ -204,6 +204,11 @@ enum mech_status mech_traj_simple_accel3(double t, const double *q, const double
                                          void *params);
 enum mech_status mech_traj_simple_rhs2(double t, const double *y, double *dydt, void *params);
 enum mech_status mech_traj_simple_rhs3(double t, const double *y, double *dydt, void *params);
+/* Install the fast path's callbacks in sys when c->simple (nothing
+ * otherwise): the loop above, or for one central mass or one spring of rest
+ * length 0 their own callbacks (same results bit for bit). */
+struct mech_ode_system;
+void mech_traj_fast_install(const struct traj_ctx *c, struct mech_ode_system *sys);
 
 /* ---- the equations of motion (trajectory_equations.c) ------------------- */
 

@@ -7,6 +7,14 @@
 
 #include <math.h>
 
+/* max_of(a, b) (the other when one is NaN), inline: libm's fmax is a call,
+ * and a call at each of the observer's dozen maxima spilled every
+ * register around it (callgrind: a third of the observer's instructions). */
+static inline double max_of(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
 /* The invariant at (t, r, v) and the sum of the magnitudes of its parts. */
 static void invariant_at(const struct traj_ctx *c, double t, struct mech_vec3 r, double ke,
                          double *value, double *scale)
@@ -145,22 +153,22 @@ enum mech_status mech_traj_observe(double t, const double *y, void *params)
         struct mech_vec3 ai;
         enum mech_status st = force_accel(c, i, r, v, t, &ai);
         if (st != MECH_OK) return st;
-        c->term_max[i] = fmax(c->term_max[i], mech_vec3_norm(ai));
+        c->term_max[i] = max_of(c->term_max[i], mech_vec3_norm(ai));
         A = mech_vec3_add(A, ai);
     }
     /* the relativistic corrections are sized whether modelled or not (an
      * inertial frame only: elsewhere they are not offered) */
     {
         const double sc = special_correction(A, v, gamma, gm1), an = mech_vec3_norm(A);
-        c->rel_max = fmax(c->rel_max, sc);
-        if (an > 0.0) c->rel_ratio = fmax(c->rel_ratio, sc / an);
+        c->rel_max = max_of(c->rel_max, sc);
+        if (an > 0.0) c->rel_ratio = max_of(c->rel_ratio, sc / an);
     }
     if (c->pn1_index >= 0) {
         const double pa = mech_vec3_norm(pn1_accel(c, r, v));
         const struct mech_force *f = &c->p->forces[c->pn1_index];
         const double d = mech_vec3_norm(mech_vec3_sub(r, f->u.central_gravity.center));
-        c->pn1_max = fmax(c->pn1_max, pa);
-        c->pn1_ratio = fmax(c->pn1_ratio, pa / (f->u.central_gravity.gm / (d * d)));
+        c->pn1_max = max_of(c->pn1_max, pa);
+        c->pn1_ratio = max_of(c->pn1_ratio, pa / (f->u.central_gravity.gm / (d * d)));
     }
     /* Fictitious terms are sized even when omitted (model only what the
      * scene requires, and say what was left out, with its size); all four
@@ -168,15 +176,15 @@ enum mech_status mech_traj_observe(double t, const double *y, void *params)
      * mech_traj_ctx_init), where term_max keeps its 0. */
     if (c->noninertial) {
         const struct mech_vec3 wt = omega_at(c, t);
-        c->term_max[n] = fmax(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
-        c->term_max[n + 1] = fmax(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(wt, r)));
+        c->term_max[n] = max_of(c->term_max[n], mech_vec3_norm(coriolis_accel(wt, v)));
+        c->term_max[n + 1] = max_of(c->term_max[n + 1], mech_vec3_norm(centrifugal_accel(wt, r)));
         c->term_max[n + 2] =
-            fmax(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
-        c->term_max[n + 3] = fmax(c->term_max[n + 3], mech_vec3_norm(c->A));
+            max_of(c->term_max[n + 2], mech_vec3_norm(mech_vec3_cross(c->wdot, r)));
+        c->term_max[n + 3] = max_of(c->term_max[n + 3], mech_vec3_norm(c->A));
     }
     const double rn = mech_vec3_norm(r), vn = mech_vec3_norm(v); /* reused below */
-    c->rmax = fmax(c->rmax, rn);
-    c->vmax = fmax(c->vmax, vn);
+    c->rmax = max_of(c->rmax, rn);
+    c->vmax = max_of(c->vmax, vn);
 
     double inv, scale;
     invariant_at(c, t, r, ke, &inv, &scale);
@@ -188,8 +196,8 @@ enum mech_status mech_traj_observe(double t, const double *y, void *params)
         c->inv0 = inv;
     }
     c->inv_last = inv;
-    c->drift_max = fmax(c->drift_max, fabs(inv - c->inv0));
-    c->scale_max = fmax(c->scale_max, scale);
+    c->drift_max = max_of(c->drift_max, fabs(inv - c->inv0));
+    c->scale_max = max_of(c->scale_max, scale);
     if (c->track_l) {
         /* L = m (r - c) x v about the common centre of the central forces */
         struct mech_vec3 d = mech_vec3_sub(r, c->lcenter);
@@ -203,12 +211,12 @@ enum mech_status mech_traj_observe(double t, const double *y, void *params)
         struct mech_vec3 l = mech_vec3_scale(mech_vec3_cross(d, v), c->p->mass * lf);
         if (t == 0.0 && c->n_observed == 0) c->l0 = l;
         c->l_last = l;
-        c->ldrift_max = fmax(c->ldrift_max, mech_vec3_norm(mech_vec3_sub(l, c->l0)));
+        c->ldrift_max = max_of(c->ldrift_max, mech_vec3_norm(mech_vec3_sub(l, c->l0)));
         /* |d| = |r| exactly when the centre is the origin (r - 0 = r) */
         const double dn = c->lcenter.x == 0.0 && c->lcenter.y == 0.0 && c->lcenter.z == 0.0
                               ? rn
                               : mech_vec3_norm(d);
-        c->lscale_max = fmax(c->lscale_max, c->p->mass * dn * vn);
+        c->lscale_max = max_of(c->lscale_max, c->p->mass * dn * vn);
     }
     c->n_observed++;
     c->t_last = t;

@@ -75,6 +75,13 @@ struct solver {
     size_t next_sample;
     struct mech_ode_result *res;
     struct mech_error *err;
+    /* dense output (see dense_sample): the accepted step's end derivatives
+     * (the method's buffers, NULL when it has none for this step), and the
+     * starts of the two steps before it, (tc, yc, fc) and (td, yd, fd);
+     * n_prev of them are known (0..2) */
+    const double *fa, *fb;
+    double tc, td, *yc, *fc, *yd, *fd;
+    int dense, n_prev;
 };
 
 static int all_finite(const double *y, size_t n)
@@ -121,6 +128,102 @@ static void write_sample(struct solver *s, double t, const double *y)
     s->res->n_samples = s->next_sample;
 }
 
+/* Dense output of a second-order system y = (q, v), f = (v, a), nq = dim/2
+ * (mech_ode_problem.dense_output).
+ *
+ * Nodes: the accepted step's ends ta, tb and the starts tc, td of the two
+ * steps before it (tb > ta > tc > td). Per component, q(ts) is the Hermite
+ * interpolant of q, q' = v, q'' = a at ta, tb and tc (degree 8), and v(ts)
+ * that of v, v' = a at the same three (degree 5): v is interpolated from its
+ * own values, not differentiated from q's, so it keeps every digit when q is
+ * large (a free particle far from the origin keeps its exact speed). The
+ * further Newton terms through td (degrees 11 and 7) estimate each one's
+ * error, as an embedded pair estimates a step's; the sample is taken from the
+ * interpolants only when both estimates are within the step's tolerance,
+ * atol + rtol max(|y(ta)|, |y(tb)|), for every component: then it is as good
+ * as a sub-step's, and costs no evaluation. Otherwise (returns 0) the caller
+ * sub-steps. Times are taken relative to ta, so no digit is lost to a large t. */
+enum { DENSE_NODES = 4, DENSE_OUT_NODES = 3 };
+
+/* The Hermite interpolant on the first `out` of n nodes (each repeated mult
+ * = 2 or 3 times: the value, d1 = its derivative, d2 = half its second
+ * derivative) at x, and the further Newton terms through the rest. */
+static void hermite_eval(const double *node_t, const double *val, const double *d1,
+                         const double *d2, int mult, int n, int out, double x, double *p,
+                         double *est)
+{
+    enum { MAXT = 3 * DENSE_NODES };
+    const int nt = mult * n, no = mult * out;
+    double z[MAXT], col[MAXT];
+    for (int k = 0; k < nt; k++) {
+        z[k] = node_t[k / mult];
+        col[k] = val[k / mult];
+    }
+    /* divided differences, confluent where a point repeats, column by column
+     * in place from the bottom; the Newton form accumulated as it goes */
+    double w = 1.0, sum = col[0], extra = 0.0;
+    for (int j = 1; j < nt; j++) {
+        for (int k = nt - 1; k >= j; k--) {
+            if (k / mult == (k - j) / mult) /* the same point */
+                col[k] = j == 1 ? d1[k / mult] : d2[k / mult];
+            else
+                col[k] = (col[k] - col[k - 1]) / (z[k] - z[k - j]);
+        }
+        w *= x - z[j - 1];
+        if (j < no) sum += col[j] * w;
+        else extra += col[j] * w;
+    }
+    *p = sum;
+    *est = extra;
+}
+
+static int dense_sample(const struct solver *s, double ta, const double *ya, double tb,
+                        const double *yb, double ts, double *out)
+{
+    const size_t nq = s->dim / 2;
+    const double rtol = s->p->opt.rtol, atol = s->p->opt.atol;
+    const double node_t[DENSE_NODES] = {0.0, tb - ta, s->tc - ta, s->td - ta};
+    const double *ny[DENSE_NODES] = {ya, yb, s->yc, s->yd};
+    const double *nf[DENSE_NODES] = {s->fa, s->fb, s->fc, s->fd};
+    const double x = ts - ta;
+    for (size_t i = 0; i < nq; i++) {
+        double q[DENSE_NODES], v[DENSE_NODES], a[DENSE_NODES], ha[DENSE_NODES];
+        for (int k = 0; k < DENSE_NODES; k++) {
+            q[k] = ny[k][i];
+            v[k] = nf[k][i]; /* q' = v, as the system computed it */
+            a[k] = nf[k][nq + i];
+            ha[k] = 0.5 * a[k];
+        }
+        double qs, eq, vs, ev;
+        hermite_eval(node_t, q, v, ha, 3, DENSE_NODES, DENSE_OUT_NODES, x, &qs, &eq);
+        for (int k = 0; k < DENSE_NODES; k++) v[k] = ny[k][nq + i];
+        hermite_eval(node_t, v, a, NULL, 2, DENSE_NODES, DENSE_OUT_NODES, x, &vs, &ev);
+        const double tq = atol + rtol * fmax(fabs(ya[i]), fabs(yb[i]));
+        const double tv = atol + rtol * fmax(fabs(ya[nq + i]), fabs(yb[nq + i]));
+        if (!(fabs(eq) <= tq) || !(fabs(ev) <= tv) || !isfinite(qs) || !isfinite(vs)) return 0;
+        out[i] = qs;
+        out[nq + i] = vs;
+    }
+    return 1;
+}
+
+/* After an accepted step [tprev, t]: its start becomes the next step's node
+ * c, and c its node d (or, when the method had no derivatives for it, the
+ * nodes are forgotten). */
+static void dense_shift(struct solver *s, double tprev)
+{
+    if (!s->fa) {
+        s->n_prev = 0;
+        return;
+    }
+    double *ty = s->yd, *tf = s->fd;
+    s->yd = s->yc, s->fd = s->fc, s->td = s->tc;
+    s->yc = ty, s->fc = tf, s->tc = tprev;
+    memcpy(s->yc, s->yprev, s->dim * sizeof *s->yc);
+    memcpy(s->fc, s->fa, s->dim * sizeof *s->fc);
+    if (s->n_prev < 2) s->n_prev++;
+}
+
 /* Write every sample with time <= t_hi, the step being [ta, tb] with states ya, yb. */
 static enum mech_status emit_samples(struct solver *s, double ta, const double *ya, double tb,
                                      const double *yb, double t_hi)
@@ -130,9 +233,11 @@ static enum mech_status emit_samples(struct solver *s, double ta, const double *
         if (ts > t_hi) break;
         const double *ys = yb;
         if (ts != tb) {
-            enum mech_status st = substep(s, ta, ya, ts, s->ysub);
-            if (st != MECH_OK) return st;
             ys = s->ysub;
+            if (!(s->fa && s->n_prev == 2 && dense_sample(s, ta, ya, tb, yb, ts, s->ysub))) {
+                enum mech_status st = substep(s, ta, ya, ts, s->ysub);
+                if (st != MECH_OK) return st;
+            }
         }
         enum mech_status st = observe(s, ts, ys);
         if (st != MECH_OK) return st;
@@ -329,12 +434,23 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         return st;
     }
 
-    struct solver s = {p, m, NULL, p->sys->dim, NULL, NULL, NULL, 0, res, err};
-    double *block = malloc(3 * s.dim * sizeof *block);
+    struct solver s = {p, m, NULL, p->sys->dim, NULL, NULL, NULL, 0, res, err,
+                       NULL, NULL, 0.0, 0.0, NULL, NULL, NULL, NULL, 0, 0};
+    /* dense output: asked for, a second-order system, a method that hands
+     * over its step's derivatives, and samples that can fall inside a step */
+    s.dense = p->dense_output && adaptive && m->step_derivs && p->sys->accel &&
+              s.dim % 2 == 0 && p->n_samples > 2;
+    double *block = malloc((s.dense ? 7 : 3) * s.dim * sizeof *block);
     if (!block) return mech_error_set(err, MECH_ENOMEM, NULL, "out of memory");
     s.y = block;
     s.yprev = block + s.dim;
     s.ysub = block + 2 * s.dim;
+    if (s.dense) {
+        s.yc = block + 3 * s.dim;
+        s.fc = block + 4 * s.dim;
+        s.yd = block + 5 * s.dim;
+        s.fd = block + 6 * s.dim;
+    }
     st = m->alloc(&s.ws, s.dim, &p->opt, err);
     if (st != MECH_OK) {
         free(block);
@@ -383,6 +499,7 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         }
         res->stats.steps++;
         res->t_reached = t;
+        if (s.dense && !m->step_derivs(s.ws, &s.fa, &s.fb)) s.fa = s.fb = NULL;
 
         if (p->event) {
             double g_new = p->event(t, s.y, p->event_params);
@@ -410,6 +527,7 @@ enum mech_status mech_ode_solve(const struct mech_ode_problem *p, const struct m
         /* Observed only when the step end is part of the answer (not past a stop). */
         if ((st = observe(&s, t, s.y)) != MECH_OK) goto fail;
         if ((st = emit_samples(&s, tprev, s.yprev, t, s.y, t)) != MECH_OK) goto fail;
+        if (s.dense) dense_shift(&s, tprev);
     }
     m->free(s.ws);
     free(block);

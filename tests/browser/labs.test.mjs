@@ -912,6 +912,9 @@ await lab('tides', async () => {
   close(await value('#tides-moon-range'), moon, 1e-9, 'tides: the Moon\'s range 3 GM r⁴/(2 GM_E d³)');
   close(await value('#tides-sun-range'), sun, 1e-9, 'tides: the Sun\'s range');
   close(await value('#tides-spring'), moon + sun, 1e-9, 'tides: spring range = sum'); close(await value('#tides-neap'), moon - sun, 1e-9, 'tides: neap range = difference');
+  const constants = await page.textContent('#tides-constants');
+  check(/DE440/.test(constants) && constants.includes('4.902800118e12') && constants.includes('1.32712440041279419e20'),
+    `tides: the lab states the named bodies' values and their source ("${constants.slice(0, 80)}")`);
   // the arrows: 24, outwards below the Moon (+x), inwards at 90° (down the screen is towards the centre)
   const arrows = await page.$$eval('#tides-field [data-role=tide-arrow]', (ls) => ls.map(l => ['x1', 'y1', 'x2', 'y2'].map(k => Number(l.getAttribute(k)))));
   check(arrows.length === 24 && arrows[0][2] > arrows[0][0] + 5 && arrows[6][3] > arrows[6][1] + 2 && arrows[12][2] < arrows[12][0] - 5,

@@ -86,6 +86,8 @@ export default {
           el('dt', {}, 'spring range (sum)'), num('tides-spring', M.spring_neap.spring_range, 'm'),
           el('dt', {}, 'neap range (difference)'), num('tides-neap', M.spring_neap.neap_range, 'm'),
           el('dt', {}, 'Sun / Moon'), num('tides-ratio', M.spring_neap.sun_to_moon)),
+        // the named bodies' constants the answers used, with their source (the set: M.named_bodies)
+        el('p', {class: 'muted', id: 'tides-constants'}, `Constants (${M.named_bodies}): ${M.body.source}; ${S.body.source}.`),
         tideNotes.box);
       // notes §1.4 The Tides: the Moon's pull less its pull at the Earth's centre, to first order in r/d:
       // a = (GM r/d³)(2 cos θ radially, −sin θ across), 2GMr/d³ straight below the Moon; the API's exact pull beside it

@@ -18,6 +18,15 @@
  * order 1, integrates the sub-interval with bsimp under the same tolerance.
  * The main step sequence never depends on the number of samples.
  *
+ * Dense output (problem.dense_output = 1): for a second-order system under
+ * rk8pd, rkck or rkf45, a sample is interpolated instead — q by the Hermite
+ * interpolant of q, v, a at the step's ends and the previous step's start,
+ * v by that of v, a — when the further Newton terms through the step before
+ * that estimate both within the step's tolerance atol + rtol |y| for every
+ * component; otherwise it is sub-stepped as above. It costs no evaluation;
+ * the results at step ends are bit-identical either way, a sample differs
+ * from its sub-stepped value by at most about the tolerance.
+ *
  * Thread-safety: all functions are reentrant; nothing global is written.
  */
 #ifndef MECH_ODE_H
@@ -157,6 +166,10 @@ struct mech_ode_problem {
     mech_ode_observe_fn observe; /* NULL: none */
     void *observe_params;
     double *y_stop;         /* caller-owned [dim]; required when event != NULL */
+    /* 1: a sample inside an accepted step may be interpolated instead of
+     * sub-stepped (dense output; second-order systems under rk8pd, rkck and
+     * rkf45 only, see below); 0: always a sub-step. */
+    int dense_output;
 };
 
 struct mech_ode_result {

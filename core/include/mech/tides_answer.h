@@ -45,8 +45,8 @@ struct mech_tides_request {
                                                a distance it is 0, refused as inside the sphere) */
     struct mech_tides_body_given moon, sun; /* overrides of the built-in Moon and Sun */
     double angle_deg; /* [0, 180], between the body and the point, at the Earth's centre */
-    double radius;    /* m, > 0: the point's distance from the Earth's centre */
-    double gm_earth;  /* m^3/s^2, > 0: g = GM_E / r² in the tide height */
+    double radius;    /* m, > 0: the point's distance from the Earth's centre (has_on: unused) */
+    double gm_earth;  /* m^3/s^2, > 0: g = GM_E / r² in the tide height (has_on: unused) */
 };
 
 /* A body as used: name "moon", "sun" or "custom" and the source of its

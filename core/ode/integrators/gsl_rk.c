@@ -157,6 +157,19 @@ static enum mech_status gsl_rk_evolve(void *ws, const struct mech_ode_system *sy
     return MECH_OK;
 }
 
+/* GSL's evolve evaluates f at the step's start (dydt_in, for the steppers
+ * that take it: rk8pd, rkck, rkf45 all do) and hands every trial the buffer
+ * dydt_out, which these steppers fill with f at the new state; after a
+ * successful evolve both belong to the accepted step. */
+static int gsl_rk_step_derivs(void *ws, const double **f_start, const double **f_end)
+{
+    const struct gsl_rk_ws *w = ws;
+    if (!w->main->type->can_use_dydt_in) return 0;
+    *f_start = w->ev->dydt_in;
+    *f_end = w->ev->dydt_out;
+    return 1;
+}
+
 static enum mech_status rk8pd_alloc(void **ws, size_t dim, const struct mech_ode_options *opt,
                                     struct mech_error *err)
 {
@@ -187,6 +200,7 @@ const struct mech_integrator mech_integrator_rk8pd = {
     .free = gsl_rk_free,
     .step = gsl_rk_step,
     .evolve = gsl_rk_evolve,
+    .step_derivs = gsl_rk_step_derivs,
 };
 
 const struct mech_integrator mech_integrator_rkck = {
@@ -202,6 +216,7 @@ const struct mech_integrator mech_integrator_rkck = {
     .free = gsl_rk_free,
     .step = gsl_rk_step,
     .evolve = gsl_rk_evolve,
+    .step_derivs = gsl_rk_step_derivs,
 };
 
 const struct mech_integrator mech_integrator_rkf45 = {
@@ -216,4 +231,5 @@ const struct mech_integrator mech_integrator_rkf45 = {
     .free = gsl_rk_free,
     .step = gsl_rk_step,
     .evolve = gsl_rk_evolve,
+    .step_derivs = gsl_rk_step_derivs,
 };

@@ -19,6 +19,9 @@
  *     evolve — adaptive methods only: one ACCEPTED step from *t towards t1
  *              (never beyond it), retrying rejected trials internally,
  *              updating *t and the proposed next step *h.
+ *   A sample inside an accepted step is interpolated instead of sub-stepped
+ *   when the method hands over the step's end derivatives (step_derivs)
+ *   and the interpolant's estimated error is within the tolerance (ode.c).
  *   step() must leave evolve()'s state (step-size history) untouched, so
  *   sampling never perturbs the main step sequence: results at t_end do not
  *   depend on how many samples were asked for.
@@ -106,6 +109,14 @@ struct mech_integrator {
     enum mech_status (*evolve)(void *ws, const struct mech_ode_system *sys, double *t,
                                double t1, double *h, double *y, struct mech_ode_stats *stats,
                                struct mech_error *err);
+
+    /* Optional (NULL otherwise), adaptive methods: the derivatives f(t, y) at
+     * the start and at the end of the step the last successful evolve()
+     * accepted, as that step computed them (no new evaluation). The driver
+     * interpolates samples from them (dense output, ode.c). Returns 1 and
+     * sets both pointers (valid until the next call on ws), or 0 when they
+     * are not available. */
+    int (*step_derivs)(void *ws, const double **f_start, const double **f_end);
 };
 
 /* The registry (registry.c): every method, in catalog order. */
