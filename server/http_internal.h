@@ -251,6 +251,14 @@ struct MHD_Response *answer_response(struct srv_req *r, struct api_response *res
  * is refused (target over SRV_TARGET_MAX: 414; head over SRV_HEADERS_MAX: 431;
  * HTTP/1.1 without exactly one Host: 400), else 0. */
 int head_problem(struct srv_req *r, struct MHD_Connection *conn, const char *version);
+
+/* request_id.c */
+/* The request id into out (SRV_REQUEST_ID_MAX + 1 bytes): `given` (the
+ * incoming X-Request-Id, may be NULL) when it is 1..SRV_REQUEST_ID_MAX
+ * characters of [A-Za-z0-9._:+/=-], else 32 lower-case hex digits of 128 bits
+ * from this thread's generator (seeded by getrandom(2) on its first use).
+ * Cannot fail. */
+void request_id(struct srv_http *h, const char *given, char *out);
 /* The methods path answers to ("GET, HEAD, OPTIONS", ...; static), or NULL
  * when nothing is there. */
 const char *allowed_methods(const char *path);
