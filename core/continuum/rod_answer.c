@@ -1,4 +1,4 @@
-/* rod_answer.c — the POST /v1/continuum/rod answer (see mech/rod_answer.h):
+/* rod_answer.c — the POST /v1/continuum/rod answer (see mech/answers/continuum/rod_answer.h):
  * the section's A, I and r_g, the longitudinal and bending modes
  * (continuum_waves.c) and, when asked for, the torsional ones (torsion.c). */
 #include <math.h>
@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/rod_answer.h"
-#include "mech/torsion.h"
+#include "mech/base/constants.h"
+#include "mech/answers/continuum/rod_answer.h"
+#include "mech/continuum/torsion.h"
 
 static enum mech_status positive(double x, const char *param, const char *what,
                                  struct mech_error *err)
@@ -81,7 +81,7 @@ static void section_moments(const struct mech_rod_request *q, double *A, double 
     }
 }
 
-/* The torsional block (mech/torsion.h) when G or ν is given: J and K of the
+/* The torsional block (mech/continuum/torsion.h) when G or ν is given: J and K of the
  * section, c_t, the modes at the axial k_n L. A section given by area alone
  * sets torsion_needs_polar_moment instead. */
 static enum mech_status torsion(const struct mech_rod_request *q, struct mech_rod_answer *a,

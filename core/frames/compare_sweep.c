@@ -1,13 +1,13 @@
 /* compare_sweep.c — one scene run with several integrator settings against
- * one reference, in one shared budget (mech/compare_sweep.h): what
+ * one reference, in one shared budget (mech/answers/frames/compare_sweep.h): what
  * POST /v1/compare computes; the handler parses and encodes. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/closed_form.h"
-#include "mech/compare_sweep.h"
-#include "mech/reference.h"
+#include "mech/frames/closed_form.h"
+#include "mech/answers/frames/compare_sweep.h"
+#include "mech/frames/reference.h"
 
 static double max2(double a, double b)
 {

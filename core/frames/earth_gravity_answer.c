@@ -1,16 +1,16 @@
 /* earth_gravity_answer.c — one POST /v1/earth/gravity computation
- * (mech/earth_gravity_answer.h): the sphere from gm or g0 and omega or the
+ * (mech/answers/frames/earth_gravity_answer.h): the sphere from gm or g0 and omega or the
  * sidereal day, earth.c's effective gravity and normal gravity, and their
  * difference. Moved from api/ops/earth/gravity.c (a handler only parses,
  * calls core once and encodes) operation for operation, so the API's
  * answers stay byte-identical. */
-#include "mech/earth_gravity_answer.h"
+#include "mech/answers/frames/earth_gravity_answer.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 /* The same text the API gives a non-finite answer. */
 #define EARTH_NONFINITE "the result is not finite for this input (overflow or a singularity)"

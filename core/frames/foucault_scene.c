@@ -1,18 +1,18 @@
 /* foucault_scene.c — one POST /v1/scenes/foucault computation
- * (mech/foucault_scene.h): the scales and the centrifugal estimate of
+ * (mech/answers/frames/foucault_scene.h): the scales and the centrifugal estimate of
  * foucault_first_order.c, the chooser of chooser_pendulum.c, the runs of
  * pendulum.c, and the Richardson estimate and expected rate beside them.
  * Moved from api/ops/scenes/foucault.c (a handler only parses, calls core once
  * and encodes) operation for operation, so the API's answers stay
  * byte-identical. */
-#include "mech/foucault_scene.h"
+#include "mech/answers/frames/foucault_scene.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/chooser_pendulum.h"
-#include "mech/constants.h"
+#include "mech/frames/chooser_pendulum.h"
+#include "mech/base/constants.h"
 
 /* What the scales and the run's length need before the scene's own checks
  * (the API's schema guarantees them; a direct caller gets EINVAL). */

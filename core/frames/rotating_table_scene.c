@@ -1,14 +1,14 @@
 /* rotating_table_scene.c — one POST /v1/scenes/rotating-table computation
- * (mech/rotating_table_scene.h): the experiment's fields checked, the
+ * (mech/answers/frames/rotating_table_scene.h): the experiment's fields checked, the
  * answer and its sample buffers allocated, and scenes.c's table run. Moved
  * from api/ops/scenes/scene_request.c (a handler only parses, calls core once and encodes)
  * check for check, so the API's answers stay byte-identical. */
-#include "mech/rotating_table_scene.h"
+#include "mech/answers/frames/rotating_table_scene.h"
 
 #include <math.h>
 #include <stdlib.h>
 
-#include "mech/trajectory_problem.h"
+#include "mech/frames/trajectory_problem.h"
 
 const char *mech_table_experiment_name(enum mech_table_experiment x)
 {

@@ -1,17 +1,17 @@
 /* tides_answer.c — one POST /v1/earth/tides computation
- * (mech/tides_answer.h): the body resolved from gm or mass, the tidal
+ * (mech/answers/frames/tides_answer.h): the body resolved from gm or mass, the tidal
  * acceleration and equilibrium tide of tides.c, and the Moon and the Sun
  * combined. Moved from api/ops/earth/gravity.c (a handler only parses, calls
  * core once and encodes) operation for operation, so the API's answers stay
  * byte-identical. */
-#include "mech/tides_answer.h"
+#include "mech/answers/frames/tides_answer.h"
 
 #include <math.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 /* The same text the API gives a non-finite answer. */
 #define TIDES_NONFINITE "the result is not finite for this input (overflow or a singularity)"

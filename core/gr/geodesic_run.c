@@ -1,14 +1,14 @@
 /* geodesic_run.c — integrate a set-up geodesic and put the measured periapsis
  * advance and light deflection beside their references
- * (mech/geodesic_run.h). */
+ * (mech/answers/gr/geodesic_run.h). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/geodesic_run.h"
-#include "mech/schwarzschild.h"
+#include "mech/base/constants.h"
+#include "mech/answers/gr/geodesic_run.h"
+#include "mech/gr/schwarzschild.h"
 
 void mech_geodesic_answer_free(struct mech_geodesic_answer *a)
 {

@@ -1,12 +1,12 @@
 /* geodesic_setup.c — from a geodesic request's initial-condition form, in SI
  * or geometric units, to the problem mech_geodesic_integrate runs, with the
- * motion's class and its exact references (mech/geodesic_setup.h). */
+ * motion's class and its exact references (mech/answers/gr/geodesic_setup.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/geodesic_setup.h"
+#include "mech/base/constants.h"
+#include "mech/answers/gr/geodesic_setup.h"
 
 const char *mech_geodesic_class_name(enum mech_geodesic_class k)
 {

@@ -1,5 +1,5 @@
 /* schwarzschild_answer.c — the POST /v1/gr/schwarzschild answer in the
- * caller's units (mech/schwarzschild_answer.h): the named radii, the clocks
+ * caller's units (mech/answers/gr/schwarzschild_answer.h): the named radii, the clocks
  * and circular orbit at r, the clock comparison, the radial infall and the
  * sampled effective potentials, from schwarzschild.c and radial_infall.c in
  * geometric units through gr_units.h. */
@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/schwarzschild_answer.h"
+#include "mech/answers/gr/schwarzschild_answer.h"
 
 /* The static clock and circular geodesic at r, converted to the caller's units. */
 static enum mech_status at_r(const struct mech_schw_request *q, struct mech_schw_at_r *a,

@@ -1,10 +1,10 @@
 /* liouville_runs.c — a Liouville comparison of up to two integrators on one
  * curve of initial conditions, the budget shared, and the reference orbit's
- * start (mech/liouville_runs.h). */
+ * start (mech/answers/hamiltonian/liouville_runs.h). */
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/liouville_runs.h"
+#include "mech/answers/hamiltonian/liouville_runs.h"
 
 void mech_liouville_reference_start(const struct mech_liouville_problem *p, double *y)
 {

@@ -1,12 +1,12 @@
 /* poincare_orbits.c — a Poincaré section of several orbits within one step
  * budget, each orbit handed to the caller as it completes, an angle plane
- * reduced to [0, 2 pi) (mech/poincare_orbits.h). */
+ * reduced to [0, 2 pi) (mech/answers/hamiltonian/poincare_orbits.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/poincare_orbits.h"
+#include "mech/base/constants.h"
+#include "mech/answers/hamiltonian/poincare_orbits.h"
 
 enum mech_status mech_poincare_orbits(const struct mech_poincare_problem *base,
                                       const double *starts, size_t n_orbits,

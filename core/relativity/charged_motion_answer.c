@@ -1,12 +1,12 @@
 /* charged_motion_answer.c — one /v1/relativity/charge-in-fields answer
- * (mech/charged_motion_answer.h) from the exact motion of charged_motion.c. */
-#include "mech/charged_motion_answer.h"
+ * (mech/answers/relativity/charged_motion_answer.h) from the exact motion of charged_motion.c. */
+#include "mech/answers/relativity/charged_motion_answer.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for parameter paths */
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 static enum mech_status times_check(const double *x, size_t n, const char *name,
                                     struct mech_error *err)
@@ -27,8 +27,8 @@ static enum mech_status times_check(const double *x, size_t n, const char *name,
 
 enum mech_status mech_charged_answer(const struct mech_charged_question *q,
                                      struct mech_charged_answer *a,
-                                     struct mech_charged_state *states_t,
-                                     struct mech_charged_state *states_tau,
+                                     struct mech_charged_motion_state *states_t,
+                                     struct mech_charged_motion_state *states_tau,
                                      struct mech_error *err)
 {
     if (!q || !a) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");

@@ -1,13 +1,13 @@
 /* collision_answer.c — what POST /v1/relativity/kinematics/collision
- * computes (mech/collision_answer.h): the beam solved from sqrt(s) when
+ * computes (mech/answers/relativity/collision_answer.h): the beam solved from sqrt(s) when
  * asked, s and s - (m1 + m2)^2 of the two motions at their angle, the CM
  * system, the fixed-target and collider equivalents and a final state's
  * threshold, from the cancellation-free pieces of kinematics.c. */
 #include <math.h>
 #include <string.h>
 
-#include "mech/collision_answer.h"
-#include "mech/constants.h"
+#include "mech/answers/relativity/collision_answer.h"
+#include "mech/base/constants.h"
 
 static int bad_mass(double m)
 {

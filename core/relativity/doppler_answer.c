@@ -4,14 +4,14 @@
  * D − 1, so 1 m/s keeps its digits), and the light: ν_obs = D ν_emit,
  * λ = c/ν with c exact. The physics is in doppler.c; this is the
  * orchestration, so the handler only parses and encodes. */
-#include "mech/doppler_answer.h"
+#include "mech/answers/relativity/doppler_answer.h"
 
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 const char *mech_doppler_shift_name(enum mech_doppler_shift s)
 {

@@ -1,11 +1,11 @@
 /* elastic_answer.c — the POST /v1/relativity/kinematics/elastic answer (see
- * mech/elastic_answer.h): the angle as given turned into radians, the
+ * mech/answers/relativity/elastic_answer.h): the angle as given turned into radians, the
  * scattering (elastic_scattering.c), the projectile's boost (kinematics.c). */
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/elastic_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/elastic_answer.h"
 
 const char *mech_elastic_angle_key(enum mech_elastic_angle kind, int in_degrees)
 {

@@ -1,10 +1,10 @@
 /* particle_answer.c — the POST /v1/relativity/particle answer (see
- * mech/particle_answer.h): the unit and the mass resolved (particles.c),
+ * mech/answers/relativity/particle_answer.h): the unit and the mass resolved (particles.c),
  * the state of motion (particle_state.c) and the lifetime in the lab. */
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/particle_answer.h"
+#include "mech/answers/relativity/particle_answer.h"
 
 /* The core's "mass" is the request's "particle" (a name or a mass). */
 static enum mech_status rename_mass(enum mech_status st, struct mech_error *err)

@@ -1,11 +1,11 @@
 /* rocket_answer.c — the POST /v1/relativity/rocket answer (see
- * mech/rocket_answer.h): the exhaust speed as used, the final motion given
+ * mech/answers/relativity/rocket_answer.h): the exhaust speed as used, the final motion given
  * or reached from a mass ratio (particle_state.c), and the mass ratio beside
  * Tsiolkovsky's (rocket.c). */
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/rocket_answer.h"
+#include "mech/answers/relativity/rocket_answer.h"
 
 /* The request names its field differently from the core it calls: the
  * exhaust as given in m/s is "exhaust_speed". */
@@ -38,7 +38,7 @@ enum mech_status mech_rocket_answer(const struct mech_rocket_request *q,
     }
     enum mech_status st;
     if (q->has_mass_ratio) {
-        /* Ackeret's rocket: eta = beta_e ln(m_i/m_f) (mech/rocket.h) */
+        /* Ackeret's rocket: eta = beta_e ln(m_i/m_f) (mech/relativity/rocket.h) */
         double eta;
         st = mech_rocket_rapidity(q->mass_ratio, a.exhaust_beta, &eta, err);
         if (st == MECH_OK)

@@ -5,14 +5,14 @@
  * which needs scratch copies of the legs). The physics is in worldline.c and
  * telescope.c; this is the orchestration, so the handler only parses and
  * encodes. */
-#include "mech/worldline_answer.h"
+#include "mech/answers/relativity/worldline_answer.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 static const char NOT_FINITE[] = "the result is not finite for this input (overflow or a singularity)";
 
@@ -57,7 +57,7 @@ static enum mech_status views_run(const struct mech_worldline_request *q, const 
     return st;
 }
 
-/* Per leg: c τ, and the ticks and rates of mech/worldline_answer.h, each from
+/* Per leg: c τ, and the ticks and rates of mech/answers/relativity/worldline_answer.h, each from
  * the leg's own intervals (never a difference of the running totals). */
 static int leg_answer(const struct mech_leg_result *r, int accelerated, double c, double tick,
                       struct mech_worldline_leg_answer *o)

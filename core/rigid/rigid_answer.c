@@ -1,11 +1,11 @@
 /* rigid_answer.c — a rigid body's rotation into arrays the answer owns, from
- * the closed form or by integration (mech/rigid_answer.h): what
+ * the closed form or by integration (mech/answers/rigid/rigid_answer.h): what
  * POST /v1/rigid/rotate computes; the handler parses and encodes. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/rigid_answer.h"
+#include "mech/answers/rigid/rigid_answer.h"
 
 void mech_rigid_answer_free(struct mech_rigid_answer *a)
 {

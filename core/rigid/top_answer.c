@@ -1,13 +1,13 @@
 /* top_answer.c — the heavy symmetric top's run into arrays the answer owns,
- * with the initial angular velocity from the Euler rates (mech/top_answer.h):
+ * with the initial angular velocity from the Euler rates (mech/answers/rigid/top_answer.h):
  * what POST /v1/rigid/top computes; the handler parses and encodes. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/euler_rates.h"
-#include "mech/top_answer.h"
+#include "mech/rotation/euler_rates.h"
+#include "mech/answers/rigid/top_answer.h"
 
 #define TOP_ANSWER_MAX_SAMPLES 100000 /* mech_top_integrate's own limit */
 

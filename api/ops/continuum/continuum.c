@@ -9,9 +9,9 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/continuum_waves.h"
-#include "mech/rod_answer.h"
+#include "mech/base/constants.h"
+#include "mech/continuum/continuum_waves.h"
+#include "mech/answers/continuum/rod_answer.h"
 
 
 static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode *m)

@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/earth_gravity_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/earth_gravity_answer.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

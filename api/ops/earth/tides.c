@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/tides_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/tides_answer.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

@@ -9,7 +9,7 @@
 
 #include "run/endpoint.h"
 #include "ops/gr/gr_units.h"
-#include "mech/schwarzschild_answer.h"
+#include "mech/answers/gr/schwarzschild_answer.h"
 
 #define MICROSECONDS_PER_DAY 86400e6
 

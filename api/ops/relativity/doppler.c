@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/doppler_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/doppler_answer.h"
 #include "ops/relativity/velocity_request.h"
 
 static json_t *angle_or_null(struct api_call *c, double a, double scale)

@@ -14,12 +14,12 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "ops/relativity/kin_request.h"
-#include "mech/collision_answer.h"
+#include "mech/answers/relativity/collision_answer.h"
 
 /* The request as the core takes it (mf: room for the final masses); 0 after
  * recording every error found (masses, the crossing angle, the motions, and

@@ -10,8 +10,8 @@
 
 #include "run/endpoint.h"
 #include "ops/relativity/kin_request.h"
-#include "mech/constants.h"
-#include "mech/elastic_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/elastic_answer.h"
 
 static json_t *deg_of(struct api_call *c, double rad)
 {

@@ -9,7 +9,7 @@
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/particle_answer.h"
+#include "mech/answers/relativity/particle_answer.h"
 
 /* The forms a motion may be given in: request key and core enum, in the
  * order the description lists them. */

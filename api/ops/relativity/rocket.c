@@ -7,7 +7,7 @@
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/rocket_answer.h"
+#include "mech/answers/relativity/rocket_answer.h"
 
 static const struct {
     const char *key;

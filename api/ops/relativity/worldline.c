@@ -7,10 +7,10 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/telescope.h"
-#include "mech/worldline_answer.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/telescope.h"
+#include "mech/answers/relativity/worldline_answer.h"
 #include "ops/relativity/velocity_request.h"
 
 /* The legs as asked (schema-validated: each leg is one of the five shapes);

@@ -16,9 +16,9 @@
 #include "request/earth_rotation.h"
 #include "run/endpoint.h"
 #include "request/integrator_block.h"
-#include "mech/constants.h"
-#include "mech/foucault_scene.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/foucault_scene.h"
+#include "mech/frames/trajectory.h"
 #include "request/trajectory_request.h"
 
 /* diagnostics.selection, the shape every time-evolution operation gives it

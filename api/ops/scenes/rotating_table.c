@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/rotating_table_scene.h"
+#include "mech/answers/frames/rotating_table_scene.h"
 #include "ops/scenes/scene_request.h"
 #include "request/integrator_block.h"
 #include "request/trajectory_request.h"

@@ -11,8 +11,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/rod_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/continuum/rod_answer.h"
 #include "testlib.h"
 
 /* Steel, 1 m: E = 200 GPa, rho = 7800 kg/m^3. */

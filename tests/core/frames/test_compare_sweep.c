@@ -1,4 +1,4 @@
-/* test_compare_sweep.c — mech/compare_sweep.h against closed forms and a
+/* test_compare_sweep.c — mech/answers/frames/compare_sweep.h against closed forms and a
  * second method:
  *  - the harmonic oscillator x'' = -x (spring k = 1, m = 1, x0 = 1, v0 = 0),
  *    whose exact reference is x = cos t, v = -sin t: rk4 at h and h/2. RK4 on
@@ -24,7 +24,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/compare_sweep.h"
+#include "mech/answers/frames/compare_sweep.h"
 #include "testlib.h"
 
 #define T_END 10.0

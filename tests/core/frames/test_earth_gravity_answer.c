@@ -1,5 +1,5 @@
 /* test_earth_gravity_answer.c — one /v1/earth/gravity answer
- * (mech/earth_gravity_answer.h) against a second method: g_eff = g - w x
+ * (mech/answers/frames/earth_gravity_answer.h) against a second method: g_eff = g - w x
  * (w x r) built here as vectors in Earth-centred axes (z along w), so its
  * magnitude, its radial and horizontal parts and the plumb line's deflection
  * atan2(|g_eff x r_hat|, -g_eff . r_hat) are compared with the answer's
@@ -13,8 +13,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/earth_gravity_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/earth_gravity_answer.h"
 #include "testlib.h"
 
 static struct mech_earth_gravity_request request(double lat, double h)

@@ -22,8 +22,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/foucault_scene.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/foucault_scene.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

@@ -1,5 +1,5 @@
 /* test_rotating_table_scene.c — the rotating table (notes §1.1) as one
- * /v1/scenes/rotating-table computation (mech/rotating_table_scene.h),
+ * /v1/scenes/rotating-table computation (mech/answers/frames/rotating_table_scene.h),
  * against the closed form: a free puck moves on the straight line
  * r(t) = r0 + v0 t in the inertial frame, so in the table's axes (turning at
  * w about z, the frames coinciding at t = 0) it is that line rotated back,
@@ -13,8 +13,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/rotating_table_scene.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/rotating_table_scene.h"
 #include "testlib.h"
 
 static struct mech_rotating_table_request request(enum mech_table_experiment x, double w)

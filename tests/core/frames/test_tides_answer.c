@@ -1,4 +1,4 @@
-/* test_tides_answer.c — one /v1/earth/tides answer (mech/tides_answer.h)
+/* test_tides_answer.c — one /v1/earth/tides answer (mech/answers/frames/tides_answer.h)
  * against closed forms: along the axis (theta = 0) the exact tidal
  * acceleration is GM/(d - r)² - GM/d² = GM r (2d - r) / (d² (d - r)²),
  * 2 GM r/d³ to first order, and its departure from first order is
@@ -14,8 +14,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/tides_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/tides_answer.h"
 #include "testlib.h"
 
 static struct mech_tides_request request(void)

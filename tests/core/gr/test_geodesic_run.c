@@ -1,4 +1,4 @@
-/* test_geodesic_run.c — mech/geodesic_run.h against closed forms:
+/* test_geodesic_run.c — mech/answers/gr/geodesic_run.h against closed forms:
  *  - light from far away with b = 1e5 GM/c^2: the deflection by quadrature
  *    against the weak-field series 4/b + 15 pi/(4 b^2) + (128/3)/b^3 (Keeton &
  *    Petters 2005, eq. 28 with M = 1), the measured deflection against it, the
@@ -14,8 +14,8 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/geodesic_run.h"
+#include "mech/base/constants.h"
+#include "mech/answers/gr/geodesic_run.h"
 #include "testlib.h"
 
 static struct mech_geodesic_request request(void)

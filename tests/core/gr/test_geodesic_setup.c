@@ -1,4 +1,4 @@
-/* test_geodesic_setup.c — mech/geodesic_setup.h against closed forms:
+/* test_geodesic_setup.c — mech/answers/gr/geodesic_setup.h against closed forms:
  *  - a near-circular orbit at r = 20 GM/c^2 (strong field): the radial
  *    (epicyclic) frequency in coordinate time, w_r^2 = (M/r^3)(1 - 6M/r),
  *    gives T_t = 2 pi / w_r; the proper period is T_t sqrt(1 - 3M/r) (dtau/dt
@@ -14,8 +14,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/geodesic_setup.h"
+#include "mech/base/constants.h"
+#include "mech/answers/gr/geodesic_setup.h"
 #include "testlib.h"
 
 static struct mech_geodesic_request request(int geometric, enum mech_gr_mass mass)

@@ -1,4 +1,4 @@
-/* test_schwarzschild_answer.c — mech/schwarzschild_answer.h against closed
+/* test_schwarzschild_answer.c — mech/answers/gr/schwarzschild_answer.h against closed
  * forms: the radii r_s = 2, photon sphere 3, ISCO 6, b_c = 3 sqrt(3) GM/c^2;
  * circular orbits E = (1 - 2M/r)/sqrt(1 - 3M/r), L = sqrt(M r)/sqrt(1 - 3M/r),
  * Omega^2 = GM/r^3 in coordinate time (Kepler's third law, exact in t), the
@@ -12,8 +12,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/schwarzschild_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/gr/schwarzschild_answer.h"
 #include "testlib.h"
 
 static struct mech_schw_request geometric(void)

@@ -1,4 +1,4 @@
-/* test_liouville_runs.c — mech/liouville_runs.h on the linear flow of the
+/* test_liouville_runs.c — mech/answers/hamiltonian/liouville_runs.h on the linear flow of the
  * harmonic oscillator (m = k = 1), where everything has a closed form: the
  * ellipse's area pi a b; the symplectic gauss4 keeps det Phi = 1 and the
  * area; rk4's one-step map has det |R(ih)|^2 = 1 - h^6/72 + h^8/576 (R the
@@ -11,8 +11,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/liouville_runs.h"
+#include "mech/base/constants.h"
+#include "mech/answers/hamiltonian/liouville_runs.h"
 #include "testlib.h"
 
 static struct mech_ham_system oscillator(void)

@@ -1,4 +1,4 @@
-/* test_poincare_orbits.c — mech/poincare_orbits.h: for the 2D oscillator with
+/* test_poincare_orbits.c — mech/answers/hamiltonian/poincare_orbits.h: for the 2D oscillator with
  * omega_x = 1, omega_y = 2 every upward crossing of x = 0 comes 2 pi apart and
  * returns to the start's (y, p_y), for each of several orbits; the spherical
  * pendulum's phi in the plane reduced to [0, 2 pi) (its cos and sin those of
@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/poincare_orbits.h"
+#include "mech/base/constants.h"
+#include "mech/answers/hamiltonian/poincare_orbits.h"
 #include "testlib.h"
 
 struct seen {

@@ -16,8 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/charged_motion_answer.h"
-#include "mech/constants.h"
+#include "mech/answers/relativity/charged_motion_answer.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 #define QP 1.602176634e-19
@@ -32,7 +32,7 @@ int main(void)
 {
     gsl_set_error_handler_off();
     struct mech_charged_answer a;
-    struct mech_charged_state st[4], sp[4];
+    struct mech_charged_motion_state st[4], sp[4];
     struct mech_error e;
 
     /* E x B drift, proton, E = 0.8 c (1 T) along y, B = 1 T along z */

@@ -1,4 +1,4 @@
-/* test_collision_answer.c — mech/collision_answer.h (notes §3, problems 10
+/* test_collision_answer.c — mech/answers/relativity/collision_answer.h (notes §3, problems 10
  * and 18) against closed forms derived here (c = 1, MeV):
  *  - p p -> p p p pbar on protons at rest: threshold sqrt(s) = 4 m_p, and
  *    s = 2 m^2 + 2 m E = 16 m^2 gives E_lab = 7 m_p (kinetic 6 m_p); the
@@ -20,9 +20,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/collision_answer.h"
-#include "mech/constants.h"
-#include "mech/particles.h"
+#include "mech/answers/relativity/collision_answer.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/particles.h"
 #include "testlib.h"
 
 static double m_p;

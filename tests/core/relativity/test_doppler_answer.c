@@ -24,8 +24,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/doppler_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/doppler_answer.h"
 #include "testlib.h"
 
 static const long double PI_L = 3.141592653589793238462643383279502884L;

@@ -12,8 +12,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/elastic_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/elastic_answer.h"
 #include "testlib.h"
 
 static const double M_P = 938.27208816, M_E = 0.51099895, M_MU = 105.6583755; /* MeV */

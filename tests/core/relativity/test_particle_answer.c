@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/particle_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/particle_answer.h"
 #include "testlib.h"
 
 static const double M_E_MEV = 0.51099895000; /* CODATA 2018 electron mass, MeV */

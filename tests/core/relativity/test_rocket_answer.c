@@ -9,8 +9,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/rocket_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/rocket_answer.h"
 #include "testlib.h"
 
 static enum mech_status run(enum mech_rocket_exhaust ex, double exv, int has_mr, double mr,

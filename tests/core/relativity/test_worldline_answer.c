@@ -17,8 +17,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/worldline_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/worldline_answer.h"
 #include "testlib.h"
 
 static struct mech_budget bud;

@@ -1,4 +1,4 @@
-/* test_rigid_answer.c — mech/rigid_answer.h against the symmetric top's
+/* test_rigid_answer.c — mech/answers/rigid/rigid_answer.h against the symmetric top's
  * closed form: I = (1, 1, 2) kg m^2, omega0 = (a, 0, w3). Euler's equations
  * I1 w1' = (I2 - I3) w2 w3, I2 w2' = (I3 - I1) w3 w1 give w1' = -w3 w2,
  * w2' = w3 w1, w3 constant: w1 = a cos(w3 t), w2 = a sin(w3 t). Both paths
@@ -12,7 +12,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "mech/rigid_answer.h"
+#include "mech/answers/rigid/rigid_answer.h"
 #include "testlib.h"
 
 #define A 0.3

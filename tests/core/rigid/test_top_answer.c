@@ -1,4 +1,4 @@
-/* test_top_answer.c — mech/top_answer.h and mech_top_closed_forms (notes
+/* test_top_answer.c — mech/answers/rigid/top_answer.h and mech_top_closed_forms (notes
  * §2.10-2.11), against closed forms derived here:
  *  - steady precession: the roots of I1 cos(th) x^2 - I3 w3 x + M g h = 0,
  *    Omega+- = (I3 w3 +- sqrt(I3^2 w3^2 - 4 I1 M g h cos th)) / (2 I1 cos th),
@@ -20,8 +20,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/top_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/rigid/top_answer.h"
 #include "testlib.h"
 
 #define MGH (1.0 * 9.80665 * 0.1)
