@@ -12,7 +12,7 @@
 #include <jansson.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 
 static double per_call(double seconds, void (*fn)(const struct api_route *), const struct api_route *r)

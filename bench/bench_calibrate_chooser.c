@@ -27,9 +27,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/budget.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/base/budget.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 
 #include "../tests/chooser_scenes.h"
 

@@ -33,8 +33,13 @@
  *
  * Run: build/bench_chooser_regret [OUT_DIR] (default build/bench-out): the
  * tables on stdout, chooser_regret.dat and chooser_regret.png (gnuplot) in
- * OUT_DIR. MECHD_BENCH_DIR points at bench/ (for the SciPy script) when run
- * outside its source tree. About a minute on 2 shared cores.
+ * OUT_DIR, and chooser_hindsight.tsv (every swept run: method, setting,
+ * error, evaluations, CPU) and chooser_runs.tsv (the chooser's and presets'
+ * runs with their predictions), which bench/fit_chooser_rows.py fits into
+ * the chooser's rows. MECHD_BENCH_DIR points at bench/ (for the SciPy
+ * script) when run outside its source tree; MECHD_REGRET_SCENES=0,3 measures
+ * only those scenes, MECHD_REGRET_QUICK=1 skips GSL and SciPy (while tuning).
+ * About 8 minutes on 2 shared cores (1 without GSL and SciPy).
  */
 #define _GNU_SOURCE
 #include <errno.h>
@@ -244,7 +249,7 @@ static double answer_error(int si, const json_t *a)
 struct run {
     int ok;
     double err, evals, cpu;
-    double pred_err, pred_evals, pred_cpu, achieved;
+    double pred_err, pred_evals, pred_cpu, achieved, span;
     char method[16];
     double setting;
 };
@@ -297,6 +302,7 @@ static struct run api_run(int si, json_t *integ)
             r.pred_evals = json_number_value(json_object_get(c, "predicted_evaluations"));
             r.pred_cpu = json_number_value(json_object_get(c, "predicted_cpu_s"));
         }
+        r.span = json_number_value(at(a, "diagnostics/selection/span"));
         const json_t *ach = at(a, "diagnostics/selection/achieved/error");
         if (json_is_number(ach)) r.achieved = json_number_value(ach);
     }
@@ -525,6 +531,7 @@ static const struct brun *bbest(const struct brun *b, size_t n, double target)
 /* ---- main ------------------------------------------------------------------------ */
 
 static struct run CH[NSC][NT], PR[NSC][4];
+static int SKIP[NSC];
 
 int main(int argc, char **argv)
 {
@@ -549,7 +556,20 @@ int main(int argc, char **argv)
     printf("# bench_chooser_regret: the chooser against mechd's own methods in hindsight, %s\n",
            date);
 
+    /* MECHD_REGRET_SCENES=0,3,7 measures only those scenes (while tuning;
+     * the tables then list only them); MECHD_REGRET_QUICK=1 skips GSL and SciPy */
+    const char *only = getenv("MECHD_REGRET_SCENES");
+    const int quick = getenv("MECHD_REGRET_QUICK") != NULL;
     for (int si = 0; si < NSC; si++) {
+        SKIP[si] = 0;
+        if (only && *only) {
+            char key[16];
+            snprintf(key, sizeof key, ",%d,", si);
+            char list[256];
+            snprintf(list, sizeof list, ",%s,", only);
+            SKIP[si] = strstr(list, key) == NULL;
+        }
+        if (SKIP[si]) continue;
         /* the reference and the atol scale the chooser uses on this scene */
         if (SC[si].ref == RK_RUN) {
             const char *used = "";
@@ -578,8 +598,8 @@ int main(int argc, char **argv)
                                               "closed_form", 0));
         for (int k = 0; k < 4; k++)
             PR[si][k] = api_run(si, json_pack("{sssb}", "accuracy", PRESETS[k], "closed_form", 0));
-        gsl_sweep(si);
-        if (have_scipy) scipy_sweep(si, bench_dir);
+        if (!quick) gsl_sweep(si);
+        if (have_scipy && !quick) scipy_sweep(si, bench_dir);
         fprintf(stderr, "%s: %zu hindsight runs\n", SC[si].sd.name, NH[si]);
     }
 
@@ -597,6 +617,7 @@ int main(int argc, char **argv)
     double lsum = 0;
     int ln = 0, within = 0, cells = 0, win_ok = 0, win_n = 0;
     for (int si = 0; si < NSC; si++) {
+        if (SKIP[si]) continue;
         printf("| %s | %s |", SC[si].sd.name, SC[si].cls);
         for (int k = 0; k < NT; k++) {
             const struct run *c = &CH[si][k];
@@ -638,6 +659,7 @@ int main(int argc, char **argv)
     printf("\n## The best in hindsight per scene and target (method setting: error, evaluations, "
            "CPU) beside the chooser's run\n");
     for (int si = 0; si < NSC; si++) {
+        if (SKIP[si]) continue;
         printf("%s\n", SC[si].sd.name);
         for (int k = 0; k < NT; k++) {
             const struct hrun *be = best_meeting(si, TARGETS[k], 0);
@@ -663,6 +685,7 @@ int main(int argc, char **argv)
     double gsum = 0, lsum2 = 0;
     int gn = 0, ln2 = 0;
     for (int si = 0; si < NSC; si++) {
+        if (SKIP[si]) continue;
         printf("| %s |", SC[si].sd.name);
         for (int k = 0; k < 4; k++) {
             const struct run *p = &PR[si][k];
@@ -688,6 +711,7 @@ int main(int argc, char **argv)
            "counted evaluations, predicted / measured CPU, achieved.error / true error\n");
     printf("| scene | evals pred/counted | CPU pred/measured | achieved / true |\n|---|---|---|---|\n");
     for (int si = 0; si < NSC; si++) {
+        if (SKIP[si]) continue;
         double e0 = INFINITY, e1 = 0, c0 = INFINITY, c1 = 0, a0 = INFINITY, a1 = 0;
         int na = 0;
         for (int k = 0; k < NT + 4; k++) {
@@ -718,7 +742,7 @@ int main(int argc, char **argv)
     printf("| scene | target | chooser | mechd best | GSL rk8pd | DOP853 | LSODA | Radau |\n"
            "|---|---|---|---|---|---|---|---|\n");
     for (int si = 0; si < NSC; si++) {
-        if (!SC[si].bare) continue;
+        if (!SC[si].bare || SKIP[si] || quick) continue;
         for (int k = 0; k < NT; k++) {
             const struct hrun *be = best_meeting(si, TARGETS[k], 0);
             printf("| %s | %.0e | %.0f (%.3g) | ", SC[si].sd.name, TARGETS[k], CH[si][k].evals,
@@ -740,6 +764,34 @@ int main(int argc, char **argv)
 
     /* ---- data and plot ---- */
     char path[1024];
+    /* every hindsight run, for fitting the chooser's rows */
+    snprintf(path, sizeof path, "%s/chooser_hindsight.tsv", out_dir);
+    FILE *hf = fopen(path, "w");
+    if (hf) {
+        fprintf(hf, "scene\tmethod\tx\terror\tevaluations\tcpu_s\n");
+        for (int si = 0; si < NSC; si++)
+            for (size_t i = 0; i < NH[si]; i++)
+                fprintf(hf, "%d\t%s\t%.3g\t%.3e\t%.0f\t%.3e\n", si, H[si][i].method, H[si][i].x,
+                        H[si][i].r.err, H[si][i].r.evals, H[si][i].r.cpu);
+        fclose(hf);
+    }
+    /* every chooser and preset run, for checking the rows' predictions */
+    snprintf(path, sizeof path, "%s/chooser_runs.tsv", out_dir);
+    hf = fopen(path, "w");
+    if (hf) {
+        fprintf(hf, "scene\ttarget\tmethod\tx\tspan\terror\tpredicted_error\tachieved\t"
+                    "evaluations\tpredicted_evaluations\tcpu_s\tpredicted_cpu_s\n");
+        for (int si = 0; si < NSC; si++)
+            for (int k = 0; k < NT + 4; k++) {
+                const struct run *r = k < NT ? &CH[si][k] : &PR[si][k - NT];
+                if (SKIP[si] || !r->ok) continue;
+                fprintf(hf, "%d\t%.0e\t%s\t%.4g\t%.6g\t%.3e\t%.3e\t%.3e\t%.0f\t%.0f\t%.3e\t%.3e\n",
+                        si, k < NT ? TARGETS[k] : PROMISE[k - NT], r->method, r->setting, r->span,
+                        r->err, r->pred_err, r->achieved, r->evals, r->pred_evals, r->cpu,
+                        r->pred_cpu);
+            }
+        fclose(hf);
+    }
     snprintf(path, sizeof path, "%s/chooser_regret.dat", out_dir);
     FILE *f = fopen(path, "w");
     if (f) {

@@ -16,8 +16,8 @@
 #include <string.h>
 #include <time.h>
 
-#include "mech/closed_form.h"
-#include "mech/constants.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
 
 static double cpu(void)
 {

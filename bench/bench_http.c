@@ -41,8 +41,8 @@
 #include <netinet/in.h>
 #include <sys/socket.h>
 
-#include "mech/boost.h"
-#include "mech/budget.h"
+#include "mech/relativity/boost.h"
+#include "mech/base/budget.h"
 
 struct server {
     pid_t pid;

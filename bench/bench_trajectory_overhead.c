@@ -38,11 +38,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/budget.h"
-#include "mech/constants.h"
-#include "mech/ode.h"
-#include "mech/status.h"
-#include "mech/trajectory.h"
+#include "mech/base/budget.h"
+#include "mech/base/constants.h"
+#include "mech/ode/ode.h"
+#include "mech/base/status.h"
+#include "mech/frames/trajectory.h"
 
 #define OV_ECC 0.5
 #define OV_MAX_ROUNDS 50

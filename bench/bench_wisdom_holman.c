@@ -24,10 +24,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/budget.h"
-#include "mech/constants.h"
-#include "mech/status.h"
-#include "mech/trajectory.h"
+#include "mech/base/budget.h"
+#include "mech/base/constants.h"
+#include "mech/base/status.h"
+#include "mech/frames/trajectory.h"
 
 #define WH_D 20.0
 

@@ -67,11 +67,11 @@
 #include <unistd.h>
 
 #include "api.h"
-#include "mech/constants.h"
-#include "mech/budget.h"
-#include "mech/ode.h"
-#include "mech/status.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/base/budget.h"
+#include "mech/ode/ode.h"
+#include "mech/base/status.h"
+#include "mech/frames/trajectory.h"
 
 #define WP_TWO_PI_L MECH_TWO_PI_L
 #define WP_MAX_ROWS 4096

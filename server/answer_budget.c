@@ -28,7 +28,7 @@
 #include <stdlib.h>
 
 #include "answer_mem.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 #define SRV_ANSWER_SAMPLE_UNITS 128.0 /* units per sample asked for */
 #define SRV_ANSWER_BASE_UNITS 1024.0  /* units of every answer */

@@ -79,7 +79,7 @@
 #include "api.h"
 #include "log.h"
 #include "static.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 /* ---- watching pooled requests for a client hang-up ------------------------------ */
 

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 #define EVAL_MAX_INPUT (64L * 1024 * 1024) /* bytes read from FILE or stdin */
 

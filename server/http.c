@@ -47,7 +47,7 @@
 #include "api.h"
 #include "log.h"
 #include "static.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 static const char index_html[] =
     "<!DOCTYPE html>\n"

@@ -51,7 +51,7 @@
 #include "api.h"
 #include "log.h"
 #include "static.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 /* Header iterator of framing_problem: counts Content-Length and
  * Transfer-Encoding headers, notes whether the Content-Lengths differ. */

@@ -35,7 +35,7 @@
 #include "api.h"
 #include "log.h"
 #include "static.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 /* ---- lifecycle ------------------------------------------------------------------ */
 

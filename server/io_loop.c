@@ -46,7 +46,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 #define IO_QUIESCE_WAIT_S 2.0 /* how long srv_io_quiesce waits for the threads */
 

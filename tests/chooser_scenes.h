@@ -11,10 +11,10 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/budget.h"
-#include "mech/constants.h"
-#include "mech/pendulum.h"
-#include "mech/trajectory.h"
+#include "mech/base/budget.h"
+#include "mech/base/constants.h"
+#include "mech/frames/pendulum.h"
+#include "mech/frames/trajectory.h"
 
 #define CS_UNUSED __attribute__((unused))
 
@@ -79,7 +79,7 @@ static CS_UNUSED void cs_oscillator(struct chooser_scene *s, const char *name, d
 
 /* That oscillator seen from a frame turning at 0.3 rad/s about z
  * (Coriolis and centrifugal): the `general` class's calibration scene; its
- * exact reference is the inertial ellipse turned back (mech/reference.h). */
+ * exact reference is the inertial ellipse turned back (mech/frames/reference.h). */
 static CS_UNUSED void cs_rotating_oscillator(struct chooser_scene *s, const char *name,
                                              double periods)
 {

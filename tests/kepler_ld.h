@@ -9,7 +9,7 @@
 #ifndef MECHD_TESTS_KEPLER_LD_H
 #define MECHD_TESTS_KEPLER_LD_H
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 #include <math.h>
 
 /* The planar state at time t (s, GM = 1): r[0..1], v[0..1]. */

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 #define ANSWER_TEXT_MAX 200 /* longest text read as a number with its unit */
 #define ANSWER_DEPTH_MAX 24 /* nesting of parentheses and unary signs */

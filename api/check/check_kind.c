@@ -4,7 +4,7 @@
  * Pure: plain arrays in, an outcome out; no JSON, no I/O, no allocation.
  */
 #include "check/check_kind.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 #include <string.h>

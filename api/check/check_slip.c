@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "check/check_tree.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 #define SLIP_SWAP_MAX 16 /* longest array whose pairs of components are tried */
 #define SLIP_TEN_MAX 12  /* largest power of ten tried */

@@ -1,7 +1,7 @@
 /* earth_rotation.c — the Earth's rotation rate as a rate or a sidereal day
  * (see api/request/earth_rotation.h). */
 #include "request/earth_rotation.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 #include <stdio.h>
 

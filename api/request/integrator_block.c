@@ -6,8 +6,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/accuracy.h"
-#include "mech/method_choice.h"
+#include "mech/ode/accuracy.h"
+#include "mech/ode/method_choice.h"
 
 struct mech_ode_options api_integrator_settings(const json_t *block)
 {
@@ -69,7 +69,7 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         out->opt = api_integrator_settings(in);
         return 1;
     }
-    /* by accuracy: the one policy for first-order systems (mech/method_choice.h) */
+    /* by accuracy: the one policy for first-order systems (mech/ode/method_choice.h) */
     const json_t *te = in ? json_object_get(in, "target_error") : NULL;
     const struct mech_accuracy_preset *preset = NULL;
     const double target = mech_accuracy_target(te != NULL, json_number_value(te),
@@ -89,6 +89,8 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *in, const
         .closed_form_cpu_per_eval = hooks->closed_form_cpu_per_eval,
         .pilot = hooks->pilot,
         .error_gain = hooks->error_gain,
+        .rows = sys->rows,
+        .second_order = sys->second_order,
         .defaulted = in == NULL,
     };
     struct mech_error e;
@@ -139,7 +141,7 @@ int api_dry_run_requested(const json_t *body)
     return json_is_true(json_object_get(body, "dry_run"));
 }
 
-/* selection.pilot: what the pilot did and cost (mech/chooser_pilot.h). */
+/* selection.pilot: what the pilot did and cost (mech/ode/chooser_pilot.h). */
 static json_t *pilot_json(struct api_call *c, const struct mech_pilot_report *r)
 {
     json_t *o = json_object();
@@ -164,6 +166,23 @@ static json_t *pilot_json(struct api_call *c, const struct mech_pilot_report *r)
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch)
 {
     return api_integrator_block_selection_achieved(c, ch, -1.0, NULL, -1.0);
+}
+
+json_t *api_integrator_block_selection_run(struct api_call *c,
+                                           const struct api_integrator_choice *ch, double error,
+                                           const char *evidence, int at_least_law)
+{
+    if (!ch->chosen || ch->mc.sel.chosen < 0) return api_integrator_block_selection(c, ch);
+    const double law = ch->mc.sel.c[ch->mc.sel.chosen].predicted_error;
+    if (at_least_law && error >= 0.0 && isfinite(error)) {
+        error = fmax(error, law);
+    } else if (!(error >= 0.0) || !isfinite(error)) {
+        error = law;
+        evidence = "no exact reference for this run: the chooser's calibrated law at the setting "
+                   "run (its rows measured on this operation's own scene, where the measured "
+                   "error lies within 0.3 .. 3x of the law), a prediction, not a measurement";
+    }
+    return api_integrator_block_selection_achieved(c, ch, error, evidence, 0.0);
 }
 
 json_t *api_integrator_block_selection_achieved(struct api_call *c,

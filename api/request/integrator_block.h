@@ -9,7 +9,7 @@
  *   are refused with a 422 at <pointer>/method saying why.
  * - {"accuracy": preset} or {"target_error": x} (default accuracy "balanced"):
  *   the target (a preset's promise), given to the predictive chooser
- *   (mech/chooser.h, class first_order, span = the run in dynamical times):
+ *   (mech/ode/chooser.h, class first_order, span = the run in dynamical times):
  *   the cheapest candidate (rk8pd, rkf45; msbdf when stiff) predicted to meet
  *   it, every candidate listed with its predictions in the selection;
  *   atol = rtol x the caller's state scale (1 for dimensionless states).
@@ -18,10 +18,10 @@
 #define API_INTEGRATOR_BLOCK_H
 
 #include "run/endpoint.h"
-#include "mech/chooser.h"
-#include "mech/chooser_pilot.h"
-#include "mech/method_choice.h"
-#include "mech/ode.h"
+#include "mech/ode/chooser.h"
+#include "mech/ode/chooser_pilot.h"
+#include "mech/ode/method_choice.h"
+#include "mech/ode/ode.h"
 
 struct api_integrator_choice {
     const char *method;          /* static or borrowed from the block */
@@ -29,7 +29,7 @@ struct api_integrator_choice {
     const json_t *requested;     /* the block (borrowed) or NULL */
     int chosen;                  /* 1: from a preset / target error / the default */
     const char *accuracy;        /* preset name or NULL */
-    struct mech_method_choice mc; /* when chosen: core's choice (mech/method_choice.h):
+    struct mech_method_choice mc; /* when chosen: core's choice (mech/ode/method_choice.h):
                                     target, reason, the chooser's candidates, closed_form
                                     (method/opt above stay the best integrator's), the
                                     pilot, whose steps were taken off c->budget.max_steps */
@@ -42,6 +42,10 @@ struct api_integrator_system {
     double state_scale;    /* atol = rtol x state_scale for chosen settings (> 0) */
     size_t samples;        /* samples written (each costs a sub-step); 0 if unknown */
     double rhs_cost_s;     /* CPU s of one right-hand side if known, else 0 */
+    const char *rows;      /* the chooser's rows for this operation (mech_scene_profile.rows;
+                              static), NULL: the first_order class's */
+    int second_order;      /* 1: the system also has the form q'' = a(q) (separable
+                              Hamiltonians), so radau15 is a candidate */
 };
 
 /* The settings of a block that names a method: rtol and atol (for an
@@ -77,7 +81,7 @@ struct api_integrator_hooks {
                                         per sample) and CPU s of one (0: the default) */
     double closed_form_cpu_per_eval;
     const struct mech_pilot_system *pilot; /* a short pilot run of the system when the
-                              prediction is uncertain and expensive (mech/chooser_pilot.h;
+                              prediction is uncertain and expensive (mech/ode/chooser_pilot.h;
                               borrowed for the call); NULL: none. Never run for dry runs
                               ("dry_run": true in c->body). */
     double error_gain;     /* mech_scene_profile.error_gain (0: 1): light near the photon
@@ -94,6 +98,17 @@ int api_integrator_block_parse_hooks(struct api_call *c, const json_t *block, co
 /* {"requested", "method", "rtol", "atol" | "dt", ["target_error"], "reason",
  * and when chosen scene_class, span, model, candidates}. New reference. */
 json_t *api_integrator_block_selection(struct api_call *c, const struct api_integrator_choice *ch);
+
+/* The selection of a run that was integrated: with selection.achieved when
+ * the method was chosen by accuracy, its error the measured `error` (< 0:
+ * none measured) with its `evidence`, else the calibrated law's prediction at
+ * the setting run (the chooser's rows, measured on the operation's own
+ * scene), the evidence saying it is a prediction; at_least_law: `error` is
+ * a lower bound (an invariant's error, which can cancel) and the larger of it
+ * and the law is reported. New reference. */
+json_t *api_integrator_block_selection_run(struct api_call *c,
+                                           const struct api_integrator_choice *ch, double error,
+                                           const char *evidence, int at_least_law);
 
 /* The same with selection.achieved (when chosen and cpu_s >= 0): the
  * achieved relative error (< 0: unknown) and its evidence (NULL: none). */

@@ -1,6 +1,6 @@
 /* rotation_request.c — parsing a rotation given in any form into a unit
  * quaternion, and encoding it in every form (see api/request/rotation_request.h; the
- * physics and conventions are core/rotation/rotation.c, mech/rotation.h). */
+ * physics and conventions are core/rotation/rotation.c, mech/rotation/rotation.h). */
 #include "request/rotation_request.h"
 
 #include <stdio.h>

@@ -4,14 +4,14 @@
  * rotation's request schema is in their data files (api/ops/rotation/).
  *
  * The conventions (sense, sequences, composition, locks) are those of
- * core/include/mech/rotation.h; the data files' descriptions state them.
+ * core/include/mech/rotation/rotation.h; the data files' descriptions state them.
  * Not thread-shared state: everything lives in the caller's structs.
  */
 #ifndef API_ROTATION_REQUEST_H
 #define API_ROTATION_REQUEST_H
 
 #include "run/endpoint.h"
-#include "mech/rotation.h"
+#include "mech/rotation/rotation.h"
 
 struct api_rotation {
     double q[4];                    /* canonical unit quaternion of the turn */

@@ -9,7 +9,7 @@
 
 #include "request/integrator_block.h"
 #include "request/trajectory_relativity.h"
-#include "mech/reference.h"
+#include "mech/frames/reference.h"
 
 static int axis_of(const char *s) { return s[0] - 'x'; }
 

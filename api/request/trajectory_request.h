@@ -9,9 +9,9 @@
 
 #include "request/earth_rotation.h"
 #include "run/endpoint.h"
-#include "mech/closed_form.h"
-#include "mech/trajectory.h"
-#include "mech/trajectory_plan.h"
+#include "mech/frames/closed_form.h"
+#include "mech/frames/trajectory.h"
+#include "mech/frames/trajectory_plan.h"
 
 /* A parsed trajectory request. p.forces points into forces: after copying
  * the struct, call api_traj_request_fix(). */
@@ -24,7 +24,7 @@ struct api_traj_request {
     const char *accuracy;    /* preset name, or NULL */
     struct mech_trajectory_choice choice; /* when chosen */
     /* chosen, the block does not say "closed_form": false, and the scene has a
-     * closed form (mech/closed_form.h): answer from it, integrate nothing */
+     * closed form (mech/frames/closed_form.h): answer from it, integrate nothing */
     int closed_form;
     struct mech_closed_form_evidence evidence; /* filled by the closed-form run */
     int dry_run;             /* 1: "dry_run": true (select, predict, integrate nothing) */

@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "json/json_read.h"
-#include "mech/boost.h"
+#include "mech/relativity/boost.h"
 #include "json/real_format.h"
 
 /* The schema's bounds (api/ops/relativity/boost.json). */

@@ -7,7 +7,7 @@
 #include <stddef.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 /* Answer the boost request body text (len bytes, need not be NUL-terminated)
  * directly when it has the plain shape: a JSON object whose members are

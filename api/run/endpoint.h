@@ -18,9 +18,9 @@
 #include <jansson.h>
 
 #include "api.h"
-#include "mech/budget.h"
-#include "mech/status.h"
-#include "mech/vec.h"
+#include "mech/base/budget.h"
+#include "mech/base/status.h"
+#include "mech/base/vec.h"
 
 /* The envelope: request keys every operation takes, whatever its own schema
  * (docs/design.md, "Envelope"). The route table adds them to the root of every POST route's

@@ -1,6 +1,6 @@
 /* budget.c — monotonic/CPU clocks and the budget check used by every loop
  * whose length a client controls. */
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 
 #include <math.h>
 #include <time.h>

@@ -1,10 +1,10 @@
-/* named_bodies.c — the versioned sets of named bodies (mech/named_bodies.h). */
-#include "mech/named_bodies.h"
+/* named_bodies.c — the versioned sets of named bodies (mech/base/named_bodies.h). */
+#include "mech/base/named_bodies.h"
 
 #include <stddef.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 /* The legacy Moon was given by its mass; its GM is G times it. */
 #define LEGACY_MOON_MASS MECH_LEGACY_MOON_MASS

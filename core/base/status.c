@@ -1,5 +1,5 @@
 /* status.c — names of mech_status codes and the first-error-wins recorder. */
-#include "mech/status.h"
+#include "mech/base/status.h"
 
 #include <math.h>
 #include <stdarg.h>

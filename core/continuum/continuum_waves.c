@@ -1,7 +1,7 @@
 /* continuum_waves.c — string and rod waves and the beam's bending modes
- * (see mech/continuum_waves.h). */
-#include "mech/continuum_waves.h"
-#include "mech/constants.h"
+ * (see mech/continuum/continuum_waves.h). */
+#include "mech/continuum/continuum_waves.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 /* torsion.c — torsion constants and torsional wave speeds of rods (see
- * mech/torsion.h for the formulas and sources). */
-#include "mech/constants.h"
-#include "mech/torsion.h"
+ * mech/continuum/torsion.h for the formulas and sources). */
+#include "mech/base/constants.h"
+#include "mech/continuum/torsion.h"
 
 #include <math.h>
 

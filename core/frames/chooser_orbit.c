@@ -1,9 +1,9 @@
 /* chooser_orbit.c — the dominant central-body orbit of a trajectory scene as
- * the chooser needs it (see mech/chooser_orbit.h): period, eccentricity,
+ * the chooser needs it (see mech/frames/chooser_orbit.h): period, eccentricity,
  * Wisdom-Holman's relative perturbation, and the run's length in the cost
  * law's units. */
-#include "mech/chooser_orbit.h"
-#include "mech/constants.h"
+#include "mech/frames/chooser_orbit.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

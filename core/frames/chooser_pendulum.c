@@ -1,8 +1,8 @@
 /* chooser_pendulum.c — the predictive chooser for the Foucault pendulum (see
- * mech/chooser_pendulum.h): rattle and rattle_yoshida4 at the fewest steps
+ * mech/frames/chooser_pendulum.h): rattle and rattle_yoshida4 at the fewest steps
  * per swing predicted to meet the target, cost counted exactly. */
-#include "mech/chooser_pendulum.h"
-#include "mech/constants.h"
+#include "mech/frames/chooser_pendulum.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,17 +1,17 @@
 /* closed_form.c — trajectories evaluated from their exact solution
- * (mech/closed_form.h): the samples, the stop event located on the closed
+ * (mech/frames/closed_form.h): the samples, the stop event located on the closed
  * form to round-off, the invariants and the model terms at the samples, and
  * the evidence (invariant drift, Kepler residual). Nothing is integrated.
  */
-#include "mech/closed_form.h"
-#include "mech/constants.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
 
-#include "mech/reference.h"
+#include "mech/frames/reference.h"
 
 struct cf_ctx {
     const struct mech_trajectory_problem *p;
@@ -47,7 +47,7 @@ static enum mech_status cf_state(struct cf_ctx *c, double t, struct mech_vec3 *r
         return MECH_OK;
     }
     if (c->relativistic) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&c->ref.charged, t, &cs, c->err);
         if (st != MECH_OK) return st;
         *r = cs.r;
@@ -447,7 +447,8 @@ int mech_trajectory_has_closed_form(const struct mech_trajectory_problem *p)
     struct mech_trajectory_reference ref;
     /* the relativistic closed form has no stop-event scan (no monotonic grid) */
     return p && !(p->relativity && p->has_stop) &&
-           mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated;
+           mech_trajectory_reference_find(p, &ref) == MECH_REFERENCE_EXACT && !ref.rotated &&
+           !ref.evidence_only;
 }
 
 enum mech_status mech_trajectory_closed_form(const struct mech_trajectory_problem *p,
@@ -473,7 +474,8 @@ enum mech_status mech_trajectory_closed_form_ex(const struct mech_trajectory_pro
     memset(&c, 0, sizeof c);
     c.p = p;
     c.err = err;
-    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated)
+    if (mech_trajectory_reference_find(p, &c.ref) != MECH_REFERENCE_EXACT || c.ref.rotated ||
+        c.ref.evidence_only)
         return mech_error_set(err, MECH_EINVAL, NULL,
                               "the scene has no closed form (only Kepler, the harmonic "
                               "oscillator, uniform gravity with or without linear drag and the "

@@ -1,7 +1,7 @@
 /* earth.c — effective gravity on a rotating spherical Earth (notes §1.3) and
- * WGS 84 normal gravity (NIMA TR8350.2); formulas in mech/earth.h. */
-#include "mech/earth.h"
-#include "mech/constants.h"
+ * WGS 84 normal gravity (NIMA TR8350.2); formulas in mech/frames/earth.h. */
+#include "mech/frames/earth.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

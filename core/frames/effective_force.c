@@ -1,9 +1,9 @@
 /* effective_force.c — the four fictitious forces of an accelerating, rotating
  * frame and the effective force (notes §1.2; derivation and signs in
- * mech/effective_force.h). */
-#include "mech/effective_force.h"
+ * mech/frames/effective_force.h). */
+#include "mech/frames/effective_force.h"
 
-#include "mech/compensated.h"
+#include "mech/base/compensated.h"
 
 /* Compensated sum of up to five vectors, component by component. */
 static struct mech_vec3 sum_vectors(const struct mech_vec3 *v, int n)

@@ -1,5 +1,5 @@
 /* foucault_first_order.c — the Foucault pendulum's closed forms
- * (mech/foucault_first_order.h).
+ * (mech/frames/foucault_first_order.h).
  *
  * First order (notes §1.4): the Coriolis force's horizontal part, -2 W sin(lat)
  * z x r', turns the swing plane at -W sin(lat) (clockwise in the north).
@@ -16,8 +16,8 @@
  * The expressions are the ones the API has always answered, kept operation
  * for operation so its answers stay byte-identical.
  */
-#include "mech/foucault_first_order.h"
-#include "mech/constants.h"
+#include "mech/frames/foucault_first_order.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

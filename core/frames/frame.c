@@ -1,7 +1,7 @@
 /* frame.c — the angular velocity of a reference frame in its own axes
- * (mech/frame.h; notes §1.2, §1.3). */
-#include "mech/frame.h"
-#include "mech/constants.h"
+ * (mech/frames/frame.h; notes §1.2, §1.3). */
+#include "mech/frames/frame.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

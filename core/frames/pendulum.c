@@ -1,4 +1,4 @@
-/* pendulum.c — the Foucault pendulum (mech/pendulum.h): the full nonlinear
+/* pendulum.c — the Foucault pendulum (mech/frames/pendulum.h): the full nonlinear
  * spherical pendulum in the rotating Earth frame, integrated by RATTLE with
  * the Coriolis term in Cayley (implicit-midpoint) form, optionally composed
  * to order 4, and the swing-plane precession measured at the turning points.
@@ -44,8 +44,8 @@
  * of H at the turning points (fitted like psi) gives the Airy rate of the
  * ellipse actually swung (airy_rate_mean).
  */
-#include "mech/pendulum.h"
-#include "mech/constants.h"
+#include "mech/frames/pendulum.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

@@ -1,10 +1,10 @@
 /* reference.c — exact and first-order reference solutions for trajectories
- * (mech/reference.h): Kepler (by core/ode/kepler.c's universal variables),
+ * (mech/frames/reference.h): Kepler (by core/ode/kepler.c's universal variables),
  * the harmonic oscillator, uniform gravity with linear drag, the first-order
  * Coriolis solution, and the recognition of which one a scene has.
  */
-#include "mech/reference.h"
-#include "mech/constants.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <math.h>
@@ -212,7 +212,7 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
         (p->fictitious & (MECH_FICTITIOUS_CORIOLIS | MECH_FICTITIOUS_CENTRIFUGAL |
                           MECH_FICTITIOUS_EULER)))
         return ref->kind;
-    size_t n_central = 0, n_spring = 0, n_uniform = 0, n_drag = 0;
+    size_t n_central = 0, n_spring = 0, n_uniform = 0, n_drag = 0, n_lorentz = 0;
     const struct mech_force *central = NULL, *spring = NULL;
     struct mech_vec3 g = mech_vec3_make(0, 0, 0);
     double b = 0.0;
@@ -227,7 +227,7 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
             g = mech_vec3_add(g, f->u.uniform_gravity.g);
             break;
         case MECH_FORCE_LINEAR_DRAG: n_drag++; b += f->u.linear_drag.b; break;
-        case MECH_FORCE_LORENTZ:
+        case MECH_FORCE_LORENTZ: n_lorentz++; break;
         case MECH_FORCE_THIRD_BODY_TIDE:
             return ref->kind; /* no reference with these */
         }
@@ -238,6 +238,29 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
         n_uniform++;
     }
     ref->g = g;
+    if (n_lorentz) {
+        /* Newton's motion in uniform E and B (and uniform gravity) in an
+         * inertial frame: drift, gyration and the parallel fall
+         * (lorentz_propagate); evidence for the integrated run only, never a
+         * closed-form answer (ref->evidence_only) */
+        if (coriolis || centrifugal || n_central + n_spring + n_drag != 0 || p->charge == 0.0)
+            return ref->kind;
+        const double qm = p->charge / p->mass;
+        struct mech_vec3 a0 = g, om = mech_vec3_make(0, 0, 0);
+        for (size_t i = 0; i < p->n_forces; i++) {
+            const struct mech_force *f = &p->forces[i];
+            if (f->type != MECH_FORCE_LORENTZ) continue;
+            a0 = mech_vec3_add(a0, mech_vec3_scale(f->u.lorentz.E, qm));
+            om = mech_vec3_add(om, mech_vec3_scale(f->u.lorentz.B, qm));
+        }
+        if (!mech_vec3_isfinite(a0) || !mech_vec3_isfinite(om)) return ref->kind;
+        ref->kind = MECH_REFERENCE_EXACT;
+        ref->name = "uniform_fields_newtonian";
+        ref->evidence_only = 1;
+        ref->g = a0;
+        ref->w = om;
+        return ref->kind;
+    }
     if (!coriolis && !centrifugal) {
         if (n_central == 1 && n_spring + n_uniform + n_drag == 0) {
             ref->kind = MECH_REFERENCE_EXACT;
@@ -291,6 +314,45 @@ enum mech_reference_kind mech_trajectory_reference_find(const struct mech_trajec
     return ref->kind;
 }
 
+/* Newton's motion under v' = a0 + v x w (a0 = q E / m + g, w = q B / m,
+ * both uniform and constant): the parallel part falls uniformly, the
+ * perpendicular part drifts at v_d = a0 x w / |w|^2 and turns about w at
+ * the rate -|w|:
+ *   u(t) = u0 cos(W t) - (b x u0) sin(W t),  u0 = v0_perp - v_d,
+ *   r(t) = r0 + (v0_par + v_d) t + a0_par t^2 / 2 + u0 sin(W t) / W
+ *          - (b x u0) 2 sin^2(W t / 2) / W
+ * (1 - cos written as 2 sin^2 so that small W t keeps its digits; the angle
+ * reduced mod 2 pi in long double). w = 0: the uniform fall. */
+static void lorentz_propagate(const struct mech_trajectory_reference *ref, double t,
+                              struct mech_vec3 *r, struct mech_vec3 *v)
+{
+    const struct mech_vec3 a0 = ref->g, w = ref->w;
+    const double W = mech_vec3_norm(w);
+    if (!(W > 0.0)) {
+        *v = mech_vec3_add(ref->v0, mech_vec3_scale(a0, t));
+        *r = mech_vec3_add(ref->r0, mech_vec3_add(mech_vec3_scale(ref->v0, t),
+                                                  mech_vec3_scale(a0, 0.5 * t * t)));
+        return;
+    }
+    const struct mech_vec3 b = mech_vec3_scale(w, 1.0 / W);
+    const struct mech_vec3 vpar = mech_vec3_scale(b, mech_vec3_dot(ref->v0, b));
+    const struct mech_vec3 apar = mech_vec3_scale(b, mech_vec3_dot(a0, b));
+    const struct mech_vec3 vd = mech_vec3_scale(mech_vec3_cross(a0, w), 1.0 / (W * W));
+    const struct mech_vec3 u0 = mech_vec3_sub(mech_vec3_sub(ref->v0, vpar), vd);
+    const struct mech_vec3 bu = mech_vec3_cross(b, u0);
+    const long double ang = fmodl((long double)W * (long double)t,
+                                  6.283185307179586476925286766559L);
+    const double c = (double)cosl(ang), sn = (double)sinl(ang), sh = (double)sinl(0.5L * ang);
+    *v = mech_vec3_add(mech_vec3_add(vpar, mech_vec3_scale(apar, t)),
+                       mech_vec3_add(vd, mech_vec3_sub(mech_vec3_scale(u0, c),
+                                                       mech_vec3_scale(bu, sn))));
+    struct mech_vec3 d = mech_vec3_add(mech_vec3_scale(mech_vec3_add(vpar, vd), t),
+                                       mech_vec3_scale(apar, 0.5 * t * t));
+    d = mech_vec3_add(d, mech_vec3_sub(mech_vec3_scale(u0, sn / W),
+                                       mech_vec3_scale(bu, 2.0 * sh * sh / W)));
+    *r = mech_vec3_add(ref->r0, d);
+}
+
 enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_reference *ref,
                                                 double t, struct mech_vec3 *r,
                                                 struct mech_vec3 *v, double *second_order,
@@ -318,8 +380,10 @@ enum mech_status mech_trajectory_reference_eval(const struct mech_trajectory_ref
         const double c = (double)cosl(ang), sn = -(double)sinl(ang);
         *r = rodrigues(k, c, sn, ri);
         *v = mech_vec3_sub(rodrigues(k, c, sn, vi), mech_vec3_cross(ref->spin, *r));
+    } else if (!strcmp(ref->name, "uniform_fields_newtonian")) {
+        lorentz_propagate(ref, t, r, v);
     } else if (!strcmp(ref->name, "relativistic_uniform_fields")) {
-        struct mech_charged_state cs;
+        struct mech_charged_motion_state cs;
         enum mech_status st = mech_charged_motion_at_lab_time(&ref->charged, t, &cs, err);
         if (st != MECH_OK) return st;
         *r = cs.r;

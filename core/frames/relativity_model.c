@@ -1,10 +1,10 @@
 /* relativity_model.c — which relativistic corrections a trajectory needs at
- * the accuracy asked for ("relativity": "auto", mech/trajectory.h,
+ * the accuracy asked for ("relativity": "auto", mech/frames/trajectory.h,
  * mech_trajectory_relativity_select): each correction's acceleration,
  * measured along a run of the scene, goes through the auto-model's rule
  * (term_estimate.c); a correction that is needed and cannot be modelled is
  * an error naming it, never a silently Newtonian answer. */
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for the reason text */

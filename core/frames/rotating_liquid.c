@@ -1,6 +1,6 @@
 /* rotating_liquid.c — free surface of a liquid turning with its container
- * (notes §1.5 homework 2); derivation in mech/rotating_liquid.h. */
-#include "mech/rotating_liquid.h"
+ * (notes §1.5 homework 2); derivation in mech/frames/rotating_liquid.h. */
+#include "mech/frames/rotating_liquid.h"
 
 #include <math.h>
 

@@ -1,12 +1,12 @@
-/* scenes.c — the notes' chapter-1 scenes (mech/scenes.h): ballistic motion
+/* scenes.c — the notes' chapter-1 scenes (mech/frames/scenes.h): ballistic motion
  * in the local Earth frame against the first-order Coriolis formulas with
  * their second-order terms, and the rotating-table puck experiments (§1.1)
  * seen from both frames.
  */
-#include "mech/scenes.h"
-#include "mech/trajectory_plan.h"
-#include "mech/constants.h"
-#include "mech/reference.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/trajectory_plan.h"
+#include "mech/base/constants.h"
+#include "mech/frames/reference.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -112,7 +112,7 @@ static enum mech_status check_ballistic(const struct mech_scene_ballistic *s,
     return MECH_OK;
 }
 
-/* A scene's run planned by core's trajectory pipeline (mech/trajectory_plan.h):
+/* A scene's run planned by core's trajectory pipeline (mech/frames/trajectory_plan.h):
  * with auto_model, "auto" picks the fictitious terms (all of them for a dry
  * run), else p->fictitious is kept; the chooser picks the method for target;
  * the first pass's steps come off *budget. */

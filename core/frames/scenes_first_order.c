@@ -1,5 +1,5 @@
 /* scenes_first_order.c — the notes' first-order closed forms for the
- * chapter-1 ballistic scenes (mech/scenes_first_order.h).
+ * chapter-1 ballistic scenes (mech/frames/scenes_first_order.h).
  *
  * Derivation (notes §1.3-1.5): r'' = g - 2 w x r' to first order in W, with
  * w = W (0, cos lat, sin lat) and g = (0, 0, -g), gives r = r_0 + r_1,
@@ -18,8 +18,8 @@
  * The expressions below are the ones the API has always answered, kept
  * operation for operation so its answers stay byte-identical.
  */
-#include "mech/scenes_first_order.h"
-#include "mech/constants.h"
+#include "mech/frames/scenes_first_order.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

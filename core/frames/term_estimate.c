@@ -1,8 +1,8 @@
-/* term_estimate.c — the rule behind "fictitious": "auto" (mech/trajectory.h,
+/* term_estimate.c — the rule behind "fictitious": "auto" (mech/frames/trajectory.h,
  * mech_term_effect_estimate): the effect on positions and velocities of
  * leaving out a term whose acceleration is bounded, against the accuracy
  * asked for. Reusable by any scene that knows such a bound. */
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for the reason text */

@@ -1,11 +1,11 @@
 /* tides.c — tidal acceleration exact and to first order, and the equilibrium
  * tide (notes §1.4); the rearrangement that avoids cancellation is derived in
- * mech/tides.h. */
-#include "mech/tides.h"
+ * mech/frames/tides.h. */
+#include "mech/frames/tides.h"
 
 #include <math.h>
 
-#include "mech/earth.h"
+#include "mech/frames/earth.h"
 
 /* Largest number of binomial-series terms; |q| < 1/4 needs about 30. */
 #define TIDE_SERIES_MAX_TERMS 100
@@ -68,7 +68,7 @@ enum mech_status mech_tide_acceleration(double gm, double distance, double radiu
     f.along = 2 * scale * c;
     f.perpendicular = -scale * s;
     if (fabs(q) < 0.5) {
-        /* far: exact = first + rest, the rest computed directly (mech/tides.h) */
+        /* far: exact = first + rest, the rest computed directly (mech/frames/tides.h) */
         double E = expm1(-1.5 * log1p(q)); /* (1 + q)^(-3/2) - 1 */
         double R = fabs(q) < 0.25 ? binomial_tail(q) : E + 1.5 * q;
         double D = R - 1.5 * u * u; /* = E - 3 u c, exactly in exact arithmetic */

@@ -1,4 +1,4 @@
-/* trajectory.c — the trajectory driver: a scene (mech/trajectory.h) integrated
+/* trajectory.c — the trajectory driver: a scene (mech/frames/trajectory.h) integrated
  * with mech_ode_solve through its equations of motion
  * (trajectory_equations.c, their fast path trajectory_fast.c), observed at
  * every sample and step end (trajectory_observe.c); the result's terms,
@@ -12,7 +12,7 @@
  * (the auto-model).
  */
 #include "trajectory_context.h"
-#include "mech/reference.h"
+#include "mech/frames/reference.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for error messages */

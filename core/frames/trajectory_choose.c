@@ -1,12 +1,12 @@
 /* trajectory_choose.c — choosing by accuracy for a trajectory
- * (mech/trajectory.h): the accuracy presets and the scene's profile handed
- * to the predictive chooser (mech/chooser.h), which picks the method and its
+ * (mech/frames/trajectory.h): the accuracy presets and the scene's profile handed
+ * to the predictive chooser (mech/ode/chooser.h), which picks the method and its
  * setting ({"accuracy": ...} / {"target_error": ...}). */
-#include "mech/trajectory.h"
-#include "mech/chooser.h"
-#include "mech/chooser_orbit.h"
-#include "mech/closed_form.h"
-#include "mech/reference.h"
+#include "mech/frames/trajectory.h"
+#include "mech/ode/chooser.h"
+#include "mech/frames/chooser_orbit.h"
+#include "mech/frames/closed_form.h"
+#include "mech/frames/reference.h"
 #include "trajectory_scene.h"
 
 #include <math.h>
@@ -39,7 +39,7 @@ static double kepler_pericentre_time(const struct mech_trajectory_problem *p)
 
 /* The chooser's profile of a trajectory scene: its class, its dynamical time
  * T = min(t_end, sqrt(|r0| / |a0|), the pericentre time of a central body's
- * orbit), span = t_end / T, and the scale S of positions and velocities
+ * orbit, the gyration time m / |q B|), span = t_end / T, and the scale S of positions and velocities
  * (atol = rtol x S). */
 static void traj_profile(const struct mech_trajectory_problem *p,
                          struct mech_scene_profile *s, double *L_out, double *V_out)
@@ -58,6 +58,15 @@ static void traj_profile(const struct mech_trajectory_problem *p,
      * orbit 80x shorter in dynamical times than the same orbit from
      * pericentre, and under-predict its round-off floor ~700x) */
     T = fmin(T, kepler_pericentre_time(p));
+    /* a magnetic field: the gyration time m / |q B| (radians, as sqrt(r0 / a0)
+     * counts them on the calibration's charge in B), wherever the run starts
+     * (from the origin |r0| = 0 said nothing: an E x B drift over 9.5
+     * gyrations was one dynamical time and missed precise 150x) */
+    for (size_t i = 0; i < p->n_forces; i++)
+        if (p->forces[i].type == MECH_FORCE_LORENTZ && p->mass > 0.0) {
+            const double w = fabs(p->charge) * mech_vec3_norm(p->forces[i].u.lorentz.B) / p->mass;
+            if (w > 0.0 && isfinite(w)) T = fmin(T, 1.0 / w);
+        }
     if (!(T > 0.0 && isfinite(T))) T = p->t_end > 0.0 ? p->t_end : 1.0;
     double L = fmax(rn, fmax(vn * T, 0.5 * an * T * T));
     double V = fmax(vn, an * T);

@@ -16,7 +16,7 @@ static int angular_momentum_center(const struct traj_ctx *c, struct mech_vec3 *c
     return mech_trajectory_angular_center(c->p, rot, tr, center);
 }
 
-/* The Kepler split of a scene (wisdom_holman, mech/ode.h): the index of its
+/* The Kepler split of a scene (wisdom_holman, mech/ode/ode.h): the index of its
  * one central_gravity force when the frame is inertial and exactly one
  * central_gravity acts (the other forces are the perturbation), else -1 with
  * *why (may be NULL) saying what is missing. */

@@ -9,7 +9,7 @@
 #ifndef MECH_FRAMES_TRAJECTORY_CONTEXT_H
 #define MECH_FRAMES_TRAJECTORY_CONTEXT_H
 
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -36,7 +36,7 @@ struct traj_ctx {
      * in an inertial frame, -1 if the scene has no split; kepler_exact when
      * the method moves that force's part exactly (no resolution check) */
     int kepler_index, kepler_exact;
-    /* relativistic corrections (mech/trajectory_problem.h): special = the
+    /* relativistic corrections (mech/frames/trajectory_problem.h): special = the
      * state is (r, u = gamma v); pn1 = the 1PN term of force pn1_index;
      * pn1_index is the one central_gravity of an inertial scene (-1: none),
      * whose 1PN size is measured whether modelled or not */
@@ -160,7 +160,7 @@ static inline struct mech_vec3 centrifugal_accel(struct mech_vec3 w, struct mech
 }
 
 /* The Schwarzschild 1PN correction of the test particle's acceleration about
- * force pn1_index (harmonic coordinates, mech/trajectory_problem.h):
+ * force pn1_index (harmonic coordinates, mech/frames/trajectory_problem.h):
  *   a = (gm / (c^2 d^2)) [(4 gm/d - v^2) n + 4 (n.v) v]. d > 0 (the central
  * force was evaluated first and refuses d = 0). */
 static inline struct mech_vec3 pn1_accel(const struct traj_ctx *c, struct mech_vec3 r,
@@ -212,7 +212,7 @@ void mech_traj_fast_install(const struct traj_ctx *c, struct mech_ode_system *sy
 
 /* ---- the equations of motion (trajectory_equations.c) ------------------- */
 
-/* The ODE system's callbacks (mech/ode.h); params is the struct traj_ctx.
+/* The ODE system's callbacks (mech/ode/ode.h); params is the struct traj_ctx.
  * accel/rhs: the generic 3-D form, q'' = a(t, q, v); rel_rhs: the
  * special-relativistic first-order form in (r, u = gamma v); lorentz: the
  * split a = e + v x w for Boris; plane_*: the planar form in (u1, u2). */
@@ -241,7 +241,7 @@ double mech_traj_plane_event(double t, const double *u, void *params);
 
 /* ---- the context (trajectory_context.c) --------------------------------- */
 
-/* The Kepler split of a scene (wisdom_holman, mech/ode.h): the index of its
+/* The Kepler split of a scene (wisdom_holman, mech/ode/ode.h): the index of its
  * one central_gravity force when the frame is inertial and exactly one
  * central_gravity acts, else -1 with *why (may be NULL) saying what is
  * missing. */

@@ -69,7 +69,7 @@ enum mech_status mech_traj_rel_rhs(double t, const double *y, double *dydt, void
     return MECH_OK;
 }
 
-/* Lorentz-type split for Boris (mech/ode.h): a = e(t, q) + v x w(t, q) with
+/* Lorentz-type split for Boris (mech/ode/ode.h): a = e(t, q) + v x w(t, q) with
  * e = position-dependent forces / m (with q E / m) + centrifugal + Euler +
  * translational, w = q B / m summed over the lorentz forces + 2 W(t) when
  * Coriolis is modelled (-2 W x v = v x 2W; q v x B / m = v x (q B / m)).

@@ -1,9 +1,9 @@
 /* trajectory_model.c — the auto-model, "fictitious": "auto"
- * (mech_trajectory_model_select, mech/trajectory.h): which fictitious terms
+ * (mech_trajectory_model_select, mech/frames/trajectory.h): which fictitious terms
  * a scene needs at the accuracy asked for, judged from a cheap first pass
  * with every applicable term: model only what the scene requires, and say
  * what was left out with its size (docs/design.md). */
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 
 #include <stdio.h> /* snprintf only, for the reason text */
 #include <string.h>

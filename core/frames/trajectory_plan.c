@@ -1,10 +1,10 @@
 /* trajectory_plan.c — a trajectory's model → choose pipeline
- * (mech/trajectory_plan.h). */
-#include "mech/trajectory_plan.h"
+ * (mech/frames/trajectory_plan.h). */
+#include "mech/frames/trajectory_plan.h"
 
 #include <string.h>
 
-#include "mech/closed_form.h"
+#include "mech/frames/closed_form.h"
 
 enum mech_status mech_trajectory_plan(struct mech_trajectory_problem *p,
                                       const struct mech_trajectory_plan_request *q,

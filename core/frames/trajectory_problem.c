@@ -1,8 +1,8 @@
-/* trajectory_problem.c — a trajectory scene as stated (mech/trajectory_problem.h):
+/* trajectory_problem.c — a trajectory scene as stated (mech/frames/trajectory_problem.h):
  * its validation with the API path of every field, the centre about which it
  * conserves angular momentum, and the plane a planar scene stays in. */
-#include "mech/trajectory_problem.h"
-#include "mech/constants.h"
+#include "mech/frames/trajectory_problem.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf only, for error parameter paths */

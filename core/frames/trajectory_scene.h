@@ -4,8 +4,8 @@
 #ifndef MECH_FRAMES_TRAJECTORY_SCENE_H
 #define MECH_FRAMES_TRAJECTORY_SCENE_H
 
-#include "mech/status.h"
-#include "mech/trajectory_problem.h"
+#include "mech/base/status.h"
+#include "mech/frames/trajectory_problem.h"
 
 /* The particle's acceleration a[3] (m/s^2, frame axes) at t = 0, from the
  * position and velocity of p with the fictitious terms p models, exactly as

@@ -1,4 +1,4 @@
-/* geodesic.c — equatorial Schwarzschild geodesics (mech/geodesic.h): the
+/* geodesic.c — equatorial Schwarzschild geodesics (mech/gr/geodesic.h): the
  * initial-condition builders, the classification of timelike motion, the
  * exact periapsis advance and light deflection (elliptic integrals and
  * independent quadratures) and the integration of the second-order radial
@@ -14,9 +14,9 @@
  * classification, exact references, integration) are one operation's steps
  * and share its file-local helpers (the orbit constants, the effective
  * potential's roots); the exact references are the integration's own check. */
-#include "mech/geodesic.h"
-#include "mech/constants.h"
-#include "mech/schwarzschild.h"
+#include "mech/gr/geodesic.h"
+#include "mech/base/constants.h"
+#include "mech/gr/schwarzschild.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>

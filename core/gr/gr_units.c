@@ -1,9 +1,9 @@
 /* gr_units.c — the GR operations' unit set-up: GM from the request's mass,
  * then GM/c^2 (a length) and GM/c^3 (a time), checked usable
- * (mech/gr_units.h). */
+ * (mech/gr/gr_units.h). */
 #include <math.h>
 
-#include "mech/gr_units.h"
+#include "mech/gr/gr_units.h"
 
 enum mech_status mech_gr_units_init(int geometric, enum mech_gr_mass mass, double value,
                                     struct mech_gr_units *out, struct mech_error *err)

@@ -1,7 +1,7 @@
 /* radial_infall.c — proper times of a radial fall from rest in the
- * Schwarzschild geometry (see mech/radial_infall.h). */
-#include "mech/radial_infall.h"
-#include "mech/constants.h"
+ * Schwarzschild geometry (see mech/gr/radial_infall.h). */
+#include "mech/gr/radial_infall.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

@@ -1,9 +1,9 @@
 /* schwarzschild.c — clocks, circular orbits and effective potentials of the
  * Schwarzschild metric ds^2 = -(1 - 2M/r) dt^2 + dr^2/(1 - 2M/r) + r^2 dOmega^2
  * (Hartle eq. 9.1; Carroll eq. 5.38), in geometric units with M = 1. See
- * mech/schwarzschild.h for the contracts. */
-#include "mech/schwarzschild.h"
-#include "mech/constants.h"
+ * mech/gr/schwarzschild.h for the contracts. */
+#include "mech/gr/schwarzschild.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 

@@ -1,13 +1,13 @@
 /* apsides.c — pericentres of a central orbit as upward p_r = 0 crossings
  * (mech_poincare_run on the section of coordinate index 2, the momentum p_r)
- * and the measured apsidal angle beside pi/sqrt(n + 2) (mech/apsides.h). */
+ * and the measured apsidal angle beside pi/sqrt(n + 2) (mech/hamiltonian/apsides.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/apsides.h"
-#include "mech/constants.h"
-#include "mech/poincare.h"
+#include "mech/hamiltonian/apsides.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/poincare.h"
 
 enum mech_status mech_apsides_find(const struct mech_ham_system *s, const double *y0, double t_end,
                                    const struct mech_integrator *method,

@@ -1,8 +1,8 @@
 /* circular_orbit.c — circular orbits of a given angular momentum in a sum of
- * power-law central potentials (see mech/circular_orbit.h). The equation
+ * power-law central potentials (see mech/hamiltonian/circular_orbit.h). The equation
  * m r³ V'(r) = L² is solved in x = ln r on the scaled exponential sum
  * Σ s_j exp(l_j + a_j x − max), so no term overflows whatever r. */
-#include "mech/circular_orbit.h"
+#include "mech/hamiltonian/circular_orbit.h"
 
 #include <float.h>
 #include <math.h>

@@ -2,7 +2,7 @@
  * symmetric eigenproblem K v = w^2 M v via GSL's Cholesky reduction), the
  * deterministic basis of degenerate clusters, the motion as a sum of modes,
  * and the M and K of the standard set-ups. */
-#include "mech/coupled_oscillations.h"
+#include "mech/hamiltonian/coupled_oscillations.h"
 
 #include <float.h>
 #include <math.h>

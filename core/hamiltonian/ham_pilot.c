@@ -1,5 +1,5 @@
 /* ham_pilot.c — the chooser's pilot hook for Hamiltonian flows
- * (mech_ham_pilot_run, declared in mech/hamiltonian.h; the pilot itself is
+ * (mech_ham_pilot_run, declared in mech/hamiltonian/hamiltonian.h; the pilot itself is
  * core/ode/chooser_pilot.c): the flow over a fraction of its run, two
  * samples, the end state for the pilot's error estimate. */
 #include <gsl/gsl_errno.h>
@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/hamiltonian.h"
+#include "mech/hamiltonian/hamiltonian.h"
 
 double mech_ham_error_gain(const struct mech_ham_system *s, const double *y0)
 {

@@ -1,4 +1,4 @@
-/* hamiltonian.c — the catalog of Hamiltonian systems of mech/hamiltonian.h:
+/* hamiltonian.c — the catalog of Hamiltonian systems of mech/hamiltonian/hamiltonian.h:
  * H(q, p), its first and second derivatives (Hamilton's equations and their
  * variational equations), cyclic coordinates and conserved momenta, the
  * ensemble ODE (many trajectories with tangent vectors, in first- or
@@ -17,7 +17,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/hamiltonian.h"
+#include "mech/hamiltonian/hamiltonian.h"
 
 /* ---- the catalog ------------------------------------------------------------ */
 

@@ -2,16 +2,16 @@
  * under a Hamiltonian flow, by Gauss–Kronrod quadrature on the image curve
  * with tangents from the variational equations, adaptive in the curve
  * parameter; the tangent map's determinant along a reference orbit. See
- * mech/liouville.h for what is measured and why.
+ * mech/hamiltonian/liouville.h for what is measured and why.
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/compensated.h"
-#include "mech/constants.h"
-#include "mech/liouville.h"
+#include "mech/base/compensated.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/liouville.h"
 
 /* Gauss–Kronrod 7/15 nodes and weights on [-1, 1]: R. Piessens, E. de
  * Doncker-Kapenga, C. Überhuber, D. Kahaner, QUADPACK (Springer 1983), routine

@@ -1,7 +1,7 @@
 /* phase_area.c — phase-space area and period of an energy contour (see
- * mech/phase_area.h). */
-#include "mech/phase_area.h"
-#include "mech/constants.h"
+ * mech/hamiltonian/phase_area.h). */
+#include "mech/hamiltonian/phase_area.h"
+#include "mech/base/constants.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_ellint.h>

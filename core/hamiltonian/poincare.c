@@ -1,5 +1,5 @@
 /* poincare.c — Poincaré sections by repeated stop events of the ODE driver
- * (see mech/poincare.h): integrate to the next crossing, record it, restart
+ * (see mech/hamiltonian/poincare.h): integrate to the next crossing, record it, restart
  * from it with the event masked at the restart point. Fixed-step runs go in
  * segments of at most 4096 steps (and never more than the budget has left),
  * because the driver refuses up front a fixed-step run longer than its
@@ -10,7 +10,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/poincare.h"
+#include "mech/hamiltonian/poincare.h"
 
 enum { PC_FIXED_SEGMENT_STEPS = 4096 };
 

@@ -1,6 +1,6 @@
 /* rotating_hamiltonian.c — L, p, H in a rotating frame and the inertial
- * energy (see mech/rotating_hamiltonian.h). */
-#include "mech/rotating_hamiltonian.h"
+ * energy (see mech/hamiltonian/rotating_hamiltonian.h). */
+#include "mech/hamiltonian/rotating_hamiltonian.h"
 
 #include <math.h>
 

@@ -1,8 +1,8 @@
 /* small_oscillations.c — linearised motion about circular orbits, the conical
  * pendulum's steady precession and a physical pendulum's hanging equilibrium
- * (mech/small_oscillations.h). Closed forms only. */
-#include "mech/small_oscillations.h"
-#include "mech/constants.h"
+ * (mech/hamiltonian/small_oscillations.h). Closed forms only. */
+#include "mech/hamiltonian/small_oscillations.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,9 +1,9 @@
 /* state_scale.c — the smallest scale of a Hamiltonian state's components
- * (mech/ham_state_scale.h), with each degree of freedom's inertia read from
+ * (mech/hamiltonian/state_scale.h), with each degree of freedom's inertia read from
  * the tangent flow of dH/dp (mech_ham_rhs). */
 #include <math.h>
 
-#include "mech/ham_state_scale.h"
+#include "mech/hamiltonian/state_scale.h"
 
 double mech_ham_state_scale(const struct mech_ham_system *s, const double *y0, double tau)
 {

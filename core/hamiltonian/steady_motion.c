@@ -1,10 +1,10 @@
 /* steady_motion.c — the spherical pendulum's conical motion and a central
  * power law's circular orbit at a given angle or radius
- * (mech/ham_steady_motion.h). */
+ * (mech/hamiltonian/steady_motion.h). */
 #include <math.h>
 
-#include "mech/constants.h"
-#include "mech/ham_steady_motion.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/steady_motion.h"
 
 int mech_ham_conical_motion(const struct mech_ham_system *s, double theta,
                             struct mech_ham_conical *out)

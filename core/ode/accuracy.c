@@ -1,7 +1,7 @@
-/* accuracy.c — the accuracy presets (mech/accuracy.h): one table of
+/* accuracy.c — the accuracy presets (mech/ode/accuracy.h): one table of
  * targets for every operation that chooses by accuracy, and the one place a
  * request's preset name or target_error becomes the chooser's target. */
-#include "mech/accuracy.h"
+#include "mech/ode/accuracy.h"
 
 #include <stddef.h>
 #include <string.h>
@@ -9,12 +9,12 @@
 /* ---- choosing by accuracy ----------------------------------------------------
  * The presets are targets (draft 1e-3, balanced 1e-8, precise 1e-10, machine
  * 1e-11 relative); the method and its setting come from the predictive
- * chooser (mech/chooser.h, core/ode/chooser.c: a model calibrated by
+ * chooser (mech/ode/chooser.h, core/ode/chooser.c: a model calibrated by
  * bench/bench_calibrate_chooser.c), which lists every candidate with its
  * predicted error and cost and picks the cheapest predicted to meet the
  * target. The `method`/`rtol` fields of the table below are what the
- * chooser typically picks on a 10-orbit Kepler scene, kept for GET
- * /v1/integrators; the choice itself is made per scene. Each preset keeps
+ * chooser typically picks on a 10-orbit Kepler scene, kept for the API's
+ * listing of the integrators; the choice itself is made per scene. Each preset keeps
  * its promise up to the round-off floor of long runs (about Fm x span^g
  * relative over span dynamical times, measured per class and method); below
  * that the selection says so. */

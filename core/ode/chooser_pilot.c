@@ -1,9 +1,9 @@
-/* chooser_pilot.c — the chooser's pilot run (see mech/chooser_pilot.h): a
+/* chooser_pilot.c — the chooser's pilot run (see mech/ode/chooser_pilot.h): a
  * small fraction of an expensive, uncertain run integrated with each
  * plausible candidate, its evaluations extrapolated to the whole span, the
  * chosen candidate's error measured against a tighter run over the same
  * fraction, and the choice re-made on the piloted costs. */
-#include "mech/chooser_pilot.h"
+#include "mech/ode/chooser_pilot.h"
 
 #include <math.h>
 #include <stdio.h>

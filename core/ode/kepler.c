@@ -1,11 +1,11 @@
-/* kepler.c — two-body Kepler motion by universal variables (mech/kepler.h):
+/* kepler.c — two-body Kepler motion by universal variables (mech/ode/kepler.h):
  * the bracketed propagator every Kepler reference and closed form uses, and
  * the Kepler drift of the Wisdom–Holman splitting (integrators/wisdom_holman.c).
  * In core/ode because the splitting needs it; the trajectory's references
  * (core/frames/reference.c) build on it in turn.
  */
-#include "mech/kepler.h"
-#include "mech/constants.h"
+#include "mech/ode/kepler.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,12 +1,12 @@
 /* method_choice.c — the method-choice policy for first-order systems
- * (mech/method_choice.h): profile → predictive chooser → pilot → reason. */
-#include "mech/method_choice.h"
+ * (mech/ode/method_choice.h): profile → predictive chooser → pilot → reason. */
+#include "mech/ode/method_choice.h"
 
 #include <math.h>
 #include <stdio.h> /* snprintf, for the reason */
 #include <string.h>
 
-/* The first-order profile of s (mech/chooser.h). */
+/* The first-order profile of s (mech/ode/chooser.h). */
 static void profile_of(const struct mech_first_order_system *s, struct mech_scene_profile *prof)
 {
     memset(prof, 0, sizeof *prof);
@@ -24,6 +24,8 @@ static void profile_of(const struct mech_first_order_system *s, struct mech_scen
     prof->closed_form_name = s->closed_form_name;
     prof->closed_form_allowed = s->closed_form_allowed;
     prof->error_gain = s->error_gain >= 1.0 && isfinite(s->error_gain) ? s->error_gain : 1.0;
+    prof->rows = s->rows;
+    prof->second_order = s->second_order;
 }
 
 /* out->reason for the choice made on prof. */

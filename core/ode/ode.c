@@ -1,4 +1,4 @@
-/* ode.c — the initial-value driver of mech/ode.h on the stepper interface of
+/* ode.c — the initial-value driver of mech/ode/ode.h on the stepper interface of
  * integrators/integrator.h: step loop with budget checks, evenly spaced
  * samples and event location by sub-steps from the start of the accepted
  * step that contains the wanted time.
@@ -24,7 +24,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/ode.h"
+#include "mech/ode/ode.h"
 
 /* Brent needs at most about (log2 of width/tolerance) bisections, ~1100 for the
  * full double range (1e15 s down to DBL_MIN); interpolation usually takes ~10. */

@@ -8,8 +8,8 @@
  * (check: the event (ct, 0) goes to (γct, −βγct), as x' = γ(x − βct) says).
  * Precision recipes: notes/numerics.md "Special relativity in floating point".
  */
-#include "mech/boost.h"
-#include "mech/compensated.h"
+#include "mech/relativity/boost.h"
+#include "mech/base/compensated.h"
 
 #include <float.h>
 #include <math.h>

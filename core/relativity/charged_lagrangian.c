@@ -1,6 +1,6 @@
 /* charged_lagrangian.c — L, P and H of a charged particle (see
- * mech/charged_lagrangian.h). */
-#include "mech/charged_lagrangian.h"
+ * mech/relativity/charged_lagrangian.h). */
+#include "mech/relativity/charged_lagrangian.h"
 
 #include <math.h>
 

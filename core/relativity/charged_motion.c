@@ -1,13 +1,13 @@
 /* charged_motion.c — exact special-relativistic motion of a charge in
- * uniform static fields (mech/charged_motion.h): boost to the frame where
+ * uniform static fields (mech/relativity/charged_motion.h): boost to the frame where
  * E and B are parallel, the hyperbolic-plus-circular motion there in proper
  * time, the displacement boosted back; lab time inverted to proper time. */
-#include "mech/charged_motion.h"
+#include "mech/relativity/charged_motion.h"
 
 #include <float.h>
 #include <math.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 const char *mech_charged_field_kind_name(enum mech_charged_field_kind k)
 {
@@ -175,7 +175,7 @@ enum mech_status mech_charged_motion_init(struct mech_vec3 eps, struct mech_vec3
 
 /* The state at proper time tau, with the lab time; *u0lab = gamma c there. */
 static enum mech_status state_at(const struct mech_charged_motion *m, double tau,
-                                 struct mech_charged_state *s, double *ct_lab, double *u0lab,
+                                 struct mech_charged_motion_state *s, double *ct_lab, double *u0lab,
                                  const char *param, struct mech_error *err)
 {
     const double c = MECH_C;
@@ -217,7 +217,7 @@ static enum mech_status state_at(const struct mech_charged_motion *m, double tau
 }
 
 enum mech_status mech_charged_motion_at_proper_time(const struct mech_charged_motion *m,
-                                                    double tau, struct mech_charged_state *s,
+                                                    double tau, struct mech_charged_motion_state *s,
                                                     struct mech_error *err)
 {
     if (!m || !s) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");
@@ -248,7 +248,7 @@ static double tau_electric(const struct mech_charged_motion *m, double t)
 }
 
 enum mech_status mech_charged_motion_at_lab_time(const struct mech_charged_motion *m, double t,
-                                                 struct mech_charged_state *s,
+                                                 struct mech_charged_motion_state *s,
                                                  struct mech_error *err)
 {
     if (!m || !s) return mech_error_set(err, MECH_EINVAL, NULL, "NULL argument");

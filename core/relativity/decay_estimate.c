@@ -1,11 +1,11 @@
 /* decay_estimate.c — the notes' neutron-decay estimate of a daughter's largest
- * energy beside the exact endpoint (see mech/decay_estimate.h for the
+ * energy beside the exact endpoint (see mech/relativity/decay_estimate.h for the
  * derivation and the cancellation-free differences). */
-#include "mech/decay_estimate.h"
+#include "mech/relativity/decay_estimate.h"
 
 #include <math.h>
 
-#include "mech/kinematics.h"
+#include "mech/relativity/kinematics.h"
 
 enum mech_status mech_decay_endpoint_estimate(double parent, const double *m, size_t n, size_t i,
                                               struct mech_decay_estimate *out,

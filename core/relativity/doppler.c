@@ -16,9 +16,9 @@
  * the notes' sqrt((1 − β)/(1 + β))), α_S = π → e^{η}, α_S = π/2 → γ,
  * α_O = π/2 → 1/γ (the notes' transverse red shift ν' = ν/γ).
  */
-#include "mech/doppler.h"
-#include "mech/constants.h"
-#include "mech/compensated.h"
+#include "mech/relativity/doppler.h"
+#include "mech/base/constants.h"
+#include "mech/base/compensated.h"
 
 #include <math.h>
 

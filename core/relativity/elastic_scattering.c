@@ -1,11 +1,11 @@
 /* elastic_scattering.c — two-body relativistic elastic scattering off a target
- * at rest, at a given CM, lab or recoil angle (see mech/elastic_scattering.h
+ * at rest, at a given CM, lab or recoil angle (see mech/relativity/elastic_scattering.h
  * for the formulas). Every lab quantity is built from the CM half-angle
  * h = θ* / 2 through sin²h and cos²h, so nothing cancels at grazing angles
  * (the recoil: p∥ = 2γ p* sin²h, T = 2 p*² sin²h / m2) nor when an equal-mass
  * projectile almost stops (p∥ = γ p* (2 cos²h + (g − 1))). */
-#include "mech/constants.h"
-#include "mech/elastic_scattering.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/elastic_scattering.h"
 
 #include <float.h>
 #include <math.h>

@@ -13,8 +13,8 @@
  * +n (B = n×E) has P = 0 and its amplitude scales by e^{−η}, the Doppler
  * factor of an observer receding with the wave (notes §3.14).
  */
-#include "mech/em_fields.h"
-#include "mech/compensated.h"
+#include "mech/relativity/em_fields.h"
+#include "mech/base/compensated.h"
 
 #include <math.h>
 

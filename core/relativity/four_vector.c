@@ -1,11 +1,11 @@
 /* four_vector.c — Minkowski dot product, kind and relative γ of 4-vectors
- * (see mech/four_vector.h). */
-#include "mech/four_vector.h"
+ * (see mech/relativity/four_vector.h). */
+#include "mech/relativity/four_vector.h"
 
 #include <float.h>
 #include <math.h>
 
-#include "mech/compensated.h"
+#include "mech/base/compensated.h"
 
 double mech_four_dot(const double x[4], const double y[4])
 {

@@ -2,8 +2,8 @@
  * −c²Δt² + Δx² + Δy² + Δz²; §3.6: light cone and causality), computed from
  * exactly formed coordinate differences with compensated arithmetic, so far
  * events with a tiny interval keep their digits. */
-#include "mech/interval.h"
-#include "mech/compensated.h"
+#include "mech/relativity/interval.h"
+#include "mech/base/compensated.h"
 
 #include <float.h>
 #include <math.h>

@@ -12,9 +12,9 @@
  * file-local compensated arithmetic and single-particle motion, which stay
  * private here rather than becoming a header of their own.
  */
-#include "mech/kinematics.h"
-#include "mech/constants.h"
-#include "mech/compensated.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/base/constants.h"
+#include "mech/base/compensated.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,11 +1,11 @@
 /* mass_energy.c — E = m c^2 both ways and the rest-mass loss rate L / c^2 of
- * a luminosity (mech/mass_energy.h). */
-#include "mech/mass_energy.h"
+ * a luminosity (mech/relativity/mass_energy.h). */
+#include "mech/relativity/mass_energy.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 static const double C2 = MECH_C * MECH_C; /* c^2 = 8.987551787368176e16, one rounding */
 static const double JULIAN_YEAR = 365.25 * 86400.0;

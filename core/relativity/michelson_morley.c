@@ -1,6 +1,6 @@
 /* michelson_morley.c — ether round-trip times and the path difference (see
- * mech/michelson_morley.h). */
-#include "mech/michelson_morley.h"
+ * mech/relativity/michelson_morley.h). */
+#include "mech/relativity/michelson_morley.h"
 
 #include <math.h>
 

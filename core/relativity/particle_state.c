@@ -1,15 +1,15 @@
 /* particle_state.c — one free particle's γ, β, E, p, T, η from any one of
- * them (see mech/particle_state.h). Velocity forms go through a
+ * them (see mech/relativity/particle_state.h). Velocity forms go through a
  * struct mech_boost (core/relativity/boost.c keeps γ − 1, 1 − β, βγ, η exact for the
  * form given); energy forms through struct mech_kin_motion
  * (core/relativity/kinematics.c: T = p²/(E + m), never E − m of a rounded E). */
-#include "mech/particle_state.h"
+#include "mech/relativity/particle_state.h"
 
 #include <math.h>
 #include <string.h>
 
-#include "mech/boost.h"
-#include "mech/kinematics.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/kinematics.h"
 
 static const char *const given_name[] = {
     [MECH_PARTICLE_GIVEN_BETA] = "beta",

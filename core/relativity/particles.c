@@ -1,6 +1,6 @@
 /* particles.c — the particle mass table (PDG 2024, CODATA 2018 for light
- * nuclei; see mech/particles.h for the citation) and energy-unit conversion. */
-#include "mech/particles.h"
+ * nuclei; see mech/relativity/particles.h for the citation) and energy-unit conversion. */
+#include "mech/relativity/particles.h"
 
 #include <string.h>
 

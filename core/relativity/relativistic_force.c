@@ -1,6 +1,6 @@
 /* relativistic_force.c — F = dp/dt split along and across v (see
- * mech/relativistic_force.h). */
-#include "mech/relativistic_force.h"
+ * mech/relativity/relativistic_force.h). */
+#include "mech/relativity/relativistic_force.h"
 
 #include <math.h>
 

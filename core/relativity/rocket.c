@@ -1,5 +1,5 @@
-/* rocket.c — the relativistic rocket's mass ratio (see mech/rocket.h). */
-#include "mech/rocket.h"
+/* rocket.c — the relativistic rocket's mass ratio (see mech/relativity/rocket.h). */
+#include "mech/relativity/rocket.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
 /* telescope.c — the traveller's clock as the stay-at-home twin sees it at a
- * given home time (see mech/telescope.h). */
-#include "mech/telescope.h"
+ * given home time (see mech/relativity/telescope.h). */
+#include "mech/relativity/telescope.h"
 
 #include <math.h>
 #include <string.h>

@@ -15,8 +15,8 @@
  * 1 − c and 1 + c come from the cross product (s² / (1 ± c)), never from
  * 1 − (rounded c), so small angles keep their precision.
  */
-#include "mech/velocity_addition.h"
-#include "mech/compensated.h"
+#include "mech/relativity/velocity_addition.h"
+#include "mech/base/compensated.h"
 
 #include <math.h>
 #include <stdio.h>

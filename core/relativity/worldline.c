@@ -11,9 +11,9 @@
  * aτ/c → 0, and ct − |x·e| = K e^{−|m|} (light-cone form, never a difference).
  * From rest (η0 = 0): t = (c/a) sinh(aτ/c), x = (c²/a)(cosh(aτ/c) − 1).
  */
-#include "mech/worldline.h"
-#include "mech/constants.h"
-#include "mech/compensated.h"
+#include "mech/relativity/worldline.h"
+#include "mech/base/constants.h"
+#include "mech/base/compensated.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* inertia.c — inertia tensor of a body made of simple parts, principal axes,
- * angular momentum and kinetic energy (notes ch. 2). See mech/inertia.h. */
-#include "mech/inertia.h"
+ * angular momentum and kinetic energy (notes ch. 2). See mech/rigid/inertia.h. */
+#include "mech/rigid/inertia.h"
 
 #include <float.h>
 #include <math.h>
@@ -13,7 +13,7 @@
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_vector.h>
 
-#include "mech/rotation.h"
+#include "mech/rotation/rotation.h"
 
 /* Below this the tensor's largest entry is itself subnormal and loses relative
  * precision: DBL_MIN. (Smaller entries may be subnormal above it: their

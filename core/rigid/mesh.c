@@ -1,6 +1,6 @@
 /* mesh.c — mass properties of a closed triangle mesh by the divergence theorem
- * (signed tetrahedra; Tonon 2005, Eberly 2002). See mech/mesh.h. */
-#include "mech/mesh.h"
+ * (signed tetrahedra; Tonon 2005, Eberly 2002). See mech/rigid/mesh.h. */
+#include "mech/rigid/mesh.h"
 
 #include <math.h>
 #include <stdio.h>

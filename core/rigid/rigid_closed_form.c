@@ -1,5 +1,5 @@
 /* rigid_closed_form.c — the torque-free rigid body answered from its exact
- * solution, attitude included (mech/rigid_closed_form.h): omega(t) from
+ * solution, attitude included (mech/rigid/rigid_closed_form.h): omega(t) from
  * mech_rigid_exact_omega (Jacobi elliptic functions, or the symmetric and
  * steady forms), and the orientation from the fixed angular momentum
  * (Landau & Lifshitz §37): in the frame with L along z, the Euler angles
@@ -15,15 +15,15 @@
  * sample costs at most one piece's quadrature); a symmetric body has phi' = |L| / J_a exactly (regular
  * precession), a steady rotation the elementary rotation about omega.
  */
-#include "mech/rigid_closed_form.h"
-#include "mech/constants.h"
+#include "mech/rigid/rigid_closed_form.h"
+#include "mech/base/constants.h"
 
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <string.h>
 
-#include "mech/attitude.h"
+#include "mech/rotation/attitude.h"
 
 #define RCF_GL_N 16
 #define RCF_PIECES_PER_PERIOD 16

@@ -1,7 +1,7 @@
 /* rigid_problems.c — closed-form rigid-body problems of notes chapter 2: the
  * free symmetric top's cones and precession rates, the struck ball, the
- * toppling box; derivations in mech/rigid_problems.h. */
-#include "mech/rigid_problems.h"
+ * toppling box; derivations in mech/rigid/rigid_problems.h. */
+#include "mech/rigid/rigid_problems.h"
 
 #include <math.h>
 

@@ -1,9 +1,9 @@
 /* rigid_rotation.c — Euler's equations with a quaternion attitude on the ODE
- * driver of mech/ode.h, and the exact torque-free solution in Jacobi elliptic
- * functions (see mech/rigid_rotation.h; notes §2.7–2.9, Landau & Lifshitz §37).
+ * driver of mech/ode/ode.h, and the exact torque-free solution in Jacobi elliptic
+ * functions (see mech/rigid/rigid_rotation.h; notes §2.7–2.9, Landau & Lifshitz §37).
  */
-#include "mech/rigid_rotation.h"
-#include "mech/constants.h"
+#include "mech/rigid/rigid_rotation.h"
+#include "mech/base/constants.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/attitude.h"
+#include "mech/rotation/attitude.h"
 
 /* ---- exact solution ----------------------------------------------------------- */
 

@@ -1,6 +1,6 @@
 /* stability.c — linear stability of torque-free spin about a principal axis
- * (notes §2.10); the derivation is in mech/stability.h. */
-#include "mech/stability.h"
+ * (notes §2.10); the derivation is in mech/rigid/stability.h. */
+#include "mech/rigid/stability.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* sym_tensor.c — trace, invariants, isotropic/deviatoric split and principal
  * values and axes of a user-given symmetric 3x3 tensor; the eigen-solver is
  * mech_inertia_principal (core/rigid/inertia.c), not a copy of it. */
-#include "mech/sym_tensor.h"
+#include "mech/rigid/sym_tensor.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -2,9 +2,9 @@
  * (quaternion + body omega, gravity torque about the tip) so that theta = 0 is
  * not singular; conserved p_phi, p_psi, E; turning points of the nutation from
  * the cubic in u = cos theta; sleeping-top stability; steady precession.
- * See mech/top.h (notes §2.10). */
-#include "mech/top.h"
-#include "mech/constants.h"
+ * See mech/rigid/top.h (notes §2.10). */
+#include "mech/rigid/top.h"
+#include "mech/base/constants.h"
 
 #include <gsl/gsl_math.h>
 #include <gsl/gsl_poly.h>
@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/attitude.h"
+#include "mech/rotation/attitude.h"
 
 static enum mech_status validate(const struct mech_top_problem *p, struct mech_error *err)
 {

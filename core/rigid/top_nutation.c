@@ -2,7 +2,7 @@
  * averaged over one nutation, from the turning-point cubic in closed form
  * (complete elliptic integrals; Goldstein, Classical Mechanics, §5.7 for the
  * cubic, Byrd & Friedman 233.00 and 233.02 for the reductions). */
-#include "mech/top.h"
+#include "mech/rigid/top.h"
 
 #include <math.h>
 
@@ -10,7 +10,7 @@
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_sf_result.h>
 
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 
 /* GSL's complete integral of the third kind,
  * Pi(k, n) = int_0^{pi/2} dt / ((1 + n sin^2 t) sqrt(1 - k^2 sin^2 t)) (note +n),

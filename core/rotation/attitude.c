@@ -1,6 +1,6 @@
-/* attitude.c — unit-quaternion attitude kinematics (see mech/attitude.h).
+/* attitude.c — unit-quaternion attitude kinematics (see mech/rotation/attitude.h).
  * Passive convention of core/rotation/rotation.c: R = A(q)^T with A the active matrix. */
-#include "mech/attitude.h"
+#include "mech/rotation/attitude.h"
 
 #include <math.h>
 

@@ -1,7 +1,7 @@
 /* euler_rates.c — z-x-z Euler angles and their rates <-> angular velocity in
  * body and space axes, and dR/dt by the product rule as an independent check
- * of dR/dt = -[omega_body]x R (mech/euler_rates.h). */
-#include "mech/euler_rates.h"
+ * of dR/dt = -[omega_body]x R (mech/rotation/euler_rates.h). */
+#include "mech/rotation/euler_rates.h"
 
 #include <math.h>
 

@@ -2,9 +2,9 @@
  * axis-angle pair or a quaternion; quaternions from every form (12 Euler
  * sequences, rotation vector, Shepperd's method for matrices) and back (axis-angle,
  * Euler angles with gimbal-lock branches); composition and residuals
- * (see mech/rotation.h for the conventions). */
-#include "mech/rotation.h"
-#include "mech/constants.h"
+ * (see mech/rotation/rotation.h for the conventions). */
+#include "mech/rotation/rotation.h"
+#include "mech/base/constants.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -87,7 +87,7 @@ enum mech_status mech_rotation_from_euler_zxz(double phi, double theta, double p
 
 /* Unit vector along v (non-zero, finite), scaled first so that no square
  * overflows or underflows. Returns 0 for a zero vector. Products with the
- * reciprocals, where mech_vec3_unit_checked (mech/vec.h) divides: the two
+ * reciprocals, where mech_vec3_unit_checked (mech/base/vec.h) divides: the two
  * differ in the last bit, and the rotation operations' answers are kept as they
  * are. */
 static int unit(struct mech_vec3 v, struct mech_vec3 *u)
@@ -151,7 +151,7 @@ enum mech_status mech_rotation_from_quaternion(const double q[4], struct mech_ma
 }
 
 /* ==== Representations, conversions, composition ==============================
- * Conventions: mech/rotation.h. Quaternions are [w, x, y, z], Hamilton product,
+ * Conventions: mech/rotation/rotation.h. Quaternions are [w, x, y, z], Hamilton product,
  * and describe the ACTIVE turn; passive matrices are the transposes. */
 
 /* Axis letters of the 12 sequences, in enum order. */

@@ -1,7 +1,7 @@
 /* vector_algebra.c — dot, cross, angle, components, projections and triple
  * products of user vectors (notes ch. 0), computed on copies scaled by powers
  * of two so that nothing overflows or underflows on the way. */
-#include "mech/vector_algebra.h"
+#include "mech/rotation/vector_algebra.h"
 
 #include <float.h>
 #include <math.h>

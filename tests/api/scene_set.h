@@ -3,8 +3,8 @@
  * closed form, or an independent run of a different method at rtol 1e-14),
  * shared by tests/api/test_preset_scenes.c and bench/bench_workprecision.c
  * so the test and the figures measure the same thing. Header-only (static
- * functions, unused ones allowed); needs api.h, jansson, mech/budget.h,
- * mech/rigid_rotation.h.
+ * functions, unused ones allowed); needs api.h, jansson, mech/base/budget.h,
+ * mech/rigid/rigid_rotation.h.
  */
 #ifndef MECHD_TESTS_SCENE_SET_H
 #define MECHD_TESTS_SCENE_SET_H
@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
-#include "mech/rigid_rotation.h"
+#include "mech/base/budget.h"
+#include "mech/rigid/rigid_rotation.h"
 
 #include "../kepler_ld.h"
 

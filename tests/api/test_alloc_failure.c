@@ -42,7 +42,7 @@
 
 #include "api.h"
 #include "json/json_read.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 #include "testlib.h"
 

@@ -18,7 +18,7 @@
 #include <zlib.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "testlib.h"
 
 static const char boost[] =

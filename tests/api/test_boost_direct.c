@@ -28,7 +28,7 @@
 #include "run/api_run.h"
 #include "run/boost_direct.h"
 #include "json/json_read.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "testlib.h"
 
 static size_t boost_ri;

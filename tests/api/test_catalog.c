@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 #include "testlib.h"
 

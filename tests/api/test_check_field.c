@@ -19,7 +19,7 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "check/check_field.h"
 #include "check/check_kind.h"
 #include "run/routes.h"

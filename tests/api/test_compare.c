@@ -17,9 +17,9 @@
 
 #include "api.h"
 #include "ops/integrators/integrators.h"
-#include "mech/budget.h"
-#include "mech/ode.h"
-#include "mech/vec.h"
+#include "mech/base/budget.h"
+#include "mech/ode/ode.h"
+#include "mech/base/vec.h"
 #include "run/routes.h"
 #include "testlib.h"
 #include "request/trajectory_request.h"

@@ -12,7 +12,7 @@
 
 #include "api.h"
 #include "catalog/catalog.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 #include "testlib.h"
 

@@ -24,7 +24,7 @@
 
 #include "api.h"
 #include "json/json_arena.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "testlib.h"
 
 static void test_outside_scope(void)

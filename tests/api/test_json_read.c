@@ -20,7 +20,7 @@
 #include <string.h>
 
 #include "json/json_read.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 #include "testlib.h"
 

@@ -27,7 +27,7 @@
 #include <string.h>
 
 #include "json/json_write.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "json/real_format.h"
 #include "testlib.h"
 

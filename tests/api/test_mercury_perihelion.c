@@ -20,9 +20,9 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
-#include "mech/constants.h"
-#include "mech/vec.h"
+#include "mech/base/budget.h"
+#include "mech/base/constants.h"
+#include "mech/base/vec.h"
 #include "testlib.h"
 
 static const double GM = 1.32712440018e20, A = 5.7909050e10, E = 0.20563593;

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "api.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "testlib.h"
 
 static json_t *call(const char *method, const char *path, const char *body, int *status)

@@ -7,7 +7,7 @@
  * answer's own count of right-hand-side (force) evaluations; the heavy top
  * across variants within TOP_FACTOR; the torque-free body's closed form
  * (its quadrature priced) against its count; long runs of the heavy top,
- * Henon-Heiles and a strong-field geodesic piloted (mech/chooser_pilot.h)
+ * Henon-Heiles and a strong-field geodesic piloted (mech/ode/chooser_pilot.h)
  * within PILOT_FACTOR, their dry runs unpiloted and integrating nothing,
  * the pilot's steps counted in the request's budget. Evaluations,
  * not seconds: they are deterministic, so the test can never fail on
@@ -40,7 +40,7 @@ static double worst = 1.0;
 static void check(const char *name, const char *preset, const json_t *ans, const char *count);
 
 /* The heavy top's stated factor (its own cost span, mech_top_cost_span) and
- * the pilot's (mech/chooser_pilot.h): tighter than the table's. */
+ * the pilot's (mech/ode/chooser_pilot.h): tighter than the table's. */
 #define TOP_FACTOR 1.5
 #define PILOT_FACTOR 2.0
 
@@ -154,7 +154,7 @@ static void rigid_closed_form_cost(void)
         }
 }
 
-/* The pilot (mech/chooser_pilot.h) on long runs of systems whose step count
+/* The pilot (mech/ode/chooser_pilot.h) on long runs of systems whose step count
  * the table does not model in closed form: the piloted prediction within
  * PILOT_FACTOR of the counted evaluations; the pilot's own evaluations at
  * most about 2% of the run's (2.5% allowed: its share is set from the
@@ -178,9 +178,9 @@ static void pilot_scenes(void)
          "{\"system\":{\"name\":\"henon_heiles\"},\"q\":[0,0.1],\"p\":[0.39,0],"
          "\"t_end\":30000,\"samples\":11,\"cost\":false}",
          "balanced"},
-        {"geodesic r_p = 10 M, 1000 orbits", "/v1/gr/geodesic",
+        {"geodesic r_p = 10 M, 2000 orbits", "/v1/gr/geodesic",
          "{\"units\":\"geometric\",\"kind\":\"timelike\",\"initial\":{\"periapsis\":10,"
-         "\"apoapsis\":30},\"orbits\":1000,\"samples\":11,\"cost\":false}",
+         "\"apoapsis\":30},\"orbits\":2000,\"samples\":11,\"cost\":false}",
          "balanced"},
     };
     for (size_t i = 0; i < sizeof sc / sizeof *sc; i++) {

@@ -22,7 +22,7 @@
 
 #include "api.h"
 #include "fuzz_common.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "run/routes.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);

@@ -26,7 +26,7 @@
 
 #include "api.h"
 #include "fuzz_common.h"
-#include "mech/budget.h"
+#include "mech/base/budget.h"
 #include "static.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);

@@ -3,7 +3,9 @@
 no file includes a .c file, no header includes itself through
 other headers (a cycle), and no source file in core/, api/ or server/ is
 longer than MAX_LINES without a stated reason ("Why one file" in its opening
-comment). A file being split in another change may stand in PENDING, with
+comment); core's public headers are grouped by domain: at most MAX_TOP files
+at the top of core/include/mech/, each an umbrella mech/<domain>.h that
+includes every header of its folder mech/<domain>/ and nothing else. A file being split in another change may stand in PENDING, with
 why: it is reported, not failed, and reported again once it is short enough
 to leave the list.
 
@@ -16,6 +18,8 @@ import re
 import sys
 
 MAX_LINES = 800
+MAX_TOP = 15
+MECH = "core/include/mech"
 FOLDERS = ("core", "api", "server", "tests", "bench")
 INCLUDE_DIRS = ("core/include", "core", "api", "server", "tests")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
@@ -39,6 +43,31 @@ def resolve(root, src, name):
         if os.path.isfile(os.path.join(root, p)):
             return p
     return None
+
+
+def umbrella_problems(root):
+    """The top of core/include/mech/: umbrellas only, each complete."""
+    out = []
+    top = os.path.join(root, MECH)
+    files = sorted(f for f in os.listdir(top) if os.path.isfile(os.path.join(top, f)))
+    if len(files) > MAX_TOP:
+        out.append(f"{MECH}/ holds {len(files)} files at its top (at most {MAX_TOP})")
+    for f in files:
+        folder = os.path.join(top, f[:-2])
+        if not f.endswith(".h") or not os.path.isdir(folder):
+            out.append(f"{MECH}/{f}: not an umbrella (no folder {MECH}/{f[:-2]}/): "
+                       "a header belongs in its domain's folder")
+            continue
+        want = set()
+        for d, _, hs in os.walk(folder):
+            want |= {os.path.relpath(os.path.join(d, h), top) for h in hs if h.endswith(".h")}
+        with open(os.path.join(top, f), encoding="utf-8") as fh:
+            have = {n[len("mech/"):] for n in INCLUDE.findall(fh.read())}
+        for h in sorted(want - have):
+            out.append(f"{MECH}/{f} does not include mech/{h}")
+        for h in sorted(have - want):
+            out.append(f"{MECH}/{f} includes mech/{h}, which is not in its folder")
+    return out
 
 
 def main():
@@ -67,6 +96,7 @@ def main():
                                 "states no reason (\"Why one file ...\")")
             elif src in PENDING:
                 print(f"note: {src} is {n} lines now: take it out of PENDING")
+    problems += umbrella_problems(root)
     # cycles among headers (a .c is never included, so only headers can close one)
     state, stack = {}, []
 

@@ -2,7 +2,7 @@
 """check_paths.py SOURCE_DIR — every repo path a comment names exists.
 
 A comment that names a file (`core/frames/trajectory.c`, `api/ops/rigid/inertia.json`,
-`docs/numerics.md`, `mech/rotation.h`) is a pointer a reader follows; when the file
+`docs/numerics.md`, `mech/rotation/rotation.h`) is a pointer a reader follows; when the file
 moves, the pointer must move with it. This lint reads the comments of the tracked
 sources (C and headers: /* */ and //; JavaScript and CSS likewise; Python, shell
 and CMake: # lines and Python's docstrings) and fails, naming file and line, on a
@@ -11,7 +11,8 @@ path that does not exist in the tree.
 What counts as a repo path: a word that starts with one of the tree's top folders
 (api/ bench/ clients/ core/ docker/ docs/ scripts/ server/ tests/) and is not part
 of a longer path or a URL (`/v1/rigid/inertia`, `src/...` of another project are
-not), or a public header named as `mech/<name>.h` (core/include/mech/). Words with
+not), or a public header named as `mech/<domain>/<name>.h` or an umbrella
+`mech/<domain>.h` (core/include/mech/). Words with
 a placeholder or pattern (`<domain>`, `*`, `{a,b}`, `...`, `…`, `$`, `%`) are
 templates, not paths, and are skipped; so are CTest names, which the comments
 write as `CTest core/...` or `ctest -R ...`. A program may be named by its
@@ -28,7 +29,7 @@ TOP = ("api", "bench", "clients", "core", "docker", "docs", "scripts", "server",
 C_LIKE = (".c", ".h", ".js", ".mjs", ".css")
 HASH_LIKE = (".py", ".sh")
 PATH_RE = re.compile(r"(?<![\w./\-~$])((?:%s)/[\w./\-<>*{},…$%%+]*)" % "|".join(TOP))
-MECH_RE = re.compile(r"(?<![\w./\-])(mech/[\w\-]+\.h)\b")
+MECH_RE = re.compile(r"(?<![\w./\-])(mech/(?:[\w\-]+/)*[\w\-]+\.h)\b")
 TEMPLATE = re.compile(r"[<>*{}…$%]|\.\.\.|\.\./")
 CTEST_BEFORE = re.compile(r"(CTest|ctest -R|ctest|test) `?$")
 

@@ -3,15 +3,15 @@
  *   POST /v1/continuum/string  transverse waves on a string with fixed ends
  *   POST /v1/continuum/rod     axial and bending waves of a rod / beam
  * JSON <-> core only; the physics is core/continuum/continuum_waves.c, and
- * the rod's answer is one call, mech_rod_answer() (core/continuum/rod_answer.c). */
+ * the rod's answer is one call, mech_rod_answer() (core/answers/continuum/rod_answer.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/continuum_waves.h"
-#include "mech/rod_answer.h"
+#include "mech/base/constants.h"
+#include "mech/continuum/continuum_waves.h"
+#include "mech/answers/continuum/rod_answer.h"
 
 
 static json_t *mode_json(struct api_call *c, int n, const struct mech_wave_mode *m)

@@ -1,14 +1,14 @@
 /* gravity.c — POST /v1/earth/gravity (notes §1.3: effective g on a rotating
  * sphere, beside WGS 84 normal gravity). JSON <-> core only: the answer is one
- * call, mech_earth_gravity_answer() (core/frames/earth_gravity_answer.c; the
+ * call, mech_earth_gravity_answer() (core/answers/frames/earth_gravity_answer.c; the
  * physics is core/frames/earth.c, derivations in its header). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/earth_gravity_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/earth_gravity_answer.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

@@ -1,13 +1,13 @@
 /* tides.c — POST /v1/earth/tides (notes §1.4: tidal acceleration and tide
  * heights). JSON <-> core only: the answer is one call, mech_tides_answer()
- * (core/frames/tides_answer.c; the physics is core/frames/tides.c). */
+ * (core/answers/frames/tides_answer.c; the physics is core/frames/tides.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/tides_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/tides_answer.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

@@ -1,13 +1,13 @@
 /* effective_force.c — POST /v1/frames/effective-force (notes §1.2: the four
  * fictitious forces of a rotating frame). JSON <-> core only: the physics is
- * core/frames/effective_force.c (derivation in mech/effective_force.h). */
+ * core/frames/effective_force.c (derivation in mech/frames/effective_force.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/effective_force.h"
+#include "mech/base/constants.h"
+#include "mech/frames/effective_force.h"
 
 /* Set key to value (a new reference, may be NULL after an allocation failure:
  * then the key is set to null and the answer is incomplete, never a crash). */

@@ -1,13 +1,13 @@
 /* rotating_liquid.c — POST /v1/frames/rotating-liquid: the free surface of a
  * liquid turning with its container (notes §1.5 homework 2). JSON <-> core only;
  * the physics and its derivation are in core/frames/rotating_liquid.c and
- * mech/rotating_liquid.h. */
+ * mech/frames/rotating_liquid.h. */
 #include <math.h>
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/rotating_liquid.h"
+#include "mech/base/constants.h"
+#include "mech/frames/rotating_liquid.h"
 
 
 json_t *api_op_frames_rotating_liquid(struct api_call *c, const json_t *body)

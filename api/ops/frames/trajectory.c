@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/trajectory.h"
+#include "mech/frames/trajectory.h"
 #include "request/trajectory_relativity.h"
 #include "request/trajectory_request.h"
 

@@ -15,11 +15,11 @@
 #include "run/endpoint.h"
 #include "ops/gr/gr_units.h"
 #include "request/integrator_block.h"
-#include "mech/constants.h"
-#include "mech/geodesic.h"
-#include "mech/geodesic_run.h"
-#include "mech/geodesic_setup.h"
-#include "mech/gr_units.h"
+#include "mech/base/constants.h"
+#include "mech/gr/geodesic.h"
+#include "mech/answers/gr/geodesic_run.h"
+#include "mech/answers/gr/geodesic_setup.h"
+#include "mech/gr/gr_units.h"
 #include "request/trajectory_request.h"
 
 /* Constants (documented in the route's description). */
@@ -400,6 +400,7 @@ static void geo_encode_diagnostics(struct api_call *c, json_t *out, const struct
      * 2 pi + advance per radial period), the scale of phi */
     double err = -1.0;
     const char *ev = NULL;
+    int bound_adv = 0; /* the advance's error: a lower bound of the samples' (it can cancel) */
     if (ch.chosen && g->ans.scatter && isfinite(r.measured_deflection) &&
         isfinite(g->ans.deflection_exact)) {
         err = fabs(r.measured_deflection - g->ans.deflection_exact) /
@@ -408,18 +409,20 @@ static void geo_encode_diagnostics(struct api_call *c, json_t *out, const struct
              "the angle the ray sweeps";
     } else if (ch.chosen && g->su.bound && r.n_periapses >= 2 && isfinite(r.measured_advance) &&
                isfinite(g->su.adv_exact)) {
-        err = fabs(r.measured_advance - g->su.adv_exact) / (2.0 * MECH_PI + g->su.adv_exact);
-        ev = "the exact periapsis advance (precession.exact_per_orbit): |measured - exact| / "
-             "(2 pi + exact), the angle of one radial period";
+        /* the advance's error is the phase drift per radial period: over the
+         * run the samples' phase drifts by that times the periods between
+         * the first and last periapsis */
+        err = fabs(r.measured_advance - g->su.adv_exact) * (double)(r.n_periapses - 1) /
+              (2.0 * MECH_PI + g->su.adv_exact);
+        bound_adv = 1;
+        ev = "the larger of the calibrated law at the setting run and the exact periapsis "
+             "advance's error (precession.exact_per_orbit): |measured - exact| x the radial "
+             "periods between the first and last periapsis / (2 pi + exact), the phase drift "
+             "over the run relative to the angle of one radial period";
     }
     json_object_set_new_nocheck(
         d, "selection",
-        ch.chosen ? api_integrator_block_selection_achieved(
-                        c, &ch, err,
-                        ev ? ev
-                           : "none: no exact reference for this motion (captured, or a run "
-                             "without two periapses or an escape)",
-                        0.0)
+        ch.chosen ? api_integrator_block_selection_run(c, &ch, ev ? err : -1.0, ev, bound_adv)
                   : api_integrator_block_selection(c, &ch));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_object_set_new_nocheck(out, "cost", json_object());
@@ -453,13 +456,14 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
     /* integrator: the shared block; second-order methods do not apply */
     const json_t *ib = json_object_get(body, "integrator");
     if (!geo_method_check(c, ib)) return NULL;
-    static const struct api_integrator_system geodesic_eqs = {
+    struct api_integrator_system geodesic_eqs = {
         "the geodesic equations with r, dr/dtau, phi and t carried together",
-        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0};
-    /* a pilot for long runs in strong field (core/gr/geodesic_run.c) */
+        "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0, "geodesic", 0};
+    if (g.photon) geodesic_eqs.rows = "geodesic_null"; /* light's own measured rows */
+    /* a pilot for long runs in strong field (core/answers/gr/geodesic_run.c) */
     const struct mech_pilot_system pilot = {mech_geodesic_pilot_run, &g.p};
     /* light coming in and scattering: its winding's error gain and its cost
-     * (mech_geodesic_error_gain, core/gr/geodesic_run.c) */
+     * (mech_geodesic_error_gain, core/answers/gr/geodesic_run.c) */
     const double span = g.p.param_end / T;
     const int scatter = photon_in(&g.p);
     const struct api_integrator_hooks hooks = {

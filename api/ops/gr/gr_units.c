@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "ops/gr/gr_units.h"
-#include "mech/constants.h"
-#include "mech/named_bodies.h"
+#include "mech/base/constants.h"
+#include "mech/base/named_bodies.h"
 
 /* The named body M names in the request's set (named_bodies, default
  * "DE440"), or NULL when M is not a name. */

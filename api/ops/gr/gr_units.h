@@ -1,11 +1,11 @@
 /* gr_units.h — the units block the general-relativity operations share
  * (api/ops/gr/schwarzschild.c, api/ops/gr/geodesic.c): M and units read from
- * the request into mech/gr_units.h's set-up, and the answer's "units" object. */
+ * the request into mech/gr/gr_units.h's set-up, and the answer's "units" object. */
 #ifndef API_EP_GR_UNITS_H
 #define API_EP_GR_UNITS_H
 
 #include "run/endpoint.h"
-#include "mech/gr_units.h"
+#include "mech/gr/gr_units.h"
 
 /* Read /M and /units (schema-validated) and set up the units with
  * mech_gr_units_init. Returns 1, or 0 after recording the problem at /M

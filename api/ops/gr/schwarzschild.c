@@ -2,14 +2,14 @@
  * shift, circular orbits, the GPS-style clock comparison, the radial infall
  * and the effective potentials (the notes' "A Little General Relativity",
  * built as Hartle, "Gravity" ch. 9 and 11; Carroll ch. 5; Schutz ch. 11).
- * The answer is one core call, mech_schw_answer (core/gr/schwarzschild_answer.c);
+ * The answer is one core call, mech_schw_answer (core/answers/gr/schwarzschild_answer.c);
  * this file parses the request (its units with api/ops/gr/gr_units.c), calls it
  * and encodes the answer. */
 #include <math.h>
 
 #include "run/endpoint.h"
 #include "ops/gr/gr_units.h"
-#include "mech/schwarzschild_answer.h"
+#include "mech/answers/gr/schwarzschild_answer.h"
 
 #define MICROSECONDS_PER_DAY 86400e6
 

@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/circular_orbit.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/circular_orbit.h"
 
 
 #define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))

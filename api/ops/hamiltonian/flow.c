@@ -13,8 +13,8 @@
 
 #include "run/endpoint.h"
 #include "ops/hamiltonian/hamiltonian_request.h"
-#include "mech/apsides.h"
-#include "mech/ham_steady_motion.h"
+#include "mech/hamiltonian/apsides.h"
+#include "mech/hamiltonian/steady_motion.h"
 
 static void set(json_t *o, const char *key, json_t *v)
 {

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "ops/hamiltonian/hamiltonian_request.h"
-#include "mech/ham_state_scale.h"
+#include "mech/hamiltonian/state_scale.h"
 
 /* ---- the system ---------------------------------------------------------------- */
 
@@ -205,7 +205,9 @@ int api_ham_integrator_read(struct api_call *c, const json_t *block, const char 
         "Hamilton's equations q' = dH/dp, p' = -dH/dq",
         "the SI state: the smallest scale of its components (|q_i|, |p_i|, tau |p_i|/M_i, "
         "M_i |q_i|/tau at the start)",
-        mech_ham_state_scale(s, y0, tau), 0, 0.0};
+        mech_ham_state_scale(s, y0, tau), 0, 0.0,
+        s->kind == MECH_HAM_PENDULUM ? "hamiltonian_pendulum" : "hamiltonian_flow",
+        mech_ham_separable(s, NULL)};
     const char *method = block ? api_string(block, "method", NULL) : NULL;
     if (!block) {
         out->own = 1;
@@ -285,7 +287,10 @@ json_t *api_ham_diagnostics(struct api_call *c, const struct api_ham_integ *hi,
     json_object_set_new_nocheck(
         d, "form", json_string(second_order ? "second-order (q, v = p/M)" : "first-order (q, p)"));
     json_object_set_new_nocheck(d, "time_scale", api_real(c, tau));
-    json_object_set_new_nocheck(d, "selection", api_ham_selection(c, hi));
+    json_object_set_new_nocheck(d, "selection",
+                                hi->own ? api_ham_selection(c, hi)
+                                        : api_integrator_block_selection_run(c, &hi->ch, -1.0,
+                                                                             NULL, 0));
     return d;
 }
 

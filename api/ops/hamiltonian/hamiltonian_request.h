@@ -9,7 +9,7 @@
 
 #include "run/endpoint.h"
 #include "request/integrator_block.h"
-#include "mech/hamiltonian.h"
+#include "mech/hamiltonian/hamiltonian.h"
 
 /* An integrator chosen for one run. */
 struct api_ham_integ {
@@ -46,7 +46,7 @@ json_t *api_ham_system_json(const struct mech_ham_system *s, const json_t *js);
  * separable systems (refused at <pointer>/method otherwise); the rest go to
  * the shared parser with span t_end / tau and the state's scale at y0
  * (mech_ham_state_scale) as atol's scale. pilot: the chooser's pilot hook
- * for the shared parser (borrowed; mech/chooser_pilot.h), or NULL for none.
+ * for the shared parser (borrowed; mech/ode/chooser_pilot.h), or NULL for none.
  * Returns 1, or 0 after recording the problem. */
 int api_ham_integrator_read(struct api_call *c, const json_t *block, const char *pointer,
                             const struct mech_ham_system *s, const double *y0, double tau,

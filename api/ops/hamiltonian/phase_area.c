@@ -7,8 +7,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/phase_area.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/phase_area.h"
 
 
 json_t *api_op_hamiltonian_phase_area(struct api_call *c, const json_t *body)

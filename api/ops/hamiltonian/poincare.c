@@ -13,7 +13,7 @@
 
 #include "run/endpoint.h"
 #include "ops/hamiltonian/hamiltonian_request.h"
-#include "mech/poincare_orbits.h"
+#include "mech/answers/hamiltonian/poincare_orbits.h"
 
 static void set(json_t *o, const char *key, json_t *v)
 {

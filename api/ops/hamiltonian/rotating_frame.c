@@ -4,7 +4,7 @@
  * the Hamiltonian in the rotating frame and see if it is the total energy").
  * JSON <-> core only; the physics is core/hamiltonian/rotating_hamiltonian.c. */
 #include "run/endpoint.h"
-#include "mech/rotating_hamiltonian.h"
+#include "mech/hamiltonian/rotating_hamiltonian.h"
 
 json_t *api_op_hamiltonian_rotating_frame(struct api_call *c, const json_t *body)
 {

@@ -5,7 +5,7 @@
  * for the user's own scene.
  *
  * Reference: the scene's exact solution when it has one, otherwise a radau15
- * run at its round-off setting (mech/compare_sweep.h, which runs the sweep:
+ * run at its round-off setting (mech/answers/frames/compare_sweep.h, which runs the sweep:
  * this file reads the request, calls mech_compare_sweep once and encodes).
  *
  * CPU time: cost.runs[i].cpu_seconds for row i (and cost.reference_cpu_seconds),
@@ -31,8 +31,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/compare_sweep.h"
-#include "mech/trajectory.h"
+#include "mech/answers/frames/compare_sweep.h"
+#include "mech/frames/trajectory.h"
 #include "request/trajectory_request.h"
 
 #define COMPARE_MAX_RUNS MECH_COMPARE_MAX_RUNS

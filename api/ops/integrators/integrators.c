@@ -5,8 +5,8 @@
 #include "ops/integrators/integrators.h"
 #include "run/endpoint.h"
 
-#include "mech/ode.h"
-#include "mech/trajectory.h"
+#include "mech/ode/ode.h"
+#include "mech/frames/trajectory.h"
 
 static const char target_doc[] =
     "{\"target_error\": x} (relative error on positions and velocities, or on the operation's "

@@ -11,7 +11,7 @@
  *    "accuracy_presets": [{name, promise, velocity_free: {method, rtol},
  *                          velocity_dependent: {method, rtol}, doc}],
  *    "target_error": how a target maps to a method, "default": ...}
- * from the const registry (mech/ode.h) and the presets (mech/trajectory.h).
+ * from the const registry (mech/ode/ode.h) and the presets (mech/frames/trajectory.h).
  * New reference (NULL only when out of memory). Thread-safe, deterministic. */
 json_t *api_integrators_catalog(void);
 

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "run/endpoint.h"
-#include "mech/boost.h"
+#include "mech/relativity/boost.h"
 #include "ops/relativity/velocity_request.h"
 
 /* ---- request bounds (api/ops/relativity/boost.json) ----------------------

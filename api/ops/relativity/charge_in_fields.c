@@ -7,8 +7,8 @@
 #include <stdlib.h>
 
 #include "run/endpoint.h"
-#include "mech/charged_motion_answer.h"
-#include "mech/constants.h"
+#include "mech/answers/relativity/charged_motion_answer.h"
+#include "mech/base/constants.h"
 #include "ops/relativity/velocity_request.h"
 
 static double *times_of(const json_t *a, size_t *n)
@@ -19,7 +19,7 @@ static double *times_of(const json_t *a, size_t *n)
     return x;
 }
 
-static json_t *states_json(struct api_call *c, const struct mech_charged_state *s, size_t n,
+static json_t *states_json(struct api_call *c, const struct mech_charged_motion_state *s, size_t n,
                            double m)
 {
     json_t *arr = json_array();
@@ -63,8 +63,8 @@ json_t *api_op_relativity_charge_in_fields(struct api_call *c, const json_t *bod
     }
     q.t = times_of(json_object_get(body, "times"), &q.n_t);
     q.tau = times_of(json_object_get(body, "proper_times"), &q.n_tau);
-    struct mech_charged_state *st_t = malloc((q.n_t ? q.n_t : 1) * sizeof *st_t);
-    struct mech_charged_state *st_tau = malloc((q.n_tau ? q.n_tau : 1) * sizeof *st_tau);
+    struct mech_charged_motion_state *st_t = malloc((q.n_t ? q.n_t : 1) * sizeof *st_t);
+    struct mech_charged_motion_state *st_tau = malloc((q.n_tau ? q.n_tau : 1) * sizeof *st_tau);
     struct mech_charged_answer a;
     struct mech_error e;
     mech_error_clear(&e);

@@ -1,14 +1,14 @@
 /* doppler.c — POST /v1/relativity/doppler: Doppler shift and aberration of
  * light under relative motion (notes §3.14). The answer is one call of
- * mech_doppler_answer (core/relativity/doppler_answer.c); velocities use the
+ * mech_doppler_answer (core/answers/relativity/doppler_answer.c); velocities use the
  * shared input of api/ops/relativity/velocity_request.h. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/doppler_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/relativity/doppler_answer.h"
 #include "ops/relativity/velocity_request.h"
 
 static json_t *angle_or_null(struct api_call *c, double a, double scale)

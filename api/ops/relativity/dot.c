@@ -3,7 +3,7 @@
  * square and kind, and the relative Lorentz factor of two timelike ones.
  * JSON <-> core only; the numerics are core/relativity/four_vector.c. */
 #include "run/endpoint.h"
-#include "mech/four_vector.h"
+#include "mech/relativity/four_vector.h"
 
 static void read4(const json_t *arr, double x[4])
 {

@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/em_fields.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/em_fields.h"
 #include "ops/relativity/velocity_request.h"
 
 /* In SI the first invariant is E^2 - c^2 B^2: it is answered under that

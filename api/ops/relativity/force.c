@@ -3,7 +3,7 @@
  * way round, with the power and the 4-force (notes §3 "The Force 4-Vector").
  * JSON <-> core only; the physics is core/relativity/relativistic_force.c. */
 #include "run/endpoint.h"
-#include "mech/relativistic_force.h"
+#include "mech/relativity/relativistic_force.h"
 #include "ops/relativity/velocity_request.h"
 
 json_t *api_op_relativity_force(struct api_call *c, const json_t *body)

@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/interval.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/interval.h"
 #include "ops/relativity/velocity_request.h"
 
 json_t *api_op_relativity_interval(struct api_call *c, const json_t *body)

@@ -9,8 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/boost.h"
-#include "mech/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/base/constants.h"
 #include "ops/relativity/velocity_request.h"
 
 int api_kin_unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit *u)

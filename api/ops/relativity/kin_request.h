@@ -8,8 +8,8 @@
 #include <jansson.h>
 
 #include "run/endpoint.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 
 /* The request's "energy_unit" (default filled by the schema) into *u. */
 int api_kin_unit_of(struct api_call *c, const json_t *body, enum mech_energy_unit *u);

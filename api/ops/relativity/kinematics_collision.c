@@ -1,7 +1,7 @@
 /* kinematics_collision.c — POST /v1/relativity/kinematics/collision: two
  * particles colliding, the energy available and the thresholds of the final
  * states. The whole answer is one call, mech_collision_answer
- * (core/relativity/collision_answer.c), which this file reads the request for
+ * (core/answers/relativity/collision_answer.c), which this file reads the request for
  * and encodes.
  * Energies, masses (unit/c²) and momenta (unit/c) are in `energy_unit`
  * (eV … TeV, default MeV; c = 1); particles are a name from the PDG 2024 table
@@ -14,12 +14,12 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "ops/relativity/kin_request.h"
-#include "mech/collision_answer.h"
+#include "mech/answers/relativity/collision_answer.h"
 
 /* The request as the core takes it (mf: room for the final masses); 0 after
  * recording every error found (masses, the crossing angle, the motions, and

@@ -12,12 +12,12 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "ops/relativity/kin_request.h"
-#include "mech/decay_estimate.h"
+#include "mech/relativity/decay_estimate.h"
 
 
 static json_t *lab_json(struct api_call *c, const struct mech_kin_lab *l)

@@ -12,10 +12,10 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "ops/relativity/kin_request.h"
 
 json_t *api_op_relativity_kinematics_invariant_mass(struct api_call *c, const json_t *body)

@@ -5,7 +5,7 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/charged_lagrangian.h"
+#include "mech/relativity/charged_lagrangian.h"
 #include "ops/relativity/velocity_request.h"
 
 json_t *api_op_relativity_lagrangian(struct api_call *c, const json_t *body)

@@ -6,7 +6,7 @@
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/mass_energy.h"
+#include "mech/relativity/mass_energy.h"
 
 static const struct {
     const char *key;

@@ -3,7 +3,7 @@
  * exact beside the notes' beta^2 L, and the null result with the Lorentz
  * contraction. JSON <-> core only; the physics is core/relativity/michelson_morley.c. */
 #include "run/endpoint.h"
-#include "mech/michelson_morley.h"
+#include "mech/relativity/michelson_morley.h"
 
 json_t *api_op_relativity_michelson_morley(struct api_call *c, const json_t *body)
 {

@@ -3,13 +3,13 @@
  * notes' non-relativistic kinetic energies beside the exact one, labelled,
  * and for an unstable particle its lifetime τ with cτ, γτ and βγcτ. What it
  * computes is one call, mech_particle_answer()
- * (core/relativity/particle_answer.c); this file reads the request and
+ * (core/answers/relativity/particle_answer.c); this file reads the request and
  * encodes the answer. */
 #include <math.h>
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/particle_answer.h"
+#include "mech/answers/relativity/particle_answer.h"
 
 /* The forms a motion may be given in: request key and core enum, in the
  * order the description lists them. */

@@ -2,7 +2,7 @@
  * kinematics operations take names from (core/relativity/particles.c, PDG
  * 2024 masses in MeV/c²). */
 #include "run/endpoint.h"
-#include "mech/particles.h"
+#include "mech/relativity/particles.h"
 
 json_t *api_op_relativity_particles(struct api_call *c, const json_t *body)
 {

@@ -7,9 +7,9 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/velocity_addition.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/velocity_addition.h"
 #include "ops/relativity/velocity_request.h"
 
 static json_t *velocity_in_frame(struct api_call *c, const json_t *vel, const struct mech_boost *f)

@@ -2,13 +2,13 @@
  * relativity endpoint: exactly one of {"beta": [..]}, {"rapidity": η,
  * "direction": [..]}, {"gamma": γ, "direction": [..]} or {"one_minus_beta": ε,
  * "direction": [..]}, each carrying its own precision into a core
- * struct mech_boost (core/include/mech/boost.h), and its description in
+ * struct mech_boost (core/include/mech/relativity/boost.h), and its description in
  * answers (gamma, gamma_minus_one, beta, rapidity, one_minus_beta). */
 #ifndef API_VELOCITY_REQUEST_H
 #define API_VELOCITY_REQUEST_H
 
 #include "run/endpoint.h"
-#include "mech/boost.h"
+#include "mech/relativity/boost.h"
 
 
 /* JSON Schema of a velocity (use as the value of a property). */

@@ -1,16 +1,16 @@
 /* worldline.c — POST /v1/relativity/worldline (notes §3.14, §3.15: the twin
  * paradox): a journey of legs, each clock's reading and what a telescope
  * shows. The answer is one call of mech_worldline_answer
- * (core/relativity/worldline_answer.c). */
+ * (core/answers/relativity/worldline_answer.c). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/boost.h"
-#include "mech/telescope.h"
-#include "mech/worldline_answer.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/relativity/telescope.h"
+#include "mech/answers/relativity/worldline_answer.h"
 #include "ops/relativity/velocity_request.h"
 
 /* The legs as asked (schema-validated: each leg is one of the five shapes);

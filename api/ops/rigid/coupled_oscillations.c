@@ -8,8 +8,8 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/coupled_oscillations.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/coupled_oscillations.h"
 
 #define NMAX MECH_COUPLED_MAX_DOF
 #define SET(o, k, v) json_object_set_new_nocheck((o), (k), (v))

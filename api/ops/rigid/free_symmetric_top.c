@@ -1,13 +1,13 @@
 /* free_symmetric_top.c — POST /v1/rigid/free-symmetric-top (notes §2.9: the
  * torque-free symmetric top's cones and precession rates).
  * JSON <-> core only: physics and derivations in core/rigid/rigid_problems.c
- * and mech/rigid_problems.h. */
+ * and mech/rigid/rigid_problems.h. */
 #include <math.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/rigid_problems.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_problems.h"
 
 static void set_real(struct api_call *c, json_t *o, const char *k, double x)
 {

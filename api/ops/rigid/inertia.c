@@ -10,8 +10,8 @@
 
 #include "run/endpoint.h"
 #include "ops/rigid/inertia_request.h"
-#include "mech/constants.h"
-#include "mech/rigid_problems.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_problems.h"
 
 /* ---- handler ----------------------------------------------------------------- */
 

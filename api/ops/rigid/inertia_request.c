@@ -10,7 +10,7 @@
 
 #include "ops/rigid/inertia_request.h"
 #include "request/rotation_request.h"
-#include "mech/rotation.h"
+#include "mech/rotation/rotation.h"
 
 static const char *const shape_names[MECH_SHAPE_COUNT] = {
     [MECH_SHAPE_POINT] = "point",       [MECH_SHAPE_ROD] = "rod",

@@ -9,8 +9,8 @@
 #include <jansson.h>
 
 #include "run/endpoint.h"
-#include "mech/inertia.h"
-#include "mech/vector_algebra.h"
+#include "mech/rigid/inertia.h"
+#include "mech/rotation/vector_algebra.h"
 
 struct api_inertia_body {
     size_t n;                                /* parts */

@@ -2,7 +2,7 @@
  * rotation by Euler's equations with a quaternion attitude (notes §2.7–2.9),
  * with conserved-quantity drifts and, torque-free, the error against the exact
  * solution in Jacobi elliptic functions. The physics is core/rigid/rigid_rotation.c;
- * the run is one call of mech_rigid_answer_run (core/rigid/rigid_answer.c);
+ * the run is one call of mech_rigid_answer_run (core/answers/rigid/rigid_answer.c);
  * the body may be given by principal moments or by a full /v1/rigid/inertia
  * request (its schema inlined into this route's by the build, so the
  * validator checks it with the rest of the body), read and computed as that
@@ -15,11 +15,11 @@
 #include "catalog/catalog.h"
 #include "ops/rigid/inertia_request.h"
 #include "request/integrator_block.h"
-#include "mech/closed_form.h"
-#include "mech/attitude.h"
-#include "mech/rigid_answer.h"
-#include "mech/rigid_rotation.h"
-#include "mech/rotation.h"
+#include "mech/frames/closed_form.h"
+#include "mech/rotation/attitude.h"
+#include "mech/answers/rigid/rigid_answer.h"
+#include "mech/rigid/rigid_rotation.h"
+#include "mech/rotation/rotation.h"
 #include "request/rotation_request.h"
 #include "request/trajectory_request.h"
 
@@ -196,7 +196,7 @@ static int choose_method(struct api_call *c, const json_t *body, const struct me
     const double W = mech_rigid_rate_scale(p);
     static const struct api_integrator_system euler_eqs = {
         "Euler's equations with a quaternion attitude",
-        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0, "rigid_body", 0};
     struct api_integrator_system sys = euler_eqs;
     sys.samples = p->samples;
     /* the closed form's own cost: its quadrature (core/rigid/rigid_closed_form.c) */
@@ -340,7 +340,18 @@ static json_t *encode_answer(struct api_call *c, const struct mech_rigid_problem
     json_object_set_new_nocheck(d, "reference", encode_reference(c, a));
     json_object_set_new_nocheck(d, "selection",
                                 a->closed ? closed_form_selection(c, ch, &a->ev)
-                                          : api_integrator_block_selection(c, ch));
+                                          : api_integrator_block_selection_run(
+                                                c, ch,
+                                                a->r.has_exact ? a->r.max_relative_omega_error
+                                                               : -1.0,
+                                                "the exact torque-free solution "
+                                                "(diagnostics.reference): max |omega - exact| "
+                                                "/ |omega0| over the samples",
+                                                0));
+    json_t *ach = json_object_get(json_object_get(d, "selection"), "achieved");
+    if (ach) /* the schema's count: the run's own right-hand sides */
+        json_object_set_new_nocheck(ach, "evaluations",
+                                    json_integer((json_int_t)a->r.stats.rhs_evaluations));
     json_object_set_new_nocheck(out, "diagnostics", d);
     json_t *f = encode_flip(c, &a->r);
     if (f) json_object_set_new_nocheck(out, "flip", f);

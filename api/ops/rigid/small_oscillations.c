@@ -8,10 +8,10 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/earth.h"
+#include "mech/base/constants.h"
+#include "mech/frames/earth.h"
 #include "request/earth_rotation.h"
-#include "mech/small_oscillations.h"
+#include "mech/hamiltonian/small_oscillations.h"
 
 
 #define MAX_TERMS 16

@@ -1,12 +1,12 @@
 /* stability.c — POST /v1/rigid/stability: linear stability of
  * torque-free spin about a principal axis (notes §2.10). JSON <-> core only;
- * the physics is core/rigid/stability.c (derivation in mech/stability.h). */
+ * the physics is core/rigid/stability.c (derivation in mech/rigid/stability.h). */
 #include <math.h>
 #include <stdio.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/stability.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/stability.h"
 
 
 static const char *const roles[] = {"smallest", "intermediate", "largest", "degenerate"};

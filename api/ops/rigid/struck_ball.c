@@ -1,13 +1,13 @@
 /* struck_ball.c — POST /v1/rigid/struck-ball (notes §2.11 HW 3: a ball struck
  * by a cue, rolling without slipping).
  * JSON <-> core only: physics and derivations in core/rigid/rigid_problems.c
- * and mech/rigid_problems.h. */
+ * and mech/rigid/rigid_problems.h. */
 #include <math.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/rigid_problems.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_problems.h"
 
 static void set_real(struct api_call *c, json_t *o, const char *k, double x)
 {

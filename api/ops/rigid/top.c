@@ -3,7 +3,7 @@
  * with Euler angles per sample, the nutation range from the turning-point
  * cubic beside the measured one, conserved p_phi, p_psi and E, the sleeping-top
  * condition and the steady-precession rates. What it computes is one call,
- * mech_top_answer_run (core/rigid/top_answer.c, on core/rigid/top.c); this
+ * mech_top_answer_run (core/answers/rigid/top_answer.c, on core/rigid/top.c); this
  * file reads the request, chooses the integrator (api/request/integrator_block.c)
  * and encodes the answer. */
 #include <math.h>
@@ -11,7 +11,7 @@
 
 #include "run/endpoint.h"
 #include "request/integrator_block.h"
-#include "mech/top_answer.h"
+#include "mech/answers/rigid/top_answer.h"
 
 static void set(json_t *o, const char *key, json_t *v)
 {
@@ -61,7 +61,7 @@ static int choose_method(struct api_call *c, const json_t *body, struct mech_top
 {
     static const struct api_integrator_system top_eqs = {
         "Euler's equations of the top with gravity's torque and a quaternion attitude",
-        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0};
+        "the dimensionless state (quaternion and omega / rate scale)", 1.0, 0, 0.0, "heavy_top", 0};
     struct api_integrator_system sys = top_eqs;
     sys.samples = p->samples;
     const struct mech_pilot_system pilot = {mech_top_pilot_run, p};
@@ -153,7 +153,7 @@ json_t *api_op_rigid_top(struct api_call *c, const json_t *body)
         json_t *d = json_object();
         api_integrator_block_stats(c, d, &ch, &a.r.stats);
         set(d, "quaternion_norm_drift", api_real(c, a.r.max_quaternion_norm_drift));
-        set(d, "selection", api_integrator_block_selection(c, &ch));
+        set(d, "selection", api_integrator_block_selection_run(c, &ch, -1.0, NULL, 0));
         set(out, "diagnostics", d);
         set(out, "cost", json_object());
     } else {

@@ -1,13 +1,13 @@
 /* topple.c — POST /v1/rigid/topple (notes §2.11 HW 4: a box falling off its
  * edge).
  * JSON <-> core only: physics and derivations in core/rigid/rigid_problems.c
- * and mech/rigid_problems.h. */
+ * and mech/rigid/rigid_problems.h. */
 #include <math.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/rigid_problems.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_problems.h"
 
 static void set_real(struct api_call *c, json_t *o, const char *k, double x)
 {

@@ -1,7 +1,7 @@
 /* apply.c — POST /v1/rotation/apply: a rotation applied to vectors and rank-2
  * tensors. JSON <-> core only: the parsing and encoding of a rotation is
  * api/request/rotation_request.c, the mathematics core/rotation/rotation.c
- * (mech/rotation.h). */
+ * (mech/rotation/rotation.h). */
 #include <stdlib.h>
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /* compose.c — POST /v1/rotation/compose: the product of a list of rotations.
  * JSON <-> core only: the parsing and encoding of a rotation is
  * api/request/rotation_request.c, the mathematics core/rotation/rotation.c
- * (mech/rotation.h). */
+ * (mech/rotation/rotation.h). */
 #include <stdlib.h>
 #include <string.h>
 

@@ -1,7 +1,7 @@
 /* convert.c — POST /v1/rotation/convert: one rotation, given in any form, in
  * every representation. JSON <-> core only: the parsing and encoding of a rotation is
  * api/request/rotation_request.c, the mathematics core/rotation/rotation.c
- * (mech/rotation.h). */
+ * (mech/rotation/rotation.h). */
 #include <stdlib.h>
 #include <string.h>
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/euler_rates.h"
+#include "mech/rotation/euler_rates.h"
 
 json_t *api_op_rotation_euler_rates(struct api_call *c, const json_t *body)
 {

@@ -10,9 +10,9 @@
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/scenes.h"
-#include "mech/scenes_first_order.h"
+#include "mech/base/constants.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/scenes_first_order.h"
 #include "ops/scenes/scene_request.h"
 
 json_t *api_op_scenes_falling_object(struct api_call *c, const json_t *body)

@@ -7,7 +7,7 @@
  * the centrifugal term of the displacement is judged by its effect on the
  * answer) and the evidence (energy and constraint drift, a second run at half
  * the steps). What it computes is one call, mech_foucault_scene()
- * (core/frames/foucault_scene.c); this file reads the request and encodes
+ * (core/answers/frames/foucault_scene.c); this file reads the request and encodes
  * the answer. */
 #include <math.h>
 #include <stdio.h>
@@ -16,9 +16,9 @@
 #include "request/earth_rotation.h"
 #include "run/endpoint.h"
 #include "request/integrator_block.h"
-#include "mech/constants.h"
-#include "mech/foucault_scene.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/foucault_scene.h"
+#include "mech/frames/trajectory.h"
 #include "request/trajectory_request.h"
 
 /* diagnostics.selection, the shape every time-evolution operation gives it

@@ -1,14 +1,14 @@
 /* rotating_table.c — POST /v1/scenes/rotating-table: a puck sliding on a
  * turntable, seen from the table and from the room. The checks, buffers and
  * run are one call, mech_rotating_table_scene()
- * (core/frames/rotating_table_scene.c); the model and diagnostics encoders are
+ * (core/answers/frames/rotating_table_scene.c); the model and diagnostics encoders are
  * the trajectory's (api/request/trajectory_request.h). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "run/endpoint.h"
-#include "mech/rotating_table_scene.h"
+#include "mech/answers/frames/rotating_table_scene.h"
 #include "ops/scenes/scene_request.h"
 #include "request/integrator_block.h"
 #include "request/trajectory_request.h"

@@ -12,10 +12,10 @@
 
 #include "request/earth_rotation.h"
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/scenes.h"
-#include "mech/scenes_first_order.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/scenes_first_order.h"
+#include "mech/frames/trajectory.h"
 #include "request/integrator_block.h"
 #include "request/trajectory_request.h"
 

@@ -7,8 +7,8 @@
 #include <jansson.h>
 
 #include "run/endpoint.h"
-#include "mech/scenes.h"
-#include "mech/trajectory.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/trajectory.h"
 #include "request/trajectory_request.h"
 
 /* The relative accuracy asked for: "target_error", else the named

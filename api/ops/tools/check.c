@@ -29,7 +29,7 @@
 #include "check/check_slip.h"
 #include "check/check_tree.h"
 #include "check/grading_nest.h"
-#include "mech/constants.h"
+#include "mech/base/constants.h"
 #include "run/endpoint.h"
 #include "http/respond.h"
 

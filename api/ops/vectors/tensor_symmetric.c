@@ -4,7 +4,7 @@
  * applied to a vector. JSON <-> core only; the mathematics is
  * core/rigid/sym_tensor.c, whose eigen-solver is /v1/rigid/inertia's. */
 #include "run/endpoint.h"
-#include "mech/sym_tensor.h"
+#include "mech/rigid/sym_tensor.h"
 
 static struct mech_mat3 mat3_of(const json_t *rows)
 {

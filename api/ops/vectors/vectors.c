@@ -4,8 +4,8 @@
  * projections, and the scalar and vector triple products.
  * JSON <-> core only; the mathematics is core/rotation/vector_algebra.c. */
 #include "run/endpoint.h"
-#include "mech/constants.h"
-#include "mech/vector_algebra.h"
+#include "mech/base/constants.h"
+#include "mech/rotation/vector_algebra.h"
 
 
 static json_t *vec_or_null(struct api_call *c, int ok, struct mech_vec3 v)

@@ -27,7 +27,7 @@
  * is preferred over verlet's implicit half kick for Coriolis and magnetic
  * forces.
  *
- * Needs sys->lorentz (mech/ode.h). Linear drag (-b v / m) is not of the form
+ * Needs sys->lorentz (mech/ode/ode.h). Linear drag (-b v / m) is not of the form
  * v x w and has no Boris step: such a system leaves lorentz NULL and the
  * step fails with MECH_EINVAL (param "integrator/method"). A system whose
  * forces do not depend on v at all (MECH_ODE_VELOCITY_FREE) and gives no

@@ -52,15 +52,15 @@
  *   restarts its stage iteration from f(t, y) at every call).
  *
  * Internal to libmech (not under core/include/): the public driver is
- * mech/ode.h. Every method fills `reference`; see MECH_INTEGRATOR_* flags.
+ * mech/ode/ode.h. Every method fills `reference`; see MECH_INTEGRATOR_* flags.
  */
 #ifndef MECH_INTEGRATORS_INTEGRATOR_H
 #define MECH_INTEGRATORS_INTEGRATOR_H
 
 #include <stddef.h>
 
-#include "mech/ode.h"
-#include "mech/status.h"
+#include "mech/ode/ode.h"
+#include "mech/base/status.h"
 
 /* Descriptor flags. The catalog's "implicit" is !MECH_INTEGRATOR_EXPLICIT
  * (registry.c): a method that solves implicit equations for SOME systems

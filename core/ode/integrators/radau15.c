@@ -555,6 +555,17 @@ static enum mech_status radau_evolve(void *ws, const struct mech_ode_system *sys
                                   "radau15: step size underflow at t = %.9g s", *t);
         double pc = 0.0;
         st = radau_iterate(w, S, sys, *t + w->ct, dt, RADAU15_PC_MAX_EVOLVE, stats, err, &pc);
+        if (st == MECH_ENUMERIC && w->dt_done == 0.0) {
+            /* the first step's guess ((next sample - t) / 1000) can be far
+             * longer than the motion's time scale: its stages then leave the
+             * domain (Henon-Heiles over 3e4 with 11 samples: a 3 s first step,
+             * a non-finite acceleration). Rejected and redone at a quarter,
+             * like a step whose fixed point diverged. */
+            stats->rejected_steps++;
+            radau_zero_b(w, S);
+            dt *= 0.25;
+            continue;
+        }
         if (st != MECH_OK) return st;
         double dt_new;
         if (!(pc <= RADAU15_PC_DIVERGED)) {

@@ -11,7 +11,7 @@
  * integrator for long-term gravitational simulations", MNRAS 452 (2015)
  * 376-388 (drift-kick-drift form, Kepler solver in universal variables).
  *
- * The split (mech/ode.h, struct mech_ode_kepler_split): H = H_K + H_P with
+ * The split (mech/ode/ode.h, struct mech_ode_kepler_split): H = H_K + H_P with
  * H_K = v^2/2 - gm/|x - c| (solved exactly: mech_kepler_drift, universal
  * variables, any conic) and the perturbation P = a - a_Kepler. One step
  * (Strang / drift-kick-drift):
@@ -54,7 +54,7 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/kepler.h"
+#include "mech/ode/kepler.h"
 
 enum { WH_MAX_KICK_ITERATIONS = 50 };
 

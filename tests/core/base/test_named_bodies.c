@@ -11,7 +11,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/named_bodies.h"
+#include "mech/base/named_bodies.h"
 #include "testlib.h"
 
 int main(void)

@@ -1,4 +1,4 @@
-/* test_vec.c — mech_vec3_norm (mech/vec.h) against long double at every
+/* test_vec.c — mech_vec3_norm (mech/base/vec.h) against long double at every
  * scale, and the trajectory force loop's fast path against its generic loop.
  *
  * mech_vec3_norm takes sqrt(x^2 + y^2 + z^2) where that sum is safely in
@@ -23,9 +23,9 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "mech/trajectory.h"
-#include "mech/constants.h"
-#include "mech/vec.h"
+#include "mech/frames/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/base/vec.h"
 #include "testlib.h"
 
 static long double norm_ld(struct mech_vec3 a)

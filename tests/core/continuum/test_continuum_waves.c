@@ -9,8 +9,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/continuum_waves.h"
-#include "mech/constants.h"
+#include "mech/continuum/continuum_waves.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_string(void)

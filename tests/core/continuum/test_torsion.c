@@ -10,9 +10,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/continuum_waves.h"
-#include "mech/torsion.h"
+#include "mech/base/constants.h"
+#include "mech/continuum/continuum_waves.h"
+#include "mech/continuum/torsion.h"
 #include "testlib.h"
 
 

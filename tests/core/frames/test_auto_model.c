@@ -16,9 +16,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/reference.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

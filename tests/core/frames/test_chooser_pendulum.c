@@ -11,9 +11,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/chooser_pendulum.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/frames/chooser_pendulum.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "chooser_scenes.h"
 #include "testlib.h"
 

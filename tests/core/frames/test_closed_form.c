@@ -1,5 +1,5 @@
 /* test_closed_form.c — trajectories answered from the exact solution
- * (mech/closed_form.h), against independent computations:
+ * (mech/frames/closed_form.h), against independent computations:
  *   Kepler e = 0, 0.5, 0.9, 0.999, hyperbolic e = 1.5 and a radial escape
  *   against an integration at round-off tolerance (rk8pd, rtol 1e-14), the
  *   invariants and the universal Kepler residual as its evidence, 0 steps;
@@ -22,10 +22,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/closed_form.h"
-#include "mech/constants.h"
-#include "mech/reference.h"
-#include "mech/trajectory.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
+#include "mech/frames/reference.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 #define NS 201

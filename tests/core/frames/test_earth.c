@@ -10,9 +10,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/earth.h"
-#include "mech/constants.h"
-#include "mech/effective_force.h"
+#include "mech/frames/earth.h"
+#include "mech/base/constants.h"
+#include "mech/frames/effective_force.h"
 #include "testlib.h"
 
 static const struct mech_earth_sphere EARTH = {MECH_EARTH_GM, MECH_EARTH_RADIUS_MEAN,

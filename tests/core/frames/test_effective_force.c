@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/effective_force.h"
-#include "mech/constants.h"
+#include "mech/frames/effective_force.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 #define CHECK_VEC(got, want, rtol, atol)                                                           \

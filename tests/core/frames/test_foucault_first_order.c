@@ -19,8 +19,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/foucault_first_order.h"
+#include "mech/base/constants.h"
+#include "mech/frames/foucault_first_order.h"
 #include "testlib.h"
 
 static const double W_NOTES = 7.2921159e-5;

@@ -21,10 +21,10 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/ode.h"
-#include "mech/constants.h"
-#include "mech/pendulum.h"
-#include "mech/trajectory.h"
+#include "mech/ode/ode.h"
+#include "mech/base/constants.h"
+#include "mech/frames/pendulum.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

@@ -1,4 +1,4 @@
-/* test_reference.c — the reference solutions of mech/reference.h against
+/* test_reference.c — the reference solutions of mech/frames/reference.h against
  * independent computations:
  *   Kepler (universal variables) vs Kepler's equation solved here for the
  *   ellipse (M = E - e sin E), the hyperbola (M = e sinh H - H) and Barker's
@@ -17,9 +17,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/reference.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "kepler_ld.h"
 #include "testlib.h"
 

@@ -17,10 +17,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/closed_form.h"
-#include "mech/constants.h"
-#include "mech/reference.h"
-#include "mech/trajectory.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
+#include "mech/frames/reference.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 enum { NS = 101 };

@@ -1,6 +1,6 @@
 /* test_relativistic_trajectory.c — special-relativistic dynamics in
  * mech_trajectory_integrate (state (r, u = gamma v)) against the exact
- * uniform-field motions (mech/charged_motion.h) and closed forms written
+ * uniform-field motions (mech/relativity/charged_motion.h) and closed forms written
  * here:
  *   a proton in B = 1 T at beta = 1e-6, beta = 0.8 and gamma = 1e6: gyration
  *   radius gamma m v/(q B), period 2 pi gamma m/(q B), every sample on the
@@ -19,10 +19,10 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/charged_motion.h"
-#include "mech/closed_form.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/relativity/charged_motion.h"
+#include "mech/frames/closed_form.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 #define QP 1.602176634e-19   /* C, exact SI */
@@ -105,7 +105,7 @@ static void helix(double u, double tol)
     }
     CHECK_CLOSE(worst, 0, 0, tol);
     CHECK_CLOSE(worst_u, 0, 0, tol);
-    /* the reference report (the exact motion of mech/charged_motion.h) agrees */
+    /* the reference report (the exact motion of mech/relativity/charged_motion.h) agrees */
     CHECK_CLOSE(r.reference.max_relative_position_error, 0, 0, tol);
     /* energy (gamma - 1) m c^2 conserved */
     CHECK(r.invariant.conserved);
@@ -187,7 +187,7 @@ int main(void)
     }
 
     /* E x B drift at 0.8 c (E = 0.8 c B), and uniform gravity with B (the
-     * closed form's constant force): integration against mech/charged_motion.h */
+     * closed form's constant force): integration against mech/relativity/charged_motion.h */
     {
         const struct mech_force f = lorentz(V(0, 0.8 * c, 0), V(0, 0, 1.0));
         struct mech_trajectory_problem p = proton(&f, 1, 3e-7);

@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 static struct mech_force lorentz_b(void)

@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/rotating_liquid.h"
-#include "mech/constants.h"
+#include "mech/frames/rotating_liquid.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 /* Volume under the surface by composite Simpson on r h(r) (n even). The

@@ -23,8 +23,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/scenes.h"
+#include "mech/base/constants.h"
+#include "mech/frames/scenes.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

@@ -21,8 +21,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/scenes.h"
-#include "mech/constants.h"
+#include "mech/frames/scenes.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

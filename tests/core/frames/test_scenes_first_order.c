@@ -17,9 +17,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/scenes.h"
-#include "mech/scenes_first_order.h"
+#include "mech/base/constants.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/scenes_first_order.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;

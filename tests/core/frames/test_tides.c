@@ -11,9 +11,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/earth.h"
-#include "mech/constants.h"
-#include "mech/tides.h"
+#include "mech/frames/earth.h"
+#include "mech/base/constants.h"
+#include "mech/frames/tides.h"
 #include "testlib.h"
 
 /* Legendre-series tidal acceleration in units of GM/d²: rad, tan; and the

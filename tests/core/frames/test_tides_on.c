@@ -1,5 +1,5 @@
 /* test_tides_on.c — tides raised on a body other than the Earth (the `on`
- * body of mech/tides_answer.h) and the named-body sets, against closed forms:
+ * body of mech/answers/frames/tides_answer.h) and the named-body sets, against closed forms:
  *   the Earth raising tides on the Moon (GM_E = 3.986004418e14 m^3/s^2 at
  *   d = 3.844e8 m, point on the Moon's surface r = 1.7374e6 m below the Earth):
  *     first order 2 GM_E r / d^3 = 2.4356e-5 m/s^2 radial, exactly
@@ -13,8 +13,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/tides_answer.h"
+#include "mech/base/constants.h"
+#include "mech/answers/frames/tides_answer.h"
 #include "testlib.h"
 
 static const double GME = 3.986004418e14, D = 3.844e8, RM = 1.7374e6;

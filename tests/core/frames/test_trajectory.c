@@ -16,8 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/trajectory.h"
-#include "mech/constants.h"
+#include "mech/frames/trajectory.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static const double G0 = 9.80665;
@@ -502,7 +502,7 @@ static void test_long_verlet(void)
  * same steps, where the planar run used to measure x and y as separate
  * particles, each passing through a = 0 twice per orbit, and took 79.6 steps
  * per orbit against 51.2. Both meet the exact Kepler solution (universal
- * variables, mech/reference.h) to below rtol relative to the orbit's size. */
+ * variables, mech/frames/reference.h) to below rtol relative to the orbit's size. */
 static void test_radau15_planar_steps(void)
 {
     struct mech_force f = {.type = MECH_FORCE_CENTRAL_GRAVITY};

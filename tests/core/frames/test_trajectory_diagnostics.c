@@ -20,9 +20,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/reference.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 enum { NS = 401 };

@@ -12,8 +12,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/trajectory.h"
-#include "mech/trajectory_plan.h"
+#include "mech/frames/trajectory.h"
+#include "mech/frames/trajectory_plan.h"
 #include "testlib.h"
 
 #define NS 61

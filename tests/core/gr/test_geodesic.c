@@ -1,4 +1,4 @@
-/* test_geodesic.c — mech/geodesic.h: exact references against 40-digit
+/* test_geodesic.c — mech/gr/geodesic.h: exact references against 40-digit
  * quadratures (mpmath) — the periapsis advance of r_p = 10, r_a = 30 and of
  * Mercury, light deflection at b = 6 ... 1e6 GM/c^2 and the Sun's limb —
  * the elliptic and quadrature routes against each other; integrations: a
@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/geodesic.h"
-#include "mech/constants.h"
-#include "mech/schwarzschild.h"
+#include "mech/gr/geodesic.h"
+#include "mech/base/constants.h"
+#include "mech/gr/schwarzschild.h"
 #include "testlib.h"
 
 enum { NS = 2001 };

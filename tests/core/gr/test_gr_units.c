@@ -1,4 +1,4 @@
-/* test_gr_units.c — mech/gr_units.h: GM/c^2 and GM/c^3 of the Sun and the
+/* test_gr_units.c — mech/gr/gr_units.h: GM/c^2 and GM/c^3 of the Sun and the
  * Earth against textbook values (the Sun's Schwarzschild radius 2953.25 m and
  * GM/c^3 = 4.92549 us, IAU 2015 B3's nominal T_sun = 4.925490947641267 us with
  * GM = 1.3271244e20; the Earth's r_s = 8.870 mm), a mass in kg against the
@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/gr_units.h"
+#include "mech/base/constants.h"
+#include "mech/gr/gr_units.h"
 #include "testlib.h"
 
 static void test_values(void)

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/radial_infall.h"
-#include "mech/constants.h"
+#include "mech/gr/radial_infall.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_values(void)

@@ -1,4 +1,4 @@
-/* test_schwarzschild.c — mech/schwarzschild.h: static clocks and red shift
+/* test_schwarzschild.c — mech/gr/schwarzschild.h: static clocks and red shift
  * (closed forms, and the series 1 - sqrt(1 - x) = x/2 + x^2/8 + x^3/16 for
  * x = 1e-12 where the naive formula keeps no digit), circular orbits at the
  * ISCO and inside the photon sphere, the extrema of V_eff (L = 4: r = 4, 12,
@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/schwarzschild.h"
-#include "mech/constants.h"
+#include "mech/gr/schwarzschild.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 /* Binding efficiency 1 - E of circular orbits (50-digit Decimal of

@@ -1,4 +1,4 @@
-/* test_apsides.c — mech/apsides.h: the pericentres of a Kepler orbit
+/* test_apsides.c — mech/hamiltonian/apsides.h: the pericentres of a Kepler orbit
  * (H = p_r^2/2 + p_phi^2/(2 r^2) - 1/r) started at its apocentre r = a(1 + e)
  * lie at r = a(1 - e), phi = pi + 2 pi k, t = T/2 + k T with T = 2 pi a^(3/2),
  * and the apsidal angle is pi; the isotropic oscillator's (n = 2) is pi/2 for
@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/apsides.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/apsides.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static struct mech_ham_system central(double k, double n)

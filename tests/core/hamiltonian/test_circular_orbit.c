@@ -14,8 +14,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/circular_orbit.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/circular_orbit.h"
 #include "testlib.h"
 
 

@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/coupled_oscillations.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/coupled_oscillations.h"
 #include "testlib.h"
 
 #define NM MECH_COUPLED_MAX_DOF

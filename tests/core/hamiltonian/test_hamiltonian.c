@@ -1,4 +1,4 @@
-/* test_hamiltonian.c — the catalog of mech/hamiltonian.h and its flow against
+/* test_hamiltonian.c — the catalog of mech/hamiltonian/hamiltonian.h and its flow against
  * closed forms: oscillator, pendulum period (complete elliptic integral),
  * spherical pendulum's conical motion, the cylinder, circular Kepler and
  * power-law orbits (also at solar-system scale); the variational equations
@@ -10,8 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/hamiltonian.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/hamiltonian.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static struct mech_budget budget(void)

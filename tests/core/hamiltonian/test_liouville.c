@@ -1,4 +1,4 @@
-/* test_liouville.c — Liouville's theorem measured by mech/liouville.h:
+/* test_liouville.c — Liouville's theorem measured by mech/hamiltonian/liouville.h:
  * the oscillator's energy ellipse (area 2 pi E / omega) over 1000 periods with
  * symplectic methods (conserved to 1e-10) and rk4 at a coarse step (not); a
  * pendulum blob whose edges bend (the quadrature keeps the area, the vertex
@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/liouville.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/liouville.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 enum { NS = 5 };

@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/phase_area.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/phase_area.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_pendulum(void)

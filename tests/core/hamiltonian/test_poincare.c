@@ -1,4 +1,4 @@
-/* test_poincare.c — Poincaré sections of mech/poincare.h: Hénon–Heiles
+/* test_poincare.c — Poincaré sections of mech/hamiltonian/poincare.h: Hénon–Heiles
  * crossings on x = 0 (on the section, on the energy surface, and the same
  * points from an independent adaptive method), the spherical pendulum's
  * conical motion (every crossing of phi = 0 at theta0, p_theta = 0, at
@@ -9,8 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/poincare.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/poincare.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 enum { MAXC = 400 };

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/rotating_hamiltonian.h"
+#include "mech/hamiltonian/rotating_hamiltonian.h"
 #include "testlib.h"
 
 /* m = 2, ω = 3 z, r = (1, 0, 0), v = (0, 1, 0) in the rotating frame:

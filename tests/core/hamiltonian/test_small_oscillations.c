@@ -11,8 +11,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/small_oscillations.h"
-#include "mech/constants.h"
+#include "mech/hamiltonian/small_oscillations.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static double veff(const struct mech_potential_term *t, size_t n, double m, double l, double r)

@@ -1,4 +1,4 @@
-/* test_state_scale.c — mech/ham_state_scale.h against hand-worked cases:
+/* test_state_scale.c — mech/hamiltonian/state_scale.h against hand-worked cases:
  * the oscillator's inertia is m, so the scale is min(|q|, |p|, tau|p|/m,
  * m|q|/tau); the central system's p_phi has inertia m r^2 (d2H/dp_phi^2 =
  * 1/(m r^2)); zero components are skipped; a state at rest at the origin has
@@ -6,7 +6,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/ham_state_scale.h"
+#include "mech/hamiltonian/state_scale.h"
 #include "testlib.h"
 
 int main(void)

@@ -1,4 +1,4 @@
-/* test_steady_motion.c — mech/ham_steady_motion.h checked by a second method:
+/* test_steady_motion.c — mech/hamiltonian/steady_motion.h checked by a second method:
  * Hamilton's equations themselves (mech_ham_rhs) at the steady state must
  * give p_theta' = 0 (conical pendulum) and p_r' = 0 (circular orbit), with
  * phi' the answer's rate; Kepler's third law T = 2 pi sqrt(m r^3 / |k|) for
@@ -7,8 +7,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/ham_steady_motion.h"
+#include "mech/base/constants.h"
+#include "mech/hamiltonian/steady_motion.h"
 #include "testlib.h"
 
 static struct mech_ham_system sys(enum mech_ham_kind kind)

@@ -21,8 +21,8 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/constants.h"
-#include "mech/ode.h"
+#include "mech/base/constants.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 static const char *const ADAPTIVE[] = {"rk8pd", "rkck", "rkf45", "radau15", "msbdf"};

@@ -15,10 +15,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/chooser.h"
-#include "mech/constants.h"
-#include "mech/scenes.h"
-#include "mech/trajectory.h"
+#include "mech/ode/chooser.h"
+#include "mech/base/constants.h"
+#include "mech/frames/scenes.h"
+#include "mech/frames/trajectory.h"
 #include "chooser_scenes.h"
 #include "testlib.h"
 

@@ -1,5 +1,5 @@
 /* test_chooser_pilot.c — the chooser's pilot (core/ode/chooser_pilot.c,
- * mech/chooser_pilot.h) on a synthetic system whose cost and error are known
+ * mech/ode/chooser_pilot.h) on a synthetic system whose cost and error are known
  * in closed form: a run over fraction f of the span costs E_TRUE f
  * evaluations at the chosen method's setting (rk8pd), RKF_FACTOR times the
  * table's prediction for rkf45, and ends at y = 1e15 tol f. Checked:
@@ -14,8 +14,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/chooser.h"
-#include "mech/chooser_pilot.h"
+#include "mech/ode/chooser.h"
+#include "mech/ode/chooser_pilot.h"
 #include "testlib.h"
 
 struct fake {

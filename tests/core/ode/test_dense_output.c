@@ -1,5 +1,5 @@
 /* test_dense_output.c — samples inside an accepted step taken from the
- * driver's Hermite interpolant (mech/ode.h, "dense output") instead of a
+ * driver's Hermite interpolant (mech/ode/ode.h, "dense output") instead of a
  * sub-step, for second-order systems under rk8pd, rkck and rkf45:
  *   - the same problem given without its second-order form (rhs only) is
  *     sampled by sub-steps: both runs take the same accepted steps and end
@@ -19,8 +19,8 @@
 #include <string.h>
 
 #include "kepler_ld.h"
-#include "mech/constants.h"
-#include "mech/ode.h"
+#include "mech/base/constants.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 static const char *const METHODS[] = {"rk8pd", "rkck", "rkf45"};

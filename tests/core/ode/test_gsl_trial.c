@@ -19,8 +19,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "mech/budget.h"
-#include "mech/ode.h"
+#include "mech/base/budget.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 struct cliff {

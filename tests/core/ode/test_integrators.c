@@ -1,5 +1,5 @@
 /* test_integrators.c — the stepper interface, the registry and the ODE
- * driver (mech/ode.h), on problems with closed forms:
+ * driver (mech/ode/ode.h), on problems with closed forms:
  *   harmonic oscillator x'' = -x (x = cos t), with the observed convergence
  *   order of rk4 (4) and verlet (2) from two step sizes (every fixed-step
  *   method's order on two problems is in test_symplectic.c);
@@ -15,8 +15,8 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/constants.h"
-#include "mech/ode.h"
+#include "mech/base/constants.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 /* ---- harmonic oscillator, y = (x, v), x'' = -w^2 x ---- */

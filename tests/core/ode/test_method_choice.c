@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/accuracy.h"
-#include "mech/method_choice.h"
-#include "mech/ode.h"
+#include "mech/ode/accuracy.h"
+#include "mech/ode/method_choice.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 #define SPAN 100.0

@@ -1,6 +1,6 @@
 /* test_symplectic.c — every fixed-step method of the registry (euler,
  * symplectic_euler, rk4, verlet, yoshida4, yoshida6, gauss4, gauss6, boris)
- * against closed forms, through the public driver (mech/ode.h):
+ * against closed forms, through the public driver (mech/ode/ode.h):
  *
  *   - observed order of convergence from two step sizes (h, h/2) on three
  *     problems with exact solutions, checked against the declared order:
@@ -35,8 +35,8 @@
 #include <string.h>
 
 #include "ode/integrators/integrator.h"
-#include "mech/constants.h"
-#include "mech/ode.h"
+#include "mech/base/constants.h"
+#include "mech/ode/ode.h"
 #include "testlib.h"
 
 static const char *const FIXED[] = {"euler",    "symplectic_euler", "rk4",

@@ -19,9 +19,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/reference.h"
-#include "mech/constants.h"
-#include "mech/trajectory.h"
+#include "mech/frames/reference.h"
+#include "mech/base/constants.h"
+#include "mech/frames/trajectory.h"
 #include "testlib.h"
 
 /* ---- an independent Kepler solution (perifocal frame, long double) ------- */

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/boost.h"
-#include "mech/constants.h"
+#include "mech/relativity/boost.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static const double C_LIGHT = MECH_C; /* m/s, exact by definition */

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/charged_lagrangian.h"
-#include "mech/constants.h"
+#include "mech/relativity/charged_lagrangian.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 /* m = 1 kg, q = 2 C, beta = 0.6 x (gamma = 5/4), phi = 3 V, A = (4, 0, 0) T m:

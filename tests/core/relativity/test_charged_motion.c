@@ -16,8 +16,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/charged_motion.h"
-#include "mech/constants.h"
+#include "mech/relativity/charged_motion.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 #define QP 1.602176634e-19     /* C, exact SI */
@@ -27,9 +27,9 @@ static const double c = MECH_C;
 
 static struct mech_vec3 V(double x, double y, double z) { return mech_vec3_make(x, y, z); }
 
-static struct mech_charged_state at_t(const struct mech_charged_motion *m, double t)
+static struct mech_charged_motion_state at_t(const struct mech_charged_motion *m, double t)
 {
-    struct mech_charged_state s;
+    struct mech_charged_motion_state s;
     struct mech_error e;
     mech_error_clear(&e);
     enum mech_status st = mech_charged_motion_at_lab_time(m, t, &s, &e);
@@ -58,7 +58,7 @@ static void helix(double u, double tol)
     const double R = u / Om, T = 2.0 * MECH_PI * gamma / Om;
     /* u x Omega: v along +x, Omega along +z -> force along -y: the centre is
      * at (0, -R); a quarter period later the particle is at (R, -R) */
-    struct mech_charged_state s = at_t(&m, 0.25 * T);
+    struct mech_charged_motion_state s = at_t(&m, 0.25 * T);
     CHECK_CLOSE(s.r.x, R, tol, 0);
     CHECK_CLOSE(s.r.y, -R, tol, 0);
     CHECK_CLOSE(s.r.z, 0.25 * u / gamma * 0.25 * T, tol, 0);
@@ -82,7 +82,7 @@ static void electric(double a, double ux, double uy, double t, double tol)
     CHECK(mech_charged_motion_init(V(a, 0, 0), V(0, 0, 0), V(1, 2, 3), V(ux, uy, 0), &m, NULL) ==
           MECH_OK);
     CHECK_EQ_INT(m.kind, MECH_CHARGED_ELECTRIC);
-    struct mech_charged_state s = at_t(&m, t);
+    struct mech_charged_motion_state s = at_t(&m, t);
     const double uxt = ux + a * t;
     check_vec_close(s.u, V(uxt, uy, 0), tol * fmax(fabs(uxt), fabs(uy)));
     const double g0 = sqrt(1.0 + (ux * ux + uy * uy) / (c * c));
@@ -99,7 +99,7 @@ static void electric(double a, double ux, double uy, double t, double tol)
 /* Central-difference check of the equation of motion at lab time t. */
 static void eom_residual(const struct mech_charged_motion *m, double t, double h, double tol)
 {
-    struct mech_charged_state s0 = at_t(m, t), sm = at_t(m, t - h), sp = at_t(m, t + h);
+    struct mech_charged_motion_state s0 = at_t(m, t), sm = at_t(m, t - h), sp = at_t(m, t + h);
     const struct mech_vec3 dudt = mech_vec3_scale(mech_vec3_sub(sp.u, sm.u), 0.5 / h);
     const struct mech_vec3 drdt = mech_vec3_scale(mech_vec3_sub(sp.r, sm.r), 0.5 / h);
     const struct mech_vec3 want = mech_vec3_add(m->eps, mech_vec3_cross(s0.v, m->omega));
@@ -108,7 +108,7 @@ static void eom_residual(const struct mech_charged_motion *m, double t, double h
     check_vec_close(drdt, s0.v, tol * c);
     CHECK_CLOSE((sp.tau - sm.tau) / (2.0 * h), 1.0 / s0.gamma, tol, 0);
     /* the proper-time evaluation gives back the lab time */
-    struct mech_charged_state q;
+    struct mech_charged_motion_state q;
     CHECK(mech_charged_motion_at_proper_time(m, s0.tau, &q, NULL) == MECH_OK);
     CHECK_CLOSE(q.t, t, 1e-13, 0);
     check_vec_close(q.r, s0.r, 1e-12 * (mech_vec3_norm(s0.r) + c * t));
@@ -136,7 +136,7 @@ int main(void)
         CHECK(mech_charged_motion_init(V(a, 0, 0), V(0, 0, 0), V(0, 0, 0), V(0, 0, 0), &m,
                                        NULL) == MECH_OK);
         const double t = 1e6 * c / a;
-        struct mech_charged_state s = at_t(&m, t);
+        struct mech_charged_motion_state s = at_t(&m, t);
         CHECK_CLOSE(s.tau, c / a * asinh(a * t / c), 1e-13, 0);
         CHECK_CLOSE(s.gamma, sqrt(1.0 + 1e12), 1e-13, 0);
     }
@@ -154,7 +154,7 @@ int main(void)
         const double gw = 1.0 / sqrt(1.0 - bw * bw);
         CHECK_CLOSE(m.omega_prime, Om / gw, 1e-14, 0); /* B' = B/gamma_w */
         const double T = 2.0 * MECH_PI * gw * gw * gw / Om;
-        struct mech_charged_state s = at_t(&m, T);
+        struct mech_charged_motion_state s = at_t(&m, T);
         CHECK_CLOSE(s.r.x, bw * c * T, 1e-11, 0);
         CHECK_CLOSE(s.r.y, 0, 0, 1e-11 * bw * c * T);
         CHECK_CLOSE(mech_vec3_norm(s.u), 0, 0, 1e-11 * bw * c);
@@ -184,7 +184,7 @@ int main(void)
         CHECK_EQ_INT(m.kind, MECH_CHARGED_PARALLEL);
         eom_residual(&m, 1e-7, 1e-12, 1e-6);
         /* proper-time helix: the transverse proper speed keeps its size */
-        struct mech_charged_state s;
+        struct mech_charged_motion_state s;
         CHECK(mech_charged_motion_at_proper_time(&m, 3e-8, &s, NULL) == MECH_OK);
         CHECK_CLOSE(hypot(s.u.x, s.u.y), 2e8, 1e-14, 0);
         CHECK_CLOSE(atan2(s.u.y, s.u.x), -1e8 * 3e-8, 1e-13, 0);

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/decay_estimate.h"
+#include "mech/relativity/decay_estimate.h"
 #include "testlib.h"
 
 static void test_neutron(void)

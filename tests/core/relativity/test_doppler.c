@@ -9,7 +9,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/doppler.h"
+#include "mech/relativity/doppler.h"
 #include "testlib.h"
 
 static struct mech_boost beta_boost(double x, double y, double z)

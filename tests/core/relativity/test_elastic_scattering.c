@@ -13,9 +13,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/constants.h"
-#include "mech/elastic_scattering.h"
-#include "mech/kinematics.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/elastic_scattering.h"
+#include "mech/relativity/kinematics.h"
 #include "testlib.h"
 
 static const double MP = 938.27208816, ME = 0.51099895;

@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/doppler.h"
-#include "mech/em_fields.h"
+#include "mech/relativity/doppler.h"
+#include "mech/relativity/em_fields.h"
 #include "testlib.h"
 
 static struct mech_em_boosted boost_fields(const struct mech_boost *b, struct mech_vec3 e,

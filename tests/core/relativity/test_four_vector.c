@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "mech/four_vector.h"
+#include "mech/relativity/four_vector.h"
 #include "testlib.h"
 
 static void test_dot(void)

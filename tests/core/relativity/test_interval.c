@@ -8,8 +8,8 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "mech/interval.h"
-#include "mech/constants.h"
+#include "mech/relativity/interval.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static double worst_s2;

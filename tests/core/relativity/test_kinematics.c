@@ -3,16 +3,16 @@
  * (Python decimal; the values are quoted with their derivation), the notes'
  * worked examples and end-of-chapter problems (π⁰ decay, neutron decay,
  * Compton shift, problems 10, 11, 12, 18, 19), boost invariance through
- * mech/boost.h, and the extremes: massless daughters, nearly collinear
+ * mech/relativity/boost.h, and the extremes: massless daughters, nearly collinear
  * photons, γ = 1e6 parents, a parent at 1e-12 c, thresholds, unphysical input. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdio.h>
 
-#include "mech/boost.h"
-#include "mech/constants.h"
-#include "mech/kinematics.h"
-#include "mech/particles.h"
+#include "mech/relativity/boost.h"
+#include "mech/base/constants.h"
+#include "mech/relativity/kinematics.h"
+#include "mech/relativity/particles.h"
 #include "testlib.h"
 
 static const double M_PI0 = 134.9768, M_PIC = 139.57039, M_MU = 105.6583755;
@@ -320,7 +320,7 @@ static void test_invariant_mass(void)
     CHECK(s.mass == 0 && !s.has_rest_frame);
 }
 
-/* Boost invariance through mech/boost.h: boost a system and recompute M. */
+/* Boost invariance through mech/relativity/boost.h: boost a system and recompute M. */
 static void test_boost_invariance(void)
 {
     struct mech_budget bud = mech_budget_make(1000, 10.0);

@@ -14,7 +14,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/mass_energy.h"
+#include "mech/relativity/mass_energy.h"
 #include "testlib.h"
 
 static struct mech_mass_energy_answer A;

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/michelson_morley.h"
-#include "mech/constants.h"
+#include "mech/relativity/michelson_morley.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_notes(void)

@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/particle_state.h"
-#include "mech/constants.h"
+#include "mech/relativity/particle_state.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static struct mech_particle_state state(double m, enum mech_particle_given g, double x)

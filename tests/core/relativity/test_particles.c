@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/particles.h"
+#include "mech/relativity/particles.h"
 #include "testlib.h"
 
 static void test_table(void)

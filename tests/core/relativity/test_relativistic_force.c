@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/relativistic_force.h"
-#include "mech/constants.h"
+#include "mech/relativity/relativistic_force.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_closed_form(void)

@@ -7,8 +7,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/rocket.h"
-#include "mech/constants.h"
+#include "mech/relativity/rocket.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static void test_values(void)

@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/telescope.h"
+#include "mech/relativity/telescope.h"
 #include "testlib.h"
 
 static void test_twin(void)

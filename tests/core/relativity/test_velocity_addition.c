@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/velocity_addition.h"
+#include "mech/relativity/velocity_addition.h"
 #include "testlib.h"
 
 static double worst_gm1, worst_dir, worst_wigner, worst_rot;

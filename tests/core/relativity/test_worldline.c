@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/worldline.h"
-#include "mech/constants.h"
+#include "mech/relativity/worldline.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static struct mech_budget bud;

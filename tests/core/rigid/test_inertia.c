@@ -1,4 +1,4 @@
-/* test_inertia.c — mech/inertia.h against the notes' worked examples (ch. 2:
+/* test_inertia.c — mech/rigid/inertia.h against the notes' worked examples (ch. 2:
  * dumbbell, cube about its centre and about a corner), the textbook closed
  * forms of every shape, rotated bodies, extreme scales, degenerate tensors,
  * angular momentum / kinetic energy by hand, and typed errors. */
@@ -6,9 +6,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/inertia.h"
-#include "mech/constants.h"
-#include "mech/rotation.h"
+#include "mech/rigid/inertia.h"
+#include "mech/base/constants.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 static unsigned long rnd_state = 987654321UL;

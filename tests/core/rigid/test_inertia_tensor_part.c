@@ -8,9 +8,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/budget.h"
-#include "mech/inertia.h"
-#include "mech/rotation.h"
+#include "mech/base/budget.h"
+#include "mech/rigid/inertia.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 static struct mech_budget budget(void)

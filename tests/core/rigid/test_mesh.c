@@ -1,4 +1,4 @@
-/* test_mesh.c — mech/mesh.h and the "mesh" part of mech/inertia.h.
+/* test_mesh.c — mech/rigid/mesh.h and the "mesh" part of mech/rigid/inertia.h.
  *
  * Meshes are generated here: a box (12 triangles) and solids of revolution
  * (a profile polygon in the (rho, z) half-plane turned through N segments):
@@ -25,10 +25,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/inertia.h"
-#include "mech/constants.h"
-#include "mech/mesh.h"
-#include "mech/rotation.h"
+#include "mech/rigid/inertia.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/mesh.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 /* ---- mesh generators ----------------------------------------------------- */

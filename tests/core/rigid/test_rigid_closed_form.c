@@ -14,10 +14,10 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mech/attitude.h"
-#include "mech/constants.h"
-#include "mech/closed_form.h"
-#include "mech/rigid_rotation.h"
+#include "mech/rotation/attitude.h"
+#include "mech/base/constants.h"
+#include "mech/frames/closed_form.h"
+#include "mech/rigid/rigid_rotation.h"
 #include "testlib.h"
 
 #define NS 101
@@ -252,7 +252,7 @@ static void test_budget(void)
  * symmetric top and a steady spin; spans from a fraction of a period to 1e4 s;
  * 2 .. 1001 samples (samples closer than a period continue the previous
  * sample's quadrature, farther ones start from the table). Stated factor
- * 1.5 (mech/rigid_closed_form.h); away from the separatrix every piece is
+ * 1.5 (mech/rigid/rigid_closed_form.h); away from the separatrix every piece is
  * accepted at its first level and the count is exact; near it (m = 0.995,
  * 0.999998) a few pieces take a halving (measured: within 1.11x). */
 static void test_cost_prediction(void)

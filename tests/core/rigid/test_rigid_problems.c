@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/rigid_problems.h"
-#include "mech/constants.h"
+#include "mech/rigid/rigid_problems.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 /* Euler's equations, torque-free, I1 = I2 = ip: w' = f(w) */

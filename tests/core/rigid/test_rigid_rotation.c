@@ -1,4 +1,4 @@
-/* test_rigid_rotation.c — mech/attitude.h and mech/rigid_rotation.h:
+/* test_rigid_rotation.c — mech/rotation/attitude.h and mech/rigid/rigid_rotation.h:
  * quaternion helpers against core/rotation/rotation.c; the exact torque-free solution
  * checked independently (it satisfies Euler's equations by central
  * differences, keeps L^2 and 2E, starts at w0), for both elliptic cases, the
@@ -10,10 +10,10 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/attitude.h"
-#include "mech/constants.h"
-#include "mech/rigid_rotation.h"
-#include "mech/rotation.h"
+#include "mech/rotation/attitude.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/rigid_rotation.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 static double mat_diff(struct mech_mat3 a, struct mech_mat3 b)

@@ -9,9 +9,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mech/ode.h"
-#include "mech/constants.h"
-#include "mech/stability.h"
+#include "mech/ode/ode.h"
+#include "mech/base/constants.h"
+#include "mech/rigid/stability.h"
 #include "testlib.h"
 
 /* Torque-free Euler equations (notes §2.8): I1 w1' = (I2 - I3) w2 w3, cyclic. */

@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/rotation.h"
-#include "mech/sym_tensor.h"
+#include "mech/rotation/rotation.h"
+#include "mech/rigid/sym_tensor.h"
 #include "testlib.h"
 
 static double det_perm(struct mech_mat3 m)

@@ -1,4 +1,4 @@
-/* test_top.c — mech/top.h, the heavy symmetric top (notes §2.10): steady
+/* test_top.c — mech/rigid/top.h, the heavy symmetric top (notes §2.10): steady
  * precession (the quadratic's slow root and the gyroscopic approximation
  * M g h / (I3 w3)), turning points of the cubic against the measured extremes
  * of tight runs, conservation of p_phi, p_psi and E, a sleeping top above and
@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/top.h"
-#include "mech/constants.h"
+#include "mech/rigid/top.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 enum { NS = 20001 };

@@ -10,9 +10,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/euler_rates.h"
-#include "mech/constants.h"
-#include "mech/rotation.h"
+#include "mech/rotation/euler_rates.h"
+#include "mech/base/constants.h"
+#include "mech/rotation/rotation.h"
 #include "testlib.h"
 
 static struct mech_mat3 r_at(const double a[3], const double d[3], double t)

@@ -1,11 +1,11 @@
-/* test_rotation.c — the four orientation forms of mech/rotation.h agree on the
+/* test_rotation.c — the four orientation forms of mech/rotation/rotation.h agree on the
  * passive convention of the notes (ch. 0, §2.6), and bad input gets typed errors. */
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <string.h>
 
-#include "mech/rotation.h"
-#include "mech/constants.h"
+#include "mech/rotation/rotation.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static double max_diff(struct mech_mat3 a, struct mech_mat3 b)

@@ -10,8 +10,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "mech/vector_algebra.h"
-#include "mech/constants.h"
+#include "mech/rotation/vector_algebra.h"
+#include "mech/base/constants.h"
 #include "testlib.h"
 
 static struct mech_vec3 v3(double x, double y, double z) { return mech_vec3_make(x, y, z); }
