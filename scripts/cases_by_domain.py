@@ -33,8 +33,8 @@ def operation_domains(repo):
     paths = {}
     for domain in sorted(os.listdir(ops_dir)):
         d = os.path.join(ops_dir, domain)
-        if not os.path.isdir(d):
-            continue
+        if not os.path.isdir(d) or domain.startswith("_"):
+            continue  # _defs/, _examples/: shared schema pieces and worked examples
         for f in sorted(os.listdir(d)):
             if not f.endswith(".json"):
                 continue

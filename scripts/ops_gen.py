@@ -17,6 +17,9 @@ every file and writes, into OUT_DIR (the build tree):
                    route table.
   ops_handlers.h   the prototype of every handler, included by the handler
                    files (api/run/endpoint.h) so the compiler checks each one.
+  examples_data.h  the worked examples GET /v1/examples serves, from
+                   OPS_DIR/_examples/worked_examples.json (one C string per
+                   entry, its text as written in the data file)
   ops.stamp        written on every successful run (ops.def and
                    ops_handlers.h are rewritten only when their text changes,
                    so an edit that does not change them recompiles nothing).
@@ -42,6 +45,10 @@ the reference is resolved here, at build time, into a copy of that schema
 (the node's other keys, such as its description, kept), so the validator
 checks and fills the nested request with the rest of the body and the
 catalog shows it whole; an unknown or circular reference is an error.
+A piece several operations share (a velocity, a rotation, the integrator
+block) is written once, as the whole of api/ops/_defs/<name>.json, and taken
+with {"$ref": "_defs/<name>.json"}, resolved the same way: the catalog and the
+OpenAPI document show each copy inline, as if written out where it is used.
 
 Any error — a file that is not JSON, a missing or unknown key, a wrong type,
 a duplicate path or handler, a file missing from catalog_order.json, a
@@ -247,13 +254,10 @@ def check_op(doc, text, rel, vocab=None):
     if "request_schema" in doc:
         check_annotations(doc["request_schema"], rel, "/request_schema", vocab, False, doc)
     if method == "POST":
-        s = doc["request_schema"]
-        if s.get("type") != "object" or not isinstance(s.get("properties"), dict):
+        if not isinstance(doc["request_schema"], dict):
             fail(rel, 'request_schema must be an object schema with "properties"')
-        for k in ENVELOPE_KEYS:
-            if k in s["properties"]:
-                fail(rel, 'request_schema declares the envelope key "%s"; the route table '
-                     "adds it to every operation" % k)
+        if "$ref" not in doc["request_schema"]:
+            check_request_root(doc["request_schema"], rel)
         if not doc["examples"]:
             fail(rel, "give at least one example request")
         for i, ex in enumerate(doc["examples"]):
@@ -261,6 +265,16 @@ def check_op(doc, text, rel, vocab=None):
                 fail(rel, "examples[%d] must be an object (a request body)" % i)
         return example_texts(text, rel)
     return []
+
+
+def check_request_root(s, rel):
+    """A POST request schema's root (after any "$ref" there is resolved)."""
+    if s.get("type") != "object" or not isinstance(s.get("properties"), dict):
+        fail(rel, 'request_schema must be an object schema with "properties"')
+    for k in ENVELOPE_KEYS:
+        if k in s["properties"]:
+            fail(rel, 'request_schema declares the envelope key "%s"; the route table '
+                 "adds it to every operation" % k)
 
 
 def defined_handlers(src_dir):
@@ -285,6 +299,8 @@ def collect(ops_dir, src_dir=None):
         for f in sorted(files):
             full = os.path.join(dirpath, f)
             rel = os.path.relpath(full, ops_dir)
+            if os.path.relpath(dirpath, ops_dir).split(os.sep)[0] in (DEFS, "_examples"):
+                continue  # shared schema pieces and worked examples, read apart
             if full == order_path or f.endswith((".c", ".h")):
                 continue  # the handlers and their readers live beside their data
             if not f.endswith(".json") or os.sep not in rel or rel.count(os.sep) != 1:
@@ -322,18 +338,45 @@ def collect(ops_dir, src_dir=None):
                  "'json_t *%s(struct api_call *call, const json_t *body)')"
                  % (doc["handler"], src_dir, doc["handler"]))
         ops.append((rel, doc, examples))
-    resolve_refs(ops)
+    rooted = [rel for rel, doc, _ in ops if isinstance(doc.get("request_schema"), dict)
+              and "$ref" in doc["request_schema"]]
+    resolve_refs(ops, load_defs(ops_dir))
+    for rel, doc, _ in ops:
+        if rel in rooted:
+            check_request_root(doc["request_schema"], rel)
     return ops
 
 
+DEFS = "_defs"
+
+
+def load_defs(ops_dir):
+    """{name: schema} of the shared pieces api/ops/_defs/<name>.json."""
+    defs = {}
+    d = os.path.join(ops_dir, DEFS)
+    if os.path.isdir(d):
+        for f in sorted(os.listdir(d)):
+            rel = "api/ops/%s/%s" % (DEFS, f)
+            if not re.fullmatch(r"[a-z0-9_]+\.json", f):
+                fail(rel, "not a shared schema piece: expected api/ops/_defs/<name>.json")
+            _, doc = load(os.path.join(d, f), rel)
+            if not isinstance(doc, dict):
+                fail(rel, "must be a JSON Schema object")
+            defs[f[:-len(".json")]] = doc
+    return defs
+
+
 REF_RE = re.compile(r"^([a-z0-9_]+/[a-z0-9_]+)\.json#/request_schema$")
+DEF_RE = re.compile(r"^_defs/([a-z0-9_]+)\.json$")
 
 
-def resolve_refs(ops):
+def resolve_refs(ops, defs=None):
     """Replace every {"$ref": "<domain>/<op>.json#/request_schema", ...} node of
     the request schemas by a copy of that operation's (resolved) request
-    schema, the node's other keys kept."""
+    schema, and every {"$ref": "_defs/<name>.json", ...} by a copy of that
+    shared piece (resolved), the node's other keys kept."""
     by_name = {rel[len("api/ops/"):-len(".json")]: doc for rel, doc, _ in ops}
+    defs = defs or {}
     done, active = {}, set()
 
     def resolved(name, rel):
@@ -342,7 +385,10 @@ def resolve_refs(ops):
         if name in active:
             fail(rel, 'circular "$ref" through %s' % name)
         active.add(name)
-        done[name] = walk(by_name[name].get("request_schema"), "api/ops/%s.json" % name)
+        if name.startswith(DEFS + "/"):
+            done[name] = walk(defs[name[len(DEFS) + 1:]], "api/ops/%s.json" % name)
+        else:
+            done[name] = walk(by_name[name].get("request_schema"), "api/ops/%s.json" % name)
         active.discard(name)
         return done[name]
 
@@ -353,11 +399,17 @@ def resolve_refs(ops):
             return node
         if "$ref" in node:
             ref = node["$ref"]
+            d = DEF_RE.match(ref) if isinstance(ref, str) else None
             m = REF_RE.match(ref) if isinstance(ref, str) else None
-            if not m or m.group(1) not in by_name or "request_schema" not in by_name[m.group(1)]:
+            if d and d.group(1) in defs:
+                target = DEFS + "/" + d.group(1)
+            elif m and m.group(1) in by_name and "request_schema" in by_name[m.group(1)]:
+                target = m.group(1)
+            else:
                 fail(rel, '"$ref": %s is not "<domain>/<operation>.json#/request_schema" of a '
-                     "POST operation" % compact(ref))
-            out = json.loads(json.dumps(resolved(m.group(1), rel)))
+                     'POST operation, nor "_defs/<name>.json" of a file in api/ops/_defs/'
+                     % compact(ref))
+            out = json.loads(json.dumps(resolved(target, rel)))
             for k, v in node.items():
                 if k != "$ref":
                     out[k] = walk(v, rel)
@@ -425,6 +477,60 @@ def generate(ops):
     return "".join(out), "".join(handlers)
 
 
+EXAMPLES = os.path.join("_examples", "worked_examples.json")
+EXAMPLE_KEYS = ("id", "title", "section", "operation", "request", "notes_answer")
+ANSWER_KEYS = ("pointer", "value", "rounding", "text")
+
+
+def load_examples(ops_dir, ops):
+    """The worked examples of GET /v1/examples, checked: [entry text as written].
+
+    The data file is a JSON array of objects {id, title, section, operation,
+    request, notes_answer: {pointer, value, rounding, text}}; each id once, each
+    operation the path of a POST operation, each request an object."""
+    rel = "api/ops/" + EXAMPLES.replace(os.sep, "/")
+    path = os.path.join(ops_dir, EXAMPLES)
+    if not os.path.exists(path):
+        return []
+    text, doc = load(path, rel)
+    if not isinstance(doc, list):
+        fail(rel, "must be a JSON array of worked examples")
+    posts = {d["path"] for _, d, _ in ops if d["method"] == "POST"}
+    texts, ids, dec, i = [], set(), json.JSONDecoder(), text.index("[") + 1
+    for n, entry in enumerate(doc):
+        where = "%s: entry %d (%s)" % (rel, n, entry.get("id") if isinstance(entry, dict) else "?")
+        if not isinstance(entry, dict) or tuple(entry) != EXAMPLE_KEYS:
+            fail(where, "must be an object with the keys %s in that order" % ", ".join(EXAMPLE_KEYS))
+        if entry["id"] in ids:
+            fail(where, "repeats an id")
+        ids.add(entry["id"])
+        if entry["operation"] not in posts:
+            fail(where, '"operation" %s is no POST operation\'s path' % compact(entry["operation"]))
+        if not isinstance(entry["request"], dict):
+            fail(where, '"request" must be an object (a request body)')
+        na = entry["notes_answer"]
+        if not isinstance(na, dict) or any(k not in na for k in ANSWER_KEYS):
+            fail(where, '"notes_answer" needs %s' % ", ".join(ANSWER_KEYS))
+        # the entry's own text, as written (spacing and number spelling kept)
+        while text[i] in " \t\r\n,":
+            i += 1
+        _, end = dec.raw_decode(text, i)
+        texts.append(text[i:end])
+        i = end
+    return texts
+
+
+def generate_examples(texts):
+    out = ["/* Generated by scripts/ops_gen.py from api/ops/_examples/worked_examples.json: do not\n"
+           " * edit. Edit the data file and rebuild. */\n",
+           "#ifndef API_EXAMPLES_DATA_H\n#define API_EXAMPLES_DATA_H\n\n",
+           "static const char *const api_examples_data[] = {\n"]
+    for t in texts:
+        out.append("    %s,\n" % c_string(t))
+    out.append("};\n\n#endif\n")
+    return "".join(out)
+
+
 def write_if_changed(path, text):
     try:
         if open(path, encoding="utf-8").read() == text:
@@ -452,16 +558,18 @@ def main(argv):
         return 2
     try:
         ops = collect(args[0], src)
+        examples = load_examples(args[0], ops)
     except GenError as e:
         sys.stderr.write("ops_gen: error: %s\n" % e)
         return 1
     if check:
-        print("ops_gen: %d operations, all valid" % len(ops))
+        print("ops_gen: %d operations and %d worked examples, all valid" % (len(ops), len(examples)))
         return 0
     os.makedirs(args[1], exist_ok=True)
     table, handlers = generate(ops)
     write_if_changed(os.path.join(args[1], "ops.def"), table)
     write_if_changed(os.path.join(args[1], "ops_handlers.h"), handlers)
+    write_if_changed(os.path.join(args[1], "examples_data.h"), generate_examples(examples))
     # Unchanged outputs keep their time (nothing recompiles); the stamp tells
     # the build the data files were checked.
     with open(os.path.join(args[1], "ops.stamp"), "w") as f:

@@ -13,8 +13,8 @@
  * bench/bench_calibrate_chooser.c), which lists every candidate with its
  * predicted error and cost and picks the cheapest predicted to meet the
  * target. The `method`/`rtol` fields of the table below are what the
- * chooser typically picks on a 10-orbit Kepler scene, kept for GET
- * /v1/integrators; the choice itself is made per scene. Each preset keeps
+ * chooser typically picks on a 10-orbit Kepler scene, kept for the API's
+ * listing of the integrators; the choice itself is made per scene. Each preset keeps
  * its promise up to the round-off floor of long runs (about Fm x span^g
  * relative over span dynamical times, measured per class and method); below
  * that the selection says so. */

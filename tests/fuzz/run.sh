@@ -37,9 +37,9 @@ export CFLAGS
 # Rebuilt when the source or any project header is newer than the object.
 mkdir -p "$OUT/obj"
 # An object is named by its source path with / spelled @ (core@frames@earth.c.o),
-# so the path can be read back from the name (core/ has domain folders).
-newest_h=$(ls -t $(find "$SRC/core" -name '*.h') "$SRC"/api/*.h "$SRC"/api/include/*.h "$SRC"/server/*.h "$OUT"/generated/* 2>/dev/null | head -1)
-{ find "$SRC/core" -name '*.c'; ls "$SRC"/api/*.c "$SRC"/server/*.c; } | grep -v "/server/main\.c$" |
+# so the path can be read back from the name (core/ and api/ have folders).
+newest_h=$(ls -t $(find "$SRC/core" "$SRC/api" -name '*.h') "$SRC"/server/*.h "$OUT"/generated/* 2>/dev/null | head -1)
+{ find "$SRC/core" "$SRC/api" -name '*.c'; ls "$SRC"/server/*.c; } | grep -v "/server/main\.c$" |
   while read -r f; do
     o="$OUT/obj/$(echo "${f#$SRC/}" | tr / @).o"
     [ "$o" -nt "$f" ] && [ "$o" -nt "$newest_h" ] || echo "$f $o"

@@ -3,7 +3,7 @@
  *   POST /v1/continuum/string  transverse waves on a string with fixed ends
  *   POST /v1/continuum/rod     axial and bending waves of a rod / beam
  * JSON <-> core only; the physics is core/continuum/continuum_waves.c, and
- * the rod's answer is one call, mech_rod_answer() (core/continuum/rod_answer.c). */
+ * the rod's answer is one call, mech_rod_answer() (core/answers/continuum/rod_answer.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* gravity.c — POST /v1/earth/gravity (notes §1.3: effective g on a rotating
  * sphere, beside WGS 84 normal gravity). JSON <-> core only: the answer is one
- * call, mech_earth_gravity_answer() (core/frames/earth_gravity_answer.c; the
+ * call, mech_earth_gravity_answer() (core/answers/frames/earth_gravity_answer.c; the
  * physics is core/frames/earth.c, derivations in its header). */
 #include <math.h>
 #include <stdio.h>

@@ -1,6 +1,6 @@
 /* tides.c — POST /v1/earth/tides (notes §1.4: tidal acceleration and tide
  * heights). JSON <-> core only: the answer is one call, mech_tides_answer()
- * (core/frames/tides_answer.c; the physics is core/frames/tides.c). */
+ * (core/answers/frames/tides_answer.c; the physics is core/frames/tides.c). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>

@@ -460,10 +460,10 @@ json_t *api_op_gr_geodesic(struct api_call *c, const json_t *body)
         "the geodesic equations with r, dr/dtau, phi and t carried together",
         "the state in geometric units (G = c = M = 1)", 1.0, 0, 0.0, "geodesic", 0};
     if (g.photon) geodesic_eqs.rows = "geodesic_null"; /* light's own measured rows */
-    /* a pilot for long runs in strong field (core/gr/geodesic_run.c) */
+    /* a pilot for long runs in strong field (core/answers/gr/geodesic_run.c) */
     const struct mech_pilot_system pilot = {mech_geodesic_pilot_run, &g.p};
     /* light coming in and scattering: its winding's error gain and its cost
-     * (mech_geodesic_error_gain, core/gr/geodesic_run.c) */
+     * (mech_geodesic_error_gain, core/answers/gr/geodesic_run.c) */
     const double span = g.p.param_end / T;
     const int scatter = photon_in(&g.p);
     const struct api_integrator_hooks hooks = {

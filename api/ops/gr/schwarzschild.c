@@ -2,7 +2,7 @@
  * shift, circular orbits, the GPS-style clock comparison, the radial infall
  * and the effective potentials (the notes' "A Little General Relativity",
  * built as Hartle, "Gravity" ch. 9 and 11; Carroll ch. 5; Schutz ch. 11).
- * The answer is one core call, mech_schw_answer (core/gr/schwarzschild_answer.c);
+ * The answer is one core call, mech_schw_answer (core/answers/gr/schwarzschild_answer.c);
  * this file parses the request (its units with api/ops/gr/gr_units.c), calls it
  * and encodes the answer. */
 #include <math.h>

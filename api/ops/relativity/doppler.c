@@ -1,6 +1,6 @@
 /* doppler.c — POST /v1/relativity/doppler: Doppler shift and aberration of
  * light under relative motion (notes §3.14). The answer is one call of
- * mech_doppler_answer (core/relativity/doppler_answer.c); velocities use the
+ * mech_doppler_answer (core/answers/relativity/doppler_answer.c); velocities use the
  * shared input of api/ops/relativity/velocity_request.h. */
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* kinematics_collision.c — POST /v1/relativity/kinematics/collision: two
  * particles colliding, the energy available and the thresholds of the final
  * states. The whole answer is one call, mech_collision_answer
- * (core/relativity/collision_answer.c), which this file reads the request for
+ * (core/answers/relativity/collision_answer.c), which this file reads the request for
  * and encodes.
  * Energies, masses (unit/c²) and momenta (unit/c) are in `energy_unit`
  * (eV … TeV, default MeV; c = 1); particles are a name from the PDG 2024 table

@@ -3,7 +3,7 @@
  * notes' non-relativistic kinetic energies beside the exact one, labelled,
  * and for an unstable particle its lifetime τ with cτ, γτ and βγcτ. What it
  * computes is one call, mech_particle_answer()
- * (core/relativity/particle_answer.c); this file reads the request and
+ * (core/answers/relativity/particle_answer.c); this file reads the request and
  * encodes the answer. */
 #include <math.h>
 #include <stdio.h>

@@ -1,7 +1,7 @@
 /* rocket.c — POST /v1/relativity/rocket: the relativistic
  * rocket's mass ratio for a final speed or rapidity (or the speed a mass
  * ratio gives), beside Tsiolkovsky's, labelled. What it computes is one
- * call, mech_rocket_answer() (core/relativity/rocket_answer.c); this file
+ * call, mech_rocket_answer() (core/answers/relativity/rocket_answer.c); this file
  * reads the request and encodes the answer. */
 #include <math.h>
 #include <stdio.h>

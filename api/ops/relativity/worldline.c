@@ -1,7 +1,7 @@
 /* worldline.c — POST /v1/relativity/worldline (notes §3.14, §3.15: the twin
  * paradox): a journey of legs, each clock's reading and what a telescope
  * shows. The answer is one call of mech_worldline_answer
- * (core/relativity/worldline_answer.c). */
+ * (core/answers/relativity/worldline_answer.c). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

@@ -2,7 +2,7 @@
  * rotation by Euler's equations with a quaternion attitude (notes §2.7–2.9),
  * with conserved-quantity drifts and, torque-free, the error against the exact
  * solution in Jacobi elliptic functions. The physics is core/rigid/rigid_rotation.c;
- * the run is one call of mech_rigid_answer_run (core/rigid/rigid_answer.c);
+ * the run is one call of mech_rigid_answer_run (core/answers/rigid/rigid_answer.c);
  * the body may be given by principal moments or by a full /v1/rigid/inertia
  * request (its schema inlined into this route's by the build, so the
  * validator checks it with the rest of the body), read and computed as that

@@ -3,7 +3,7 @@
  * with Euler angles per sample, the nutation range from the turning-point
  * cubic beside the measured one, conserved p_phi, p_psi and E, the sleeping-top
  * condition and the steady-precession rates. What it computes is one call,
- * mech_top_answer_run (core/rigid/top_answer.c, on core/rigid/top.c); this
+ * mech_top_answer_run (core/answers/rigid/top_answer.c, on core/rigid/top.c); this
  * file reads the request, chooses the integrator (api/request/integrator_block.c)
  * and encodes the answer. */
 #include <math.h>

@@ -7,7 +7,7 @@
  * the centrifugal term of the displacement is judged by its effect on the
  * answer) and the evidence (energy and constraint drift, a second run at half
  * the steps). What it computes is one call, mech_foucault_scene()
- * (core/frames/foucault_scene.c); this file reads the request and encodes
+ * (core/answers/frames/foucault_scene.c); this file reads the request and encodes
  * the answer. */
 #include <math.h>
 #include <stdio.h>

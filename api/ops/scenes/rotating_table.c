@@ -1,7 +1,7 @@
 /* rotating_table.c — POST /v1/scenes/rotating-table: a puck sliding on a
  * turntable, seen from the table and from the room. The checks, buffers and
  * run are one call, mech_rotating_table_scene()
- * (core/frames/rotating_table_scene.c); the model and diagnostics encoders are
+ * (core/answers/frames/rotating_table_scene.c); the model and diagnostics encoders are
  * the trajectory's (api/request/trajectory_request.h). */
 #include <math.h>
 #include <stdlib.h>

@@ -5,13 +5,20 @@
  * the classic extras the labs use (Kepler, Mercury, light bending, GPS, heavy
  * top, Dzhanibekov, Henon-Heiles), each a ready request for one operation with
  * the notes' answer: a JSON pointer into the response, the value and the
- * rounding the notes print it with. The data is compiled in
- * (api/ops/tools/examples_data.h); tests/integration/test_examples.py runs every entry
- * against a server and compares with the notes' answer. */
+ * rounding the notes print it with. The data is the file
+ * api/ops/_examples/worked_examples.json (one object per entry: {id, title,
+ * section (the notes' section), operation (path), request (a ready request
+ * body), notes_answer: {pointer (JSON pointer into the answer), value,
+ * rounding ({"relative": r} or {"absolute": a}, the notes' printed precision),
+ * text}}; values are the notes' printed numbers or closed forms evaluated
+ * independently), which the build turns into C strings (scripts/ops_gen.py ->
+ * generated examples_data.h): compiled in, so the server reads no data files.
+ * tests/integration/test_examples.py runs every entry against a server and
+ * compares with the notes' answer. */
 #include <pthread.h>
 
 #include "run/endpoint.h"
-#include "ops/tools/examples_data.h"
+#include "examples_data.h" /* generated */
 
 static const char examples_doc[] =
     "Each example: id, title, section (of the course notes), operation (the path to POST to), "

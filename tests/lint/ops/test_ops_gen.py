@@ -132,6 +132,27 @@ check("$ref" not in json.dumps(_inlined) and _inlined["properties"] == _inertia[
       and _inlined["description"].startswith("a full POST /v1/rigid/inertia request"),
       "rotate's inertia is inertia's request schema inlined, its own description kept")
 
+# A shared piece, api/ops/_defs/<name>.json, is taken whole by {"$ref":
+# "_defs/<name>.json"} and inlined where it is used; an unknown piece fails.
+broken("unknown _defs $ref", edit("relativity/boost.json", lambda d: d["request_schema"]
+                                  ["properties"]["velocity"].update({"$ref": "_defs/velocty.json"})),
+       "api/ops/relativity/boost.json", '"$ref": "_defs/velocty.json" is not')
+broken("not a piece", write("_defs/Velocity.txt", "{}"), "api/ops/_defs/Velocity.txt",
+       "not a shared schema piece")
+# The worked examples (GET /v1/examples) are data too: an entry whose operation
+# is no POST path, or an id given twice, fails the build naming the entry.
+broken("example of no operation", edit("_examples/worked_examples.json",
+                                       lambda d: d[1].update(operation="/v1/rotation/converts")),
+       "api/ops/_examples/worked_examples.json: entry 1", "is no POST operation")
+broken("example id twice", edit("_examples/worked_examples.json",
+                                lambda d: d[2].update(id=d[0]["id"])),
+       "api/ops/_examples/worked_examples.json: entry 2", "repeats an id")
+_velocity = json.load(open(os.path.join(OPS, "_defs", "velocity.json"), encoding="utf-8"))
+check(_ops["api/ops/relativity/boost.json"]["request_schema"]["properties"]["velocity"] == _velocity
+      and _ops["api/ops/relativity/doppler.json"]["request_schema"]["properties"]
+      ["observer_velocity"] == _velocity,
+      "the velocity piece is inlined whole where the operations take it")
+
 
 # x-mechd-check annotations (what a field is for POST /v1/check): a typo in a
 # kind or unit, a malformed annotation, another x- keyword or an annotation

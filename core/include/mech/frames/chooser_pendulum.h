@@ -1,5 +1,5 @@
 /* mech/frames/chooser_pendulum.h — the predictive chooser for the Foucault pendulum
- * (POST /v1/scenes/foucault, mech/frames/pendulum.h): the same selection as
+ * (mech/frames/pendulum.h; the Foucault scene's answer asks it): the same selection as
  * mech_choose() (mech/ode/chooser.h) over the pendulum's own candidates, the
  * constrained symplectic methods rattle (order 2, one force evaluation per
  * step) and rattle_yoshida4 (order 4, three), each at the fewest steps per

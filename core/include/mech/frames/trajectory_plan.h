@@ -2,8 +2,9 @@
  * one function: which fictitious terms the scene needs ("fictitious":
  * "auto", mech_trajectory_model_select), then the method and tolerances for
  * the target (mech_trajectory_choose), leaving p ready for
- * mech_trajectory_integrate or the exact reference. Used by POST
- * /v1/trajectory, /v1/compare and the scenes (core/frames/scenes.c), so the
+ * mech_trajectory_integrate or the exact reference. Used by a single
+ * trajectory, by the integrator comparison (mech/answers/frames/compare_sweep.h)
+ * and by the scenes (core/frames/scenes.c), so the
  * pipeline exists once. */
 #ifndef MECH_TRAJECTORY_PLAN_H
 #define MECH_TRAJECTORY_PLAN_H

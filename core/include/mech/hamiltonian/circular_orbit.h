@@ -1,6 +1,6 @@
 /* mech/hamiltonian/circular_orbit.h — the circular orbits of a given angular momentum in a
  * central potential V(r) = Σ k_i r^{n_i} (k ln r for n = 0), the potentials
- * /v1/small-oscillations and /v1/hamiltonian/flow accept (notes ch. 5,
+ * the small-oscillation analysis and Hamilton's flow take (notes ch. 5,
  * "Motion in a Central Potential"; Kepler: n = −1, k = −GMm).
  *
  * A circular orbit of angular momentum L sits where the effective potential

@@ -14,8 +14,8 @@ enum mech_accuracy {
     MECH_ACCURACY_COUNT
 };
 
-/* An accuracy preset: what it promises (the chooser's target) and, for GET
- * /v1/integrators, what the chooser typically picks on a 10-orbit Kepler
+/* An accuracy preset: what it promises (the chooser's target) and, for the
+ * API's listing of the integrators, what the chooser typically picks on a 10-orbit Kepler
  * scene (the choice itself is made per scene by mech/ode/chooser.h). */
 struct mech_accuracy_preset {
     const char *name;         /* "draft", "balanced", "precise", "machine" */

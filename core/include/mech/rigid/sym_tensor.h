@@ -3,8 +3,8 @@
  * isotropic and deviatoric parts and its eigen-decomposition (notes ch. 2,
  * "Principal Axes"; "Proof: Principal Axes Orthogonal", "Roots are Real").
  * The eigen-decomposition is mech_inertia_principal's (mech/rigid/inertia.h): the
- * same ascending order, degeneracy flag and deterministic axis signs as
- * /v1/rigid/inertia.
+ * same ascending order, degeneracy flag and deterministic axis signs as the
+ * inertia tensor's principal axes.
  *
  * Units: the caller's (invariant k carries the k-th power of the entries' unit).
  * Pure computation apart from GSL's 3x3 eigen-workspace; thread-safe.

@@ -1,5 +1,5 @@
 /* test_doppler_answer.c — one /v1/relativity/doppler answer
- * (core/relativity/doppler_answer.c) against closed forms (notes §3.14),
+ * (core/answers/relativity/doppler_answer.c) against closed forms (notes §3.14),
  * evaluated in long double from the exact inputs:
  *   - longitudinal: D = sqrt((1 + β)/(1 − β)) approaching, its inverse
  *     receding, at β = 0.6 (2 and 1/2), β = 1e-9 (D − 1 = e^{atanh β} − 1)

@@ -1,5 +1,5 @@
 /* test_rod_answer.c — one /v1/continuum/rod answer
- * (core/continuum/rod_answer.c) against closed forms: the fixed-free
+ * (core/answers/continuum/rod_answer.c) against closed forms: the fixed-free
  * (clamped-free) longitudinal frequencies f_n = (2n − 1)/(4L) sqrt(E/ρ), the
  * fixed-fixed flexural roots β_n L = 4.7300407448627, 7.8532046240958,
  * 10.995607838002 of cosh βL cos βL = 1 (Blevins Table 8-1; checked here

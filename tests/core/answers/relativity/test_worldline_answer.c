@@ -1,5 +1,5 @@
 /* test_worldline_answer.c — one /v1/relativity/worldline answer
- * (core/relativity/worldline_answer.c) against closed forms:
+ * (core/answers/relativity/worldline_answer.c) against closed forms:
  *   - constant proper acceleration from rest (hyperbolic motion, notes §3.12,
  *     §3.15): t = (c/a) sinh(aτ/c), equivalently τ = (c/a) asinh(a t/c),
  *     x = (c²/a)(cosh(aτ/c) − 1), βγ = sinh(aτ/c), in long double; the same

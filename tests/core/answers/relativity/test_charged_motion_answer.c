@@ -1,5 +1,5 @@
 /* test_charged_motion_answer.c — what a course asks of a charge in uniform
- * fields (core/relativity/charged_motion_answer.c), against closed forms
+ * fields (core/answers/relativity/charged_motion_answer.c), against closed forms
  * written here:
  *   the E x B drift at 0.8 c: frame velocity E x B/B^2, gamma 5/3, B' = B/gamma,
  *   E' = 0; from rest the helix there has radius gamma_w^2 w m/(q B) and proper

@@ -1,4 +1,4 @@
-/* test_foucault_scene.c — mech_foucault_scene (core/frames/foucault_scene.c),
+/* test_foucault_scene.c — mech_foucault_scene (core/answers/frames/foucault_scene.c),
  * one /v1/scenes/foucault computation, against closed forms:
  *   the precession rate: the notes' (§1.4) -W sin(lat) at first order, and
  *     with Airy's correction for a release from rest,

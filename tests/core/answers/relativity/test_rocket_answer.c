@@ -1,5 +1,5 @@
 /* test_rocket_answer.c — one /v1/relativity/rocket answer
- * (core/relativity/rocket_answer.c) against the relativistic rocket
+ * (core/answers/relativity/rocket_answer.c) against the relativistic rocket
  * equation β = tanh((u/c) ln(m_i/m_f)) and its inverse: m_i/m_f = 243 for
  * β = 1/2 at u = c/10 (atanh ½ = ½ ln 3, so (3)^(1/(2·0.1)) = 3^5), the
  * photon rocket's m_i/m_f = γ(1 + β), the near-zero burn η = 1e-9 keeping

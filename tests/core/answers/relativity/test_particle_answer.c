@@ -1,5 +1,5 @@
 /* test_particle_answer.c — one /v1/relativity/particle answer
- * (core/relativity/particle_answer.c) against closed forms: E² = (pc)² +
+ * (core/answers/relativity/particle_answer.c) against closed forms: E² = (pc)² +
  * (mc²)², checked as T (E + m) = p² (no cancellation however slow the
  * particle), T = mβ²/2 (1 + 3β²/4 + …) at β = 1e-9 where a direct γ − 1
  * would be 0, γ = 1e6 (p = m sqrt((γ − 1)(γ + 1)), 1 − β = 1/(γ²(1 + β))),
