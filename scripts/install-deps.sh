@@ -6,8 +6,9 @@
 #   install-deps.sh --bench  also the benchmarks' gnuplot-nox (the PNG plot),
 #                            python3-scipy (the SciPy DOP853 baseline,
 #                            imported by Debian's /usr/bin/python3) and wrk
-#                            (bench_http, tests/load) and gdb (tests/load prints
-#                            mechd's thread stacks if a load round stalls)
+#                            (bench_http, tests/load), gdb (tests/load prints
+#                            mechd's thread stacks if a load round stalls),
+#                            valgrind and strace (bench_http_instructions)
 #   install-deps.sh --fuzz   also clang and libclang-rt-14-dev (libFuzzer and
 #                            the sanitizers for tests/fuzz/run.sh, make fuzz)
 # Options combine (install-deps.sh --bench --fuzz).
@@ -26,7 +27,7 @@ PKGS="build-essential cmake pkg-config libmicrohttpd-dev libjansson-dev libgsl-d
 PKGS="$PKGS python3-pip python3-setuptools python3-venv"
 for opt in "$@"; do
   case "$opt" in
-    --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk gdb" ;;
+    --bench) PKGS="$PKGS gnuplot-nox python3-scipy wrk gdb valgrind strace" ;;
     --fuzz) PKGS="$PKGS clang libclang-rt-14-dev" ;;
     *) echo "usage: $0 [--bench] [--fuzz]" >&2; exit 2 ;;
   esac

@@ -4,7 +4,8 @@
  * http_body.c (BODY LIMIT, FRAMING), http_security.c (SECURITY: it decides
  * from the headers, through its own face http_security.h, and this file
  * answers), http_head.c (REQUEST HEAD: 414, 431, Host, what OPTIONS names),
- * quick.c (QUICK OPERATIONS), answer_budget.c (ANSWER MEMORY), answer_send.c
+ * request_id.c (the X-Request-Id), quick.c (QUICK OPERATIONS, GATED
+ * OPERATIONS), answer_budget.c (ANSWER MEMORY), answer_send.c
  * (the bytes of an answer sent), conn_watch.c (CANCELLATION, SLOW CLIENTS,
  * CONNECTION FLOODS), http_daemon.c (start and stop, descriptors) and
  * io_loop.c (I/O THREADS).
@@ -79,60 +80,6 @@ static char *dup_str(const char *s)
 
 /* ---- request ids and client addresses ------------------------------------------- */
 
-/* May a client-given X-Request-Id be kept? 1..SRV_REQUEST_ID_MAX characters of
- * [A-Za-z0-9._:+/=-]: enough for UUIDs, hex, base64 and the ids proxies make,
- * nothing that needs escaping in a header, a log line or a JSON string. */
-static int request_id_ok(const char *s)
-{
-    size_t n = 0;
-    if (!s) return 0;
-    for (; s[n]; n++) {
-        char c = s[n];
-        if (n >= SRV_REQUEST_ID_MAX ||
-            !((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-              c == '.' || c == '_' || c == ':' || c == '+' || c == '/' || c == '=' || c == '-'))
-            return 0;
-    }
-    return n > 0;
-}
-
-/* A request id into out (SRV_REQUEST_ID_MAX + 1 bytes): `given` (the incoming
- * X-Request-Id) when request_id_ok, else 32 lower-case hex digits of 128 random
- * bits from getrandom(2), so ids from any number of replicas do not collide
- * (probability ~2^-65 for 2^32 requests) without coordination. Should the
- * kernel refuse getrandom, the bits come from the clock, the process id and a
- * counter through splitmix64 (unique within the process, very likely across). */
-static void request_id(struct srv_http *h, const char *given, char *out)
-{
-    if (request_id_ok(given)) {
-        strcpy(out, given);
-        return;
-    }
-    unsigned char b[16];
-    ssize_t got = getrandom(b, sizeof b, GRND_NONBLOCK);
-    if (got != (ssize_t)sizeof b) {
-        struct timespec ts;
-        clock_gettime(CLOCK_REALTIME, &ts);
-        unsigned long long x =
-            (unsigned long long)ts.tv_sec * 1000000000ULL + (unsigned long long)ts.tv_nsec;
-        unsigned long long y =
-            ((unsigned long long)getpid() << 32) ^ atomic_fetch_add(&h->next_id, 1);
-        for (int half = 0; half < 2; half++) {
-            unsigned long long z = (half ? y : x) + 0x9e3779b97f4a7c15ULL;
-            z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-            z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-            z ^= z >> 31;
-            for (int i = 0; i < 8; i++)
-                b[half * 8 + i] = (unsigned char)(z >> (8 * i));
-        }
-    }
-    static const char hex[] = "0123456789abcdef";
-    for (int i = 0; i < 16; i++) {
-        out[2 * i] = hex[b[i] >> 4];
-        out[2 * i + 1] = hex[b[i] & 15];
-    }
-    out[32] = '\0';
-}
 
 /* The connection's peer address, numeric ("127.0.0.1", "::1"), or "-". */
 static void client_address(struct MHD_Connection *conn, char *out, size_t n)
@@ -590,7 +537,12 @@ enum MHD_Result on_request(void *cls, struct MHD_Connection *conn, const char *u
             MHD_get_connection_info(conn, MHD_CONNECTION_INFO_CONNECTION_FD);
         if (ci) r->fd = (int)ci->connect_fd;
         request_id(h, MHD_lookup_connection_value(conn, MHD_HEADER_KIND, "X-Request-Id"), r->id);
-        client_address(conn, r->client, sizeof r->client);
+        if (sc && sc->client[0]) { /* formatted once per connection, not per request */
+            memcpy(r->client, sc->client, sizeof r->client);
+        } else {
+            client_address(conn, r->client, sizeof r->client);
+            if (sc) memcpy(sc->client, r->client, sizeof sc->client);
+        }
         r->forwarded_for =
             dup_str(MHD_lookup_connection_value(conn, MHD_HEADER_KIND, "X-Forwarded-For"));
         r->t0 = mech_clock_seconds();

@@ -4,9 +4,11 @@
  *
  * REQUEST HEAD. libmicrohttpd answers a head that does not fit in its
  * per-connection memory itself, with an HTML page and no hook to change it.
- * That memory is SRV_MHD_POOL (96 KiB), above this server's own limits on the
+ * That memory is SRV_MHD_POOL (40 KiB), above this server's own limits on the
  * target (SRV_TARGET_MAX) and the whole head (SRV_HEADERS_MAX), so that up to
- * about its size the answer is this server's problem+json. The target's
+ * about its size (a head of some 40 KB) the answer is this server's
+ * problem+json. It is not larger: libmicrohttpd zeroes the whole of it after
+ * each request of a kept-alive connection. The target's
  * length is taken from libmicrohttpd's URI log callback (on_uri), which sees
  * the target as sent, query included. RFC 9112 section 3.2: an HTTP/1.1
  * request without a Host header, or with more than one, gets 400.

@@ -26,6 +26,10 @@ const SHOTS = [
     await p.focus('#fou-3d-box ~ .player [data-role=time]');
     for (let i = 0; i < 60; i++) await p.keyboard.press('ArrowRight'); }],
   ['desktop-orbits.png', 'orbits', 'desktop', 'main h2', null],
+  // the chain of three masses mid-swing beside its normal modes and energy bars
+  ['desktop-oscillations.png', 'oscillations', 'desktop', 'main .results h3', async (p) => {
+    await p.focus('#osc-scene ~ .player [data-role=time]');
+    for (let i = 0; i < 9; i++) await p.keyboard.press('.'); }],
   ['desktop-notes.png', 'earth', 'desktop', 'main h2', null], // the falling object beside "What the notes say"
   ['phone-tides.png', 'tides', 'phone', 'main svg.plot', null],
   ['phone-rotations.png', 'rotations', 'phone', 'canvas.view3d', null],

@@ -110,7 +110,10 @@ for (const width of [1280, 390]) {
       await settled(page, '#light-form');
       for (const b of ['5000', '1']) {
         await page.fill('#light-b', b);
+        // (the previous b's capture is still shown: wait for this run's answer, not that one)
+        await page.evaluate(() => { delete document.getElementById('light-form').dataset.state; });
         await page.click('#light-submit');
+        await settled(page, '#light-form');
         await page.waitForSelector('#light-outcome[data-motion=capture]', {timeout: 20000});
         const text = await page.textContent('#light-outcome');
         // the photon's critical impact parameter 3√3 GM/c² for the Sun: 7.67 km

@@ -85,17 +85,17 @@ def get(port, path, extra=b""):
 
 
 def test_head_limits(port):
-    st, h, body, _ = exchange(port, b"GET /healthz?x=" + b"a" * 40000 +
+    st, h, body, _ = exchange(port, b"GET /healthz?x=" + b"a" * 36000 +
                               b" HTTP/1.1\r\nHost: 127.0.0.1\r\nConnection: close\r\n\r\n")
     doc = problem(body)
-    check("40 KB target -> 414 problem+json",
+    check("36 KB target -> 414 problem+json",
           st == 414 and h.get("content-type") == "application/problem+json"
           and doc.get("type") == "/problems/uri-too-long" and doc.get("status") == 414
           and doc.get("request_id") == h.get("x-request-id"), (st, h, body[:200]))
     st, _, _, _ = get(port, "/healthz?x=" + "a" * 20000)
     check("20 KB target still served -> 200", st == 200, st)
-    st, h, body, _ = get(port, "/healthz", b"X-Big: " + b"a" * 40000 + b"\r\n")
-    check("40 KB header -> 431 problem+json",
+    st, h, body, _ = get(port, "/healthz", b"X-Big: " + b"a" * 36000 + b"\r\n")
+    check("36 KB header -> 431 problem+json",
           st == 431 and h.get("content-type") == "application/problem+json"
           and problem(body).get("type") == "/problems/headers-too-large", (st, h, body[:200]))
 

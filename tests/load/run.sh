@@ -5,7 +5,9 @@
 #   slow_clients.py  500 idle/trickling connections, new clients, timeouts (45 s)
 #   cheap_requests.py  one-vector boosts at 64 and 256 connections against
 #                    --workers 2 --queue 4: every answer must be 200 (2 x 5 s)
-# About 3 minutes in all; every scenario is bounded in time, talks only to
+#   fair_share.py    a long job under a flood of boosts ends inside a deadline of
+#                    10 times its time alone (45 s)
+# About 4 minutes in all; every scenario is bounded in time, talks only to
 # 127.0.0.1, prints its figures and fails only on functional failures (error
 # answers, lost answers, leaks, a dead server), never on timing.
 # Needs wrk (apt-get install -y wrk) and Debian's /usr/bin/python3.
@@ -21,5 +23,6 @@ rc=0
 /usr/bin/python3 "$HERE/overload.py" "$MECHD" || rc=1
 /usr/bin/python3 "$HERE/slow_clients.py" "$MECHD" || rc=1
 /usr/bin/python3 "$HERE/cheap_requests.py" "$MECHD" || rc=1
+/usr/bin/python3 "$HERE/fair_share.py" "$MECHD" || rc=1
 [ $rc = 0 ] && echo "tests/load: all scenarios passed" || echo "tests/load: FAILED"
 exit $rc

@@ -78,6 +78,20 @@ int mech_gsl_rhs_fn(double t, const double y[], double dydt[], void *params)
     return mech_gsl_rhs_eval(params, t, y, dydt);
 }
 
+int mech_gsl_rhs_fn_finite(double t, const double y[], double dydt[], void *params)
+{
+    /* mech_gsl_rhs_eval's fast path, with only c live across the call (every
+     * stage of every step comes here: callgrind, ~35 -> ~19 instructions) */
+    struct mech_gsl_rhs *c = params;
+    const struct mech_ode_system *sys = c->sys;
+    if (c->stats) c->stats->rhs_evaluations++;
+    c->call_t = t;
+    c->call_y = y;
+    c->call_dydt = dydt;
+    const enum mech_status st = sys->rhs(t, y, dydt, sys->params);
+    return st == MECH_OK ? GSL_SUCCESS : rhs_failed(c, st, c->call_t, c->call_y, c->call_dydt);
+}
+
 enum mech_status mech_gsl_rhs_unavoidable(const struct mech_gsl_rhs *c, const char *method,
                                           double t, struct mech_error *err)
 {

@@ -46,6 +46,11 @@ struct mech_gsl_rhs {
     long rejected_trials;    /* trials rejected as non-finite since begin */
     double trial_t;          /* time of the last rejected trial */
     char trial_text[200];    /* its explanation */
+    /* the arguments of the evaluation in progress (mech_gsl_rhs_fn's fast
+     * path keeps them here rather than in registers across the call) */
+    double call_t;
+    const double *call_y;
+    double *call_dydt;
 };
 
 /* Start a call: bind the system, statistics and error (borrowed for the
@@ -71,6 +76,9 @@ int mech_gsl_rhs_numeric(struct mech_gsl_rhs *c, double t, const double *y, cons
 
 /* The GSL callback form of mech_gsl_rhs_eval (params is the context). */
 int mech_gsl_rhs_fn(double t, const double y[], double dydt[], void *params);
+/* The same for a system flagged MECH_ODE_FINITE_OUTPUT (and only for one):
+ * fewer instructions per evaluation, the same results. */
+int mech_gsl_rhs_fn_finite(double t, const double y[], double dydt[], void *params);
 
 /* MECH_GSL_TRIAL_REJECT came back from GSL (the step cannot shrink any
  * further): record MECH_ENUMERIC naming the method, t and the last failed

@@ -93,6 +93,12 @@ static void gsl_rk_reset(void *ws)
     gsl_odeiv2_evolve_reset(w->ev); /* the control object keeps no history */
 }
 
+/* The GSL callback for sys: the shorter one when sys tests its own output. */
+static int (*rhs_fn_of(const struct mech_ode_system *sys))(double, const double[], double[], void *)
+{
+    return (sys->flags & MECH_ODE_FINITE_OUTPUT) ? mech_gsl_rhs_fn_finite : mech_gsl_rhs_fn;
+}
+
 /* Map a GSL status (after a call that may have run our rhs) to mech_status. */
 static enum mech_status gsl_rk_map(struct gsl_rk_ws *w, int gs, double t, double h,
                                    struct mech_error *err)
@@ -131,7 +137,7 @@ static enum mech_status gsl_rk_step(void *ws, const struct mech_ode_system *sys,
 {
     struct gsl_rk_ws *w = ws;
     mech_gsl_rhs_begin(&w->rhs, sys, stats, err, 1); /* one fixed step: no retry */
-    gsl_odeiv2_system gsys = {mech_gsl_rhs_fn, NULL, w->dim, &w->rhs};
+    gsl_odeiv2_system gsys = {rhs_fn_of(sys), NULL, w->dim, &w->rhs};
     gsl_odeiv2_step_reset(w->aux);
     int gs = gsl_odeiv2_step_apply(w->aux, t, h, y, w->yerr, NULL, w->dydt_out, &gsys);
     return gsl_rk_map(w, gs, t, h, err);
@@ -144,7 +150,7 @@ static enum mech_status gsl_rk_evolve(void *ws, const struct mech_ode_system *sy
     struct gsl_rk_ws *w = ws;
     mech_gsl_rhs_begin(&w->rhs, sys, stats, err, 0);
     mech_gsl_rhs_accepted(&w->rhs, *t, y);
-    gsl_odeiv2_system gsys = {mech_gsl_rhs_fn, NULL, w->dim, &w->rhs};
+    gsl_odeiv2_system gsys = {rhs_fn_of(sys), NULL, w->dim, &w->rhs};
     const unsigned long failed_before = w->ev->failed_steps;
     const double t_before = *t;
     int gs = gsl_odeiv2_evolve_apply(w->ev, w->con, w->main, &gsys, t, t1, h, y);
