@@ -27,7 +27,7 @@
  * self-check (api/schema/schema_check.c), compilation (api/schema/schema_compile.c), the walker
  * (api/schema/schema_validate.c), the choice among oneOf branches (api/schema/schema_branch.c),
  * the error list (api/schema/schema_error.c), defaults (api/schema/schema_defaults.c) and JSON
- * pointers (api/schema/schema_pointer.c).
+ * pointers (api/schema/schema_error.c).
  */
 #ifndef API_SCHEMA_H
 #define API_SCHEMA_H

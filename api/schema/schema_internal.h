@@ -6,14 +6,13 @@
  *
  * The files and their one-way arrows (A -> B: A calls B):
  *   api/schema/schema_compile.c  compilation and freeing of the tree        -> api/schema/schema_check.c
- *   api/schema/schema_check.c    the supported subset and the self-check     -> api/schema/schema_pointer.c
+ *   api/schema/schema_check.c    the supported subset and the self-check     -> api/schema/schema_error.c
  *   api/schema/schema_validate.c the walker: every keyword, oneOf by count   -> api/schema/schema_branch.c, api/schema/schema_error.c
  *   api/schema/schema_branch.c   which oneOf branch an instance was meant to be, and what
  *                     is wrong with the choice itself             -> api/schema/schema_error.c
- *   api/schema/schema_error.c    the error list: one entry per violation
+ *   api/schema/schema_error.c    the error list: one entry per violation, and JSON pointers
+ *                     (api_pointer_append; the walker's inline pieces are below)
  *   api/schema/schema_defaults.c the defaults filled into a valid body       -> api/schema/schema_validate.c
- *   api/schema/schema_pointer.c  JSON pointers (api_pointer_append; the walker's inline
- *                     pieces are below)
  * Not for use outside api/schema*.c. */
 #ifndef API_SCHEMA_INTERNAL_H
 #define API_SCHEMA_INTERNAL_H

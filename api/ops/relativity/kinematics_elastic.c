@@ -2,7 +2,7 @@
  * relativistic elastic scattering off a target at rest at a given CM, lab or
  * recoil angle, answered in the lab and the CM frame (notes §3 kinematics,
  * problem 16; Compton is the massless-projectile case). What it computes is
- * one call, mech_elastic_answer() (core/answers/relativity/elastic_answer.c, on
+ * one call, mech_elastic_answer() (core/answers/relativity/collision_answer.c, on
  * elastic_scattering.c); the unit, masses and the projectile's motion are
  * read by api/ops/relativity/kin_request.c, as the other kinematics operations read them; this
  * file reads the request and encodes the answer. */

@@ -1,5 +1,5 @@
 /* test_elastic_answer.c — one /v1/relativity/kinematics/elastic answer
- * (core/answers/relativity/elastic_answer.c) against closed forms: for equal masses
+ * (core/answers/relativity/collision_answer.c) against closed forms: for equal masses
  * the relativistic opening-angle rule tan θ3 tan θ4 = 2/(γ + 1), γ the
  * projectile's lab Lorentz factor (→ θ3 + θ4 = 90° only as γ → 1); the
  * outgoing pair's energy and momentum conserved to 1e-14 and each on its
